@@ -1,0 +1,311 @@
+// The headless bench command: every (mode, cull, light count) combination timed on the GPU.
+#include "bench_command.h"
+
+#include "cli_values.h"
+#include "pipeline_settings.h"
+#include "point_light.h"
+#include "scene_setup.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <span>
+
+namespace gbl {
+
+using nlohmann::json;
+
+namespace {
+
+int badArgument(std::string const& message) {
+    std::fprintf(stderr, "gbuffer-lab bench: %s\n", message.c_str());
+    return 2;
+}
+
+struct Combination {
+    LightingMode mode = LightingMode::Quad;
+    CullMode cull = CullMode::Front;
+    bool usesCull = false;  // only `volumes` has a cull mode
+    int lights = 0;
+};
+
+struct Summary {
+    double median = 0.0;
+    double p95 = 0.0;
+};
+
+struct Result {
+    Combination combo;
+    std::string status = "ok";  // ok | over budget | skipped | unavailable
+    std::string note;           // why, for anything but ok
+    int framesMeasured = 0;
+    double wallSeconds = 0.0;
+    Summary frameMs;
+    std::vector<std::pair<std::string, Summary>> passMs;  // in frame order
+    std::optional<double> fragmentInvocations;             // median over measured frames
+    std::optional<std::uint64_t> litPixels;
+    std::optional<std::uint64_t> lightPixelPairs;
+    int lightsShaded = 0;
+    std::uint64_t glErrors = 0;
+};
+
+Summary summarize(std::vector<double> const& v) { return {percentile(v, 0.5), percentile(v, 0.95)}; }
+
+std::string comboName(Combination const& c) {
+    std::string s(enumName(kLightingModeNames, c.mode));
+    if (c.usesCull) s += "/" + std::string(enumName(kCullModeNames, c.cull));
+    return s;
+}
+
+// Frame time of the last measured light count of the same mode, scaled linearly to `lights`:
+// an upper bound for modes whose cost grows at most linearly with the light count, used to skip
+// combinations that could not finish even one frame within the budget.
+std::optional<double> predictedFrameSeconds(std::vector<Result> const& done, Combination const& c) {
+    for (auto it = done.rbegin(); it != done.rend(); ++it) {
+        Combination const& p = it->combo;
+        if (p.mode != c.mode || p.cull != c.cull || it->framesMeasured == 0 || p.lights <= 0) continue;
+        return it->frameMs.median * 1e-3 * double(std::max(c.lights, 1)) / double(p.lights);
+    }
+    return std::nullopt;
+}
+
+Result runCombination(Renderer& renderer, Camera const& camera, std::span<PointLight const> lights,
+                      Combination const& c, BenchOptions const& o, std::vector<Result> const& done) {
+    Result r;
+    r.combo = c;
+    if (c.mode == LightingMode::Tiled && !renderer.caps().computeShaders) {
+        r.status = "unavailable";
+        r.note = renderer.caps().tiledUnavailableReason();
+        return r;
+    }
+    if (auto const predicted = predictedFrameSeconds(done, c); predicted && *predicted > o.budgetSeconds) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "predicted %.1f s per frame from the previous light count, over the %.0f s budget",
+                      *predicted, o.budgetSeconds);
+        r.status = "skipped";
+        r.note = buf;
+        return r;
+    }
+
+    PipelineSettings settings;
+    settings.mode = c.mode;
+    settings.cull = c.cull;
+    FrameInput const input{camera, lights, settings, true};
+
+    using Clock = std::chrono::steady_clock;
+    auto const start = Clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+    double slowest = 0.0;
+    std::vector<double> frame, fragments;
+    std::map<std::string, std::vector<double>> perPass;
+    std::vector<std::string> passOrder;
+    int const total = o.warmup + o.frames;
+    for (int i = 0; i < total; ++i) {
+        if (i > 0 && !frameFitsBudget(elapsed(), slowest, o.budgetSeconds)) break;
+        auto const t0 = Clock::now();
+        FrameStats const s = renderer.render(input);
+        slowest = std::max(slowest, std::chrono::duration<double>(Clock::now() - t0).count());
+        r.glErrors += s.glErrors;
+        r.lightsShaded = s.lightsShaded;
+        if (i < o.warmup) continue;
+        frame.push_back(s.gpuFrameMs);
+        if (s.fragmentInvocations) fragments.push_back(double(*s.fragmentInvocations));
+        for (PassTiming const& p : s.passes) {
+            auto& samples = perPass[p.name];
+            if (samples.empty()) passOrder.push_back(p.name);
+            samples.push_back(p.gpuMs);
+        }
+    }
+    r.wallSeconds = elapsed();
+    r.framesMeasured = int(frame.size());
+    if (r.framesMeasured < o.frames) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "%d of %d frames fit in the %.0f s budget (slowest frame %.2f s)",
+                      r.framesMeasured, o.frames, o.budgetSeconds, slowest);
+        r.status = "over budget";
+        r.note = buf;
+    }
+    if (!frame.empty()) r.frameMs = summarize(frame);
+    for (auto const& name : passOrder) r.passMs.emplace_back(name, summarize(perPass[name]));
+    if (!fragments.empty()) r.fragmentInvocations = percentile(fragments, 0.5);
+    return r;
+}
+
+std::string formatCount(std::optional<double> v) {
+    if (!v) return "-";
+    char buf[32];
+    if (*v >= 1e9) std::snprintf(buf, sizeof buf, "%.2fG", *v * 1e-9);
+    else if (*v >= 1e6) std::snprintf(buf, sizeof buf, "%.2fM", *v * 1e-6);
+    else if (*v >= 1e3) std::snprintf(buf, sizeof buf, "%.1fk", *v * 1e-3);
+    else std::snprintf(buf, sizeof buf, "%.0f", *v);
+    return buf;
+}
+
+std::optional<double> asDouble(std::optional<std::uint64_t> v) {
+    return v ? std::optional<double>(double(*v)) : std::nullopt;
+}
+
+// The quad result with the same light count, for the speed-up column.
+Result const* quadFor(std::vector<Result> const& results, int lights) {
+    for (auto const& r : results)
+        if (r.combo.mode == LightingMode::Quad && r.combo.lights == lights && r.framesMeasured > 0) return &r;
+    return nullptr;
+}
+
+void printTable(std::vector<Result> const& results, GlCaps const& caps, Size2 size, BenchOptions const& o) {
+    std::printf("gbuffer-lab bench: %dx%d, %s | %s | %s\n", size.width, size.height, caps.vendor.c_str(),
+                caps.renderer.c_str(), caps.version.c_str());
+    std::printf("%d warm-up + %d measured frames per combination, budget %.0f s each; GPU times from timer queries\n\n",
+                o.warmup, o.frames, o.budgetSeconds);
+    std::printf("%-16s %6s %7s %11s %11s %9s %10s %10s %8s %9s  %s\n", "mode", "lights", "frames", "frame med",
+                "frame p95", "vs quad", "frag.inv", "lit px", "shaded", "pairs", "status");
+    for (auto const& r : results) {
+        std::string speed = "-";
+        if (Result const* q = quadFor(results, r.combo.lights); q && r.framesMeasured > 0 && r.frameMs.median > 0) {
+            char buf[32];
+            std::snprintf(buf, sizeof buf, "%.1fx", q->frameMs.median / r.frameMs.median);
+            speed = buf;
+        }
+        auto ms = [&](double v) {
+            char buf[32];
+            if (r.framesMeasured == 0) return std::string("-");
+            std::snprintf(buf, sizeof buf, "%.2f ms", v);
+            return std::string(buf);
+        };
+        std::printf("%-16s %6d %7d %11s %11s %9s %10s %10s %8d %9s  %s%s%s\n", comboName(r.combo).c_str(), r.combo.lights,
+                    r.framesMeasured, ms(r.frameMs.median).c_str(), ms(r.frameMs.p95).c_str(), speed.c_str(),
+                    formatCount(r.fragmentInvocations).c_str(), formatCount(asDouble(r.litPixels)).c_str(),
+                    r.lightsShaded, formatCount(asDouble(r.lightPixelPairs)).c_str(), r.status.c_str(),
+                    r.note.empty() ? "" : ": ", r.note.c_str());
+        if (!r.passMs.empty()) {
+            std::printf("%-16s", "");
+            for (auto const& [name, s] : r.passMs) std::printf("  %s %.2f/%.2f", name.c_str(), s.median, s.p95);
+            std::printf("  (ms median/p95)\n");
+        }
+    }
+    std::printf("\nfrag.inv: fragment-shader invocations of the lighting pass (ARB_pipeline_statistics_query%s).\n",
+                caps.pipelineStatistics ? "" : ": unavailable on this context");
+    std::printf("lit px: pixels lit by at least one light; pairs: (light, pixel) pairs a light actually lit.\n");
+}
+
+json toJson(std::vector<Result> const& results, GlCaps const& caps, Size2 size, BenchOptions const& o) {
+    json combos = json::array();
+    for (auto const& r : results) {
+        json passes = json::object();
+        for (auto const& [name, s] : r.passMs) passes[name] = {{"median_ms", s.median}, {"p95_ms", s.p95}};
+        json j = {{"mode", enumName(kLightingModeNames, r.combo.mode)},
+                  {"lights", r.combo.lights},
+                  {"status", r.status},
+                  {"frames_measured", r.framesMeasured},
+                  {"wall_seconds", r.wallSeconds},
+                  {"lights_shaded", r.lightsShaded},
+                  {"gl_errors", r.glErrors},
+                  {"passes", passes}};
+        if (r.combo.usesCull) j["cull"] = enumName(kCullModeNames, r.combo.cull);
+        if (!r.note.empty()) j["note"] = r.note;
+        if (r.framesMeasured > 0) j["frame"] = {{"median_ms", r.frameMs.median}, {"p95_ms", r.frameMs.p95}};
+        if (r.fragmentInvocations) j["fragment_invocations"] = *r.fragmentInvocations;
+        if (r.litPixels) j["lit_pixels"] = *r.litPixels;
+        if (r.lightPixelPairs) j["light_pixel_pairs"] = *r.lightPixelPairs;
+        combos.push_back(j);
+    }
+    return {{"gl_vendor", caps.vendor},
+            {"gl_renderer", caps.renderer},
+            {"gl_version", caps.version},
+            {"width", size.width},
+            {"height", size.height},
+            {"warmup_frames", o.warmup},
+            {"frames", o.frames},
+            {"budget_seconds", o.budgetSeconds},
+            {"pipeline_statistics", caps.pipelineStatistics},
+            {"combinations", combos}};
+}
+
+}  // namespace
+
+void addBenchOptions(CLI::App& sub, BenchOptions& o) {
+    sub.add_option("--size", o.size, "Frame size WxH")->capture_default_str();
+    sub.add_option("--lights", o.lights, "Light counts, comma-separated")->delimiter(',')->capture_default_str();
+    sub.add_option("--modes", o.modes, "Lighting modes, comma-separated: quad, volumes, tiled, forward")
+        ->delimiter(',')
+        ->capture_default_str();
+    sub.add_option("--cull", o.culls, "Cull modes measured for volumes, comma-separated: back, front, none, flip, stencil")
+        ->delimiter(',')
+        ->capture_default_str();
+    sub.add_option("--frames", o.frames, "Measured frames per combination")->capture_default_str();
+    sub.add_option("--warmup", o.warmup, "Warm-up frames per combination, not measured")->capture_default_str();
+    sub.add_option("--budget", o.budgetSeconds, "Wall-clock seconds allowed per combination")->capture_default_str();
+    sub.add_option("--json", o.jsonPath, "Also write the results to this JSON file");
+    sub.add_option("--gl", o.glLimit, "Pretend the context is at most this OpenGL version, e.g. 3.3");
+}
+
+int runBench(BenchOptions const& o) {
+    std::string error;
+    auto const size = parseSize(o.size, &error);
+    if (!size) return badArgument(error);
+    if (o.lights.empty()) return badArgument("--lights needs at least one count");
+    for (int n : o.lights)
+        if (n < 0 || n > kMaxLights)
+            return badArgument("--lights counts must be 0.." + std::to_string(kMaxLights) + ", got " + std::to_string(n));
+    std::vector<LightingMode> modes;
+    for (auto const& name : o.modes) {
+        auto m = enumFromName<LightingMode>(kLightingModeNames, name);
+        if (!m) return badArgument("--modes must list quad, volumes, tiled or forward, got '" + name + "'");
+        modes.push_back(*m);
+    }
+    std::vector<CullMode> culls;
+    for (auto const& name : o.culls) {
+        auto c = enumFromName<CullMode>(kCullModeNames, name);
+        if (!c) return badArgument("--cull must list back, front, none, flip or stencil, got '" + name + "'");
+        culls.push_back(*c);
+    }
+    if (modes.empty() || culls.empty()) return badArgument("--modes and --cull need at least one value each");
+    if (o.frames < 1) return badArgument("--frames must be at least 1, got " + std::to_string(o.frames));
+    if (o.warmup < 0) return badArgument("--warmup must be 0 or more, got " + std::to_string(o.warmup));
+    if (!(o.budgetSeconds > 0)) return badArgument("--budget must be a positive number of seconds");
+    if (o.jsonPath) {
+        // Fail now rather than after minutes of measuring.
+        std::ofstream probe(*o.jsonPath, std::ios::app);
+        if (!probe) return badArgument("cannot write the JSON file " + *o.jsonPath);
+    }
+
+    int const maxLights = *std::max_element(o.lights.begin(), o.lights.end());
+    SceneRequest request;
+    request.lightCount = maxLights;
+    auto prepared = prepareScene(request, &error);
+    if (!prepared) return badArgument(error);
+    auto headless = createHeadlessRenderer(size->width, size->height, o.glLimit, &error);
+    if (!headless) {
+        std::fprintf(stderr, "gbuffer-lab bench: %s\n", error.c_str());
+        return 1;
+    }
+    Renderer& renderer = *headless->renderer;
+    if (auto err = renderer.setScene(prepared->scene)) return badArgument(*err);
+
+    std::vector<Result> results;
+    for (int n : o.lights) {
+        // The default scene's lights do not depend on the count: n lights are a prefix of more.
+        std::span<PointLight const> const lights(prepared->lights.data(), std::size_t(n));
+        for (LightingMode m : modes) {
+            bool const usesCull = m == LightingMode::Volumes;
+            for (std::size_t ci = 0; ci < (usesCull ? culls.size() : 1); ++ci) {
+                Combination const c{m, usesCull ? culls[ci] : CullMode::Front, usesCull, n};
+                std::fprintf(stderr, "bench: %s with %d lights...\n", comboName(c).c_str(), n);
+                results.push_back(runCombination(renderer, prepared->camera, lights, c, o, results));
+            }
+        }
+    }
+
+    printTable(results, renderer.caps(), *size, o);
+    if (o.jsonPath) {
+        std::ofstream f(*o.jsonPath, std::ios::trunc);
+        f << toJson(results, renderer.caps(), *size, o).dump(2) << "\n";
+        if (!f) return badArgument("cannot write the JSON file " + *o.jsonPath);
+    }
+    return 0;
+}
+
+}  // namespace gbl

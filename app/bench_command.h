@@ -1,0 +1,51 @@
+// `gbuffer-lab bench`: GPU time per pass and per frame for each lighting mode and light count.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gbl {
+
+struct BenchOptions {
+    std::string size = "1280x720";
+    std::vector<int> lights{32, 256, 1024, 4096};
+    std::vector<std::string> modes{"quad", "volumes", "tiled", "forward"};
+    // Cull modes measured for `volumes` (each one is its own combination); other modes ignore it.
+    std::vector<std::string> culls{"front"};
+    int frames = 20;            // measured frames per combination
+    int warmup = 3;             // frames rendered and thrown away first (shader and cache warm-up)
+    double budgetSeconds = 60;  // wall-clock budget per combination, warm-up included
+    std::optional<std::string> jsonPath;
+    std::string glLimit;        // "3.3" pretends the context is at most that version
+};
+
+void addBenchOptions(CLI::App& sub, BenchOptions& options);
+
+// Returns the process exit code: 0 when every combination ran (combinations over budget or
+// unavailable on this context still count as run: they are reported), 2 for bad arguments or
+// an unwritable JSON file, 1 when no GL context can be had.
+int runBench(BenchOptions const& options);
+
+// --- statistics (pure; tests/bench_stats_test.cpp) ----------------------------------------
+
+// Nearest-rank percentile: the smallest sample with at least p of the samples at or below it
+// (p in (0, 1]); p = 0.5 is the lower median for even counts. NaN for no samples.
+inline double percentile(std::vector<double> samples, double p) {
+    if (samples.empty()) return std::nan("");
+    std::sort(samples.begin(), samples.end());
+    auto const rank = std::size_t(std::ceil(p * double(samples.size())));
+    return samples[std::clamp<std::size_t>(rank, 1, samples.size()) - 1];
+}
+
+// Whether to start another frame: it must be expected to end within the budget, judged from the
+// slowest frame so far (frames of one combination vary little; the slowest keeps the guess safe).
+inline bool frameFitsBudget(double elapsedSeconds, double slowestFrameSeconds, double budgetSeconds) {
+    return elapsedSeconds + slowestFrameSeconds <= budgetSeconds;
+}
+
+}  // namespace gbl

@@ -1,0 +1,66 @@
+// gbuffer-lab entry point: the editor by default, `render` and `bench` as sub-commands.
+#include "bench_command.h"
+#include "cli_values.h"
+#include "editor.h"
+#include "render_command.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+
+int main(int argc, char** argv) {
+    CLI::App app{"gbuffer-lab: a deferred-shading editor that shows every step of the frame"};
+    app.require_subcommand(0, 1);
+
+    // The editor (no sub-command).
+    gbl::EditorOptions editor;
+    std::optional<std::string> scene;
+    std::string windowSize;
+    bool noVsync = false;
+    app.add_option("scene", scene, "A glTF 2.0 file (.gltf or .glb) to open instead of the default scene");
+    app.add_option("--screenshot", editor.screenshotPath, "Write the editor window as PNG after --frames frames, then exit");
+    app.add_option("--frames", editor.frames, "Frames to run before exiting (0: until the window is closed)");
+    app.add_option("--size", windowSize, "Window size WxH");
+    app.add_option("--lights", editor.lightCount, "Number of lights in the default scene");
+    app.add_option("--session", editor.sessionPath, "A session file to open");
+    app.add_option("--ui-test", editor.uiTestScript, "Run a UI test script and exit 0 when every check passes");
+    app.add_option("--gl", editor.glLimit, "Pretend the context is at most this OpenGL version, e.g. 3.3");
+    app.add_flag("--no-vsync", noVsync, "Render as fast as possible");
+
+    gbl::RenderOptions renderOptions;
+    CLI::App* render = app.add_subcommand("render", "Render one frame headlessly and write every intermediate image");
+    gbl::addRenderOptions(*render, renderOptions);
+
+    gbl::BenchOptions benchOptions;
+    CLI::App* bench = app.add_subcommand("bench", "Measure GPU time per pass for lighting modes and light counts");
+    gbl::addBenchOptions(*bench, benchOptions);
+
+    try {
+        app.parse(argc, argv);
+    } catch (CLI::ParseError const& e) {
+        if (e.get_exit_code() == 0) return app.exit(e);  // --help and friends
+        // One sentence and exit code 2 for every bad argument, as the other errors do.
+        std::fprintf(stderr, "gbuffer-lab: %s (see --help)\n", e.what());
+        return 2;
+    }
+    if (render->parsed()) return gbl::runRender(renderOptions);
+    if (bench->parsed()) return gbl::runBench(benchOptions);
+
+    editor.scenePath = scene;
+    editor.vsync = !noVsync;
+    if (!windowSize.empty()) {
+        std::string error;
+        auto const size = gbl::parseSize(windowSize, &error);
+        if (!size) {
+            std::fprintf(stderr, "gbuffer-lab: %s\n", error.c_str());
+            return 2;
+        }
+        editor.width = size->width;
+        editor.height = size->height;
+    }
+    if (editor.lightCount && (*editor.lightCount < 0 || *editor.lightCount > gbl::kMaxLights)) {
+        std::fprintf(stderr, "gbuffer-lab: --lights must be between 0 and %d\n", gbl::kMaxLights);
+        return 2;
+    }
+    return gbl::runEditor(editor);
+}

@@ -1,0 +1,34 @@
+// `gbuffer-lab render`: one frame rendered headlessly, every intermediate image written to disk.
+#pragma once
+
+#include "pipeline_settings.h"
+#include "scene_setup.h"
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gbl {
+
+struct RenderOptions {
+    std::string outDir;
+    std::string size = "1280x720";
+    std::optional<int> lights;
+    float time = 0.0f;
+    std::string blit = "blit";
+    std::string mode = "quad";
+    std::string cull = "front";
+    std::vector<std::string> views;  // extra debug views written as view_<name>.png
+    std::optional<std::string> scene;
+    bool allowOutsideUris = false;
+    std::string glLimit;
+};
+
+void addRenderOptions(CLI::App& sub, RenderOptions& options);
+// Returns the process exit code: 0 on success, 2 for bad arguments or unwritable output, 1 when
+// no GL context can be had.
+int runRender(RenderOptions const& options);
+
+}  // namespace gbl

@@ -1,0 +1,11 @@
+# Writes OUT: a C++ table of every shader file in DIR (name -> source text).
+file(GLOB files RELATIVE ${DIR} ${DIR}/*.vert ${DIR}/*.frag ${DIR}/*.comp ${DIR}/*.glsl)
+list(SORT files)
+set(body "// Generated from shaders/ by cmake/embed_shaders.cmake. Do not edit.\n#include \"embedded_shaders.h\"\n\nnamespace gbl {\n\nstd::span<EmbeddedShader const> embeddedShaders() {\n    static EmbeddedShader const table[] = {\n")
+foreach(f ${files})
+  file(READ ${DIR}/${f} text)
+  set(body "${body}        {\"${f}\", R\"gblshader(${text})gblshader\"},\n")
+endforeach()
+set(body "${body}    };\n    return table;\n}\n\nchar const* shaderSourceDir() { return GBL_SHADER_SOURCE_DIR; }\n\n}  // namespace gbl\n")
+file(WRITE ${OUT}.tmp "${body}")
+execute_process(COMMAND ${CMAKE_COMMAND} -E copy_if_different ${OUT}.tmp ${OUT})

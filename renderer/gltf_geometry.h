@@ -1,0 +1,19 @@
+// Geometry fix-ups the glTF loader applies to a primitive: flat normals and generated tangents.
+#pragma once
+
+#include "scene_data.h"
+
+namespace gbl {
+
+// Gives every triangle its own three vertices carrying the face normal, so a mesh without
+// NORMAL data shades as facets (glTF 2.0, "Meshes": flat normals when normals are missing).
+// Degenerate triangles get +Z. Indices become 0..n-1.
+void generateFlatNormals(MeshData& mesh);
+
+// Per-triangle dP/du accumulated at each vertex, then made orthogonal to the vertex normal.
+// tangent.w is chosen so that cross(normal, tangent.xyz) * w points along dP/dv, the
+// convention mesh_builder.h documents and the normal-mapping shader relies on. Vertices whose
+// triangles have degenerate UVs get any unit vector perpendicular to the normal.
+void generateTangents(MeshData& mesh);
+
+}  // namespace gbl

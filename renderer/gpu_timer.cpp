@@ -1,0 +1,44 @@
+// Timer query bookkeeping.
+#include "gpu_timer.h"
+
+namespace gbl {
+
+void GpuTimer::begin(std::string const& pass) {
+    Frame& f = frames_[current_];
+    if (f.used == f.slots.size()) f.slots.push_back({pass, gl::Query::create(GL_TIME_ELAPSED, "pass timer")});
+    Slot& s = f.slots[f.used++];
+    s.name = pass;
+    s.query.begin();
+    open_ = true;
+}
+
+void GpuTimer::end() {
+    if (!open_) return;
+    glEndQuery(GL_TIME_ELAPSED);
+    open_ = false;
+}
+
+std::vector<std::pair<std::string, double>> GpuTimer::finishFrame(bool wait) {
+    auto read = [](Frame& f) {
+        std::vector<std::pair<std::string, double>> out;
+        for (std::size_t i = 0; i < f.used; ++i)
+            out.emplace_back(f.slots[i].name, double(f.slots[i].query.result()) * 1e-6);
+        f.used = 0;
+        f.pending = false;
+        return out;
+    };
+    Frame& cur = frames_[current_];
+    cur.pending = cur.used > 0;
+    if (wait) {
+        last_ = read(cur);
+        return last_;
+    }
+    Frame& prev = frames_[1 - current_];
+    // The previous frame was submitted a whole frame ago, so reading it rarely waits, and the
+    // reported times lag by exactly one frame.
+    if (prev.pending) last_ = read(prev);
+    current_ = 1 - current_;
+    return last_;
+}
+
+}  // namespace gbl

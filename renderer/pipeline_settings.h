@@ -1,0 +1,67 @@
+// Every switch of the deferred pipeline the user can flip, as plain values.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <optional>
+#include <string_view>
+
+namespace gbl {
+
+enum class LightingMode { Quad, Volumes, Tiled, Forward };
+enum class CullMode { Back, Front, None, Flip, Stencil };
+// How the G-buffer depth reaches the lit target before the forward pass (the "blit step").
+enum class DepthCopy { Blit, Shader, Off };
+enum class Tonemap { Exposure, Reinhard, Clamp };
+
+// What the final image shows. Values match the VIEW_* constants in shaders/view.frag.
+enum class DebugView {
+    Final = 0,
+    Lighting = 1,
+    Position = 2,
+    Normal = 3,
+    Albedo = 4,
+    Specular = 5,
+    Depth = 6,
+    DepthLinear = 7,
+    Heatmap = 8,
+    TileLights = 9,
+};
+
+struct PipelineSettings {
+    LightingMode mode = LightingMode::Quad;
+    CullMode cull = CullMode::Front;
+    DepthCopy depthCopy = DepthCopy::Blit;
+    Tonemap tonemap = Tonemap::Exposure;
+    DebugView view = DebugView::Final;
+    bool lightCubes = true;
+    bool volumeWireframes = false;
+    bool normalMaps = true;
+    glm::vec3 ambient{0.03f};
+    float exposure = 1.0f;
+    float shininess = 32.0f;
+};
+
+// Names used on the command line and in session files, in enum order.
+inline constexpr std::array<std::string_view, 4> kLightingModeNames{"quad", "volumes", "tiled", "forward"};
+inline constexpr std::array<std::string_view, 5> kCullModeNames{"back", "front", "none", "flip", "stencil"};
+inline constexpr std::array<std::string_view, 3> kDepthCopyNames{"blit", "shader", "off"};
+inline constexpr std::array<std::string_view, 3> kTonemapNames{"exposure", "reinhard", "clamp"};
+inline constexpr std::array<std::string_view, 10> kDebugViewNames{
+    "final", "lighting", "position", "normal", "albedo", "specular", "depth", "depth_linear", "heatmap", "tile_lights"};
+
+template <class Enum, std::size_t N>
+std::optional<Enum> enumFromName(std::array<std::string_view, N> const& names, std::string_view name) {
+    for (std::size_t i = 0; i < N; ++i)
+        if (names[i] == name) return static_cast<Enum>(i);
+    return std::nullopt;
+}
+
+template <class Enum, std::size_t N>
+std::string_view enumName(std::array<std::string_view, N> const& names, Enum value) {
+    auto const i = static_cast<std::size_t>(value);
+    return i < N ? names[i] : std::string_view("?");
+}
+
+}  // namespace gbl

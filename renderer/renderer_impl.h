@@ -1,0 +1,69 @@
+// Renderer internals: the GPU resources and the passes of one frame. Pass code includes this;
+// users of the renderer include renderer.h only.
+#pragma once
+
+#include "gl/vertex_array.h"
+#include "gpu_scene.h"
+#include "gpu_timer.h"
+#include "light_buffer.h"
+#include "render_targets.h"
+#include "renderer.h"
+#include "shader_library.h"
+#include "view_pass.h"
+
+#include <glm/glm.hpp>
+
+namespace gbl {
+
+// Per-frame values every pass may need, computed once at the start of the frame.
+struct FrameContext {
+    Camera camera;
+    float aspect = 1.0f;
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    glm::mat4 viewProj{1.0f};
+    std::span<PointLight const> lights;
+    PipelineSettings settings;
+};
+
+class RendererImpl {
+public:
+    RendererImpl(GlCaps caps, int width, int height);
+
+    FrameStats render(FrameInput const& input);
+    void resizeTargets(int width, int height);
+    // Draws `params` into `target`, (re)allocating it to the frame size when needed.
+    void drawView(ViewParams const& params, Camera const& camera, ViewTarget& target);
+
+    // --- resources -------------------------------------------------------------------------
+    GlCaps caps;
+    ShaderLibrary shaders;
+    RenderTargets targets;
+    GpuScene scene;
+    float sceneRadius = 10.0f;  // for sizing light cubes
+    LightBuffer lights;
+    gl::VertexArray emptyVao;   // full-screen triangles need a bound VAO in core profile
+    gl::VertexArray cubeVao;
+    gl::Buffer cubeVertices;
+    GpuTimer timer;
+    gl::Query fragmentQuery;    // GL_FRAGMENT_SHADER_INVOCATIONS_ARB when available
+    std::uint64_t glErrors = 0;
+    PipelineSettings lastSettings;  // of the last rendered frame, for views drawn after it
+
+    // --- passes (renderer/passes.cpp) -------------------------------------------------------
+    void geometryPass(FrameContext const& f);
+    void lightingQuadPass(FrameContext const& f);
+    void forwardShadingPass(FrameContext const& f, MaterialFilter filter);
+    void depthCopyPass(FrameContext const& f);
+    void lightCubesPass(FrameContext const& f);
+    void displayPass(FrameContext const& f);
+    void drawViewInto(ViewParams const& params, Camera const& camera, PipelineSettings const& settings, int width,
+                      int height);
+    float lightCubeHalfSize() const;
+
+    // Binds the G-buffer attachments to units 0..2 and the light buffer to unit 3 and sets the
+    // uniforms of shaders/lighting.glsl on `program`.
+    void bindLightingInputs(gl::Program const& program, FrameContext const& f) const;
+};
+
+}  // namespace gbl

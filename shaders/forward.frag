@@ -1,0 +1,33 @@
+// Forward shading: every light evaluated per fragment while drawing each object (no G-buffer).
+// Used by the `forward` lighting mode and for alpha-blended materials after deferred lighting.
+#version 330 core
+#include "material.glsl"
+#include "lighting.glsl"
+
+in vec3 vWorldPos;
+in vec3 vNormal;
+in vec2 vUV;
+in vec4 vTangent;
+
+uniform vec3 uAmbient;
+uniform int uLightCount;
+uniform samplerBuffer uLights;  // same layout as lighting_quad.frag
+
+out vec4 fragColor;
+
+Light fetchLight(int i) {
+    vec4 a = texelFetch(uLights, i * 4 + 0);
+    vec4 b = texelFetch(uLights, i * 4 + 1);
+    vec4 c = texelFetch(uLights, i * 4 + 2);
+    return Light(a.xyz, b.xyz, c.xyz, a.w, b.w);
+}
+
+void main() {
+    vec4 base = materialBaseColor(vUV);
+    if (uAlphaMask && base.a < uAlphaCutoff) discard;
+    vec3 n = materialNormal(vNormal, vTangent, vUV, gl_FrontFacing);
+    float spec = materialSpecular(vUV);
+    vec3 color = uAmbient * base.rgb;
+    for (int i = 0; i < uLightCount; ++i) color += shadeLight(fetchLight(i), vWorldPos, n, base.rgb, spec);
+    fragColor = vec4(color, base.a);
+}

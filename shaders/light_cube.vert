@@ -1,0 +1,13 @@
+// One small cube per light, placed and coloured from the light buffer by instance id.
+#version 330 core
+layout(location = 0) in vec3 aPosition;
+uniform mat4 uViewProj;
+uniform float uCubeSize;
+uniform samplerBuffer uLights;
+flat out vec3 vColor;
+void main() {
+    vec4 a = texelFetch(uLights, gl_InstanceID * 4 + 0);
+    vec4 d = texelFetch(uLights, gl_InstanceID * 4 + 3);
+    vColor = d.rgb;  // the light's colour, 0..1
+    gl_Position = uViewProj * vec4(a.xyz + aPosition * uCubeSize, 1.0);
+}

@@ -1,0 +1,25 @@
+// Shared vertex stage for every pass that draws scene meshes (G-buffer, forward shading).
+#version 330 core
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec2 aUV;
+layout(location = 3) in vec4 aTangent;
+
+uniform mat4 uModel;
+uniform mat3 uNormalMatrix;  // inverse-transpose of uModel's upper 3x3
+uniform mat4 uViewProj;
+
+out vec3 vWorldPos;
+out vec3 vNormal;
+out vec2 vUV;
+out vec4 vTangent;
+
+void main() {
+    vec4 world = uModel * vec4(aPosition, 1.0);
+    vWorldPos = world.xyz;
+    vNormal = uNormalMatrix * aNormal;
+    // Tangents follow the surface like positions do (model matrix, not the normal matrix).
+    vTangent = vec4(mat3(uModel) * aTangent.xyz, aTangent.w);
+    vUV = aUV;
+    gl_Position = uViewProj * world;
+}

@@ -1,0 +1,111 @@
+// Turns one frame image into displayable colour: the tonemapped final image or a debug view
+// of any attachment, with channel isolation and range remapping (the texture viewers use it too).
+#version 330 core
+
+// Values match gbl::DebugView in renderer/pipeline_settings.h one-to-one.
+#define VIEW_FINAL 0
+#define VIEW_LIGHTING 1
+#define VIEW_POSITION 2
+#define VIEW_NORMAL 3
+#define VIEW_ALBEDO 4
+#define VIEW_SPECULAR 5
+#define VIEW_DEPTH 6
+#define VIEW_DEPTH_LINEAR 7
+#define VIEW_HEATMAP 8
+#define VIEW_TILE_LIGHTS 9
+
+// Values match gbl::Tonemap.
+#define TONEMAP_EXPOSURE 0
+#define TONEMAP_REINHARD 1
+#define TONEMAP_CLAMP 2
+
+// Values match gbl::NormalDisplay.
+#define NORMALS_BIASED 0
+#define NORMALS_ABSOLUTE 1
+
+uniform sampler2D uPosition;
+uniform sampler2D uNormal;
+uniform sampler2D uAlbedoSpec;
+uniform sampler2D uDepth;
+uniform sampler2D uLighting;
+uniform sampler2D uCoverage;
+
+uniform int uView;
+uniform int uTonemap;
+uniform float uExposure;
+uniform vec4 uChannelMask;   // 1 for each shown channel
+uniform float uRangeMin;
+uniform float uRangeMax;
+uniform int uNormalDisplay;
+uniform float uNear;
+uniform float uFar;
+uniform float uHeatMax;      // count shown at the top of the heat ramp
+
+in vec2 vUV;
+out vec4 fragColor;
+
+vec3 tonemap(vec3 hdr) {
+    vec3 c = hdr * uExposure;
+    if (uTonemap == TONEMAP_EXPOSURE) c = vec3(1.0) - exp(-c);
+    else if (uTonemap == TONEMAP_REINHARD) c = c / (vec3(1.0) + c);
+    else c = clamp(c, 0.0, 1.0);
+    return pow(c, vec3(1.0 / 2.2));
+}
+
+float linearDepth(float z) {
+    float ndc = z * 2.0 - 1.0;
+    return 2.0 * uNear * uFar / (uFar + uNear - ndc * (uFar - uNear));
+}
+
+vec4 remap(vec4 v) { return (v - vec4(uRangeMin)) / max(uRangeMax - uRangeMin, 1e-20); }
+
+// Blue -> cyan -> green -> yellow -> red over 0..1, black for exactly 0.
+vec3 heatRamp(float t) {
+    if (t <= 0.0) return vec3(0.0);
+    t = clamp(t, 0.0, 1.0);
+    vec3 a = mix(vec3(0.0, 0.0, 1.0), vec3(0.0, 1.0, 1.0), clamp(t * 4.0, 0.0, 1.0));
+    vec3 b = mix(vec3(0.0, 1.0, 0.0), vec3(1.0, 1.0, 0.0), clamp(t * 4.0 - 2.0, 0.0, 1.0));
+    vec3 c = mix(vec3(1.0, 1.0, 0.0), vec3(1.0, 0.0, 0.0), clamp(t * 4.0 - 3.0, 0.0, 1.0));
+    if (t < 0.25) return a;
+    if (t < 0.5) return mix(vec3(0.0, 1.0, 1.0), vec3(0.0, 1.0, 0.0), t * 4.0 - 1.0);
+    if (t < 0.75) return b;
+    return c;
+}
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    vec4 v;
+    bool data = true;  // data views are remapped; the final image and heat maps are not
+    switch (uView) {
+    case VIEW_FINAL: v = vec4(tonemap(texelFetch(uLighting, px, 0).rgb), 1.0); data = false; break;
+    case VIEW_LIGHTING: v = texelFetch(uLighting, px, 0); break;
+    case VIEW_POSITION: v = texelFetch(uPosition, px, 0); break;
+    case VIEW_NORMAL: {
+        vec4 n = texelFetch(uNormal, px, 0);
+        v = vec4(uNormalDisplay == NORMALS_ABSOLUTE ? abs(n.xyz) : n.xyz * 0.5 + 0.5, n.w);
+        data = false;
+        break;
+    }
+    case VIEW_ALBEDO: v = texelFetch(uAlbedoSpec, px, 0); break;
+    case VIEW_SPECULAR: v = vec4(texelFetch(uAlbedoSpec, px, 0).aaa, 1.0); break;
+    case VIEW_DEPTH: v = vec4(vec3(texelFetch(uDepth, px, 0).r), 1.0); break;
+    case VIEW_DEPTH_LINEAR: v = vec4(vec3(linearDepth(texelFetch(uDepth, px, 0).r)), 1.0); break;
+    case VIEW_HEATMAP: {
+        vec2 c = texelFetch(uCoverage, px, 0).xy;  // x: volumes covering, y: lights that lit it
+        v = vec4(heatRamp(c.x / uHeatMax), 1.0);
+        data = false;
+        break;
+    }
+    case VIEW_TILE_LIGHTS: v = vec4(heatRamp(texelFetch(uCoverage, px, 0).x / uHeatMax), 1.0); data = false; break;
+    default: v = vec4(1.0, 0.0, 1.0, 1.0); data = false; break;  // magenta: an unknown view
+    }
+    if (data) v = remap(v);
+    // Channel isolation: one channel alone is shown as grey (so alpha/specular stays visible).
+    float shown = dot(uChannelMask, vec4(1.0));
+    if (shown == 1.0) {
+        float g = dot(v, uChannelMask);
+        fragColor = vec4(vec3(g), 1.0);
+    } else {
+        fragColor = vec4(v.rgb * uChannelMask.rgb, 1.0);
+    }
+}

@@ -1,0 +1,248 @@
+// Light radius and attenuation against hand-computed values.
+#include "light_math.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace gbl;
+
+namespace {
+
+constexpr float kThreshold = 5.0f / 256.0f;  // Imax / threshold = 51.2 Imax
+
+PointLight makeLight(float intensity, float kc, float kl, float kq) {
+    PointLight l;
+    l.color = glm::vec3(1.0f, 0.5f, 0.25f);  // Imax = intensity (red is the brightest channel)
+    l.intensity = intensity;
+    l.kc = kc;
+    l.kl = kl;
+    l.kq = kq;
+    l.threshold = kThreshold;
+    return l;
+}
+
+}  // namespace
+
+// --- radius ---------------------------------------------------------------------------------
+
+TEST(LightRadius, QuadraticMatchesHandComputedRoot) {
+    // Kc=1, Kl=0.7, Kq=1.8, Imax=1, threshold 5/256: 1.8 d^2 + 0.7 d + 1 - 51.2 = 0
+    // d = (-0.7 + sqrt(0.49 + 4*1.8*50.2)) / 3.6 = (-0.7 + 19.024...) / 3.6 = 5.0901...
+    LightRadius r = solveLightRadius(1.0f, 1.0f, 0.7f, 1.8f, kThreshold);
+    EXPECT_EQ(r.kind, RadiusKind::Quadratic);
+    EXPECT_NEAR(r.radius, 5.090127, 1e-4);
+}
+
+TEST(LightRadius, QuadraticAtSeveralIntensities) {
+    // Roots of 1.8 d^2 + 0.7 d + (1 - 51.2 Imax) = 0, worked by hand with the quadratic formula:
+    //   Imax = 0.5: c = -24.6  -> d = (-0.7 + sqrt(0.49 + 177.12)) / 3.6 = 3.507511
+    //   Imax = 5:   c = -255   -> d = (-0.7 + sqrt(0.49 + 1836))   / 3.6 = 11.709524
+    //   Imax = 10:  c = -511   -> d = (-0.7 + sqrt(0.49 + 3679.2)) / 3.6 = 16.655680
+    struct Case {
+        float imax;
+        double expected;
+    };
+    for (Case c : {Case{0.5f, 3.507511}, Case{5.0f, 11.709524}, Case{10.0f, 16.655680}}) {
+        LightRadius r = solveLightRadius(c.imax, 1.0f, 0.7f, 1.8f, kThreshold);
+        EXPECT_EQ(r.kind, RadiusKind::Quadratic) << "Imax " << c.imax;
+        EXPECT_NEAR(r.radius, c.expected, 1e-4) << "Imax " << c.imax;
+    }
+}
+
+TEST(LightRadius, BrightnessAtTheRadiusEqualsTheThreshold) {
+    // The defining property, checked in double at intensities spanning four decades.
+    for (float imax : {0.05f, 0.3f, 1.0f, 7.0f, 40.0f, 300.0f}) {
+        LightRadius r = solveLightRadius(imax, 1.0f, 0.09f, 0.032f, kThreshold);
+        ASSERT_EQ(r.kind, RadiusKind::Quadratic) << imax;
+        double const d = r.radius;
+        double const brightness = imax / (1.0 + 0.09 * d + 0.032 * d * d);
+        EXPECT_NEAR(brightness / kThreshold, 1.0, 1e-5) << "Imax " << imax;
+    }
+}
+
+TEST(LightRadius, LightHelperUsesBrightestChannelTimesIntensity) {
+    PointLight l = makeLight(2.0f, 1.0f, 0.7f, 1.8f);
+    l.color = glm::vec3(0.25f, 0.5f, 0.125f);  // Imax = 2 * 0.5 = 1
+    EXPECT_FLOAT_EQ(lightImax(l), 1.0f);
+    LightRadius r = lightRadius(l);
+    EXPECT_EQ(r.kind, RadiusKind::Quadratic);
+    EXPECT_NEAR(r.radius, 5.090127, 1e-4);
+}
+
+TEST(LightRadius, LinearRootWhenKqIsZero) {
+    // Kq = 0: 0.7 d + 1 = 51.2 Imax  ->  Imax=1: d = 50.2/0.7 = 71.714286; Imax=2: 101.4/0.7 = 144.857143
+    LightRadius r1 = solveLightRadius(1.0f, 1.0f, 0.7f, 0.0f, kThreshold);
+    EXPECT_EQ(r1.kind, RadiusKind::Linear);
+    EXPECT_NEAR(r1.radius, 71.714286, 1e-3);
+    LightRadius r2 = solveLightRadius(2.0f, 1.0f, 0.7f, 0.0f, kThreshold);
+    EXPECT_EQ(r2.kind, RadiusKind::Linear);
+    EXPECT_NEAR(r2.radius, 144.857143, 1e-3);
+}
+
+TEST(LightRadius, NoFalloffIsCappedAndFlagged) {
+    // Kl = Kq = 0: the brightness is Imax/Kc everywhere and never reaches the threshold.
+    LightRadius r = solveLightRadius(1.0f, 1.0f, 0.0f, 0.0f, kThreshold);
+    EXPECT_EQ(r.kind, RadiusKind::Capped);
+    EXPECT_FLOAT_EQ(r.radius, kLightRadiusCap);
+}
+
+TEST(LightRadius, RootPastTheCapIsCappedAndFlagged) {
+    // Kc=1, Kl=0, Kq=1e-6, Imax=1: d = sqrt(50.2 / 1e-6) = 7085.2 > the cap.
+    LightRadius r = solveLightRadius(1.0f, 1.0f, 0.0f, 1e-6f, kThreshold);
+    EXPECT_EQ(r.kind, RadiusKind::Capped);
+    EXPECT_FLOAT_EQ(r.radius, kLightRadiusCap);
+    // Linear: (51.2 * 100 - 1) / 0.7 = 7312.9 > the cap.
+    LightRadius l = solveLightRadius(100.0f, 1.0f, 0.7f, 0.0f, kThreshold);
+    EXPECT_EQ(l.kind, RadiusKind::Capped);
+    EXPECT_FLOAT_EQ(l.radius, kLightRadiusCap);
+}
+
+TEST(LightRadius, TooDimLightHasZeroRadius) {
+    // Imax <= threshold * Kc: even at d = 0 the light is at or below the threshold.
+    EXPECT_EQ(solveLightRadius(kThreshold, 1.0f, 0.7f, 1.8f, kThreshold).kind, RadiusKind::Zero);  // equal
+    EXPECT_EQ(solveLightRadius(0.01f, 1.0f, 0.7f, 1.8f, kThreshold).kind, RadiusKind::Zero);
+    EXPECT_EQ(solveLightRadius(0.03f, 2.0f, 0.7f, 1.8f, kThreshold).kind, RadiusKind::Zero);  // 0.03 < 0.039
+    EXPECT_EQ(solveLightRadius(0.0f, 1.0f, 0.7f, 1.8f, kThreshold).radius, 0.0f);
+    // Just above threshold * Kc the root is small but positive.
+    LightRadius r = solveLightRadius(0.05f, 2.0f, 0.7f, 1.8f, kThreshold);  // 1.8d^2+0.7d+2-2.56=0
+    EXPECT_EQ(r.kind, RadiusKind::Quadratic);
+    EXPECT_NEAR(r.radius, (-0.7 + std::sqrt(0.49 + 4 * 1.8 * 0.56)) / 3.6, 1e-4);
+    // A black light is skipped too.
+    PointLight black = makeLight(1.0f, 1.0f, 0.7f, 1.8f);
+    black.color = glm::vec3(0.0f);
+    EXPECT_EQ(lightRadius(black).kind, RadiusKind::Zero);
+}
+
+TEST(LightRadius, StableForVeryBrightLights) {
+    // Imax = 1000, Kl = 100 dominant, Kq = 1e-4: the naive (-b + sqrt(b^2 - 4ac)) / 2a in float
+    // subtracts 100 from 100.10 and keeps ~4 digits; the stable form must satisfy the equation
+    // to float precision (d = 511.728...).
+    LightRadius r = solveLightRadius(1000.0f, 1.0f, 100.0f, 1e-4f, kThreshold);
+    ASSERT_EQ(r.kind, RadiusKind::Quadratic);
+    double const d = r.radius;
+    EXPECT_NEAR(d, 511.728, 0.01);
+    double const residual = 1e-4 * d * d + 100.0 * d + 1.0 - 1000.0 * 51.2;
+    EXPECT_LT(std::abs(residual) / (1000.0 * 51.2), 1e-6);
+}
+
+// --- validation -----------------------------------------------------------------------------
+
+TEST(ValidateLight, AcceptsTheDefaultLight) {
+    EXPECT_FALSE(validateLight(PointLight{}).has_value());
+    EXPECT_FALSE(validateLight(makeLight(3.0f, 1.0f, 0.0f, 0.0f)).has_value());
+}
+
+TEST(ValidateLight, RejectsNaNInfiniteAndNegativeWithAMessageNamingTheField) {
+    float const nan = std::numeric_limits<float>::quiet_NaN();
+    float const inf = std::numeric_limits<float>::infinity();
+    struct Case {
+        char const* field;
+        void (*spoil)(PointLight&, float);
+        float value;
+    };
+    Case const cases[] = {
+        {"intensity", [](PointLight& l, float v) { l.intensity = v; }, nan},
+        {"intensity", [](PointLight& l, float v) { l.intensity = v; }, -1.0f},
+        {"Kc", [](PointLight& l, float v) { l.kc = v; }, inf},
+        {"Kl", [](PointLight& l, float v) { l.kl = v; }, -0.5f},
+        {"Kq", [](PointLight& l, float v) { l.kq = v; }, nan},
+        {"threshold", [](PointLight& l, float v) { l.threshold = v; }, -inf},
+        {"color.g", [](PointLight& l, float v) { l.color.g = v; }, nan},
+    };
+    for (Case const& c : cases) {
+        PointLight l = makeLight(1.0f, 1.0f, 0.7f, 1.8f);
+        c.spoil(l, c.value);
+        auto const msg = validateLight(l);
+        ASSERT_TRUE(msg.has_value()) << c.field << " = " << c.value;
+        EXPECT_NE(msg->find(c.field), std::string::npos) << *msg;
+        // An invalid light is never drawn.
+        EXPECT_EQ(lightRadius(l).kind, RadiusKind::Zero) << c.field;
+        EXPECT_EQ(lightRadius(l).radius, 0.0f) << c.field;
+    }
+    // The raw solver rejects them too.
+    EXPECT_EQ(solveLightRadius(nan, 1.0f, 0.7f, 1.8f, kThreshold).kind, RadiusKind::Zero);
+    EXPECT_EQ(solveLightRadius(1.0f, 1.0f, inf, 1.8f, kThreshold).kind, RadiusKind::Zero);
+    EXPECT_EQ(solveLightRadius(1.0f, 1.0f, 0.7f, -1.8f, kThreshold).kind, RadiusKind::Zero);
+}
+
+TEST(ValidateLight, RejectsNonFinitePositionZeroThresholdAndNoAttenuation) {
+    PointLight l = makeLight(1.0f, 1.0f, 0.7f, 1.8f);
+    l.position.y = std::numeric_limits<float>::infinity();
+    ASSERT_TRUE(validateLight(l).has_value());
+    EXPECT_NE(validateLight(l)->find("position"), std::string::npos);
+
+    l = makeLight(1.0f, 1.0f, 0.7f, 1.8f);
+    l.threshold = 0.0f;
+    ASSERT_TRUE(validateLight(l).has_value());
+    EXPECT_NE(validateLight(l)->find("threshold"), std::string::npos);
+
+    l = makeLight(1.0f, 0.0f, 0.0f, 0.0f);
+    ASSERT_TRUE(validateLight(l).has_value());
+    EXPECT_NE(validateLight(l)->find("Kc"), std::string::npos);
+}
+
+// --- windowed attenuation -------------------------------------------------------------------
+
+TEST(WindowedAttenuation, ZeroAtAndPastTheRadius) {
+    PointLight const l = makeLight(1.0f, 1.0f, 0.7f, 1.8f);
+    float const r = lightRadius(l).radius;
+    EXPECT_EQ(windowedAttenuation(l, r, r), 0.0f);
+    EXPECT_EQ(windowedAttenuation(l, r, r * 1.001f), 0.0f);
+    EXPECT_EQ(windowedAttenuation(l, r, 1e6f), 0.0f);
+    EXPECT_EQ(windowedAttenuation(l, r, std::numeric_limits<float>::infinity()), 0.0f);
+    EXPECT_EQ(windowedAttenuation(l, r, std::numeric_limits<float>::quiet_NaN()), 0.0f);
+}
+
+TEST(WindowedAttenuation, HandComputedInsideValues) {
+    // At d = 0: 1/Kc - threshold/Imax = 1 - 5/256 = 0.98046875 (the cut-off equals threshold/Imax
+    // because Imax * att(r) == threshold by the definition of r).
+    PointLight const l = makeLight(1.0f, 1.0f, 0.7f, 1.8f);
+    float const r = lightRadius(l).radius;
+    EXPECT_NEAR(attenuationCutoff(l, r), 5.0 / 256.0, 1e-6);
+    EXPECT_NEAR(windowedAttenuation(l, r, 0.0f), 0.98046875, 1e-6);
+    // At d = 1: 1 / (1 + 0.7 + 1.8) - 5/256 = 0.285714 - 0.019531 = 0.266183
+    EXPECT_NEAR(windowedAttenuation(l, r, 1.0f), 0.266183, 1e-5);
+}
+
+TEST(WindowedAttenuation, ContinuousAndDecreasingUpToTheRadius) {
+    for (PointLight const& l : {makeLight(1.0f, 1.0f, 0.7f, 1.8f), makeLight(5.0f, 1.0f, 0.09f, 0.032f),
+                                makeLight(1.0f, 1.0f, 0.7f, 0.0f), makeLight(100.0f, 1.0f, 0.7f, 0.0f) /*capped*/}) {
+        float const r = lightRadius(l).radius;
+        ASSERT_GT(r, 0.0f);
+        // Approaching the radius from inside the value goes to 0 with the distance left.
+        float const justInside = windowedAttenuation(l, r, r * (1.0f - 1e-5f));
+        EXPECT_GE(justInside, 0.0f);
+        EXPECT_LT(justInside, 1e-4f) << "Kq " << l.kq << " intensity " << l.intensity;
+        // No step anywhere: sample densely and bound the jump between neighbours by the
+        // steepest slope of the classic factor, |(Kl + 2 Kq d) / (Kc + Kl d + Kq d^2)^2|,
+        // found on the same samples (10% margin for the slope varying within one step).
+        int const n = 20000;
+        float const step = r / n;
+        double maxSlope = 0.0;
+        for (int i = 0; i <= n; ++i) {
+            double const d = double(step) * i, den = l.kc + l.kl * d + l.kq * d * d;
+            maxSlope = std::max(maxSlope, (l.kl + 2.0 * l.kq * d) / (den * den));
+        }
+        float const maxJump = float(maxSlope * step * 1.1) + 1e-6f;
+        float prev = windowedAttenuation(l, r, 0.0f);
+        for (int i = 1; i <= n; ++i) {
+            float const v = windowedAttenuation(l, r, step * i);
+            EXPECT_LE(v, prev + 1e-7f) << "not decreasing at d = " << step * i;
+            ASSERT_LE(prev - v, maxJump) << "step at d = " << step * i;
+            prev = v;
+        }
+        EXPECT_EQ(prev, 0.0f);
+    }
+}
+
+TEST(WindowedAttenuation, NoFalloffLightKeepsItsBrightnessUntilTheCap) {
+    // Kl = Kq = 0: subtracting the (constant) factor at the radius would leave nothing, so the
+    // window subtracts threshold / Imax; the documented step at the cap is the price.
+    PointLight const l = makeLight(2.0f, 1.0f, 0.0f, 0.0f);
+    LightRadius const r = lightRadius(l);
+    ASSERT_EQ(r.kind, RadiusKind::Capped);
+    EXPECT_NEAR(windowedAttenuation(l, r.radius, 10.0f), 1.0 - 5.0 / 512.0, 1e-6);
+    EXPECT_EQ(windowedAttenuation(l, r.radius, r.radius), 0.0f);
+}

@@ -1,0 +1,300 @@
+// The deferred core on a headless context: G-buffer contents against analytic values, the
+// lighting pass against the CPU equation, the blit step, resizing and shader hot reload.
+#include "gl_fixture.h"
+#include "light_buffer.h"
+#include "renderer_impl.h"
+#include "shader_library.h"
+#include "shading_cpu.h"
+#include "test_scenes.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+using namespace gbl;
+using gbl::test::GlTest;
+
+namespace {
+
+Camera lookingAt(glm::vec3 from, glm::vec3 target) {
+    Camera c;
+    c.position = from;
+    c.nearPlane = 0.1f;
+    c.farPlane = 100.0f;
+    c.lookAt(target);
+    return c;
+}
+
+// World-space ray through the centre of pixel (x, y), y from the top.
+struct Ray {
+    glm::vec3 origin, dir;
+};
+Ray pixelRay(Camera const& c, int w, int h, int x, int y) {
+    glm::mat4 const inv = glm::inverse(c.projection(float(w) / float(h)) * c.view());
+    float const nx = (float(x) + 0.5f) / float(w) * 2.0f - 1.0f;
+    float const ny = 1.0f - (float(y) + 0.5f) / float(h) * 2.0f;
+    glm::vec4 a = inv * glm::vec4(nx, ny, -1.0f, 1.0f), b = inv * glm::vec4(nx, ny, 1.0f, 1.0f);
+    glm::vec3 const pa = glm::vec3(a) / a.w, pb = glm::vec3(b) / b.w;
+    return {pa, glm::normalize(pb - pa)};
+}
+
+PipelineSettings plainSettings() {
+    PipelineSettings s;
+    s.lightCubes = false;
+    s.ambient = glm::vec3(0.03f);
+    return s;
+}
+
+}  // namespace
+
+class RendererGlTest : public GlTest {};
+
+TEST_F(RendererGlTest, FloorFillsGBufferWithAnalyticValues) {
+    int const w = 64, h = 48;
+    auto r = makeRenderer(w, h);
+    ASSERT_FALSE(r->setScene(test::floorScene()));
+    Camera const cam = lookingAt({0.0f, 5.0f, 5.0f}, {0.0f, 0.0f, 0.0f});
+    r->render({cam, {}, plainSettings()});
+
+    FloatImage const pos = r->readAttachment(Attachment::Position);
+    FloatImage const nrm = r->readAttachment(Attachment::Normal);
+    FloatImage const alb = r->readAttachment(Attachment::AlbedoSpec);
+    FloatImage const dep = r->readAttachment(Attachment::Depth);
+    glm::mat4 const viewProj = cam.projection(float(w) / float(h)) * cam.view();
+    int covered = 0;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            Ray const ray = pixelRay(cam, w, h, x, y);
+            bool const hits = ray.dir.y < 0.0f;
+            float const t = hits ? -ray.origin.y / ray.dir.y : 0.0f;
+            glm::vec3 const hit = ray.origin + ray.dir * t;
+            bool const onFloor = hits && std::abs(hit.x) < 20.0f && std::abs(hit.z) < 20.0f && t < cam.farPlane;
+            ASSERT_EQ(pos.at(x, y, 3) > 0.5f, onFloor) << "coverage at " << x << "," << y;
+            if (!onFloor) {
+                EXPECT_EQ(nrm.at(x, y, 0), 0.0f) << "background must stay cleared to black";
+                continue;
+            }
+            ++covered;
+            // A floor facing +Y stores exactly (0, 1, 0): 0 and 1 are exact in half floats.
+            EXPECT_EQ(nrm.at(x, y, 0), 0.0f);
+            EXPECT_EQ(nrm.at(x, y, 1), 1.0f);
+            EXPECT_EQ(nrm.at(x, y, 2), 0.0f);
+            // Position: half floats keep 11 significant bits, so |v| < 32 rounds by at most
+            // 32 * 2^-11 = 0.016; rasterisation samples the pixel centre like the ray does.
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(pos.at(x, y, c), hit[c], 0.016f) << "position at " << x << "," << y;
+            // Albedo and specular are 8-bit: one step of 1/255.
+            EXPECT_NEAR(alb.at(x, y, 0), test::kPlaneAlbedo.r, 1.0f / 255.0f);
+            EXPECT_NEAR(alb.at(x, y, 1), test::kPlaneAlbedo.g, 1.0f / 255.0f);
+            EXPECT_NEAR(alb.at(x, y, 2), test::kPlaneAlbedo.b, 1.0f / 255.0f);
+            EXPECT_NEAR(alb.at(x, y, 3), test::kPlaneSpecular, 1.0f / 255.0f);
+            // Depth: the projected hit point in window space; a 32-bit float depth buffer
+            // agrees to about 1e-6 (interpolation of z/w across the triangle).
+            glm::vec4 const clip = viewProj * glm::vec4(hit, 1.0f);
+            EXPECT_NEAR(dep.at(x, y, 0), clip.z / clip.w * 0.5f + 0.5f, 2e-6f) << "depth at " << x << "," << y;
+        }
+    }
+    EXPECT_GT(covered, w * h / 3) << "the floor should cover a good part of the frame";
+}
+
+TEST_F(RendererGlTest, WorldPositionRebuiltFromDepthMatchesStoredPosition) {
+    int const w = 48, h = 48;
+    auto r = makeRenderer(w, h);
+    ASSERT_FALSE(r->setScene(test::floorAndWallScene()));
+    Camera const cam = lookingAt({3.0f, 4.0f, 7.0f}, {0.0f, 1.0f, 0.0f});
+    r->render({cam, {}, plainSettings()});
+    int checked = 0;
+    for (int y = 0; y < h; y += 5)
+        for (int x = 0; x < w; x += 5) {
+            PixelSample const s = r->samplePixel(x, y, cam);
+            if (!s.covered) continue;
+            ++checked;
+            // Stored positions are half floats: rounding up to 2^-11 |v|; interpolation and the
+            // float depth add about as much again, so allow 1e-3 |v| plus a small floor.
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(s.reconstructedPosition[c], s.position[c], 1e-3f * std::abs(s.position[c]) + 4e-3f);
+        }
+    EXPECT_GT(checked, 20);
+}
+
+TEST_F(RendererGlTest, LightingPassMatchesCpuEquation) {
+    int const w = 64, h = 64;
+    auto r = makeRenderer(w, h);
+    ASSERT_FALSE(r->setScene(test::floorScene()));
+    Camera const cam = lookingAt({0.0f, 8.0f, 6.0f}, {0.0f, 0.0f, 0.0f});
+    PointLight light;
+    light.position = {2.5f, 1.0f, 0.0f};
+    light.color = {1.0f, 0.8f, 0.6f};
+    light.intensity = 1.5f;
+    light.kc = 1.0f;
+    light.kl = 0.7f;
+    light.kq = 1.8f;  // radius ~6.2: part of the visible floor is lit, part lies beyond
+    std::vector<PointLight> const lights{light};
+    PipelineSettings const settings = plainSettings();
+    r->render({cam, lights, settings});
+
+    FloatImage const pos = r->readAttachment(Attachment::Position);
+    FloatImage const nrm = r->readAttachment(Attachment::Normal);
+    FloatImage const alb = r->readAttachment(Attachment::AlbedoSpec);
+    FloatImage const lit = r->readAttachment(Attachment::Lighting);
+    float const radius = lightRadius(light).radius;
+    double sumErr = 0.0, maxErr = 0.0;
+    int litPixels = 0, darkPixels = 0, covered = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            if (pos.at(x, y, 3) == 0.0f) continue;
+            ++covered;
+            // Shade from the stored G-buffer values, as the GPU does, so only the equation and
+            // the HDR target's precision are compared.
+            ShadingInputs in;
+            in.position = {pos.at(x, y, 0), pos.at(x, y, 1), pos.at(x, y, 2)};
+            in.normal = glm::normalize(glm::vec3(nrm.at(x, y, 0), nrm.at(x, y, 1), nrm.at(x, y, 2)));
+            in.albedo = {alb.at(x, y, 0), alb.at(x, y, 1), alb.at(x, y, 2)};
+            in.specular = alb.at(x, y, 3);
+            in.viewPosition = cam.position;
+            in.shininess = settings.shininess;
+            glm::vec3 const expected = shadePointCpu(lights, in, settings.ambient);
+            bool const reached = glm::length(light.position - in.position) < radius;
+            (reached ? litPixels : darkPixels)++;
+            for (int c = 0; c < 3; ++c) {
+                // RGBA16F stores 11 significant bits: relative error 2^-11 ~ 4.9e-4, plus float
+                // differences in pow() between GPU and CPU; 2e-3 relative bounds both.
+                double const err = std::abs(double(lit.at(x, y, c)) - expected[c]);
+                double const allowed = 2e-3 * std::max(1.0, double(std::abs(expected[c])));
+                EXPECT_LE(err, allowed) << "pixel " << x << "," << y << " channel " << c;
+                maxErr = std::max(maxErr, err);
+                sumErr += err;
+            }
+        }
+    ASSERT_GT(covered, 0);
+    EXPECT_GT(litPixels, 50) << "the light should reach part of the floor";
+    EXPECT_GT(darkPixels, 50) << "part of the floor should lie beyond the radius";
+    // Mean error well below the per-pixel bound: a systematic offset would show here.
+    EXPECT_LT(sumErr / (covered * 3), 3e-4);
+}
+
+TEST_F(RendererGlTest, PixelsBeyondRadiusGetOnlyAmbient) {
+    int const w = 32, h = 32;
+    auto r = makeRenderer(w, h);
+    ASSERT_FALSE(r->setScene(test::floorScene()));
+    Camera const cam = lookingAt({0.0f, 3.0f, 3.0f}, {0.0f, 0.0f, 0.0f});
+    PointLight light;
+    light.position = {0.0f, 0.5f, -15.0f};  // radius ~5: nowhere near what the camera sees
+    std::vector<PointLight> const lights{light};
+    PipelineSettings const settings = plainSettings();
+    r->render({cam, lights, settings});
+    FloatImage const alb = r->readAttachment(Attachment::AlbedoSpec);
+    FloatImage const lit = r->readAttachment(Attachment::Lighting);
+    PixelSample const centre = r->samplePixel(w / 2, h / 2, cam);
+    ASSERT_TRUE(centre.covered);
+    ASSERT_GT(glm::length(light.position - glm::vec3(centre.position)), lightRadius(light).radius);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(lit.at(w / 2, h / 2, c), settings.ambient[c] * alb.at(w / 2, h / 2, c), 1e-4f);
+}
+
+namespace {
+// HDR value at the pixel where the light's centre projects, after a frame with light cubes on.
+glm::vec3 cubePixel(Renderer& r, Camera const& cam, PointLight const& light, DepthCopy copy) {
+    PipelineSettings s = plainSettings();
+    s.lightCubes = true;
+    s.depthCopy = copy;
+    std::vector<PointLight> const lights{light};
+    r.render({cam, lights, s});
+    glm::vec4 clip = cam.projection(float(r.width()) / float(r.height())) * cam.view() * glm::vec4(light.position, 1.0f);
+    glm::vec3 const ndc = glm::vec3(clip) / clip.w;
+    int const x = int((ndc.x * 0.5f + 0.5f) * float(r.width()));
+    int const y = int((0.5f - ndc.y * 0.5f) * float(r.height()));
+    PixelSample const s2 = r.samplePixel(x, y, cam);
+    return glm::vec3(s2.lighting);
+}
+}  // namespace
+
+TEST_F(RendererGlTest, BlitStepHidesLightCubeBehindWall) {
+    auto r = makeRenderer(96, 64);
+    ASSERT_FALSE(r->setScene(test::floorAndWallScene()));
+    Camera const cam = lookingAt({0.0f, 2.0f, 6.0f}, {0.0f, 2.0f, 0.0f});
+    PointLight light;
+    light.position = {0.0f, 2.0f, -2.0f};  // behind the wall (front face at z = 0)
+    light.color = {0.0f, 1.0f, 0.0f};
+    // The cube is emissive: colour x 4 in HDR, unlit. The wall never shades to pure green.
+    glm::vec3 const cube = light.color * 4.0f;
+    glm::vec3 const off = cubePixel(*r, cam, light, DepthCopy::Off);
+    glm::vec3 const blit = cubePixel(*r, cam, light, DepthCopy::Blit);
+    glm::vec3 const shader = cubePixel(*r, cam, light, DepthCopy::Shader);
+    EXPECT_NEAR(glm::length(off - cube), 0.0f, 1e-2f) << "without the blit step the cube shows through the wall";
+    EXPECT_GT(glm::length(blit - cube), 1.0f) << "with glBlitFramebuffer the wall hides the cube";
+    EXPECT_GT(glm::length(shader - cube), 1.0f) << "with the shader copy the wall hides the cube";
+    EXPECT_NEAR(glm::length(blit - shader), 0.0f, 1e-3f) << "both copies give the same depth";
+}
+
+TEST_F(RendererGlTest, ResizeToZeroAndBackKeepsWorking) {
+    auto r = makeRenderer(40, 30);
+    ASSERT_FALSE(r->setScene(test::floorScene()));
+    Camera const cam = lookingAt({0.0f, 5.0f, 5.0f}, {0.0f, 0.0f, 0.0f});
+    r->render({cam, {}, plainSettings()});
+    r->resizeTargets(0, 0);
+    EXPECT_EQ(r->texture(Attachment::Final), 0u);
+    FrameStats const empty = r->render({cam, {}, plainSettings()});
+    EXPECT_EQ(empty.width, 0);
+    EXPECT_TRUE(empty.passes.empty()) << "nothing is drawn into 0x0 targets";
+    EXPECT_EQ(r->readAttachment(Attachment::Final).width, 0);
+    r->resizeTargets(33, 17);  // odd sizes: no assumption of even or tile-aligned sizes
+    FrameStats const back = r->render({cam, {}, plainSettings()});
+    EXPECT_EQ(back.width, 33);
+    EXPECT_FALSE(back.passes.empty());
+    FloatImage const n = r->readAttachment(Attachment::Normal);
+    EXPECT_EQ(n.width, 33);
+    EXPECT_EQ(n.height, 17);
+    EXPECT_EQ(n.at(16, 16, 1), 1.0f) << "the floor is drawn again after the resize";
+    // Every target is checked for completeness when created; an incomplete one throws.
+    EXPECT_NO_THROW(r->resizeTargets(1, 1));
+}
+
+TEST_F(RendererGlTest, FailedHotReloadKeepsLastGoodProgram) {
+    namespace fs = std::filesystem;
+    fs::path const dir = fs::temp_directory_path() / ("gbl_reload_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    fs::copy_file(fs::path(GBL_SOURCE_DIR) / "shaders" / "depth_copy.frag", dir / "depth_copy.frag",
+                  fs::copy_options::overwrite_existing);
+    ShaderLibrary lib(dir);
+    std::string log;
+    ProgramDesc const desc{"copy", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "depth_copy.frag"}}, {}};
+    ASSERT_TRUE(lib.add(desc, &log)) << log;
+    GLuint const good = lib.get("copy").id();
+    EXPECT_TRUE(lib.reloadChanged().empty()) << "nothing changed yet";
+
+    auto writeLater = [&](std::string const& text) {
+        // File times can be coarse; make sure the new write is seen as a change.
+        auto const before = fs::last_write_time(dir / "depth_copy.frag");
+        std::ofstream(dir / "depth_copy.frag") << text;
+        fs::last_write_time(dir / "depth_copy.frag", before + std::chrono::seconds(1));
+    };
+    writeLater("#version 330 core\nvoid main() { this is not glsl; }\n");
+    auto messages = lib.reloadChanged();
+    ASSERT_EQ(messages.size(), 1u);
+    EXPECT_NE(messages[0].find("keeping the last good one"), std::string::npos) << messages[0];
+    EXPECT_NE(messages[0].find("depth_copy.frag"), std::string::npos) << "the log names the file: " << messages[0];
+    EXPECT_EQ(lib.get("copy").id(), good) << "the last good program stays in use";
+
+    std::ifstream original(fs::path(GBL_SOURCE_DIR) / "shaders" / "depth_copy.frag");
+    writeLater(std::string(std::istreambuf_iterator<char>(original), {}));
+    messages = lib.reloadChanged();
+    ASSERT_EQ(messages.size(), 1u);
+    EXPECT_NE(messages[0].find("reloaded"), std::string::npos) << messages[0];
+    EXPECT_NE(lib.get("copy").id(), good);
+    fs::remove_all(dir);
+}
+
+TEST_F(RendererGlTest, GpuTimingsCoverEveryPass) {
+    auto r = makeRenderer(32, 32);
+    ASSERT_FALSE(r->setScene(test::floorScene()));
+    FrameStats const s = r->render({lookingAt({0, 5, 5}, {0, 0, 0}), {}, plainSettings()});
+    std::vector<std::string> names;
+    for (auto const& p : s.passes) {
+        names.push_back(p.name);
+        EXPECT_GE(p.gpuMs, 0.0);
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"geometry", "lighting", "depth_copy", "forward", "display"}));
+}

@@ -1,0 +1,16 @@
+// Small scenes with known geometry for analytic GL tests.
+#pragma once
+
+#include "scene_data.h"
+
+namespace gbl::test {
+
+inline constexpr glm::vec3 kPlaneAlbedo{0.6f, 0.5f, 0.4f};
+inline constexpr float kPlaneSpecular = 0.25f;
+
+// A 40 x 40 floor at y = 0 facing +Y, one untextured material.
+SceneData floorScene();
+// floorScene() plus a 6 x 4 wall in the plane z = 0, facing +Z (towards a camera at z > 0).
+SceneData floorAndWallScene();
+
+}  // namespace gbl::test

@@ -1,0 +1,27 @@
+// Entry point of the interactive editor (the default command of gbuffer-lab).
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace gbl {
+
+struct EditorOptions {
+    std::optional<std::string> scenePath;       // glTF file; the default courtyard when empty
+    std::optional<int> lightCount;              // default scene: number of lights (32 when unset)
+    std::optional<std::string> screenshotPath;  // write the whole window as PNG after `frames`, then exit
+    int frames = 0;                             // 0 = run until the window is closed
+    int width = 1600;                           // window size in screen coordinates
+    int height = 900;
+    std::optional<std::string> sessionPath;     // session file to open (issue 6)
+    std::optional<std::string> uiTestScript;    // run a UI test script (see ui/ui_script.h), exit 0 if it passes
+    std::string glLimit;                        // "3.3": pretend the context is at most that version
+    bool vsync = true;                          // off for screenshots, tests and measurements
+};
+
+// Opens the window and runs until it is closed, the frame count is reached or the test script
+// ends. Returns the process exit code: 0 success, 1 no display / GL failure / failed test,
+// 2 bad input (unreadable scene or session file, unwritable screenshot path).
+int runEditor(EditorOptions const& options);
+
+}  // namespace gbl

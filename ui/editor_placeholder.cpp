@@ -1,0 +1,2 @@
+// Temporary translation unit until the editor lands.
+#include "imgui_compat.h"

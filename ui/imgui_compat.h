@@ -1,0 +1,69 @@
+// The few Dear ImGui API differences between Debian's 1.86 and 1.92 (docking), in one place.
+#pragma once
+
+#include <imgui.h>
+
+#include <cstdint>
+
+namespace gbl::ui {
+
+// True when this ImGui build has the docking API (docking branch or vcpkg docking-experimental).
+#ifdef IMGUI_HAS_DOCK
+inline constexpr bool kHasDocking = true;
+#else
+inline constexpr bool kHasDocking = false;
+#endif
+
+// A GL texture name as ImGui wants it: ImTextureID is void* in 1.86 and an integer in 1.92
+// (where it converts implicitly to the ImTextureRef that Image() and AddImage() take).
+inline ImTextureID toImTexture(unsigned int glTexture) {
+    return (ImTextureID)(std::uintptr_t)glTexture;
+}
+
+// Flags set once at start-up: keyboard navigation everywhere, docking when the build has it.
+inline void enableConfigFlags(ImGuiIO& io) {
+    io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
+#ifdef IMGUI_HAS_DOCK
+    io.ConfigFlags |= ImGuiConfigFlags_DockingEnable;
+#endif
+}
+
+// Scales the whole UI for a monitor content scale (1 on a classic display and under Xvfb).
+// 1.86 scales the baked default font; 1.92 rasterises fonts at the scaled size on demand.
+inline void applyContentScale(float scale) {
+    if (!(scale > 0.0f) || scale == 1.0f) return;
+    ImGui::GetStyle().ScaleAllSizes(scale);
+#if IMGUI_VERSION_NUM >= 19200
+    ImGui::GetStyle().FontScaleDpi = scale;
+#else
+    ImGui::GetIO().FontGlobalScale = scale;
+#endif
+}
+
+// Loads the UI font. Both versions ship the same built-in font; 1.92 no longer needs the
+// atlas to be built by hand before the first frame.
+inline void loadFonts() {
+    ImGui::GetIO().Fonts->AddFontDefault();
+}
+
+// A framed child region: 1.86 takes `bool border`, 1.90+ takes ImGuiChildFlags.
+inline bool beginFramedChild(char const* id, ImVec2 size, ImGuiWindowFlags flags = 0) {
+#if IMGUI_VERSION_NUM >= 19000
+    return ImGui::BeginChild(id, size, ImGuiChildFlags_Borders, flags);
+#else
+    return ImGui::BeginChild(id, size, true, flags);
+#endif
+}
+
+// A labelled separator (SeparatorText exists from 1.89.4 on).
+inline void separatorText(char const* label) {
+#if IMGUI_VERSION_NUM >= 18940
+    ImGui::SeparatorText(label);
+#else
+    ImGui::Spacing();
+    ImGui::TextDisabled("%s", label);
+    ImGui::Separator();
+#endif
+}
+
+}  // namespace gbl::ui

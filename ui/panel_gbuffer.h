@@ -1,0 +1,50 @@
+// G-buffer window: one live viewer per attachment (position, normal, albedo, specular, depth),
+// side by side, each with channel isolation, range remap, zoom and pan.
+#pragma once
+
+#include "view_pass.h"
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <optional>
+#include <string_view>
+
+namespace gbl::ui {
+
+enum class ViewerKind { Position, Normal, Albedo, Specular, Depth };
+inline constexpr std::array<std::string_view, 5> kViewerNames{"position", "normal", "albedo", "specular", "depth"};
+
+struct ViewerState {
+    ViewerKind kind = ViewerKind::Position;
+    unsigned channelMask = 0x7;  // bit 0 = R ... bit 3 = A
+    float rangeMin = 0.0f;
+    float rangeMax = 1.0f;
+    bool autoFit = false;        // refit the range to the data about once a second
+    bool fitRequested = false;   // the Fit button; the loop reads the attachment and clears it
+    NormalDisplay normalDisplay = NormalDisplay::Biased;
+    bool linearDepth = true;     // depth viewer: eye distance instead of window depth
+    bool cameraClipPlanes = true;  // linear depth with the camera's near/far, else the fields below
+    float nearPlane = 0.1f;
+    float farPlane = 100.0f;
+    float zoom = 1.0f;           // 1 = whole image fits the cell
+    glm::vec2 center{0.5f};      // image point (0..1, top-left origin) at the cell centre
+    glm::ivec2 imageSize{0};     // texel size of the image last shown
+};
+
+struct GBufferPanelState {
+    std::array<ViewerState, 5> viewers = defaultViewers();
+    std::optional<glm::ivec2> hoverPixel;  // texel under the mouse in any viewer, top-left origin
+    std::optional<DebugView> showInViewport;  // a viewer was clicked this frame
+
+    static std::array<ViewerState, 5> defaultViewers();
+};
+
+DebugView viewerDebugView(ViewerState const& viewer);
+// The view-pass parameters a viewer asks for (the loop passes them to Renderer::drawView).
+ViewParams viewerParams(ViewerState const& viewer);
+
+// textures[i]: the view target drawn for viewer i this frame (0 when there is none yet).
+void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& textures, glm::ivec2 imageSize);
+
+}  // namespace gbl::ui

@@ -1,0 +1,32 @@
+// Lights window: the light list, the selected light's parameters, its attenuation plot, presets,
+// random lights and animation.
+#pragma once
+
+#include "point_light.h"
+#include "scene_data.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace gbl::ui {
+
+struct LightAnimation {
+    bool enabled = false;
+    float speed = 1.0f;  // multiplies real time
+    float time = 0.0f;   // seconds of animation so far; what orbitLights is evaluated at
+};
+
+struct LightsPanelState {
+    int selected = -1;
+    int randomCount = 16;
+    std::uint32_t randomSeed = 20240611u;
+    bool plotLogScale = false;
+    std::string message;  // why the last edit or request was refused; empty when it was fine
+};
+
+// Edits `lights` in place through the validated operations of light_list.h.
+void drawLightsPanel(LightsPanelState& state, std::vector<PointLight>& lights, LightAnimation& animation,
+                     Bounds const& sceneBounds);
+
+}  // namespace gbl::ui

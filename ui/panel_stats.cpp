@@ -1,0 +1,83 @@
+// Stats window.
+#include "panel_stats.h"
+
+#include "imgui_compat.h"
+#include "layout.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+namespace gbl::ui {
+
+void recordFrame(StatsState& stats, FrameStats const& frame, EditorCost const& cost) {
+    stats.frameMs[std::size_t(stats.next)] = float(cost.frameCpuMs);
+    stats.gpuFrameMs[std::size_t(stats.next)] = float(frame.gpuFrameMs);
+    stats.next = (stats.next + 1) % StatsState::kHistory;
+    stats.count = std::min(stats.count + 1, StatsState::kHistory);
+    stats.last = frame;
+    stats.cost = cost;
+    // About a second of smoothing at 60 Hz; the first sample seeds the average.
+    double const k = stats.count == 1 ? 1.0 : 0.05;
+    auto blend = [k](double& avg, double v) { avg += (v - avg) * k; };
+    blend(stats.costAverage.uiCpuMs, cost.uiCpuMs);
+    blend(stats.costAverage.viewersGpuMs, cost.viewersGpuMs);
+    blend(stats.costAverage.imguiGpuMs, cost.imguiGpuMs);
+    blend(stats.costAverage.frameCpuMs, cost.frameCpuMs);
+}
+
+namespace {
+// History in chronological order for PlotLines (it takes an offset, but the max needs a pass).
+float historyMax(std::array<float, StatsState::kHistory> const& values, int count) {
+    float m = 1.0f;
+    for (int i = 0; i < count; ++i) m = std::max(m, values[std::size_t(i)]);
+    return m;
+}
+}  // namespace
+
+void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount) {
+    placeWindow(EditorWindow::Stats);
+    if (ImGui::Begin(windowName(EditorWindow::Stats), nullptr, editorWindowFlags())) {
+        FrameStats const& f = stats.last;
+        double const frameMs = stats.costAverage.frameCpuMs;
+        ImGui::Text("Frame %.2f ms (%.0f fps)", frameMs, frameMs > 0.0 ? 1000.0 / frameMs : 0.0);
+        ImGui::Text("Renderer GPU %.2f ms at %dx%d", f.gpuFrameMs, f.width, f.height);
+        int const offset = stats.count == StatsState::kHistory ? stats.next : 0;
+        float const top = historyMax(stats.frameMs, stats.count) * 1.1f;
+        ImGui::PlotLines("##frame", stats.frameMs.data(), stats.count, offset, "frame ms", 0.0f, top,
+                         ImVec2(-1.0f, 50.0f));
+        ImGui::PlotLines("##gpu", stats.gpuFrameMs.data(), stats.count, offset, "renderer GPU ms", 0.0f, top,
+                         ImVec2(-1.0f, 50.0f));
+
+        if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+            ImGui::TableSetupColumn("pass");
+            ImGui::TableSetupColumn("GPU ms");
+            ImGui::TableHeadersRow();
+            for (auto const& p : f.passes) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(p.name.c_str());
+                ImGui::TableNextColumn();
+                ImGui::Text("%.3f", p.gpuMs);
+            }
+            ImGui::EndTable();
+        }
+
+        ImGui::Text("Lights: %d in the list, %d submitted, %d shaded", lightCount, f.lightsSubmitted, f.lightsShaded);
+        if (f.fragmentInvocations)
+            ImGui::Text("Fragment invocations (lighting): %llu", (unsigned long long)*f.fragmentInvocations);
+        else
+            ImGui::TextDisabled("Fragment invocations: n/a (%s)", caps.pipelineStatisticsUnavailableReason().c_str());
+        ImGui::Text("GL errors this frame: %llu", (unsigned long long)f.glErrors);
+
+        separatorText("Editor cost");
+        EditorCost const& c = stats.costAverage;
+        double const editor = c.uiCpuMs + c.viewersGpuMs + c.imguiGpuMs;
+        ImGui::Text("UI build %.2f ms (CPU)", c.uiCpuMs);
+        ImGui::Text("Viewers %.2f ms, ImGui draw %.2f ms (GPU)", c.viewersGpuMs, c.imguiGpuMs);
+        ImGui::Text("Editor total %.2f ms = %.0f%% of the frame", editor, frameMs > 0.0 ? 100.0 * editor / frameMs : 0.0);
+    }
+    ImGui::End();
+}
+
+}  // namespace gbl::ui

@@ -1,0 +1,103 @@
+// Viewport window.
+#include "panel_viewport.h"
+
+#include "imgui_compat.h"
+#include "layout.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gbl::ui {
+
+namespace {
+// Movement within this many pixels between press and release still counts as a click.
+constexpr float kClickSlopSq = 3.0f * 3.0f;
+
+void viewCombo(PipelineSettings& settings) {
+    int view = int(settings.view);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 9.0f);
+    if (ImGui::BeginCombo("Show", kDebugViewNames[std::size_t(view)].data())) {
+        for (std::size_t i = 0; i < kDebugViewNames.size(); ++i)
+            if (ImGui::Selectable(kDebugViewNames[i].data(), view == int(i))) settings.view = DebugView(i);
+        ImGui::EndCombo();
+    }
+}
+}  // namespace
+
+void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigned texture, glm::ivec2 textureSize) {
+    state.hovered = false;
+    state.hoverPixel.reset();
+    state.clickPixel.reset();
+    state.orbitDrag = state.lookDrag = state.panDrag = glm::vec2(0.0f);
+    state.wheel = 0.0f;
+    state.frameRequested = false;
+
+    placeWindow(EditorWindow::Viewport);
+    // No padding: the image fills the window edge to edge.
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+    bool const open = ImGui::Begin(windowName(EditorWindow::Viewport), nullptr,
+                                   editorWindowFlags() | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    ImGui::PopStyleVar();
+    if (!open) {
+        // Collapsed or a hidden tab: render nothing rather than a frame nobody sees.
+        state.size = glm::ivec2(0);
+        ImGui::End();
+        return;
+    }
+
+    ImGui::SetCursorPos(ImVec2(ImGui::GetCursorPosX() + 6, ImGui::GetCursorPosY() + 3));
+    viewCombo(settings);
+    ImGui::SameLine();
+    ImGui::Checkbox("Cubes", &settings.lightCubes);
+    ImGui::SameLine();
+    ImGui::Checkbox("Wireframes", &settings.volumeWireframes);
+    ImGui::SameLine();
+    if (ImGui::Button("Frame (F)")) state.frameRequested = true;
+    ImGui::SameLine();
+    ImGui::TextDisabled("LMB orbit  RMB look  MMB pan  wheel dolly  WASD/QE fly");
+
+    ImVec2 const avail = ImGui::GetContentRegionAvail();
+    ImVec2 const scale = ImGui::GetIO().DisplayFramebufferScale;
+    state.size = glm::ivec2(std::max(0, int(avail.x * scale.x)), std::max(0, int(avail.y * scale.y)));
+    if (avail.x < 1.0f || avail.y < 1.0f) {
+        ImGui::End();
+        return;
+    }
+
+    ImVec2 const origin = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton("viewport-image", avail,
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                               ImGuiButtonFlags_MouseButtonMiddle);
+    if (texture != 0) {
+        // GL images start at the bottom row; flip v so the picture is upright.
+        ImGui::GetWindowDrawList()->AddImage(toImTexture(texture), origin, ImVec2(origin.x + avail.x, origin.y + avail.y),
+                                             ImVec2(0, 1), ImVec2(1, 0));
+    } else {
+        ImGui::GetWindowDrawList()->AddText(ImVec2(origin.x + 10, origin.y + 10), IM_COL32(200, 200, 200, 255),
+                                            "no frame yet");
+    }
+
+    ImGuiIO const& io = ImGui::GetIO();
+    state.hovered = ImGui::IsItemHovered();
+    if (state.hovered && textureSize.x > 0 && textureSize.y > 0) {
+        // Mouse to renderer pixel: the image may be stretched for one frame after a resize.
+        float const u = (io.MousePos.x - origin.x) / avail.x, v = (io.MousePos.y - origin.y) / avail.y;
+        if (u >= 0.0f && u < 1.0f && v >= 0.0f && v < 1.0f)
+            state.hoverPixel = glm::ivec2(int(u * float(textureSize.x)), int(v * float(textureSize.y)));
+        state.wheel = io.MouseWheel;
+    }
+    if (ImGui::IsItemActive()) {
+        glm::vec2 const delta(io.MouseDelta.x, io.MouseDelta.y);
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) state.orbitDrag = delta;
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) state.lookDrag = delta;
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Middle)) state.panDrag = delta;
+    }
+    if (state.hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+        io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < kClickSlopSq && state.hoverPixel)
+        state.clickPixel = state.hoverPixel;
+    ImGui::End();
+}
+
+}  // namespace gbl::ui
