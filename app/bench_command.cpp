@@ -2,13 +2,17 @@
 #include "bench_command.h"
 
 #include "cli_values.h"
+#include "light_math.h"
 #include "pipeline_settings.h"
 #include "point_light.h"
+#include "renderer_impl.h"
 #include "scene_setup.h"
 
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -30,6 +34,7 @@ struct Combination {
     CullMode cull = CullMode::Front;
     bool usesCull = false;  // only `volumes` has a cull mode
     int lights = 0;
+    float radiusScale = 1.0f;
 };
 
 struct Summary {
@@ -48,9 +53,31 @@ struct Result {
     std::optional<double> fragmentInvocations;             // median over measured frames
     std::optional<std::uint64_t> litPixels;
     std::optional<std::uint64_t> lightPixelPairs;
+    std::optional<std::uint64_t> evaluatedPairs;
     int lightsShaded = 0;
     std::uint64_t glErrors = 0;
 };
+
+struct Coverage {
+    std::uint64_t litPixels = 0;  // pixels some light reached
+    std::uint64_t pairs = 0;      // (light, pixel) pairs where the light reached the surface
+    std::uint64_t evaluated = 0;  // (light, pixel) pairs the mode evaluated
+};
+
+Coverage readCoverage(Renderer& renderer) {
+    RenderTargets const& t = renderer.impl().targets;
+    std::vector<float> rg(std::size_t(t.width) * t.height * 2);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, t.coverageFbo.id());
+    glReadPixels(0, 0, t.width, t.height, GL_RG, GL_FLOAT, rg.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    Coverage c;
+    for (std::size_t i = 0; i < rg.size(); i += 2) {
+        c.evaluated += std::uint64_t(rg[i]);
+        c.pairs += std::uint64_t(rg[i + 1]);
+        c.litPixels += rg[i + 1] > 0.0f;
+    }
+    return c;
+}
 
 Summary summarize(std::vector<double> const& v) { return {percentile(v, 0.5), percentile(v, 0.95)}; }
 
@@ -119,8 +146,19 @@ Result runCombination(Renderer& renderer, Camera const& camera, std::span<PointL
             samples.push_back(p.gpuMs);
         }
     }
-    r.wallSeconds = elapsed();
     r.framesMeasured = int(frame.size());
+    // One more frame, untimed, with the heat map: its coverage counts give the lit pixels and
+    // the (light, pixel) pairs (renderer/overlay_pass.cpp). Skipped when over budget.
+    if (r.framesMeasured > 0 && frameFitsBudget(elapsed(), 2.0 * slowest, o.budgetSeconds)) {
+        FrameInput counted = input;
+        counted.settings.view = DebugView::Heatmap;
+        r.glErrors += renderer.render(counted).glErrors;
+        Coverage const c = readCoverage(renderer);
+        r.litPixels = c.litPixels;
+        r.lightPixelPairs = c.pairs;
+        r.evaluatedPairs = c.evaluated;
+    }
+    r.wallSeconds = elapsed();
     if (r.framesMeasured < o.frames) {
         char buf[160];
         std::snprintf(buf, sizeof buf, "%d of %d frames fit in the %.0f s budget (slowest frame %.2f s)",
@@ -160,8 +198,8 @@ void printTable(std::vector<Result> const& results, GlCaps const& caps, Size2 si
                 caps.renderer.c_str(), caps.version.c_str());
     std::printf("%d warm-up + %d measured frames per combination, budget %.0f s each; GPU times from timer queries\n\n",
                 o.warmup, o.frames, o.budgetSeconds);
-    std::printf("%-16s %6s %7s %11s %11s %9s %10s %10s %8s %9s  %s\n", "mode", "lights", "frames", "frame med",
-                "frame p95", "vs quad", "frag.inv", "lit px", "shaded", "pairs", "status");
+    std::printf("%-16s %6s %6s %7s %11s %11s %9s %10s %10s %8s %9s %9s  %s\n", "mode", "lights", "radius", "frames",
+                "frame med", "frame p95", "vs quad", "frag.inv", "lit px", "shaded", "lit pairs", "evaluated", "status");
     for (auto const& r : results) {
         std::string speed = "-";
         if (Result const* q = quadFor(results, r.combo.lights); q && r.framesMeasured > 0 && r.frameMs.median > 0) {
@@ -175,11 +213,14 @@ void printTable(std::vector<Result> const& results, GlCaps const& caps, Size2 si
             std::snprintf(buf, sizeof buf, "%.2f ms", v);
             return std::string(buf);
         };
-        std::printf("%-16s %6d %7d %11s %11s %9s %10s %10s %8d %9s  %s%s%s\n", comboName(r.combo).c_str(), r.combo.lights,
-                    r.framesMeasured, ms(r.frameMs.median).c_str(), ms(r.frameMs.p95).c_str(), speed.c_str(),
-                    formatCount(r.fragmentInvocations).c_str(), formatCount(asDouble(r.litPixels)).c_str(),
-                    r.lightsShaded, formatCount(asDouble(r.lightPixelPairs)).c_str(), r.status.c_str(),
-                    r.note.empty() ? "" : ": ", r.note.c_str());
+        char radius[16];
+        std::snprintf(radius, sizeof radius, "x%.3g", r.combo.radiusScale);
+        std::printf("%-16s %6d %6s %7d %11s %11s %9s %10s %10s %8d %9s %9s  %s%s%s\n", comboName(r.combo).c_str(),
+                    r.combo.lights, radius, r.framesMeasured, ms(r.frameMs.median).c_str(), ms(r.frameMs.p95).c_str(),
+                    speed.c_str(), formatCount(r.fragmentInvocations).c_str(), formatCount(asDouble(r.litPixels)).c_str(),
+                    r.lightsShaded, formatCount(asDouble(r.lightPixelPairs)).c_str(),
+                    formatCount(asDouble(r.evaluatedPairs)).c_str(), r.status.c_str(), r.note.empty() ? "" : ": ",
+                    r.note.c_str());
         if (!r.passMs.empty()) {
             std::printf("%-16s", "");
             for (auto const& [name, s] : r.passMs) std::printf("  %s %.2f/%.2f", name.c_str(), s.median, s.p95);
@@ -188,7 +229,11 @@ void printTable(std::vector<Result> const& results, GlCaps const& caps, Size2 si
     }
     std::printf("\nfrag.inv: fragment-shader invocations of the lighting pass (ARB_pipeline_statistics_query%s).\n",
                 caps.pipelineStatistics ? "" : ": unavailable on this context");
-    std::printf("lit px: pixels lit by at least one light; pairs: (light, pixel) pairs a light actually lit.\n");
+    std::printf("frag.inv counts fragment shaders only: tiled shades in a compute shader, so it shows the lighting\n"
+                "pass's 0 there. radius: the lights' radius scale (--radius-scale). lit px: pixels some light reached;\n"
+                "lit pairs: (light, pixel) pairs where the light reached the surface; evaluated: (light, pixel) pairs the\n"
+                "mode ran its shading for (volume fragments, tile-list entries, every light for quad). lit pairs /\n"
+                "lit px is the least work per pixel any exact method needs; evaluated / lit pairs is the waste.\n");
 }
 
 json toJson(std::vector<Result> const& results, GlCaps const& caps, Size2 size, BenchOptions const& o) {
@@ -198,6 +243,7 @@ json toJson(std::vector<Result> const& results, GlCaps const& caps, Size2 size, 
         for (auto const& [name, s] : r.passMs) passes[name] = {{"median_ms", s.median}, {"p95_ms", s.p95}};
         json j = {{"mode", enumName(kLightingModeNames, r.combo.mode)},
                   {"lights", r.combo.lights},
+                  {"radius_scale", r.combo.radiusScale},
                   {"status", r.status},
                   {"frames_measured", r.framesMeasured},
                   {"wall_seconds", r.wallSeconds},
@@ -210,6 +256,7 @@ json toJson(std::vector<Result> const& results, GlCaps const& caps, Size2 size, 
         if (r.fragmentInvocations) j["fragment_invocations"] = *r.fragmentInvocations;
         if (r.litPixels) j["lit_pixels"] = *r.litPixels;
         if (r.lightPixelPairs) j["light_pixel_pairs"] = *r.lightPixelPairs;
+        if (r.evaluatedPairs) j["evaluated_light_pixel_pairs"] = *r.evaluatedPairs;
         combos.push_back(j);
     }
     return {{"gl_vendor", caps.vendor},
@@ -238,6 +285,9 @@ void addBenchOptions(CLI::App& sub, BenchOptions& o) {
     sub.add_option("--frames", o.frames, "Measured frames per combination")->capture_default_str();
     sub.add_option("--warmup", o.warmup, "Warm-up frames per combination, not measured")->capture_default_str();
     sub.add_option("--budget", o.budgetSeconds, "Wall-clock seconds allowed per combination")->capture_default_str();
+    sub.add_option("--radius-scale", o.radiusScale,
+                   "Scale every light's radius: a number, or auto = sqrt(32 / lights) (default scene: 1)")
+        ->capture_default_str();
     sub.add_option("--json", o.jsonPath, "Also write the results to this JSON file");
     sub.add_option("--gl", o.glLimit, "Pretend the context is at most this OpenGL version, e.g. 3.3");
 }
@@ -266,6 +316,14 @@ int runBench(BenchOptions const& o) {
     if (o.frames < 1) return badArgument("--frames must be at least 1, got " + std::to_string(o.frames));
     if (o.warmup < 0) return badArgument("--warmup must be 0 or more, got " + std::to_string(o.warmup));
     if (!(o.budgetSeconds > 0)) return badArgument("--budget must be a positive number of seconds");
+    bool const autoScale = o.radiusScale == "auto";
+    float fixedScale = 1.0f;
+    if (!autoScale) {
+        char* end = nullptr;
+        fixedScale = std::strtof(o.radiusScale.c_str(), &end);
+        if (end == o.radiusScale.c_str() || *end != '\0' || !(fixedScale > 0.0f) || !std::isfinite(fixedScale))
+            return badArgument("--radius-scale must be a positive number or auto, got '" + o.radiusScale + "'");
+    }
     if (o.jsonPath) {
         // Fail now rather than after minutes of measuring.
         std::ofstream probe(*o.jsonPath, std::ios::app);
@@ -288,11 +346,15 @@ int runBench(BenchOptions const& o) {
     std::vector<Result> results;
     for (int n : o.lights) {
         // The default scene's lights do not depend on the count: n lights are a prefix of more.
-        std::span<PointLight const> const lights(prepared->lights.data(), std::size_t(n));
+        std::vector<PointLight> scaled(prepared->lights.begin(), prepared->lights.begin() + n);
+        float const scale = autoScale ? (n > 32 ? std::sqrt(32.0f / float(n)) : 1.0f) : fixedScale;
+        if (scale != 1.0f)
+            for (auto& l : scaled) l = scaleLightFalloff(l, scale);
+        std::span<PointLight const> const lights(scaled);
         for (LightingMode m : modes) {
             bool const usesCull = m == LightingMode::Volumes;
             for (std::size_t ci = 0; ci < (usesCull ? culls.size() : 1); ++ci) {
-                Combination const c{m, usesCull ? culls[ci] : CullMode::Front, usesCull, n};
+                Combination const c{m, usesCull ? culls[ci] : CullMode::Front, usesCull, n, scale};
                 std::fprintf(stderr, "bench: %s with %d lights...\n", comboName(c).c_str(), n);
                 results.push_back(runCombination(renderer, prepared->camera, lights, c, o, results));
             }

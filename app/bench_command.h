@@ -20,6 +20,11 @@ struct BenchOptions {
     int frames = 20;            // measured frames per combination
     int warmup = 3;             // frames rendered and thrown away first (shader and cache warm-up)
     double budgetSeconds = 60;  // wall-clock budget per combination, warm-up included
+    // Stretches every light's falloff (Kl / s, Kq / s^2) so radii scale by s: a number, or
+    // "auto" for s = sqrt(32 / lights) when lights > 32, which keeps the lit area per light
+    // count, and so the lights reaching each pixel, as in the 32-light default scene. 1 = the
+    // default scene's lights unchanged.
+    std::string radiusScale = "1";
     std::optional<std::string> jsonPath;
     std::string glLimit;        // "3.3" pretends the context is at most that version
 };

@@ -2,10 +2,8 @@
 #include "render_command.h"
 
 #include "cli_values.h"
-#include "image_io.h"
-#include "light_math.h"
-
-#include <nlohmann/json.hpp>
+#include "frame_export.h"
+#include "session_cli.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -14,28 +12,12 @@
 namespace gbl {
 
 namespace fs = std::filesystem;
-using nlohmann::json;
 
 namespace {
 
 int badArgument(std::string const& message) {
     std::fprintf(stderr, "gbuffer-lab render: %s\n", message.c_str());
     return 2;
-}
-
-json toJson(glm::mat4 const& m) {
-    json rows = json::array();
-    for (int r = 0; r < 4; ++r) rows.push_back({m[0][r], m[1][r], m[2][r], m[3][r]});  // row-major for readers
-    return rows;
-}
-
-json toJson(glm::vec3 v) { return {v.x, v.y, v.z}; }
-
-bool writeJson(fs::path const& path, json const& j, std::string* error) {
-    std::ofstream f(path);
-    f << j.dump(2) << "\n";
-    if (!f) *error = "cannot write " + path.string();
-    return bool(f);
 }
 
 // The directory exists (or was created) and a file can be written into it.
@@ -65,6 +47,12 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
     sub.add_option("--scene", o.scene, "A glTF 2.0 scene instead of the default scene");
     sub.add_flag("--allow-outside-uris", o.allowOutsideUris, "Let the glTF file read files outside its folder");
     sub.add_option("--gl", o.glLimit, "Pretend the context is at most this OpenGL version, e.g. 3.3");
+    sub.add_option("--session", o.sessionPath, "Render the frame a session file describes (--mode, --cull, --blit, --time override it)");
+    sub.add_option("--save-session", o.saveSessionPath, "Also write the session that reproduces this frame");
+    sub.parse_complete_callback([&sub, &o] {
+        for (char const* name : {"--scene", "--lights", "--time", "--blit", "--mode", "--cull"})
+            if (sub.count(name) > 0) o.given.insert(name);
+    });
 }
 
 int runRender(RenderOptions const& o) {
@@ -92,10 +80,37 @@ int runRender(RenderOptions const& o) {
     settings.cull = *cull;
     settings.depthCopy = *blit;
     if (auto err = prepareOutDir(o.outDir)) return badArgument(*err);
+    if (o.saveSessionPath) {
+        // Refuse before rendering rather than after a long frame (the write itself is checked too).
+        fs::path const dir = fs::path(*o.saveSessionPath).parent_path();
+        std::error_code ec;
+        if (!dir.empty() && !fs::is_directory(dir, ec))
+            return badArgument("cannot write " + *o.saveSessionPath + ": folder " + dir.string() + " does not exist");
+    }
 
     SceneRequest request{o.scene, o.lights, o.time, o.allowOutsideUris};
-    auto prepared = prepareScene(request, &error);
-    if (!prepared) return badArgument(error);
+    std::optional<PreparedScene> prepared;
+    std::optional<ui::Session> session;  // the loaded session, with the overrides applied
+    if (o.sessionPath) {
+        // The session names its scene and lights; options that change the frame override it.
+        if (o.given.count("--scene") || o.given.count("--lights"))
+            return badArgument("--scene and --lights cannot be combined with --session (the session names its scene and lights)");
+        ui::SessionLoad loaded = ui::loadSession(*o.sessionPath);
+        if (!loaded.session) return badArgument(loaded.error);
+        session = std::move(loaded.session);
+        if (o.given.count("--time")) session->animation.time = o.time;
+        PipelineSettings const fromOptions = settings;
+        settings = session->pipeline;
+        if (o.given.count("--mode")) settings.mode = fromOptions.mode;
+        if (o.given.count("--cull")) settings.cull = fromOptions.cull;
+        if (o.given.count("--blit")) settings.depthCopy = fromOptions.depthCopy;
+        session->pipeline = settings;
+        prepared = prepareSessionScene(*session, *o.sessionPath, o.allowOutsideUris, &error);
+        if (!prepared) return badArgument(error);
+    } else {
+        prepared = prepareScene(request, &error);
+        if (!prepared) return badArgument(error);
+    }
 
     auto headless = createHeadlessRenderer(size->width, size->height, o.glLimit, &error);
     if (!headless) {
@@ -109,78 +124,12 @@ int runRender(RenderOptions const& o) {
 
     FrameStats const stats = renderer.render({prepared->camera, prepared->lights, settings, true});
 
-    fs::path const out(o.outDir);
-    auto path = [&](char const* name) { return (out / name).string(); };
-    FloatImage const finalImage = renderer.readAttachment(Attachment::Final);
-    FloatImage const lighting = renderer.readAttachment(Attachment::Lighting);
-    FloatImage const position = renderer.readAttachment(Attachment::Position);
-    FloatImage const normal = renderer.readAttachment(Attachment::Normal);
-    FloatImage const albedo = renderer.readAttachment(Attachment::AlbedoSpec);
-    FloatImage const depth = renderer.readAttachment(Attachment::Depth);
-    FloatImage depthLinear = depth;
-    Camera const& cam = prepared->camera;
-    for (float& z : depthLinear.pixels) {
-        // Eye-space distance along the view axis, the inverse of the perspective depth mapping.
-        float const ndc = z * 2.0f - 1.0f;
-        z = 2.0f * cam.nearPlane * cam.farPlane / (cam.farPlane + cam.nearPlane - ndc * (cam.farPlane - cam.nearPlane));
+    FrameExport frame{prepared->camera, prepared->lights, settings, stats, prepared->scene.triangleCount(), views};
+    if (auto err = exportFrame(renderer, frame, o.outDir)) return badArgument(*err);
+    if (o.saveSessionPath) {
+        ui::Session const toSave = session ? *session : sessionFromCommandLine(request, *prepared, settings);
+        if (auto e = ui::saveSession(*o.saveSessionPath, toSave)) return badArgument(*e);
     }
-    std::optional<std::string> err;
-    auto check = [&](std::optional<std::string> e) {
-        if (e && !err) err = e;
-    };
-    check(writePng(path("final.png"), finalImage, 3));
-    check(writeExr(path("lighting.exr"), lighting));
-    check(writeExr(path("position.exr"), position));
-    check(writeExr(path("normal.exr"), normal));
-    check(writePng(path("albedo.png"), albedo, 3));
-    check(writePng(path("specular.png"), FloatImage{albedo.width, albedo.height, 1, [&] {
-                                              std::vector<float> a;
-                                              a.reserve(albedo.pixels.size() / 4);
-                                              for (std::size_t i = 3; i < albedo.pixels.size(); i += 4) a.push_back(albedo.pixels[i]);
-                                              return a;
-                                          }()}));
-    check(writeExr(path("depth.exr"), depth));
-    check(writeExr(path("depth_linear.exr"), depthLinear));
-    for (DebugView v : views) {
-        ViewTarget target;
-        ViewParams params;
-        params.view = v;
-        renderer.drawView(params, cam, target);
-        check(writePng((out / ("view_" + std::string(enumName(kDebugViewNames, v)) + ".png")).string(),
-                       renderer.readViewTarget(target), 3));
-    }
-    if (err) return badArgument(*err);
-
-    json lightsJson = json::array();
-    for (auto const& l : prepared->lights) {
-        LightRadius const r = lightRadius(l);
-        lightsJson.push_back({{"name", l.name}, {"position", toJson(l.position)}, {"color", toJson(l.color)},
-                              {"intensity", l.intensity}, {"kc", l.kc}, {"kl", l.kl}, {"kq", l.kq},
-                              {"threshold", l.threshold}, {"radius", r.radius},
-                              {"radius_kind", r.kind == RadiusKind::Quadratic ? "quadratic"
-                                              : r.kind == RadiusKind::Linear  ? "linear"
-                                              : r.kind == RadiusKind::Capped  ? "capped"
-                                                                              : "zero"}});
-    }
-    float const aspect = float(size->width) / float(size->height);
-    json cameraJson = {{"position", toJson(cam.position)}, {"yaw_degrees", cam.yawDegrees},
-                       {"pitch_degrees", cam.pitchDegrees}, {"fov_y_degrees", cam.fovYDegrees},
-                       {"near", cam.nearPlane}, {"far", cam.farPlane}, {"aspect", aspect},
-                       {"view", toJson(cam.view())}, {"projection", toJson(cam.projection(aspect))},
-                       {"matrix_layout", "row-major: view[r][c]"}};
-    json passes = json::object();
-    for (auto const& p : stats.passes) passes[p.name] = p.gpuMs;
-    GlCaps const& caps = renderer.caps();
-    json statsJson = {{"gl_vendor", caps.vendor}, {"gl_renderer", caps.renderer}, {"gl_version", caps.version},
-                      {"width", size->width}, {"height", size->height}, {"lights", stats.lightsSubmitted},
-                      {"lights_shaded", stats.lightsShaded}, {"mode", o.mode}, {"cull", o.cull}, {"blit", o.blit},
-                      {"gpu_ms", passes}, {"gpu_frame_ms", stats.gpuFrameMs},
-                      {"triangles", prepared->scene.triangleCount()},
-                      {"gl_errors", renderer.glErrorCount()}};
-    if (stats.fragmentInvocations) statsJson["fragment_invocations"] = *stats.fragmentInvocations;
-    if (!writeJson(out / "lights.json", lightsJson, &error) || !writeJson(out / "camera.json", cameraJson, &error) ||
-        !writeJson(out / "stats.json", statsJson, &error))
-        return badArgument(error);
     std::printf("wrote %s (%dx%d, %d lights, %.2f GPU ms, %llu GL errors)\n", o.outDir.c_str(), size->width,
                 size->height, stats.lightsSubmitted, stats.gpuFrameMs, (unsigned long long)renderer.glErrorCount());
     return 0;

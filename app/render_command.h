@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct RenderOptions {
     std::optional<std::string> scene;
     bool allowOutsideUris = false;
     std::string glLimit;
+    std::optional<std::string> sessionPath;      // render the frame a session file describes
+    std::optional<std::string> saveSessionPath;  // write the session that reproduces this frame
+    std::set<std::string> given;                 // options given explicitly (they override a session)
 };
 
 void addRenderOptions(CLI::App& sub, RenderOptions& options);

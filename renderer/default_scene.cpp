@@ -202,7 +202,8 @@ void addProps(std::array<MeshData, MaterialCount>& mat) {
     for (Barrel const& b : barrels) {
         glm::mat4 m = translate({b.x, 0, b.z}) * rotateY(propYaw(propIndex++));
         // Lying barrels: turned onto their side about X, resting on their hoops, centred on (x, z).
-        if (b.lying) m = m * translate({0, 0.435f, 0.5f}) * glm::rotate(glm::mat4(1.0f), -1.5707963f, glm::vec3(1, 0, 0));
+        if (b.lying)
+            m = m * translate({0, 0.435f, 0.5f}) * glm::rotate(glm::mat4(1.0f), -1.5707963f, glm::vec3(1, 0, 0));
         appendMesh(mat[Wood], barrel, m);
         appendMesh(mat[Iron], hoops, m);
     }
@@ -223,7 +224,8 @@ void addProps(std::array<MeshData, MaterialCount>& mat) {
     // Stone benches facing the fountain.
     float const halfPi = std::numbers::pi_v<float> * 0.5f;
     glm::mat4 const benches[4] = {translate({0, 0, 10.6f}), translate({0, 0, -10.6f}),
-                                  translate({10.9f, 0, 0}) * rotateY(halfPi), translate({-10.9f, 0, 0}) * rotateY(halfPi)};
+                                  translate({10.9f, 0, 0}) * rotateY(halfPi),
+                                  translate({-10.9f, 0, 0}) * rotateY(halfPi)};
     for (glm::mat4 const& at : benches) {
         addBox(mat[Sandstone], {-1.2f, 0.44f, -0.3f}, {1.2f, 0.56f, 0.3f}, 0.5f, at);
         addBox(mat[Sandstone], {-1.0f, 0.0f, -0.25f}, {-0.85f, 0.44f, 0.25f}, 0.5f, at);

@@ -41,6 +41,9 @@ DecodedImage decodeImage(std::span<std::uint8_t const> bytes, std::string name, 
     OIIO::ImageSpec config;
     // glTF colours are straight alpha; OpenImageIO would otherwise premultiply PNGs.
     config.attribute("oiio:UnassociatedAlpha", 1);
+    // The proxy also goes in the configuration: some 2.4 readers look for it only there.
+    void* proxy = &reader;
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
     auto in = OIIO::ImageInput::open(formatName(bytes, nameHint), &config, &reader);
     if (!in) {
         std::string const e = OIIO::geterror();

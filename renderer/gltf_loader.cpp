@@ -653,7 +653,7 @@ public:
             auto it = meshParts.find(meshIndex);
             if (it == meshParts.end()) {
                 it = meshParts.emplace(meshIndex, buildMesh(meshIndex)).first;
-                progress_.report(0.6f + 0.35f * float(++done) / float(std::max<std::size_t>(placed.size(), 1)),
+                progress_.report(0.6f + 0.3f * float(++done) / float(std::max<std::size_t>(placed.size(), 1)),
                                  "building meshes");
             }
             for (int part : it->second) {
@@ -951,7 +951,7 @@ private:
                 sameCount(v, 3, "NORMAL");
                 haveNormals = true;
                 for (std::size_t i = 0; i < n && haveNormals; ++i) {
-                    glm::vec3 const nn(float(v[3 * i]), float(v[3 * i + 1]), float(v[3 * i + 2]));
+                    glm::vec3 const nn = glm::vec3(float(v[3 * i]), float(v[3 * i + 1]), float(v[3 * i + 2]));
                     float const len = glm::length(nn);
                     if (!(len > 0.0f) || !std::isfinite(len)) haveNormals = false;
                     else out.vertices[i].normal = nn / len;
@@ -963,7 +963,7 @@ private:
                 sameCount(v, 2, "TEXCOORD_0");
                 bool bad = false;
                 for (std::size_t i = 0; i < n; ++i) {
-                    glm::vec2 uv(float(v[2 * i]), float(v[2 * i + 1]));
+                    glm::vec2 uv = glm::vec2(float(v[2 * i]), float(v[2 * i + 1]));
                     if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = glm::vec2(0.0f), bad = true;
                     out.vertices[i].uv = uv;
                 }
@@ -975,7 +975,7 @@ private:
                 sameCount(v, 4, "TANGENT");
                 haveTangents = true;
                 for (std::size_t i = 0; i < n && haveTangents; ++i) {
-                    glm::vec3 const t(float(v[4 * i]), float(v[4 * i + 1]), float(v[4 * i + 2]));
+                    glm::vec3 const t = glm::vec3(float(v[4 * i]), float(v[4 * i + 1]), float(v[4 * i + 2]));
                     float const len = glm::length(t);
                     if (!(len > 0.0f) || !std::isfinite(len) || !std::isfinite(float(v[4 * i + 3]))) haveTangents = false;
                     else out.vertices[i].tangent = glm::vec4(t / len, v[4 * i + 3] < 0.0 ? -1.0f : 1.0f);

@@ -132,11 +132,15 @@ void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter
         bindTexture(2, m.specularTexture, "uHasSpecularTex");
         if (m.doubleSided) glDisable(GL_CULL_FACE);
         else glEnable(GL_CULL_FACE);
+        // A mirroring transform turns counter-clockwise triangles clockwise on screen (glTF 2.0
+        // asks renderers to flip the winding for such nodes).
+        glFrontFace(glm::determinant(glm::mat3(inst.model)) < 0.0f ? GL_CW : GL_CCW);
         glBindVertexArray(mesh.vao.id());
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     }
     glBindVertexArray(0);
     glEnable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
 }
 
 }  // namespace gbl

@@ -14,6 +14,9 @@ void GpuTimer::begin(std::string const& pass) {
 
 void GpuTimer::end() {
     if (!open_) return;
+    // Software rasterisers (llvmpipe) bin draws and rasterise at the next flush; without one
+    // a pass's work is billed to whichever query is open when the flush happens.
+    glFlush();
     glEndQuery(GL_TIME_ELAPSED);
     open_ = false;
 }

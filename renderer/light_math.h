@@ -44,6 +44,15 @@ std::optional<std::string> validateLight(PointLight const& light);
 LightRadius solveLightRadius(float imax, float kc, float kl, float kq, float threshold);
 LightRadius lightRadius(PointLight const& light);
 
+// The same light with its falloff stretched by `scale` in space: Kl / scale and Kq / scale^2,
+// so attenuation(d * scale) of the result equals attenuation(d) of the original and the radius
+// scales by exactly `scale` (the bench's --radius-scale). scale must be > 0.
+inline PointLight scaleLightFalloff(PointLight light, float scale) {
+    light.kl /= scale;
+    light.kq /= scale * scale;
+    return light;
+}
+
 // The attenuation subtracted by the window: the classic factor's value at the radius, so the
 // window is continuous there even when the radius was capped. Lights that never fall off
 // (Kl = Kq = 0) subtract threshold / Imax instead, since subtracting their constant factor

@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -43,5 +44,20 @@ float minFacePlaneDistance(std::span<glm::vec3 const> positions, std::span<std::
 // into it between the vertices; the deepest cut is the face closest to the centre.
 // Computed from the actual faces, so it holds for whatever tessellation is passed in.
 float enclosingScale(SphereMesh const& mesh);
+
+// Distance from the eye to a corner of the near plane: the farthest a near-plane-clipped point
+// can be from the eye. fovY in radians, aspect = width / height.
+inline float nearPlaneCornerDistance(float fovY, float aspect, float nearPlane) {
+    float const h = std::tan(fovY * 0.5f) * nearPlane, w = h * aspect;
+    return std::sqrt(nearPlane * nearPlane + h * h + w * w);
+}
+
+// Whether the camera's near plane may cut into a light's volume (enclosing radius =
+// radius * enclosingScale), so that the volume's front faces could be clipped away. The `flip`
+// cull mode draws such a light's back faces instead of its front faces.
+inline bool volumeMayContainCamera(glm::vec3 eye, glm::vec3 lightPosition, float enclosingRadius,
+                                   float nearCornerDistance) {
+    return glm::length(eye - lightPosition) < enclosingRadius + nearCornerDistance;
+}
 
 }  // namespace gbl

@@ -247,7 +247,8 @@ void transformMesh(MeshData& mesh, glm::mat4 const& m) {
         v.tangent = glm::vec4(t, mirrored ? -v.tangent.w : v.tangent.w);
     }
     if (mirrored)
-        for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
+        for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3)
+            std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
 }
 
 void appendMesh(MeshData& dst, MeshData const& src, glm::mat4 const& m) {

@@ -67,6 +67,17 @@ void RendererImpl::resizeTargets(int width, int height) {
     height = std::max(height, 0);
     if (auto err = createRenderTargets(width, height, targets))
         throw std::runtime_error("Renderer::resizeTargets(): " + *err);
+    if (targets.empty()) return;
+    // Mesa's llvmpipe reports the clock's absolute value for the first timer query that
+    // covers rendering into a new framebuffer; spend that query on a clear so the first frame's
+    // pass timings are real.
+    timer.begin("warm-up");
+    glBindFramebuffer(GL_FRAMEBUFFER, targets.displayFbo.id());
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    timer.end();
+    timer.finishFrame(true);
 }
 
 FrameStats RendererImpl::render(FrameInput const& input) {
@@ -84,11 +95,11 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     f.viewProj = f.projection * f.view;
     f.lights = input.lights;
     f.settings = input.settings;
-    if (f.settings.mode == LightingMode::Tiled && !caps.computeShaders) f.settings.mode = LightingMode::Quad;
-    if (f.settings.mode == LightingMode::Volumes || f.settings.mode == LightingMode::Tiled) {
-        // Not built yet: these modes fall back to the full-screen pass (issue 3 replaces this).
+    if (f.settings.mode == LightingMode::Tiled && !caps.computeShaders) {
         f.settings.mode = LightingMode::Quad;
+        stats.fallbackReason = caps.tiledUnavailableReason() + "; the full-screen (quad) pass ran instead";
     }
+    stats.modeUsed = f.settings.mode;
 
     lastSettings = f.settings;
     lights.upload(input.lights);
@@ -113,7 +124,11 @@ FrameStats RendererImpl::render(FrameInput const& input) {
         timer.end();
         timer.begin("lighting");
         if (fragmentQuery) fragmentQuery.begin();
-        lightingQuadPass(f);
+        switch (f.settings.mode) {
+        case LightingMode::Volumes: lightingVolumesPass(f); break;
+        case LightingMode::Tiled: lightingTiledPass(f, true, false); break;
+        default: lightingQuadPass(f); break;
+        }
         if (fragmentQuery) fragmentQuery.end();
         timer.end();
         timer.begin("depth_copy");
@@ -124,6 +139,20 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     forwardShadingPass(f, MaterialFilter::Blended);
     if (f.settings.lightCubes) lightCubesPass(f);
     timer.end();
+    if (f.settings.volumeWireframes) {
+        timer.begin("wireframes");
+        volumeWireframesPass(f);
+        timer.end();
+    }
+    // Debug counts for the heat map and tile views, only when one of them is shown.
+    coverageValid = false;
+    if (f.settings.view == DebugView::Heatmap || f.settings.view == DebugView::TileLights) {
+        timer.begin("coverage");
+        coveragePass(f);
+        timer.end();
+    }
+    lastFrame = f;
+    lastFrame.lights = {};  // the caller's span does not outlive this call
     timer.begin("display");
     displayPass(f);
     timer.end();
@@ -248,6 +277,7 @@ std::vector<std::string> Renderer::reloadChangedShaders() { return impl_->shader
 std::uint64_t Renderer::glErrorCount() const { return impl_->glErrors; }
 
 void Renderer::drawView(ViewParams const& params, Camera const& camera, ViewTarget& target) {
+    impl_->ensureCoverage(params.view);  // heat map and tile views of a frame rendered without them
     impl_->drawView(params, camera, target);
 }
 

@@ -44,6 +44,10 @@ struct FrameStats {
     int lightsShaded = 0;            // lights with a radius > 0
     std::optional<std::uint64_t> fragmentInvocations;  // lighting pass, when pipeline statistics exist
     std::uint64_t glErrors = 0;      // errors reported while rendering this frame
+    // The lighting mode that actually ran; differs from the requested one only after a fallback
+    // (tiled without compute shaders runs quad), and then fallbackReason says why.
+    LightingMode modeUsed = LightingMode::Quad;
+    std::string fallbackReason;
 };
 
 struct FrameInput {

@@ -6,6 +6,7 @@
 #include "gpu_scene.h"
 #include "gpu_timer.h"
 #include "light_buffer.h"
+#include "light_volume_gpu.h"
 #include "render_targets.h"
 #include "renderer.h"
 #include "shader_library.h"
@@ -64,6 +65,29 @@ public:
     // Binds the G-buffer attachments to units 0..2 and the light buffer to unit 3 and sets the
     // uniforms of shaders/lighting.glsl on `program`.
     void bindLightingInputs(gl::Program const& program, FrameContext const& f) const;
+
+    // --- light volumes, tiled lighting, coverage and overlays -------------------------------
+    // renderer/volume_pass.cpp, renderer/tiled_pass.cpp, renderer/overlay_pass.cpp
+    LightVolumeGpu volumes;
+    FrameContext lastFrame;      // the last frame's context (lights left empty) for late coverage
+    bool coverageValid = false;  // targets.coverage holds the last frame's counts
+
+    void initLightVolumes();  // creates the sphere mesh and the programs on first use
+    void prepareVolumeInstances(FrameContext const& f);
+    // Ambient full-screen, then one instanced sphere per light added by blending, culled per
+    // f.settings.cull. Writes targets.volumeFbo (lighting + the G-buffer's depth-stencil).
+    void lightingVolumesPass(FrameContext const& f);
+    // Draws the light volumes with `program` into the bound framebuffer, with the face culling,
+    // depth and stencil state of `cull` (shared by the lighting and the coverage passes).
+    void drawLightVolumes(FrameContext const& f, gl::Program const& program, CullMode cull);
+    // Compute pass over 16x16 tiles (needs caps.computeShaders): shade writes the lit image,
+    // coverage writes targets.coverage (x = lights in the tile, y = lights that lit the pixel).
+    void lightingTiledPass(FrameContext const& f, bool shade, bool coverage);
+    // Fills targets.coverage for the heat map (per mode) or the lights-per-tile view.
+    void coveragePass(FrameContext const& f);
+    void volumeWireframesPass(FrameContext const& f);
+    // Computes the coverage of the last frame when a view needs it and the frame did not.
+    void ensureCoverage(DebugView view);
 };
 
 }  // namespace gbl

@@ -70,8 +70,10 @@ std::optional<gl::Program> ShaderLibrary::build(ProgramDesc const& desc, std::st
             return std::nullopt;
         }
         if (!desc.defines.empty()) {
-            // Defines go right after the #version line, which must stay first.
-            auto const eol = text->find('\n');
+            // Defines go right after the #version line, which must stay the first directive
+            // (the one-line file header comment may come before it).
+            auto const version = text->find("#version");
+            auto const eol = text->find('\n', version == std::string::npos ? 0 : version);
             std::string defs;
             for (auto const& d : desc.defines) defs += "#define " + d + "\n";
             text->insert(eol == std::string::npos ? text->size() : eol + 1, defs);

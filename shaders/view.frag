@@ -72,6 +72,23 @@ vec3 heatRamp(float t) {
     return c;
 }
 
+// Legend along the bottom edge (frames of at least 64x64): the ramp from 0 to uHeatMax left to
+// right with a tick at every quarter; for the heat map the lower half shows the dimmed ramp of
+// pixels where nothing evaluated actually lit the surface.
+vec3 heatLegend(ivec2 px, vec3 color) {
+    ivec2 size = textureSize(uCoverage, 0);
+    if (size.x < 64 || size.y < 64) return color;
+    int x0 = 8, x1 = min(size.x - 8, 264), y0 = 6, y1 = 22;
+    if (px.x < x0 - 1 || px.x > x1 || px.y < y0 - 1 || px.y > y1) return color;
+    if (px.x == x0 - 1 || px.x == x1 || px.y == y0 - 1 || px.y == y1) return vec3(1.0);  // frame
+    float t = (float(px.x - x0) + 0.5) / float(x1 - x0);
+    int quarter = (x1 - x0) / 4;
+    if ((px.x - x0) % quarter == 0) return vec3(1.0);  // ticks at 0, 1/4, 1/2, 3/4 of uHeatMax
+    vec3 ramp = heatRamp(max(t, 1e-3));
+    if (uView == VIEW_HEATMAP && px.y < (y0 + y1) / 2) ramp *= 0.3;
+    return ramp;
+}
+
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 v;
@@ -91,14 +108,23 @@ void main() {
     case VIEW_DEPTH: v = vec4(vec3(texelFetch(uDepth, px, 0).r), 1.0); break;
     case VIEW_DEPTH_LINEAR: v = vec4(vec3(linearDepth(texelFetch(uDepth, px, 0).r)), 1.0); break;
     case VIEW_HEATMAP: {
-        vec2 c = texelFetch(uCoverage, px, 0).xy;  // x: volumes covering, y: lights that lit it
-        v = vec4(heatRamp(c.x / uHeatMax), 1.0);
+        // Hue: how many lights were evaluated here (volumes covering, tile list, or all);
+        // brightness: the share of them that actually lit the surface. Dim = wasted work.
+        vec2 c = texelFetch(uCoverage, px, 0).xy;  // x: evaluated, y: lit
+        v = vec4(heatRamp(c.x / uHeatMax) * mix(0.3, 1.0, c.y / max(c.x, 1.0)), 1.0);
         data = false;
         break;
     }
-    case VIEW_TILE_LIGHTS: v = vec4(heatRamp(texelFetch(uCoverage, px, 0).x / uHeatMax), 1.0); data = false; break;
+    case VIEW_TILE_LIGHTS: {
+        // Lights in each 16x16 tile's list, with the tile grid drawn dark.
+        v = vec4(heatRamp(texelFetch(uCoverage, px, 0).x / uHeatMax), 1.0);
+        if (px.x % 16 == 0 || px.y % 16 == 0) v.rgb *= 0.5;
+        data = false;
+        break;
+    }
     default: v = vec4(1.0, 0.0, 1.0, 1.0); data = false; break;  // magenta: an unknown view
     }
+    if (uView == VIEW_HEATMAP || uView == VIEW_TILE_LIGHTS) v.rgb = heatLegend(px, v.rgb);
     if (data) v = remap(v);
     // Channel isolation: one channel alone is shown as grey (so alpha/specular stays visible).
     float shown = dot(uChannelMask, vec4(1.0));

@@ -27,7 +27,8 @@ bool sameBytes(std::vector<T> const& a, std::vector<T> const& b) {
 
 bool sameLight(PointLight const& a, PointLight const& b) {
     return std::memcmp(&a.position, &b.position, sizeof a.position) == 0 &&
-           std::memcmp(&a.color, &b.color, sizeof a.color) == 0 && std::memcmp(&a.intensity, &b.intensity, sizeof(float)) == 0 &&
+           std::memcmp(&a.color, &b.color, sizeof a.color) == 0 &&
+           std::memcmp(&a.intensity, &b.intensity, sizeof(float)) == 0 &&
            std::memcmp(&a.kc, &b.kc, sizeof(float)) == 0 && std::memcmp(&a.kl, &b.kl, sizeof(float)) == 0 &&
            std::memcmp(&a.kq, &b.kq, sizeof(float)) == 0 && a.name == b.name;
 }

@@ -246,3 +246,19 @@ TEST(WindowedAttenuation, NoFalloffLightKeepsItsBrightnessUntilTheCap) {
     EXPECT_NEAR(windowedAttenuation(l, r.radius, 10.0f), 1.0 - 5.0 / 512.0, 1e-6);
     EXPECT_EQ(windowedAttenuation(l, r.radius, r.radius), 0.0f);
 }
+
+TEST(LightRadius, ScalingTheFalloffScalesTheRadius) {
+    for (float scale : {0.25f, 0.5f, 2.0f}) {
+        PointLight const l = makeLight(3.0f, 1.0f, 0.7f, 1.8f);
+        PointLight const s = scaleLightFalloff(l, scale);
+        EXPECT_NEAR(lightRadius(s).radius, lightRadius(l).radius * scale, 1e-4 * scale) << scale;
+        // The whole profile stretches: the same attenuation at scaled distances.
+        for (float d : {0.0f, 0.5f, 2.0f, 4.0f})
+            EXPECT_NEAR(windowedAttenuation(s, lightRadius(s).radius, d * scale), windowedAttenuation(l, lightRadius(l).radius, d),
+                        1e-5)
+                << scale << " " << d;
+    }
+    // Linear falloff too: (51.2 * 3 - 1) / 0.7 = 218.0 -> 54.5 at a quarter.
+    PointLight const lin = scaleLightFalloff(makeLight(3.0f, 1.0f, 0.7f, 0.0f), 0.25f);
+    EXPECT_NEAR(lightRadius(lin).radius, (51.2 * 3 - 1) / 0.7 * 0.25, 1e-2);
+}

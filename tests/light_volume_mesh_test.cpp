@@ -138,3 +138,15 @@ TEST(LightVolumeMesh, RejectsDegenerateTessellations) {
         EXPECT_NE(std::string(e.what()).find("makeLightVolumeSphere()"), std::string::npos);
     }
 }
+
+TEST(LightVolumeMesh, CameraInsideTestAccountsForTheNearPlane) {
+    // fov 90, aspect 1, near 1: the near plane's corner is at (1, 1, -1), sqrt(3) from the eye.
+    float const corner = nearPlaneCornerDistance(glm::radians(90.0f), 1.0f, 1.0f);
+    EXPECT_NEAR(corner, std::sqrt(3.0f), 1e-6f);
+    EXPECT_NEAR(nearPlaneCornerDistance(glm::radians(90.0f), 2.0f, 1.0f), std::sqrt(6.0f), 1e-6f);
+    // A volume of enclosing radius 5 at distance 6: outside the volume, but the near plane can
+    // still reach into it (6 < 5 + 1.73); at distance 7 it cannot.
+    EXPECT_TRUE(volumeMayContainCamera({0, 0, 0}, {6, 0, 0}, 5.0f, corner));
+    EXPECT_FALSE(volumeMayContainCamera({0, 0, 0}, {0, 7, 0}, 5.0f, corner));
+    EXPECT_TRUE(volumeMayContainCamera({1, 1, 1}, {1, 1, 1}, 5.0f, 0.0f));  // at the centre
+}

@@ -81,6 +81,9 @@ void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size) {
     }
     polyline(dl, axes, c, c.classic, IM_COL32(150, 150, 150, 160), 1.0f);
     polyline(dl, axes, c, c.applied, IM_COL32(255, 255, 255, 255), 2.0f);
+    // Legend, top left: the bright curve is what the renderer adds, the faint one the textbook form.
+    dl->AddText(ImVec2(p0.x + 6, p0.y + 16), IM_COL32(255, 255, 255, 255), "applied");
+    dl->AddText(ImVec2(p0.x + 6, p0.y + 30), IM_COL32(150, 150, 150, 255), "1/(Kc+Kl d+Kq d^2)");
     char axisLabel[64];
     std::snprintf(axisLabel, sizeof axisLabel, "0 .. %.2f units%s", c.maxDistance, logScale ? "  (log)" : "");
     dl->AddText(ImVec2(p0.x + 4, p1.y - 14), IM_COL32(160, 160, 160, 255), axisLabel);

@@ -20,6 +20,18 @@
 
 namespace gbl::ui {
 
+// Wall-clock cost of each part of the frame, with glFinish between parts so the GPU work of
+// one part is not billed to the next. Only while a measurement runs (it slows the frame).
+struct CostMeasurement {
+    int remaining = 0;  // frames still to measure; 0 = not measuring
+    int frames = 0;
+    double renderMs = 0.0;   // Renderer::render: the deferred frame itself
+    double viewersMs = 0.0;  // view passes of the G-buffer viewers, range fits, pixel sample
+    double uiMs = 0.0;       // building the ImGui frame (all panels)
+    double imguiMs = 0.0;    // drawing ImGui's draw lists
+    double frameMs = 0.0;    // whole iteration, swap included
+};
+
 struct EditorState {
     // --- the scene being looked at ------------------------------------------------------
     std::string sceneSource;      // "default" or the glTF path
@@ -40,6 +52,7 @@ struct EditorState {
     StatsState stats;
     LogState log;
 
+    CostMeasurement measurement;
     bool quitRequested = false;
 };
 

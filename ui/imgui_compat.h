@@ -66,4 +66,21 @@ inline void separatorText(char const* label) {
 #endif
 }
 
+// Right edge of the content area, taken at the start of a row (GetWindowContentRegionMax is
+// obsolete in 1.92).
+inline float rowRightEdge() { return ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x; }
+
+// Puts the next item on the current line when `itemWidth` still fits before `rightEdge`, else
+// on a new line: radio rows wrap in narrow side columns instead of running off the window.
+inline void sameLineIfFits(float itemWidth, bool firstInRow, float rightEdge) {
+    if (firstInRow) return;
+    float const spacing = ImGui::GetStyle().ItemSpacing.x;
+    if (ImGui::GetItemRectMax().x + spacing + itemWidth <= rightEdge) ImGui::SameLine();
+}
+
+// Width of a radio button or checkbox with this label.
+inline float checkItemWidth(char const* label) {
+    return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
+}
+
 }  // namespace gbl::ui

@@ -19,7 +19,7 @@ TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize) {
     float const centreW = workSize.x - leftW - rightW;
     float const h = workSize.y;
     float const stripH = std::floor(h * kViewerStrip);
-    float const leftTopH = std::floor(h * 0.58f);
+    float const leftTopH = std::floor(h * 0.64f);
     float const rightTopH = std::floor(h * 0.45f);
     float const statsH = std::floor(h * 0.35f);
     glm::vec2 const p = workPos;
@@ -53,18 +53,19 @@ void buildDefaultDockLayout(ImGuiID dockspace, ImGuiViewport const* viewport) {
         ImGui::DockBuilderSplitNode(centre, ImGuiDir_Right, kRightColumn / (1.0f - kLeftColumn), nullptr, &centre);
     ImGuiID const strip = ImGui::DockBuilderSplitNode(centre, ImGuiDir_Down, kViewerStrip, nullptr, &centre);
     ImGuiID leftTop = left;
-    ImGuiID const leftBottom = ImGui::DockBuilderSplitNode(leftTop, ImGuiDir_Down, 0.42f, nullptr, &leftTop);
+    ImGuiID const leftBottom = ImGui::DockBuilderSplitNode(leftTop, ImGuiDir_Down, 0.36f, nullptr, &leftTop);
     ImGuiID rightTop = right;
-    ImGuiID const rightBottom = ImGui::DockBuilderSplitNode(rightTop, ImGuiDir_Down, 0.55f, nullptr, &rightTop);
+    ImGuiID rightMiddle = ImGui::DockBuilderSplitNode(rightTop, ImGuiDir_Down, 0.55f, nullptr, &rightTop);
+    ImGuiID const rightBottom = ImGui::DockBuilderSplitNode(rightMiddle, ImGuiDir_Down, 0.36f, nullptr, &rightMiddle);
 
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::Viewport), centre);
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::GBuffer), strip);
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::Lights), leftTop);
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::Pipeline), leftBottom);
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::PixelInspector), rightTop);
-    // Stats and Log share a node as tabs; Stats is docked last so it is the visible tab.
+    // Every window gets its own node so all of them are visible at once (no hidden tabs).
+    ImGui::DockBuilderDockWindow(windowName(EditorWindow::Stats), rightMiddle);
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::Log), rightBottom);
-    ImGui::DockBuilderDockWindow(windowName(EditorWindow::Stats), rightBottom);
     ImGui::DockBuilderFinish(dockspace);
 }
 }  // namespace

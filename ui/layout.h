@@ -28,7 +28,7 @@ struct TileRect {
 
 // Fractions of the work area: the side columns keep their widths, the centre gets the rest.
 inline constexpr float kLeftColumn = 0.22f;
-inline constexpr float kRightColumn = 0.22f;
+inline constexpr float kRightColumn = 0.24f;
 inline constexpr float kViewerStrip = 0.30f;  // share of the centre column below the viewport
 
 // Where a window sits in the tiled arrangement (no docking): lights over pipeline on the

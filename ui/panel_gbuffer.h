@@ -22,6 +22,7 @@ struct ViewerState {
     float rangeMax = 1.0f;
     bool autoFit = false;        // refit the range to the data about once a second
     bool fitRequested = false;   // the Fit button; the loop reads the attachment and clears it
+    long lastFitFrame = -1;      // frame of the last fit that found data; -1 = never fitted
     NormalDisplay normalDisplay = NormalDisplay::Biased;
     bool linearDepth = true;     // depth viewer: eye distance instead of window depth
     bool cameraClipPlanes = true;  // linear depth with the camera's near/far, else the fields below

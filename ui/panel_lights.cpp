@@ -27,7 +27,7 @@ char const* radiusKindText(RadiusKind kind) {
 }
 
 void drawList(LightsPanelState& state, std::vector<PointLight>& lights) {
-    float const height = std::min(ImGui::GetTextLineHeightWithSpacing() * 7.5f, ImGui::GetContentRegionAvail().y * 0.4f);
+    float const height = std::min(ImGui::GetTextLineHeightWithSpacing() * 5.5f, ImGui::GetContentRegionAvail().y * 0.4f);
     beginFramedChild("light-list", ImVec2(0, std::max(height, 60.0f)));
     ImGuiListClipper clipper;
     clipper.Begin(int(lights.size()));
@@ -51,9 +51,13 @@ void drawList(LightsPanelState& state, std::vector<PointLight>& lights) {
 
 void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
     if (state.selected < 0 || state.selected >= int(lights.size())) {
-        ImGui::TextDisabled("Select a light in the list or click its cube in the viewport.");
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("Select a light in the list or click its cube in the viewport.");
+        ImGui::PopStyleColor();
         return;
     }
+    // Short labels on the right, values fill the rest of the narrow side column.
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * 4.0f);
     // Widgets edit a copy; the copy replaces the light only when validateLight accepts it.
     PointLight edited = lights[std::size_t(state.selected)];
     bool changed = false;
@@ -65,12 +69,27 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
     }
     changed |= ImGui::DragFloat3("Position", &edited.position.x, 0.05f);
     changed |= ImGui::ColorEdit3("Colour", &edited.color.x, ImGuiColorEditFlags_Float);
-    changed |= ImGui::DragFloat("Intensity", &edited.intensity, 0.01f, 0.0f, 1000.0f, "%.3f");
-    changed |= ImGui::DragFloat("Kc", &edited.kc, 0.005f, 0.0f, 100.0f, "%.4f");
-    changed |= ImGui::DragFloat("Kl", &edited.kl, 0.001f, 0.0f, 100.0f, "%.5f");
-    changed |= ImGui::DragFloat("Kq", &edited.kq, 0.0005f, 0.0f, 100.0f, "%.6f");
-    changed |= ImGui::DragFloat("Threshold", &edited.threshold, 0.0005f, 0.0f, 1.0f, "%.5f");
+    // Three attenuation terms on one row, as in the formula Kc + Kl d + Kq d^2; each keeps its
+    // own drag speed because they differ by orders of magnitude.
+    float const third = (ImGui::CalcItemWidth() - 2.0f * ImGui::GetStyle().ItemInnerSpacing.x) / 3.0f;
+    ImGui::PushItemWidth(third);
+    changed |= ImGui::DragFloat("##kc", &edited.kc, 0.005f, 0.0f, 100.0f, "Kc %.3f");
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    changed |= ImGui::DragFloat("##kl", &edited.kl, 0.001f, 0.0f, 100.0f, "Kl %.4f");
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    changed |= ImGui::DragFloat("##kq", &edited.kq, 0.0005f, 0.0f, 100.0f, "Kq %.5f");
+    ImGui::PopItemWidth();
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::TextUnformatted("Atten.");
+    float const half = (ImGui::CalcItemWidth() - ImGui::GetStyle().ItemInnerSpacing.x) / 2.0f;
+    ImGui::PushItemWidth(half);
+    changed |= ImGui::DragFloat("##intensity", &edited.intensity, 0.01f, 0.0f, 1000.0f, "I %.3f");
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    changed |= ImGui::DragFloat("##threshold", &edited.threshold, 0.0005f, 0.0f, 1.0f, "cut %.5f");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("brightness below which the light counts as dark (5/256 by default)");
+    ImGui::PopItemWidth();
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::TextUnformatted("I, cut");
 
     int preset = matchingPreset(edited);
     char presetLabel[32];
@@ -89,6 +108,7 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
         ImGui::EndCombo();
     }
 
+    ImGui::PopItemWidth();
     if (changed) {
         auto const error = applyLightEdit(lights, state.selected, edited);
         state.message = error ? *error : std::string();
@@ -97,12 +117,11 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
     PointLight const& light = lights[std::size_t(state.selected)];
     LightRadius const r = lightRadius(light);
     ImGui::Text("Radius %.3f  (%s)", r.radius, radiusKindText(r.kind));
-    ImGui::Text("Imax %.3f, reaches Imax/threshold = %.1f", lightImax(light),
+    ImGui::Text("Imax %.3f  Imax/cut %.1f", lightImax(light),
                 light.threshold > 0.0f ? lightImax(light) / light.threshold : 0.0f);
-    ImGui::Checkbox("Log scale", &state.plotLogScale);
     ImGui::SameLine();
-    ImGui::TextDisabled("white: applied, grey: classic 1/(Kc+Kl d+Kq d^2)");
-    float const plotH = std::clamp(ImGui::GetContentRegionAvail().y - 4.0f, 90.0f, 220.0f);
+    ImGui::Checkbox("log", &state.plotLogScale);
+    float const plotH = std::clamp(ImGui::GetContentRegionAvail().y - 4.0f, 100.0f, 240.0f);
     drawAttenuationPlot(light, state.plotLogScale, ImVec2(ImGui::GetContentRegionAvail().x, plotH));
 }
 

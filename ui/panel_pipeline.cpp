@@ -41,8 +41,9 @@ void helpTooltip(char const* text) {
 template <class Enum, std::size_t N>
 void radioRow(char const* id, Enum& value, std::array<std::string_view, N> const& names, char const* const* help) {
     ImGui::PushID(id);
+    float const right = rowRightEdge();
     for (std::size_t i = 0; i < N; ++i) {
-        if (i > 0) ImGui::SameLine();
+        sameLineIfFits(checkItemWidth(names[i].data()), i == 0, right);
         if (ImGui::RadioButton(names[i].data(), value == Enum(i))) value = Enum(i);
         helpTooltip(help[i]);
     }
@@ -54,17 +55,22 @@ void drawPipelinePanel(PipelineSettings& settings, GlCaps const& caps) {
     placeWindow(EditorWindow::Pipeline);
     if (ImGui::Begin(windowName(EditorWindow::Pipeline), nullptr, editorWindowFlags())) {
         separatorText("Lighting mode");
+        float const right = rowRightEdge();
         for (std::size_t i = 0; i < kLightingModeNames.size(); ++i) {
             auto const mode = LightingMode(i);
             std::string const reason = lightingModeUnavailableReason(mode, caps);
-            if (i > 0) ImGui::SameLine();
+            sameLineIfFits(checkItemWidth(kLightingModeNames[i].data()), i == 0, right);
             ImGui::BeginDisabled(!reason.empty());
             if (ImGui::RadioButton(kLightingModeNames[i].data(), settings.mode == mode)) settings.mode = mode;
             ImGui::EndDisabled();
             helpTooltip(reason.empty() ? kModeHelp[i] : reason.c_str());
         }
         if (std::string const reason = lightingModeUnavailableReason(LightingMode::Tiled, caps); !reason.empty())
-            ImGui::TextDisabled("tiled: %s", reason.c_str());
+        {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+            ImGui::TextWrapped("tiled: %s", reason.c_str());
+            ImGui::PopStyleColor();
+        }
 
         separatorText("Volume cull mode");
         bool const volumes = settings.mode == LightingMode::Volumes;
@@ -73,17 +79,17 @@ void drawPipelinePanel(PipelineSettings& settings, GlCaps const& caps) {
         ImGui::EndDisabled();
         if (!volumes) ImGui::TextDisabled("applies to the volumes mode only");
 
-        separatorText("Depth before the forward pass (blit step)");
+        separatorText("Blit step (depth before forward pass)");
         radioRow("blit", settings.depthCopy, kDepthCopyNames, kBlitHelp);
 
         separatorText("Overlays and views");
         ImGui::Checkbox("Light cubes", &settings.lightCubes);
-        ImGui::SameLine();
+        sameLineIfFits(checkItemWidth("Volume wireframes"), false, right);
         ImGui::Checkbox("Volume wireframes", &settings.volumeWireframes);
         bool heatmap = settings.view == DebugView::Heatmap;
         if (ImGui::Checkbox("Coverage heatmap", &heatmap)) settings.view = heatmap ? DebugView::Heatmap : DebugView::Final;
         helpTooltip("per pixel: how many light volumes covered it and how many actually lit it");
-        ImGui::SameLine();
+        sameLineIfFits(checkItemWidth("Normal maps"), false, right);
         ImGui::Checkbox("Normal maps", &settings.normalMaps);
 
         separatorText("Shading");

@@ -6,7 +6,9 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace gbl::ui {
 
@@ -17,7 +19,7 @@ void row(char const* label, glm::vec4 v, int n = 4) {
     ImGui::TextUnformatted(label);
     for (int i = 0; i < 4; ++i) {
         ImGui::TableNextColumn();
-        if (i < n) ImGui::Text("%.5g", v[i]);
+        if (i < n) ImGui::Text("%.4g", v[i]);
     }
 }
 }  // namespace
@@ -38,20 +40,20 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
             if (!s.covered) ImGui::TextDisabled("background: no geometry at this pixel");
             ImGuiTableFlags const flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
             if (ImGui::BeginTable("values", 5, flags)) {
-                ImGui::TableSetupColumn("attachment", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFontSize() * 7.0f);
+                ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFontSize() * 5.5f);
                 for (char const* c : {"x / r", "y / g", "z / b", "w / a"}) ImGui::TableSetupColumn(c);
                 ImGui::TableHeadersRow();
                 row("position", s.position);
                 row("from depth", glm::vec4(s.reconstructedPosition, 0.0f), 3);
                 row("normal", s.normal);
-                row("albedo/spec", s.albedoSpec);
+                row("albedo,spec", s.albedoSpec);
                 row("depth", glm::vec4(s.depth, 0, 0, 0), 1);
                 row("lighting", s.lighting);
                 ImGui::EndTable();
             }
             if (s.covered) {
                 float const err = glm::length(glm::vec3(s.position) - s.reconstructedPosition);
-                ImGui::Text("stored vs rebuilt position: %.3g units apart", err);
+                ImGui::Text("rebuilt from depth is %.3g units off", err);
             }
         }
 
@@ -61,9 +63,10 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
         } else {
             PixelBreakdown const& b = *state.breakdown;
             ImGui::Text("%d of %d lights reach it", int(b.lights.size()), b.lightsTested);
-            ImGuiTableFlags const flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
-                                          ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp;
-            float const height = std::max(ImGui::GetContentRegionAvail().y - ImGui::GetTextLineHeightWithSpacing() * 2.2f, 60.0f);
+            // Fixed columns with horizontal scrolling: six numbers per light never fit a side column.
+            ImGuiTableFlags const flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX |
+                                          ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
+            float const height = std::max(ImGui::GetContentRegionAvail().y - ImGui::GetTextLineHeightWithSpacing() * 3.2f, 60.0f);
             if (ImGui::BeginTable("lights", 5, flags, ImVec2(0, height))) {
                 ImGui::TableSetupScrollFreeze(0, 1);
                 for (char const* c : {"light", "dist", "atten", "diffuse", "specular"}) ImGui::TableSetupColumn(c);
@@ -72,12 +75,12 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
                 clipper.Begin(int(b.lights.size()));
                 while (clipper.Step()) {
                     for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
-                        LightContribution const& c = b.lights[std::size_t(i)];
+                        gbl::LightContribution const& c = b.lights[std::size_t(i)];
                         ImGui::TableNextRow();
                         ImGui::TableNextColumn();
                         char label[16];
-                        std::snprintf(label, sizeof label, "%d", c.light);
-                        if (ImGui::Selectable(label, false, ImGuiSelectableFlags_SpanAllColumns)) state.selectLight = c.light;
+                        std::snprintf(label, sizeof label, "%d", c.lightIndex);
+                        if (ImGui::Selectable(label, false, ImGuiSelectableFlags_SpanAllColumns)) state.selectLight = c.lightIndex;
                         ImGui::TableNextColumn();
                         ImGui::Text("%.3f", c.distance);
                         ImGui::TableNextColumn();
@@ -92,8 +95,8 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
             }
             ImGui::Text("ambient %.4f %.4f %.4f", b.ambient.r, b.ambient.g, b.ambient.b);
             glm::vec3 const stored = state.sample ? glm::vec3(state.sample->lighting) : glm::vec3(0.0f);
-            ImGui::Text("sum %.4f %.4f %.4f  (stored %.4f %.4f %.4f)", b.total.r, b.total.g, b.total.b, stored.r,
-                        stored.g, stored.b);
+            ImGui::Text("sum     %.4f %.4f %.4f", b.total.r, b.total.g, b.total.b);
+            ImGui::Text("stored  %.4f %.4f %.4f", stored.r, stored.g, stored.b);
         }
     }
     ImGui::End();

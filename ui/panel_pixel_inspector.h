@@ -3,6 +3,7 @@
 #pragma once
 
 #include "renderer.h"
+#include "shading_cpu.h"
 
 #include <glm/glm.hpp>
 
@@ -12,18 +13,10 @@
 
 namespace gbl::ui {
 
-// One light's part of the lit value at a pixel, evaluated on the CPU with the shader's math.
-struct LightContribution {
-    int light = -1;
-    float distance = 0.0f;
-    float attenuation = 0.0f;   // windowed attenuation actually applied
-    glm::vec3 diffuse{0.0f};
-    glm::vec3 specular{0.0f};
-};
-
+// Each light's share of the lit value at one pixel, from the CPU copy of the shader's math.
 struct PixelBreakdown {
-    glm::vec3 ambient{0.0f};
-    std::vector<LightContribution> lights;  // only lights that reach the pixel, brightest first
+    glm::vec3 ambient{0.0f};                // ambient * albedo
+    std::vector<gbl::LightContribution> lights;  // only lights that reach the pixel, brightest first
     glm::vec3 total{0.0f};                  // ambient + sum of the lights
     int lightsTested = 0;
 };

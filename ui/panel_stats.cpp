@@ -42,12 +42,19 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount)
         double const frameMs = stats.costAverage.frameCpuMs;
         ImGui::Text("Frame %.2f ms (%.0f fps)", frameMs, frameMs > 0.0 ? 1000.0 / frameMs : 0.0);
         ImGui::Text("Renderer GPU %.2f ms at %dx%d", f.gpuFrameMs, f.width, f.height);
+        ImGui::Text("Mode run: %s", enumName(kLightingModeNames, f.modeUsed).data());
+        if (!f.fallbackReason.empty()) {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
+            ImGui::TextWrapped("%s", f.fallbackReason.c_str());
+            ImGui::PopStyleColor();
+        }
         int const offset = stats.count == StatsState::kHistory ? stats.next : 0;
         float const top = historyMax(stats.frameMs, stats.count) * 1.1f;
-        ImGui::PlotLines("##frame", stats.frameMs.data(), stats.count, offset, "frame ms", 0.0f, top,
-                         ImVec2(-1.0f, 50.0f));
+        // PlotLines takes a literal width (no "fill" convention), so pass the available width.
+        float const plotW = ImGui::GetContentRegionAvail().x;
+        ImGui::PlotLines("##frame", stats.frameMs.data(), stats.count, offset, "frame ms", 0.0f, top, ImVec2(plotW, 45.0f));
         ImGui::PlotLines("##gpu", stats.gpuFrameMs.data(), stats.count, offset, "renderer GPU ms", 0.0f, top,
-                         ImVec2(-1.0f, 50.0f));
+                         ImVec2(plotW, 45.0f));
 
         if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
             ImGui::TableSetupColumn("pass");

@@ -56,7 +56,11 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigne
     ImGui::SameLine();
     if (ImGui::Button("Frame (F)")) state.frameRequested = true;
     ImGui::SameLine();
-    ImGui::TextDisabled("LMB orbit  RMB look  MMB pan  wheel dolly  WASD/QE fly");
+    ImGui::TextDisabled("(?)");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("left drag: orbit    right drag: look    middle drag: pan    wheel: dolly\n"
+                          "W A S D / Q E: fly (shift: faster)    F: frame the scene\n"
+                          "click a light cube: select it    L: lock the pixel inspector");
 
     ImVec2 const avail = ImGui::GetContentRegionAvail();
     ImVec2 const scale = ImGui::GetIO().DisplayFramebufferScale;

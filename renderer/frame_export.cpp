@@ -1,0 +1,120 @@
+// The files of one exported frame: images through OpenImageIO, descriptions as JSON.
+#include "frame_export.h"
+
+#include "image_io.h"
+#include "light_math.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+namespace gbl {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+json toJson(glm::mat4 const& m) {
+    json rows = json::array();
+    for (int r = 0; r < 4; ++r) rows.push_back({m[0][r], m[1][r], m[2][r], m[3][r]});  // row-major for readers
+    return rows;
+}
+
+json toJson(glm::vec3 v) { return {v.x, v.y, v.z}; }
+
+std::optional<std::string> writeJson(fs::path const& path, json const& j) {
+    std::ofstream f(path);
+    f << j.dump(2) << "\n";
+    f.close();
+    if (!f) return "cannot write " + path.string();
+    return std::nullopt;
+}
+
+char const* radiusKindName(RadiusKind k) {
+    switch (k) {
+    case RadiusKind::Quadratic: return "quadratic";
+    case RadiusKind::Linear: return "linear";
+    case RadiusKind::Capped: return "capped";
+    case RadiusKind::Zero: return "zero";
+    }
+    return "zero";
+}
+
+}  // namespace
+
+FloatImage linearDepthImage(FloatImage depth, Camera const& cam) {
+    for (float& z : depth.pixels) {
+        float const ndc = z * 2.0f - 1.0f;
+        z = 2.0f * cam.nearPlane * cam.farPlane / (cam.farPlane + cam.nearPlane - ndc * (cam.farPlane - cam.nearPlane));
+    }
+    return depth;
+}
+
+FloatImage specularImage(FloatImage const& albedo) {
+    FloatImage s{albedo.width, albedo.height, 1, {}};
+    s.pixels.reserve(albedo.pixels.size() / 4);
+    for (std::size_t i = 3; i < albedo.pixels.size(); i += 4) s.pixels.push_back(albedo.pixels[i]);
+    return s;
+}
+
+std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& frame, std::string const& dir) {
+    fs::path const out(dir);
+    auto path = [&](std::string const& name) { return (out / name).string(); };
+    std::optional<std::string> err;
+    auto check = [&](std::optional<std::string> e) {
+        if (e && !err) err = e;
+    };
+    FloatImage const albedo = renderer.readAttachment(Attachment::AlbedoSpec);
+    FloatImage const depth = renderer.readAttachment(Attachment::Depth);
+    check(writePng(path("final.png"), renderer.readAttachment(Attachment::Final), 3));
+    check(writeExr(path("lighting.exr"), renderer.readAttachment(Attachment::Lighting)));
+    check(writeExr(path("position.exr"), renderer.readAttachment(Attachment::Position)));
+    check(writeExr(path("normal.exr"), renderer.readAttachment(Attachment::Normal)));
+    check(writePng(path("albedo.png"), albedo, 3));
+    check(writePng(path("specular.png"), specularImage(albedo)));
+    check(writeExr(path("depth.exr"), depth));
+    check(writeExr(path("depth_linear.exr"), linearDepthImage(depth, frame.camera)));
+    for (DebugView v : frame.extraViews) {
+        ViewTarget target;
+        ViewParams params;
+        params.view = v;
+        renderer.drawView(params, frame.camera, target);
+        check(writePng(path("view_" + std::string(enumName(kDebugViewNames, v)) + ".png"), renderer.readViewTarget(target), 3));
+    }
+    if (err) return err;
+
+    json lightsJson = json::array();
+    for (auto const& l : frame.lights) {
+        LightRadius const r = lightRadius(l);
+        lightsJson.push_back({{"name", l.name}, {"position", toJson(l.position)}, {"color", toJson(l.color)},
+                              {"intensity", l.intensity}, {"kc", l.kc}, {"kl", l.kl}, {"kq", l.kq},
+                              {"threshold", l.threshold}, {"radius", r.radius}, {"radius_kind", radiusKindName(r.kind)}});
+    }
+    int const width = renderer.width(), height = renderer.height();
+    Camera const& cam = frame.camera;
+    float const aspect = float(width) / float(height);
+    json const cameraJson = {{"position", toJson(cam.position)}, {"yaw_degrees", cam.yawDegrees},
+                             {"pitch_degrees", cam.pitchDegrees}, {"fov_y_degrees", cam.fovYDegrees},
+                             {"near", cam.nearPlane}, {"far", cam.farPlane}, {"aspect", aspect},
+                             {"view", toJson(cam.view())}, {"projection", toJson(cam.projection(aspect))},
+                             {"matrix_layout", "row-major: view[r][c]"}};
+    json passes = json::object();
+    for (auto const& p : frame.stats.passes) passes[p.name] = p.gpuMs;
+    GlCaps const& caps = renderer.caps();
+    PipelineSettings const& s = frame.settings;
+    json statsJson = {{"gl_vendor", caps.vendor}, {"gl_renderer", caps.renderer}, {"gl_version", caps.version},
+                      {"width", width}, {"height", height}, {"lights", frame.stats.lightsSubmitted},
+                      {"lights_shaded", frame.stats.lightsShaded}, {"mode", enumName(kLightingModeNames, s.mode)},
+                      {"cull", enumName(kCullModeNames, s.cull)}, {"blit", enumName(kDepthCopyNames, s.depthCopy)},
+                      {"gpu_ms", passes}, {"gpu_frame_ms", frame.stats.gpuFrameMs}, {"triangles", frame.triangles},
+                      {"gl_errors", renderer.glErrorCount()}};
+    if (frame.stats.fragmentInvocations) statsJson["fragment_invocations"] = *frame.stats.fragmentInvocations;
+    check(writeJson(out / "lights.json", lightsJson));
+    check(writeJson(out / "camera.json", cameraJson));
+    check(writeJson(out / "stats.json", statsJson));
+    return err;
+}
+
+}  // namespace gbl

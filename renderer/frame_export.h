@@ -1,0 +1,40 @@
+// Writing every image and JSON description of a rendered frame to a folder: the set that
+// `render --out` writes and the editor's "Export all" writes, from one implementation.
+#pragma once
+
+#include "camera.h"
+#include "pipeline_settings.h"
+#include "point_light.h"
+#include "renderer.h"
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace gbl {
+
+struct FrameExport {
+    Camera camera;                         // the camera the frame was rendered with
+    std::span<PointLight const> lights;    // the lights as rendered (after animation)
+    PipelineSettings settings;
+    FrameStats stats;                      // what Renderer::render returned for the frame
+    std::size_t triangles = 0;             // scene size, for stats.json
+    std::vector<DebugView> extraViews;     // also written as view_<name>.png
+};
+
+// Writes into `dir` (which must exist): final.png, lighting.exr, position.exr, normal.exr,
+// albedo.png, specular.png, depth.exr, depth_linear.exr, view_<name>.png per extra view,
+// lights.json, camera.json and stats.json, from the renderer's current frame. Returns the
+// first error as one sentence naming the file; files before it stay written.
+std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& frame, std::string const& dir);
+
+// Eye-space distances from a read-back depth attachment (the inverse of the perspective depth
+// mapping with the camera's near and far planes), as depth_linear.exr stores them.
+FloatImage linearDepthImage(FloatImage depth, Camera const& camera);
+
+// The alpha channel of the albedo/specular attachment as a one-channel image (specular.png).
+FloatImage specularImage(FloatImage const& albedoSpec);
+
+}  // namespace gbl

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs the Debian packages gbuffer-lab builds and tests with (bookworm). Skips apt when all are present.
+set -euo pipefail
+
+packages=(
+  cmake g++ make pkg-config
+  libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev libopenimageio-dev libepoxy-dev
+  libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
+  libgtest-dev libcli11-dev nlohmann-json3-dev
+  xvfb xauth
+  clang libclang-rt-14-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "Installing: ${missing[*]}"
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

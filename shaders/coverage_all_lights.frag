@@ -1,0 +1,21 @@
+// Coverage for the modes that evaluate every light at every pixel (quad, forward): x = lights
+// evaluated, y = lights that actually reached the surface.
+#version 330 core
+#include "lighting.glsl"
+#include "light_fetch.glsl"
+
+uniform sampler2D uPosition;
+uniform sampler2D uNormal;
+uniform int uLightCount;
+out vec4 fragColor;
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    vec4 pos = texelFetch(uPosition, px, 0);
+    if (pos.w == 0.0) { fragColor = vec4(0.0); return; }
+    vec3 n = normalize(texelFetch(uNormal, px, 0).xyz);
+    float lit = 0.0;
+    for (int i = 0; i < uLightCount; ++i)
+        if (any(greaterThan(shadeLight(fetchLight(i), pos.xyz, n, vec3(1.0), 1.0), vec3(0.0)))) lit += 1.0;
+    fragColor = vec4(float(uLightCount), lit, 0.0, 0.0);
+}

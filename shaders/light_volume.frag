@@ -1,0 +1,44 @@
+// Light volumes: shades the G-buffer pixel under each volume fragment with that one light,
+// added to the HDR target by blending. With COVERAGE defined it instead counts, per pixel, the
+// volume fragments that ran (x) and the ones whose light actually reached the surface (y).
+// NO_DISCARD: the variant for the stencil cull mode, where a discarded fragment would skip the
+// stencil reset and leave its mark for the next light; pixels outside the radius add zero.
+#version 330 core
+#include "lighting.glsl"
+#include "light_fetch.glsl"
+
+uniform sampler2D uPosition;
+uniform sampler2D uNormal;
+uniform sampler2D uAlbedoSpec;
+
+flat in int vLight;
+out vec4 fragColor;
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    vec4 pos = texelFetch(uPosition, px, 0);
+    // The mesh is a little larger than the light's sphere: surfaces between the two, and the
+    // background, get nothing (the same zero the other modes compute past the radius). The
+    // test needs only the first texel of the light, so most rejected fragments stop here.
+    vec4 positionRadius = texelFetch(uLights, vLight * 4);
+    bool inside = pos.w != 0.0 && distance(positionRadius.xyz, pos.xyz) < positionRadius.w;
+#ifndef COVERAGE
+    if (!inside) {
+#ifdef NO_DISCARD
+        fragColor = vec4(0.0);
+        return;
+#else
+        discard;
+#endif
+    }
+#endif
+    Light l = fetchLight(vLight);
+#ifdef COVERAGE
+    vec3 lit = inside ? shadeLight(l, pos.xyz, normalize(texelFetch(uNormal, px, 0).xyz), vec3(1.0), 1.0) : vec3(0.0);
+    fragColor = vec4(1.0, any(greaterThan(lit, vec3(0.0))) ? 1.0 : 0.0, 0.0, 0.0);
+#else
+    vec4 as = texelFetch(uAlbedoSpec, px, 0);
+    vec3 n = normalize(texelFetch(uNormal, px, 0).xyz);
+    fragColor = vec4(shadeLight(l, pos.xyz, n, as.rgb, as.a), 0.0);
+#endif
+}

@@ -1,0 +1,10 @@
+// Light-volume wireframes: each light's enclosing sphere drawn as lines in the light's colour.
+#version 330 core
+#include "lighting.glsl"
+#include "light_fetch.glsl"
+
+flat in int vLight;
+uniform float uWireIntensity;  // HDR brightness, so the lines survive tonemapping
+out vec4 fragColor;
+
+void main() { fragColor = vec4(fetchLightColor(vLight) * uWireIntensity, 1.0); }

@@ -1,0 +1,124 @@
+// Tiled lighting (OpenGL 4.3): one work group per 16x16-pixel tile finds the depth bounds of
+// its pixels, keeps the lights whose sphere touches the tile's frustum between those bounds
+// (renderer/tile_math.h does the same on the CPU), then shades its pixels with only those.
+#version 430 core
+#include "lighting.glsl"
+#include "light_fetch.glsl"
+
+layout(local_size_x = 16, local_size_y = 16) in;
+
+uniform sampler2D uPosition;
+uniform sampler2D uNormal;
+uniform sampler2D uAlbedoSpec;
+uniform sampler2D uDepth;
+layout(rgba16f, binding = 0) uniform writeonly image2D uLighting;
+layout(rg32f, binding = 1) uniform writeonly image2D uCoverage;
+
+uniform int uLightCount;
+uniform vec3 uAmbient;
+uniform mat4 uView;
+uniform mat4 uInverseProjection;
+uniform ivec2 uScreenSize;
+uniform float uNear;
+uniform float uFar;
+uniform bool uShade;          // write the lit image
+uniform bool uWriteCoverage;  // write x = lights in the tile, y = lights that lit the pixel
+
+// A bit per light (kMaxLights = 16384): shading walks the set bits in index order, so each
+// pixel adds its lights in the same order as the full-screen pass.
+#define MAX_LIGHT_WORDS 512
+shared uint sLightMask[MAX_LIGHT_WORDS];
+shared uint sMinDepthBits;
+shared uint sMaxDepthBits;
+
+vec3 unprojectFar(vec2 ndc) {
+    vec4 v = uInverseProjection * vec4(ndc, 1.0, 1.0);
+    return v.xyz / v.w;
+}
+
+vec4 sidePlane(vec3 a, vec3 b, vec3 inside) {
+    vec3 n = normalize(cross(a, b));
+    if (dot(n, inside) < 0.0) n = -n;
+    return vec4(n, 0.0);
+}
+
+void main() {
+    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    uint local = gl_LocalInvocationIndex;
+    int words = min((uLightCount + 31) / 32, MAX_LIGHT_WORDS);
+    if (local == 0u) {
+        sMinDepthBits = floatBitsToUint(3.0e38);
+        sMaxDepthBits = 0u;
+    }
+    for (int w = int(local); w < words; w += 256) sLightMask[w] = 0u;
+    memoryBarrierShared();
+    barrier();
+
+    // --- depth bounds of the tile's geometry (view depth; positive floats order like uints) ---
+    bool onScreen = px.x < uScreenSize.x && px.y < uScreenSize.y;
+    vec4 pos = onScreen ? texelFetch(uPosition, px, 0) : vec4(0.0);
+    bool geometry = pos.w != 0.0;
+    if (geometry) {
+        float d = texelFetch(uDepth, px, 0).r;
+        float viewDepth = uNear * uFar / ((1.0 - d) * uFar + d * uNear);
+        atomicMin(sMinDepthBits, floatBitsToUint(viewDepth));
+        atomicMax(sMaxDepthBits, floatBitsToUint(viewDepth));
+    }
+    memoryBarrierShared();
+    barrier();
+
+    // --- light list: every invocation tests every 256th light ---
+    if (sMaxDepthBits != 0u) {
+        float minDepth = uintBitsToFloat(sMinDepthBits), maxDepth = uintBitsToFloat(sMaxDepthBits);
+        ivec2 lo = ivec2(gl_WorkGroupID.xy) * 16, hi = min(lo + 16, uScreenSize);
+        vec2 ndcLo = vec2(lo) / vec2(uScreenSize) * 2.0 - 1.0, ndcHi = vec2(hi) / vec2(uScreenSize) * 2.0 - 1.0;
+        vec3 bl = unprojectFar(ndcLo), br = unprojectFar(vec2(ndcHi.x, ndcLo.y));
+        vec3 tl = unprojectFar(vec2(ndcLo.x, ndcHi.y)), tr = unprojectFar(ndcHi);
+        vec3 centre = (bl + br + tl + tr) * 0.25;
+        vec4 planes[4] = vec4[4](sidePlane(bl, tl, centre), sidePlane(br, tr, centre), sidePlane(bl, br, centre),
+                                 sidePlane(tl, tr, centre));
+        for (int i = int(local); i < words * 32 && i < uLightCount; i += 256) {
+            vec4 positionRadius = texelFetch(uLights, i * 4);
+            float r = positionRadius.w;
+            if (r <= 0.0) continue;
+            vec3 c = (uView * vec4(positionRadius.xyz, 1.0)).xyz;
+            float depth = -c.z;
+            bool touches = depth + r >= minDepth && depth - r <= maxDepth;
+            for (int p = 0; p < 4 && touches; ++p) touches = dot(planes[p].xyz, c) >= -r;
+            if (touches) atomicOr(sLightMask[i >> 5], 1u << uint(i & 31));
+        }
+    }
+    memoryBarrierShared();
+    barrier();
+    if (!onScreen) return;
+
+    // --- shading: ambient plus the tile's lights in index order ---
+    vec3 color = vec3(0.0);
+    float lit = 0.0;
+    if (geometry) {
+        vec3 n = normalize(texelFetch(uNormal, px, 0).xyz);
+        vec4 as = texelFetch(uAlbedoSpec, px, 0);
+        color = uAmbient * as.rgb;
+        for (int w = 0; w < words; ++w) {
+            uint bits = sLightMask[w];
+            while (bits != 0u) {
+                int b = findLSB(bits);
+                bits &= bits - 1u;
+                // Position and radius first: lights in the tile's list that miss this pixel's
+                // surface cost one fetch (they would add exactly zero).
+                vec4 positionRadius = texelFetch(uLights, (w * 32 + b) * 4);
+                if (!(distance(positionRadius.xyz, pos.xyz) < positionRadius.w)) continue;
+                Light l = fetchLight(w * 32 + b);
+                color += shadeLight(l, pos.xyz, n, as.rgb, as.a);
+                // "Lit" as in light_volume.frag: the light reaches a surface that faces it.
+                if (uWriteCoverage && any(greaterThan(shadeLight(l, pos.xyz, n, vec3(1.0), 1.0), vec3(0.0)))) lit += 1.0;
+            }
+        }
+    }
+    if (uShade) imageStore(uLighting, px, geometry ? vec4(color, 1.0) : vec4(0.0));
+    if (uWriteCoverage) {
+        uint count = 0u;
+        for (int w = 0; w < words; ++w) count += uint(bitCount(sLightMask[w]));
+        imageStore(uCoverage, px, vec4(float(count), lit, 0.0, 0.0));
+    }
+}

@@ -1,0 +1,380 @@
+// The four lighting modes and the five volume cull modes on the default scene: one image, with
+// the differences that are bugs (cull none, back faces with the camera inside) shown to be real.
+#include "default_scene.h"
+#include "gl_fixture.h"
+#include "light_math.h"
+#include "light_volume_mesh.h"
+#include "renderer_impl.h"
+#include "test_scenes.h"
+#include "tile_math.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+using namespace gbl;
+using gbl::test::GlTest;
+
+namespace {
+
+constexpr int kW = 320, kH = 180;
+
+struct Diff {
+    double maxAbs = 0.0;
+    double meanAbs = 0.0;
+    double maxRel = 0.0;       // |a - b| / max(|a|, |b|) over channels with max(|a|, |b|) > relFloor
+    double meanValue = 0.0;    // mean of |reference| over every channel, for scale
+    int pixelsOver = 0;        // pixels where some channel exceeds the per-pixel bound given
+};
+
+// Compares the RGB channels of two lighting images. bound(ref) is the per-channel error
+// allowed at a reference value; pixelsOver counts pixels that exceed it anywhere.
+template <class Bound>
+Diff compare(FloatImage const& a, FloatImage const& ref, Bound bound, double relFloor = 1e-2) {
+    Diff d;
+    EXPECT_EQ(a.width, ref.width);
+    EXPECT_EQ(a.height, ref.height);
+    double sum = 0.0, sumRef = 0.0;
+    for (int y = 0; y < ref.height; ++y) {
+        for (int x = 0; x < ref.width; ++x) {
+            bool over = false;
+            for (int c = 0; c < 3; ++c) {
+                double const va = a.at(x, y, c), vr = ref.at(x, y, c);
+                double const e = std::abs(va - vr);
+                sum += e;
+                sumRef += std::abs(vr);
+                d.maxAbs = std::max(d.maxAbs, e);
+                double const m = std::max(std::abs(va), std::abs(vr));
+                if (m > relFloor) d.maxRel = std::max(d.maxRel, e / m);
+                if (e > bound(std::abs(vr))) over = true;
+            }
+            d.pixelsOver += over;
+        }
+    }
+    double const n = double(ref.width) * ref.height * 3;
+    d.meanAbs = sum / n;
+    d.meanValue = sumRef / n;
+    return d;
+}
+
+std::string describe(Diff const& d) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "max abs %.3g, mean abs %.3g (mean value %.3g), max rel %.3g, pixels over bound %d",
+                  d.maxAbs, d.meanAbs, d.meanValue, d.maxRel, d.pixelsOver);
+    return buf;
+}
+
+PipelineSettings settingsFor(LightingMode mode, CullMode cull = CullMode::Front) {
+    PipelineSettings s;
+    s.mode = mode;
+    s.cull = cull;
+    s.lightCubes = false;  // compare the lighting alone
+    return s;
+}
+
+// fp16 rounding: the lit target is RGBA16F, so every stored value carries a relative error of up
+// to 2^-11; additive blending rounds once per light.
+constexpr double kHalfUlp = 1.0 / 2048.0;
+
+class LightModesGlTest : public GlTest {
+protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        scene_ = makeDefaultScene();
+        lights_ = scene_.lights;
+        // Above the courtyard, higher than any light's volume reaches (lights are at most 3
+        // units up with radii up to 7.5): outside every volume, so the cull modes all hold.
+        camera_.position = {0.0f, 11.5f, 10.0f};
+        camera_.lookAt({0.0f, 0.0f, -2.0f});
+        renderer_ = makeRenderer(kW, kH);
+        ASSERT_FALSE(renderer_->setScene(scene_));
+    }
+    void TearDown() override {
+        renderer_.reset();
+        GlTest::TearDown();
+    }
+
+    FloatImage lighting(PipelineSettings const& s, Camera const& cam, std::span<PointLight const> lights) {
+        FrameStats const st = renderer_->render({cam, lights, s, true});
+        EXPECT_EQ(st.modeUsed, s.mode) << st.fallbackReason;
+        EXPECT_EQ(st.glErrors, 0u);
+        return renderer_->readAttachment(Attachment::Lighting);
+    }
+    FloatImage lighting(PipelineSettings const& s) { return lighting(s, camera_, lights_); }
+
+    // targets.coverage as floats (x evaluated, y lit), rows bottom to top.
+    std::vector<glm::vec2> coverage() {
+        RenderTargets const& t = renderer_->impl().targets;
+        std::vector<glm::vec2> out(std::size_t(t.width) * t.height);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, t.coverageFbo.id());
+        glReadPixels(0, 0, t.width, t.height, GL_RG, GL_FLOAT, out.data());
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+        return out;
+    }
+
+    // Camera inside light 0's sphere, looking at the floor under it.
+    Camera insideCamera() const {
+        PointLight const& l = lights_[0];
+        Camera c = camera_;
+        c.position = l.position + glm::vec3(0.3f, 0.4f, 0.3f);
+        c.lookAt(glm::vec3(l.position.x, 0.0f, l.position.z) + glm::vec3(0.0f, 0.0f, -2.0f));
+        return c;
+    }
+
+    SceneData scene_;
+    std::vector<PointLight> lights_;
+    Camera camera_;
+    std::unique_ptr<Renderer> renderer_;
+};
+
+}  // namespace
+
+TEST_F(LightModesGlTest, TestCameraIsOutsideEveryVolume) {
+    // The cull-mode assertions below rely on this; if the scene changes, pick another camera.
+    float const nearCorner = nearPlaneCornerDistance(glm::radians(camera_.fovYDegrees), float(kW) / kH, camera_.nearPlane);
+    float const scale = enclosingScale(makeLightVolumeSphere());
+    ASSERT_EQ(lights_.size(), 32u);
+    for (auto const& l : lights_)
+        EXPECT_FALSE(volumeMayContainCamera(camera_.position, l.position, lightRadius(l).radius * scale, nearCorner));
+    // ...and insideCamera() really is inside light 0.
+    EXPECT_LT(glm::length(insideCamera().position - lights_[0].position), lightRadius(lights_[0]).radius);
+}
+
+TEST_F(LightModesGlTest, VolumesTiledAndForwardMatchQuad) {
+    FloatImage const quad = lighting(settingsFor(LightingMode::Quad));
+    Diff const q = compare(quad, quad, [](double) { return 0.0; });
+    ASSERT_GT(q.meanValue, 0.01) << "the default scene should be visibly lit";
+
+    // Volumes: the same fp32 light terms, but summed by fp16 blending, one rounding per light
+    // covering the pixel. The default scene has at most ~12 lights over one pixel, so 16 half-ulps
+    // of the value plus 1e-4 absolute (fp16 spacing of the darkest lit values) bound it.
+    auto blendBound = [](double v) { return 16 * kHalfUlp * v + 1e-4; };
+    for (CullMode cull : {CullMode::Back, CullMode::Front, CullMode::Flip, CullMode::Stencil}) {
+        Diff const d = compare(lighting(settingsFor(LightingMode::Volumes, cull)), quad, blendBound);
+        EXPECT_EQ(d.pixelsOver, 0) << "volumes/" << enumName(kCullModeNames, cull) << ": " << describe(d);
+        // On average a handful of roundings: under 8 half-ulps of the mean value.
+        EXPECT_LT(d.meanAbs, 8 * kHalfUlp * q.meanValue) << "volumes/" << enumName(kCullModeNames, cull) << ": " << describe(d);
+    }
+
+    if (caps().computeShaders) {
+        // Tiled adds the same lights in the same order in fp32 and stores once: one fp16 rounding
+        // (a half-ulp each side, so 2 half-ulps) plus slack for the compiler fusing differently.
+        Diff const d = compare(lighting(settingsFor(LightingMode::Tiled)), quad,
+                               [](double v) { return 4 * kHalfUlp * v + 1e-5; });
+        EXPECT_EQ(d.pixelsOver, 0) << "tiled: " << describe(d);
+    }
+
+    // Forward shades the interpolated surface directly; the deferred modes read it back from the
+    // G-buffer: position in fp16 (1/64 unit at 16..32 units from the origin), albedo and specular
+    // in 8 bits (1/510 absolute), normal in fp16. Those move the result by a few percent at worst
+    // (dark albedo, grazing specular), so forward is held to a mean error of 1% of the mean
+    // value and 99.5% of pixels within 3% + 2e-3.
+    Diff const f = compare(lighting(settingsFor(LightingMode::Forward)), quad, [](double v) { return 0.03 * v + 2e-3; });
+    EXPECT_LT(f.meanAbs, 0.01 * q.meanValue) << "forward: " << describe(f);
+    EXPECT_LT(f.pixelsOver, kW * kH / 200) << "forward: " << describe(f);
+}
+
+TEST_F(LightModesGlTest, AllModesMatchQuadFromTheDefaultSceneCamera) {
+    // The scene's own camera stands among the lights (some volumes come within a near-plane
+    // reach of it), the case the inside-safe cull modes exist for. Bounds as above.
+    Camera const cam = scene_.camera.value_or(Camera{});
+    FloatImage const quad = lighting(settingsFor(LightingMode::Quad), cam, lights_);
+    for (CullMode cull : {CullMode::Front, CullMode::Flip, CullMode::Stencil}) {
+        Diff const d = compare(lighting(settingsFor(LightingMode::Volumes, cull), cam, lights_), quad,
+                               [](double v) { return 16 * kHalfUlp * v + 1e-4; });
+        EXPECT_EQ(d.pixelsOver, 0) << "volumes/" << enumName(kCullModeNames, cull) << ": " << describe(d);
+    }
+    if (caps().computeShaders) {
+        Diff const d = compare(lighting(settingsFor(LightingMode::Tiled), cam, lights_), quad,
+                               [](double v) { return 4 * kHalfUlp * v + 1e-5; });
+        EXPECT_EQ(d.pixelsOver, 0) << "tiled: " << describe(d);
+    }
+    Diff const f = compare(lighting(settingsFor(LightingMode::Forward), cam, lights_), quad,
+                           [](double v) { return 0.03 * v + 2e-3; });
+    EXPECT_LT(f.pixelsOver, kW * kH / 200) << "forward: " << describe(f);
+}
+
+TEST_F(LightModesGlTest, CameraInsideAVolume) {
+    Camera const cam = insideCamera();
+    FloatImage const quad = lighting(settingsFor(LightingMode::Quad), cam, lights_);
+    auto blendBound = [](double v) { return 16 * kHalfUlp * v + 1e-4; };
+    for (CullMode cull : {CullMode::Front, CullMode::Flip, CullMode::Stencil}) {
+        Diff const d = compare(lighting(settingsFor(LightingMode::Volumes, cull), cam, lights_), quad, blendBound);
+        EXPECT_EQ(d.pixelsOver, 0) << "volumes/" << enumName(kCullModeNames, cull) << ": " << describe(d);
+    }
+    if (caps().computeShaders) {
+        Diff const d = compare(lighting(settingsFor(LightingMode::Tiled), cam, lights_), quad,
+                               [](double v) { return 4 * kHalfUlp * v + 1e-5; });
+        EXPECT_EQ(d.pixelsOver, 0) << "tiled: " << describe(d);
+    }
+    Diff const f = compare(lighting(settingsFor(LightingMode::Forward), cam, lights_), quad,
+                           [](double v) { return 0.03 * v + 2e-3; });
+    EXPECT_LT(f.pixelsOver, kW * kH / 200) << "forward: " << describe(f);
+
+    // Culling back faces loses the light the camera is in: its front faces are behind the eye.
+    // Light 0 fills most of this view, so a large share of pixels must lose light.
+    Diff const back = compare(lighting(settingsFor(LightingMode::Volumes, CullMode::Back), cam, lights_), quad, blendBound);
+    EXPECT_GT(back.pixelsOver, kW * kH / 4) << "back-face culling should fail inside a volume: " << describe(back);
+}
+
+TEST_F(LightModesGlTest, CullNoneAppliesEachLightTwice) {
+    // Without culling or depth test both faces of each volume shade the pixels under it: with the
+    // camera outside every volume, none = ambient + 2 x (quad - ambient).
+    FloatImage const quad = lighting(settingsFor(LightingMode::Quad));
+    FloatImage const ambient = lighting(settingsFor(LightingMode::Quad), camera_, {});
+    FloatImage const none = lighting(settingsFor(LightingMode::Volumes, CullMode::None));
+    FloatImage doubled = quad;
+    for (std::size_t i = 0; i < doubled.pixels.size(); ++i) doubled.pixels[i] = 2 * quad.pixels[i] - ambient.pixels[i];
+    // 2x the value of the volumes bound above: every blend now happens twice.
+    Diff const d = compare(none, doubled, [](double v) { return 32 * kHalfUlp * v + 2e-4; });
+    EXPECT_EQ(d.pixelsOver, 0) << describe(d);
+    Diff const vsQuad = compare(none, quad, [](double v) { return 16 * kHalfUlp * v + 1e-4; });
+    EXPECT_GT(vsQuad.meanAbs, 0.3 * vsQuad.meanValue) << "cull none must differ from quad: " << describe(vsQuad);
+}
+
+TEST_F(LightModesGlTest, CoverageCountsAgreeBetweenModes) {
+    // y (lights that lit the pixel) is a property of the scene, not of the mode.
+    auto counts = [&](LightingMode m, CullMode c = CullMode::Front) {
+        PipelineSettings s = settingsFor(m, c);
+        s.view = DebugView::Heatmap;
+        renderer_->render({camera_, lights_, s, true});
+        return coverage();
+    };
+    auto const quad = counts(LightingMode::Quad);
+    auto const volumes = counts(LightingMode::Volumes);
+    auto const stencil = counts(LightingMode::Volumes, CullMode::Stencil);
+    int geometry = 0, litSomewhere = 0, volumeWaste = 0, stencilSaves = 0;
+    for (std::size_t i = 0; i < quad.size(); ++i) {
+        ASSERT_TRUE(quad[i].x == 0.0f || quad[i].x == 32.0f) << i;  // all lights, where there is geometry
+        geometry += quad[i].x > 0;
+        litSomewhere += quad[i].y > 0;
+        ASSERT_EQ(volumes[i].y, quad[i].y) << "pixel " << i;
+        ASSERT_EQ(stencil[i].y, quad[i].y) << "pixel " << i;
+        ASSERT_GE(volumes[i].x, volumes[i].y) << "pixel " << i;
+        // The stencil pass shades only pixels whose surface is inside the mesh: a subset of
+        // what front-face culling shades (which adds surfaces in front of the volume).
+        ASSERT_GE(stencil[i].x, stencil[i].y) << "pixel " << i;
+        ASSERT_LE(stencil[i].x, volumes[i].x) << "pixel " << i;
+        stencilSaves += stencil[i].x < volumes[i].x;
+        volumeWaste += volumes[i].x > volumes[i].y;
+    }
+    EXPECT_GT(geometry, kW * kH / 2);
+    EXPECT_GT(litSomewhere, geometry / 4);
+    EXPECT_GT(volumeWaste, 0);  // the heat map has executed-but-unlit pixels to show
+    EXPECT_GT(stencilSaves, 0);  // the stencil test does skip work somewhere
+    if (caps().computeShaders) {
+        auto const tiled = counts(LightingMode::Tiled);
+        for (std::size_t i = 0; i < quad.size(); ++i) {
+            ASSERT_EQ(tiled[i].y, quad[i].y) << "pixel " << i;
+            ASSERT_GE(tiled[i].x, tiled[i].y) << "pixel " << i;
+        }
+    }
+}
+
+TEST_F(LightModesGlTest, TileListsMatchTheCpuTileMath) {
+    if (!caps().computeShaders) GTEST_SKIP() << caps().tiledUnavailableReason();
+    PipelineSettings s = settingsFor(LightingMode::Tiled);
+    s.view = DebugView::TileLights;
+    renderer_->render({camera_, lights_, s, true});
+    auto const gpu = coverage();
+    FloatImage const depth = renderer_->readAttachment(Attachment::Depth);  // rows top to bottom
+    FloatImage const position = renderer_->readAttachment(Attachment::Position);
+    glm::mat4 const proj = camera_.projection(float(kW) / kH), view = camera_.view(), inv = glm::inverse(proj);
+    TileGrid const grid = tileGrid(kW, kH);
+    int tiles = 0, exact = 0, nonEmpty = 0;
+    for (int ty = 0; ty < grid.tilesY; ++ty) {
+        for (int tx = 0; tx < grid.tilesX; ++tx) {
+            PixelRect const rect = tilePixelRect(grid, kW, kH, tx, ty);
+            float minD = 1e30f, maxD = 0.0f;
+            for (int y = rect.y0; y < rect.y1; ++y)
+                for (int x = rect.x0; x < rect.x1; ++x) {
+                    int const row = kH - 1 - y;
+                    if (position.at(x, row, 3) == 0.0f) continue;
+                    float const d = viewDepthFromWindowDepth(depth.at(x, row, 0), camera_.nearPlane, camera_.farPlane);
+                    minD = std::min(minD, d);
+                    maxD = std::max(maxD, d);
+                }
+            int cpu = 0;
+            if (maxD > 0.0f) {
+                TileFrustum const fr = tileFrustum(inv, kW, kH, rect);
+                for (auto const& l : lights_) {
+                    float const r = lightRadius(l).radius;
+                    if (r > 0 && sphereTouchesTile(fr, minD, maxD, glm::vec3(view * glm::vec4(l.position, 1.0f)), r)) ++cpu;
+                }
+            }
+            int const g = int(gpu[std::size_t(rect.y0) * kW + rect.x0].x);
+            ++tiles;
+            exact += g == cpu;
+            nonEmpty += cpu > 0;
+            // Float differences between CPU and GPU may flip a light that grazes a plane.
+            EXPECT_LE(std::abs(g - cpu), 1) << "tile " << tx << "," << ty;
+        }
+    }
+    EXPECT_GE(exact, tiles * 98 / 100);
+    EXPECT_GT(nonEmpty, tiles / 2);
+}
+
+TEST_F(LightModesGlTest, TiledFallsBackToQuadWithoutComputeShaders) {
+    Renderer r(detectGlCaps(3, 3), kW, kH);  // pretend the context is OpenGL 3.3
+    ASSERT_FALSE(r.caps().computeShaders);
+    ASSERT_FALSE(r.setScene(scene_));
+    FrameStats const st = r.render({camera_, lights_, settingsFor(LightingMode::Tiled), true});
+    EXPECT_EQ(st.modeUsed, LightingMode::Quad);
+    EXPECT_NE(st.fallbackReason.find("OpenGL 4.3"), std::string::npos) << st.fallbackReason;
+    FloatImage const img = r.readAttachment(Attachment::Lighting);
+    FloatImage const quad = lighting(settingsFor(LightingMode::Quad));
+    Diff const d = compare(img, quad, [](double) { return 0.0; });
+    EXPECT_EQ(d.pixelsOver, 0) << describe(d);
+    // The other modes report no fallback.
+    FrameStats const ok = renderer_->render({camera_, lights_, settingsFor(LightingMode::Volumes), true});
+    EXPECT_EQ(ok.modeUsed, LightingMode::Volumes);
+    EXPECT_TRUE(ok.fallbackReason.empty());
+}
+
+TEST_F(LightModesGlTest, WireframesAreDrawnInTheLightColourAndHiddenByTheScene) {
+    auto r = makeRenderer(kW, kH);
+    ASSERT_FALSE(r->setScene(test::floorAndWallScene()));
+    Camera cam;
+    cam.position = {0.0f, 2.0f, 12.0f};
+    cam.lookAt({0.0f, 2.0f, 0.0f});
+    PointLight red;
+    red.color = {1.0f, 0.0f, 0.0f};  // Kl 0.7, Kq 1.8: radius 5.09, enclosing sphere 5.24
+    PipelineSettings s = settingsFor(LightingMode::Volumes);
+    auto frame = [&](glm::vec3 lightPos, bool wires) {
+        red.position = lightPos;
+        s.volumeWireframes = wires;
+        r->render({cam, std::span<PointLight const>(&red, 1), s, true});
+        return r->readAttachment(Attachment::Lighting);
+    };
+    // Pixels the wireframe changed, inside and outside the wall's screen rectangle.
+    auto changed = [&](glm::vec3 lightPos, int& onWall, int& elsewhere, int& redder) {
+        FloatImage const a = frame(lightPos, false), b = frame(lightPos, true);
+        glm::mat4 const vp = cam.projection(float(kW) / kH) * cam.view();
+        auto toPx = [&](glm::vec3 p) {
+            glm::vec4 c = vp * glm::vec4(p, 1.0f);
+            return glm::vec2((c.x / c.w * 0.5f + 0.5f) * kW, (0.5f - c.y / c.w * 0.5f) * kH);
+        };
+        glm::vec2 const lo = toPx({-3.0f, 4.0f, 0.0f}), hi = toPx({3.0f, 0.0f, 0.0f});  // wall corners
+        onWall = elsewhere = redder = 0;
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < kW; ++x) {
+                bool diff = false;
+                for (int c = 0; c < 3; ++c) diff = diff || a.at(x, y, c) != b.at(x, y, c);
+                if (!diff) continue;
+                bool const wall = x > lo.x + 1 && x < hi.x - 1 && y > lo.y + 1 && y < hi.y - 1;
+                (wall ? onWall : elsewhere)++;
+                // Lines replace the pixel with the light's colour times the wire intensity (2).
+                redder += b.at(x, y, 0) == 2.0f && b.at(x, y, 1) == 0.0f && b.at(x, y, 2) == 0.0f;
+            }
+    };
+    int onWall = 0, elsewhere = 0, redder = 0;
+    changed({0.0f, 2.0f, -6.0f}, onWall, elsewhere, redder);  // behind the wall: z from -11.2 to -0.8
+    EXPECT_EQ(onWall, 0) << "wires behind the wall must be hidden by it";
+    EXPECT_GT(elsewhere, 50) << "the parts of the sphere around the wall must show";
+    EXPECT_EQ(redder, onWall + elsewhere) << "wires are drawn in the light's colour (red)";
+    changed({0.0f, 2.0f, 3.0f}, onWall, elsewhere, redder);  // in front of the wall, camera outside
+    EXPECT_GT(onWall, 20) << "wires in front of the wall are visible over it";
+}
+

@@ -1,0 +1,146 @@
+// `gbuffer-lab render` end to end: the files it writes, their contents, and bad arguments.
+#include "image_io.h"
+#include "run_command.h"
+#include "test_paths.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace gbl;
+using gbl::test::runGbufferLab;
+namespace fs = std::filesystem;
+
+namespace {
+nlohmann::json readJson(fs::path const& p) {
+    std::ifstream f(p);
+    return nlohmann::json::parse(f);
+}
+}  // namespace
+
+TEST(RenderCommand, WritesEveryImageAndJsonFile) {
+    std::string const out = test::freshTempDir("render_all");
+    auto const r = runGbufferLab({"render", "--out", out, "--size", "160x90", "--lights", "8"});
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (char const* f : {"final.png", "lighting.exr", "position.exr", "normal.exr", "albedo.png", "specular.png",
+                          "depth.exr", "depth_linear.exr", "lights.json", "camera.json", "stats.json"})
+        EXPECT_TRUE(fs::exists(fs::path(out) / f)) << f;
+
+    auto const stats = readJson(fs::path(out) / "stats.json");
+    EXPECT_EQ(stats["width"], 160);
+    EXPECT_EQ(stats["height"], 90);
+    EXPECT_EQ(stats["lights"], 8);
+    EXPECT_EQ(stats["gl_errors"], 0);
+    EXPECT_FALSE(stats["gl_renderer"].get<std::string>().empty());
+    for (char const* pass : {"geometry", "lighting", "depth_copy", "forward", "display"}) {
+        ASSERT_TRUE(stats["gpu_ms"].contains(pass)) << pass;
+        // A sane time: the first-query quirk of some drivers once reported minutes here.
+        EXPECT_LT(stats["gpu_ms"][pass].get<double>(), 60000.0) << pass;
+    }
+    auto const lights = readJson(fs::path(out) / "lights.json");
+    ASSERT_EQ(lights.size(), 8u);
+    for (auto const& l : lights) {
+        EXPECT_GT(l["radius"].get<double>(), 0.0);
+        EXPECT_EQ(l["position"].size(), 3u);
+    }
+    auto const cam = readJson(fs::path(out) / "camera.json");
+    EXPECT_EQ(cam["view"].size(), 4u);
+    EXPECT_LT(cam["near"].get<double>(), cam["far"].get<double>());
+
+    // Float outputs are float, with the stored values: normals unit length where drawn,
+    // linear depth between near and far.
+    auto normal = readImage((fs::path(out) / "normal.exr").string());
+    auto depthLinear = readImage((fs::path(out) / "depth_linear.exr").string());
+    auto finalImg = readImage((fs::path(out) / "final.png").string());
+    ASSERT_TRUE(normal && depthLinear && finalImg);
+    EXPECT_EQ(normal->width, 160);
+    EXPECT_EQ(normal->channels, 4);
+    int drawn = 0;
+    double brightness = 0.0;
+    for (int y = 0; y < normal->height; ++y)
+        for (int x = 0; x < normal->width; ++x) {
+            if (normal->at(x, y, 3) == 0.0f) continue;
+            ++drawn;
+            float const len = std::sqrt(normal->at(x, y, 0) * normal->at(x, y, 0) + normal->at(x, y, 1) * normal->at(x, y, 1) +
+                                        normal->at(x, y, 2) * normal->at(x, y, 2));
+            // Half-float components: length within 2e-3 of 1.
+            EXPECT_NEAR(len, 1.0f, 2e-3f);
+            float const d = depthLinear->at(x, y, 0);
+            EXPECT_GE(d, cam["near"].get<float>() * 0.999f);
+            EXPECT_LE(d, cam["far"].get<float>() * 1.001f);
+            brightness += finalImg->at(x, y, 0) + finalImg->at(x, y, 1) + finalImg->at(x, y, 2);
+        }
+    EXPECT_GT(drawn, 160 * 90 / 2) << "the default camera looks into the courtyard";
+    EXPECT_GT(brightness / (3.0 * drawn), 0.05) << "the final frame must not be black";
+}
+
+TEST(RenderCommand, SameArgumentsGiveTheSameFrame) {
+    std::string const a = test::freshTempDir("render_det_a"), b = test::freshTempDir("render_det_b");
+    for (auto const& out : {a, b}) {
+        auto const r = runGbufferLab({"render", "--out", out, "--size", "96x64", "--time", "2.5"});
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+    }
+    auto ia = readImage(a + "/lighting.exr"), ib = readImage(b + "/lighting.exr");
+    ASSERT_TRUE(ia && ib);
+    EXPECT_EQ(ia->pixels, ib->pixels);
+}
+
+TEST(RenderCommand, TimeMovesTheLights) {
+    std::string const a = test::freshTempDir("render_t0"), b = test::freshTempDir("render_t5");
+    ASSERT_EQ(runGbufferLab({"render", "--out", a, "--size", "32x32", "--time", "0"}).exitCode, 0);
+    ASSERT_EQ(runGbufferLab({"render", "--out", b, "--size", "32x32", "--time", "5"}).exitCode, 0);
+    auto const la = readJson(fs::path(a) / "lights.json"), lb = readJson(fs::path(b) / "lights.json");
+    EXPECT_NE(la[0]["position"], lb[0]["position"]);
+}
+
+TEST(RenderCommand, BadArgumentsExitWithCodeTwoAndOneSentence) {
+    std::string const out = test::freshTempDir("render_bad");
+    struct Case {
+        std::vector<std::string> args;
+        std::string expect;  // part of the message
+    };
+    std::vector<Case> const cases{
+        {{"render", "--out", out, "--no-such-option"}, "no-such-option"},
+        {{"render", "--out", out, "--size", "0x0"}, "--size"},
+        {{"render", "--out", out, "--size", "wide"}, "--size"},
+        {{"render", "--out", out, "--size", "20000x20000"}, "16384"},
+        {{"render", "--out", out, "--lights", "-3"}, "--lights"},
+        {{"render", "--out", out, "--lights", "100000"}, "16384"},
+        {{"render", "--out", out, "--blit", "sideways"}, "--blit"},
+        {{"render", "--out", out, "--mode", "raytraced"}, "--mode"},
+        {{"render", "--out", out, "--view", "xray"}, "--view"},
+        {{"render", "--out", "/proc/gbuffer-lab-cannot-write-here"}, "/proc/gbuffer-lab-cannot-write-here"},
+        {{"render"}, "--out"},
+    };
+    for (auto const& c : cases) {
+        auto const r = runGbufferLab(c.args);
+        std::string joined;
+        for (auto const& a : c.args) joined += a + " ";
+        EXPECT_EQ(r.exitCode, 2) << joined << "\n" << r.output;
+        EXPECT_NE(r.output.find(c.expect), std::string::npos) << joined << "\n" << r.output;
+        // One sentence: a single line of output, no stack trace or usage dump.
+        EXPECT_LE(std::count(r.output.begin(), r.output.end(), '\n'), 1) << joined << "\n" << r.output;
+    }
+}
+
+TEST(RenderCommand, NormalMapsBendTheStoredNormals) {
+    // The default scene's brick and flagstone carry normal maps: the normal attachment must
+    // differ from the same frame rendered with normal mapping off (the geometry normals).
+    std::string const out = test::freshTempDir("render_normals");
+    ASSERT_EQ(runGbufferLab({"render", "--out", out, "--size", "128x72"}).exitCode, 0);
+    auto const withMaps = readImage(out + "/normal.exr");
+    ASSERT_TRUE(withMaps);
+    int bent = 0, axisAligned = 0, drawn = 0;
+    for (int y = 0; y < withMaps->height; ++y)
+        for (int x = 0; x < withMaps->width; ++x) {
+            if (withMaps->at(x, y, 3) == 0.0f) continue;
+            ++drawn;
+            float const ny = withMaps->at(x, y, 1);
+            // Floor pixels without a normal map would be exactly (0, 1, 0).
+            if (ny > 0.9f && ny < 0.9995f) ++bent;
+            if (ny == 1.0f) ++axisAligned;
+        }
+    EXPECT_GT(bent, drawn / 10) << "normal-mapped floor pixels lean away from +Y";
+}

@@ -1,0 +1,20 @@
+// Runs the built gbuffer-lab binary and captures its exit code and output.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace gbl::test {
+
+struct CommandResult {
+    int exitCode = -1;
+    std::string output;  // stdout and stderr together
+};
+
+// Runs binaryPath() with the arguments (each shell-quoted) and waits for it.
+CommandResult runGbufferLab(std::vector<std::string> const& args);
+
+// A fresh, empty directory under the system temp directory, unique to this test.
+std::string freshTempDir(std::string const& name);
+
+}  // namespace gbl::test

@@ -1,0 +1,39 @@
+// The attenuation plot shows the renderer's numbers: the applied curve ends at the radius, the
+// classic curve meets the threshold there.
+#include "attenuation_plot.h"
+#include "light_math.h"
+
+#include <gtest/gtest.h>
+
+using namespace gbl;
+using namespace gbl::ui;
+
+TEST(UiAttenuationPlot, CurvesMeetThresholdAndZeroAtTheRadius) {
+    PointLight light;
+    light.color = {1.0f, 0.5f, 0.25f};
+    light.intensity = 2.0f;
+    AttenuationCurve const c = sampleAttenuationCurve(light, 257);
+    float const r = lightRadius(light).radius;
+    EXPECT_FLOAT_EQ(c.radius, r);
+    EXPECT_FLOAT_EQ(c.maxDistance, r * 1.25f);
+    ASSERT_EQ(c.distance.size(), 257u);
+    float const imax = lightImax(light);
+    EXPECT_FLOAT_EQ(c.classic.front(), imax / light.kc);
+    // The classic curve at the radius is the threshold: the definition of the radius.
+    EXPECT_NEAR(imax * attenuation(light.kc, light.kl, light.kq, r), light.threshold, 1e-5f);
+    for (std::size_t i = 0; i < c.distance.size(); ++i) {
+        EXPECT_LE(c.applied[i], c.classic[i]);
+        if (c.distance[i] >= r) EXPECT_EQ(c.applied[i], 0.0f) << "d = " << c.distance[i];
+        if (i > 0) EXPECT_LE(c.applied[i], c.applied[i - 1]);  // never brighter further away
+    }
+    EXPECT_GT(c.applied[std::size_t(100)], 0.0f);  // 100/256 of 1.25 r is inside the radius
+}
+
+TEST(UiAttenuationPlot, LightBelowThresholdHasAnAxisButNoRadius) {
+    PointLight light;
+    light.intensity = 0.01f;  // Imax below threshold * Kc: never lights anything
+    AttenuationCurve const c = sampleAttenuationCurve(light, 16);
+    EXPECT_EQ(c.radius, 0.0f);
+    EXPECT_GT(c.maxDistance, 0.0f);
+    for (float v : c.applied) EXPECT_EQ(v, 0.0f);
+}

@@ -1,0 +1,48 @@
+// The tiled layout (ImGui without docking) fills the work area exactly, without overlap.
+#include "layout.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace gbl::ui;
+
+namespace {
+float overlap(TileRect const& a, TileRect const& b) {
+    float const w = std::min(a.pos.x + a.size.x, b.pos.x + b.size.x) - std::max(a.pos.x, b.pos.x);
+    float const h = std::min(a.pos.y + a.size.y, b.pos.y + b.size.y) - std::max(a.pos.y, b.pos.y);
+    return std::max(w, 0.0f) * std::max(h, 0.0f);
+}
+}  // namespace
+
+TEST(UiLayout, TilesCoverTheWorkAreaWithoutOverlap) {
+    for (glm::vec2 size : {glm::vec2(1600, 881), glm::vec2(1280, 701), glm::vec2(1023, 767), glm::vec2(640, 461)}) {
+        glm::vec2 const pos(0, 19);  // below the main menu bar
+        float area = 0.0f;
+        std::vector<TileRect> rects;
+        for (std::size_t i = 0; i < kEditorWindowNames.size(); ++i) {
+            TileRect const r = tiledRect(EditorWindow(i), pos, size);
+            EXPECT_GT(r.size.x, 0.0f) << kEditorWindowNames[i];
+            EXPECT_GT(r.size.y, 0.0f) << kEditorWindowNames[i];
+            EXPECT_GE(r.pos.x, pos.x);
+            EXPECT_GE(r.pos.y, pos.y);
+            EXPECT_LE(r.pos.x + r.size.x, pos.x + size.x);
+            EXPECT_LE(r.pos.y + r.size.y, pos.y + size.y);
+            area += r.size.x * r.size.y;
+            rects.push_back(r);
+        }
+        EXPECT_FLOAT_EQ(area, size.x * size.y) << size.x << "x" << size.y;
+        for (std::size_t i = 0; i < rects.size(); ++i)
+            for (std::size_t j = i + 1; j < rects.size(); ++j)
+                EXPECT_EQ(overlap(rects[i], rects[j]), 0.0f) << kEditorWindowNames[i] << " / " << kEditorWindowNames[j];
+    }
+}
+
+TEST(UiLayout, ViewportIsTheLargestWindow) {
+    glm::vec2 const size(1600, 880);
+    TileRect const v = tiledRect(EditorWindow::Viewport, {0, 0}, size);
+    for (std::size_t i = 1; i < kEditorWindowNames.size(); ++i) {
+        TileRect const r = tiledRect(EditorWindow(i), {0, 0}, size);
+        EXPECT_GT(v.size.x * v.size.y, r.size.x * r.size.y) << kEditorWindowNames[i];
+    }
+}

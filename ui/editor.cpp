@@ -1,0 +1,572 @@
+// The editor's window loop: GLFW window and GL context, ImGui set-up, the per-frame sequence
+// (render, viewers, inspector, UI, present), screenshots and UI test scripts.
+#include "editor.h"
+
+#include "default_scene.h"
+#include "editor_state.h"
+#include "gl_caps.h"
+#include "gltf_loader.h"
+#include "gpu_timer.h"
+#include "image_range.h"
+#include "imgui_compat.h"
+#include "light_math.h"
+#include "light_pick.h"
+#include "panel_pipeline.h"
+#include "pixel_breakdown.h"
+#include "renderer.h"
+#include "renderer_impl.h"
+#include "screenshot.h"
+#include "ui_script.h"
+#include "view_pass.h"
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+#include <imgui_internal.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <memory>
+#include <thread>
+
+namespace gbl {
+
+namespace {
+
+using ui::EditorState;
+using ui::EditorWindow;
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// --- window and context --------------------------------------------------------------------
+
+// GLFW reports errors through a C callback without a user pointer; the latest one is kept so
+// start-up failures can say why in one sentence.
+std::string gLastGlfwError;
+
+void onGlfwError(int, char const* description) { gLastGlfwError = description ? description : "unknown error"; }
+
+bool displayAvailable() {
+#if defined(__linux__) || defined(__FreeBSD__)
+    char const* x11 = std::getenv("DISPLAY");
+    char const* wayland = std::getenv("WAYLAND_DISPLAY");
+    return (x11 && *x11) || (wayland && *wayland);
+#else
+    return true;
+#endif
+}
+
+void printNoDisplay(std::string const& why) {
+    std::fprintf(stderr,
+                 "gbuffer-lab: no display (%s): the editor needs a window; use `gbuffer-lab render --out DIR` to "
+                 "render without one, or run the editor under xvfb-run.\n",
+                 why.c_str());
+}
+
+struct GlfwSession {
+    GlfwSession() = default;
+    GlfwSession(GlfwSession const&) = delete;
+    GlfwSession& operator=(GlfwSession const&) = delete;
+    ~GlfwSession() {
+        if (window) glfwDestroyWindow(window);
+        glfwTerminate();
+    }
+    GLFWwindow* window = nullptr;
+};
+
+// Parses "3.3" into (3, 3); empty means no limit.
+bool parseGlLimit(std::string const& text, int& major, int& minor) {
+    major = minor = 0;
+    if (text.empty()) return true;
+    return std::sscanf(text.c_str(), "%d.%d", &major, &minor) == 2 && major >= 3;
+}
+
+// --- GPU objects the editor owns (beside the renderer's) -----------------------------------
+
+struct EditorGpu {
+    std::array<ViewTarget, 5> viewTargets;  // one per G-buffer viewer
+    GpuTimer timer;                         // the editor's own GPU work, for the Stats window
+};
+
+// --- scene set-up --------------------------------------------------------------------------
+
+// Loads the scene named on the command line (or builds the default one) and uploads it.
+// Returns an error sentence on failure.
+std::optional<std::string> loadInitialScene(EditorOptions const& options, EditorState& state, Renderer& renderer) {
+    SceneData scene;
+    if (options.scenePath) {
+        GltfLoadResult result = loadGltf(*options.scenePath);
+        if (!result.scene) return result.error;
+        scene = std::move(*result.scene);
+        state.lights = scene.lights;
+        if (state.lights.empty()) {
+            // A model without lights would be black: light it with the default rig.
+            state.lights = makeDefaultLights(options.lightCount.value_or(32));
+            Bounds const b = scene.bounds();
+            float const s = std::max(b.radius(), 1e-3f) / 16.0f;  // default lights fit a ~33-unit courtyard
+            for (auto& l : state.lights) {
+                l.position = b.center() + (l.position - defaultSceneCenter()) * s;
+                // Scale the fall-off with the scene so each light still covers a similar share.
+                l.kl /= s;
+                l.kq /= s * s;
+            }
+        }
+        for (auto const& w : scene.warnings) ui::logMessage(state.log, *options.scenePath + ": " + w);
+    } else {
+        scene = makeDefaultScene({});
+        state.lights = makeDefaultLights(options.lightCount.value_or(32));
+    }
+    if (auto error = renderer.setScene(scene)) return *error;
+    state.sceneSource = scene.source;
+    state.sceneBounds = scene.bounds();
+    state.orbitCenter = options.scenePath ? state.sceneBounds.center() : defaultSceneCenter();
+    if (scene.camera) {
+        state.camera = *scene.camera;
+        ui::resetTargetAhead(state.rig, state.camera, glm::length(state.camera.position - state.sceneBounds.center()));
+    } else {
+        ui::frameBounds(state.rig, state.camera, state.sceneBounds);
+    }
+    ui::logMessage(state.log, "scene " + scene.source + ": " + std::to_string(scene.triangleCount()) + " triangles, " +
+                                  std::to_string(state.lights.size()) + " lights");
+    return std::nullopt;
+}
+
+// --- per-frame pieces ----------------------------------------------------------------------
+
+std::vector<PointLight> animatedLights(EditorState const& state) {
+    std::vector<PointLight> lights = state.lights;
+    if (state.animation.time != 0.0f) orbitLights(lights, state.orbitCenter, state.animation.time);
+    return lights;
+}
+
+// Selects the light whose cube is under the pixel. With a depth step the cubes are hidden by
+// walls, so only cubes in front of the surface at that pixel can be hit; without one they show
+// through walls and are pickable through them too, as drawn.
+void pickLightAt(EditorState& state, Renderer& renderer, std::span<PointLight const> drawn, glm::ivec2 pixel) {
+    glm::vec2 const size(float(renderer.width()), float(renderer.height()));
+    ui::Ray const ray = ui::cameraRay(state.camera, glm::vec2(pixel), size);
+    float maxDistance = std::numeric_limits<float>::max();
+    if (state.pipeline.depthCopy != DepthCopy::Off) {
+        PixelSample const s = renderer.samplePixel(pixel.x, pixel.y, state.camera);
+        // A little past the surface so a cube resting on it is still hit.
+        if (s.covered) maxDistance = glm::length(glm::vec3(s.position) - state.camera.position) * 1.001f + 1e-3f;
+    }
+    int const hit = ui::pickLight(ray, drawn, renderer.impl().lightCubeHalfSize(), maxDistance);
+    if (hit >= 0) {
+        state.lightsPanel.selected = hit;
+        state.lightsPanel.message.clear();
+    }
+}
+
+ui::CameraInput gatherCameraInput(GLFWwindow* window, EditorState const& state, float dt, bool keyboardFree) {
+    ui::CameraInput in;
+    in.orbitDrag = state.viewport.orbitDrag;
+    in.lookDrag = state.viewport.lookDrag;
+    in.panDrag = state.viewport.panDrag;
+    in.dolly = state.viewport.wheel;
+    in.dt = dt;
+    in.viewportHeight = float(std::max(state.viewport.size.y, 1));
+    // Keys fly the camera while the mouse is over the viewport or a drag started there, and
+    // never while a text field has the keyboard.
+    bool const flying = keyboardFree && (state.viewport.hovered || state.viewport.lookDrag != glm::vec2(0.0f));
+    if (flying) {
+        auto key = [&](int k) { return glfwGetKey(window, k) == GLFW_PRESS ? 1.0f : 0.0f; };
+        in.move = glm::vec3(key(GLFW_KEY_D) - key(GLFW_KEY_A), key(GLFW_KEY_E) - key(GLFW_KEY_Q),
+                            key(GLFW_KEY_W) - key(GLFW_KEY_S));
+        in.fast = key(GLFW_KEY_LEFT_SHIFT) > 0.0f || key(GLFW_KEY_RIGHT_SHIFT) > 0.0f;
+    }
+    return in;
+}
+
+// Key presses (edges, not held keys) the editor reacts to outside ImGui widgets.
+struct KeyEdges {
+    bool wasDown[GLFW_KEY_LAST + 1] = {};
+    bool pressed(GLFWwindow* window, int key) {
+        bool const down = glfwGetKey(window, key) == GLFW_PRESS;
+        bool const edge = down && !wasDown[key];
+        wasDown[key] = down;
+        return edge;
+    }
+};
+
+std::string windowProblem(EditorWindow which) {
+    ImGuiWindow const* w = ImGui::FindWindowByName(ui::windowName(which));
+    if (!w) return "does not exist";
+    if (!w->Active) return "was not drawn this frame";
+    if (w->Hidden) return "is hidden";
+    if (w->Collapsed) return "is collapsed";
+    if (w->Size.x < 40.0f || w->Size.y < 40.0f) return "is too small to use";
+    ImVec2 const display = ImGui::GetIO().DisplaySize;
+    if (w->Pos.x < -1.0f || w->Pos.y < -1.0f || w->Pos.x + w->Size.x > display.x + 1.0f ||
+        w->Pos.y + w->Size.y > display.y + 1.0f)
+        return "extends past the window";
+    return {};
+}
+
+void drawMainMenu(EditorState& state, GlCaps const& caps) {
+    if (!ImGui::BeginMainMenuBar()) return;
+    if (ImGui::BeginMenu("File")) {
+        if (ImGui::MenuItem("Quit", "Esc")) state.quitRequested = true;
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+        if (ImGui::MenuItem("Reset layout", nullptr, false, ui::kHasDocking)) state.layout.resetRequested = true;
+        if (!ui::kHasDocking && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip("this ImGui build has no docking: the windows are tiled and always in place");
+        if (ImGui::MenuItem("Frame scene", "F")) ui::frameBounds(state.rig, state.camera, state.sceneBounds);
+        ImGui::EndMenu();
+    }
+    // Status on the right: context and the newest log line.
+    std::string status = caps.renderer + " | GL " + std::to_string(caps.major) + "." + std::to_string(caps.minor);
+    if (!state.log.lines.empty()) status = state.log.lines.back() + "   " + status;
+    float const width = ImGui::CalcTextSize(status.c_str()).x;
+    float const x = ImGui::GetWindowWidth() - width - 12.0f;
+    if (x > ImGui::GetCursorPosX()) {
+        ImGui::SetCursorPosX(x);
+        ImGui::TextDisabled("%s", status.c_str());
+    }
+    ImGui::EndMainMenuBar();
+}
+
+// Refits viewer ranges that asked for it (button) or are on auto (about once a second).
+void fitViewerRanges(EditorState& state, Renderer& renderer, long frame) {
+    for (auto& v : state.gbuffer.viewers) {
+        // Auto-fit at the first frame with data, then about once a second (60 frames).
+        bool const autoDue = v.autoFit && (v.lastFitFrame < 0 || frame - v.lastFitFrame >= 60);
+        if (!v.fitRequested && !autoDue) continue;
+        v.fitRequested = false;
+        ui::ValueRange r;
+        switch (v.kind) {
+        case ui::ViewerKind::Position:
+            r = ui::fitRange(renderer.readAttachment(Attachment::Position), v.channelMask & 0x7, ui::RangeSkip::ZeroAlpha);
+            break;
+        case ui::ViewerKind::Depth:
+            r = ui::fitRange(renderer.readAttachment(Attachment::Depth), 0x1, ui::RangeSkip::FarDepth, v.linearDepth,
+                             state.camera.nearPlane, state.camera.farPlane);
+            break;
+        case ui::ViewerKind::Albedo:
+        case ui::ViewerKind::Specular: {
+            unsigned const mask = v.kind == ui::ViewerKind::Specular ? 0x8u : (v.channelMask & 0x7);
+            r = ui::fitRange(renderer.readAttachment(Attachment::AlbedoSpec), mask, ui::RangeSkip::None);
+            break;
+        }
+        case ui::ViewerKind::Normal: continue;  // normals are shown as directions, not remapped
+        }
+        if (r.samples > 0) {
+            v.rangeMin = r.min;
+            v.rangeMax = r.max;
+            v.lastFitFrame = frame;
+        }
+    }
+}
+
+void printMeasurement(ui::CostMeasurement const& m, glm::ivec2 window, glm::ivec2 viewport, int lights) {
+    double const n = std::max(m.frames, 1);
+    double const editor = (m.viewersMs + m.uiMs + m.imguiMs) / n;
+    double const frame = m.frameMs / n;
+    std::printf("editor cost over %d frames, window %dx%d, viewport %dx%d, %d lights:\n", m.frames, window.x, window.y,
+                viewport.x, viewport.y, lights);
+    std::printf("  renderer frame   %8.2f ms\n", m.renderMs / n);
+    std::printf("  viewers          %8.2f ms  (view passes, range fits, pixel sample)\n", m.viewersMs / n);
+    std::printf("  UI build         %8.2f ms  (all panels, CPU)\n", m.uiMs / n);
+    std::printf("  ImGui draw       %8.2f ms\n", m.imguiMs / n);
+    std::printf("  whole frame      %8.2f ms\n", frame);
+    std::printf("  editor share     %8.1f %%  (viewers + UI build + ImGui draw) / whole frame\n",
+                frame > 0.0 ? 100.0 * editor / frame : 0.0);
+    std::fflush(stdout);
+}
+
+}  // namespace
+
+int runEditor(EditorOptions const& options) {
+    if (!displayAvailable()) {
+        printNoDisplay("neither DISPLAY nor WAYLAND_DISPLAY is set");
+        return 1;
+    }
+    int limitMajor = 0, limitMinor = 0;
+    if (!parseGlLimit(options.glLimit, limitMajor, limitMinor)) {
+        std::fprintf(stderr, "gbuffer-lab: --gl \"%s\" is not a version like 3.3 (at least 3.3).\n", options.glLimit.c_str());
+        return 2;
+    }
+    if (options.width <= 0 || options.height <= 0) {
+        std::fprintf(stderr, "gbuffer-lab: the window size must be at least 1x1 (got %dx%d).\n", options.width, options.height);
+        return 2;
+    }
+    std::optional<ui::UiScript> script;
+    if (options.uiTestScript) {
+        std::string error;
+        script = ui::UiScript::load(*options.uiTestScript, &error);
+        if (!script) {
+            std::fprintf(stderr, "gbuffer-lab: %s\n", error.c_str());
+            return 2;
+        }
+    }
+
+    glfwSetErrorCallback(onGlfwError);
+    if (!glfwInit()) {
+        printNoDisplay(gLastGlfwError);
+        return 1;
+    }
+    GlfwSession glfw;
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    // macOS only hands out core contexts that are forward-compatible.
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+    glfw.window = glfwCreateWindow(options.width, options.height, "gbuffer-lab", nullptr, nullptr);
+    if (!glfw.window) {
+        std::fprintf(stderr, "gbuffer-lab: could not open an OpenGL 3.3 core window: %s\n", gLastGlfwError.c_str());
+        return 1;
+    }
+    GLFWwindow* window = glfw.window;
+    glfwMakeContextCurrent(window);
+    bool const unattended = options.screenshotPath || options.uiTestScript || options.frames > 0;
+    glfwSwapInterval(options.vsync && !unattended ? 1 : 0);
+
+    GlCaps const caps = detectGlCaps(limitMajor, limitMinor);
+    EditorState state;
+    std::unique_ptr<Renderer> renderer;
+    try {
+        renderer = std::make_unique<Renderer>(caps, 0, 0);
+    } catch (std::exception const& e) {
+        std::fprintf(stderr, "gbuffer-lab: the renderer could not start on %s (%s): %s\n", caps.renderer.c_str(),
+                     caps.version.c_str(), e.what());
+        return 1;
+    }
+    if (options.sessionPath)
+        ui::logMessage(state.log, "sessions are not loaded yet (issue 6); ignoring --session " + *options.sessionPath, true);
+    if (auto error = loadInitialScene(options, state, *renderer)) {
+        std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
+        return 2;
+    }
+    // Start with a light selected so its parameters and attenuation plot are on screen.
+    if (!state.lights.empty()) state.lightsPanel.selected = 0;
+    if (caps.computeShaders == false)
+        ui::logMessage(state.log, caps.tiledUnavailableReason());
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    // Unattended runs must not depend on, or leave behind, a layout file.
+    if (unattended) io.IniFilename = nullptr;
+    ui::enableConfigFlags(io);
+    ImGui::StyleColorsDark();
+    ui::loadFonts();
+    float xscale = 1.0f, yscale = 1.0f;
+    glfwGetWindowContentScale(window, &xscale, &yscale);
+    ui::applyContentScale(xscale);
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+
+    EditorGpu gpu;
+    KeyEdges keys;
+    int exitCode = 0;
+    long frame = 0;
+    auto lastFrame = Clock::now();
+    auto lastReload = Clock::now();
+    int const screenshotFrames = options.frames > 0 ? options.frames : 5;
+
+    ui::ScriptHost host{state, *renderer, {}, {}, windowProblem, {}, {}, {}};
+    host.readWindow = [window] {
+        int w = 0, h = 0;
+        glfwGetFramebufferSize(window, &w, &h);
+        return ui::readWindow(w, h);
+    };
+    host.resizeWindow = [window](int w, int h) { glfwSetWindowSize(window, std::max(w, 1), std::max(h, 1)); };
+    std::vector<PointLight> drawn;
+    host.clickViewport = [&](glm::ivec2 px) { pickLightAt(state, *renderer, drawn, px); };
+    host.frameScene = [&] { ui::frameBounds(state.rig, state.camera, state.sceneBounds); };
+    if (state.sceneSource == "default") host.defaultLights = [](int n) { return makeDefaultLights(n); };
+
+    while (!glfwWindowShouldClose(window) && !state.quitRequested) {
+        auto const frameStart = Clock::now();
+        float const dt = float(std::chrono::duration<double>(frameStart - lastFrame).count());
+        lastFrame = frameStart;
+        glfwPollEvents();
+        int fbWidth = 0, fbHeight = 0;
+        glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
+        if ((fbWidth == 0 || fbHeight == 0) && !unattended) {
+            // Minimised: nothing to draw into; wait instead of spinning.
+            glfwWaitEventsTimeout(0.1);
+            continue;
+        }
+        ++frame;
+        bool const measuring = state.measurement.remaining > 0;
+        auto finishIfMeasuring = [&] {
+            if (measuring) glFinish();
+        };
+
+        // --- the deferred frame, at the size the viewport had last frame --------------------
+        if (state.viewport.size != glm::ivec2(renderer->width(), renderer->height()))
+            renderer->resizeTargets(state.viewport.size.x, state.viewport.size.y);
+        if (state.animation.enabled) state.animation.time += dt * state.animation.speed;
+        drawn = animatedLights(state);
+        finishIfMeasuring();
+        auto t0 = Clock::now();
+        FrameStats frameStats;
+        if (renderer->width() > 0 && renderer->height() > 0)
+            frameStats = renderer->render(FrameInput{state.camera, drawn, state.pipeline});
+        finishIfMeasuring();
+        double const renderMs = msSince(t0);
+
+        // --- viewers, range fits and the pixel inspector's sample ---------------------------
+        t0 = Clock::now();
+        gpu.timer.begin("viewers");
+        std::array<unsigned, 5> viewerTextures{};
+        if (renderer->width() > 0 && renderer->height() > 0) {
+            for (std::size_t i = 0; i < gpu.viewTargets.size(); ++i) {
+                ui::ViewerState const& v = state.gbuffer.viewers[i];
+                Camera clip = state.camera;
+                if (v.kind == ui::ViewerKind::Depth && !v.cameraClipPlanes) {
+                    clip.nearPlane = v.nearPlane;
+                    clip.farPlane = v.farPlane;
+                }
+                renderer->drawView(ui::viewerParams(v), clip, gpu.viewTargets[i]);
+                // Exact texels when zoomed in: the viewers are for reading values, not pictures.
+                gpu.viewTargets[i].texture.setFilter(GL_NEAREST, GL_NEAREST);
+                viewerTextures[i] = gpu.viewTargets[i].texture.id();
+            }
+            fitViewerRanges(state, *renderer, frame);
+        }
+        gpu.timer.end();
+        ui::PixelInspectorState& inspector = state.inspector;
+        if (inspector.pixel && inspector.pixel->x < renderer->width() && inspector.pixel->y < renderer->height()) {
+            inspector.sample = renderer->samplePixel(inspector.pixel->x, inspector.pixel->y, state.camera);
+            inspector.breakdown = ui::breakDownPixel(*inspector.sample, drawn, state.camera, state.pipeline);
+            inspector.breakdownNote = inspector.breakdown ? "" : "background: no surface, no lights";
+        } else {
+            inspector.sample.reset();
+            inspector.breakdown.reset();
+            inspector.breakdownNote = "no pixel";
+        }
+        finishIfMeasuring();
+        double const viewersMs = msSince(t0);
+
+        // --- hot shader reload, about once a second ------------------------------------------
+        if (std::chrono::duration<double>(Clock::now() - lastReload).count() >= 1.0) {
+            lastReload = Clock::now();
+            for (auto const& message : renderer->reloadChangedShaders()) {
+                bool const failed = message.find("fail") != std::string::npos || message.find("error") != std::string::npos;
+                ui::logMessage(state.log, message, failed);
+            }
+        }
+
+        // --- the UI ----------------------------------------------------------------------------
+        t0 = Clock::now();
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        drawMainMenu(state, caps);
+        ui::beginLayout(state.layout);
+        ui::drawLightsPanel(state.lightsPanel, state.lights, state.animation, state.sceneBounds);
+        ui::drawPipelinePanel(state.pipeline, caps);
+        ui::drawViewportPanel(state.viewport, state.pipeline, renderer->texture(Attachment::Final),
+                              {renderer->width(), renderer->height()});
+        ui::drawGBufferPanel(state.gbuffer, viewerTextures, {renderer->width(), renderer->height()});
+        ui::drawPixelInspectorPanel(state.inspector);
+        ui::drawStatsPanel(state.stats, caps, int(state.lights.size()));
+        ui::drawLogPanel(state.log);
+
+        // What the panels asked for.
+        bool const keyboardFree = !io.WantTextInput;
+        if (state.viewport.clickPixel) pickLightAt(state, *renderer, drawn, *state.viewport.clickPixel);
+        if (state.gbuffer.showInViewport) state.pipeline.view = *state.gbuffer.showInViewport;
+        if (inspector.selectLight >= 0) state.lightsPanel.selected = inspector.selectLight;
+        if (!inspector.locked || !inspector.pixel) {
+            if (state.viewport.hoverPixel) {
+                inspector.pixel = state.viewport.hoverPixel;
+                inspector.source = "viewport";
+            } else if (state.gbuffer.hoverPixel) {
+                inspector.pixel = state.gbuffer.hoverPixel;
+                inspector.source = "G-buffer viewer";
+            }
+        }
+        if (keyboardFree && keys.pressed(window, GLFW_KEY_L)) inspector.locked = !inspector.locked;
+        bool const frameKey = keyboardFree && keys.pressed(window, GLFW_KEY_F);
+        if (state.viewport.frameRequested || frameKey) ui::frameBounds(state.rig, state.camera, state.sceneBounds);
+        if (keyboardFree && keys.pressed(window, GLFW_KEY_ESCAPE) && !unattended) state.quitRequested = true;
+        ui::applyCameraInput(state.rig, state.camera, gatherCameraInput(window, state, dt, keyboardFree));
+        ImGui::Render();
+        double const uiMs = msSince(t0);
+
+        // --- present ---------------------------------------------------------------------------
+        t0 = Clock::now();
+        gpu.timer.begin("imgui");
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, fbWidth, fbHeight);
+        glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        gpu.timer.end();
+        finishIfMeasuring();
+        double const imguiMs = msSince(t0);
+
+        ui::EditorCost cost;
+        cost.uiCpuMs = uiMs;
+        for (auto const& [name, ms] : gpu.timer.finishFrame(false)) {
+            if (name == "viewers") cost.viewersGpuMs = ms;
+            if (name == "imgui") cost.imguiGpuMs = ms;
+        }
+
+        if (script) {
+            script->step(host);
+            if (script->finished()) state.quitRequested = true;
+        }
+        if (options.screenshotPath && frame == screenshotFrames) {
+            if (auto error = ui::writePng(host.readWindow(), *options.screenshotPath)) {
+                std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
+                exitCode = 2;
+            }
+            state.quitRequested = true;
+        }
+        if (!options.screenshotPath && !script && options.frames > 0 && frame >= options.frames) state.quitRequested = true;
+
+        glfwSwapBuffers(window);
+        cost.frameCpuMs = msSince(frameStart);
+        ui::recordFrame(state.stats, frameStats, cost);
+        if (measuring) {
+            ui::CostMeasurement& m = state.measurement;
+            ++m.frames;
+            m.renderMs += renderMs;
+            m.viewersMs += viewersMs;
+            m.uiMs += uiMs;
+            m.imguiMs += imguiMs;
+            m.frameMs += cost.frameCpuMs;
+            if (--m.remaining == 0)
+                printMeasurement(m, {fbWidth, fbHeight}, {renderer->width(), renderer->height()}, int(drawn.size()));
+        }
+    }
+
+    if (script) {
+        if (!script->finished()) {
+            std::printf("ui-test FAIL: the window closed before the script ended\n");
+            exitCode = 1;
+        } else if (script->failures() > 0) {
+            std::printf("ui-test: %d check(s) failed\n", script->failures());
+            exitCode = 1;
+        } else {
+            std::printf("ui-test: all checks passed\n");
+        }
+    }
+
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    // The renderer's GL objects go while the context is still current.
+    gpu = EditorGpu{};
+    renderer.reset();
+    return exitCode;
+}
+
+}  // namespace gbl

@@ -1,2 +1,0 @@
-// Temporary translation unit until the editor lands.
-#include "imgui_compat.h"

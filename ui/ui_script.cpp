@@ -1,0 +1,242 @@
+// UI test script interpreter.
+#include "ui_script.h"
+
+#include "light_list.h"
+#include "light_math.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace gbl::ui {
+
+namespace {
+
+struct Arity {
+    char const* name;
+    int args;  // -1: one or more words (free text)
+};
+constexpr Arity kCommands[] = {
+    {"frames", 1}, {"set", 2}, {"light", 3}, {"select", 1}, {"click-light", 1}, {"frame-scene", 0},
+    {"resize", 2}, {"capture", 1}, {"screenshot", 1}, {"measure", 1}, {"expect-windows", 0},
+    {"expect-different", 3}, {"expect-same", 3}, {"expect-message", -1}, {"expect-no-message", 0},
+    {"expect-selected", 1}, {"expect-lights", 1}, {"expect-no-gl-errors", 0}, {"expect-mode-used", 1}, {"inspect", 2}, {"expect-breakdown-sums", 1}, {"expect-smaller", 2}, {"expect-log", -1}, {"print", -1},
+};
+
+std::string rest(std::vector<std::string> const& words, std::size_t from) {
+    std::string s;
+    for (std::size_t i = from; i < words.size(); ++i) s += (i > from ? " " : "") + words[i];
+    return s;
+}
+
+float number(std::string const& s) {
+    // strtof accepts "nan" and "inf": scripts use them to test that bad input is refused.
+    return std::strtof(s.c_str(), nullptr);
+}
+
+double meanDifference(FloatImage const& a, FloatImage const& b) {
+    if (a.width != b.width || a.height != b.height || a.channels != b.channels || a.pixels.empty()) return 1.0;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) sum += std::abs(double(a.pixels[i]) - double(b.pixels[i]));
+    return sum / double(a.pixels.size());
+}
+
+template <std::size_t N>
+bool setEnum(auto& field, std::array<std::string_view, N> const& names, std::string const& value) {
+    using Enum = std::remove_reference_t<decltype(field)>;
+    auto const e = enumFromName<Enum>(names, value);
+    if (!e) return false;
+    field = *e;
+    return true;
+}
+
+}  // namespace
+
+std::optional<UiScript> UiScript::load(std::string const& path, std::string* error) {
+    std::ifstream in(path);
+    if (!in) {
+        *error = "cannot read UI test script " + path;
+        return std::nullopt;
+    }
+    UiScript script;
+    script.path_ = path;
+    std::string line;
+    int number = 0;
+    while (std::getline(in, line)) {
+        ++number;
+        if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+        std::istringstream words(line);
+        Command c{number, {}};
+        for (std::string w; words >> w;) c.words.push_back(w);
+        if (c.words.empty()) continue;
+        Arity const* arity = nullptr;
+        for (auto const& a : kCommands)
+            if (c.words[0] == a.name) arity = &a;
+        int const given = int(c.words.size()) - 1;
+        if (!arity || (arity->args >= 0 && given != arity->args) || (arity->args < 0 && given < 1)) {
+            *error = path + ":" + std::to_string(number) + ": " +
+                     (arity ? "wrong number of arguments for " + c.words[0] : "unknown command " + c.words[0]);
+            return std::nullopt;
+        }
+        script.commands_.push_back(std::move(c));
+    }
+    return script;
+}
+
+void UiScript::check(bool ok, Command const& c, std::string const& detail) {
+    std::printf("ui-test %s %s:%d %s%s%s\n", ok ? "PASS" : "FAIL", path_.c_str(), c.line, rest(c.words, 0).c_str(),
+                detail.empty() ? "" : ": ", detail.c_str());
+    std::fflush(stdout);
+    if (!ok) ++failures_;
+}
+
+void UiScript::step(ScriptHost& host) {
+    if (wait_ > 0) {
+        --wait_;
+        return;
+    }
+    while (next_ < commands_.size() && wait_ == 0) run(commands_[next_++], host);
+}
+
+void UiScript::run(Command const& c, ScriptHost& host) {
+    auto const& w = c.words;
+    EditorState& s = host.state;
+    std::string const& cmd = w[0];
+
+    if (cmd == "frames") {
+        wait_ = std::max(std::atoi(w[1].c_str()), 1);
+    } else if (cmd == "set") {
+        std::string const& key = w[1];
+        std::string const& value = w[2];
+        bool ok = true;
+        if (key == "mode") ok = setEnum(s.pipeline.mode, kLightingModeNames, value);
+        else if (key == "cull") ok = setEnum(s.pipeline.cull, kCullModeNames, value);
+        else if (key == "blit") ok = setEnum(s.pipeline.depthCopy, kDepthCopyNames, value);
+        else if (key == "view") ok = setEnum(s.pipeline.view, kDebugViewNames, value);
+        else if (key == "tonemap") ok = setEnum(s.pipeline.tonemap, kTonemapNames, value);
+        else if (key == "exposure") s.pipeline.exposure = number(value);
+        else if (key == "cubes") s.pipeline.lightCubes = value != "0";
+        else if (key == "wireframes") s.pipeline.volumeWireframes = value != "0";
+        else if (key == "animate") s.animation.enabled = value != "0";
+        else if (key == "time") s.animation.time = number(value);
+        else if (key == "lights") {
+            ok = bool(host.defaultLights);
+            if (ok) s.lights = host.defaultLights(std::atoi(value.c_str()));
+        } else ok = false;
+        if (!ok) check(false, c, "unknown setting or value");
+    } else if (cmd == "light") {
+        int const i = std::atoi(w[1].c_str());
+        if (i < 0 || i >= int(s.lights.size())) return check(false, c, "no such light");
+        PointLight edited = s.lights[std::size_t(i)];
+        float const v = number(w[3]);
+        std::string const& f = w[2];
+        if (f == "x") edited.position.x = v;
+        else if (f == "y") edited.position.y = v;
+        else if (f == "z") edited.position.z = v;
+        else if (f == "r") edited.color.r = v;
+        else if (f == "g") edited.color.g = v;
+        else if (f == "b") edited.color.b = v;
+        else if (f == "intensity") edited.intensity = v;
+        else if (f == "kc") edited.kc = v;
+        else if (f == "kl") edited.kl = v;
+        else if (f == "kq") edited.kq = v;
+        else if (f == "threshold") edited.threshold = v;
+        else return check(false, c, "unknown light field");
+        auto const error = applyLightEdit(s.lights, i, edited);
+        s.lightsPanel.message = error ? *error : std::string();
+    } else if (cmd == "select") {
+        s.lightsPanel.selected = std::atoi(w[1].c_str());
+    } else if (cmd == "click-light") {
+        int const i = std::atoi(w[1].c_str());
+        if (i < 0 || i >= int(s.lights.size())) return check(false, c, "no such light");
+        glm::ivec2 const size(host.renderer.width(), host.renderer.height());
+        if (size.x <= 0 || size.y <= 0) return check(false, c, "the viewport has no pixels");
+        // The pixel whose centre sees the light's centre: project it as the renderer does.
+        glm::vec4 const clip = s.camera.projection(float(size.x) / float(size.y)) * s.camera.view() *
+                               glm::vec4(s.lights[std::size_t(i)].position, 1.0f);
+        if (clip.w <= 0.0f) return check(false, c, "the light is behind the camera");
+        glm::vec2 const ndc = glm::vec2(clip) / clip.w;
+        glm::ivec2 const px(int((ndc.x * 0.5f + 0.5f) * float(size.x)), int((0.5f - ndc.y * 0.5f) * float(size.y)));
+        host.clickViewport(px);
+    } else if (cmd == "frame-scene") {
+        host.frameScene();
+    } else if (cmd == "resize") {
+        host.resizeWindow(std::atoi(w[1].c_str()), std::atoi(w[2].c_str()));
+    } else if (cmd == "capture") {
+        captures_[w[1]] = host.renderer.readAttachment(Attachment::Final);
+        if (captures_[w[1]].pixels.empty()) check(false, c, "the final image is empty (0x0 viewport?)");
+    } else if (cmd == "screenshot") {
+        auto const error = writePng(host.readWindow(), w[1]);
+        check(!error, c, error ? *error : std::string());
+    } else if (cmd == "measure") {
+        s.measurement = CostMeasurement{};
+        s.measurement.remaining = std::max(std::atoi(w[1].c_str()), 1);
+        wait_ = s.measurement.remaining + 1;
+    } else if (cmd == "expect-windows") {
+        for (std::size_t i = 0; i < kEditorWindowNames.size(); ++i) {
+            std::string const problem = host.windowProblem(EditorWindow(i));
+            check(problem.empty(), c, std::string(kEditorWindowNames[i]) + (problem.empty() ? " visible" : ": " + problem));
+        }
+    } else if (cmd == "expect-different" || cmd == "expect-same") {
+        auto a = captures_.find(w[1]), b = captures_.find(w[2]);
+        if (a == captures_.end() || b == captures_.end()) return check(false, c, "capture missing");
+        double const d = meanDifference(a->second, b->second);
+        double const limit = number(w[3]);
+        bool const ok = cmd == "expect-same" ? d <= limit : d >= limit;
+        char detail[96];
+        std::snprintf(detail, sizeof detail, "mean difference %.6f", d);
+        check(ok, c, detail);
+    } else if (cmd == "expect-message") {
+        std::string const text = rest(w, 1);
+        check(s.lightsPanel.message.find(text) != std::string::npos, c, "message is \"" + s.lightsPanel.message + "\"");
+    } else if (cmd == "expect-no-message") {
+        check(s.lightsPanel.message.empty(), c, s.lightsPanel.message);
+    } else if (cmd == "expect-selected") {
+        check(s.lightsPanel.selected == std::atoi(w[1].c_str()), c,
+              "selected is " + std::to_string(s.lightsPanel.selected));
+    } else if (cmd == "expect-lights") {
+        check(int(s.lights.size()) == std::atoi(w[1].c_str()), c, "there are " + std::to_string(s.lights.size()));
+    } else if (cmd == "expect-no-gl-errors") {
+        auto const n = host.renderer.glErrorCount();
+        check(n == 0, c, std::to_string(n) + " GL errors");
+    } else if (cmd == "inspect") {
+        s.inspector.pixel = glm::ivec2(std::atoi(w[1].c_str()), std::atoi(w[2].c_str()));
+        s.inspector.locked = true;
+        s.inspector.source = "script";
+    } else if (cmd == "expect-breakdown-sums") {
+        auto const& in = s.inspector;
+        if (!in.sample || !in.breakdown) return check(false, c, "no inspected pixel with geometry");
+        glm::vec3 const stored(in.sample->lighting);
+        float const tol = number(w[1]);
+        bool ok = true;
+        for (int k = 0; k < 3; ++k)
+            ok &= std::abs(in.breakdown->total[k] - stored[k]) <= tol + 0.01f * std::abs(stored[k]);
+        char detail[160];
+        std::snprintf(detail, sizeof detail, "sum (%.5f %.5f %.5f) stored (%.5f %.5f %.5f), %d lights reach it",
+                      in.breakdown->total.r, in.breakdown->total.g, in.breakdown->total.b, stored.r, stored.g, stored.b,
+                      int(in.breakdown->lights.size()));
+        check(ok, c, detail);
+    } else if (cmd == "expect-mode-used") {
+        FrameStats const& f = s.stats.last;
+        std::string const used(enumName(kLightingModeNames, f.modeUsed));
+        check(used == w[1], c, "ran " + used + (f.fallbackReason.empty() ? "" : " (" + f.fallbackReason + ")"));
+    } else if (cmd == "expect-smaller") {
+        auto a = captures_.find(w[1]), b = captures_.find(w[2]);
+        if (a == captures_.end() || b == captures_.end()) return check(false, c, "capture missing");
+        check(a->second.width < b->second.width && a->second.height < b->second.height, c,
+              std::to_string(a->second.width) + "x" + std::to_string(a->second.height) + " vs " +
+                  std::to_string(b->second.width) + "x" + std::to_string(b->second.height));
+    } else if (cmd == "expect-log") {
+        std::string const text = rest(w, 1);
+        bool found = false;
+        for (auto const& line : s.log.lines) found |= line.find(text) != std::string::npos;
+        check(found, c, found ? std::string() : "no log line contains it");
+    } else if (cmd == "print") {
+        std::printf("ui-test: %s\n", rest(w, 1).c_str());
+    }
+}
+
+}  // namespace gbl::ui

@@ -1,0 +1,84 @@
+// UI test scripts: drive the real editor through the state its panels write, and check the
+// result. One command per line, '#' starts a comment:
+//
+//   frames N                    run N frames before the next command
+//   set KEY VALUE               mode|cull|blit|view|tonemap NAME, exposure F, cubes|wireframes|animate 0|1,
+//                               time SECONDS (light animation), lights N (default scene lights)
+//   light I FIELD VALUE         edit light I through the validated path the Lights panel uses;
+//                               FIELD = x y z r g b intensity kc kl kq threshold
+//   select I                    select light I (as a click in the list does)
+//   click-light I               click the pixel where light I's cube is drawn (ray pick)
+//   frame-scene                 the F key
+//   inspect X Y                 lock the pixel inspector on viewport pixel (X, Y)
+//   expect-breakdown-sums TOL   the inspector's per-light sum equals the stored lit value
+//                               within TOL + 1% (16-bit float storage, CPU vs GPU float math)
+//   resize W H                  resize the window (0 0 minimises the viewport)
+//   capture NAME                keep the renderer's final image under NAME
+//   screenshot FILE             write the whole window as PNG
+//   measure N                   measure the editor's own cost over N frames and print it
+//   expect-windows              every editor window exists, is visible and has a size
+//   expect-different A B MIN    mean |A - B| per channel (0..1) at least MIN
+//   expect-same A B MAX         mean |A - B| per channel at most MAX
+//   expect-message TEXT         the Lights panel's refusal message contains TEXT
+//   expect-no-message           ... and is empty
+//   expect-selected I           light I is selected
+//   expect-lights N             the list holds N lights
+//   expect-no-gl-errors         the renderer counted no GL errors so far
+//   expect-mode-used NAME       the last frame ran this lighting mode (no silent fallback)
+//   expect-smaller A B          capture A is narrower and lower than capture B
+//   expect-log TEXT             some log line contains TEXT
+//   print TEXT
+#pragma once
+
+#include "editor_state.h"
+#include "renderer.h"
+#include "screenshot.h"
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gbl::ui {
+
+// What the script needs from the running editor beyond its state.
+struct ScriptHost {
+    EditorState& state;
+    Renderer& renderer;
+    std::function<RgbImage()> readWindow;
+    std::function<void(int, int)> resizeWindow;
+    std::function<std::string(EditorWindow)> windowProblem;  // empty when the window is visible
+    std::function<void(glm::ivec2)> clickViewport;           // as a click on that viewport pixel
+    std::function<void()> frameScene;
+    std::function<std::vector<PointLight>(int)> defaultLights;  // empty function: not the default scene
+};
+
+class UiScript {
+public:
+    // Reads and checks the whole script up front, so a typo fails before the editor runs.
+    static std::optional<UiScript> load(std::string const& path, std::string* error);
+
+    // Runs commands until one waits for frames or the script ends. Call once per frame, after
+    // the UI was drawn and before the buffers are swapped (captures read the back buffer).
+    void step(ScriptHost& host);
+    bool finished() const { return next_ >= commands_.size() && wait_ == 0; }
+    int failures() const { return failures_; }
+
+private:
+    struct Command {
+        int line = 0;
+        std::vector<std::string> words;
+    };
+    void run(Command const& c, ScriptHost& host);
+    void check(bool ok, Command const& c, std::string const& detail);
+
+    std::string path_;
+    std::vector<Command> commands_;
+    std::size_t next_ = 0;
+    int wait_ = 0;
+    int failures_ = 0;
+    std::map<std::string, FloatImage> captures_;
+};
+
+}  // namespace gbl::ui
