@@ -10,8 +10,7 @@ std::vector<glm::vec4> packLights(std::span<PointLight const> lights) {
     texels.reserve(lights.size() * kTexelsPerLight);
     for (auto const& l : lights) {
         LightRadius const r = lightRadius(l);
-        float const imax = lightImax(l);
-        float const cutoff = (r.kind == RadiusKind::Zero || imax <= 0.0f) ? 0.0f : l.threshold / imax;
+        float const cutoff = r.kind == RadiusKind::Zero ? 0.0f : attenuationCutoff(l, r.radius);
         texels.emplace_back(l.position, r.radius);
         texels.emplace_back(l.color * l.intensity, cutoff);
         texels.emplace_back(l.kc, l.kl, l.kq, 0.0f);

@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace gbl {
@@ -35,10 +36,17 @@ std::vector<glm::vec3> cubeTriangles() {
     return out;
 }
 
+// Where hot reload watches for edited shaders: $GBL_SHADER_DIR when set (tests break and fix a
+// copy of shaders/ there), else the source tree's shaders/ this binary was built from.
+std::string shaderReloadDir() {
+    char const* env = std::getenv("GBL_SHADER_DIR");
+    return env && *env ? env : shaderSourceDir();
+}
+
 }  // namespace
 
 RendererImpl::RendererImpl(GlCaps capsIn, int width, int height)
-    : caps(std::move(capsIn)), shaders(shaderSourceDir()) {
+    : caps(std::move(capsIn)), shaders(shaderReloadDir()) {
     installGlDebug(caps);
     for (auto& desc : corePrograms()) {
         std::string log;

@@ -3,6 +3,7 @@
 #version 330 core
 #include "material.glsl"
 #include "lighting.glsl"
+#include "light_fetch.glsl"
 
 in vec3 vWorldPos;
 in vec3 vNormal;
@@ -11,16 +12,8 @@ in vec4 vTangent;
 
 uniform vec3 uAmbient;
 uniform int uLightCount;
-uniform samplerBuffer uLights;  // same layout as lighting_quad.frag
 
 out vec4 fragColor;
-
-Light fetchLight(int i) {
-    vec4 a = texelFetch(uLights, i * 4 + 0);
-    vec4 b = texelFetch(uLights, i * 4 + 1);
-    vec4 c = texelFetch(uLights, i * 4 + 2);
-    return Light(a.xyz, b.xyz, c.xyz, a.w, b.w);
-}
 
 void main() {
     vec4 base = materialBaseColor(vUV);
@@ -28,6 +21,10 @@ void main() {
     vec3 n = materialNormal(vNormal, vTangent, vUV, gl_FrontFacing);
     float spec = materialSpecular(vUV);
     vec3 color = uAmbient * base.rgb;
-    for (int i = 0; i < uLightCount; ++i) color += shadeLight(fetchLight(i), vWorldPos, n, base.rgb, spec);
+    for (int i = 0; i < uLightCount; ++i) {
+        vec4 pr = texelFetch(uLights, i * 4);
+        if (distance(pr.xyz, vWorldPos) >= pr.w) continue;
+        color += shadeLight(fetchLight(i), vWorldPos, n, base.rgb, spec);
+    }
     fragColor = vec4(color, base.a);
 }

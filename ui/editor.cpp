@@ -95,8 +95,14 @@ bool parseGlLimit(std::string const& text, int& major, int& minor) {
 
 struct EditorGpu {
     std::array<ViewTarget, 5> viewTargets;  // one per G-buffer viewer
+    std::array<std::optional<ViewParams>, 5> drawnParams;  // what each target last showed
     GpuTimer timer;                         // the editor's own GPU work, for the Stats window
 };
+
+bool sameView(ViewParams const& a, ViewParams const& b) {
+    return a.view == b.view && a.channelMask == b.channelMask && a.rangeMin == b.rangeMin && a.rangeMax == b.rangeMax &&
+           a.normalDisplay == b.normalDisplay && a.heatMax == b.heatMax;
+}
 
 // --- scene set-up --------------------------------------------------------------------------
 
@@ -216,7 +222,7 @@ std::string windowProblem(EditorWindow which) {
 void drawMainMenu(EditorState& state, GlCaps const& caps) {
     if (!ImGui::BeginMainMenuBar()) return;
     if (ImGui::BeginMenu("File")) {
-        if (ImGui::MenuItem("Quit", "Esc")) state.quitRequested = true;
+        if (ImGui::MenuItem("Quit")) state.quitRequested = true;
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
@@ -252,7 +258,8 @@ void fitViewerRanges(EditorState& state, Renderer& renderer, long frame) {
             break;
         case ui::ViewerKind::Depth:
             r = ui::fitRange(renderer.readAttachment(Attachment::Depth), 0x1, ui::RangeSkip::FarDepth, v.linearDepth,
-                             state.camera.nearPlane, state.camera.farPlane);
+                             v.cameraClipPlanes ? state.camera.nearPlane : v.nearPlane,
+                             v.cameraClipPlanes ? state.camera.farPlane : v.farPlane);
             break;
         case ui::ViewerKind::Albedo:
         case ui::ViewerKind::Specular: {
@@ -424,18 +431,29 @@ int runEditor(EditorOptions const& options) {
         t0 = Clock::now();
         gpu.timer.begin("viewers");
         std::array<unsigned, 5> viewerTextures{};
-        if (renderer->width() > 0 && renderer->height() > 0) {
+        if (renderer->width() > 0 && renderer->height() > 0 && state.gbuffer.visible) {
+            ui::GBufferPanelState& gb = state.gbuffer;
+            int const turn = gb.nextRefresh;
+            gb.nextRefresh = (gb.nextRefresh + 1) % int(gb.viewers.size());
             for (std::size_t i = 0; i < gpu.viewTargets.size(); ++i) {
-                ui::ViewerState const& v = state.gbuffer.viewers[i];
-                Camera clip = state.camera;
-                if (v.kind == ui::ViewerKind::Depth && !v.cameraClipPlanes) {
-                    clip.nearPlane = v.nearPlane;
-                    clip.farPlane = v.farPlane;
+                ui::ViewerState const& v = gb.viewers[i];
+                ViewParams const params = ui::viewerParams(v);
+                ViewTarget& target = gpu.viewTargets[i];
+                bool const stale = !target.texture || target.texture.width() != renderer->width() ||
+                                   target.texture.height() != renderer->height() || !gpu.drawnParams[i] ||
+                                   !sameView(*gpu.drawnParams[i], params);
+                if (gb.refreshEveryFrame || int(i) == turn || stale) {
+                    Camera clip = state.camera;
+                    if (v.kind == ui::ViewerKind::Depth && !v.cameraClipPlanes) {
+                        clip.nearPlane = v.nearPlane;
+                        clip.farPlane = v.farPlane;
+                    }
+                    renderer->drawView(params, clip, target);
+                    // Exact texels when zoomed in: the viewers are for reading values, not pictures.
+                    target.texture.setFilter(GL_NEAREST, GL_NEAREST);
+                    gpu.drawnParams[i] = params;
                 }
-                renderer->drawView(ui::viewerParams(v), clip, gpu.viewTargets[i]);
-                // Exact texels when zoomed in: the viewers are for reading values, not pictures.
-                gpu.viewTargets[i].texture.setFilter(GL_NEAREST, GL_NEAREST);
-                viewerTextures[i] = gpu.viewTargets[i].texture.id();
+                viewerTextures[i] = target.texture.id();
             }
             fitViewerRanges(state, *renderer, frame);
         }
@@ -495,7 +513,6 @@ int runEditor(EditorOptions const& options) {
         if (keyboardFree && keys.pressed(window, GLFW_KEY_L)) inspector.locked = !inspector.locked;
         bool const frameKey = keyboardFree && keys.pressed(window, GLFW_KEY_F);
         if (state.viewport.frameRequested || frameKey) ui::frameBounds(state.rig, state.camera, state.sceneBounds);
-        if (keyboardFree && keys.pressed(window, GLFW_KEY_ESCAPE) && !unattended) state.quitRequested = true;
         ui::applyCameraInput(state.rig, state.camera, gatherCameraInput(window, state, dt, keyboardFree));
         ImGui::Render();
         double const uiMs = msSince(t0);

@@ -20,6 +20,13 @@ inline ImTextureID toImTexture(unsigned int glTexture) {
     return (ImTextureID)(std::uintptr_t)glTexture;
 }
 
+// Window flag that keeps a floating window out of the dock tree (no such thing without docking).
+#ifdef IMGUI_HAS_DOCK
+inline constexpr ImGuiWindowFlags kNoDockingFlag = ImGuiWindowFlags_NoDocking;
+#else
+inline constexpr ImGuiWindowFlags kNoDockingFlag = 0;
+#endif
+
 // Flags set once at start-up: keyboard navigation everywhere, docking when the build has it.
 inline void enableConfigFlags(ImGuiIO& io) {
     io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;

@@ -20,8 +20,8 @@ TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize) {
     float const h = workSize.y;
     float const stripH = std::floor(h * kViewerStrip);
     float const leftTopH = std::floor(h * 0.64f);
-    float const rightTopH = std::floor(h * 0.45f);
-    float const statsH = std::floor(h * 0.35f);
+    float const rightTopH = std::floor(h * 0.52f);
+    float const statsH = std::floor(h * 0.30f);
     glm::vec2 const p = workPos;
     switch (window) {
     case EditorWindow::Lights: return {p, {leftW, leftTopH}};
@@ -55,8 +55,8 @@ void buildDefaultDockLayout(ImGuiID dockspace, ImGuiViewport const* viewport) {
     ImGuiID leftTop = left;
     ImGuiID const leftBottom = ImGui::DockBuilderSplitNode(leftTop, ImGuiDir_Down, 0.36f, nullptr, &leftTop);
     ImGuiID rightTop = right;
-    ImGuiID rightMiddle = ImGui::DockBuilderSplitNode(rightTop, ImGuiDir_Down, 0.55f, nullptr, &rightTop);
-    ImGuiID const rightBottom = ImGui::DockBuilderSplitNode(rightMiddle, ImGuiDir_Down, 0.36f, nullptr, &rightMiddle);
+    ImGuiID rightMiddle = ImGui::DockBuilderSplitNode(rightTop, ImGuiDir_Down, 0.48f, nullptr, &rightTop);
+    ImGuiID const rightBottom = ImGui::DockBuilderSplitNode(rightMiddle, ImGuiDir_Down, 0.38f, nullptr, &rightMiddle);
 
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::Viewport), centre);
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::GBuffer), strip);

@@ -92,6 +92,19 @@ void viewerControls(ViewerState& v) {
     ImGui::SameLine(0, 2);
     ImGui::Checkbox("##auto", &v.autoFit);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("auto: refit the range to the data about once a second");
+    if (v.kind == ViewerKind::Depth && v.linearDepth) {
+        ImGui::SameLine(0, 2);
+        if (ImGui::SmallButton("...")) ImGui::OpenPopup("clip-planes");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("near and far planes used to linearise depth");
+        if (ImGui::BeginPopup("clip-planes")) {
+            ImGui::Checkbox("camera's near/far", &v.cameraClipPlanes);
+            ImGui::BeginDisabled(v.cameraClipPlanes);
+            ImGui::DragFloat("near", &v.nearPlane, 0.01f, 0.001f, v.farPlane, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+            ImGui::DragFloat("far", &v.farPlane, 0.5f, v.nearPlane + 0.001f, 1e6f, "%.1f", ImGuiSliderFlags_AlwaysClamp);
+            ImGui::EndDisabled();
+            ImGui::EndPopup();
+        }
+    }
 }
 
 // Draws the image with zoom and pan inside the remaining cell area; returns the hovered texel.
@@ -162,7 +175,14 @@ void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& t
     state.hoverPixel.reset();
     state.showInViewport.reset();
     placeWindow(EditorWindow::GBuffer);
-    if (ImGui::Begin(windowName(EditorWindow::GBuffer), nullptr, editorWindowFlags())) {
+    state.visible = ImGui::Begin(windowName(EditorWindow::GBuffer), nullptr, editorWindowFlags());
+    if (state.visible) {
+        ImGui::Checkbox("Redraw all every frame", &state.refreshEveryFrame);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("off: one viewer is redrawn per frame in turn (cheaper on slow GL); a viewer whose\n"
+                              "settings change is redrawn at once");
+        ImGui::SameLine();
+        ImGui::TextDisabled("click: show in viewport  drag: pan  wheel: zoom  double-click: reset");
         if (ImGui::BeginTable("viewers", 5, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame,
                               ImGui::GetContentRegionAvail())) {
             for (std::size_t i = 0; i < state.viewers.size(); ++i) ImGui::TableSetupColumn(kViewerNames[i].data());

@@ -35,6 +35,12 @@ struct ViewerState {
 
 struct GBufferPanelState {
     std::array<ViewerState, 5> viewers = defaultViewers();
+    // Redrawing five full-size views every frame costs as much as a lighting pass on a software
+    // GL, so by default one viewer is redrawn per frame in turn (and any viewer at once when its
+    // settings change). On a GPU at 60 Hz that is still 12 refreshes a second per viewer.
+    bool refreshEveryFrame = false;
+    int nextRefresh = 0;
+    bool visible = true;  // the window was drawn last frame; hidden viewers are not redrawn
     std::optional<glm::ivec2> hoverPixel;  // texel under the mouse in any viewer, top-left origin
     std::optional<DebugView> showInViewport;  // a viewer was clicked this frame
 

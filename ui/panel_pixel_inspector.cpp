@@ -40,11 +40,12 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
             if (!s.covered) ImGui::TextDisabled("background: no geometry at this pixel");
             ImGuiTableFlags const flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
             if (ImGui::BeginTable("values", 5, flags)) {
-                ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFontSize() * 5.5f);
+                ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFontSize() * 6.5f);
                 for (char const* c : {"x / r", "y / g", "z / b", "w / a"}) ImGui::TableSetupColumn(c);
                 ImGui::TableHeadersRow();
                 row("position", s.position);
-                row("from depth", glm::vec4(s.reconstructedPosition, 0.0f), 3);
+                // Background depth is the far plane: a position rebuilt from it means nothing.
+                if (s.covered) row("from depth", glm::vec4(s.reconstructedPosition, 0.0f), 3);
                 row("normal", s.normal);
                 row("albedo,spec", s.albedoSpec);
                 row("depth", glm::vec4(s.depth, 0, 0, 0), 1);

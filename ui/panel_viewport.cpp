@@ -3,11 +3,13 @@
 
 #include "imgui_compat.h"
 #include "layout.h"
+#include "view_pass.h"
 
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace gbl::ui {
 
@@ -24,6 +26,28 @@ void viewCombo(PipelineSettings& settings) {
         ImGui::EndCombo();
     }
 }
+// Legend for the heat views, in the stops of heatRamp() in shaders/view.frag (blue, cyan,
+// green, yellow, red at 0, 1/4, 1/2, 3/4, 1), up to the count the display pass maps to red.
+void drawHeatLegend(ImVec2 imageMin, ImVec2 imageMax, DebugView view) {
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    ImU32 const stops[5] = {IM_COL32(0, 0, 255, 255), IM_COL32(0, 255, 255, 255), IM_COL32(0, 255, 0, 255),
+                            IM_COL32(255, 255, 0, 255), IM_COL32(255, 0, 0, 255)};
+    float const w = std::min(240.0f, (imageMax.x - imageMin.x) * 0.5f), h = 12.0f;
+    ImVec2 const p0(imageMax.x - w - 12.0f, imageMax.y - h - 26.0f);
+    dl->AddRectFilled(ImVec2(p0.x - 6, p0.y - 20), ImVec2(p0.x + w + 6, p0.y + h + 18), IM_COL32(0, 0, 0, 170));
+    for (int i = 0; i < 4; ++i) {
+        float const x0 = p0.x + w * float(i) / 4.0f, x1 = p0.x + w * float(i + 1) / 4.0f;
+        dl->AddRectFilledMultiColor(ImVec2(x0, p0.y), ImVec2(x1, p0.y + h), stops[i], stops[i + 1], stops[i + 1], stops[i]);
+    }
+    float const heatMax = ViewParams{}.heatMax;
+    char top[32];
+    std::snprintf(top, sizeof top, "%.0f+", heatMax);
+    dl->AddText(ImVec2(p0.x, p0.y - 17), IM_COL32(230, 230, 230, 255),
+                view == DebugView::TileLights ? "lights per tile" : "light volumes covering the pixel");
+    dl->AddText(ImVec2(p0.x, p0.y + h + 2), IM_COL32(230, 230, 230, 255), "0 (black)");
+    dl->AddText(ImVec2(p0.x + w - ImGui::CalcTextSize(top).x, p0.y + h + 2), IM_COL32(230, 230, 230, 255), top);
+}
+
 }  // namespace
 
 void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigned texture, glm::ivec2 textureSize) {
@@ -82,6 +106,9 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigne
         ImGui::GetWindowDrawList()->AddText(ImVec2(origin.x + 10, origin.y + 10), IM_COL32(200, 200, 200, 255),
                                             "no frame yet");
     }
+
+    if (settings.view == DebugView::Heatmap || settings.view == DebugView::TileLights)
+        drawHeatLegend(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), settings.view);
 
     ImGuiIO const& io = ImGui::GetIO();
     state.hovered = ImGui::IsItemHovered();

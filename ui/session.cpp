@@ -7,7 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <set>
+#include <algorithm>
+#include <initializer_list>
 #include <sstream>
 #include <stdexcept>
 
@@ -95,35 +96,30 @@ std::string typeName(json const& j) {
     return "a string";
 }
 
-// One JSON object being read: fields are taken by name, and finish() rejects any field that
-// was not taken, so a typo ("intesity") is reported instead of silently ignored.
+// One JSON object being read. Every field must be one of `known`: a typo ("intesity") is
+// reported as the unknown field it is, before the "missing" message it would also cause.
 class Object {
 public:
-    Object(json const& j, std::string path) : j_(j), path_(std::move(path)) {
+    Object(json const& j, std::string path, std::initializer_list<std::string_view> known) : j_(j), path_(std::move(path)) {
         if (!j_.is_object()) fail(path_, "must be an object (got " + typeName(j_) + ")");
+        for (auto it = j_.begin(); it != j_.end(); ++it)
+            if (std::find(known.begin(), known.end(), std::string_view(it.key())) == known.end())
+                fail(field(it.key()), "is not a known field");
     }
     std::string field(std::string_view key) const { return path_.empty() ? std::string(key) : path_ + "." + std::string(key); }
-    json const& required(std::string_view key) {
+    json const& required(std::string_view key) const {
         auto it = j_.find(key);
         if (it == j_.end()) fail(field(key), "is missing");
-        taken_.insert(std::string(key));
         return *it;
     }
-    json const* optional(std::string_view key) {
+    json const* optional(std::string_view key) const {
         auto it = j_.find(key);
-        if (it == j_.end()) return nullptr;
-        taken_.insert(std::string(key));
-        return &*it;
-    }
-    void finish() const {
-        for (auto it = j_.begin(); it != j_.end(); ++it)
-            if (!taken_.count(it.key())) fail(field(it.key()), "is not a known field");
+        return it == j_.end() ? nullptr : &*it;
     }
 
 private:
     json const& j_;
     std::string path_;
-    std::set<std::string> taken_;
 };
 
 enum class Bound { Any, NonNegative, Positive };
@@ -187,7 +183,7 @@ glm::vec<N, float> vector(json const& j, std::string const& field, Bound bound =
 }
 
 Camera readCamera(json const& j) {
-    Object o(j, "camera");
+    Object o(j, "camera", {"position", "yaw_degrees", "pitch_degrees", "fov_y_degrees", "near", "far"});
     Camera c;
     c.position = vector<3>(o.required("position"), o.field("position"));
     c.yawDegrees = number(o.required("yaw_degrees"), o.field("yaw_degrees"));
@@ -197,12 +193,11 @@ Camera readCamera(json const& j) {
     c.nearPlane = number(o.required("near"), o.field("near"), Bound::Positive);
     c.farPlane = number(o.required("far"), o.field("far"), Bound::Positive);
     if (c.farPlane <= c.nearPlane) fail(o.field("far"), "must be greater than camera.near");
-    o.finish();
     return c;
 }
 
 PointLight readLight(json const& j, std::string const& path) {
-    Object o(j, path);
+    Object o(j, path, {"name", "position", "color", "intensity", "kc", "kl", "kq", "threshold"});
     PointLight l;
     if (json const* name = o.optional("name")) l.name = string(*name, o.field("name"));
     l.position = vector<3>(o.required("position"), o.field("position"));
@@ -212,7 +207,6 @@ PointLight readLight(json const& j, std::string const& path) {
     l.kl = number(o.required("kl"), o.field("kl"), Bound::NonNegative);
     l.kq = number(o.required("kq"), o.field("kq"), Bound::NonNegative);
     l.threshold = number(o.required("threshold"), o.field("threshold"), Bound::Positive);
-    o.finish();
     // The rules that involve more than one field (Kc = Kl = Kq = 0) come from the one validator
     // the editor and the renderer use too.
     if (auto err = validateLight(l)) fail(path + ":", *err);
@@ -230,7 +224,8 @@ std::vector<PointLight> readLights(json const& j) {
 }
 
 PipelineSettings readPipeline(json const& j) {
-    Object o(j, "pipeline");
+    Object o(j, "pipeline", {"mode", "cull", "blit", "tonemap", "view", "light_cubes", "volume_wireframes", "normal_maps",
+                             "ambient", "exposure", "shininess"});
     PipelineSettings p;
     p.mode = enumeration<LightingMode>(o.required("mode"), o.field("mode"), kLightingModeNames);
     p.cull = enumeration<CullMode>(o.required("cull"), o.field("cull"), kCullModeNames);
@@ -243,12 +238,12 @@ PipelineSettings readPipeline(json const& j) {
     p.ambient = vector<3>(o.required("ambient"), o.field("ambient"), Bound::NonNegative);
     p.exposure = number(o.required("exposure"), o.field("exposure"), Bound::Positive);
     p.shininess = number(o.required("shininess"), o.field("shininess"), Bound::Positive);
-    o.finish();
     return p;
 }
 
 ViewerState readViewer(json const& j, std::string const& path, ViewerState v) {
-    Object o(j, path);
+    Object o(j, path, {"channel_mask", "range_min", "range_max", "auto_fit", "normal_display", "linear_depth",
+                       "camera_clip_planes", "near", "far", "zoom", "center"});
     v.channelMask = unsigned(integer(o.required("channel_mask"), o.field("channel_mask"), 0, 15));
     v.rangeMin = number(o.required("range_min"), o.field("range_min"));
     v.rangeMax = number(o.required("range_max"), o.field("range_max"));
@@ -267,49 +262,50 @@ ViewerState readViewer(json const& j, std::string const& path, ViewerState v) {
     for (int i = 0; i < 2; ++i)
         if (v.center[i] < 0.0f || v.center[i] > 1.0f)
             fail(o.field("center") + "[" + std::to_string(i) + "]", "must be between 0 and 1 (got " + center[std::size_t(i)].dump() + ")");
-    o.finish();
     return v;
 }
 
 Session readSession(json const& j) {
     if (!j.is_object()) fail("the file", "must hold a JSON object (got " + typeName(j) + ")");
-    Object root(j, "");
     // Format and version first: a newer file should say so, not trip over its new fields.
-    json const& format = root.required("format");
+    auto const formatIt = j.find("format");
+    if (formatIt == j.end()) fail("format", "is missing");
+    json const& format = *formatIt;
     if (!format.is_string() || format.get<std::string>() != kSessionFormat)
         fail("format", "must be \"" + std::string(kSessionFormat) + "\" (got " + format.dump() + "); this is not a gbuffer-lab session");
-    json const& version = root.required("version");
+    auto const versionIt = j.find("version");
+    if (versionIt == j.end()) fail("version", "is missing");
+    json const& version = *versionIt;
     if (!version.is_number_integer()) fail("version", "must be a whole number (got " + version.dump() + ")");
     if (version.get<long long>() != kSessionVersion)
         fail("version", std::to_string(version.get<long long>()) + " is not supported; this program reads version " +
                             std::to_string(kSessionVersion) +
                             (version.get<long long>() > kSessionVersion ? " (the file comes from a newer gbuffer-lab)" : ""));
 
+    Object const root(j, "", {"format", "version", "scene", "camera", "lights", "pipeline", "viewers", "animation"});
     Session s;
     {
-        Object scene(root.required("scene"), "scene");
+        Object scene(root.required("scene"), "scene", {"source", "default_scene_lights"});
         s.scene = string(scene.required("source"), scene.field("source"));
         if (s.scene.empty()) fail(scene.field("source"), "must be \"default\" or the path of a glTF file (got \"\")");
         s.defaultSceneLights = integer(scene.required("default_scene_lights"), scene.field("default_scene_lights"), 0, kMaxLights);
-        scene.finish();
     }
     s.camera = readCamera(root.required("camera"));
     s.lights = readLights(root.required("lights"));
     s.pipeline = readPipeline(root.required("pipeline"));
     {
-        Object viewers(root.required("viewers"), "viewers");
+        static_assert(kViewerNames.size() == 5, "list every viewer in the known fields below");
+        Object viewers(root.required("viewers"), "viewers",
+                       {kViewerNames[0], kViewerNames[1], kViewerNames[2], kViewerNames[3], kViewerNames[4]});
         for (std::size_t i = 0; i < s.viewers.size(); ++i)
             s.viewers[i] = readViewer(viewers.required(kViewerNames[i]), viewers.field(kViewerNames[i]), s.viewers[i]);
-        viewers.finish();
     }
     {
-        Object anim(root.required("animation"), "animation");
+        Object anim(root.required("animation"), "animation", {"enabled", "speed", "time"});
         s.animation.enabled = boolean(anim.required("enabled"), anim.field("enabled"));
         s.animation.speed = number(anim.required("speed"), anim.field("speed"));
         s.animation.time = number(anim.required("time"), anim.field("time"));
-        anim.finish();
     }
-    root.finish();
     return s;
 }
 

@@ -33,11 +33,15 @@ bool sameSnapshot(UndoSnapshot const& a, UndoSnapshot const& b) {
 }
 
 std::string editTarget(UndoSnapshot const& before, UndoSnapshot const& after) {
-    bool const pipelineChanged = !samePipeline(before.pipeline, after.pipeline);
-    if (before.lights.size() != after.lights.size()) return "lights";
+    return editTarget(before, after.lights, after.pipeline);
+}
+
+std::string editTarget(UndoSnapshot const& before, std::vector<PointLight> const& lights, PipelineSettings const& pipeline) {
+    bool const pipelineChanged = !samePipeline(before.pipeline, pipeline);
+    if (before.lights.size() != lights.size()) return "lights";
     int changed = -1, count = 0;
     for (std::size_t i = 0; i < before.lights.size(); ++i)
-        if (!sameLight(before.lights[i], after.lights[i])) {
+        if (!sameLight(before.lights[i], lights[i])) {
             changed = int(i);
             ++count;
         }
@@ -58,8 +62,12 @@ void UndoStack::reset(UndoSnapshot const& state) {
 }
 
 bool UndoStack::observe(UndoSnapshot const& current, bool editing, double now) {
+    return observe(current.lights, current.pipeline, editing, now);
+}
+
+bool UndoStack::observe(std::vector<PointLight> const& lights, PipelineSettings const& pipeline, bool editing, double now) {
     if (editing) return false;
-    std::string const target = editTarget(recorded_, current);
+    std::string const target = editTarget(recorded_, lights, pipeline);
     if (target.empty()) return false;
     // Two edits of the same light (or of the pipeline) in quick succession are one gesture:
     // keep the state before the first as the undo point and move only the end state. "lights"
@@ -70,7 +78,8 @@ bool UndoStack::observe(UndoSnapshot const& current, bool editing, double now) {
         bytes_ += snapshotBytes(recorded_);
         undo_.push_back(std::move(recorded_));
     }
-    recorded_ = current;
+    recorded_.lights = lights;
+    recorded_.pipeline = pipeline;
     for (auto const& r : redo_) bytes_ -= snapshotBytes(r);
     redo_.clear();
     lastTarget_ = target;

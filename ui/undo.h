@@ -27,6 +27,7 @@ bool sameSnapshot(UndoSnapshot const& a, UndoSnapshot const& b);
 // What an edit touched, so that repeated edits of the same thing can merge: "light 3",
 // "pipeline", "lights" (added, deleted or more than one changed), "" for no change.
 std::string editTarget(UndoSnapshot const& before, UndoSnapshot const& after);
+std::string editTarget(UndoSnapshot const& before, std::vector<PointLight> const& lights, PipelineSettings const& pipeline);
 
 struct UndoLimits {
     std::size_t maxSteps = 200;
@@ -50,6 +51,8 @@ public:
     // Records `current` as a step when it differs from the last recorded state and no edit is
     // in progress. Returns true when a step was recorded or merged into the previous one.
     bool observe(UndoSnapshot const& current, bool editing, double now);
+    // The same without building a snapshot: the lights are only copied when they changed.
+    bool observe(std::vector<PointLight> const& lights, PipelineSettings const& pipeline, bool editing, double now);
 
     // Steps back/forward. `current` is the live state: an edit not recorded yet is recorded
     // first, so undo always undoes what the user sees last. nullopt when there is nothing.

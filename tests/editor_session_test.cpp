@@ -1,0 +1,86 @@
+// Editor state <-> session: what is captured comes back when applied, through a file in between.
+#include "editor_session.h"
+
+#include <gtest/gtest.h>
+
+using namespace gbl;
+using namespace gbl::ui;
+
+namespace {
+
+EditorState editedState() {
+    EditorState s;
+    s.sceneSource = "default";
+    s.sceneBounds = {{-16.0f, 0.0f, -16.0f}, {16.0f, 10.0f, 16.0f}};
+    s.camera.position = {3.0f, 4.0f, 5.0f};
+    s.camera.yawDegrees = 33.0f;
+    s.lights.resize(3);
+    s.lights[1].intensity = 2.5f;
+    s.lights[2].name = "rim";
+    s.pipeline.mode = LightingMode::Volumes;
+    s.pipeline.depthCopy = DepthCopy::Off;
+    s.gbuffer.viewers[4].linearDepth = false;
+    s.gbuffer.viewers[0].zoom = 4.0f;
+    s.gbuffer.viewers[0].center = {0.2f, 0.7f};
+    s.gbuffer.viewers[0].imageSize = {640, 360};
+    s.animation.enabled = true;
+    s.animation.time = 8.5f;
+    return s;
+}
+
+}  // namespace
+
+TEST(EditorSession, CapturedSessionAppliesBackThroughJson) {
+    EditorState const edited = editedState();
+    Session const captured = captureSession(edited, 3);
+    SessionLoad const loaded = parseSession(sessionToJson(captured), "s.json");
+    ASSERT_TRUE(loaded.session) << loaded.error;
+
+    EditorState fresh;
+    fresh.sceneBounds = edited.sceneBounds;
+    fresh.lightsPanel.selected = 7;  // past the end of the session's lights
+    applySessionValues(*loaded.session, fresh);
+    EXPECT_EQ(fresh.camera.position, edited.camera.position);
+    EXPECT_EQ(fresh.camera.yawDegrees, edited.camera.yawDegrees);
+    ASSERT_EQ(fresh.lights.size(), 3u);
+    EXPECT_EQ(fresh.lights[1].intensity, 2.5f);
+    EXPECT_EQ(fresh.lights[2].name, "rim");
+    EXPECT_EQ(fresh.pipeline.mode, LightingMode::Volumes);
+    EXPECT_EQ(fresh.pipeline.depthCopy, DepthCopy::Off);
+    EXPECT_FALSE(fresh.gbuffer.viewers[4].linearDepth);
+    EXPECT_EQ(fresh.gbuffer.viewers[0].zoom, 4.0f);
+    EXPECT_EQ(fresh.gbuffer.viewers[0].center, glm::vec2(0.2f, 0.7f));
+    EXPECT_EQ(fresh.gbuffer.viewers[0].imageSize, glm::ivec2(0));  // learnt at run time, not restored
+    EXPECT_EQ(fresh.gbuffer.viewers[0].kind, ViewerKind::Position);
+    EXPECT_TRUE(fresh.animation.enabled);
+    EXPECT_EQ(fresh.animation.time, 8.5f);
+    EXPECT_EQ(fresh.lightsPanel.selected, 0);  // the old selection no longer exists
+    // The orbit target sits ahead of the restored camera, so orbiting does not jump.
+    glm::vec3 const toTarget = glm::normalize(fresh.rig.target - fresh.camera.position);
+    EXPECT_NEAR(glm::dot(toTarget, fresh.camera.forward()), 1.0f, 1e-4f);
+}
+
+TEST(EditorSession, CapturedSceneNamesDefaultOrTheFile) {
+    EditorState s;
+    EXPECT_EQ(captureSession(s, 32).scene, "default");
+    s.sceneSource = "/models/a.glb";
+    EXPECT_EQ(captureSession(s, 32).scene, "/models/a.glb");
+}
+
+TEST(EditorSession, UndoSnapshotsCarryLightsAndPipelineOnly) {
+    EditorState s = editedState();
+    UndoSnapshot const snap = undoSnapshot(s);
+    s.lights.clear();
+    s.lightsPanel.selected = 2;
+    s.pipeline.mode = LightingMode::Forward;
+    s.camera.yawDegrees = -1.0f;
+    applyUndoSnapshot(snap, s);
+    EXPECT_EQ(s.lights.size(), 3u);
+    EXPECT_EQ(s.pipeline.mode, LightingMode::Volumes);
+    EXPECT_EQ(s.camera.yawDegrees, -1.0f);  // the camera is not an undoable edit
+    EXPECT_EQ(s.lightsPanel.selected, 2);
+    UndoSnapshot fewer = snap;
+    fewer.lights.resize(1);
+    applyUndoSnapshot(fewer, s);
+    EXPECT_EQ(s.lightsPanel.selected, 0);  // clamped to the lights that exist
+}

@@ -1,0 +1,213 @@
+// The editor's session life cycle without a window: autosave timing on a fake clock, the
+// recovery offer after an unclean exit, all-or-nothing opening, undo through the controller.
+#include "atomic_file.h"
+#include "editor_session.h"
+#include "run_command.h"
+#include "session_controller.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+
+using namespace gbl;
+using namespace gbl::ui;
+namespace fs = std::filesystem;
+namespace test = gbl::test;
+
+namespace {
+
+struct Fixture {
+    double now = 1000.0;
+    std::string dir;
+    EditorState state;
+    std::vector<std::string> loads;  // scenes the loader was asked for
+    bool loaderFails = false;
+
+    explicit Fixture(std::string const& name) : dir(test::freshTempDir(name)) {
+        state.sceneSource = "default";
+        state.lights.resize(4);
+    }
+    Clock clock() {
+        return [this] { return now; };
+    }
+    SceneLoader loader() {
+        return [this](std::string const& scene, int) -> std::optional<std::string> {
+            loads.push_back(scene);
+            if (loaderFails) return std::string("cannot open " + scene);
+            state.sceneSource = scene;
+            return std::nullopt;
+        };
+    }
+    // Runs frames for `seconds` at 20 frames per second.
+    void run(SessionController& c, double seconds, bool editing = false) {
+        for (double t = 0.0; t < seconds; t += 0.05) {
+            now += 0.05;
+            c.afterFrame(state, editing);
+        }
+    }
+};
+
+long deadPid() {
+    pid_t const p = ::fork();
+    if (p == 0) ::_exit(0);
+    ::waitpid(p, nullptr, 0);
+    return long(p);
+}
+
+}  // namespace
+
+TEST(SessionController, AutosavesAQuietPeriodAfterAChange) {
+    Fixture f("controller_autosave");
+    SessionController c(f.clock(), RecoveryDir(f.dir), 5000, {3.0, 20.0});
+    c.start(f.state, 32);
+    EXPECT_TRUE(fs::exists(RecoveryDir(f.dir).markerPath(5000)));
+    f.run(c, 10.0);
+    EXPECT_EQ(c.autosaves(), 0);  // nothing changed, nothing written
+    EXPECT_FALSE(fs::exists(c.recoveryPath()));
+
+    f.state.lights[2].intensity = 6.5f;
+    f.run(c, 2.0);
+    EXPECT_EQ(c.autosaves(), 0);  // still within the quiet period
+    f.run(c, 2.0);
+    EXPECT_EQ(c.autosaves(), 1);
+    SessionLoad const saved = loadSession(c.recoveryPath());
+    ASSERT_TRUE(saved.session) << saved.error;
+    EXPECT_EQ(saved.session->lights[2].intensity, 6.5f);
+
+    f.run(c, 10.0);
+    EXPECT_EQ(c.autosaves(), 1);  // no change since: no rewrite
+    c.endCleanly();
+    EXPECT_TRUE(fs::is_empty(f.dir));
+}
+
+TEST(SessionController, OffersTheSessionOfAnEditorThatDidNotExitCleanly) {
+    Fixture f("controller_offer");
+    RecoveryDir const dir(f.dir);
+    long const crashed = deadPid();
+    ASSERT_EQ(dir.beginRun(crashed), std::nullopt);
+    Session lost = captureSession(f.state, 32);
+    lost.lights.resize(9);
+    lost.lights[8].kq = 0.125f;
+    lost.pipeline.cull = CullMode::Back;
+    ASSERT_EQ(saveSession(dir.sessionPath(crashed), lost), std::nullopt);
+
+    SessionController c(f.clock(), dir, 5001);
+    c.start(f.state, 32);
+    ASSERT_TRUE(c.panel.recoveryOffer);
+    EXPECT_EQ(c.panel.recoveryOffer->pid, crashed);
+    EXPECT_NE(c.panel.recoveryWhy.find("9 lights"), std::string::npos) << c.panel.recoveryWhy;
+
+    ASSERT_EQ(c.restoreRecovery(f.state, f.loader()), std::nullopt);
+    EXPECT_EQ(f.state.lights.size(), 9u);
+    EXPECT_EQ(f.state.lights[8].kq, 0.125f);
+    EXPECT_EQ(f.state.pipeline.cull, CullMode::Back);
+    EXPECT_TRUE(f.loads.empty());  // same scene: not reloaded
+    EXPECT_FALSE(c.panel.recoveryOffer);
+    EXPECT_FALSE(fs::exists(dir.markerPath(crashed)));
+    EXPECT_FALSE(fs::exists(dir.sessionPath(crashed)));
+    // The restored state becomes this run's autosave soon, so a second crash loses nothing.
+    f.run(c, 4.0);
+    EXPECT_GE(c.autosaves(), 1);
+    ASSERT_TRUE(loadSession(c.recoveryPath()).session);
+    EXPECT_EQ(loadSession(c.recoveryPath()).session->lights.size(), 9u);
+}
+
+TEST(SessionController, DecliningForgetsTheCrash) {
+    Fixture f("controller_decline");
+    RecoveryDir const dir(f.dir);
+    long const crashed = deadPid();
+    ASSERT_EQ(dir.beginRun(crashed), std::nullopt);
+    ASSERT_EQ(saveSession(dir.sessionPath(crashed), captureSession(f.state, 32)), std::nullopt);
+    SessionController c(f.clock(), dir, 5002);
+    c.start(f.state, 32);
+    ASSERT_TRUE(c.panel.recoveryOffer);
+    c.discardRecovery();
+    EXPECT_FALSE(c.panel.recoveryOffer);
+    SessionController again(f.clock(), dir, 5003);
+    again.start(f.state, 32);
+    EXPECT_FALSE(again.panel.recoveryOffer);
+}
+
+TEST(SessionController, OpeningABadSessionChangesNothing) {
+    Fixture f("controller_bad");
+    SessionController c(f.clock(), std::nullopt, 5004);
+    c.start(f.state, 32);
+    Session s = captureSession(f.state, 32);
+    s.lights.resize(2);
+    std::string const good = f.dir + "/good.json";
+    ASSERT_EQ(saveSession(good, s), std::nullopt);
+    std::string text = sessionToJson(s);
+    text.replace(text.find("\"kq\""), 4, "\"kk\"");
+    std::string const bad = f.dir + "/bad.json";
+    ASSERT_EQ(writeFileAtomically(bad, text), std::nullopt);
+
+    auto const err = c.openSession(bad, f.state, f.loader());
+    ASSERT_TRUE(err);
+    EXPECT_NE(err->find("lights[0].kk is not a known field"), std::string::npos) << *err;
+    EXPECT_EQ(f.state.lights.size(), 4u);
+    EXPECT_EQ(c.panel.currentPath, "");
+
+    ASSERT_EQ(c.openSession(good, f.state, f.loader()), std::nullopt);
+    EXPECT_EQ(f.state.lights.size(), 2u);
+    EXPECT_EQ(c.panel.currentPath, good);
+}
+
+TEST(SessionController, ASceneThatFailsToLoadLeavesTheStateAsItWas) {
+    Fixture f("controller_scene");
+    SessionController c(f.clock(), std::nullopt, 5005);
+    c.start(f.state, 32);
+    Session s = captureSession(f.state, 32);
+    s.scene = "/nowhere/model.glb";
+    s.lights.resize(1);
+    std::string const path = f.dir + "/other.json";
+    ASSERT_EQ(saveSession(path, s), std::nullopt);
+    f.loaderFails = true;
+    auto const err = c.openSession(path, f.state, f.loader());
+    ASSERT_TRUE(err);
+    EXPECT_NE(err->find("cannot open /nowhere/model.glb"), std::string::npos) << *err;
+    EXPECT_EQ(f.state.lights.size(), 4u);
+    EXPECT_EQ(f.state.sceneSource, "default");
+    f.loaderFails = false;
+    ASSERT_EQ(c.openSession(path, f.state, f.loader()), std::nullopt);
+    EXPECT_EQ(f.loads.back(), "/nowhere/model.glb");
+    EXPECT_EQ(f.state.lights.size(), 1u);
+}
+
+TEST(SessionController, UndoAndRedoThroughTheController) {
+    Fixture f("controller_undo");
+    SessionController c(f.clock(), std::nullopt, 5006);
+    c.start(f.state, 32);
+    f.state.lights[0].position.y = 3.0f;
+    f.run(c, 0.2, true);  // dragging
+    f.state.lights[0].position.y = 4.0f;
+    f.run(c, 0.2, false);  // released
+    f.state.pipeline.mode = LightingMode::Forward;
+    f.run(c, 1.0);
+    c.undo(f.state);
+    EXPECT_EQ(f.state.pipeline.mode, LightingMode::Quad);
+    EXPECT_EQ(f.state.lights[0].position.y, 4.0f);
+    c.undo(f.state);
+    EXPECT_EQ(f.state.lights[0].position.y, 0.0f);  // the whole drag at once
+    c.redo(f.state);
+    EXPECT_EQ(f.state.lights[0].position.y, 4.0f);
+    // Opening a session starts a fresh history.
+    std::string const path = f.dir + "/s.json";
+    ASSERT_EQ(c.saveSession(path, f.state), std::nullopt);
+    ASSERT_EQ(c.openSession(path, f.state, f.loader()), std::nullopt);
+    EXPECT_FALSE(c.history().canUndo());
+}
+
+TEST(SessionController, UnwritableRecoveryDirectoryTurnsRecoveryOffWithAMessage) {
+    Fixture f("controller_nodir");
+    SessionController c(f.clock(), RecoveryDir("/proc/gbuffer-lab-recovery"), 5007);
+    c.start(f.state, 32);
+    EXPECT_FALSE(c.recovery());
+    ASSERT_FALSE(f.state.log.lines.empty());
+    EXPECT_NE(f.state.log.lines.back().find("crash recovery is off"), std::string::npos);
+    f.state.lights[0].kc = 2.0f;
+    f.run(c, 5.0);  // and the editor goes on working
+    EXPECT_EQ(c.autosaves(), 0);
+}

@@ -1,0 +1,195 @@
+// Session life cycle of the editor: history, autosave, recovery, file requests.
+#include "session_controller.h"
+
+#include "atomic_file.h"
+#include "editor_session.h"
+#include "viewer_export.h"
+
+#include <algorithm>
+#include <filesystem>
+
+namespace gbl::ui {
+
+namespace fs = std::filesystem;
+
+namespace {
+// How often the session text is compared with the last one to notice changes: often enough for
+// the autosave's 3-second quiet period, rare enough that thousands of lights cost nothing.
+constexpr double kChangeCheckSeconds = 0.5;
+}  // namespace
+
+SessionController::SessionController(Clock clock, std::optional<RecoveryDir> recovery, long pid, AutosaveTiming timing)
+    : clock_(std::move(clock)), recovery_(std::move(recovery)), pid_(pid), autosave_(clock_, timing) {}
+
+void SessionController::start(EditorState& state, int defaultSceneLights) {
+    defaultSceneLights_ = defaultSceneLights;
+    undo_.reset(undoSnapshot(state));
+    lastSeen_ = lastSaved_ = sessionToJson(captureSession(state, defaultSceneLights_));
+    if (!recovery_) return;
+    // Look before marking: our own marker must not count as a crash.
+    auto const unclean = recovery_->uncleanExits();
+    for (auto const& u : unclean) {
+        if (!u.sessionPath.empty() && !panel.recoveryOffer) {
+            panel.recoveryOffer = u;
+            SessionLoad const peek = loadSession(u.sessionPath);
+            panel.recoveryWhy = peek.session ? "Its autosaved session (" + std::to_string(peek.session->lights.size()) +
+                                                   " lights, scene " + peek.session->scene + ") can be restored."
+                                             : "Its autosave cannot be read: " + peek.error;
+            logMessage(state.log, "an earlier editor (pid " + std::to_string(u.pid) + ") did not exit cleanly; its session is offered");
+        } else {
+            recovery_->discard(u);  // nothing saved, or an older crash than the one offered
+        }
+    }
+    if (auto err = recovery_->beginRun(pid_)) {
+        logMessage(state.log, "crash recovery is off: " + *err, true);
+        recovery_.reset();
+    }
+}
+
+void SessionController::afterFrame(EditorState& state, bool editing) {
+    double const now = clock_();
+    undo_.observe(state.lights, state.pipeline, editing, now);
+    if (!recovery_ || now - lastCheck_ < kChangeCheckSeconds) {
+        if (recovery_ && autosave_.due()) autosaveNow(state);
+        return;
+    }
+    lastCheck_ = now;
+    std::string text = sessionToJson(captureSession(state, defaultSceneLights_));
+    if (text != lastSeen_) {
+        lastSeen_ = std::move(text);
+        if (lastSeen_ != lastSaved_) autosave_.changed();
+    }
+    if (autosave_.due()) autosaveNow(state);
+}
+
+bool SessionController::autosaveNow(EditorState const& state) {
+    if (!recovery_ || !autosave_.pending()) return false;
+    std::string const text = sessionToJson(captureSession(state, defaultSceneLights_));
+    if (auto err = writeFileAtomically(recovery_->sessionPath(pid_), text)) {
+        autosave_.failed();
+        return false;
+    }
+    lastSaved_ = lastSeen_ = text;
+    autosave_.saved();
+    ++autosaves_;
+    return true;
+}
+
+void SessionController::undo(EditorState& state) {
+    if (auto s = undo_.undo(undoSnapshot(state), clock_())) applyUndoSnapshot(*s, state);
+}
+
+void SessionController::redo(EditorState& state) {
+    if (auto s = undo_.redo(undoSnapshot(state), clock_())) applyUndoSnapshot(*s, state);
+}
+
+std::optional<std::string> SessionController::applyLoaded(Session const& session, EditorState& state, SceneLoader const& load) {
+    // The state is copied first so a scene that fails to load leaves everything as it was.
+    EditorState const before = state;
+    bool const sameScene = session.scene == (state.sceneSource.empty() ? "default" : state.sceneSource) &&
+                           (session.scene != "default" || session.defaultSceneLights == defaultSceneLights_);
+    if (!sameScene) {
+        if (auto err = load(session.scene, session.defaultSceneLights)) {
+            state = before;
+            return err;
+        }
+    }
+    applySessionValues(session, state);
+    defaultSceneLights_ = session.defaultSceneLights;
+    undo_.reset(undoSnapshot(state));
+    return std::nullopt;
+}
+
+std::optional<std::string> SessionController::openSession(std::string const& path, EditorState& state, SceneLoader const& load) {
+    SessionLoad const loaded = loadSession(path);
+    if (!loaded.session) return loaded.error;
+    if (auto err = applyLoaded(*loaded.session, state, load)) return path + ": " + *err;
+    panel.currentPath = path;
+    logMessage(state.log, "opened session " + path);
+    return std::nullopt;
+}
+
+std::optional<std::string> SessionController::saveSession(std::string const& path, EditorState const& state) {
+    if (auto err = ui::saveSession(path, captureSession(state, defaultSceneLights_))) return err;
+    panel.currentPath = path;
+    return std::nullopt;
+}
+
+std::optional<std::string> SessionController::restoreRecovery(EditorState& state, SceneLoader const& load) {
+    if (!panel.recoveryOffer) return std::string("there is no session to recover");
+    UncleanExit const offer = *panel.recoveryOffer;
+    SessionLoad const loaded = loadSession(offer.sessionPath);
+    std::optional<std::string> err = loaded.session ? applyLoaded(*loaded.session, state, load) : loaded.error;
+    // Restored or unreadable, the offer is answered: it is not made again at the next start.
+    // The restored state is autosaved under this run as soon as the check notices it.
+    panel.recoveryOffer.reset();
+    if (!err) {
+        recovery_->discard(offer);
+        logMessage(state.log, "restored the session of the editor that did not exit cleanly");
+        lastSaved_.clear();  // make the restored state this run's first autosave
+        lastCheck_ = -1e300;
+    } else {
+        logMessage(state.log, "could not restore the recovered session: " + *err, true);
+    }
+    return err;
+}
+
+void SessionController::discardRecovery() {
+    if (panel.recoveryOffer && recovery_) recovery_->discard(*panel.recoveryOffer);
+    panel.recoveryOffer.reset();
+}
+
+void SessionController::handle(SessionRequest const& request, EditorState& state, Renderer& renderer,
+                               FrameExport const& frame, SceneLoader const& load) {
+    std::optional<std::string> err;
+    std::string done;
+    switch (request.kind) {
+    case SessionRequestKind::None: return;
+    case SessionRequestKind::Open:
+        err = openSession(request.path, state, load);
+        break;
+    case SessionRequestKind::Save:
+        err = saveSession(request.path, state);
+        done = "saved session " + request.path;
+        break;
+    case SessionRequestKind::ExportAll: {
+        std::error_code ec;
+        fs::create_directories(request.path, ec);
+        if (ec)
+            err = "cannot create the folder " + request.path + ": " + ec.message();
+        else if (renderer.width() <= 0 || renderer.height() <= 0)
+            err = "nothing to export: the viewport is 0x0";
+        else
+            err = exportFrame(renderer, frame, request.path);
+        done = "exported the frame to " + request.path;
+        break;
+    }
+    case SessionRequestKind::ExportViewerPng:
+    case SessionRequestKind::ExportViewerExr: {
+        std::size_t const i = std::size_t(std::clamp(request.viewer, 0, int(state.gbuffer.viewers.size()) - 1));
+        ViewerState const& v = state.gbuffer.viewers[i];
+        err = request.kind == SessionRequestKind::ExportViewerPng ? exportViewerPng(renderer, v, state.camera, request.path)
+                                                                  : exportViewerExr(renderer, v.kind, request.path);
+        done = "exported the " + std::string(kViewerNames[i]) + " viewer to " + request.path;
+        break;
+    }
+    case SessionRequestKind::Restore:
+        err = restoreRecovery(state, load);
+        break;
+    case SessionRequestKind::DiscardRecovery:
+        discardRecovery();
+        logMessage(state.log, "discarded the recovered session");
+        return;
+    }
+    if (err)
+        logMessage(state.log, *err, true);
+    else if (!done.empty())
+        logMessage(state.log, done);
+    finishSessionRequest(panel, err);
+}
+
+void SessionController::endCleanly() {
+    if (recovery_) recovery_->endRunCleanly(pid_);
+}
+
+}  // namespace gbl::ui

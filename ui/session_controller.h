@@ -1,0 +1,78 @@
+// The editor's session life cycle in one place: open/save, undo/redo, autosave with crash
+// recovery, and exports. The window loop owns one and calls it at fixed points of the frame.
+#pragma once
+
+#include "editor_state.h"
+#include "frame_export.h"
+#include "panel_session.h"
+#include "recovery.h"
+#include "renderer.h"
+#include "session.h"
+#include "undo.h"
+
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace gbl::ui {
+
+// Loads `scene` ("default" or a glTF path; defaultSceneLights for the default scene) into the
+// renderer and the state (scene source, bounds, orbit centre). On failure returns one sentence;
+// the caller restores the state, and the renderer keeps its scene (Renderer::setScene's rule).
+using SceneLoader = std::function<std::optional<std::string>(std::string const& scene, int defaultSceneLights)>;
+
+class SessionController {
+public:
+    // recovery: where markers and autosaves go; nullopt runs without crash recovery.
+    SessionController(Clock clock, std::optional<RecoveryDir> recovery, long pid, AutosaveTiming timing = {});
+
+    // After the first scene is loaded: starts the undo history, marks this run and looks for
+    // an editor that did not exit cleanly (its session is then offered in panel.recoveryOffer).
+    void start(EditorState& state, int defaultSceneLights);
+
+    // Once per frame after the panels ran. editing: a widget is held (a drag in progress).
+    void afterFrame(EditorState& state, bool editing);
+
+    void undo(EditorState& state);
+    void redo(EditorState& state);
+
+    // All or nothing: on any error the state is as before and the error is returned.
+    std::optional<std::string> openSession(std::string const& path, EditorState& state, SceneLoader const& load);
+    std::optional<std::string> saveSession(std::string const& path, EditorState const& state);
+    std::optional<std::string> restoreRecovery(EditorState& state, SceneLoader const& load);
+    void discardRecovery();
+
+    // Carries out what the File menu dialogs asked for. `frame` describes the frame on screen
+    // (for Export all); the result is logged and shown in the dialog.
+    void handle(SessionRequest const& request, EditorState& state, Renderer& renderer, FrameExport const& frame,
+                SceneLoader const& load);
+
+    // Writes the recovery session now if a change is pending (used before risky operations
+    // and by tests); returns true when a file was written.
+    bool autosaveNow(EditorState const& state);
+    // The clean-exit path: removes this run's marker and recovery session.
+    void endCleanly();
+
+    int autosaves() const { return autosaves_; }
+    std::optional<RecoveryDir> const& recovery() const { return recovery_; }
+    std::string recoveryPath() const { return recovery_ ? recovery_->sessionPath(pid_) : std::string(); }
+    UndoStack const& history() const { return undo_; }
+
+    SessionPanelState panel;
+
+private:
+    std::optional<std::string> applyLoaded(Session const& session, EditorState& state, SceneLoader const& load);
+
+    Clock clock_;
+    std::optional<RecoveryDir> recovery_;
+    long pid_ = 0;
+    UndoStack undo_;
+    AutosaveTimer autosave_;
+    int defaultSceneLights_ = 32;
+    std::string lastSeen_;    // session text at the last change check
+    std::string lastSaved_;   // session text in the recovery file
+    double lastCheck_ = -1e300;
+    int autosaves_ = 0;
+};
+
+}  // namespace gbl::ui
