@@ -149,7 +149,7 @@ void RendererImpl::lightCubesPass(FrameContext const& f) {
     p.use();
     p.set("uViewProj", f.viewProj);
     p.set("uCubeSize", lightCubeHalfSize());
-    p.set("uEmissive", 4.0f);
+    p.set("uEmissive", kLightCubeEmissive);
     glActiveTexture(GL_TEXTURE3);
     glBindTexture(GL_TEXTURE_BUFFER, lights.texture.id());
     glActiveTexture(GL_TEXTURE0);

@@ -79,6 +79,10 @@ struct FloatImage {
     float at(int x, int y, int c) const { return pixels[(std::size_t(y) * width + x) * channels + c]; }
 };
 
+// Light cubes are drawn unlit with the light's colour times this, in HDR: bright enough to read as
+// emissive, low enough that tonemapping keeps their hue.
+inline constexpr float kLightCubeEmissive = 1.5f;
+
 class RendererImpl;
 
 class Renderer {

@@ -22,9 +22,6 @@ std::vector<ProgramDesc> volumePrograms(bool compute) {
         {"light_volume_coverage",
          {{GL_VERTEX_SHADER, "light_volume.vert"}, {GL_FRAGMENT_SHADER, "light_volume.frag"}},
          {"COVERAGE"}},
-        {"light_volume_no_discard",
-         {{GL_VERTEX_SHADER, "light_volume.vert"}, {GL_FRAGMENT_SHADER, "light_volume.frag"}},
-         {"NO_DISCARD"}},
         {"light_volume_stencil",
          {{GL_VERTEX_SHADER, "light_volume.vert"}, {GL_FRAGMENT_SHADER, "light_volume_stencil.frag"}},
          {}},
@@ -165,8 +162,6 @@ void RendererImpl::drawLightVolumes(FrameContext const& f, gl::Program const& p,
         break;
     case CullMode::Stencil: {
         gl::Program const& mark = shaders.get("light_volume_stencil");
-        gl::Program const& shade = &p == &shaders.get("light_volume") ? shaders.get("light_volume_no_discard") : p;
-        if (&shade != &p) setCommon(shade);
         setCommon(mark);
         glEnable(GL_STENCIL_TEST);
         GLboolean blend = glIsEnabled(GL_BLEND);
@@ -184,16 +179,15 @@ void RendererImpl::drawLightVolumes(FrameContext const& f, gl::Program const& p,
             draw(mark, i, 1);
             // Shade: both faces, no depth test, so every pixel of the footprint is visited; only
             // a mark of exactly 1 (behind the front face, in front of the back face) passes,
-            // and every visit resets the mark to 0 for the next light, pass or fail. The
-            // shader must not discard (a discarded fragment skips the reset): `shade` is the
-            // no-discard variant for lighting.
-            shade.use();
+            // and every visit resets the mark to 0 for the next light, pass or fail (which is
+            // why light_volume.frag never discards).
+            p.use();
             if (blend) glEnable(GL_BLEND);
             glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
             glDisable(GL_DEPTH_TEST);
             glStencilFunc(GL_EQUAL, 1, 0xFF);
             glStencilOp(GL_ZERO, GL_ZERO, GL_ZERO);
-            draw(shade, i, 1);
+            draw(p, i, 1);
         }
         glDisable(GL_STENCIL_TEST);
         glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);

@@ -1,8 +1,6 @@
 // Light volumes: shades the G-buffer pixel under each volume fragment with that one light,
 // added to the HDR target by blending. With COVERAGE defined it instead counts, per pixel, the
 // volume fragments that ran (x) and the ones whose light actually reached the surface (y).
-// NO_DISCARD: the variant for the stencil cull mode, where a discarded fragment would skip the
-// stencil reset and leave its mark for the next light; pixels outside the radius add zero.
 #version 330 core
 #include "lighting.glsl"
 #include "light_fetch.glsl"
@@ -23,13 +21,12 @@ void main() {
     vec4 positionRadius = texelFetch(uLights, vLight * 4);
     bool inside = pos.w != 0.0 && distance(positionRadius.xyz, pos.xyz) < positionRadius.w;
 #ifndef COVERAGE
+    // Adding zero instead of discarding: a shader that may discard makes llvmpipe (and many
+    // GPUs) run it before the depth test, and in the stencil cull mode a discarded fragment
+    // would skip the stencil reset and leave its mark for the next light.
     if (!inside) {
-#ifdef NO_DISCARD
         fragColor = vec4(0.0);
         return;
-#else
-        discard;
-#endif
     }
 #endif
     Light l = fetchLight(vLight);

@@ -218,8 +218,9 @@ TEST_F(RendererGlTest, BlitStepHidesLightCubeBehindWall) {
     PointLight light;
     light.position = {0.0f, 2.0f, -2.0f};  // behind the wall (front face at z = 0)
     light.color = {0.0f, 1.0f, 0.0f};
-    // The cube is emissive: colour x 4 in HDR, unlit. The wall never shades to pure green.
-    glm::vec3 const cube = light.color * 4.0f;
+    // The cube is emissive: colour x kLightCubeEmissive in HDR, unlit. The wall (lit by
+    // the ambient term only) is nowhere near that green.
+    glm::vec3 const cube = light.color * kLightCubeEmissive;
     glm::vec3 const off = cubePixel(*r, cam, light, DepthCopy::Off);
     glm::vec3 const blit = cubePixel(*r, cam, light, DepthCopy::Blit);
     glm::vec3 const shader = cubePixel(*r, cam, light, DepthCopy::Shader);

@@ -3,6 +3,7 @@
 #include "editor.h"
 
 #include "default_scene.h"
+#include "frame_export.h"
 #include "editor_state.h"
 #include "gl_caps.h"
 #include "gltf_loader.h"
@@ -16,6 +17,7 @@
 #include "renderer.h"
 #include "renderer_impl.h"
 #include "screenshot.h"
+#include "session_controller.h"
 #include "ui_script.h"
 #include "view_pass.h"
 
@@ -35,6 +37,8 @@
 #include <limits>
 #include <memory>
 #include <thread>
+
+#include <unistd.h>
 
 namespace gbl {
 
@@ -106,42 +110,49 @@ bool sameView(ViewParams const& a, ViewParams const& b) {
 
 // --- scene set-up --------------------------------------------------------------------------
 
-// Loads the scene named on the command line (or builds the default one) and uploads it.
-// Returns an error sentence on failure.
-std::optional<std::string> loadInitialScene(EditorOptions const& options, EditorState& state, Renderer& renderer) {
+// Loads a glTF file (or builds the default scene when path is empty), uploads it and resets the
+// scene-dependent state: lights, bounds, orbit centre and a camera framing it. On failure the
+// current scene and state stay as they were and an error sentence is returned.
+std::optional<std::string> loadScene(std::optional<std::string> const& path, int defaultLightCount, EditorState& state,
+                                     Renderer& renderer) {
     SceneData scene;
-    if (options.scenePath) {
-        GltfLoadResult result = loadGltf(*options.scenePath);
+    std::vector<PointLight> lights;
+    if (path) {
+        GltfLoadResult result = loadGltf(*path);
         if (!result.scene) return result.error;
         scene = std::move(*result.scene);
-        state.lights = scene.lights;
-        if (state.lights.empty()) {
+        lights = scene.lights;
+        if (lights.empty()) {
             // A model without lights would be black: light it with the default rig.
-            state.lights = makeDefaultLights(options.lightCount.value_or(32));
+            lights = makeDefaultLights(defaultLightCount);
             Bounds const b = scene.bounds();
             float const s = std::max(b.radius(), 1e-3f) / 16.0f;  // default lights fit a ~33-unit courtyard
-            for (auto& l : state.lights) {
+            for (auto& l : lights) {
                 l.position = b.center() + (l.position - defaultSceneCenter()) * s;
                 // Scale the fall-off with the scene so each light still covers a similar share.
                 l.kl /= s;
                 l.kq /= s * s;
             }
         }
-        for (auto const& w : scene.warnings) ui::logMessage(state.log, *options.scenePath + ": " + w);
     } else {
         scene = makeDefaultScene({});
-        state.lights = makeDefaultLights(options.lightCount.value_or(32));
+        lights = makeDefaultLights(defaultLightCount);
     }
     if (auto error = renderer.setScene(scene)) return *error;
+    for (auto const& w : scene.warnings) ui::logMessage(state.log, scene.source + ": " + w);
+    state.lights = std::move(lights);
     state.sceneSource = scene.source;
     state.sceneBounds = scene.bounds();
-    state.orbitCenter = options.scenePath ? state.sceneBounds.center() : defaultSceneCenter();
+    state.sceneTriangles = scene.triangleCount();
+    state.orbitCenter = path ? state.sceneBounds.center() : defaultSceneCenter();
+    state.animation.time = 0.0f;
     if (scene.camera) {
         state.camera = *scene.camera;
         ui::resetTargetAhead(state.rig, state.camera, glm::length(state.camera.position - state.sceneBounds.center()));
     } else {
         ui::frameBounds(state.rig, state.camera, state.sceneBounds);
     }
+    state.lightsPanel.selected = state.lights.empty() ? -1 : 0;
     ui::logMessage(state.log, "scene " + scene.source + ": " + std::to_string(scene.triangleCount()) + " triangles, " +
                                   std::to_string(state.lights.size()) + " lights");
     return std::nullopt;
@@ -172,6 +183,18 @@ void pickLightAt(EditorState& state, Renderer& renderer, std::span<PointLight co
         state.lightsPanel.selected = hit;
         state.lightsPanel.message.clear();
     }
+}
+
+// The selected light's centre in the viewport image (0..1, top-left origin), when in front.
+std::optional<glm::vec2> selectedLightInImage(EditorState const& state, std::span<PointLight const> drawn,
+                                              Renderer const& renderer) {
+    int const i = state.lightsPanel.selected;
+    if (i < 0 || i >= int(drawn.size()) || renderer.width() <= 0 || renderer.height() <= 0) return std::nullopt;
+    float const aspect = float(renderer.width()) / float(renderer.height());
+    glm::vec4 const clip = state.camera.projection(aspect) * state.camera.view() * glm::vec4(drawn[std::size_t(i)].position, 1.0f);
+    if (clip.w <= state.camera.nearPlane) return std::nullopt;
+    glm::vec2 const ndc = glm::vec2(clip) / clip.w;
+    return glm::vec2(ndc.x * 0.5f + 0.5f, 0.5f - ndc.y * 0.5f);
 }
 
 ui::CameraInput gatherCameraInput(GLFWwindow* window, EditorState const& state, float dt, bool keyboardFree) {
@@ -219,10 +242,24 @@ std::string windowProblem(EditorWindow which) {
     return {};
 }
 
-void drawMainMenu(EditorState& state, GlCaps const& caps) {
-    if (!ImGui::BeginMainMenuBar()) return;
+// What the Edit menu asked for this frame.
+struct EditRequest {
+    bool undo = false;
+    bool redo = false;
+};
+
+EditRequest drawMainMenu(EditorState& state, GlCaps const& caps, ui::SessionController& sessions) {
+    EditRequest edit;
+    if (!ImGui::BeginMainMenuBar()) return edit;
     if (ImGui::BeginMenu("File")) {
+        ui::drawSessionMenuItems(sessions.panel);
+        ImGui::Separator();
         if (ImGui::MenuItem("Quit")) state.quitRequested = true;
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit")) {
+        if (ImGui::MenuItem("Undo", "Ctrl+Z", false, sessions.history().canUndo())) edit.undo = true;
+        if (ImGui::MenuItem("Redo", "Ctrl+Y", false, sessions.history().canRedo())) edit.redo = true;
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
@@ -242,6 +279,7 @@ void drawMainMenu(EditorState& state, GlCaps const& caps) {
         ImGui::TextDisabled("%s", status.c_str());
     }
     ImGui::EndMainMenuBar();
+    return edit;
 }
 
 // Refits viewer ranges that asked for it (button) or are on auto (about once a second).
@@ -351,14 +389,29 @@ int runEditor(EditorOptions const& options) {
                      caps.version.c_str(), e.what());
         return 1;
     }
-    if (options.sessionPath)
-        ui::logMessage(state.log, "sessions are not loaded yet (issue 6); ignoring --session " + *options.sessionPath, true);
-    if (auto error = loadInitialScene(options, state, *renderer)) {
+    int const defaultLightCount = options.lightCount.value_or(32);
+    if (auto error = loadScene(options.scenePath, defaultLightCount, state, *renderer)) {
         std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
         return 2;
     }
-    // Start with a light selected so its parameters and attenuation plot are on screen.
-    if (!state.lights.empty()) state.lightsPanel.selected = 0;
+    ui::SceneLoader const sceneLoader = [&](std::string const& scene, int lightCount) {
+        std::optional<std::string> path;
+        if (scene != "default") path = scene;
+        return loadScene(path, lightCount, state, *renderer);
+    };
+    // Crash recovery for interactive runs. Unattended runs (screenshots, UI tests) neither
+    // offer nor leave autosaves unless a test asks for it with GBL_RECOVERY_DIR.
+    std::optional<ui::RecoveryDir> recoveryDir;
+    char const* recoveryEnv = std::getenv("GBL_RECOVERY_DIR");
+    if (!unattended || (recoveryEnv && *recoveryEnv)) recoveryDir.emplace(ui::defaultRecoveryDir());
+    ui::SessionController sessions(ui::steadyClock(), recoveryDir, long(::getpid()));
+    sessions.start(state, defaultLightCount);
+    if (options.sessionPath) {
+        if (auto error = sessions.openSession(*options.sessionPath, state, sceneLoader)) {
+            std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
+            return 2;
+        }
+    }
     if (caps.computeShaders == false)
         ui::logMessage(state.log, caps.tiledUnavailableReason());
 
@@ -384,7 +437,8 @@ int runEditor(EditorOptions const& options) {
     auto lastReload = Clock::now();
     int const screenshotFrames = options.frames > 0 ? options.frames : 5;
 
-    ui::ScriptHost host{state, *renderer, {}, {}, windowProblem, {}, {}, {}};
+    ui::ScriptHost host{.state = state, .renderer = *renderer};
+    host.windowProblem = windowProblem;
     host.readWindow = [window] {
         int w = 0, h = 0;
         glfwGetFramebufferSize(window, &w, &h);
@@ -395,6 +449,14 @@ int runEditor(EditorOptions const& options) {
     host.clickViewport = [&](glm::ivec2 px) { pickLightAt(state, *renderer, drawn, px); };
     host.frameScene = [&] { ui::frameBounds(state.rig, state.camera, state.sceneBounds); };
     if (state.sceneSource == "default") host.defaultLights = [](int n) { return makeDefaultLights(n); };
+    host.openSession = [&](std::string const& path) { return sessions.openSession(path, state, sceneLoader); };
+    host.saveSession = [&](std::string const& path) { return sessions.saveSession(path, state); };
+    host.undo = [&] { sessions.undo(state); };
+    host.redo = [&] { sessions.redo(state); };
+    host.recoveryOffered = [&] { return sessions.panel.recoveryOffer.has_value(); };
+    host.acceptRecovery = [&] {
+        if (auto error = sessions.restoreRecovery(state, sceneLoader)) ui::logMessage(state.log, *error, true);
+    };
 
     while (!glfwWindowShouldClose(window) && !state.quitRequested) {
         auto const frameStart = Clock::now();
@@ -423,7 +485,9 @@ int runEditor(EditorOptions const& options) {
         auto t0 = Clock::now();
         FrameStats frameStats;
         if (renderer->width() > 0 && renderer->height() > 0)
-            frameStats = renderer->render(FrameInput{state.camera, drawn, state.pipeline});
+            // Interactive frames take the previous frame's GPU timings instead of waiting for
+            // this one's; a measurement waits anyway (glFinish), so it can have exact ones.
+            frameStats = renderer->render(FrameInput{state.camera, drawn, state.pipeline, measuring});
         finishIfMeasuring();
         double const renderMs = msSince(t0);
 
@@ -485,12 +549,12 @@ int runEditor(EditorOptions const& options) {
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
-        drawMainMenu(state, caps);
+        EditRequest const edit = drawMainMenu(state, caps, sessions);
         ui::beginLayout(state.layout);
         ui::drawLightsPanel(state.lightsPanel, state.lights, state.animation, state.sceneBounds);
         ui::drawPipelinePanel(state.pipeline, caps);
         ui::drawViewportPanel(state.viewport, state.pipeline, renderer->texture(Attachment::Final),
-                              {renderer->width(), renderer->height()});
+                              {renderer->width(), renderer->height()}, selectedLightInImage(state, drawn, *renderer));
         ui::drawGBufferPanel(state.gbuffer, viewerTextures, {renderer->width(), renderer->height()});
         ui::drawPixelInspectorPanel(state.inspector);
         ui::drawStatsPanel(state.stats, caps, int(state.lights.size()));
@@ -514,6 +578,22 @@ int runEditor(EditorOptions const& options) {
         bool const frameKey = keyboardFree && keys.pressed(window, GLFW_KEY_F);
         if (state.viewport.frameRequested || frameKey) ui::frameBounds(state.rig, state.camera, state.sceneBounds);
         ui::applyCameraInput(state.rig, state.camera, gatherCameraInput(window, state, dt, keyboardFree));
+
+        // Sessions, exports, undo and crash recovery (ui/session_controller.h).
+        ui::SessionRequest const request = ui::drawSessionDialogs(sessions.panel);
+        if (request.kind != ui::SessionRequestKind::None) {
+            FrameExport exported{state.camera, drawn, state.pipeline, frameStats, state.sceneTriangles, {}};
+            sessions.handle(request, state, *renderer, exported, sceneLoader);
+        }
+        bool const ctrl = glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS ||
+                          glfwGetKey(window, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
+        bool const zPressed = keys.pressed(window, GLFW_KEY_Z);
+        bool const yPressed = keys.pressed(window, GLFW_KEY_Y);
+        if (edit.undo || (keyboardFree && ctrl && zPressed)) sessions.undo(state);
+        if (edit.redo || (keyboardFree && ctrl && yPressed)) sessions.redo(state);
+        // A held slider is one edit: it becomes an undo step when released.
+        sessions.afterFrame(state, ImGui::IsAnyItemActive());
+
         ImGui::Render();
         double const uiMs = msSince(t0);
 
@@ -576,6 +656,8 @@ int runEditor(EditorOptions const& options) {
             std::printf("ui-test: all checks passed\n");
         }
     }
+
+    sessions.endCleanly();
 
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();

@@ -36,6 +36,7 @@ struct EditorState {
     // --- the scene being looked at ------------------------------------------------------
     std::string sceneSource;      // "default" or the glTF path
     Bounds sceneBounds;
+    std::size_t sceneTriangles = 0;
     glm::vec3 orbitCenter{0.0f};  // lights orbit around this point when animated
     std::vector<PointLight> lights;  // as edited; animation moves a copy, never these
     LightAnimation animation;

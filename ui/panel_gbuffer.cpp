@@ -134,7 +134,7 @@ std::optional<glm::ivec2> viewerImage(ViewerState& v, unsigned texture, glm::ive
         v.center = p - mouseFromCentre / (glm::vec2(full.x, full.y) * k);
     }
     if (ImGui::IsItemActive() && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
-        v.center -= glm::vec2(io.MouseDelta.x / full.x, io.MouseDelta.y / full.y) * (v.zoom > 0 ? 1.0f : 0.0f);
+        v.center -= glm::vec2(io.MouseDelta.x / full.x, io.MouseDelta.y / full.y);
     if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
         v.zoom = 1.0f;
         v.center = glm::vec2(0.5f);

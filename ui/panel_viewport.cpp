@@ -50,7 +50,8 @@ void drawHeatLegend(ImVec2 imageMin, ImVec2 imageMax, DebugView view) {
 
 }  // namespace
 
-void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigned texture, glm::ivec2 textureSize) {
+void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigned texture, glm::ivec2 textureSize,
+                       std::optional<glm::vec2> selectedLight) {
     state.hovered = false;
     state.hoverPixel.reset();
     state.clickPixel.reset();
@@ -107,6 +108,14 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigne
                                             "no frame yet");
     }
 
+    if (selectedLight && texture != 0) {
+        ImVec2 const c(origin.x + selectedLight->x * avail.x, origin.y + selectedLight->y * avail.y);
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        dl->PushClipRect(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), true);
+        dl->AddCircle(c, 11.0f, IM_COL32(0, 0, 0, 200), 24, 3.0f);
+        dl->AddCircle(c, 11.0f, IM_COL32(255, 230, 80, 255), 24, 1.5f);
+        dl->PopClipRect();
+    }
     if (settings.view == DebugView::Heatmap || settings.view == DebugView::TileLights)
         drawHeatLegend(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), settings.view);
 

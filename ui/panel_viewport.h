@@ -23,6 +23,9 @@ struct ViewportState {
 };
 
 // texture: the renderer's final image (0 while the targets are 0x0); textureSize its size.
-void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigned texture, glm::ivec2 textureSize);
+// selectedLight: where the selected light's centre falls in the image (0..1, top-left origin),
+// when it is in front of the camera; a ring marks it so a click on a cube visibly selects it.
+void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigned texture, glm::ivec2 textureSize,
+                       std::optional<glm::vec2> selectedLight = std::nullopt);
 
 }  // namespace gbl::ui

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <limits>
 #include <algorithm>
 #include <initializer_list>
 #include <sstream>
@@ -129,11 +130,13 @@ float number(json const& j, std::string const& field, Bound bound = Bound::Any) 
                              : bound == Bound::Positive  ? "must be a finite number > 0"
                                                          : "must be a finite number";
     if (!j.is_number()) fail(field, std::string(want) + " (got " + typeName(j) + ")");
-    // Checked after the narrowing to float: 1e300 is a finite double but an infinite float.
-    float const v = j.get<float>();
-    if (!std::isfinite(v) || (bound == Bound::NonNegative && v < 0.0f) || (bound == Bound::Positive && v <= 0.0f))
+    // The renderer works in float: 1e300 is a finite double but no finite float (and narrowing
+    // it would be undefined behaviour), so the range is checked in double first.
+    double const d = j.get<double>();
+    if (!std::isfinite(d) || std::abs(d) > double(std::numeric_limits<float>::max()) ||
+        (bound == Bound::NonNegative && d < 0.0) || (bound == Bound::Positive && float(d) <= 0.0f))
         fail(field, std::string(want) + " (got " + j.dump() + ")");
-    return v;
+    return float(d);
 }
 
 float numberIn(json const& j, std::string const& field, float lo, float hi) {

@@ -22,8 +22,9 @@ struct Arity {
 constexpr Arity kCommands[] = {
     {"frames", 1}, {"set", 2}, {"light", 3}, {"select", 1}, {"click-light", 1}, {"frame-scene", 0},
     {"resize", 2}, {"capture", 1}, {"screenshot", 1}, {"measure", 1}, {"expect-windows", 0},
-    {"expect-different", 3}, {"expect-same", 3}, {"expect-message", -1}, {"expect-no-message", 0},
-    {"expect-selected", 1}, {"expect-lights", 1}, {"expect-no-gl-errors", 0}, {"expect-mode-used", 1}, {"inspect", 2}, {"expect-breakdown-sums", 1}, {"expect-smaller", 2}, {"expect-log", -1}, {"print", -1},
+    {"expect-different", 3}, {"expect-pixels-differ", 3}, {"expect-same", 3}, {"expect-message", -1}, {"expect-no-message", 0},
+    {"expect-selected", 1}, {"expect-lights", 1}, {"expect-no-gl-errors", 0}, {"expect-mode-used", 1}, {"inspect", 2}, {"expect-breakdown-sums", 1}, {"expect-smaller", 2}, {"expect-log", -1}, {"print", -1}, {"save-session", 1}, {"open-session", 1}, {"open-bad-session", 1},
+    {"undo", 0}, {"redo", 0}, {"expect-recovery-offered", 0}, {"recover", 0},
 };
 
 std::string rest(std::vector<std::string> const& words, std::size_t from) {
@@ -35,6 +36,18 @@ std::string rest(std::vector<std::string> const& words, std::size_t from) {
 float number(std::string const& s) {
     // strtof accepts "nan" and "inf": scripts use them to test that bad input is refused.
     return std::strtof(s.c_str(), nullptr);
+}
+
+long pixelsDiffering(FloatImage const& a, FloatImage const& b) {
+    if (a.width != b.width || a.height != b.height || a.channels != b.channels) return long(a.width) * a.height;
+    long n = 0;
+    for (std::size_t p = 0; p < a.pixels.size(); p += std::size_t(a.channels)) {
+        bool differs = false;
+        for (int c = 0; c < a.channels; ++c)
+            differs |= std::abs(a.pixels[p + std::size_t(c)] - b.pixels[p + std::size_t(c)]) > 1.5f / 255.0f;
+        n += differs ? 1 : 0;
+    }
+    return n;
 }
 
 double meanDifference(FloatImage const& a, FloatImage const& b) {
@@ -103,6 +116,13 @@ void UiScript::step(ScriptHost& host) {
 
 void UiScript::run(Command const& c, ScriptHost& host) {
     auto const& w = c.words;
+    // Session commands need the editor's session support; without it they fail, never crash.
+    bool const sessionCommand = w[0] == "save-session" || w[0] == "open-session" || w[0] == "open-bad-session" ||
+                                w[0] == "undo" || w[0] == "redo" || w[0] == "expect-recovery-offered" ||
+                                w[0] == "recover";
+    if (sessionCommand && !(host.openSession && host.saveSession && host.undo && host.redo && host.recoveryOffered &&
+                            host.acceptRecovery))
+        return check(false, c, "this editor build has no session support wired in");
     EditorState& s = host.state;
     std::string const& cmd = w[0];
 
@@ -189,6 +209,11 @@ void UiScript::run(Command const& c, ScriptHost& host) {
         char detail[96];
         std::snprintf(detail, sizeof detail, "mean difference %.6f", d);
         check(ok, c, detail);
+    } else if (cmd == "expect-pixels-differ") {
+        auto a = captures_.find(w[1]), b = captures_.find(w[2]);
+        if (a == captures_.end() || b == captures_.end()) return check(false, c, "capture missing");
+        long const n = pixelsDiffering(a->second, b->second);
+        check(n >= std::atol(w[3].c_str()), c, std::to_string(n) + " pixels differ");
     } else if (cmd == "expect-message") {
         std::string const text = rest(w, 1);
         check(s.lightsPanel.message.find(text) != std::string::npos, c, "message is \"" + s.lightsPanel.message + "\"");
@@ -234,6 +259,23 @@ void UiScript::run(Command const& c, ScriptHost& host) {
         bool found = false;
         for (auto const& line : s.log.lines) found |= line.find(text) != std::string::npos;
         check(found, c, found ? std::string() : "no log line contains it");
+    } else if (cmd == "save-session") {
+        auto const error = host.saveSession(w[1]);
+        check(!error, c, error.value_or(""));
+    } else if (cmd == "open-session") {
+        auto const error = host.openSession(w[1]);
+        check(!error, c, error.value_or(""));
+    } else if (cmd == "open-bad-session") {
+        auto const error = host.openSession(w[1]);
+        check(bool(error), c, error ? "refused: " + *error : "the file was accepted");
+    } else if (cmd == "undo") {
+        host.undo();
+    } else if (cmd == "redo") {
+        host.redo();
+    } else if (cmd == "expect-recovery-offered") {
+        check(host.recoveryOffered(), c, "");
+    } else if (cmd == "recover") {
+        host.acceptRecovery();
     } else if (cmd == "print") {
         std::printf("ui-test: %s\n", rest(w, 1).c_str());
     }

@@ -19,6 +19,7 @@
 //   expect-windows              every editor window exists, is visible and has a size
 //   expect-different A B MIN    mean |A - B| per channel (0..1) at least MIN
 //   expect-same A B MAX         mean |A - B| per channel at most MAX
+//   expect-pixels-differ A B N  at least N pixels differ by more than one 8-bit step
 //   expect-message TEXT         the Lights panel's refusal message contains TEXT
 //   expect-no-message           ... and is empty
 //   expect-selected I           light I is selected
@@ -27,6 +28,12 @@
 //   expect-mode-used NAME       the last frame ran this lighting mode (no silent fallback)
 //   expect-smaller A B          capture A is narrower and lower than capture B
 //   expect-log TEXT             some log line contains TEXT
+//   save-session FILE           File > Save as (expect-ok: the check fails when saving fails)
+//   open-session FILE           File > Open; fails the check when the file is refused
+//   open-bad-session FILE       File > Open of a file that must be refused (editor keeps its state)
+//   undo / redo                 Ctrl+Z / Ctrl+Y
+//   expect-recovery-offered     a previous run's autosave is offered (after an unclean exit)
+//   recover                     accept that offer
 //   print TEXT
 #pragma once
 
@@ -46,12 +53,18 @@ namespace gbl::ui {
 struct ScriptHost {
     EditorState& state;
     Renderer& renderer;
-    std::function<RgbImage()> readWindow;
-    std::function<void(int, int)> resizeWindow;
-    std::function<std::string(EditorWindow)> windowProblem;  // empty when the window is visible
-    std::function<void(glm::ivec2)> clickViewport;           // as a click on that viewport pixel
-    std::function<void()> frameScene;
-    std::function<std::vector<PointLight>(int)> defaultLights;  // empty function: not the default scene
+    std::function<RgbImage()> readWindow{};
+    std::function<void(int, int)> resizeWindow{};
+    std::function<std::string(EditorWindow)> windowProblem{};  // empty when the window is visible
+    std::function<void(glm::ivec2)> clickViewport{};           // as a click on that viewport pixel
+    std::function<void()> frameScene{};
+    std::function<std::vector<PointLight>(int)> defaultLights{};  // empty function: not the default scene
+    std::function<std::optional<std::string>(std::string const&)> openSession{};  // error sentence or nullopt
+    std::function<std::optional<std::string>(std::string const&)> saveSession{};
+    std::function<void()> undo{};
+    std::function<void()> redo{};
+    std::function<bool()> recoveryOffered{};
+    std::function<void()> acceptRecovery{};
 };
 
 class UiScript {
