@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
     app.add_option("--ui-test", editor.uiTestScript, "Run a UI test script and exit 0 when every check passes");
     app.add_option("--gl", editor.glLimit, "Pretend the context is at most this OpenGL version, e.g. 3.3");
     app.add_flag("--no-vsync", noVsync, "Render as fast as possible");
+    app.add_flag("--allow-outside-uris", editor.allowOutsideUris, "Let glTF files read files outside their folder");
 
     gbl::RenderOptions renderOptions;
     CLI::App* render = app.add_subcommand("render", "Render one frame headlessly and write every intermediate image");

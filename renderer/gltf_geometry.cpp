@@ -68,7 +68,9 @@ void generateTangents(MeshData& mesh) {
         glm::vec3 t = tan[i] - n * glm::dot(n, tan[i]);  // Gram-Schmidt against the normal
         float const len = glm::length(t);
         t = (len > 1e-6f && std::isfinite(len)) ? t / len : perpendicular(n);
-        float const w = glm::dot(glm::cross(n, t), bit[i]) < 0.0f ? -1.0f : 1.0f;
+        // glTF's bitangent points up the image, against dP/dv (its v grows downwards), as in
+        // the TANGENT data of files such as WaterBottle and Avocado.
+        float const w = glm::dot(glm::cross(n, t), bit[i]) > 0.0f ? -1.0f : 1.0f;
         v.tangent = glm::vec4(t, w);
     }
 }

@@ -11,9 +11,11 @@ namespace gbl {
 void generateFlatNormals(MeshData& mesh);
 
 // Per-triangle dP/du accumulated at each vertex, then made orthogonal to the vertex normal.
-// tangent.w is chosen so that cross(normal, tangent.xyz) * w points along dP/dv, the
-// convention mesh_builder.h documents and the normal-mapping shader relies on. Vertices whose
-// triangles have degenerate UVs get any unit vector perpendicular to the normal.
+// tangent.w is chosen so that cross(normal, tangent.xyz) * w points along -dP/dv: glTF's v
+// grows down the image while a normal map's +Y (green) points up it, so this is the handedness
+// of the TANGENT data glTF files carry (the shader treats both alike). Note mesh_builder.h's
+// procedural meshes use +dP/dv with their own textures. Vertices whose triangles have
+// degenerate UVs get any unit vector perpendicular to the normal.
 void generateTangents(MeshData& mesh);
 
 }  // namespace gbl

@@ -282,6 +282,8 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
 
 std::vector<std::string> Renderer::reloadChangedShaders() { return impl_->shaders.reloadChanged(); }
 
+float Renderer::lightCubeHalfSize() const { return impl_->lightCubeHalfSize(); }
+
 std::uint64_t Renderer::glErrorCount() const { return impl_->glErrors; }
 
 void Renderer::drawView(ViewParams const& params, Camera const& camera, ViewTarget& target) {

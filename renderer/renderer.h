@@ -123,6 +123,9 @@ public:
     // program rebuilt or failed; a failed build keeps the last good program.
     std::vector<std::string> reloadChangedShaders();
 
+    // Half the edge of the light cubes, in world units (scaled to the scene; picking uses it).
+    float lightCubeHalfSize() const;
+
     // Errors reported by the GL since the renderer was created.
     std::uint64_t glErrorCount() const;
 

@@ -1,4 +1,5 @@
 // glTF loader on the CPU: the shared sample models, handcrafted bad files, mappings, progress.
+#include "gltf_geometry.h"
 #include "gltf_loader.h"
 #include "gltf_mapping.h"
 #include "light_math.h"
@@ -187,6 +188,34 @@ TEST(GltfSharedModels, NormalTangentTestHasNormalMapsAndTangents) {
     EXPECT_GT(normalMapped, 0);
 }
 
+// Generated tangents must have the handedness of the TANGENT data artists' tools write, since
+// the shader treats both alike: regenerate them for normal-mapped models that carry their own
+// and compare. A flipped w would turn every bump of NormalTangentTest into a mirrored one.
+TEST(GltfSharedModels, GeneratedTangentsMatchTheFilesOwn) {
+    SKIP_WITHOUT_SHARED_MODELS();
+    for (char const* model : {"WaterBottle/WaterBottle.gltf", "Avocado/Avocado.gltf"}) {
+        SCOPED_TRACE(model);
+        SceneData const s = loadOk(sharedModel(model));
+        std::size_t compared = 0, sameHand = 0, sameDirection = 0;
+        for (auto const& m : s.meshes) {
+            if (m.material < 0 || s.materials[std::size_t(m.material)].normalTexture < 0) continue;
+            MeshData generated = m;
+            generateTangents(generated);
+            for (std::size_t i = 0; i < m.vertices.size(); ++i) {
+                glm::vec4 const a = m.vertices[i].tangent, b = generated.vertices[i].tangent;
+                ++compared;
+                sameHand += a.w == b.w;
+                sameDirection += glm::dot(glm::vec3(a), glm::vec3(b)) > 0.7f;  // within about 45 degrees
+            }
+        }
+        ASSERT_GT(compared, 100u);
+        // Mirrored UV islands and seams make a few vertices ambiguous; a wrong convention makes
+        // nearly all disagree, so 90% separates the two cases with room to spare.
+        EXPECT_GT(double(sameHand), 0.9 * double(compared));
+        EXPECT_GT(double(sameDirection), 0.9 * double(compared));
+    }
+}
+
 TEST(GltfSharedModels, AvocadoTinyScaleIsFramedAndLitAtItsScale) {
     SKIP_WITHOUT_SHARED_MODELS();
     SceneData const s = loadOk(sharedModel("Avocado/Avocado.gltf"));
@@ -277,10 +306,11 @@ TEST(GltfLoader, EmbeddedTexturesDecodeExactlyAndNormalMapsGetTangents) {
     // metallic 0, roughness 0.5: (1 - 0.5)^2 * 0.5
     EXPECT_FLOAT_EQ(m.specularFactor, 0.125f);
     // UVs (0,1) (1,1) (0,0) on (0,0,0) (1,0,0) (0,1,0): u grows along +X, v along -Y.
-    // tangent = dP/du = +X; cross(N, T) = +Y points against dP/dv, so w = -1.
+    // tangent = dP/du = +X; the bitangent must point up the image (+Y, against dP/dv, where
+    // the normal map's green points) and cross(N, T) = +Y already does, so w = +1.
     for (auto const& v : s.meshes[0].vertices) {
         EXPECT_NEAR(glm::distance(glm::vec3(v.tangent), glm::vec3(1, 0, 0)), 0.0f, 1e-5f);
-        EXPECT_EQ(v.tangent.w, -1.0f);
+        EXPECT_EQ(v.tangent.w, 1.0f);
     }
 }
 

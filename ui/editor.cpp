@@ -13,9 +13,11 @@
 #include "light_math.h"
 #include "light_pick.h"
 #include "panel_pipeline.h"
+#include "panel_scene_loading.h"
 #include "pixel_breakdown.h"
 #include "renderer.h"
 #include "renderer_impl.h"
+#include "scene_loading.h"
 #include "screenshot.h"
 #include "session_controller.h"
 #include "ui_script.h"
@@ -110,52 +112,25 @@ bool sameView(ViewParams const& a, ViewParams const& b) {
 
 // --- scene set-up --------------------------------------------------------------------------
 
-// Loads a glTF file (or builds the default scene when path is empty), uploads it and resets the
-// scene-dependent state: lights, bounds, orbit centre and a camera framing it. On failure the
-// current scene and state stay as they were and an error sentence is returned.
-std::optional<std::string> loadScene(std::optional<std::string> const& path, int defaultLightCount, EditorState& state,
-                                     Renderer& renderer) {
-    SceneData scene;
-    std::vector<PointLight> lights;
-    if (path) {
-        GltfLoadResult result = loadGltf(*path);
-        if (!result.scene) return result.error;
-        scene = std::move(*result.scene);
-        lights = scene.lights;
-        if (lights.empty()) {
-            // A model without lights would be black: light it with the default rig.
-            lights = makeDefaultLights(defaultLightCount);
-            Bounds const b = scene.bounds();
-            float const s = std::max(b.radius(), 1e-3f) / 16.0f;  // default lights fit a ~33-unit courtyard
-            for (auto& l : lights) {
-                l.position = b.center() + (l.position - defaultSceneCenter()) * s;
-                // Scale the fall-off with the scene so each light still covers a similar share.
-                l.kl /= s;
-                l.kq /= s * s;
-            }
-        }
-    } else {
-        scene = makeDefaultScene({});
-        lights = makeDefaultLights(defaultLightCount);
-    }
-    if (auto error = renderer.setScene(scene)) return *error;
-    for (auto const& w : scene.warnings) ui::logMessage(state.log, scene.source + ": " + w);
-    state.lights = std::move(lights);
-    state.sceneSource = scene.source;
-    state.sceneBounds = scene.bounds();
-    state.sceneTriangles = scene.triangleCount();
-    state.orbitCenter = path ? state.sceneBounds.center() : defaultSceneCenter();
-    state.animation.time = 0.0f;
-    if (scene.camera) {
-        state.camera = *scene.camera;
-        ui::resetTargetAhead(state.rig, state.camera, glm::length(state.camera.position - state.sceneBounds.center()));
-    } else {
-        ui::frameBounds(state.rig, state.camera, state.sceneBounds);
-    }
-    state.lightsPanel.selected = state.lights.empty() ? -1 : 0;
-    ui::logMessage(state.log, "scene " + scene.source + ": " + std::to_string(scene.triangleCount()) + " triangles, " +
-                                  std::to_string(state.lights.size()) + " lights");
-    return std::nullopt;
+// Loads a glTF file (or builds the default scene when path is empty) on this thread and installs
+// it (ui/scene_loading.h, installScene). Start-up and sessions use it; File > Open, drops and
+// scripts load on a worker instead (updateSceneLoading). On failure the current scene and
+// state stay as they were and an error sentence is returned.
+std::optional<std::string> loadScene(std::optional<std::string> const& path, int defaultLightCount, bool allowOutsideUris,
+                                     EditorState& state, Renderer& renderer) {
+    if (!path) return ui::installScene(makeDefaultScene({}), false, defaultLightCount, state, renderer);
+    GltfLoadOptions gltfOptions;
+    gltfOptions.allowOutsideUris = allowOutsideUris;
+    GltfLoadResult result = loadGltf(*path, gltfOptions);
+    if (!result.scene) return result.error;
+    return ui::installScene(*result.scene, true, defaultLightCount, state, renderer);
+}
+
+// GLFW's drop callback has no closure: the window's user pointer is the loading state.
+void onFilesDropped(GLFWwindow* window, int count, char const** paths) {
+    auto* loading = static_cast<ui::SceneLoadingState*>(glfwGetWindowUserPointer(window));
+    if (!loading) return;
+    for (int i = 0; i < count; ++i) loading->dropped.emplace_back(paths[i]);
 }
 
 // --- per-frame pieces ----------------------------------------------------------------------
@@ -178,7 +153,7 @@ void pickLightAt(EditorState& state, Renderer& renderer, std::span<PointLight co
         // A little past the surface so a cube resting on it is still hit.
         if (s.covered) maxDistance = glm::length(glm::vec3(s.position) - state.camera.position) * 1.001f + 1e-3f;
     }
-    int const hit = ui::pickLight(ray, drawn, renderer.impl().lightCubeHalfSize(), maxDistance);
+    int const hit = ui::pickLight(ray, drawn, renderer.lightCubeHalfSize(), maxDistance);
     if (hit >= 0) {
         state.lightsPanel.selected = hit;
         state.lightsPanel.message.clear();
@@ -248,10 +223,13 @@ struct EditRequest {
     bool redo = false;
 };
 
-EditRequest drawMainMenu(EditorState& state, GlCaps const& caps, ui::SessionController& sessions) {
+EditRequest drawMainMenu(EditorState& state, GlCaps const& caps, ui::SessionController& sessions,
+                         ui::SceneLoadingState& loading) {
     EditRequest edit;
     if (!ImGui::BeginMainMenuBar()) return edit;
     if (ImGui::BeginMenu("File")) {
+        ui::drawSceneMenuItems(loading);
+        ImGui::Separator();
         ui::drawSessionMenuItems(sessions.panel);
         ImGui::Separator();
         if (ImGui::MenuItem("Quit")) state.quitRequested = true;
@@ -390,14 +368,14 @@ int runEditor(EditorOptions const& options) {
         return 1;
     }
     int const defaultLightCount = options.lightCount.value_or(32);
-    if (auto error = loadScene(options.scenePath, defaultLightCount, state, *renderer)) {
+    if (auto error = loadScene(options.scenePath, defaultLightCount, options.allowOutsideUris, state, *renderer)) {
         std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
         return 2;
     }
     ui::SceneLoader const sceneLoader = [&](std::string const& scene, int lightCount) {
         std::optional<std::string> path;
         if (scene != "default") path = scene;
-        return loadScene(path, lightCount, state, *renderer);
+        return loadScene(path, lightCount, options.allowOutsideUris, state, *renderer);
     };
     // Crash recovery for interactive runs. Unattended runs (screenshots, UI tests) neither
     // offer nor leave autosaves unless a test asks for it with GBL_RECOVERY_DIR.
@@ -409,11 +387,18 @@ int runEditor(EditorOptions const& options) {
     if (options.sessionPath) {
         if (auto error = sessions.openSession(*options.sessionPath, state, sceneLoader)) {
             std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
+            sessions.endCleanly();  // a refused file is a clean exit, not a crash to recover from
             return 2;
         }
     }
     if (caps.computeShaders == false)
         ui::logMessage(state.log, caps.tiledUnavailableReason());
+    // Scenes opened from the menu, by drag-and-drop or by scripts load on a worker thread.
+    ui::SceneLoadingState loading;
+    loading.allowOutsideUris = options.allowOutsideUris;
+    if (options.scenePath) ui::rememberRecentScene(loading, *options.scenePath);
+    glfwSetWindowUserPointer(window, &loading);
+    glfwSetDropCallback(window, onFilesDropped);
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -438,6 +423,7 @@ int runEditor(EditorOptions const& options) {
     int const screenshotFrames = options.frames > 0 ? options.frames : 5;
 
     ui::ScriptHost host{.state = state, .renderer = *renderer};
+    host.sceneLoading = &loading;
     host.windowProblem = windowProblem;
     host.readWindow = [window] {
         int w = 0, h = 0;
@@ -454,8 +440,20 @@ int runEditor(EditorOptions const& options) {
     host.undo = [&] { sessions.undo(state); };
     host.redo = [&] { sessions.redo(state); };
     host.recoveryOffered = [&] { return sessions.panel.recoveryOffer.has_value(); };
+    host.autosaves = [&] { return sessions.autosaves(); };
+    host.exportAll = [&](std::string const& dir) {
+        return ui::SessionController::exportAll(
+            dir, *renderer, FrameExport{state.camera, drawn, state.pipeline, state.stats.last, state.sceneTriangles, {}});
+    };
+    host.exportViewer = [&](int viewer, bool raw, std::string const& path) {
+        return ui::SessionController::exportViewer(viewer, raw, path, state, *renderer);
+    };
     host.acceptRecovery = [&] {
         if (auto error = sessions.restoreRecovery(state, sceneLoader)) ui::logMessage(state.log, *error, true);
+    };
+    host.windowShown = [](std::string const& name) {
+        ImGuiWindow const* w = ImGui::FindWindowByName(name.c_str());
+        return w && w->Active && !w->Hidden;
     };
 
     while (!glfwWindowShouldClose(window) && !state.quitRequested) {
@@ -475,6 +473,9 @@ int runEditor(EditorOptions const& options) {
         auto finishIfMeasuring = [&] {
             if (measuring) glFinish();
         };
+
+        // A finished load becomes the scene before this frame renders; requested ones start.
+        ui::updateSceneLoading(loading, defaultLightCount, state, *renderer);
 
         // --- the deferred frame, at the size the viewport had last frame --------------------
         if (state.viewport.size != glm::ivec2(renderer->width(), renderer->height()))
@@ -549,7 +550,7 @@ int runEditor(EditorOptions const& options) {
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
-        EditRequest const edit = drawMainMenu(state, caps, sessions);
+        EditRequest const edit = drawMainMenu(state, caps, sessions, loading);
         ui::beginLayout(state.layout);
         ui::drawLightsPanel(state.lightsPanel, state.lights, state.animation, state.sceneBounds);
         ui::drawPipelinePanel(state.pipeline, caps);
@@ -559,6 +560,7 @@ int runEditor(EditorOptions const& options) {
         ui::drawPixelInspectorPanel(state.inspector);
         ui::drawStatsPanel(state.stats, caps, int(state.lights.size()));
         ui::drawLogPanel(state.log);
+        ui::drawSceneLoadingUi(loading);
 
         // What the panels asked for.
         bool const keyboardFree = !io.WantTextInput;
@@ -589,6 +591,17 @@ int runEditor(EditorOptions const& options) {
                           glfwGetKey(window, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
         bool const zPressed = keys.pressed(window, GLFW_KEY_Z);
         bool const yPressed = keys.pressed(window, GLFW_KEY_Y);
+        bool const sPressed = keys.pressed(window, GLFW_KEY_S);
+        bool const oPressed = keys.pressed(window, GLFW_KEY_O);
+        if (keyboardFree && ctrl && sPressed) sessions.panel.saveRequested = true;
+        // Ctrl+O opens a session, Ctrl+Shift+O a scene.
+        bool const shift = glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
+                           glfwGetKey(window, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+        if (keyboardFree && ctrl && shift && oPressed)
+            ui::openSceneDialog(loading, loading.recent.empty() ? std::string() : loading.recent.front());
+        if (keyboardFree && ctrl && !shift && oPressed)
+            ui::openSessionDialog(sessions.panel, ui::SessionDialog::Open,
+                                  sessions.panel.currentPath.empty() ? "session.json" : sessions.panel.currentPath);
         if (edit.undo || (keyboardFree && ctrl && zPressed)) sessions.undo(state);
         if (edit.redo || (keyboardFree && ctrl && yPressed)) sessions.redo(state);
         // A held slider is one edit: it becomes an undo step when released.
@@ -645,8 +658,14 @@ int runEditor(EditorOptions const& options) {
         }
     }
 
+    // Stop a load still running (it ends at its next progress report) before the renderer goes.
+    loading.job.reset();
+    glfwSetWindowUserPointer(window, nullptr);
+
     if (script) {
-        if (!script->finished()) {
+        if (script->skipped()) {
+            std::printf("ui-test: skipped\n");
+        } else if (!script->finished()) {
             std::printf("ui-test FAIL: the window closed before the script ended\n");
             exitCode = 1;
         } else if (script->failures() > 0) {

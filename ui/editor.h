@@ -15,6 +15,7 @@ struct EditorOptions {
     int height = 900;
     std::optional<std::string> sessionPath;     // session file to open (issue 6)
     std::optional<std::string> uiTestScript;    // run a UI test script (see ui/ui_script.h), exit 0 if it passes
+    bool allowOutsideUris = false;              // glTF files may read files outside their folder
     std::string glLimit;                        // "3.3": pretend the context is at most that version
     bool vsync = true;                          // off for screenshots, tests and measurements
 };

@@ -152,27 +152,15 @@ void SessionController::handle(SessionRequest const& request, EditorState& state
         err = saveSession(request.path, state);
         done = "saved session " + request.path;
         break;
-    case SessionRequestKind::ExportAll: {
-        std::error_code ec;
-        fs::create_directories(request.path, ec);
-        if (ec)
-            err = "cannot create the folder " + request.path + ": " + ec.message();
-        else if (renderer.width() <= 0 || renderer.height() <= 0)
-            err = "nothing to export: the viewport is 0x0";
-        else
-            err = exportFrame(renderer, frame, request.path);
+    case SessionRequestKind::ExportAll:
+        err = exportAll(request.path, renderer, frame);
         done = "exported the frame to " + request.path;
         break;
-    }
     case SessionRequestKind::ExportViewerPng:
-    case SessionRequestKind::ExportViewerExr: {
-        std::size_t const i = std::size_t(std::clamp(request.viewer, 0, int(state.gbuffer.viewers.size()) - 1));
-        ViewerState const& v = state.gbuffer.viewers[i];
-        err = request.kind == SessionRequestKind::ExportViewerPng ? exportViewerPng(renderer, v, state.camera, request.path)
-                                                                  : exportViewerExr(renderer, v.kind, request.path);
-        done = "exported the " + std::string(kViewerNames[i]) + " viewer to " + request.path;
+    case SessionRequestKind::ExportViewerExr:
+        err = exportViewer(request.viewer, request.kind == SessionRequestKind::ExportViewerExr, request.path, state, renderer);
+        done = "exported a viewer to " + request.path;
         break;
-    }
     case SessionRequestKind::Restore:
         err = restoreRecovery(state, load);
         break;
@@ -186,6 +174,21 @@ void SessionController::handle(SessionRequest const& request, EditorState& state
     else if (!done.empty())
         logMessage(state.log, done);
     finishSessionRequest(panel, err);
+}
+
+std::optional<std::string> SessionController::exportAll(std::string const& dir, Renderer& renderer, FrameExport const& frame) {
+    if (renderer.width() <= 0 || renderer.height() <= 0) return std::string("nothing to export: the viewport is 0x0");
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec) return "cannot create the folder " + dir + ": " + ec.message();
+    return exportFrame(renderer, frame, dir);
+}
+
+std::optional<std::string> SessionController::exportViewer(int viewer, bool raw, std::string const& path,
+                                                           EditorState const& state, Renderer& renderer) {
+    if (viewer < 0 || viewer >= int(state.gbuffer.viewers.size())) return "there is no viewer " + std::to_string(viewer);
+    ViewerState const& v = state.gbuffer.viewers[std::size_t(viewer)];
+    return raw ? exportViewerExr(renderer, v.kind, path) : exportViewerPng(renderer, v, state.camera, path);
 }
 
 void SessionController::endCleanly() {

@@ -47,6 +47,11 @@ public:
     void handle(SessionRequest const& request, EditorState& state, Renderer& renderer, FrameExport const& frame,
                 SceneLoader const& load);
 
+    // File > Export all (creates the folder) and the viewer export; error sentence or nullopt.
+    static std::optional<std::string> exportAll(std::string const& dir, Renderer& renderer, FrameExport const& frame);
+    static std::optional<std::string> exportViewer(int viewer, bool raw, std::string const& path, EditorState const& state,
+                                                   Renderer& renderer);
+
     // Writes the recovery session now if a change is pending (used before risky operations
     // and by tests); returns true when a file was written.
     bool autosaveNow(EditorState const& state);

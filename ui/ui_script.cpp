@@ -1,13 +1,19 @@
 // UI test script interpreter.
 #include "ui_script.h"
 
+#include "gl/gl_object.h"
 #include "light_list.h"
 #include "light_math.h"
 
+#include <unistd.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -25,7 +31,59 @@ constexpr Arity kCommands[] = {
     {"expect-different", 3}, {"expect-pixels-differ", 3}, {"expect-same", 3}, {"expect-message", -1}, {"expect-no-message", 0},
     {"expect-selected", 1}, {"expect-lights", 1}, {"expect-no-gl-errors", 0}, {"expect-mode-used", 1}, {"inspect", 2}, {"expect-breakdown-sums", 1}, {"expect-smaller", 2}, {"expect-log", -1}, {"print", -1}, {"save-session", 1}, {"open-session", 1}, {"open-bad-session", 1},
     {"undo", 0}, {"redo", 0}, {"expect-recovery-offered", 0}, {"recover", 0},
+    {"wait-autosave", 1}, {"expect-light", 3}, {"expect-setting", 2}, {"export-all", 1}, {"export-viewer", 3},
+    {"expect-file", 1}, {"wait-log", -1}, {"shader-break", 1}, {"shader-fix", 1}, {"soak-baseline", 0}, {"expect-soak-stable", 2},
 };
+
+double nowSeconds() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// Resident set size of this process in MiB (Linux /proc; 0 where it does not exist).
+double residentMb() {
+    std::ifstream statm("/proc/self/statm");
+    long pages = 0, resident = 0;
+    if (!(statm >> pages >> resident)) return 0.0;
+    return double(resident) * double(::sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+// Reads one field of a light the way the `light` command writes it; nullopt for unknown names.
+std::optional<float> lightField(PointLight const& l, std::string const& f) {
+    if (f == "x") return l.position.x;
+    if (f == "y") return l.position.y;
+    if (f == "z") return l.position.z;
+    if (f == "r") return l.color.r;
+    if (f == "g") return l.color.g;
+    if (f == "b") return l.color.b;
+    if (f == "intensity") return l.intensity;
+    if (f == "kc") return l.kc;
+    if (f == "kl") return l.kl;
+    if (f == "kq") return l.kq;
+    if (f == "threshold") return l.threshold;
+    return std::nullopt;
+}
+
+// Replaces each ${NAME} in `word` by the environment variable; false (and a sentence) when unset.
+bool expandEnvironment(std::string const& word, std::string& out, std::string* error) {
+    out.clear();
+    for (std::size_t i = 0; i < word.size();) {
+        std::size_t const open = word.find("${", i);
+        std::size_t const close = open == std::string::npos ? open : word.find('}', open);
+        if (close == std::string::npos) {
+            out += word.substr(i);
+            break;
+        }
+        std::string const name = word.substr(open + 2, close - open - 2);
+        char const* value = std::getenv(name.c_str());
+        if (!value) {
+            *error = "the environment variable " + name + " is not set";
+            return false;
+        }
+        out += word.substr(i, open - i) + value;
+        i = close + 1;
+    }
+    return true;
+}
 
 std::string rest(std::vector<std::string> const& words, std::size_t from) {
     std::string s;
@@ -83,11 +141,20 @@ std::optional<UiScript> UiScript::load(std::string const& path, std::string* err
         if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
         std::istringstream words(line);
         Command c{number, {}};
-        for (std::string w; words >> w;) c.words.push_back(w);
+        for (std::string w; words >> w;) {
+            std::string expanded;
+            if (!expandEnvironment(w, expanded, error)) {
+                *error = path + ":" + std::to_string(number) + ": " + *error;
+                return std::nullopt;
+            }
+            c.words.push_back(std::move(expanded));
+        }
         if (c.words.empty()) continue;
         Arity const* arity = nullptr;
         for (auto const& a : kCommands)
             if (c.words[0] == a.name) arity = &a;
+        Arity const scene{"", sceneCommandArity(c.words[0])};
+        if (!arity && scene.args != -2) arity = &scene;
         int const given = int(c.words.size()) - 1;
         if (!arity || (arity->args >= 0 && given != arity->args) || (arity->args < 0 && given < 1)) {
             *error = path + ":" + std::to_string(number) + ": " +
@@ -111,10 +178,22 @@ void UiScript::step(ScriptHost& host) {
         --wait_;
         return;
     }
-    while (next_ < commands_.size() && wait_ == 0) run(commands_[next_++], host);
+    if (until_) {
+        if (until_()) {
+            check(true, *untilCommand_, "done");
+        } else if (nowSeconds() > untilDeadline_) {
+            check(false, *untilCommand_, "timed out");
+        } else {
+            return;
+        }
+        until_ = nullptr;
+        untilCommand_.reset();
+    }
+    while (next_ < commands_.size() && wait_ == 0 && !until_) run(commands_[next_++], host);
 }
 
 void UiScript::run(Command const& c, ScriptHost& host) {
+    if (sceneCommandArity(c.words[0]) != -2) return runSceneCommand(c, host);
     auto const& w = c.words;
     // Session commands need the editor's session support; without it they fail, never crash.
     bool const sessionCommand = w[0] == "save-session" || w[0] == "open-session" || w[0] == "open-bad-session" ||
@@ -276,6 +355,87 @@ void UiScript::run(Command const& c, ScriptHost& host) {
         check(host.recoveryOffered(), c, "");
     } else if (cmd == "recover") {
         host.acceptRecovery();
+    } else if (cmd == "wait-autosave") {
+        if (!host.autosaves) return check(false, c, "this editor run has no autosave (set GBL_RECOVERY_DIR)");
+        int const before = host.autosaves();
+        until_ = [&host, before] { return host.autosaves() > before; };
+        untilCommand_ = c;
+        untilDeadline_ = nowSeconds() + number(w[1]);
+    } else if (cmd == "wait-log") {
+        if (w.size() < 3) return check(false, c, "expected SECONDS TEXT");
+        std::string const text = rest(w, 2);
+        LogState const* log = &s.log;
+        until_ = [log, text] {
+            for (auto const& line : log->lines)
+                if (line.find(text) != std::string::npos) return true;
+            return false;
+        };
+        untilCommand_ = c;
+        untilDeadline_ = nowSeconds() + number(w[1]);
+    } else if (cmd == "expect-light") {
+        int const i = std::atoi(w[1].c_str());
+        if (i < 0 || i >= int(s.lights.size())) return check(false, c, "no such light");
+        auto const v = lightField(s.lights[std::size_t(i)], w[2]);
+        if (!v) return check(false, c, "unknown light field");
+        check(*v == number(w[3]), c, "it is " + std::to_string(*v));
+    } else if (cmd == "expect-setting") {
+        std::string const& key = w[1];
+        std::string now;
+        if (key == "mode") now = enumName(kLightingModeNames, s.pipeline.mode);
+        else if (key == "cull") now = enumName(kCullModeNames, s.pipeline.cull);
+        else if (key == "blit") now = enumName(kDepthCopyNames, s.pipeline.depthCopy);
+        else if (key == "view") now = enumName(kDebugViewNames, s.pipeline.view);
+        else if (key == "tonemap") now = enumName(kTonemapNames, s.pipeline.tonemap);
+        else return check(false, c, "unknown setting");
+        check(now == w[2], c, "it is " + now);
+    } else if (cmd == "export-all") {
+        if (!host.exportAll) return check(false, c, "no export in this editor build");
+        auto const error = host.exportAll(w[1]);
+        check(!error, c, error.value_or(""));
+    } else if (cmd == "export-viewer") {
+        if (!host.exportViewer) return check(false, c, "no export in this editor build");
+        int viewer = -1;
+        for (std::size_t i = 0; i < kViewerNames.size(); ++i)
+            if (kViewerNames[i] == w[1]) viewer = int(i);
+        if (viewer < 0 || (w[2] != "png" && w[2] != "exr")) return check(false, c, "expected a viewer name and png or exr");
+        auto const error = host.exportViewer(viewer, w[2] == "exr", w[3]);
+        check(!error, c, error.value_or(""));
+    } else if (cmd == "expect-file") {
+        std::error_code ec;
+        auto const size = std::filesystem::file_size(w[1], ec);
+        check(!ec && size > 0, c, ec ? ec.message() : std::to_string(size) + " bytes");
+    } else if (cmd == "shader-break" || cmd == "shader-fix") {
+        // Only ever a copy of the shaders: editing the source tree would disturb everyone else.
+        char const* dir = std::getenv("GBL_SHADER_DIR");
+        if (!dir || !*dir) return check(false, c, "GBL_SHADER_DIR is not set; refusing to edit the source tree");
+        std::string const path = (std::filesystem::path(dir) / w[1]).string();
+        if (cmd == "shader-break") {
+            std::ifstream in(path);
+            if (!in) return check(false, c, "cannot read " + path);
+            std::string const text((std::istreambuf_iterator<char>(in)), {});
+            brokenShaders_[w[1]] = text;
+            std::ofstream(path) << text << "\n#error broken on purpose by a UI test script\n";
+        } else {
+            auto const it = brokenShaders_.find(w[1]);
+            if (it == brokenShaders_.end()) return check(false, c, "not broken by shader-break");
+            std::ofstream(path) << it->second;
+            brokenShaders_.erase(it);
+        }
+    } else if (cmd == "soak-baseline") {
+        baselineObjects_ = gl::liveObjectCount();
+        baselineRssMb_ = residentMb();
+        std::printf("ui-test: baseline %ld live GL objects, %.1f MB resident\n", baselineObjects_, baselineRssMb_);
+        std::fflush(stdout);
+    } else if (cmd == "expect-soak-stable") {
+        if (baselineObjects_ < 0) return check(false, c, "no soak-baseline before");
+        long const objects = gl::liveObjectCount();
+        double const rss = residentMb();
+        bool const ok = std::abs(objects - baselineObjects_) <= std::atol(w[1].c_str()) &&
+                        rss - baselineRssMb_ <= number(w[2]);
+        char detail[160];
+        std::snprintf(detail, sizeof detail, "GL objects %ld (baseline %ld), resident %.1f MB (baseline %.1f MB)",
+                      objects, baselineObjects_, rss, baselineRssMb_);
+        check(ok, c, detail);
     } else if (cmd == "print") {
         std::printf("ui-test: %s\n", rest(w, 1).c_str());
     }
