@@ -174,7 +174,7 @@ void RendererImpl::drawView(ViewParams const& params, Camera const& camera, View
         target.fbo = gl::Framebuffer::create({&target.texture}, nullptr, "view");
     }
     glBindFramebuffer(GL_FRAMEBUFFER, target.fbo.id());
-    drawViewInto(params, camera, lastSettings, targets.width, targets.height);
+    drawViewInto(params, camera, lastFrame.settings, targets.width, targets.height);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

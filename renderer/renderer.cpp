@@ -109,7 +109,6 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     }
     stats.modeUsed = f.settings.mode;
 
-    lastSettings = f.settings;
     lights.upload(input.lights);
     for (auto const& l : input.lights) stats.lightsShaded += lightRadius(l).radius > 0.0f ? 1 : 0;
 
@@ -169,7 +168,9 @@ FrameStats RendererImpl::render(FrameInput const& input) {
         stats.passes.push_back({name, ms});
         stats.gpuFrameMs += ms;
     }
-    if (fragmentQuery) stats.fragmentInvocations = fragmentQuery.result();
+    // Interactive frames read the count only when it is ready, so they never wait on the GPU.
+    if (fragmentQuery && (input.waitForGpuTimings || fragmentQuery.resultAvailable()))
+        stats.fragmentInvocations = fragmentQuery.result();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     stats.glErrors = collectGlErrors();
     glErrors += stats.glErrors;

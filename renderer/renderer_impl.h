@@ -49,7 +49,6 @@ public:
     GpuTimer timer;
     gl::Query fragmentQuery;    // GL_FRAGMENT_SHADER_INVOCATIONS_ARB when available
     std::uint64_t glErrors = 0;
-    PipelineSettings lastSettings;  // of the last rendered frame, for views drawn after it
 
     // --- passes (renderer/passes.cpp) -------------------------------------------------------
     void geometryPass(FrameContext const& f);

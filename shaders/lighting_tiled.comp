@@ -28,6 +28,8 @@ uniform bool uWriteCoverage;  // write x = lights in the tile, y = lights that l
 // pixel adds its lights in the same order as the full-screen pass.
 #define MAX_LIGHT_WORDS 512
 shared uint sLightMask[MAX_LIGHT_WORDS];
+shared uint sWords[MAX_LIGHT_WORDS];  // indices of the non-empty words of sLightMask, ascending
+shared uint sWordCount;
 shared uint sMinDepthBits;
 shared uint sMaxDepthBits;
 
@@ -75,18 +77,27 @@ void main() {
         vec3 bl = unprojectFar(ndcLo), br = unprojectFar(vec2(ndcHi.x, ndcLo.y));
         vec3 tl = unprojectFar(vec2(ndcLo.x, ndcHi.y)), tr = unprojectFar(ndcHi);
         vec3 centre = (bl + br + tl + tr) * 0.25;
-        vec4 planes[4] = vec4[4](sidePlane(bl, tl, centre), sidePlane(br, tr, centre), sidePlane(bl, br, centre),
-                                 sidePlane(tl, tr, centre));
+        // Four named planes rather than an array: llvmpipe spills indexed arrays to memory.
+        vec3 left = sidePlane(bl, tl, centre).xyz, right = sidePlane(br, tr, centre).xyz;
+        vec3 bottom = sidePlane(bl, br, centre).xyz, top = sidePlane(tl, tr, centre).xyz;
         for (int i = int(local); i < words * 32 && i < uLightCount; i += 256) {
             vec4 positionRadius = texelFetch(uLights, i * 4);
             float r = positionRadius.w;
-            if (r <= 0.0) continue;
             vec3 c = (uView * vec4(positionRadius.xyz, 1.0)).xyz;
             float depth = -c.z;
-            bool touches = depth + r >= minDepth && depth - r <= maxDepth;
-            for (int p = 0; p < 4 && touches; ++p) touches = dot(planes[p].xyz, c) >= -r;
+            bool touches = r > 0.0 && depth + r >= minDepth && depth - r <= maxDepth && dot(left, c) >= -r &&
+                           dot(right, c) >= -r && dot(bottom, c) >= -r && dot(top, c) >= -r;
             if (touches) atomicOr(sLightMask[i >> 5], 1u << uint(i & 31));
         }
+    }
+    memoryBarrierShared();
+    barrier();
+    // The non-empty words, in order, so pixels skip the empty ones (most, for small lights).
+    if (local == 0u) {
+        uint n = 0u;
+        for (int w = 0; w < words; ++w)
+            if (sLightMask[w] != 0u) sWords[n++] = uint(w);
+        sWordCount = n;
     }
     memoryBarrierShared();
     barrier();
@@ -99,7 +110,8 @@ void main() {
         vec3 n = normalize(texelFetch(uNormal, px, 0).xyz);
         vec4 as = texelFetch(uAlbedoSpec, px, 0);
         color = uAmbient * as.rgb;
-        for (int w = 0; w < words; ++w) {
+        for (uint k = 0u; k < sWordCount; ++k) {
+            int w = int(sWords[k]);
             uint bits = sLightMask[w];
             while (bits != 0u) {
                 int b = findLSB(bits);
@@ -118,7 +130,7 @@ void main() {
     if (uShade) imageStore(uLighting, px, geometry ? vec4(color, 1.0) : vec4(0.0));
     if (uWriteCoverage) {
         uint count = 0u;
-        for (int w = 0; w < words; ++w) count += uint(bitCount(sLightMask[w]));
+        for (uint k = 0u; k < sWordCount; ++k) count += uint(bitCount(sLightMask[sWords[k]]));
         imageStore(uCoverage, px, vec4(float(count), lit, 0.0, 0.0));
     }
 }

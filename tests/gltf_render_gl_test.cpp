@@ -35,11 +35,6 @@ constexpr char const* kSize = "160x120";
 fs::path sharedModel(std::string const& relative) { return fs::path(test::sharedGltfDir()) / relative; }
 fs::path localFile(std::string const& name) { return fs::path(test::dataDir()) / "gltf" / name; }
 
-nlohmann::json readJson(fs::path const& p) {
-    std::ifstream f(p);
-    return nlohmann::json::parse(f);
-}
-
 struct Frame {
     bool ok = false;
     std::string output;  // what the command printed, for failure messages
@@ -83,7 +78,7 @@ Frame renderScene(fs::path const& scene, std::string const& name, std::vector<st
     f.albedo = std::move(*albedo);
     f.normal = std::move(*normal);
     f.position = std::move(*position);
-    f.stats = readJson(fs::path(out) / "stats.json");
+    f.stats = test::readJsonFile(fs::path(out) / "stats.json");
     f.ok = f.normal.channels == 4 && f.normal.width * f.normal.height == f.final.width * f.final.height;
     if (!f.ok) ADD_FAILURE() << scene << ": normal.exr is " << f.normal.width << "x" << f.normal.height;
     return f;
@@ -229,7 +224,7 @@ TEST(GltfRender, NormalTangentTestNormalMapChangesTheNormals) {
     // The same mesh, camera (framed from the same bounds) and lights, without the normal map.
     fs::path const copy = test::freshTempDir("gltf_render_ntt_copy");
     for (auto const& e : fs::directory_iterator(source)) fs::copy_file(e.path(), copy / e.path().filename());
-    nlohmann::json doc = readJson(copy / "NormalTangentTest.gltf");
+    nlohmann::json doc = test::readJsonFile((copy / "NormalTangentTest.gltf").string());
     int removed = 0;
     for (auto& m : doc["materials"]) removed += int(m.erase("normalTexture"));
     ASSERT_GT(removed, 0);

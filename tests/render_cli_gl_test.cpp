@@ -14,10 +14,6 @@ using gbl::test::runGbufferLab;
 namespace fs = std::filesystem;
 
 namespace {
-nlohmann::json readJson(fs::path const& p) {
-    std::ifstream f(p);
-    return nlohmann::json::parse(f);
-}
 }  // namespace
 
 TEST(RenderCommand, WritesEveryImageAndJsonFile) {
@@ -28,7 +24,7 @@ TEST(RenderCommand, WritesEveryImageAndJsonFile) {
                           "depth.exr", "depth_linear.exr", "lights.json", "camera.json", "stats.json"})
         EXPECT_TRUE(fs::exists(fs::path(out) / f)) << f;
 
-    auto const stats = readJson(fs::path(out) / "stats.json");
+    auto const stats = test::readJsonFile(fs::path(out) / "stats.json");
     EXPECT_EQ(stats["width"], 160);
     EXPECT_EQ(stats["height"], 90);
     EXPECT_EQ(stats["lights"], 8);
@@ -39,13 +35,13 @@ TEST(RenderCommand, WritesEveryImageAndJsonFile) {
         // A sane time: the first-query quirk of some drivers once reported minutes here.
         EXPECT_LT(stats["gpu_ms"][pass].get<double>(), 60000.0) << pass;
     }
-    auto const lights = readJson(fs::path(out) / "lights.json");
+    auto const lights = test::readJsonFile(fs::path(out) / "lights.json");
     ASSERT_EQ(lights.size(), 8u);
     for (auto const& l : lights) {
         EXPECT_GT(l["radius"].get<double>(), 0.0);
         EXPECT_EQ(l["position"].size(), 3u);
     }
-    auto const cam = readJson(fs::path(out) / "camera.json");
+    auto const cam = test::readJsonFile(fs::path(out) / "camera.json");
     EXPECT_EQ(cam["view"].size(), 4u);
     EXPECT_LT(cam["near"].get<double>(), cam["far"].get<double>());
 
@@ -91,7 +87,7 @@ TEST(RenderCommand, TimeMovesTheLights) {
     std::string const a = test::freshTempDir("render_t0"), b = test::freshTempDir("render_t5");
     ASSERT_EQ(runGbufferLab({"render", "--out", a, "--size", "32x32", "--time", "0"}).exitCode, 0);
     ASSERT_EQ(runGbufferLab({"render", "--out", b, "--size", "32x32", "--time", "5"}).exitCode, 0);
-    auto const la = readJson(fs::path(a) / "lights.json"), lb = readJson(fs::path(b) / "lights.json");
+    auto const la = test::readJsonFile(fs::path(a) / "lights.json"), lb = test::readJsonFile(fs::path(b) / "lights.json");
     EXPECT_NE(la[0]["position"], lb[0]["position"]);
 }
 

@@ -18,11 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-nlohmann::json readJson(fs::path const& p) {
-    std::ifstream f(p);
-    return nlohmann::json::parse(f);
-}
-
 // Largest absolute difference of any channel of any pixel; -1 for different sizes.
 float maxDifference(std::string const& a, std::string const& b) {
     auto const x = readImage(a), y = readImage(b);
@@ -58,8 +53,8 @@ TEST(SessionCli, SavedSessionReproducesTheSameFrame) {
     // renderer on the same driver. Any difference means the session lost or changed a value.
     for (char const* f : {"final.png", "lighting.exr", "position.exr", "depth.exr"})
         EXPECT_EQ(maxDifference(a + "/" + f, b + "/" + f), 0.0f) << f;
-    EXPECT_EQ(readJson(a + "/lights.json"), readJson(b + "/lights.json"));
-    auto const stats = readJson(b + "/stats.json");
+    EXPECT_EQ(test::readJsonFile(a + "/lights.json"), test::readJsonFile(b + "/lights.json"));
+    auto const stats = test::readJsonFile(b + "/stats.json");
     EXPECT_EQ(stats["mode"], "volumes");
     EXPECT_EQ(stats["cull"], "back");
     EXPECT_EQ(stats["blit"], "shader");
@@ -84,7 +79,7 @@ TEST(SessionCli, TheSessionsValuesAreWhatGetsRendered) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_GT(maxDifference(dir + "/a/final.png", dir + "/b/final.png"), 0.1f);
     EXPECT_GT(maxDifference(dir + "/a/position.exr", dir + "/b/position.exr"), 0.1f);  // the camera moved
-    auto const lights = readJson(dir + "/b/lights.json");
+    auto const lights = test::readJsonFile(dir + "/b/lights.json");
     ASSERT_EQ(lights.size(), 8u);
     EXPECT_EQ(lights[0]["name"], "edited");
     EXPECT_FLOAT_EQ(lights[1]["intensity"].get<float>(), s.lights[1].intensity);
@@ -99,7 +94,7 @@ TEST(SessionCli, OptionsOnTheCommandLineOverrideTheSession) {
     auto const r = runGbufferLab({"render", "--out", dir + "/b", "--size", "96x54", "--session", session, "--mode", "quad",
                                   "--blit", "off"});
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    auto const stats = readJson(dir + "/b/stats.json");
+    auto const stats = test::readJsonFile(dir + "/b/stats.json");
     EXPECT_EQ(stats["mode"], "quad");
     EXPECT_EQ(stats["blit"], "off");
     EXPECT_EQ(stats["cull"], "front");  // from the session
@@ -109,7 +104,7 @@ TEST(SessionCli, BadSessionsExitTwoWithOneSentenceNamingTheField) {
     std::string const dir = test::freshTempDir("session_cli_bad");
     std::string const good = dir + "/good.json";
     ASSERT_EQ(runGbufferLab({"render", "--out", dir + "/a", "--size", "64x36", "--lights", "4", "--save-session", good}).exitCode, 0);
-    auto j = readJson(good);
+    auto j = test::readJsonFile(good);
     j["lights"][3]["kq"] = -1.0;
     std::string const bad = dir + "/bad.json";
     std::ofstream(bad) << j.dump(2);

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -32,6 +33,11 @@ CommandResult runGbufferLab(std::vector<std::string> const& args) {
     int const status = pclose(pipe);
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
+}
+
+nlohmann::json readJsonFile(std::string const& path) {
+    std::ifstream f(path);
+    return nlohmann::json::parse(f);
 }
 
 std::string freshTempDir(std::string const& name) {

@@ -1,6 +1,8 @@
 // Runs the built gbuffer-lab binary and captures its exit code and output.
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include <string>
 #include <vector>
 
@@ -13,6 +15,9 @@ struct CommandResult {
 
 // Runs binaryPath() with the arguments (each shell-quoted) and waits for it.
 CommandResult runGbufferLab(std::vector<std::string> const& args);
+
+// Parses a JSON file the command wrote (throws nlohmann's exception when it is not JSON).
+nlohmann::json readJsonFile(std::string const& path);
 
 // A fresh, empty directory under the system temp directory, unique to this test.
 std::string freshTempDir(std::string const& name);
