@@ -7,6 +7,7 @@
 #include "point_light.h"
 #include "renderer_impl.h"
 #include "scene_setup.h"
+#include "session_cli.h"
 
 #include <nlohmann/json.hpp>
 
@@ -100,7 +101,8 @@ std::optional<double> predictedFrameSeconds(std::vector<Result> const& done, Com
 }
 
 Result runCombination(Renderer& renderer, Camera const& camera, std::span<PointLight const> lights,
-                      Combination const& c, BenchOptions const& o, std::vector<Result> const& done) {
+                      PipelineSettings const& base, Combination const& c, BenchOptions const& o,
+                      std::vector<Result> const& done) {
     Result r;
     r.combo = c;
     if (c.mode == LightingMode::Tiled && !renderer.caps().computeShaders) {
@@ -117,7 +119,7 @@ Result runCombination(Renderer& renderer, Camera const& camera, std::span<PointL
         return r;
     }
 
-    PipelineSettings settings;
+    PipelineSettings settings = base;
     settings.mode = c.mode;
     settings.cull = c.cull;
     FrameInput const input{camera, lights, settings, true};
@@ -286,9 +288,10 @@ void addBenchOptions(CLI::App& sub, BenchOptions& o) {
     sub.add_option("--warmup", o.warmup, "Warm-up frames per combination, not measured")->capture_default_str();
     sub.add_option("--budget", o.budgetSeconds, "Wall-clock seconds allowed per combination")->capture_default_str();
     sub.add_option("--radius-scale", o.radiusScale,
-                   "Scale every light's radius: a number, or auto = sqrt(32 / lights) (default scene: 1)")
+                   "Scale every light's radius: a number, or auto = sqrt(32 / lights)")
         ->capture_default_str();
     sub.add_option("--json", o.jsonPath, "Also write the results to this JSON file");
+    sub.add_option("--session", o.sessionPath, "Measure the scene, camera, lights and settings of a session file");
     sub.add_option("--gl", o.glLimit, "Pretend the context is at most this OpenGL version, e.g. 3.3");
 }
 
@@ -330,11 +333,27 @@ int runBench(BenchOptions const& o) {
         if (!probe) return badArgument("cannot write the JSON file " + *o.jsonPath);
     }
 
-    int const maxLights = *std::max_element(o.lights.begin(), o.lights.end());
-    SceneRequest request;
-    request.lightCount = maxLights;
-    auto prepared = prepareScene(request, &error);
-    if (!prepared) return badArgument(error);
+    std::vector<int> counts = o.lights;
+    std::optional<PreparedScene> prepared;
+    PipelineSettings base;
+    if (o.sessionPath) {
+        ui::SessionLoad loaded = ui::loadSession(*o.sessionPath);
+        if (!loaded.session) return badArgument(loaded.error);
+        prepared = prepareSessionScene(*loaded.session, *o.sessionPath, false, &error);
+        if (!prepared) return badArgument(error);
+        base = loaded.session->pipeline;
+        int const available = int(prepared->lights.size());
+        if (!o.lightsGiven) counts = {available};
+        for (int n : counts)
+            if (n > available)
+                return badArgument("--lights " + std::to_string(n) + " is more than the " + std::to_string(available) +
+                                   " lights of " + *o.sessionPath);
+    } else {
+        SceneRequest request;
+        request.lightCount = *std::max_element(counts.begin(), counts.end());
+        prepared = prepareScene(request, &error);
+        if (!prepared) return badArgument(error);
+    }
     auto headless = createHeadlessRenderer(size->width, size->height, o.glLimit, &error);
     if (!headless) {
         std::fprintf(stderr, "gbuffer-lab bench: %s\n", error.c_str());
@@ -344,7 +363,7 @@ int runBench(BenchOptions const& o) {
     if (auto err = renderer.setScene(prepared->scene)) return badArgument(*err);
 
     std::vector<Result> results;
-    for (int n : o.lights) {
+    for (int n : counts) {
         // The default scene's lights do not depend on the count: n lights are a prefix of more.
         std::vector<PointLight> scaled(prepared->lights.begin(), prepared->lights.begin() + n);
         float const scale = autoScale ? (n > 32 ? std::sqrt(32.0f / float(n)) : 1.0f) : fixedScale;
@@ -356,7 +375,7 @@ int runBench(BenchOptions const& o) {
             for (std::size_t ci = 0; ci < (usesCull ? culls.size() : 1); ++ci) {
                 Combination const c{m, usesCull ? culls[ci] : CullMode::Front, usesCull, n, scale};
                 std::fprintf(stderr, "bench: %s with %d lights...\n", comboName(c).c_str(), n);
-                results.push_back(runCombination(renderer, prepared->camera, lights, c, o, results));
+                results.push_back(runCombination(renderer, prepared->camera, lights, base, c, o, results));
             }
         }
     }

@@ -23,9 +23,14 @@ struct BenchOptions {
     // Stretches every light's falloff (Kl / s, Kq / s^2) so radii scale by s: a number, or
     // "auto" for s = sqrt(32 / lights) when lights > 32, which keeps the lit area per light
     // count, and so the lights reaching each pixel, as in the 32-light default scene. 1 = the
-    // default scene's lights unchanged.
-    std::string radiusScale = "1";
+    // default scene's lights unchanged. The default is auto: with fixed radii, every pixel is lit
+    // by more lights as the count grows, which measures overdraw rather than light culling.
+    std::string radiusScale = "auto";
     std::optional<std::string> jsonPath;
+    // A session file: its scene, camera, lights and pipeline settings (mode and cull still come
+    // from --modes/--cull). Without --lights the session's own light count is measured.
+    std::optional<std::string> sessionPath;
+    bool lightsGiven = false;   // --lights was on the command line
     std::string glLimit;        // "3.3" pretends the context is at most that version
 };
 

@@ -45,7 +45,10 @@ int main(int argc, char** argv) {
         return 2;
     }
     if (render->parsed()) return gbl::runRender(renderOptions);
-    if (bench->parsed()) return gbl::runBench(benchOptions);
+    if (bench->parsed()) {
+        benchOptions.lightsGiven = bench->count("--lights") > 0;
+        return gbl::runBench(benchOptions);
+    }
 
     editor.scenePath = scene;
     editor.vsync = !noVsync;

@@ -1,6 +1,8 @@
 // Timer query bookkeeping.
 #include "gpu_timer.h"
 
+#include <algorithm>
+
 namespace gbl {
 
 void GpuTimer::begin(std::string const& pass) {
@@ -8,6 +10,7 @@ void GpuTimer::begin(std::string const& pass) {
     if (f.used == f.slots.size()) f.slots.push_back({pass, gl::Query::create(GL_TIME_ELAPSED, "pass timer")});
     Slot& s = f.slots[f.used++];
     s.name = pass;
+    s.begun = std::chrono::steady_clock::now();
     s.query.begin();
     open_ = true;
 }
@@ -24,8 +27,15 @@ void GpuTimer::end() {
 std::vector<std::pair<std::string, double>> GpuTimer::finishFrame(bool wait) {
     auto read = [](Frame& f) {
         std::vector<std::pair<std::string, double>> out;
-        for (std::size_t i = 0; i < f.used; ++i)
-            out.emplace_back(f.slots[i].name, double(f.slots[i].query.result()) * 1e-6);
+        auto const now = std::chrono::steady_clock::now();
+        for (std::size_t i = 0; i < f.used; ++i) {
+            double const gpuMs = double(f.slots[i].query.result()) * 1e-6;
+            // A pass cannot take longer on the GPU than the wall time from its start to now.
+            // Mesa's llvmpipe sometimes reports the clock's absolute value for the first query
+            // after a read-back; the bound keeps such a value from swamping the statistics.
+            double const wallMs = std::chrono::duration<double, std::milli>(now - f.slots[i].begun).count();
+            out.emplace_back(f.slots[i].name, std::min(gpuMs, wallMs));
+        }
         f.used = 0;
         f.pending = false;
         return out;

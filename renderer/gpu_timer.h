@@ -3,6 +3,7 @@
 
 #include "gl/query.h"
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@ private:
     struct Slot {
         std::string name;
         gl::Query query;
+        std::chrono::steady_clock::time_point begun;
     };
     struct Frame {
         std::vector<Slot> slots;

@@ -75,17 +75,6 @@ void RendererImpl::resizeTargets(int width, int height) {
     height = std::max(height, 0);
     if (auto err = createRenderTargets(width, height, targets))
         throw std::runtime_error("Renderer::resizeTargets(): " + *err);
-    if (targets.empty()) return;
-    // Mesa's llvmpipe reports the clock's absolute value for the first timer query that
-    // covers rendering into a new framebuffer; spend that query on a clear so the first frame's
-    // pass timings are real.
-    timer.begin("warm-up");
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.displayFbo.id());
-    glClearColor(0, 0, 0, 0);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    timer.end();
-    timer.finishFrame(true);
 }
 
 FrameStats RendererImpl::render(FrameInput const& input) {

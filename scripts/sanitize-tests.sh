@@ -21,7 +21,11 @@ for arg in "$@"; do
 done
 
 start=$(date +%s)
-cmake -S "$root" -B "$build" -DGBL_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+# The sanitizer runtimes are linked statically so that LD_PRELOAD (below) can name the GL driver
+# alone: with a shared ASan runtime it would have to be preloaded as well, into every process
+# (bash, xauth and Xvfb under xvfb-run included), whose own leaks would then fail the tests.
+cmake -S "$root" -B "$build" -DGBL_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    "-DCMAKE_EXE_LINKER_FLAGS=-static-libasan -static-libubsan" >/dev/null
 cmake --build "$build" -j"$jobs"
 built=$(date +%s)
 
@@ -32,12 +36,30 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:${UBSAN_OPTIONS:-}"
 export LSAN_OPTIONS="suppressions=$root/tests/lsan.supp:print_suppressions=1:${LSAN_OPTIONS:-}"
 # Mesa's shader cache would persist between runs and make timings depend on history.
 export MESA_SHADER_CACHE_DISABLE=true
+# EGL and GLX dlopen Mesa's driver and dlclose it before exit; its globals are then unmapped and
+# the blocks they pointed to look leaked (2 x 56 bytes per process, with no symbol since the module
+# is gone). Preloading the driver keeps it mapped, so LeakSanitizer sees those blocks as reachable
+# and no suppression is needed.
+driver=$(ls /usr/lib/*/dri/swrast_dri.so /usr/lib/dri/swrast_dri.so 2>/dev/null | head -n 1 || true)
+if [[ -n "$driver" ]]; then
+    export LD_PRELOAD="$driver${LD_PRELOAD:+ $LD_PRELOAD}"
+fi
 
-filter=()
-[[ -n "$labels" ]] && filter=(-L "$labels")
 status=0
 # Two at a time as in scripts/test.sh: llvmpipe renders on the CPU, the instrumented code adds ~2x.
-ctest --test-dir "$build" --output-on-failure -j"$jobs" --timeout 1200 "${filter[@]}" "${ctest_args[@]}" || status=$?
+# The glTF loader's CPU tests run in a second pass with full (slow) unwinding on malloc: the one
+# third-party leak they meet (tests/lsan.supp) is only recognisable with the whole stack, since
+# the fast unwinder stops in libstdc++. GL tests never get slow unwinding: it stalls inside the
+# driver's threads.
+run_ctest() { ctest --test-dir "$build" --output-on-failure -j"$jobs" --timeout 1200 "$@" "${ctest_args[@]}" || status=$?; }
+if [[ -n "$labels" ]]; then
+    run_ctest -L 'gl'
+    run_ctest -L 'cpu' -E '^Gltf'
+else
+    run_ctest -E '^Gltf'
+    run_ctest -L 'gl|ui|fuzz' -R '^Gltf'
+fi
+LSAN_OPTIONS="$LSAN_OPTIONS:fast_unwind_on_malloc=0" run_ctest -L 'cpu' -R '^Gltf'
 end=$(date +%s)
 echo "sanitize-tests: build $((built - start)) s, tests $((end - built)) s, total $((end - start)) s, ctest exit $status"
 exit $status

@@ -23,8 +23,11 @@ constexpr std::array<std::string_view, 2> kNormalDisplayNames{"biased", "absolut
 
 // --- writing ------------------------------------------------------------------------------
 
-json vec(glm::vec3 v) { return {v.x, v.y, v.z}; }
-json vec(glm::vec2 v) { return {v.x, v.y}; }
+// Written in a fixed, readable order (format and version first); reading does not care.
+using ojson = nlohmann::ordered_json;
+
+ojson vec(glm::vec3 v) { return {v.x, v.y, v.z}; }
+ojson vec(glm::vec2 v) { return {v.x, v.y}; }
 
 template <std::size_t N>
 std::string joinNames(std::array<std::string_view, N> const& names) {
@@ -36,7 +39,7 @@ std::string joinNames(std::array<std::string_view, N> const& names) {
     return s;
 }
 
-json viewerJson(ViewerState const& v) {
+ojson viewerJson(ViewerState const& v) {
     return {{"channel_mask", v.channelMask},
             {"range_min", v.rangeMin},
             {"range_max", v.rangeMax},
@@ -50,14 +53,14 @@ json viewerJson(ViewerState const& v) {
             {"center", vec(v.center)}};
 }
 
-json sessionJson(Session const& s) {
-    json lights = json::array();
+ojson sessionJson(Session const& s) {
+    ojson lights = ojson::array();
     for (auto const& l : s.lights)
         lights.push_back({{"name", l.name}, {"position", vec(l.position)}, {"color", vec(l.color)},
                           {"intensity", l.intensity}, {"kc", l.kc}, {"kl", l.kl}, {"kq", l.kq},
                           {"threshold", l.threshold}});
     PipelineSettings const& p = s.pipeline;
-    json viewers = json::object();
+    ojson viewers = ojson::object();
     for (std::size_t i = 0; i < s.viewers.size(); ++i) viewers[std::string(kViewerNames[i])] = viewerJson(s.viewers[i]);
     return {
         {"format", kSessionFormat},

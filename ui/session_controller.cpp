@@ -101,9 +101,18 @@ std::optional<std::string> SessionController::applyLoaded(Session const& session
 }
 
 std::optional<std::string> SessionController::openSession(std::string const& path, EditorState& state, SceneLoader const& load) {
+    // Refusals are logged here (the Log window and the menu bar show them) for every caller:
+    // the File menu, --session and UI scripts.
     SessionLoad const loaded = loadSession(path);
-    if (!loaded.session) return loaded.error;
-    if (auto err = applyLoaded(*loaded.session, state, load)) return path + ": " + *err;
+    if (!loaded.session) {
+        logMessage(state.log, loaded.error, true);
+        return loaded.error;
+    }
+    if (auto err = applyLoaded(*loaded.session, state, load)) {
+        std::string const message = path + ": " + *err;
+        logMessage(state.log, message, true);
+        return message;
+    }
     panel.currentPath = path;
     logMessage(state.log, "opened session " + path);
     return std::nullopt;
@@ -169,8 +178,8 @@ void SessionController::handle(SessionRequest const& request, EditorState& state
         logMessage(state.log, "discarded the recovered session");
         return;
     }
-    if (err)
-        logMessage(state.log, *err, true);
+    if (err && request.kind != SessionRequestKind::Open && request.kind != SessionRequestKind::Restore)
+        logMessage(state.log, *err, true);  // open and restore log their own refusals
     else if (!done.empty())
         logMessage(state.log, done);
     finishSessionRequest(panel, err);

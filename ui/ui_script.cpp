@@ -32,7 +32,7 @@ constexpr Arity kCommands[] = {
     {"expect-selected", 1}, {"expect-lights", 1}, {"expect-no-gl-errors", 0}, {"expect-mode-used", 1}, {"inspect", 2}, {"expect-breakdown-sums", 1}, {"expect-smaller", 2}, {"expect-log", -1}, {"print", -1}, {"save-session", 1}, {"open-session", 1}, {"open-bad-session", 1},
     {"undo", 0}, {"redo", 0}, {"expect-recovery-offered", 0}, {"recover", 0},
     {"wait-autosave", 1}, {"expect-light", 3}, {"expect-setting", 2}, {"export-all", 1}, {"export-viewer", 3},
-    {"expect-file", 1}, {"wait-log", -1}, {"shader-break", 1}, {"shader-fix", 1}, {"soak-baseline", 0}, {"expect-soak-stable", 2},
+    {"expect-file", 1}, {"wait-log", -1}, {"wait", 1}, {"shader-break", 1}, {"shader-fix", 1}, {"soak-baseline", 0}, {"expect-soak-stable", 2},
 };
 
 double nowSeconds() {
@@ -361,6 +361,12 @@ void UiScript::run(Command const& c, ScriptHost& host) {
         until_ = [&host, before] { return host.autosaves() > before; };
         untilCommand_ = c;
         untilDeadline_ = nowSeconds() + number(w[1]);
+    } else if (cmd == "wait") {
+        // Wall-clock time, for what is defined in seconds (undo merging, autosave delays).
+        double const until = nowSeconds() + number(w[1]);
+        until_ = [until] { return nowSeconds() >= until; };
+        untilCommand_ = c;
+        untilDeadline_ = until + 3600.0;
     } else if (cmd == "wait-log") {
         if (w.size() < 3) return check(false, c, "expected SECONDS TEXT");
         std::string const text = rest(w, 2);

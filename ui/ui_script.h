@@ -40,6 +40,7 @@
 //   export-all DIR              File > Export all into DIR (the set `render --out` writes)
 //   export-viewer NAME png|exr FILE  export a G-buffer viewer (position normal albedo specular depth)
 //   expect-file PATH            a file exists and is not empty
+//   wait SECONDS                run frames for SECONDS of wall-clock time
 //   wait-log SECONDS TEXT       run frames until a log line contains TEXT (fails after SECONDS)
 //   shader-break FILE           append a compile error to FILE in $GBL_SHADER_DIR (never the source tree)
 //   shader-fix FILE             put FILE back as it was before shader-break
