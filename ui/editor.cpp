@@ -475,7 +475,7 @@ int runEditor(EditorOptions const& options) {
         };
 
         // A finished load becomes the scene before this frame renders; requested ones start.
-        ui::updateSceneLoading(loading, defaultLightCount, state, *renderer);
+        if (ui::updateSceneLoading(loading, defaultLightCount, state, *renderer)) sessions.sceneChanged(state);
 
         // --- the deferred frame, at the size the viewport had last frame --------------------
         if (state.viewport.size != glm::ivec2(renderer->width(), renderer->height()))

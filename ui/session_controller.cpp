@@ -100,6 +100,8 @@ std::optional<std::string> SessionController::applyLoaded(Session const& session
     return std::nullopt;
 }
 
+void SessionController::sceneChanged(EditorState const& state) { undo_.reset(undoSnapshot(state)); }
+
 std::optional<std::string> SessionController::openSession(std::string const& path, EditorState& state, SceneLoader const& load) {
     // Refusals are logged here (the Log window and the menu bar show them) for every caller:
     // the File menu, --session and UI scripts.

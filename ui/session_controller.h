@@ -35,6 +35,8 @@ public:
 
     void undo(EditorState& state);
     void redo(EditorState& state);
+    // A new scene replaced the lights: the old scene's edits must not be undone into it.
+    void sceneChanged(EditorState const& state);
 
     // All or nothing: on any error the state is as before and the error is returned.
     std::optional<std::string> openSession(std::string const& path, EditorState& state, SceneLoader const& load);
