@@ -9,7 +9,7 @@
 #include "gltf_loader.h"
 #include "gpu_timer.h"
 #include "image_range.h"
-#include "imgui_compat.h"
+#include "gui_compat.h"
 #include "light_math.h"
 #include "light_pick.h"
 #include "panel_pipeline.h"

@@ -1,7 +1,7 @@
 // Default dock layout (DockBuilder) and the tiled fallback for ImGui builds without docking.
 #include "layout.h"
 
-#include "imgui_compat.h"
+#include "gui_compat.h"
 
 #include <imgui.h>
 #ifdef IMGUI_HAS_DOCK

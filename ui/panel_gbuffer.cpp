@@ -2,7 +2,7 @@
 // texels so zooming in shows exact stored pixels.
 #include "panel_gbuffer.h"
 
-#include "imgui_compat.h"
+#include "gui_compat.h"
 #include "layout.h"
 
 #include <imgui.h>

@@ -2,7 +2,7 @@
 #include "panel_lights.h"
 
 #include "attenuation_plot.h"
-#include "imgui_compat.h"
+#include "gui_compat.h"
 #include "layout.h"
 #include "light_list.h"
 #include "light_math.h"

@@ -1,7 +1,7 @@
 // Pipeline window.
 #include "panel_pipeline.h"
 
-#include "imgui_compat.h"
+#include "gui_compat.h"
 #include "layout.h"
 
 #include <imgui.h>

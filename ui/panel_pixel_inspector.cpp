@@ -1,7 +1,7 @@
 // Pixel inspector window.
 #include "panel_pixel_inspector.h"
 
-#include "imgui_compat.h"
+#include "gui_compat.h"
 #include "layout.h"
 
 #include <imgui.h>

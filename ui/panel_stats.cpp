@@ -1,7 +1,7 @@
 // Stats window.
 #include "panel_stats.h"
 
-#include "imgui_compat.h"
+#include "gui_compat.h"
 #include "layout.h"
 
 #include <imgui.h>

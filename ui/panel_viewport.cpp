@@ -1,7 +1,7 @@
 // Viewport window.
 #include "panel_viewport.h"
 
-#include "imgui_compat.h"
+#include "gui_compat.h"
 #include "layout.h"
 #include "view_pass.h"
 
