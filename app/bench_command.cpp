@@ -292,6 +292,7 @@ void addBenchOptions(CLI::App& sub, BenchOptions& o) {
         ->capture_default_str();
     sub.add_option("--json", o.jsonPath, "Also write the results to this JSON file");
     sub.add_option("--session", o.sessionPath, "Measure the scene, camera, lights and settings of a session file");
+    sub.add_option("--scene", o.scenePath, "Measure a glTF 2.0 scene (its own lights) instead of the default scene");
     sub.add_option("--gl", o.glLimit, "Pretend the context is at most this OpenGL version, e.g. 3.3");
 }
 
@@ -336,6 +337,7 @@ int runBench(BenchOptions const& o) {
     std::vector<int> counts = o.lights;
     std::optional<PreparedScene> prepared;
     PipelineSettings base;
+    if (o.scenePath && o.sessionPath) return badArgument("--scene and --session cannot be combined: the session names its scene");
     if (o.sessionPath) {
         ui::SessionLoad loaded = ui::loadSession(*o.sessionPath);
         if (!loaded.session) return badArgument(loaded.error);
@@ -350,9 +352,16 @@ int runBench(BenchOptions const& o) {
                                    " lights of " + *o.sessionPath);
     } else {
         SceneRequest request;
+        request.scenePath = o.scenePath;
         request.lightCount = *std::max_element(counts.begin(), counts.end());
         prepared = prepareScene(request, &error);
         if (!prepared) return badArgument(error);
+        int const available = int(prepared->lights.size());
+        if (o.scenePath && !o.lightsGiven) counts = {available};
+        for (int n : counts)
+            if (n > available)
+                return badArgument("--lights " + std::to_string(n) + " is more than the " + std::to_string(available) +
+                                   " lights of the scene");
     }
     auto headless = createHeadlessRenderer(size->width, size->height, o.glLimit, &error);
     if (!headless) {
