@@ -104,6 +104,28 @@ protected:
     }
     FloatImage lighting(PipelineSettings const& s) { return lighting(s, camera_, lights_); }
 
+    // Additive blending rounds once per light to fp16: up to 16 overlapping volumes per pixel here.
+    static double volumeBound(double v) { return 16 * kHalfUlp * v + 1e-4; }
+
+    // Volumes (inside-safe cull modes), tiled and forward against the full-screen pass from
+    // `cam`, each within its bound; returns the full-screen image.
+    FloatImage expectModesMatchQuad(Camera const& cam) {
+        FloatImage const quad = lighting(settingsFor(LightingMode::Quad), cam, lights_);
+        for (CullMode cull : {CullMode::Front, CullMode::Flip, CullMode::Stencil}) {
+            Diff const d = compare(lighting(settingsFor(LightingMode::Volumes, cull), cam, lights_), quad, volumeBound);
+            EXPECT_EQ(d.pixelsOver, 0) << "volumes/" << enumName(kCullModeNames, cull) << ": " << describe(d);
+        }
+        if (caps().computeShaders) {
+            Diff const d = compare(lighting(settingsFor(LightingMode::Tiled), cam, lights_), quad,
+                                   [](double v) { return 4 * kHalfUlp * v + 1e-5; });
+            EXPECT_EQ(d.pixelsOver, 0) << "tiled: " << describe(d);
+        }
+        Diff const f = compare(lighting(settingsFor(LightingMode::Forward), cam, lights_), quad,
+                               [](double v) { return 0.03 * v + 2e-3; });
+        EXPECT_LT(f.pixelsOver, kW * kH / 200) << "forward: " << describe(f);
+        return quad;
+    }
+
     // targets.coverage as floats (x evaluated, y lit), rows bottom to top.
     std::vector<glm::vec2> coverage() {
         RenderTargets const& t = renderer_->impl().targets;
@@ -180,42 +202,16 @@ TEST_F(LightModesGlTest, AllModesMatchQuadFromTheDefaultSceneCamera) {
     // The scene's own camera stands among the lights (some volumes come within a near-plane
     // reach of it), the case the inside-safe cull modes exist for. Bounds as above.
     Camera const cam = scene_.camera.value_or(Camera{});
-    FloatImage const quad = lighting(settingsFor(LightingMode::Quad), cam, lights_);
-    for (CullMode cull : {CullMode::Front, CullMode::Flip, CullMode::Stencil}) {
-        Diff const d = compare(lighting(settingsFor(LightingMode::Volumes, cull), cam, lights_), quad,
-                               [](double v) { return 16 * kHalfUlp * v + 1e-4; });
-        EXPECT_EQ(d.pixelsOver, 0) << "volumes/" << enumName(kCullModeNames, cull) << ": " << describe(d);
-    }
-    if (caps().computeShaders) {
-        Diff const d = compare(lighting(settingsFor(LightingMode::Tiled), cam, lights_), quad,
-                               [](double v) { return 4 * kHalfUlp * v + 1e-5; });
-        EXPECT_EQ(d.pixelsOver, 0) << "tiled: " << describe(d);
-    }
-    Diff const f = compare(lighting(settingsFor(LightingMode::Forward), cam, lights_), quad,
-                           [](double v) { return 0.03 * v + 2e-3; });
-    EXPECT_LT(f.pixelsOver, kW * kH / 200) << "forward: " << describe(f);
+    expectModesMatchQuad(cam);
 }
 
 TEST_F(LightModesGlTest, CameraInsideAVolume) {
     Camera const cam = insideCamera();
-    FloatImage const quad = lighting(settingsFor(LightingMode::Quad), cam, lights_);
-    auto blendBound = [](double v) { return 16 * kHalfUlp * v + 1e-4; };
-    for (CullMode cull : {CullMode::Front, CullMode::Flip, CullMode::Stencil}) {
-        Diff const d = compare(lighting(settingsFor(LightingMode::Volumes, cull), cam, lights_), quad, blendBound);
-        EXPECT_EQ(d.pixelsOver, 0) << "volumes/" << enumName(kCullModeNames, cull) << ": " << describe(d);
-    }
-    if (caps().computeShaders) {
-        Diff const d = compare(lighting(settingsFor(LightingMode::Tiled), cam, lights_), quad,
-                               [](double v) { return 4 * kHalfUlp * v + 1e-5; });
-        EXPECT_EQ(d.pixelsOver, 0) << "tiled: " << describe(d);
-    }
-    Diff const f = compare(lighting(settingsFor(LightingMode::Forward), cam, lights_), quad,
-                           [](double v) { return 0.03 * v + 2e-3; });
-    EXPECT_LT(f.pixelsOver, kW * kH / 200) << "forward: " << describe(f);
+    FloatImage const quad = expectModesMatchQuad(cam);
 
     // Culling back faces loses the light the camera is in: its front faces are behind the eye.
     // Light 0 fills most of this view, so a large share of pixels must lose light.
-    Diff const back = compare(lighting(settingsFor(LightingMode::Volumes, CullMode::Back), cam, lights_), quad, blendBound);
+    Diff const back = compare(lighting(settingsFor(LightingMode::Volumes, CullMode::Back), cam, lights_), quad, volumeBound);
     EXPECT_GT(back.pixelsOver, kW * kH / 4) << "back-face culling should fail inside a volume: " << describe(back);
 }
 

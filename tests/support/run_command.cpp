@@ -3,6 +3,8 @@
 
 #include "test_paths.h"
 
+#include <gtest/gtest.h>
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -32,6 +34,15 @@ CommandResult runGbufferLab(std::vector<std::string> const& args) {
     while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.output.append(buf.data(), n);
     int const status = pclose(pipe);
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+CommandResult expectRefused(std::vector<std::string> const& args, std::string const& expect) {
+    CommandResult const r = runGbufferLab(args);
+    std::string joined;
+    for (auto const& a : args) joined += a + " ";
+    EXPECT_EQ(r.exitCode, 2) << joined << "\n" << r.output;
+    EXPECT_NE(r.output.find(expect), std::string::npos) << joined << "\n" << r.output;
     return r;
 }
 

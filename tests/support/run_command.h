@@ -16,6 +16,10 @@ struct CommandResult {
 // Runs binaryPath() with the arguments (each shell-quoted) and waits for it.
 CommandResult runGbufferLab(std::vector<std::string> const& args);
 
+// Runs the command and expects exit code 2 with `expect` in its output (gtest EXPECTs, so every
+// case of a table is reported). Returns the result for further checks.
+CommandResult expectRefused(std::vector<std::string> const& args, std::string const& expect);
+
 // Parses a JSON file the command wrote (throws nlohmann's exception when it is not JSON).
 nlohmann::json readJsonFile(std::string const& path);
 
