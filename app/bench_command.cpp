@@ -2,9 +2,9 @@
 #include "bench_command.h"
 
 #include "cli_values.h"
-#include "light_math.h"
-#include "pipeline_settings.h"
-#include "point_light.h"
+#include "core/light_math.h"
+#include "core/pipeline_settings.h"
+#include "core/point_light.h"
 #include "renderer_impl.h"
 #include "scene_setup.h"
 #include "session_cli.h"

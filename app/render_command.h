@@ -1,7 +1,7 @@
 // `gbuffer-lab render`: one frame rendered headlessly, every intermediate image written to disk.
 #pragma once
 
-#include "pipeline_settings.h"
+#include "core/pipeline_settings.h"
 #include "scene_setup.h"
 
 #include <CLI/CLI.hpp>

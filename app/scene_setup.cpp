@@ -1,8 +1,8 @@
 // Scene and context set-up for the render and bench commands.
 #include "scene_setup.h"
 
-#include "default_scene.h"
-#include "gltf_loader.h"
+#include "scene/default_scene.h"
+#include "gltf/loader.h"
 
 #include <cstdio>
 

@@ -1,10 +1,10 @@
 // What the headless commands share: a GL context, a renderer and a scene with lights and camera.
 #pragma once
 
-#include "camera.h"
-#include "headless_context.h"
+#include "core/camera.h"
+#include "gl/headless_context.h"
 #include "renderer.h"
-#include "scene_data.h"
+#include "scene/scene_data.h"
 
 #include <memory>
 #include <optional>

@@ -1,7 +1,7 @@
 // Sessions for the headless commands: session -> prepared scene, and command line -> session.
 #include "session_cli.h"
 
-#include "default_scene.h"
+#include "scene/default_scene.h"
 
 namespace gbl {
 

@@ -2,9 +2,9 @@
 // command-line frame as a session (`render --session`, `render --save-session`, `bench --session`).
 #pragma once
 
-#include "pipeline_settings.h"
+#include "core/pipeline_settings.h"
 #include "scene_setup.h"
-#include "session.h"
+#include "session/session.h"
 
 #include <optional>
 #include <string>

@@ -1,7 +1,7 @@
 # Writes OUT: a C++ table of every shader file in DIR (name -> source text).
 file(GLOB files RELATIVE ${DIR} ${DIR}/*.vert ${DIR}/*.frag ${DIR}/*.comp ${DIR}/*.glsl)
 list(SORT files)
-set(body "// Generated from shaders/ by cmake/embed_shaders.cmake. Do not edit.\n#include \"embedded_shaders.h\"\n\nnamespace gbl {\n\nstd::span<EmbeddedShader const> embeddedShaders() {\n    static EmbeddedShader const table[] = {\n")
+set(body "// Generated from shaders/ by cmake/embed_shaders.cmake. Do not edit.\n#include \"gl/embedded_shaders.h\"\n\nnamespace gbl {\n\nstd::span<EmbeddedShader const> embeddedShaders() {\n    static EmbeddedShader const table[] = {\n")
 foreach(f ${files})
   file(READ ${DIR}/${f} text)
   set(body "${body}        {\"${f}\", R\"gblshader(${text})gblshader\"},\n")

@@ -2,7 +2,7 @@
 #include "frame_export.h"
 
 #include "image_io.h"
-#include "light_math.h"
+#include "core/light_math.h"
 
 #include <nlohmann/json.hpp>
 

@@ -2,9 +2,9 @@
 // `render --out` writes and the editor's "Export all" writes, from one implementation.
 #pragma once
 
-#include "camera.h"
-#include "pipeline_settings.h"
-#include "point_light.h"
+#include "core/camera.h"
+#include "core/pipeline_settings.h"
+#include "core/point_light.h"
 #include "renderer.h"
 
 #include <cstddef>

@@ -1,7 +1,7 @@
 // Writing frame images to disk through OpenImageIO (PNG for display, EXR for float data).
 #pragma once
 
-#include "renderer.h"
+#include "core/frame_types.h"
 
 #include <optional>
 #include <string>

@@ -1,9 +1,9 @@
 // The frame sequence and the public Renderer API.
 #include "renderer_impl.h"
 
-#include "embedded_shaders.h"
-#include "gl_debug.h"
-#include "light_math.h"
+#include "gl/embedded_shaders.h"
+#include "gl/debug.h"
+#include "core/light_math.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -2,12 +2,13 @@
 // One instance serves the headless `render`/`bench` commands, the tests and the editor.
 #pragma once
 
-#include "camera.h"
-#include "gl_caps.h"
-#include "pipeline_settings.h"
-#include "point_light.h"
-#include "scene_data.h"
-#include "view_pass.h"
+#include "core/camera.h"
+#include "core/frame_types.h"
+#include "gl/caps.h"
+#include "core/pipeline_settings.h"
+#include "core/point_light.h"
+#include "scene/scene_data.h"
+#include "gpu/view_target.h"
 
 #include <glm/glm.hpp>
 
@@ -20,36 +21,6 @@
 
 namespace gbl {
 
-// Images the renderer keeps per frame. Values are what the pass wrote, exactly as stored.
-enum class Attachment {
-    Position,    // RGBA16F world-space position, w = 1 where geometry was drawn
-    Normal,      // RGBA16F world-space unit normal, w = 1 where drawn
-    AlbedoSpec,  // RGBA8 linear albedo, alpha = specular intensity
-    Depth,       // DEPTH32F_STENCIL8 window-space depth of the geometry pass
-    Lighting,    // RGBA16F HDR lit image (lighting + forward passes, before tonemap)
-    Final,       // RGBA8 display image: tonemapped, gamma-encoded, or the chosen debug view
-};
-
-struct PassTiming {
-    std::string name;
-    double gpuMs = 0.0;
-};
-
-struct FrameStats {
-    int width = 0;
-    int height = 0;
-    std::vector<PassTiming> passes;  // in frame order
-    double gpuFrameMs = 0.0;         // sum of the passes
-    int lightsSubmitted = 0;
-    int lightsShaded = 0;            // lights with a radius > 0
-    std::optional<std::uint64_t> fragmentInvocations;  // lighting pass, when pipeline statistics exist
-    std::uint64_t glErrors = 0;      // errors reported while rendering this frame
-    // The lighting mode that actually ran; differs from the requested one only after a fallback
-    // (tiled without compute shaders runs quad), and then fallbackReason says why.
-    LightingMode modeUsed = LightingMode::Quad;
-    std::string fallbackReason;
-};
-
 struct FrameInput {
     Camera camera;
     std::span<PointLight const> lights;
@@ -58,30 +29,6 @@ struct FrameInput {
     // the previous frame's timings so an interactive frame never waits on the GPU.
     bool waitForGpuTimings = true;
 };
-
-// Everything stored at one pixel, read back as floats (for the pixel inspector and tests).
-struct PixelSample {
-    bool covered = false;          // geometry was drawn here
-    glm::vec4 position{0.0f};
-    glm::vec4 normal{0.0f};
-    glm::vec4 albedoSpec{0.0f};
-    float depth = 1.0f;            // window-space depth 0..1
-    glm::vec3 reconstructedPosition{0.0f};  // world position rebuilt from depth and the camera
-    glm::vec4 lighting{0.0f};
-};
-
-// Float image read back from a target, rows top to bottom.
-struct FloatImage {
-    int width = 0;
-    int height = 0;
-    int channels = 0;
-    std::vector<float> pixels;
-    float at(int x, int y, int c) const { return pixels[(std::size_t(y) * width + x) * channels + c]; }
-};
-
-// Light cubes are drawn unlit with the light's colour times this, in HDR: bright enough to read as
-// emissive, low enough that tonemapping keeps their hue.
-inline constexpr float kLightCubeEmissive = 1.5f;
 
 class RendererImpl;
 

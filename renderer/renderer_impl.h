@@ -3,14 +3,14 @@
 #pragma once
 
 #include "gl/vertex_array.h"
-#include "gpu_scene.h"
-#include "gpu_timer.h"
-#include "light_buffer.h"
-#include "light_volume_gpu.h"
-#include "render_targets.h"
+#include "gpu/gpu_scene.h"
+#include "gl/gpu_timer.h"
+#include "gpu/light_buffer.h"
+#include "gpu/light_volume_gpu.h"
+#include "gpu/render_targets.h"
 #include "renderer.h"
-#include "shader_library.h"
-#include "view_pass.h"
+#include "gl/shader_library.h"
+#include "gpu/view_target.h"
 
 #include <glm/glm.hpp>
 

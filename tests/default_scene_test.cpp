@@ -1,8 +1,8 @@
 // The procedural default scene, mesh builders, generated textures and orbiting lights on the CPU.
-#include "default_scene.h"
-#include "light_math.h"
-#include "mesh_builder.h"
-#include "procedural_textures.h"
+#include "scene/default_scene.h"
+#include "core/light_math.h"
+#include "scene/mesh_builder.h"
+#include "scene/procedural_textures.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Editor state <-> session: what is captured comes back when applied, through a file in between.
-#include "editor_session.h"
+#include "session/editor_session.h"
 
 #include <gtest/gtest.h>
 

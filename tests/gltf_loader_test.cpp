@@ -1,8 +1,8 @@
 // glTF loader on the CPU: the shared sample models, handcrafted bad files, mappings, progress.
-#include "gltf_geometry.h"
-#include "gltf_loader.h"
-#include "gltf_mapping.h"
-#include "light_math.h"
+#include "gltf/geometry.h"
+#include "gltf/loader.h"
+#include "gltf/mapping.h"
+#include "core/light_math.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Light radius and attenuation against hand-computed values.
-#include "light_math.h"
+#include "core/light_math.h"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,12 @@
 // The four lighting modes and the five volume cull modes on the default scene: one image, with
 // the differences that are bugs (cull none, back faces with the camera inside) shown to be real.
-#include "default_scene.h"
+#include "scene/default_scene.h"
 #include "gl_fixture.h"
-#include "light_math.h"
-#include "light_volume_mesh.h"
+#include "core/light_math.h"
+#include "core/light_volume_mesh.h"
 #include "renderer_impl.h"
 #include "test_scenes.h"
-#include "tile_math.h"
+#include "core/tile_math.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

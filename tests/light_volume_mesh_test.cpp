@@ -1,5 +1,5 @@
 // The light-volume sphere encloses the true sphere of the light's radius, and not wastefully.
-#include "light_volume_mesh.h"
+#include "core/light_volume_mesh.h"
 
 #include <gtest/gtest.h>
 

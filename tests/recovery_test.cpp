@@ -1,6 +1,6 @@
 // Recovery: autosave timing on a fake clock, run markers, and unclean-exit detection with a real SIGKILL.
-#include "atomic_file.h"
-#include "recovery.h"
+#include "session/atomic_file.h"
+#include "session/recovery.h"
 #include "run_command.h"
 
 #include <gtest/gtest.h>

@@ -1,10 +1,10 @@
 // The deferred core on a headless context: G-buffer contents against analytic values, the
 // lighting pass against the CPU equation, the blit step, resizing and shader hot reload.
 #include "gl_fixture.h"
-#include "light_buffer.h"
+#include "gpu/light_buffer.h"
 #include "renderer_impl.h"
-#include "shader_library.h"
-#include "shading_cpu.h"
+#include "gl/shader_library.h"
+#include "core/shading_cpu.h"
 #include "test_scenes.h"
 
 #include <glm/gtc/matrix_transform.hpp>

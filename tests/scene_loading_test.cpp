@@ -1,5 +1,5 @@
 // The editor's scene-loading worker on the CPU: results, errors, hold-and-cancel, refusal, recent list.
-#include "scene_loading.h"
+#include "model/scene_loading.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>

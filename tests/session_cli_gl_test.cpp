@@ -2,7 +2,7 @@
 // values are really used, bad sessions and requests past the limits exit 2 with the limit.
 #include "image_io.h"
 #include "run_command.h"
-#include "session.h"
+#include "session/session.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Session files: exact round trips, one clear message per kind of bad field, atomic writes.
-#include "atomic_file.h"
-#include "session.h"
+#include "session/atomic_file.h"
+#include "session/session.h"
 #include "run_command.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Tile grid, tile frusta and the sphere-versus-tile test against analytic cases.
-#include "tile_math.h"
+#include "core/tile_math.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Editor camera control: orbit keeps the distance, look keeps the position, framing fits the scene.
-#include "camera_rig.h"
+#include "model/camera_rig.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Viewer range fitting: background skipped, channel masks honoured, depth linearised.
-#include "image_range.h"
+#include "model/image_range.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The tiled layout (ImGui without docking) fills the work area exactly, without overlap.
-#include "layout.h"
+#include "model/layout_state.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Light list edits: validated changes, refusals with messages, presets, deterministic random lights.
-#include "light_list.h"
-#include "light_math.h"
+#include "model/light_list.h"
+#include "core/light_math.h"
 
 #include <gtest/gtest.h>
 

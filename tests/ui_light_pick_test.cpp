@@ -1,5 +1,5 @@
 // Picking light cubes: ray construction matches the projection, slab test, nearest hit wins.
-#include "light_pick.h"
+#include "model/light_pick.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Undo history: steps, merging of drags and quick edits, redo, bounds.
-#include "undo.h"
+#include "model/undo.h"
 
 #include <gtest/gtest.h>
 

@@ -2,26 +2,33 @@
 // (render, viewers, inspector, UI, present), screenshots and UI test scripts.
 #include "editor.h"
 
-#include "default_scene.h"
+#include "scene/default_scene.h"
 #include "frame_export.h"
-#include "editor_state.h"
-#include "gl_caps.h"
-#include "gltf_loader.h"
-#include "gpu_timer.h"
-#include "image_range.h"
-#include "gui_compat.h"
-#include "light_math.h"
-#include "light_pick.h"
-#include "panel_pipeline.h"
-#include "panel_scene_loading.h"
-#include "pixel_breakdown.h"
+#include "model/editor_state.h"
+#include "panels/layout.h"
+#include "panels/panel_gbuffer.h"
+#include "panels/panel_lights.h"
+#include "panels/panel_log.h"
+#include "panels/panel_pixel_inspector.h"
+#include "panels/panel_stats.h"
+#include "panels/panel_viewport.h"
+#include "gl/caps.h"
+#include "gltf/loader.h"
+#include "gl/gpu_timer.h"
+#include "model/image_range.h"
+#include "panels/gui_compat.h"
+#include "core/light_math.h"
+#include "model/light_pick.h"
+#include "panels/panel_pipeline.h"
+#include "panels/panel_scene_loading.h"
+#include "model/pixel_breakdown.h"
 #include "renderer.h"
 #include "renderer_impl.h"
-#include "scene_loading.h"
-#include "screenshot.h"
+#include "model/scene_loading.h"
+#include "script/screenshot.h"
 #include "session_controller.h"
-#include "ui_script.h"
-#include "view_pass.h"
+#include "script/ui_script.h"
+#include "gpu/view_target.h"
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -113,17 +120,18 @@ bool sameView(ViewParams const& a, ViewParams const& b) {
 // --- scene set-up --------------------------------------------------------------------------
 
 // Loads a glTF file (or builds the default scene when path is empty) on this thread and installs
-// it (ui/scene_loading.h, installScene). Start-up and sessions use it; File > Open, drops and
+// it (ui/model/scene_loading.h, installScene). Start-up and sessions use it; File > Open, drops and
 // scripts load on a worker instead (updateSceneLoading). On failure the current scene and
 // state stay as they were and an error sentence is returned.
 std::optional<std::string> loadScene(std::optional<std::string> const& path, int defaultLightCount, bool allowOutsideUris,
                                      EditorState& state, Renderer& renderer) {
-    if (!path) return ui::installScene(makeDefaultScene({}), false, defaultLightCount, state, renderer);
+    auto const upload = [&renderer](SceneData const& scene) { return renderer.setScene(scene); };
+    if (!path) return ui::installScene(makeDefaultScene({}), false, defaultLightCount, state, upload);
     GltfLoadOptions gltfOptions;
     gltfOptions.allowOutsideUris = allowOutsideUris;
     GltfLoadResult result = loadGltf(*path, gltfOptions);
     if (!result.scene) return result.error;
-    return ui::installScene(*result.scene, true, defaultLightCount, state, renderer);
+    return ui::installScene(*result.scene, true, defaultLightCount, state, upload);
 }
 
 // GLFW's drop callback has no closure: the window's user pointer is the loading state.
@@ -475,7 +483,8 @@ int runEditor(EditorOptions const& options) {
         };
 
         // A finished load becomes the scene before this frame renders; requested ones start.
-        if (ui::updateSceneLoading(loading, defaultLightCount, state, *renderer)) sessions.sceneChanged(state);
+        if (ui::updateSceneLoading(loading, defaultLightCount, state,
+                                   [&](SceneData const& scene) { return renderer->setScene(scene); })) sessions.sceneChanged(state);
 
         // --- the deferred frame, at the size the viewport had last frame --------------------
         if (state.viewport.size != glm::ivec2(renderer->width(), renderer->height()))

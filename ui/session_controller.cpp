@@ -1,8 +1,8 @@
 // Session life cycle of the editor: history, autosave, recovery, file requests.
 #include "session_controller.h"
 
-#include "atomic_file.h"
-#include "editor_session.h"
+#include "session/atomic_file.h"
+#include "session/editor_session.h"
 #include "viewer_export.h"
 
 #include <algorithm>

@@ -2,13 +2,13 @@
 // recovery, and exports. The window loop owns one and calls it at fixed points of the frame.
 #pragma once
 
-#include "editor_state.h"
+#include "model/editor_state.h"
 #include "frame_export.h"
-#include "panel_session.h"
-#include "recovery.h"
+#include "panels/panel_session.h"
+#include "session/recovery.h"
 #include "renderer.h"
-#include "session.h"
-#include "undo.h"
+#include "session/session.h"
+#include "model/undo.h"
 
 #include <functional>
 #include <optional>

@@ -2,8 +2,8 @@
 // or the raw attachment behind it as float EXR. No ImGui here, so it is tested headless.
 #pragma once
 
-#include "camera.h"
-#include "panel_gbuffer.h"
+#include "core/camera.h"
+#include "panels/panel_gbuffer.h"
 #include "renderer.h"
 
 #include <optional>

@@ -1,5 +1,5 @@
 // Buffer creation and re-upload.
-#include "buffer.h"
+#include "gl/buffer.h"
 
 namespace gbl::gl {
 

@@ -1,7 +1,7 @@
 // A GL buffer object (vertices, indices, light data) owned by value.
 #pragma once
 
-#include "gl_object.h"
+#include "gl/gl_object.h"
 
 #include <cstddef>
 #include <string_view>

@@ -1,5 +1,5 @@
 // Framebuffer assembly and completeness checks.
-#include "framebuffer.h"
+#include "gl/framebuffer.h"
 
 #include <vector>
 

@@ -1,8 +1,8 @@
 // A framebuffer object owned by value, with completeness reported by status name.
 #pragma once
 
-#include "gl_object.h"
-#include "texture.h"
+#include "gl/gl_object.h"
+#include "gl/texture.h"
 
 #include <initializer_list>
 #include <optional>

@@ -1,5 +1,5 @@
 // Live-object counting and debug labels for the GL wrappers.
-#include "gl_object.h"
+#include "gl/gl_object.h"
 
 #include <atomic>
 

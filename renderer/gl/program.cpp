@@ -1,5 +1,5 @@
 // Shader compilation and linking with complete error logs.
-#include "program.h"
+#include "gl/program.h"
 
 namespace gbl::gl {
 

@@ -1,7 +1,7 @@
 // A linked GLSL program owned by value, with cached uniform locations.
 #pragma once
 
-#include "gl_object.h"
+#include "gl/gl_object.h"
 
 #include <glm/glm.hpp>
 

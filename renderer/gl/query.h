@@ -1,7 +1,7 @@
 // A GL query object (timer or pipeline statistics) owned by value.
 #pragma once
 
-#include "gl_object.h"
+#include "gl/gl_object.h"
 
 #include <string_view>
 

@@ -1,5 +1,5 @@
 // Texture creation with storage that never changes size (targets are recreated on resize).
-#include "texture.h"
+#include "gl/texture.h"
 
 #include <algorithm>
 

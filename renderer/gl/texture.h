@@ -1,7 +1,7 @@
 // A 2D texture (or texture buffer) owned by value.
 #pragma once
 
-#include "gl_object.h"
+#include "gl/gl_object.h"
 
 #include <string_view>
 

@@ -1,7 +1,7 @@
 // A vertex array object owned by value.
 #pragma once
 
-#include "gl_object.h"
+#include "gl/gl_object.h"
 
 #include <string_view>
 

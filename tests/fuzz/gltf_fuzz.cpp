@@ -1,6 +1,6 @@
 // libFuzzer target: the glTF loader must refuse or load any bytes without crashing, and what it
 // loads must satisfy the invariants the renderer relies on.
-#include "gltf_loader.h"
+#include "gltf/loader.h"
 
 #include <cmath>
 #include <cstddef>

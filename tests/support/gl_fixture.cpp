@@ -1,7 +1,7 @@
 // Headless context set-up for GL tests.
 #include "gl_fixture.h"
 
-#include "gl_debug.h"
+#include "gl/debug.h"
 
 namespace gbl::test {
 

@@ -1,8 +1,8 @@
 // A headless GL context shared by every test of a GL test binary, with an error check after each test.
 #pragma once
 
-#include "gl_caps.h"
-#include "headless_context.h"
+#include "gl/caps.h"
+#include "gl/headless_context.h"
 #include "renderer.h"
 
 #include <gtest/gtest.h>

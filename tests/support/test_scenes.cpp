@@ -1,7 +1,7 @@
 // Analytic test scenes.
 #include "test_scenes.h"
 
-#include "mesh_builder.h"
+#include "scene/mesh_builder.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

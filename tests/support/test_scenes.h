@@ -1,7 +1,7 @@
 // Small scenes with known geometry for analytic GL tests.
 #pragma once
 
-#include "scene_data.h"
+#include "scene/scene_data.h"
 
 namespace gbl::test {
 

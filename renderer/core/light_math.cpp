@@ -1,0 +1,77 @@
+// Radius and attenuation of point lights: the one implementation all modes and the UI use.
+#include "core/light_math.h"
+
+#include <cmath>
+
+namespace gbl {
+
+namespace {
+bool badNumber(float v) { return !std::isfinite(v) || v < 0.0f; }
+}  // namespace
+
+std::optional<std::string> validateLight(PointLight const& light) {
+    struct Field {
+        char const* name;
+        float value;
+    };
+    Field const fields[] = {
+        {"color.r", light.color.r}, {"color.g", light.color.g}, {"color.b", light.color.b},
+        {"intensity", light.intensity}, {"Kc", light.kc}, {"Kl", light.kl}, {"Kq", light.kq},
+        {"threshold", light.threshold},
+    };
+    for (auto const& f : fields) {
+        if (badNumber(f.value))
+            return std::string("light parameter ") + f.name + " must be a finite number >= 0 (got " +
+                   std::to_string(f.value) + ")";
+    }
+    for (int i = 0; i < 3; ++i) {
+        if (!std::isfinite(light.position[i]))
+            return "light position must be finite";
+    }
+    if (light.threshold <= 0.0f) return "light threshold must be greater than 0";
+    if (light.kc <= 0.0f && light.kl <= 0.0f && light.kq <= 0.0f)
+        return "light attenuation Kc, Kl and Kq cannot all be 0 (infinite brightness at the light)";
+    return std::nullopt;
+}
+
+LightRadius solveLightRadius(float imax, float kc, float kl, float kq, float threshold) {
+    if (badNumber(imax) || badNumber(kc) || badNumber(kl) || badNumber(kq) || badNumber(threshold) ||
+        threshold <= 0.0f)
+        return {0.0f, RadiusKind::Zero};
+    // Solve in double: Imax/threshold can be large and the quadratic formula cancels badly.
+    double const c = double(kc) - double(imax) / double(threshold);
+    if (c >= 0.0) return {0.0f, RadiusKind::Zero};
+    if (kq > 0.0f) {
+        double const a = kq, b = kl;
+        // Numerically stable positive root: 2c / (-b - sqrt(b^2 - 4ac)), c < 0 so the root is real.
+        double const disc = b * b - 4.0 * a * c;
+        double const root = (2.0 * c) / (-b - std::sqrt(disc));
+        if (root > kLightRadiusCap) return {kLightRadiusCap, RadiusKind::Capped};
+        return {float(root), RadiusKind::Quadratic};
+    }
+    if (kl > 0.0f) {
+        double const root = -c / double(kl);
+        if (root > kLightRadiusCap) return {kLightRadiusCap, RadiusKind::Capped};
+        return {float(root), RadiusKind::Linear};
+    }
+    return {kLightRadiusCap, RadiusKind::Capped};
+}
+
+LightRadius lightRadius(PointLight const& light) {
+    if (validateLight(light)) return {0.0f, RadiusKind::Zero};
+    return solveLightRadius(lightImax(light), light.kc, light.kl, light.kq, light.threshold);
+}
+
+float attenuationCutoff(PointLight const& light, float radius) {
+    if (light.kl > 0.0f || light.kq > 0.0f) return attenuation(light.kc, light.kl, light.kq, radius);
+    float const imax = lightImax(light);
+    return imax > 0.0f ? light.threshold / imax : 0.0f;
+}
+
+float windowedAttenuation(PointLight const& light, float radius, float d) {
+    if (!(d < radius)) return 0.0f;
+    float const att = attenuation(light.kc, light.kl, light.kq, d);
+    return std::max(att - attenuationCutoff(light, radius), 0.0f);
+}
+
+}  // namespace gbl

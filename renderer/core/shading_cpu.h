@@ -1,0 +1,67 @@
+// The lighting equation of docs/lighting.md on the CPU: the pixel inspector's per-light
+// breakdown and the reference the GL tests compare the shaders against.
+#pragma once
+
+#include "core/light_math.h"
+#include "core/point_light.h"
+
+#include <glm/glm.hpp>
+
+#include <span>
+#include <vector>
+
+namespace gbl {
+
+struct ShadingInputs {
+    glm::vec3 position{0.0f};  // world-space surface point
+    glm::vec3 normal{0.0f, 1.0f, 0.0f};  // unit
+    glm::vec3 albedo{1.0f};
+    float specular = 0.5f;
+    glm::vec3 viewPosition{0.0f};
+    float shininess = 32.0f;
+};
+
+struct LightContribution {
+    int lightIndex = -1;
+    float distance = 0.0f;
+    float radius = 0.0f;
+    float attenuation = 0.0f;  // windowed, as applied
+    glm::vec3 diffuse{0.0f};   // albedo * N.L * colour * intensity * attenuation
+    glm::vec3 specular{0.0f};  // specular * (N.H)^shininess * colour * intensity * attenuation
+    glm::vec3 total() const { return diffuse + specular; }
+};
+
+inline LightContribution shadeLightCpu(PointLight const& light, ShadingInputs const& s) {
+    LightContribution c;
+    c.radius = lightRadius(light).radius;
+    glm::vec3 const toLight = light.position - s.position;
+    c.distance = glm::length(toLight);
+    c.attenuation = windowedAttenuation(light, c.radius, c.distance);
+    if (c.attenuation <= 0.0f || c.distance <= 0.0f) return c;
+    glm::vec3 const L = toLight / c.distance;
+    glm::vec3 const V = glm::normalize(s.viewPosition - s.position);
+    glm::vec3 const H = glm::normalize(L + V);
+    float const diff = std::max(glm::dot(s.normal, L), 0.0f);
+    float const spec = diff > 0.0f ? std::pow(std::max(glm::dot(s.normal, H), 0.0f), s.shininess) : 0.0f;
+    glm::vec3 const radiance = light.color * light.intensity * c.attenuation;
+    c.diffuse = s.albedo * diff * radiance;
+    c.specular = glm::vec3(s.specular * spec) * radiance;
+    return c;
+}
+
+// Ambient plus every light that reaches the point; `contributions` (optional) receives the
+// lights with a non-zero attenuation, in list order.
+inline glm::vec3 shadePointCpu(std::span<PointLight const> lights, ShadingInputs const& s, glm::vec3 ambient,
+                               std::vector<LightContribution>* contributions = nullptr) {
+    glm::vec3 color = ambient * s.albedo;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        LightContribution c = shadeLightCpu(lights[i], s);
+        if (c.attenuation <= 0.0f) continue;
+        c.lightIndex = int(i);
+        color += c.total();
+        if (contributions) contributions->push_back(c);
+    }
+    return color;
+}
+
+}  // namespace gbl

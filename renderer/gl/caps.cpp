@@ -1,0 +1,40 @@
+// Capability detection for the current context.
+#include "gl/caps.h"
+
+#include <epoxy/gl.h>
+
+namespace gbl {
+
+namespace {
+std::string glString(GLenum name) {
+    auto const* s = reinterpret_cast<char const*>(glGetString(name));
+    return s ? s : "";
+}
+}  // namespace
+
+GlCaps detectGlCaps(int limitMajor, int limitMinor) {
+    GlCaps caps;
+    glGetIntegerv(GL_MAJOR_VERSION, &caps.major);
+    glGetIntegerv(GL_MINOR_VERSION, &caps.minor);
+    caps.vendor = glString(GL_VENDOR);
+    caps.renderer = glString(GL_RENDERER);
+    caps.version = glString(GL_VERSION);
+    caps.glslVersion = glString(GL_SHADING_LANGUAGE_VERSION);
+    bool limited = false;
+    if (limitMajor > 0 && !(caps.major < limitMajor || (caps.major == limitMajor && caps.minor <= limitMinor))) {
+        caps.major = limitMajor;
+        caps.minor = limitMinor;
+        limited = true;
+    }
+    // Under a version limit, extensions that bring a newer version's feature are ignored too, so
+    // the limit shows what a real context of that version would offer.
+    auto has = [&](char const* ext) { return !limited && epoxy_has_gl_extension(ext); };
+    caps.khrDebug = caps.atLeast(4, 3) || has("GL_KHR_debug");
+    caps.computeShaders = caps.atLeast(4, 3) ||
+                          (has("GL_ARB_compute_shader") && has("GL_ARB_shader_storage_buffer_object") &&
+                           has("GL_ARB_shader_image_load_store"));
+    caps.pipelineStatistics = caps.atLeast(4, 6) || has("GL_ARB_pipeline_statistics_query");
+    return caps;
+}
+
+}  // namespace gbl

@@ -1,0 +1,136 @@
+// Shader sources, #include expansion and hot reload.
+#include "gl/shader_library.h"
+
+#include "gl/embedded_shaders.h"
+
+#include <cassert>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace gbl {
+
+namespace fs = std::filesystem;
+
+ShaderLibrary::ShaderLibrary(fs::path sourceDir) : sourceDir_(std::move(sourceDir)) {
+    std::error_code ec;
+    if (sourceDir_.empty() || !fs::is_directory(sourceDir_, ec)) {
+        sourceDir_.clear();
+        return;
+    }
+    for (auto const& s : embeddedShaders()) {
+        auto const t = fs::last_write_time(sourceDir_ / s.name, ec);
+        if (!ec) seenTimes_[s.name] = t;
+    }
+}
+
+std::optional<std::string> ShaderLibrary::rawSource(std::string const& file) const {
+    if (auto it = diskOverrides_.find(file); it != diskOverrides_.end()) return it->second;
+    for (auto const& s : embeddedShaders())
+        if (file == s.name) return std::string(s.source);
+    return std::nullopt;
+}
+
+std::optional<std::string> ShaderLibrary::source(std::string const& file, std::string* error) const {
+    auto raw = rawSource(file);
+    if (!raw) {
+        if (error) *error = "shader file " + file + " does not exist in shaders/";
+        return std::nullopt;
+    }
+    // Expand `#include "name"` lines (one level is all the shaders use; nested works too).
+    std::istringstream in(*raw);
+    std::string out, line;
+    while (std::getline(in, line)) {
+        if (line.rfind("#include", 0) == 0) {
+            auto const a = line.find('"'), b = line.rfind('"');
+            if (a == std::string::npos || b <= a) {
+                if (error) *error = file + ": malformed #include line: " + line;
+                return std::nullopt;
+            }
+            auto inc = source(line.substr(a + 1, b - a - 1), error);
+            if (!inc) return std::nullopt;
+            out += *inc;
+            out += '\n';
+        } else {
+            out += line;
+            out += '\n';
+        }
+    }
+    return out;
+}
+
+std::optional<gl::Program> ShaderLibrary::build(ProgramDesc const& desc, std::string* log) const {
+    std::vector<gl::ShaderStageSource> stages;
+    for (auto const& [stage, file] : desc.stages) {
+        std::string err;
+        auto text = source(file, &err);
+        if (!text) {
+            if (log) *log = "program " + desc.name + ": " + err;
+            return std::nullopt;
+        }
+        if (!desc.defines.empty()) {
+            // Defines go right after the #version line, which must stay the first directive
+            // (the one-line file header comment may come before it).
+            auto const version = text->find("#version");
+            auto const eol = text->find('\n', version == std::string::npos ? 0 : version);
+            std::string defs;
+            for (auto const& d : desc.defines) defs += "#define " + d + "\n";
+            text->insert(eol == std::string::npos ? text->size() : eol + 1, defs);
+        }
+        stages.push_back({stage, file, std::move(*text)});
+    }
+    return gl::Program::build(stages, desc.name, log);
+}
+
+bool ShaderLibrary::add(ProgramDesc desc, std::string* log) {
+    auto program = build(desc, log);
+    if (!program) return false;
+    std::string name = desc.name;
+    programs_.insert_or_assign(std::move(name), Entry{std::move(desc), std::move(*program)});
+    return true;
+}
+
+bool ShaderLibrary::has(std::string_view name) const { return programs_.find(name) != programs_.end(); }
+
+gl::Program const& ShaderLibrary::get(std::string_view name) const {
+    auto it = programs_.find(name);
+    assert(it != programs_.end() && "ShaderLibrary::get(): unknown program; was it added in RendererImpl()?");
+    return it->second.program;
+}
+
+std::vector<std::string> ShaderLibrary::reloadChanged() {
+    std::vector<std::string> messages;
+    if (sourceDir_.empty()) return messages;
+    std::set<std::string> changed;
+    std::error_code ec;
+    for (auto& [file, seen] : seenTimes_) {
+        auto const t = fs::last_write_time(sourceDir_ / file, ec);
+        if (ec || t == seen) continue;
+        seen = t;
+        std::ifstream f(sourceDir_ / file, std::ios::binary);
+        std::ostringstream ss;
+        ss << f.rdbuf();
+        diskOverrides_[file] = ss.str();
+        changed.insert(file);
+    }
+    if (changed.empty()) return messages;
+    for (auto& [name, entry] : programs_) {
+        // A program depends on its stage files and on everything they include; rebuilding
+        // every program when any included file changed is simpler and still cheap.
+        bool affected = false;
+        for (auto const& [stage, file] : entry.desc.stages) affected |= changed.count(file) > 0;
+        for (auto const& f : changed) affected |= f.ends_with(".glsl");
+        if (!affected) continue;
+        std::string log;
+        if (auto program = build(entry.desc, &log)) {
+            entry.program = std::move(*program);
+            messages.push_back("reloaded shader program " + name);
+        } else {
+            messages.push_back("shader program " + name + " failed to rebuild; keeping the last good one.\n" + log);
+        }
+    }
+    return messages;
+}
+
+}  // namespace gbl

@@ -1,0 +1,45 @@
+// The scene on the GPU: one vertex array per mesh, textures, materials and instances.
+#pragma once
+
+#include "gl/buffer.h"
+#include "gl/program.h"
+#include "gl/texture.h"
+#include "gl/vertex_array.h"
+#include "scene/scene_data.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gbl {
+
+struct GpuMesh {
+    gl::VertexArray vao;
+    gl::Buffer vertices;
+    gl::Buffer indices;
+    GLsizei indexCount = 0;
+    int material = -1;
+};
+
+struct GpuScene {
+    std::vector<gl::Texture> textures;  // one per SceneData image
+    std::vector<Material> materials;
+    std::vector<GpuMesh> meshes;
+    std::vector<MeshInstance> instances;
+    std::size_t triangleCount = 0;
+    gl::Texture white;                  // stands in for missing textures
+};
+
+// Uploads everything; returns an error (and leaves `out` untouched) when the scene is
+// inconsistent (an index out of range, an image with the wrong byte count).
+std::optional<std::string> uploadScene(SceneData const& scene, GpuScene& out);
+
+// Which materials a draw includes.
+enum class MaterialFilter { Opaque, Blended, All };
+
+// Draws every instance whose material passes the filter with `program`, setting the per-object
+// uniforms (uModel, uNormalMatrix) and material uniforms of shaders/material.glsl. Texture
+// units 0..2 are used for base colour, normal and specular.
+void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter filter, bool useNormalMaps);
+
+}  // namespace gbl

@@ -1,0 +1,39 @@
+// The editor's windows and the tiled layout's rectangles: pure geometry, no ImGui.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <string_view>
+
+namespace gbl::ui {
+
+// Every editor window, in the order they are drawn. Names are ImGui window names, so they
+// are also the keys imgui.ini stores the docked layout under.
+enum class EditorWindow { Viewport, GBuffer, PixelInspector, Lights, Pipeline, Stats, Log };
+inline constexpr std::array<std::string_view, 7> kEditorWindowNames{
+    "Viewport", "G-buffer", "Pixel inspector", "Lights", "Pipeline", "Stats", "Log"};
+
+inline char const* windowName(EditorWindow w) { return kEditorWindowNames[std::size_t(w)].data(); }
+
+struct LayoutState {
+    bool resetRequested = false;  // "Reset layout" in the View menu
+    bool dockBuilt = false;       // the dock tree exists (from imgui.ini or built this session)
+};
+
+struct TileRect {
+    glm::vec2 pos{0.0f};
+    glm::vec2 size{0.0f};
+};
+
+// Fractions of the work area: the side columns keep their widths, the centre gets the rest.
+inline constexpr float kLeftColumn = 0.22f;
+inline constexpr float kRightColumn = 0.24f;
+inline constexpr float kViewerStrip = 0.30f;  // share of the centre column below the viewport
+
+// Where a window sits in the tiled arrangement (no docking): lights over pipeline on the
+// left, viewport over the G-buffer strip in the centre, pixel inspector over stats over log on
+// the right. The rectangles cover the work area exactly, without overlap.
+TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize);
+
+}  // namespace gbl::ui

@@ -1,0 +1,33 @@
+// State of the pixel inspector: the pixel, its stored values and its per-light breakdown.
+#pragma once
+
+#include "core/frame_types.h"
+#include "core/shading_cpu.h"
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gbl::ui {
+
+// Each light's share of the lit value at one pixel, from the CPU copy of the shader's math.
+struct PixelBreakdown {
+    glm::vec3 ambient{0.0f};                // ambient * albedo
+    std::vector<gbl::LightContribution> lights;  // only lights that reach the pixel, brightest first
+    glm::vec3 total{0.0f};                  // ambient + sum of the lights
+    int lightsTested = 0;
+};
+
+struct PixelInspectorState {
+    bool locked = false;                // keep showing the pixel after the mouse leaves
+    std::optional<glm::ivec2> pixel;    // top-left origin, renderer pixels
+    std::string source;                 // where the mouse was: "viewport" or a viewer's name
+    std::optional<PixelSample> sample;  // read by Renderer::samplePixel after the frame
+    std::optional<PixelBreakdown> breakdown;
+    std::string breakdownNote;          // why there is no breakdown, when there is none
+    int selectLight = -1;               // a light row was clicked: the loop selects it
+};
+
+}  // namespace gbl::ui

@@ -1,0 +1,188 @@
+// Scene loading for the editor: worker thread, progress, cancellation, and the hand-over to the renderer.
+#include "model/scene_loading.h"
+
+#include "model/camera_rig.h"
+#include "scene/default_scene.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace gbl::ui {
+
+namespace {
+
+void wakeWorker(SceneLoadProgress& p) {
+    {
+        std::lock_guard lock(p.mutex);
+        p.released = true;
+    }
+    p.wake.notify_all();
+}
+
+// Runs on the worker thread for every progress report of the loader.
+bool reportProgress(SceneLoadProgress& p, float fraction, std::string_view stage) {
+    p.fraction.store(fraction, std::memory_order_relaxed);
+    std::unique_lock lock(p.mutex);
+    p.stage = stage;
+    if (!p.holdAtStage.empty() && stage == p.holdAtStage && !p.released) {
+        p.held = true;
+        p.wake.wait(lock, [&] { return p.released || p.cancel.load(); });
+        p.held = false;
+    }
+    return !p.cancel.load();
+}
+
+}  // namespace
+
+SceneLoadJob::~SceneLoadJob() {
+    // The worker references `progress` through its own shared_ptr, but its result must not
+    // outlive the editor: stop it and wait (it stops at its next progress report).
+    if (progress) {
+        progress->cancel = true;
+        wakeWorker(*progress);
+    }
+    if (result.valid()) result.wait();
+}
+
+void rememberRecentScene(SceneLoadingState& state, std::string const& path) {
+    std::erase(state.recent, path);
+    state.recent.insert(state.recent.begin(), path);
+    if (state.recent.size() > kMaxRecentScenes) state.recent.resize(kMaxRecentScenes);
+}
+
+std::optional<std::string> startSceneLoad(SceneLoadingState& state, std::string const& path) {
+    if (state.job) return "'" + state.job->path + "' is still loading: cancel it before opening '" + path + "'.";
+    auto progress = std::make_shared<SceneLoadProgress>();
+    progress->holdAtStage = std::exchange(state.holdNextAtStage, {});
+    GltfLoadOptions options;
+    options.allowOutsideUris = state.allowOutsideUris;
+    options.progress = [progress](float fraction, std::string_view stage) {
+        return reportProgress(*progress, fraction, stage);
+    };
+    SceneLoadJob job;
+    job.path = path;
+    job.progress = progress;
+    job.started = std::chrono::steady_clock::now();
+    // std::async(launch::async) is a real thread; the future's result is the whole scene or
+    // an error, so nothing half-loaded can reach the render thread.
+    job.result = std::async(std::launch::async, [path, options] { return loadGltf(path, options); });
+    state.job.emplace(std::move(job));
+    return std::nullopt;
+}
+
+void cancelSceneLoad(SceneLoadingState& state) {
+    if (!state.job) return;
+    state.job->progress->cancel = true;
+    wakeWorker(*state.job->progress);
+}
+
+void releaseHeldLoad(SceneLoadingState& state) {
+    if (state.job) wakeWorker(*state.job->progress);
+}
+
+bool sceneLoading(SceneLoadingState const& state) { return state.job.has_value(); }
+
+std::string currentLoadStage(SceneLoadingState const& state) {
+    if (!state.job) return {};
+    std::lock_guard lock(state.job->progress->mutex);
+    return state.job->progress->stage;
+}
+
+float currentLoadFraction(SceneLoadingState const& state) {
+    return state.job ? state.job->progress->fraction.load(std::memory_order_relaxed) : 0.0f;
+}
+
+bool loadHeld(SceneLoadingState const& state) {
+    if (!state.job) return false;
+    std::lock_guard lock(state.job->progress->mutex);
+    return state.job->progress->held;
+}
+
+std::optional<GltfLoadResult> takeFinishedLoad(SceneLoadingState& state) {
+    if (!state.job) return std::nullopt;
+    if (state.job->result.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return std::nullopt;
+    GltfLoadResult result = state.job->result.get();
+    state.job.reset();
+    return result;
+}
+
+std::optional<std::string> installScene(SceneData const& scene, bool fromFile, int defaultLightCount,
+                                        EditorState& state, SceneUploader const& upload) {
+    std::vector<PointLight> lights = fromFile ? scene.lights : makeDefaultLights(defaultLightCount);
+    if (fromFile && lights.empty()) {
+        // A model without lights would be black: light it with the default rig.
+        lights = makeDefaultLights(defaultLightCount);
+        Bounds const b = scene.bounds();
+        float const s = std::max(b.radius(), 1e-3f) / 16.0f;  // default lights fit a ~33-unit courtyard
+        for (auto& l : lights) {
+            l.position = b.center() + (l.position - defaultSceneCenter()) * s;
+            // Scale the fall-off with the scene so each light still covers a similar share.
+            l.kl /= s;
+            l.kq /= s * s;
+        }
+    }
+    // The upload is the only step that can still fail; nothing in the state changes before it.
+    if (auto error = upload(scene)) return *error;
+    for (auto const& w : scene.warnings) logMessage(state.log, scene.source + ": " + w);
+    state.lights = std::move(lights);
+    state.sceneSource = scene.source;
+    state.sceneBounds = scene.bounds();
+    state.sceneTriangles = scene.triangleCount();
+    state.orbitCenter = fromFile ? state.sceneBounds.center() : defaultSceneCenter();
+    state.animation.time = 0.0f;
+    if (scene.camera) {
+        state.camera = *scene.camera;
+        resetTargetAhead(state.rig, state.camera, glm::length(state.camera.position - state.sceneBounds.center()));
+    } else {
+        frameBounds(state.rig, state.camera, state.sceneBounds);
+    }
+    state.lightsPanel.selected = state.lights.empty() ? -1 : 0;
+    logMessage(state.log, "scene " + scene.source + ": " + std::to_string(scene.triangleCount()) + " triangles, " +
+                              std::to_string(state.lights.size()) + " lights");
+    return std::nullopt;
+}
+
+bool updateSceneLoading(SceneLoadingState& loading, int defaultLightCount, EditorState& state, SceneUploader const& upload) {
+    // Requests start in order; while a load runs the others are refused with a message, so
+    // two scenes never race to become current.
+    if (!loading.dropped.empty()) {
+        std::vector<std::string> const dropped = std::exchange(loading.dropped, {});
+        if (dropped.size() > 1)
+            logMessage(state.log, "one scene at a time: opening " + dropped.front() + " and ignoring " +
+                                      std::to_string(dropped.size() - 1) + " more dropped file(s)");
+        loading.requests.push_back(dropped.front());
+    }
+    for (std::string const& path : std::exchange(loading.requests, {})) {
+        if (auto refused = startSceneLoad(loading, path)) logMessage(state.log, *refused, true);
+        else logMessage(state.log, "loading " + path + " ...");
+    }
+
+    auto result = takeFinishedLoad(loading);
+    if (!result) return false;
+    auto fail = [&](std::string const& error) {
+        loading.lastOutcome = SceneLoadOutcome::Failed;
+        loading.lastError = error;
+        loading.errorDialogRequested = true;
+        logMessage(state.log, error + " The previous scene stays.", true);
+    };
+    if (result->cancelled) {
+        loading.lastOutcome = SceneLoadOutcome::Cancelled;
+        loading.lastError = result->error;
+        logMessage(state.log, result->error + " The previous scene stays.");
+        return false;
+    }
+    if (!result->scene) {
+        fail(result->error);
+        return false;
+    }
+    if (auto error = installScene(*result->scene, true, defaultLightCount, state, upload)) {
+        fail(result->scene->source + ": the scene could not be uploaded: " + *error);
+        return false;
+    }
+    loading.lastOutcome = SceneLoadOutcome::Loaded;
+    loading.lastError.clear();
+    rememberRecentScene(loading, result->scene->source);
+    return true;
+}
+
+}  // namespace gbl::ui

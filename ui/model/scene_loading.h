@@ -1,0 +1,117 @@
+// Loading glTF scenes in the editor: a worker thread parses and decodes, the render thread uploads.
+#pragma once
+
+#include "model/editor_state.h"
+#include "gltf/loader.h"
+#include "scene/scene_data.h"
+
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <functional>
+#include <future>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gbl::ui {
+
+// What the worker and the render thread share while one load runs. The worker writes the
+// progress; the render thread reads it for the progress bar and sets `cancel`.
+struct SceneLoadProgress {
+    std::atomic<float> fraction{0.0f};
+    std::atomic<bool> cancel{false};
+    std::atomic<bool> held{false};  // the worker waits at holdAtStage (test hook)
+
+    // Test hook: the worker stops at the first report of this stage until released or
+    // cancelled, so a test can cancel at a known point however fast the machine is.
+    std::string holdAtStage;  // fixed before the worker starts
+    std::mutex mutex;         // guards stage, released
+    std::condition_variable wake;
+    std::string stage;        // the loader's stage names are short; a copy per report is cheap
+    bool released = false;
+};
+
+// One load in flight. Destroying it cancels the load and waits for the worker.
+struct SceneLoadJob {
+    SceneLoadJob() = default;
+    SceneLoadJob(SceneLoadJob const&) = delete;
+    SceneLoadJob& operator=(SceneLoadJob const&) = delete;
+    SceneLoadJob(SceneLoadJob&&) = default;
+    SceneLoadJob& operator=(SceneLoadJob&&) = default;
+    ~SceneLoadJob();
+
+    std::string path;
+    std::shared_ptr<SceneLoadProgress> progress;
+    std::future<GltfLoadResult> result;
+    std::chrono::steady_clock::time_point started;
+};
+
+enum class SceneLoadOutcome { None, Loaded, Failed, Cancelled };
+
+// Everything about scene loading between frames. Not part of EditorState: it owns a thread
+// and is not a value a session saves or an undo step restores.
+struct SceneLoadingState {
+    std::optional<SceneLoadJob> job;     // the load in progress, if any
+    std::vector<std::string> requests;   // paths asked for (menu, dialog, recent, script), oldest first
+    std::vector<std::string> dropped;    // files dropped onto the window since the last frame
+    std::string holdNextAtStage;         // test hook, applied to the next load that starts
+    bool allowOutsideUris = false;       // --allow-outside-uris
+
+    // File > Open scene… dialog and the recent list (most recent first).
+    bool dialogOpen = false;
+    bool dialogJustOpened = false;        // focus the path field on the first frame
+    std::array<char, 1024> dialogPath{};  // the dialog's text field
+    std::vector<std::string> recent;
+
+    // The last finished load, for the error dialog and for tests.
+    SceneLoadOutcome lastOutcome = SceneLoadOutcome::None;
+    std::string lastError;
+    bool errorDialogRequested = false;
+    bool errorDialogDismissed = false;  // close the error dialog as its OK button does (scripts)
+};
+
+inline constexpr std::size_t kMaxRecentScenes = 8;
+
+// Hands a scene to the GPU (the editor passes Renderer::setScene): nullopt on success, else why
+// not. The model never sees the renderer itself, so its tests need no GL.
+using SceneUploader = std::function<std::optional<std::string>(SceneData const&)>;
+
+// Moves `path` to the front of the recent list, keeping at most kMaxRecentScenes entries.
+void rememberRecentScene(SceneLoadingState& state, std::string const& path);
+
+// Starts loading `path` on a worker thread. Refused (returns a sentence) while another load
+// runs: the user cancels that one first, so two scenes never race to become current.
+std::optional<std::string> startSceneLoad(SceneLoadingState& state, std::string const& path);
+
+// Asks the running load to stop at its next progress report; a held worker is woken.
+void cancelSceneLoad(SceneLoadingState& state);
+// Lets a worker held by the test hook continue.
+void releaseHeldLoad(SceneLoadingState& state);
+
+bool sceneLoading(SceneLoadingState const& state);
+// The stage last reported by the running load ("" when none runs) and its fraction.
+std::string currentLoadStage(SceneLoadingState const& state);
+float currentLoadFraction(SceneLoadingState const& state);
+bool loadHeld(SceneLoadingState const& state);
+
+// When the worker has finished, takes its result and clears the job; nullopt otherwise.
+std::optional<GltfLoadResult> takeFinishedLoad(SceneLoadingState& state);
+
+// Makes `scene` the editor's scene: uploads it (render thread) and resets what depends on it:
+// lights (from the file, or the default rig scaled to the scene), bounds, orbit centre, and a
+// camera framing it. fromFile: a glTF scene (false: the procedural default scene). On failure
+// the renderer and the state keep the previous scene and the error sentence is returned.
+std::optional<std::string> installScene(SceneData const& scene, bool fromFile, int defaultLightCount,
+                                        EditorState& state, SceneUploader const& upload);
+
+// Render thread, once per frame: starts requested loads (a drop opens its first file) and
+// installs a finished one. Errors
+// and cancellations are logged; errors also open the error dialog. Returns true when a new
+// scene became current.
+bool updateSceneLoading(SceneLoadingState& loading, int defaultLightCount, EditorState& state, SceneUploader const& upload);
+
+}  // namespace gbl::ui

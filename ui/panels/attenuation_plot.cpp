@@ -1,0 +1,102 @@
+// Attenuation plot drawn with ImDrawList.
+#include "panels/attenuation_plot.h"
+
+#include "core/light_math.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace gbl::ui {
+
+AttenuationCurve sampleAttenuationCurve(PointLight const& light, int samples) {
+    AttenuationCurve c;
+    LightRadius const r = lightRadius(light);
+    c.radius = r.radius;
+    // Show a quarter past the radius so the curve visibly reaches zero; a light without a
+    // radius still gets a short axis so the plot is not empty.
+    c.maxDistance = r.radius > 0.0f ? r.radius * 1.25f : 1.0f;
+    float const imax = lightImax(light);
+    samples = std::max(samples, 2);
+    for (int i = 0; i < samples; ++i) {
+        float const d = c.maxDistance * float(i) / float(samples - 1);
+        c.distance.push_back(d);
+        c.classic.push_back(imax * attenuation(light.kc, light.kl, light.kq, d));
+        c.applied.push_back(imax * windowedAttenuation(light, r.radius, d));
+    }
+    return c;
+}
+
+namespace {
+struct Axes {
+    ImVec2 min, max;
+    float maxDistance;
+    float yTop, yBottom;  // value range, bottom > 0 on a log axis
+    bool log;
+
+    ImVec2 at(float d, float v) const {
+        float t;
+        if (log) {
+            float const lv = std::log10(std::max(v, yBottom));
+            t = (lv - std::log10(yBottom)) / (std::log10(yTop) - std::log10(yBottom));
+        } else {
+            t = (v - yBottom) / (yTop - yBottom);
+        }
+        t = std::clamp(t, 0.0f, 1.0f);
+        return ImVec2(min.x + (max.x - min.x) * d / maxDistance, max.y - (max.y - min.y) * t);
+    }
+};
+
+void polyline(ImDrawList* dl, Axes const& axes, AttenuationCurve const& c, std::vector<float> const& values,
+              ImU32 colour, float thickness) {
+    for (std::size_t i = 1; i < values.size(); ++i)
+        dl->AddLine(axes.at(c.distance[i - 1], values[i - 1]), axes.at(c.distance[i], values[i]), colour, thickness);
+}
+}  // namespace
+
+void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size) {
+    AttenuationCurve const c = sampleAttenuationCurve(light, 128);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    ImVec2 const p0 = ImGui::GetCursorScreenPos();
+    ImVec2 const p1(p0.x + size.x, p0.y + size.y);
+    ImGui::InvisibleButton("attenuation-plot", size);
+    bool const hovered = ImGui::IsItemHovered();
+
+    float const peak = std::max(c.classic.empty() ? 1.0f : c.classic.front(), light.threshold * 2.0f);
+    Axes const axes{ImVec2(p0.x + 4, p0.y + 14), ImVec2(p1.x - 4, p1.y - 14), c.maxDistance, peak * 1.05f,
+                    logScale ? light.threshold * 0.1f : 0.0f, logScale};
+
+    dl->AddRectFilled(p0, p1, IM_COL32(20, 22, 26, 255));
+    dl->AddRect(p0, p1, IM_COL32(90, 90, 100, 255));
+    // Threshold: where the classic curve crosses it is, by definition, the radius.
+    ImVec2 const t0 = axes.at(0.0f, light.threshold), t1 = axes.at(c.maxDistance, light.threshold);
+    dl->AddLine(t0, t1, IM_COL32(230, 180, 60, 200), 1.0f);
+    dl->AddText(ImVec2(t1.x - 70, t1.y - 14), IM_COL32(230, 180, 60, 255), "threshold");
+    if (c.radius > 0.0f) {
+        ImVec2 const r0 = axes.at(c.radius, axes.yTop), r1 = axes.at(c.radius, axes.yBottom);
+        dl->AddLine(r0, r1, IM_COL32(90, 200, 255, 220), 1.5f);
+        char label[48];
+        std::snprintf(label, sizeof label, "r = %.2f", c.radius);
+        dl->AddText(ImVec2(std::min(r0.x + 3, p1.x - 70), p0.y + 1), IM_COL32(90, 200, 255, 255), label);
+    }
+    polyline(dl, axes, c, c.classic, IM_COL32(150, 150, 150, 160), 1.0f);
+    polyline(dl, axes, c, c.applied, IM_COL32(255, 255, 255, 255), 2.0f);
+    // Legend, top left: the bright curve is what the renderer adds, the faint one the textbook form.
+    dl->AddText(ImVec2(p0.x + 6, p0.y + 16), IM_COL32(255, 255, 255, 255), "applied");
+    dl->AddText(ImVec2(p0.x + 6, p0.y + 30), IM_COL32(150, 150, 150, 255), "1/(Kc+Kl d+Kq d^2)");
+    char axisLabel[64];
+    std::snprintf(axisLabel, sizeof axisLabel, "0 .. %.2f units%s", c.maxDistance, logScale ? "  (log)" : "");
+    dl->AddText(ImVec2(p0.x + 4, p1.y - 14), IM_COL32(160, 160, 160, 255), axisLabel);
+
+    if (hovered && c.maxDistance > 0.0f) {
+        float const mx = ImGui::GetIO().MousePos.x;
+        float const d = std::clamp((mx - axes.min.x) / (axes.max.x - axes.min.x), 0.0f, 1.0f) * c.maxDistance;
+        dl->AddLine(ImVec2(mx, p0.y), ImVec2(mx, p1.y), IM_COL32(255, 255, 255, 60));
+        float const imax = lightImax(light);
+        ImGui::SetTooltip("d = %.3f\nclassic Imax/(Kc+Kl d+Kq d^2) = %.4f\napplied (windowed) = %.4f\nthreshold = %.4f",
+                          d, imax * attenuation(light.kc, light.kl, light.kq, d),
+                          imax * windowedAttenuation(light, c.radius, d), light.threshold);
+    }
+}
+
+}  // namespace gbl::ui

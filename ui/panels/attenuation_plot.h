@@ -1,0 +1,27 @@
+// Plot of a light's brightness against distance, with its threshold and radius, drawn from the
+// same functions the renderer uses (gbl::attenuation, gbl::windowedAttenuation, gbl::lightRadius).
+#pragma once
+
+#include "core/point_light.h"
+
+#include <imgui.h>
+
+#include <vector>
+
+namespace gbl::ui {
+
+struct AttenuationCurve {
+    float maxDistance = 1.0f;
+    float radius = 0.0f;
+    std::vector<float> distance;
+    std::vector<float> classic;   // Imax / (Kc + Kl d + Kq d^2)
+    std::vector<float> applied;   // Imax * windowedAttenuation: what every lighting mode adds
+};
+
+// Samples both curves from 0 to a little past the radius.
+AttenuationCurve sampleAttenuationCurve(PointLight const& light, int samples);
+
+// Draws into a box of `size` at the cursor with ImDrawList; hovering shows the values there.
+void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size);
+
+}  // namespace gbl::ui

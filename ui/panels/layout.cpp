@@ -1,0 +1,87 @@
+// Default dock layout (DockBuilder) and the tiled fallback for ImGui builds without docking.
+#include "panels/layout.h"
+
+#include "panels/gui_compat.h"
+
+#include <imgui.h>
+#ifdef IMGUI_HAS_DOCK
+#include <imgui_internal.h>
+#endif
+
+#include <cmath>
+
+namespace gbl::ui {
+
+#ifdef IMGUI_HAS_DOCK
+
+namespace {
+constexpr char const* kDockSpaceName = "gbl-dockspace";
+
+void buildDefaultDockLayout(ImGuiID dockspace, ImGuiViewport const* viewport) {
+    ImGui::DockBuilderRemoveNode(dockspace);
+    ImGui::DockBuilderAddNode(dockspace, ImGuiDockNodeFlags_DockSpace);
+    ImGui::DockBuilderSetNodeSize(dockspace, viewport->WorkSize);
+
+    ImGuiID centre = dockspace;
+    ImGuiID const left = ImGui::DockBuilderSplitNode(centre, ImGuiDir_Left, kLeftColumn, nullptr, &centre);
+    // The right column is a share of what is left after the left column was taken.
+    ImGuiID const right =
+        ImGui::DockBuilderSplitNode(centre, ImGuiDir_Right, kRightColumn / (1.0f - kLeftColumn), nullptr, &centre);
+    ImGuiID const strip = ImGui::DockBuilderSplitNode(centre, ImGuiDir_Down, kViewerStrip, nullptr, &centre);
+    ImGuiID leftTop = left;
+    ImGuiID const leftBottom = ImGui::DockBuilderSplitNode(leftTop, ImGuiDir_Down, 0.36f, nullptr, &leftTop);
+    ImGuiID rightTop = right;
+    ImGuiID rightMiddle = ImGui::DockBuilderSplitNode(rightTop, ImGuiDir_Down, 0.48f, nullptr, &rightTop);
+    ImGuiID const rightBottom = ImGui::DockBuilderSplitNode(rightMiddle, ImGuiDir_Down, 0.38f, nullptr, &rightMiddle);
+
+    ImGui::DockBuilderDockWindow(windowName(EditorWindow::Viewport), centre);
+    ImGui::DockBuilderDockWindow(windowName(EditorWindow::GBuffer), strip);
+    ImGui::DockBuilderDockWindow(windowName(EditorWindow::Lights), leftTop);
+    ImGui::DockBuilderDockWindow(windowName(EditorWindow::Pipeline), leftBottom);
+    ImGui::DockBuilderDockWindow(windowName(EditorWindow::PixelInspector), rightTop);
+    // Every window gets its own node so all of them are visible at once (no hidden tabs).
+    ImGui::DockBuilderDockWindow(windowName(EditorWindow::Stats), rightMiddle);
+    ImGui::DockBuilderDockWindow(windowName(EditorWindow::Log), rightBottom);
+    ImGui::DockBuilderFinish(dockspace);
+}
+}  // namespace
+
+void beginLayout(LayoutState& state) {
+    ImGuiViewport const* viewport = ImGui::GetMainViewport();
+    ImGuiID const dockspace = ImGui::GetID(kDockSpaceName);
+    // A dock tree restored from imgui.ini is kept; a fresh start or "Reset layout" builds ours.
+    if (state.resetRequested || ImGui::DockBuilderGetNode(dockspace) == nullptr) {
+        buildDefaultDockLayout(dockspace, viewport);
+        state.resetRequested = false;
+    }
+    state.dockBuilt = true;
+    ImGui::DockSpaceOverViewport(dockspace, viewport);
+}
+
+void placeWindow(EditorWindow) {}
+
+int editorWindowFlags() { return 0; }
+
+#else
+
+void beginLayout(LayoutState& state) {
+    // Tiled windows are re-placed every frame, so a reset has nothing to restore.
+    state.resetRequested = false;
+}
+
+void placeWindow(EditorWindow window) {
+    ImGuiViewport const* viewport = ImGui::GetMainViewport();
+    TileRect const r = tiledRect(window, {viewport->WorkPos.x, viewport->WorkPos.y},
+                                 {viewport->WorkSize.x, viewport->WorkSize.y});
+    ImGui::SetNextWindowPos(ImVec2(r.pos.x, r.pos.y), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(r.size.x, r.size.y), ImGuiCond_Always);
+}
+
+int editorWindowFlags() {
+    return ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+           ImGuiWindowFlags_NoBringToFrontOnFocus;
+}
+
+#endif
+
+}  // namespace gbl::ui

@@ -1,0 +1,19 @@
+// Window layout: the default dock layout with a docking ImGui, the tiled fallback without.
+#pragma once
+
+#include "model/layout_state.h"
+
+namespace gbl::ui {
+
+// Called once per frame after NewFrame and the main menu bar: builds or restores the dock
+// layout (docking builds), or does nothing (tiled builds position each window themselves).
+void beginLayout(LayoutState& state);
+
+// Called right before ImGui::Begin of an editor window: pins it to its tile in tiled builds,
+// and gives docking builds nothing to do (the dock tree places it).
+void placeWindow(EditorWindow window);
+
+// Window flags for editor windows in this build (tiled windows cannot be moved or resized).
+int editorWindowFlags();
+
+}  // namespace gbl::ui

@@ -1,0 +1,177 @@
+// G-buffer window: viewers drawn with the renderer's view pass, shown with nearest-neighbour
+// texels so zooming in shows exact stored pixels.
+#include "panels/panel_gbuffer.h"
+
+#include "panels/gui_compat.h"
+#include "panels/layout.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gbl::ui {
+
+namespace {
+
+constexpr char const* kChannelLabels[4] = {"R", "G", "B", "A"};
+constexpr ImU32 kChannelColours[4] = {IM_COL32(200, 60, 60, 255), IM_COL32(60, 170, 60, 255),
+                                      IM_COL32(70, 100, 220, 255), IM_COL32(150, 150, 150, 255)};
+
+// Four small toggles; a single channel alone is shown as grey by the view pass.
+void channelToggles(ViewerState& v) {
+    for (int c = 0; c < 4; ++c) {
+        if (c > 0) ImGui::SameLine(0, 2);
+        bool const on = v.channelMask & (1u << c);
+        ImGui::PushStyleColor(ImGuiCol_Button, on ? kChannelColours[c] : IM_COL32(50, 50, 55, 255));
+        if (ImGui::SmallButton(kChannelLabels[c])) {
+            // Ctrl+click adds or removes a channel; a plain click isolates it (or restores RGB).
+            if (ImGui::GetIO().KeyCtrl) v.channelMask ^= 1u << c;
+            else v.channelMask = (v.channelMask == (1u << c)) ? 0x7u : (1u << c);
+        }
+        ImGui::PopStyleColor();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("click: show %s alone (grey); Ctrl+click: add/remove", kChannelLabels[c]);
+    }
+}
+
+void viewerControls(ViewerState& v) {
+    channelToggles(v);
+    if (v.kind == ViewerKind::Normal) {
+        ImGui::SameLine();
+        int mode = int(v.normalDisplay);
+        ImGui::SetNextItemWidth(-1);
+        char const* items[] = {"n*0.5+0.5", "|n|"};
+        if (ImGui::Combo("##normals", &mode, items, 2)) v.normalDisplay = NormalDisplay(mode);
+        return;
+    }
+    if (v.kind == ViewerKind::Depth) {
+        ImGui::SameLine();
+        ImGui::Checkbox("linear", &v.linearDepth);
+    }
+    ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 5.5f);
+    float const speed = std::max((v.rangeMax - v.rangeMin) * 0.005f, 1e-5f);
+    ImGui::DragFloatRange2("##range", &v.rangeMin, &v.rangeMax, speed, 0.0f, 0.0f, "%.3g", "%.3g");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("shown value = (v - min) / (max - min)");
+    ImGui::SameLine(0, 2);
+    if (ImGui::SmallButton("Fit")) v.fitRequested = true;
+    ImGui::SameLine(0, 2);
+    ImGui::Checkbox("##auto", &v.autoFit);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("auto: refit the range to the data about once a second");
+    if (v.kind == ViewerKind::Depth && v.linearDepth) {
+        ImGui::SameLine(0, 2);
+        if (ImGui::SmallButton("...")) ImGui::OpenPopup("clip-planes");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("near and far planes used to linearise depth");
+        if (ImGui::BeginPopup("clip-planes")) {
+            ImGui::Checkbox("camera's near/far", &v.cameraClipPlanes);
+            ImGui::BeginDisabled(v.cameraClipPlanes);
+            ImGui::DragFloat("near", &v.nearPlane, 0.01f, 0.001f, v.farPlane, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+            ImGui::DragFloat("far", &v.farPlane, 0.5f, v.nearPlane + 0.001f, 1e6f, "%.1f", ImGuiSliderFlags_AlwaysClamp);
+            ImGui::EndDisabled();
+            ImGui::EndPopup();
+        }
+    }
+}
+
+// Draws the image with zoom and pan inside the remaining cell area; returns the hovered texel.
+std::optional<glm::ivec2> viewerImage(ViewerState& v, unsigned texture, glm::ivec2 imageSize, bool& clicked) {
+    ImVec2 const avail = ImGui::GetContentRegionAvail();
+    ImVec2 const origin = ImGui::GetCursorScreenPos();
+    if (avail.x < 4.0f || avail.y < 4.0f || imageSize.x <= 0 || imageSize.y <= 0) return std::nullopt;
+    ImGui::InvisibleButton("image", avail, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
+    bool const hovered = ImGui::IsItemHovered();
+    ImGuiIO const& io = ImGui::GetIO();
+
+    // Screen size of the whole image at zoom 1: fit the cell, keep the aspect.
+    float const fit = std::min(avail.x / float(imageSize.x), avail.y / float(imageSize.y));
+    ImVec2 const full(float(imageSize.x) * fit * v.zoom, float(imageSize.y) * fit * v.zoom);
+    ImVec2 const cellCentre(origin.x + avail.x * 0.5f, origin.y + avail.y * 0.5f);
+    auto imageMin = [&] { return ImVec2(cellCentre.x - v.center.x * full.x, cellCentre.y - v.center.y * full.y); };
+
+    if (hovered && io.MouseWheel != 0.0f) {
+        // Zoom about the point under the mouse, so it stays where it is.
+        ImVec2 const m = io.MousePos;
+        ImVec2 const before = imageMin();
+        glm::vec2 const p((m.x - before.x) / full.x, (m.y - before.y) / full.y);
+        float const newZoom = std::clamp(v.zoom * std::pow(1.25f, io.MouseWheel), 1.0f, 256.0f);
+        float const k = newZoom / v.zoom;
+        v.zoom = newZoom;
+        glm::vec2 const mouseFromCentre(m.x - cellCentre.x, m.y - cellCentre.y);
+        v.center = p - mouseFromCentre / (glm::vec2(full.x, full.y) * k);
+    }
+    if (ImGui::IsItemActive() && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
+        v.center -= glm::vec2(io.MouseDelta.x / full.x, io.MouseDelta.y / full.y);
+    if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+        v.zoom = 1.0f;
+        v.center = glm::vec2(0.5f);
+    }
+    if (v.zoom <= 1.0f) v.center = glm::vec2(0.5f);
+    v.center = glm::clamp(v.center, glm::vec2(0.0f), glm::vec2(1.0f));
+
+    ImVec2 const fullNow(float(imageSize.x) * fit * v.zoom, float(imageSize.y) * fit * v.zoom);
+    ImVec2 const p0 = imageMin();
+    ImVec2 const p1(p0.x + fullNow.x, p0.y + fullNow.y);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->PushClipRect(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), true);
+    dl->AddRectFilled(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), IM_COL32(12, 12, 14, 255));
+    if (texture != 0) dl->AddImage(toImTexture(texture), p0, p1, ImVec2(0, 1), ImVec2(1, 0));
+    dl->PopClipRect();
+
+    if (hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+        io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < 9.0f)
+        clicked = true;
+    if (!hovered) return std::nullopt;
+    float const u = (io.MousePos.x - p0.x) / fullNow.x, t = (io.MousePos.y - p0.y) / fullNow.y;
+    if (u < 0.0f || u >= 1.0f || t < 0.0f || t >= 1.0f) return std::nullopt;
+    glm::ivec2 const texel(int(u * float(imageSize.x)), int(t * float(imageSize.y)));
+    if (v.zoom >= 8.0f) {
+        // Outline the texel under the mouse once texels are big enough to see.
+        float const tw = fullNow.x / float(imageSize.x), th = fullNow.y / float(imageSize.y);
+        ImVec2 const a(p0.x + float(texel.x) * tw, p0.y + float(texel.y) * th);
+        dl->PushClipRect(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), true);
+        dl->AddRect(a, ImVec2(a.x + tw, a.y + th), IM_COL32(255, 255, 0, 255));
+        dl->PopClipRect();
+    }
+    return texel;
+}
+
+}  // namespace
+
+void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& textures, glm::ivec2 imageSize) {
+    state.hoverPixel.reset();
+    state.showInViewport.reset();
+    placeWindow(EditorWindow::GBuffer);
+    state.visible = ImGui::Begin(windowName(EditorWindow::GBuffer), nullptr, editorWindowFlags());
+    if (state.visible) {
+        ImGui::Checkbox("Redraw all every frame", &state.refreshEveryFrame);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("off: one viewer is redrawn per frame in turn (cheaper on slow GL); a viewer whose\n"
+                              "settings change is redrawn at once");
+        ImGui::SameLine();
+        ImGui::TextDisabled("click: show in viewport  drag: pan  wheel: zoom  double-click: reset");
+        if (ImGui::BeginTable("viewers", 5, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame,
+                              ImGui::GetContentRegionAvail())) {
+            for (std::size_t i = 0; i < state.viewers.size(); ++i) ImGui::TableSetupColumn(kViewerNames[i].data());
+            ImGui::TableNextRow(ImGuiTableRowFlags_None, ImGui::GetContentRegionAvail().y);
+            for (std::size_t i = 0; i < state.viewers.size(); ++i) {
+                ViewerState& v = state.viewers[i];
+                ImGui::TableNextColumn();
+                ImGui::PushID(int(i));
+                ImGui::TextUnformatted(kViewerNames[i].data());
+                if (v.zoom > 1.0f) {
+                    ImGui::SameLine();
+                    ImGui::TextDisabled("x%.1f", v.zoom);
+                }
+                viewerControls(v);
+                v.imageSize = imageSize;
+                bool clicked = false;
+                if (auto texel = viewerImage(v, textures[i], imageSize, clicked)) state.hoverPixel = texel;
+                if (clicked) state.showInViewport = viewerDebugView(v);
+                ImGui::PopID();
+            }
+            ImGui::EndTable();
+        }
+    }
+    ImGui::End();
+}
+
+}  // namespace gbl::ui

@@ -1,0 +1,180 @@
+// Lights window.
+#include "panels/panel_lights.h"
+
+#include "panels/attenuation_plot.h"
+#include "panels/gui_compat.h"
+#include "panels/layout.h"
+#include "model/light_list.h"
+#include "core/light_math.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace gbl::ui {
+
+namespace {
+
+char const* radiusKindText(RadiusKind kind) {
+    switch (kind) {
+    case RadiusKind::Quadratic: return "quadratic root";
+    case RadiusKind::Linear: return "linear (Kq = 0)";
+    case RadiusKind::Capped: return "never falls off (Kl = Kq = 0): capped";
+    case RadiusKind::Zero: return "never reaches the threshold: skipped";
+    }
+    return "";
+}
+
+void drawList(LightsPanelState& state, std::vector<PointLight>& lights) {
+    float const height = std::min(ImGui::GetTextLineHeightWithSpacing() * 5.5f, ImGui::GetContentRegionAvail().y * 0.4f);
+    beginFramedChild("light-list", ImVec2(0, std::max(height, 60.0f)));
+    ImGuiListClipper clipper;
+    clipper.Begin(int(lights.size()));
+    while (clipper.Step()) {
+        for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+            PointLight const& l = lights[std::size_t(i)];
+            ImGui::PushID(i);
+            ImGui::ColorButton("##c", ImVec4(l.color.r, l.color.g, l.color.b, 1.0f),
+                               ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoPicker, ImVec2(12, 12));
+            ImGui::SameLine();
+            char label[96];
+            std::snprintf(label, sizeof label, "%3d  %s  r=%.2f", i, l.name.empty() ? "light" : l.name.c_str(),
+                          lightRadius(l).radius);
+            if (ImGui::Selectable(label, state.selected == i)) state.selected = i;
+            if (state.selected == i && ImGui::IsWindowAppearing()) ImGui::SetScrollHereY();
+            ImGui::PopID();
+        }
+    }
+    ImGui::EndChild();
+}
+
+void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
+    if (state.selected < 0 || state.selected >= int(lights.size())) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("Select a light in the list or click its cube in the viewport.");
+        ImGui::PopStyleColor();
+        return;
+    }
+    // Short labels on the right, values fill the rest of the narrow side column.
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * 4.0f);
+    // Widgets edit a copy; the copy replaces the light only when validateLight accepts it.
+    PointLight edited = lights[std::size_t(state.selected)];
+    bool changed = false;
+    char name[64];
+    std::snprintf(name, sizeof name, "%s", edited.name.c_str());
+    if (ImGui::InputText("Name", name, sizeof name)) {
+        edited.name = name;
+        changed = true;
+    }
+    changed |= ImGui::DragFloat3("Position", &edited.position.x, 0.05f);
+    changed |= ImGui::ColorEdit3("Colour", &edited.color.x, ImGuiColorEditFlags_Float);
+    // Three attenuation terms on one row, as in the formula Kc + Kl d + Kq d^2; each keeps its
+    // own drag speed because they differ by orders of magnitude.
+    float const third = (ImGui::CalcItemWidth() - 2.0f * ImGui::GetStyle().ItemInnerSpacing.x) / 3.0f;
+    ImGui::PushItemWidth(third);
+    changed |= ImGui::DragFloat("##kc", &edited.kc, 0.005f, 0.0f, 100.0f, "Kc %.3f");
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    changed |= ImGui::DragFloat("##kl", &edited.kl, 0.001f, 0.0f, 100.0f, "Kl %.4f");
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    changed |= ImGui::DragFloat("##kq", &edited.kq, 0.0005f, 0.0f, 100.0f, "Kq %.5f");
+    ImGui::PopItemWidth();
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::TextUnformatted("Atten.");
+    float const half = (ImGui::CalcItemWidth() - ImGui::GetStyle().ItemInnerSpacing.x) / 2.0f;
+    ImGui::PushItemWidth(half);
+    changed |= ImGui::DragFloat("##intensity", &edited.intensity, 0.01f, 0.0f, 1000.0f, "I %.3f");
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    changed |= ImGui::DragFloat("##threshold", &edited.threshold, 0.0005f, 0.0f, 1.0f, "cut %.5f");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("brightness below which the light counts as dark (5/256 by default)");
+    ImGui::PopItemWidth();
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::TextUnformatted("I, cut");
+
+    int preset = matchingPreset(edited);
+    char presetLabel[32];
+    std::snprintf(presetLabel, sizeof presetLabel, preset >= 0 ? "range %d" : "custom",
+                  preset >= 0 ? kAttenuationPresets[std::size_t(preset)].range : 0);
+    if (ImGui::BeginCombo("Preset", presetLabel)) {
+        for (std::size_t i = 0; i < kAttenuationPresets.size(); ++i) {
+            auto const& p = kAttenuationPresets[i];
+            char item[96];
+            std::snprintf(item, sizeof item, "range %4d:  Kc %.1f  Kl %.4f  Kq %.6f", p.range, p.kc, p.kl, p.kq);
+            if (ImGui::Selectable(item, preset == int(i))) {
+                applyPreset(edited, p);
+                changed = true;
+            }
+        }
+        ImGui::EndCombo();
+    }
+
+    ImGui::PopItemWidth();
+    if (changed) {
+        auto const error = applyLightEdit(lights, state.selected, edited);
+        state.message = error ? *error : std::string();
+    }
+
+    PointLight const& light = lights[std::size_t(state.selected)];
+    LightRadius const r = lightRadius(light);
+    ImGui::Text("Radius %.3f  (%s)", r.radius, radiusKindText(r.kind));
+    ImGui::Text("Imax %.3f  Imax/cut %.1f", lightImax(light),
+                light.threshold > 0.0f ? lightImax(light) / light.threshold : 0.0f);
+    ImGui::SameLine();
+    ImGui::Checkbox("log", &state.plotLogScale);
+    float const plotH = std::clamp(ImGui::GetContentRegionAvail().y - 4.0f, 100.0f, 240.0f);
+    drawAttenuationPlot(light, state.plotLogScale, ImVec2(ImGui::GetContentRegionAvail().x, plotH));
+}
+
+}  // namespace
+
+void drawLightsPanel(LightsPanelState& state, std::vector<PointLight>& lights, LightAnimation& animation,
+                     Bounds const& sceneBounds) {
+    placeWindow(EditorWindow::Lights);
+    if (ImGui::Begin(windowName(EditorWindow::Lights), nullptr, editorWindowFlags())) {
+        if (state.selected >= int(lights.size())) state.selected = int(lights.size()) - 1;
+        if (ImGui::Button("Add")) {
+            auto const r = addLight(lights, sceneBounds.center() + glm::vec3(0, 1, 0));
+            state.message = r.message;
+            if (r.index >= 0) state.selected = r.index;
+        }
+        ImGui::SameLine();
+        ImGui::BeginDisabled(state.selected < 0);
+        if (ImGui::Button("Duplicate")) {
+            auto const r = duplicateLight(lights, state.selected);
+            state.message = r.message;
+            if (r.index >= 0) state.selected = r.index;
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Delete")) state.selected = deleteLight(lights, state.selected);
+        ImGui::EndDisabled();
+        ImGui::SameLine();
+        ImGui::Checkbox("Animate", &animation.enabled);
+
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
+        ImGui::InputInt("##count", &state.randomCount, 1, 16);
+        state.randomCount = std::clamp(state.randomCount, 1, kMaxEditorLights);
+        ImGui::SameLine();
+        if (ImGui::Button("Add random lights")) {
+            auto const r = addRandomLights(lights, state.randomCount, sceneBounds, state.randomSeed);
+            state.message = r.message;
+        }
+        ImGui::SameLine();
+        ImGui::BeginDisabled(lights.empty());
+        if (ImGui::Button("Clear")) {
+            lights.clear();
+            state.selected = -1;
+        }
+        ImGui::EndDisabled();
+        if (animation.enabled) {
+            ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+            ImGui::SliderFloat("Speed", &animation.speed, 0.0f, 4.0f, "%.2fx");
+        }
+
+        drawList(state, lights);
+        if (!state.message.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", state.message.c_str());
+        drawSelected(state, lights);
+    }
+    ImGui::End();
+}
+
+}  // namespace gbl::ui

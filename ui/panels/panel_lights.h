@@ -1,0 +1,16 @@
+// Lights window: the light list, the selected light's parameters, its attenuation plot, presets,
+// random lights and animation.
+#pragma once
+
+#include "model/lights_state.h"
+#include "core/point_light.h"
+#include "scene/scene_data.h"
+#include <vector>
+
+namespace gbl::ui {
+
+// Edits `lights` in place through the validated operations of light_list.h.
+void drawLightsPanel(LightsPanelState& state, std::vector<PointLight>& lights, LightAnimation& animation,
+                     Bounds const& sceneBounds);
+
+}  // namespace gbl::ui

@@ -1,0 +1,29 @@
+// Log window.
+#include "panels/panel_log.h"
+
+#include "panels/layout.h"
+
+#include <imgui.h>
+
+#include <cstdio>
+
+namespace gbl::ui {
+
+void drawLogPanel(LogState& log) {
+    placeWindow(EditorWindow::Log);
+    if (ImGui::Begin(windowName(EditorWindow::Log), nullptr, editorWindowFlags())) {
+        if (ImGui::SmallButton("Clear")) {
+            log.lines.clear();
+            log.errorCount = 0;
+        }
+        ImGui::Separator();
+        ImGui::BeginChild("log-lines");
+        for (auto const& line : log.lines) ImGui::TextWrapped("%s", line.c_str());
+        if (log.scrollToBottom) ImGui::SetScrollHereY(1.0f);
+        log.scrollToBottom = false;
+        ImGui::EndChild();
+    }
+    ImGui::End();
+}
+
+}  // namespace gbl::ui

@@ -1,0 +1,106 @@
+// Pipeline window.
+#include "panels/panel_pipeline.h"
+
+#include "panels/gui_compat.h"
+#include "panels/layout.h"
+
+#include <imgui.h>
+
+namespace gbl::ui {
+
+std::string lightingModeUnavailableReason(LightingMode mode, GlCaps const& caps) {
+    if (mode == LightingMode::Tiled) return caps.tiledUnavailableReason();
+    return {};
+}
+
+namespace {
+// One-line explanations shown on hover: the editor is a teaching tool, the lesson is the point.
+constexpr char const* kModeHelp[] = {
+    "quad: one full-screen pass evaluates every light at every pixel (cost = pixels x lights)",
+    "volumes: one sphere per light, scaled to its radius; only covered pixels are shaded",
+    "tiled: a compute pass builds a light list per 16x16 tile, then shades each pixel with its tile's lights",
+    "forward: no G-buffer; every object is shaded with every light while it is drawn",
+};
+constexpr char const* kCullHelp[] = {
+    "back: cull back faces; the volume vanishes when the camera is inside it",
+    "front: cull front faces and draw the far side; works with the camera inside",
+    "none: draw both sides, so each light is applied twice (the classic bug)",
+    "flip: back faces normally, front faces for lights whose volume holds the camera",
+    "stencil: two passes, mark then shade, so each pixel is shaded once and only if inside",
+};
+constexpr char const* kBlitHelp[] = {
+    "blit: glBlitFramebuffer copies the G-buffer depth so light cubes are hidden by walls",
+    "shader: a full-screen pass writes gl_FragDepth from the depth texture (works where blits between formats fail)",
+    "off: no depth before the forward pass; light cubes show through walls",
+};
+
+void helpTooltip(char const* text) {
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", text);
+}
+
+template <class Enum, std::size_t N>
+void radioRow(char const* id, Enum& value, std::array<std::string_view, N> const& names, char const* const* help) {
+    ImGui::PushID(id);
+    float const right = rowRightEdge();
+    for (std::size_t i = 0; i < N; ++i) {
+        sameLineIfFits(checkItemWidth(names[i].data()), i == 0, right);
+        if (ImGui::RadioButton(names[i].data(), value == Enum(i))) value = Enum(i);
+        helpTooltip(help[i]);
+    }
+    ImGui::PopID();
+}
+}  // namespace
+
+void drawPipelinePanel(PipelineSettings& settings, GlCaps const& caps) {
+    placeWindow(EditorWindow::Pipeline);
+    if (ImGui::Begin(windowName(EditorWindow::Pipeline), nullptr, editorWindowFlags())) {
+        separatorText("Lighting mode");
+        float const right = rowRightEdge();
+        for (std::size_t i = 0; i < kLightingModeNames.size(); ++i) {
+            auto const mode = LightingMode(i);
+            std::string const reason = lightingModeUnavailableReason(mode, caps);
+            sameLineIfFits(checkItemWidth(kLightingModeNames[i].data()), i == 0, right);
+            ImGui::BeginDisabled(!reason.empty());
+            if (ImGui::RadioButton(kLightingModeNames[i].data(), settings.mode == mode)) settings.mode = mode;
+            ImGui::EndDisabled();
+            helpTooltip(reason.empty() ? kModeHelp[i] : reason.c_str());
+        }
+        if (std::string const reason = lightingModeUnavailableReason(LightingMode::Tiled, caps); !reason.empty())
+        {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+            ImGui::TextWrapped("tiled: %s", reason.c_str());
+            ImGui::PopStyleColor();
+        }
+
+        separatorText("Volume cull mode");
+        bool const volumes = settings.mode == LightingMode::Volumes;
+        ImGui::BeginDisabled(!volumes);
+        radioRow("cull", settings.cull, kCullModeNames, kCullHelp);
+        ImGui::EndDisabled();
+        if (!volumes) ImGui::TextDisabled("applies to the volumes mode only");
+
+        separatorText("Blit step (depth before forward pass)");
+        radioRow("blit", settings.depthCopy, kDepthCopyNames, kBlitHelp);
+
+        separatorText("Overlays and views");
+        ImGui::Checkbox("Light cubes", &settings.lightCubes);
+        sameLineIfFits(checkItemWidth("Volume wireframes"), false, right);
+        ImGui::Checkbox("Volume wireframes", &settings.volumeWireframes);
+        bool heatmap = settings.view == DebugView::Heatmap;
+        if (ImGui::Checkbox("Coverage heatmap", &heatmap)) settings.view = heatmap ? DebugView::Heatmap : DebugView::Final;
+        helpTooltip("per pixel: how many light volumes covered it and how many actually lit it");
+        sameLineIfFits(checkItemWidth("Normal maps"), false, right);
+        ImGui::Checkbox("Normal maps", &settings.normalMaps);
+
+        separatorText("Shading");
+        ImGui::ColorEdit3("Ambient", &settings.ambient.x, ImGuiColorEditFlags_Float);
+        ImGui::DragFloat("Shininess", &settings.shininess, 0.5f, 1.0f, 512.0f, "%.1f", ImGuiSliderFlags_AlwaysClamp);
+        int tonemap = int(settings.tonemap);
+        char const* tonemapItems[] = {kTonemapNames[0].data(), kTonemapNames[1].data(), kTonemapNames[2].data()};
+        if (ImGui::Combo("Tonemap", &tonemap, tonemapItems, 3)) settings.tonemap = Tonemap(tonemap);
+        ImGui::SliderFloat("Exposure", &settings.exposure, 0.05f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    }
+    ImGui::End();
+}
+
+}  // namespace gbl::ui

@@ -1,0 +1,129 @@
+// Scene open dialog, recent files, loading progress and load errors.
+#include "panels/panel_scene_loading.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+namespace gbl::ui {
+
+namespace {
+
+constexpr char const* kOpenTitle = "Open scene";
+constexpr char const* kErrorTitle = "Scene not loaded";
+
+void requestOpen(SceneLoadingState& state, std::string const& path) {
+    state.requests.push_back(path);
+}
+
+void drawOpenDialog(SceneLoadingState& state) {
+    if (!state.dialogOpen) return;
+    ImGui::OpenPopup(kOpenTitle);
+    bool open = true;
+    if (ImGui::BeginPopupModal(kOpenTitle, &open, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::TextUnformatted("A glTF 2.0 file (.gltf or .glb). You can also drop files onto the window.");
+        if (state.dialogJustOpened) ImGui::SetKeyboardFocusHere();
+        state.dialogJustOpened = false;
+        ImGui::SetNextItemWidth(520.0f);
+        bool const entered = ImGui::InputText("path", state.dialogPath.data(), state.dialogPath.size(),
+                                              ImGuiInputTextFlags_EnterReturnsTrue);
+        std::string const path = state.dialogPath.data();
+        // Say early when the path cannot be opened, so the user fixes it before loading starts.
+        std::error_code ec;
+        bool const exists = !path.empty() && std::filesystem::is_regular_file(path, ec);
+        if (!path.empty() && !exists) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "no such file");
+        if (!state.recent.empty()) {
+            ImGui::Separator();
+            ImGui::TextDisabled("recent");
+            for (auto const& r : state.recent)
+                if (ImGui::Selectable(r.c_str())) std::snprintf(state.dialogPath.data(), state.dialogPath.size(), "%s", r.c_str());
+        }
+        ImGui::Separator();
+        bool const ok = ImGui::Button("Open") || entered;
+        ImGui::SameLine();
+        bool const cancel = ImGui::Button("Cancel");
+        // A missing file is still handed to the loader: its message is the one users see
+        // everywhere else, and the error dialog shows it.
+        if ((ok && !path.empty()) || cancel || !open) {
+            if (ok && !path.empty()) requestOpen(state, path);
+            state.dialogOpen = false;
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
+}
+
+void drawProgressWindow(SceneLoadingState& state) {
+    if (!state.job) return;
+    ImGuiViewport const* vp = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + 48.0f), ImGuiCond_Always,
+                            ImVec2(0.5f, 0.0f));
+    ImGui::SetNextWindowBgAlpha(0.92f);
+    ImGuiWindowFlags const flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
+                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+    if (ImGui::Begin("Loading scene", nullptr, flags)) {
+        std::string const name = std::filesystem::path(state.job->path).filename().string();
+        double const seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - state.job->started).count();
+        bool const cancelling = state.job->progress->cancel.load();
+        ImGui::Text("Loading %s  (%.1f s)", name.c_str(), seconds);
+        std::string stage = currentLoadStage(state);
+        if (stage.empty()) stage = "starting";
+        if (cancelling) stage = "cancelling after " + stage;
+        else if (loadHeld(state)) stage += " (held by a test)";
+        ImGui::ProgressBar(currentLoadFraction(state), ImVec2(360.0f, 0.0f), stage.c_str());
+        ImGui::SameLine();
+        ImGui::BeginDisabled(cancelling);
+        if (ImGui::Button("Cancel")) cancelSceneLoad(state);
+        ImGui::EndDisabled();
+        ImGui::TextDisabled("the current scene stays until the new one is ready");
+    }
+    ImGui::End();
+}
+
+void drawErrorDialog(SceneLoadingState& state) {
+    if (state.errorDialogRequested) {
+        ImGui::OpenPopup(kErrorTitle);
+        state.errorDialogRequested = false;
+    }
+    if (ImGui::BeginPopupModal(kErrorTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 36.0f);
+        ImGui::TextUnformatted(state.lastError.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::TextDisabled("The previous scene is still shown. Details are in the Log window.");
+        if (ImGui::Button("OK") || state.errorDialogDismissed) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+    state.errorDialogDismissed = false;
+}
+
+}  // namespace
+
+void openSceneDialog(SceneLoadingState& state, std::string const& prefill) {
+    state.dialogOpen = true;
+    state.dialogJustOpened = true;
+    std::snprintf(state.dialogPath.data(), state.dialogPath.size(), "%s", prefill.c_str());
+}
+
+void drawSceneMenuItems(SceneLoadingState& state) {
+    if (ImGui::MenuItem("Open scene...", "Ctrl+Shift+O"))
+        openSceneDialog(state, state.recent.empty() ? std::string() : state.recent.front());
+    if (ImGui::BeginMenu("Open recent scene", !state.recent.empty())) {
+        for (auto const& r : state.recent)
+            if (ImGui::MenuItem(r.c_str())) requestOpen(state, r);
+        ImGui::EndMenu();
+    }
+    if (state.job && ImGui::MenuItem("Cancel scene loading")) cancelSceneLoad(state);
+}
+
+void drawSceneLoadingUi(SceneLoadingState& state) {
+    drawOpenDialog(state);
+    drawProgressWindow(state);
+    drawErrorDialog(state);
+}
+
+}  // namespace gbl::ui

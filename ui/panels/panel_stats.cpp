@@ -1,0 +1,74 @@
+// Stats window.
+#include "panels/panel_stats.h"
+
+#include "panels/gui_compat.h"
+#include "panels/layout.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+namespace gbl::ui {
+
+namespace {
+// History in chronological order for PlotLines (it takes an offset, but the max needs a pass).
+float historyMax(std::array<float, StatsState::kHistory> const& values, int count) {
+    float m = 1.0f;
+    for (int i = 0; i < count; ++i) m = std::max(m, values[std::size_t(i)]);
+    return m;
+}
+}  // namespace
+
+void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount) {
+    placeWindow(EditorWindow::Stats);
+    if (ImGui::Begin(windowName(EditorWindow::Stats), nullptr, editorWindowFlags())) {
+        FrameStats const& f = stats.last;
+        double const frameMs = stats.costAverage.frameCpuMs;
+        ImGui::Text("Frame %.2f ms (%.0f fps)", frameMs, frameMs > 0.0 ? 1000.0 / frameMs : 0.0);
+        ImGui::Text("Renderer GPU %.2f ms at %dx%d", f.gpuFrameMs, f.width, f.height);
+        ImGui::Text("Mode run: %s", enumName(kLightingModeNames, f.modeUsed).data());
+        if (!f.fallbackReason.empty()) {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
+            ImGui::TextWrapped("%s", f.fallbackReason.c_str());
+            ImGui::PopStyleColor();
+        }
+        int const offset = stats.count == StatsState::kHistory ? stats.next : 0;
+        float const top = historyMax(stats.frameMs, stats.count) * 1.1f;
+        // PlotLines takes a literal width (no "fill" convention), so pass the available width.
+        float const plotW = ImGui::GetContentRegionAvail().x;
+        ImGui::PlotLines("##frame", stats.frameMs.data(), stats.count, offset, "frame ms", 0.0f, top, ImVec2(plotW, 45.0f));
+        ImGui::PlotLines("##gpu", stats.gpuFrameMs.data(), stats.count, offset, "renderer GPU ms", 0.0f, top,
+                         ImVec2(plotW, 45.0f));
+
+        if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+            ImGui::TableSetupColumn("pass");
+            ImGui::TableSetupColumn("GPU ms");
+            ImGui::TableHeadersRow();
+            for (auto const& p : f.passes) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(p.name.c_str());
+                ImGui::TableNextColumn();
+                ImGui::Text("%.3f", p.gpuMs);
+            }
+            ImGui::EndTable();
+        }
+
+        ImGui::Text("Lights: %d in the list, %d submitted, %d shaded", lightCount, f.lightsSubmitted, f.lightsShaded);
+        if (f.fragmentInvocations)
+            ImGui::Text("Fragment invocations (lighting): %llu", (unsigned long long)*f.fragmentInvocations);
+        else
+            ImGui::TextDisabled("Fragment invocations: n/a (%s)", caps.pipelineStatisticsUnavailableReason().c_str());
+        ImGui::Text("GL errors this frame: %llu", (unsigned long long)f.glErrors);
+
+        separatorText("Editor cost");
+        EditorCost const& c = stats.costAverage;
+        double const editor = c.uiCpuMs + c.viewersGpuMs + c.imguiGpuMs;
+        ImGui::Text("UI build %.2f ms (CPU)", c.uiCpuMs);
+        ImGui::Text("Viewers %.2f ms, ImGui draw %.2f ms (GPU)", c.viewersGpuMs, c.imguiGpuMs);
+        ImGui::Text("Editor total %.2f ms = %.0f%% of the frame", editor, frameMs > 0.0 ? 100.0 * editor / frameMs : 0.0);
+    }
+    ImGui::End();
+}
+
+}  // namespace gbl::ui

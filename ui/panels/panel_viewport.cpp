@@ -1,0 +1,143 @@
+// Viewport window.
+#include "panels/panel_viewport.h"
+
+#include "panels/gui_compat.h"
+#include "panels/layout.h"
+#include "gpu/view_target.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace gbl::ui {
+
+namespace {
+// Movement within this many pixels between press and release still counts as a click.
+constexpr float kClickSlopSq = 3.0f * 3.0f;
+
+void viewCombo(PipelineSettings& settings) {
+    int view = int(settings.view);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 9.0f);
+    if (ImGui::BeginCombo("Show", kDebugViewNames[std::size_t(view)].data())) {
+        for (std::size_t i = 0; i < kDebugViewNames.size(); ++i)
+            if (ImGui::Selectable(kDebugViewNames[i].data(), view == int(i))) settings.view = DebugView(i);
+        ImGui::EndCombo();
+    }
+}
+// Legend for the heat views, in the stops of heatRamp() in shaders/view.frag (blue, cyan,
+// green, yellow, red at 0, 1/4, 1/2, 3/4, 1), up to the count the display pass maps to red.
+void drawHeatLegend(ImVec2 imageMin, ImVec2 imageMax, DebugView view) {
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    ImU32 const stops[5] = {IM_COL32(0, 0, 255, 255), IM_COL32(0, 255, 255, 255), IM_COL32(0, 255, 0, 255),
+                            IM_COL32(255, 255, 0, 255), IM_COL32(255, 0, 0, 255)};
+    float const w = std::min(240.0f, (imageMax.x - imageMin.x) * 0.5f), h = 12.0f;
+    ImVec2 const p0(imageMax.x - w - 12.0f, imageMax.y - h - 26.0f);
+    dl->AddRectFilled(ImVec2(p0.x - 6, p0.y - 20), ImVec2(p0.x + w + 6, p0.y + h + 18), IM_COL32(0, 0, 0, 170));
+    for (int i = 0; i < 4; ++i) {
+        float const x0 = p0.x + w * float(i) / 4.0f, x1 = p0.x + w * float(i + 1) / 4.0f;
+        dl->AddRectFilledMultiColor(ImVec2(x0, p0.y), ImVec2(x1, p0.y + h), stops[i], stops[i + 1], stops[i + 1], stops[i]);
+    }
+    float const heatMax = ViewParams{}.heatMax;
+    char top[32];
+    std::snprintf(top, sizeof top, "%.0f+", heatMax);
+    dl->AddText(ImVec2(p0.x, p0.y - 17), IM_COL32(230, 230, 230, 255),
+                view == DebugView::TileLights ? "lights per tile" : "light volumes covering the pixel");
+    dl->AddText(ImVec2(p0.x, p0.y + h + 2), IM_COL32(230, 230, 230, 255), "0 (black)");
+    dl->AddText(ImVec2(p0.x + w - ImGui::CalcTextSize(top).x, p0.y + h + 2), IM_COL32(230, 230, 230, 255), top);
+}
+
+}  // namespace
+
+void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigned texture, glm::ivec2 textureSize,
+                       std::optional<glm::vec2> selectedLight) {
+    state.hovered = false;
+    state.hoverPixel.reset();
+    state.clickPixel.reset();
+    state.orbitDrag = state.lookDrag = state.panDrag = glm::vec2(0.0f);
+    state.wheel = 0.0f;
+    state.frameRequested = false;
+
+    placeWindow(EditorWindow::Viewport);
+    // No padding: the image fills the window edge to edge.
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+    bool const open = ImGui::Begin(windowName(EditorWindow::Viewport), nullptr,
+                                   editorWindowFlags() | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    ImGui::PopStyleVar();
+    if (!open) {
+        // Collapsed or a hidden tab: render nothing rather than a frame nobody sees.
+        state.size = glm::ivec2(0);
+        ImGui::End();
+        return;
+    }
+
+    ImGui::SetCursorPos(ImVec2(ImGui::GetCursorPosX() + 6, ImGui::GetCursorPosY() + 3));
+    viewCombo(settings);
+    ImGui::SameLine();
+    ImGui::Checkbox("Cubes", &settings.lightCubes);
+    ImGui::SameLine();
+    ImGui::Checkbox("Wireframes", &settings.volumeWireframes);
+    ImGui::SameLine();
+    if (ImGui::Button("Frame (F)")) state.frameRequested = true;
+    ImGui::SameLine();
+    ImGui::TextDisabled("(?)");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("left drag: orbit    right drag: look    middle drag: pan    wheel: dolly\n"
+                          "W A S D / Q E: fly (shift: faster)    F: frame the scene\n"
+                          "click a light cube: select it    L: lock the pixel inspector");
+
+    ImVec2 const avail = ImGui::GetContentRegionAvail();
+    ImVec2 const scale = ImGui::GetIO().DisplayFramebufferScale;
+    state.size = glm::ivec2(std::max(0, int(avail.x * scale.x)), std::max(0, int(avail.y * scale.y)));
+    if (avail.x < 1.0f || avail.y < 1.0f) {
+        ImGui::End();
+        return;
+    }
+
+    ImVec2 const origin = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton("viewport-image", avail,
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                               ImGuiButtonFlags_MouseButtonMiddle);
+    if (texture != 0) {
+        // GL images start at the bottom row; flip v so the picture is upright.
+        ImGui::GetWindowDrawList()->AddImage(toImTexture(texture), origin, ImVec2(origin.x + avail.x, origin.y + avail.y),
+                                             ImVec2(0, 1), ImVec2(1, 0));
+    } else {
+        ImGui::GetWindowDrawList()->AddText(ImVec2(origin.x + 10, origin.y + 10), IM_COL32(200, 200, 200, 255),
+                                            "no frame yet");
+    }
+
+    if (selectedLight && texture != 0) {
+        ImVec2 const c(origin.x + selectedLight->x * avail.x, origin.y + selectedLight->y * avail.y);
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        dl->PushClipRect(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), true);
+        dl->AddCircle(c, 11.0f, IM_COL32(0, 0, 0, 200), 24, 3.0f);
+        dl->AddCircle(c, 11.0f, IM_COL32(255, 230, 80, 255), 24, 1.5f);
+        dl->PopClipRect();
+    }
+    if (settings.view == DebugView::Heatmap || settings.view == DebugView::TileLights)
+        drawHeatLegend(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), settings.view);
+
+    ImGuiIO const& io = ImGui::GetIO();
+    state.hovered = ImGui::IsItemHovered();
+    if (state.hovered && textureSize.x > 0 && textureSize.y > 0) {
+        // Mouse to renderer pixel: the image may be stretched for one frame after a resize.
+        float const u = (io.MousePos.x - origin.x) / avail.x, v = (io.MousePos.y - origin.y) / avail.y;
+        if (u >= 0.0f && u < 1.0f && v >= 0.0f && v < 1.0f)
+            state.hoverPixel = glm::ivec2(int(u * float(textureSize.x)), int(v * float(textureSize.y)));
+        state.wheel = io.MouseWheel;
+    }
+    if (ImGui::IsItemActive()) {
+        glm::vec2 const delta(io.MouseDelta.x, io.MouseDelta.y);
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) state.orbitDrag = delta;
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) state.lookDrag = delta;
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Middle)) state.panDrag = delta;
+    }
+    if (state.hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+        io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < kClickSlopSq && state.hoverPixel)
+        state.clickPixel = state.hoverPixel;
+    ImGui::End();
+}
+
+}  // namespace gbl::ui

@@ -1,0 +1,16 @@
+// Viewport window: the live frame, with camera drags, picking and the view selector.
+#pragma once
+
+#include "model/viewport_state.h"
+#include <glm/glm.hpp>
+#include <optional>
+
+namespace gbl::ui {
+
+// texture: the renderer's final image (0 while the targets are 0x0); textureSize its size.
+// selectedLight: where the selected light's centre falls in the image (0..1, top-left origin),
+// when it is in front of the camera; a ring marks it so a click on a cube visibly selects it.
+void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigned texture, glm::ivec2 textureSize,
+                       std::optional<glm::vec2> selectedLight = std::nullopt);
+
+}  // namespace gbl::ui

@@ -1,0 +1,65 @@
+// Window read-back and PNG output.
+#include "script/screenshot.h"
+
+#include <epoxy/gl.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+
+namespace gbl::ui {
+
+RgbImage readWindow(int width, int height) {
+    RgbImage image;
+    if (width <= 0 || height <= 0) return image;
+    image.width = width;
+    image.height = height;
+    image.pixels.resize(std::size_t(width) * height * 3);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    // Rows of 3 bytes per pixel are not 4-byte aligned in general.
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, image.pixels.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    // GL returns the bottom row first; images are stored top row first.
+    std::size_t const rowBytes = std::size_t(width) * 3;
+    std::vector<std::uint8_t> row(rowBytes);
+    for (int y = 0; y < height / 2; ++y) {
+        std::uint8_t* a = image.pixels.data() + std::size_t(y) * rowBytes;
+        std::uint8_t* b = image.pixels.data() + std::size_t(height - 1 - y) * rowBytes;
+        std::memcpy(row.data(), a, rowBytes);
+        std::memcpy(a, b, rowBytes);
+        std::memcpy(b, row.data(), rowBytes);
+    }
+    return image;
+}
+
+std::optional<std::string> writePng(RgbImage const& image, std::string const& path) {
+    if (image.width <= 0 || image.height <= 0) return "cannot write " + path + ": the window has no pixels (0x0)";
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) return "cannot write " + path + ": " + OIIO::geterror();
+    OIIO::ImageSpec const spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+    if (!out->open(path, spec)) return "cannot write " + path + ": " + out->geterror();
+    bool const ok = out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data());
+    std::string const error = ok ? std::string() : out->geterror();
+    if (!out->close() || !ok) return "cannot write " + path + ": " + (error.empty() ? out->geterror() : error);
+    return std::nullopt;
+}
+
+ImageDifference compareImages(RgbImage const& a, RgbImage const& b) {
+    if (a.width != b.width || a.height != b.height) return {255.0, long(std::max(a.pixels.size(), b.pixels.size()) / 3)};
+    ImageDifference d;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.pixels.size(); i += 3) {
+        int const dr = std::abs(int(a.pixels[i]) - int(b.pixels[i]));
+        int const dg = std::abs(int(a.pixels[i + 1]) - int(b.pixels[i + 1]));
+        int const db = std::abs(int(a.pixels[i + 2]) - int(b.pixels[i + 2]));
+        sum += dr + dg + db;
+        if (dr + dg + db > 0) ++d.pixelsDiffering;
+    }
+    d.mean = a.pixels.empty() ? 0.0 : sum / double(a.pixels.size());
+    return d;
+}
+
+}  // namespace gbl::ui

@@ -1,0 +1,357 @@
+// Session JSON: writing, and reading with a full validation that names the offending field.
+#include "session/session.h"
+
+#include "session/atomic_file.h"
+#include "core/light_math.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <limits>
+#include <algorithm>
+#include <initializer_list>
+#include <sstream>
+#include <stdexcept>
+
+namespace gbl::ui {
+
+using nlohmann::json;
+
+namespace {
+
+constexpr std::array<std::string_view, 2> kNormalDisplayNames{"biased", "absolute"};
+
+// --- writing ------------------------------------------------------------------------------
+
+// Written in a fixed, readable order (format and version first); reading does not care.
+using ojson = nlohmann::ordered_json;
+
+ojson vec(glm::vec3 v) { return {v.x, v.y, v.z}; }
+ojson vec(glm::vec2 v) { return {v.x, v.y}; }
+
+template <std::size_t N>
+std::string joinNames(std::array<std::string_view, N> const& names) {
+    std::string s;
+    for (std::size_t i = 0; i < N; ++i) {
+        if (i) s += i + 1 == N ? " or " : ", ";
+        s += names[i];
+    }
+    return s;
+}
+
+ojson viewerJson(ViewerState const& v) {
+    return {{"channel_mask", v.channelMask},
+            {"range_min", v.rangeMin},
+            {"range_max", v.rangeMax},
+            {"auto_fit", v.autoFit},
+            {"normal_display", enumName(kNormalDisplayNames, v.normalDisplay)},
+            {"linear_depth", v.linearDepth},
+            {"camera_clip_planes", v.cameraClipPlanes},
+            {"near", v.nearPlane},
+            {"far", v.farPlane},
+            {"zoom", v.zoom},
+            {"center", vec(v.center)}};
+}
+
+ojson sessionJson(Session const& s) {
+    ojson lights = ojson::array();
+    for (auto const& l : s.lights)
+        lights.push_back({{"name", l.name}, {"position", vec(l.position)}, {"color", vec(l.color)},
+                          {"intensity", l.intensity}, {"kc", l.kc}, {"kl", l.kl}, {"kq", l.kq},
+                          {"threshold", l.threshold}});
+    PipelineSettings const& p = s.pipeline;
+    ojson viewers = ojson::object();
+    for (std::size_t i = 0; i < s.viewers.size(); ++i) viewers[std::string(kViewerNames[i])] = viewerJson(s.viewers[i]);
+    return {
+        {"format", kSessionFormat},
+        {"version", kSessionVersion},
+        {"scene", {{"source", s.scene}, {"default_scene_lights", s.defaultSceneLights}}},
+        {"camera",
+         {{"position", vec(s.camera.position)}, {"yaw_degrees", s.camera.yawDegrees},
+          {"pitch_degrees", s.camera.pitchDegrees}, {"fov_y_degrees", s.camera.fovYDegrees},
+          {"near", s.camera.nearPlane}, {"far", s.camera.farPlane}}},
+        {"lights", lights},
+        {"pipeline",
+         {{"mode", enumName(kLightingModeNames, p.mode)}, {"cull", enumName(kCullModeNames, p.cull)},
+          {"blit", enumName(kDepthCopyNames, p.depthCopy)}, {"tonemap", enumName(kTonemapNames, p.tonemap)},
+          {"view", enumName(kDebugViewNames, p.view)}, {"light_cubes", p.lightCubes},
+          {"volume_wireframes", p.volumeWireframes}, {"normal_maps", p.normalMaps}, {"ambient", vec(p.ambient)},
+          {"exposure", p.exposure}, {"shininess", p.shininess}}},
+        {"viewers", viewers},
+        {"animation", {{"enabled", s.animation.enabled}, {"speed", s.animation.speed}, {"time", s.animation.time}}},
+    };
+}
+
+// --- reading ------------------------------------------------------------------------------
+
+// Thrown inside the parser only; parseSession turns it into the returned message.
+struct FieldError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+[[noreturn]] void fail(std::string const& field, std::string const& what) { throw FieldError(field + " " + what); }
+
+std::string typeName(json const& j) {
+    if (j.is_number()) return "a number";
+    if (j.is_boolean()) return "true/false";
+    if (j.is_null()) return "null";
+    if (j.is_object()) return "an object";
+    if (j.is_array()) return "an array";
+    return "a string";
+}
+
+// One JSON object being read. Every field must be one of `known`: a typo ("intesity") is
+// reported as the unknown field it is, before the "missing" message it would also cause.
+class Object {
+public:
+    Object(json const& j, std::string path, std::initializer_list<std::string_view> known) : j_(j), path_(std::move(path)) {
+        if (!j_.is_object()) fail(path_, "must be an object (got " + typeName(j_) + ")");
+        for (auto it = j_.begin(); it != j_.end(); ++it)
+            if (std::find(known.begin(), known.end(), std::string_view(it.key())) == known.end())
+                fail(field(it.key()), "is not a known field");
+    }
+    std::string field(std::string_view key) const { return path_.empty() ? std::string(key) : path_ + "." + std::string(key); }
+    json const& required(std::string_view key) const {
+        auto it = j_.find(key);
+        if (it == j_.end()) fail(field(key), "is missing");
+        return *it;
+    }
+    json const* optional(std::string_view key) const {
+        auto it = j_.find(key);
+        return it == j_.end() ? nullptr : &*it;
+    }
+
+private:
+    json const& j_;
+    std::string path_;
+};
+
+enum class Bound { Any, NonNegative, Positive };
+
+float number(json const& j, std::string const& field, Bound bound = Bound::Any) {
+    char const* const want = bound == Bound::NonNegative ? "must be a finite number >= 0"
+                             : bound == Bound::Positive  ? "must be a finite number > 0"
+                                                         : "must be a finite number";
+    if (!j.is_number()) fail(field, std::string(want) + " (got " + typeName(j) + ")");
+    // The renderer works in float: 1e300 is a finite double but no finite float (and narrowing
+    // it would be undefined behaviour), so the range is checked in double first.
+    double const d = j.get<double>();
+    if (!std::isfinite(d) || std::abs(d) > double(std::numeric_limits<float>::max()) ||
+        (bound == Bound::NonNegative && d < 0.0) || (bound == Bound::Positive && float(d) <= 0.0f))
+        fail(field, std::string(want) + " (got " + j.dump() + ")");
+    return float(d);
+}
+
+float numberIn(json const& j, std::string const& field, float lo, float hi) {
+    float const v = number(j, field);
+    if (v < lo || v > hi) {
+        std::ostringstream s;
+        s << "must be between " << lo << " and " << hi << " (got " << j.dump() << ")";
+        fail(field, s.str());
+    }
+    return v;
+}
+
+int integer(json const& j, std::string const& field, int lo, int hi) {
+    std::string const want = "must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi);
+    if (!j.is_number_integer()) fail(field, want + " (got " + (j.is_number() ? j.dump() : typeName(j)) + ")");
+    auto const v = j.get<long long>();
+    if (v < lo || v > hi) fail(field, want + " (got " + j.dump() + ")");
+    return int(v);
+}
+
+bool boolean(json const& j, std::string const& field) {
+    if (!j.is_boolean()) fail(field, "must be true or false (got " + typeName(j) + ")");
+    return j.get<bool>();
+}
+
+std::string string(json const& j, std::string const& field) {
+    if (!j.is_string()) fail(field, "must be a string (got " + typeName(j) + ")");
+    return j.get<std::string>();
+}
+
+template <class Enum, std::size_t N>
+Enum enumeration(json const& j, std::string const& field, std::array<std::string_view, N> const& names) {
+    std::string const want = "must be one of " + joinNames(names);
+    if (!j.is_string()) fail(field, want + " (got " + typeName(j) + ")");
+    auto const v = enumFromName<Enum>(names, j.get<std::string>());
+    if (!v) fail(field, want + " (got " + j.dump() + ")");
+    return *v;
+}
+
+template <int N>
+glm::vec<N, float> vector(json const& j, std::string const& field, Bound bound = Bound::Any) {
+    if (!j.is_array() || j.size() != std::size_t(N))
+        fail(field, "must be an array of " + std::to_string(N) + " numbers");
+    glm::vec<N, float> v;
+    for (int i = 0; i < N; ++i) v[i] = number(j[std::size_t(i)], field + "[" + std::to_string(i) + "]", bound);
+    return v;
+}
+
+Camera readCamera(json const& j) {
+    Object o(j, "camera", {"position", "yaw_degrees", "pitch_degrees", "fov_y_degrees", "near", "far"});
+    Camera c;
+    c.position = vector<3>(o.required("position"), o.field("position"));
+    c.yawDegrees = number(o.required("yaw_degrees"), o.field("yaw_degrees"));
+    // The editor's camera rig keeps pitch within 89 degrees; at 90 the view matrix degenerates.
+    c.pitchDegrees = numberIn(o.required("pitch_degrees"), o.field("pitch_degrees"), -89.0f, 89.0f);
+    c.fovYDegrees = numberIn(o.required("fov_y_degrees"), o.field("fov_y_degrees"), 1.0f, 179.0f);
+    c.nearPlane = number(o.required("near"), o.field("near"), Bound::Positive);
+    c.farPlane = number(o.required("far"), o.field("far"), Bound::Positive);
+    if (c.farPlane <= c.nearPlane) fail(o.field("far"), "must be greater than camera.near");
+    return c;
+}
+
+PointLight readLight(json const& j, std::string const& path) {
+    Object o(j, path, {"name", "position", "color", "intensity", "kc", "kl", "kq", "threshold"});
+    PointLight l;
+    if (json const* name = o.optional("name")) l.name = string(*name, o.field("name"));
+    l.position = vector<3>(o.required("position"), o.field("position"));
+    l.color = vector<3>(o.required("color"), o.field("color"), Bound::NonNegative);
+    l.intensity = number(o.required("intensity"), o.field("intensity"), Bound::NonNegative);
+    l.kc = number(o.required("kc"), o.field("kc"), Bound::NonNegative);
+    l.kl = number(o.required("kl"), o.field("kl"), Bound::NonNegative);
+    l.kq = number(o.required("kq"), o.field("kq"), Bound::NonNegative);
+    l.threshold = number(o.required("threshold"), o.field("threshold"), Bound::Positive);
+    // The rules that involve more than one field (Kc = Kl = Kq = 0) come from the one validator
+    // the editor and the renderer use too.
+    if (auto err = validateLight(l)) fail(path + ":", *err);
+    return l;
+}
+
+std::vector<PointLight> readLights(json const& j) {
+    if (!j.is_array()) fail("lights", "must be an array (got " + typeName(j) + ")");
+    if (j.size() > std::size_t(kMaxLights))
+        fail("lights", "holds " + std::to_string(j.size()) + " lights; the limit is " + std::to_string(kMaxLights));
+    std::vector<PointLight> lights;
+    lights.reserve(j.size());
+    for (std::size_t i = 0; i < j.size(); ++i) lights.push_back(readLight(j[i], "lights[" + std::to_string(i) + "]"));
+    return lights;
+}
+
+PipelineSettings readPipeline(json const& j) {
+    Object o(j, "pipeline", {"mode", "cull", "blit", "tonemap", "view", "light_cubes", "volume_wireframes", "normal_maps",
+                             "ambient", "exposure", "shininess"});
+    PipelineSettings p;
+    p.mode = enumeration<LightingMode>(o.required("mode"), o.field("mode"), kLightingModeNames);
+    p.cull = enumeration<CullMode>(o.required("cull"), o.field("cull"), kCullModeNames);
+    p.depthCopy = enumeration<DepthCopy>(o.required("blit"), o.field("blit"), kDepthCopyNames);
+    p.tonemap = enumeration<Tonemap>(o.required("tonemap"), o.field("tonemap"), kTonemapNames);
+    p.view = enumeration<DebugView>(o.required("view"), o.field("view"), kDebugViewNames);
+    p.lightCubes = boolean(o.required("light_cubes"), o.field("light_cubes"));
+    p.volumeWireframes = boolean(o.required("volume_wireframes"), o.field("volume_wireframes"));
+    p.normalMaps = boolean(o.required("normal_maps"), o.field("normal_maps"));
+    p.ambient = vector<3>(o.required("ambient"), o.field("ambient"), Bound::NonNegative);
+    p.exposure = number(o.required("exposure"), o.field("exposure"), Bound::Positive);
+    p.shininess = number(o.required("shininess"), o.field("shininess"), Bound::Positive);
+    return p;
+}
+
+ViewerState readViewer(json const& j, std::string const& path, ViewerState v) {
+    Object o(j, path, {"channel_mask", "range_min", "range_max", "auto_fit", "normal_display", "linear_depth",
+                       "camera_clip_planes", "near", "far", "zoom", "center"});
+    v.channelMask = unsigned(integer(o.required("channel_mask"), o.field("channel_mask"), 0, 15));
+    v.rangeMin = number(o.required("range_min"), o.field("range_min"));
+    v.rangeMax = number(o.required("range_max"), o.field("range_max"));
+    if (v.rangeMax <= v.rangeMin) fail(o.field("range_max"), "must be greater than " + o.field("range_min"));
+    v.autoFit = boolean(o.required("auto_fit"), o.field("auto_fit"));
+    v.normalDisplay = enumeration<NormalDisplay>(o.required("normal_display"), o.field("normal_display"), kNormalDisplayNames);
+    v.linearDepth = boolean(o.required("linear_depth"), o.field("linear_depth"));
+    v.cameraClipPlanes = boolean(o.required("camera_clip_planes"), o.field("camera_clip_planes"));
+    v.nearPlane = number(o.required("near"), o.field("near"), Bound::Positive);
+    v.farPlane = number(o.required("far"), o.field("far"), Bound::Positive);
+    if (v.farPlane <= v.nearPlane) fail(o.field("far"), "must be greater than " + o.field("near"));
+    // The viewer's own zoom limits (panel_gbuffer.cpp): 1 = whole image, 256 texels per pixel at most.
+    v.zoom = numberIn(o.required("zoom"), o.field("zoom"), 1.0f, 256.0f);
+    json const& center = o.required("center");
+    v.center = vector<2>(center, o.field("center"));
+    for (int i = 0; i < 2; ++i)
+        if (v.center[i] < 0.0f || v.center[i] > 1.0f)
+            fail(o.field("center") + "[" + std::to_string(i) + "]", "must be between 0 and 1 (got " + center[std::size_t(i)].dump() + ")");
+    return v;
+}
+
+Session readSession(json const& j) {
+    if (!j.is_object()) fail("the file", "must hold a JSON object (got " + typeName(j) + ")");
+    // Format and version first: a newer file should say so, not trip over its new fields.
+    auto const formatIt = j.find("format");
+    if (formatIt == j.end()) fail("format", "is missing");
+    json const& format = *formatIt;
+    if (!format.is_string() || format.get<std::string>() != kSessionFormat)
+        fail("format", "must be \"" + std::string(kSessionFormat) + "\" (got " + format.dump() + "); this is not a gbuffer-lab session");
+    auto const versionIt = j.find("version");
+    if (versionIt == j.end()) fail("version", "is missing");
+    json const& version = *versionIt;
+    if (!version.is_number_integer()) fail("version", "must be a whole number (got " + version.dump() + ")");
+    if (version.get<long long>() != kSessionVersion)
+        fail("version", std::to_string(version.get<long long>()) + " is not supported; this program reads version " +
+                            std::to_string(kSessionVersion) +
+                            (version.get<long long>() > kSessionVersion ? " (the file comes from a newer gbuffer-lab)" : ""));
+
+    Object const root(j, "", {"format", "version", "scene", "camera", "lights", "pipeline", "viewers", "animation"});
+    Session s;
+    {
+        Object scene(root.required("scene"), "scene", {"source", "default_scene_lights"});
+        s.scene = string(scene.required("source"), scene.field("source"));
+        if (s.scene.empty()) fail(scene.field("source"), "must be \"default\" or the path of a glTF file (got \"\")");
+        s.defaultSceneLights = integer(scene.required("default_scene_lights"), scene.field("default_scene_lights"), 0, kMaxLights);
+    }
+    s.camera = readCamera(root.required("camera"));
+    s.lights = readLights(root.required("lights"));
+    s.pipeline = readPipeline(root.required("pipeline"));
+    {
+        static_assert(kViewerNames.size() == 5, "list every viewer in the known fields below");
+        Object viewers(root.required("viewers"), "viewers",
+                       {kViewerNames[0], kViewerNames[1], kViewerNames[2], kViewerNames[3], kViewerNames[4]});
+        for (std::size_t i = 0; i < s.viewers.size(); ++i)
+            s.viewers[i] = readViewer(viewers.required(kViewerNames[i]), viewers.field(kViewerNames[i]), s.viewers[i]);
+    }
+    {
+        Object anim(root.required("animation"), "animation", {"enabled", "speed", "time"});
+        s.animation.enabled = boolean(anim.required("enabled"), anim.field("enabled"));
+        s.animation.speed = number(anim.required("speed"), anim.field("speed"));
+        s.animation.time = number(anim.required("time"), anim.field("time"));
+    }
+    return s;
+}
+
+}  // namespace
+
+std::string sessionToJson(Session const& session) { return sessionJson(session).dump(2) + "\n"; }
+
+SessionLoad parseSession(std::string_view text, std::string const& fileLabel) {
+    SessionLoad out;
+    json j;
+    try {
+        j = json::parse(text.begin(), text.end());
+    } catch (json::exception const& e) {
+        // nlohmann's message carries the line and column; drop its "[json.exception...]" prefix.
+        std::string what = e.what();
+        if (auto const close = what.find("] "); what.rfind("[json.exception", 0) == 0 && close != std::string::npos)
+            what = what.substr(close + 2);
+        out.error = fileLabel + ": not valid JSON: " + what;
+        return out;
+    }
+    try {
+        out.session = readSession(j);
+    } catch (FieldError const& e) {
+        out.error = fileLabel + ": " + e.what();
+    } catch (json::exception const& e) {
+        // Only reachable through a bug above (every access is checked first); still no crash.
+        out.error = fileLabel + ": " + e.what();
+    }
+    return out;
+}
+
+SessionLoad loadSession(std::string const& path) {
+    std::string error;
+    auto text = readWholeFile(path, &error);
+    if (!text) return {std::nullopt, "cannot read session: " + error};
+    return parseSession(*text, path);
+}
+
+std::optional<std::string> saveSession(std::string const& path, Session const& session) {
+    return writeFileAtomically(path, sessionToJson(session));
+}
+
+}  // namespace gbl::ui
