@@ -33,6 +33,8 @@ shared uint sWordCount;
 shared uint sMinDepthBits;
 shared uint sMaxDepthBits;
 
+#include "depth.glsl"
+
 vec3 unprojectFar(vec2 ndc) {
     vec4 v = uInverseProjection * vec4(ndc, 1.0, 1.0);
     return v.xyz / v.w;
@@ -62,7 +64,7 @@ void main() {
     bool geometry = pos.w != 0.0;
     if (geometry) {
         float d = texelFetch(uDepth, px, 0).r;
-        float viewDepth = uNear * uFar / ((1.0 - d) * uFar + d * uNear);
+        float viewDepth = linearDepth(d, uNear, uFar);
         atomicMin(sMinDepthBits, floatBitsToUint(viewDepth));
         atomicMax(sMaxDepthBits, floatBitsToUint(viewDepth));
     }

@@ -52,10 +52,7 @@ vec3 tonemap(vec3 hdr) {
     return pow(c, vec3(1.0 / 2.2));
 }
 
-float linearDepth(float z) {
-    float ndc = z * 2.0 - 1.0;
-    return 2.0 * uNear * uFar / (uFar + uNear - ndc * (uFar - uNear));
-}
+#include "depth.glsl"
 
 vec4 remap(vec4 v) { return (v - vec4(uRangeMin)) / max(uRangeMax - uRangeMin, 1e-20); }
 
@@ -106,7 +103,7 @@ void main() {
     case VIEW_ALBEDO: v = texelFetch(uAlbedoSpec, px, 0); break;
     case VIEW_SPECULAR: v = vec4(texelFetch(uAlbedoSpec, px, 0).aaa, 1.0); break;
     case VIEW_DEPTH: v = vec4(vec3(texelFetch(uDepth, px, 0).r), 1.0); break;
-    case VIEW_DEPTH_LINEAR: v = vec4(vec3(linearDepth(texelFetch(uDepth, px, 0).r)), 1.0); break;
+    case VIEW_DEPTH_LINEAR: v = vec4(vec3(linearDepth(texelFetch(uDepth, px, 0).r, uNear, uFar)), 1.0); break;
     case VIEW_HEATMAP: {
         // Hue: how many lights were evaluated here (volumes covering, tile list, or all);
         // brightness: the share of them that actually lit the surface. Dim = wasted work.

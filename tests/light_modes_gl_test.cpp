@@ -288,7 +288,7 @@ TEST_F(LightModesGlTest, TileListsMatchTheCpuTileMath) {
                 for (int x = rect.x0; x < rect.x1; ++x) {
                     int const row = kH - 1 - y;
                     if (position.at(x, row, 3) == 0.0f) continue;
-                    float const d = viewDepthFromWindowDepth(depth.at(x, row, 0), camera_.nearPlane, camera_.farPlane);
+                    float const d = linearDepth(depth.at(x, row, 0), camera_.nearPlane, camera_.farPlane);
                     minD = std::min(minD, d);
                     maxD = std::max(maxD, d);
                 }

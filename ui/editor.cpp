@@ -113,8 +113,7 @@ struct EditorGpu {
 };
 
 bool sameView(ViewParams const& a, ViewParams const& b) {
-    return a.view == b.view && a.channelMask == b.channelMask && a.rangeMin == b.rangeMin && a.rangeMax == b.rangeMax &&
-           a.normalDisplay == b.normalDisplay && a.heatMax == b.heatMax;
+    return a == b;
 }
 
 // --- scene set-up --------------------------------------------------------------------------

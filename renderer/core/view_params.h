@@ -16,6 +16,9 @@ struct ViewParams {
     float rangeMax = 1.0f;
     NormalDisplay normalDisplay = NormalDisplay::Biased;
     float heatMax = 16.0f;       // count at the top of the heat ramp
+
+    // Every member, floats compared with ==: "does the target show something else now".
+    bool operator==(ViewParams const&) const = default;
 };
 
 }  // namespace gbl
