@@ -2,7 +2,6 @@
 // lighting pass against the CPU equation, the blit step, resizing and shader hot reload.
 #include "gl_fixture.h"
 #include "gpu/light_buffer.h"
-#include "renderer_impl.h"
 #include "gl/shader_library.h"
 #include "core/shading_cpu.h"
 #include "test_scenes.h"
@@ -261,9 +260,8 @@ TEST_F(RendererGlTest, FailedHotReloadKeepsLastGoodProgram) {
                   fs::copy_options::overwrite_existing);
     ShaderLibrary lib(dir);
     std::string log;
-    ProgramDesc const desc{"copy", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "depth_copy.frag"}}, {}};
-    ASSERT_TRUE(lib.add(desc, &log)) << log;
-    GLuint const good = lib.get("copy").id();
+    ASSERT_TRUE(lib.add(ProgramId::DepthCopy, &log)) << log;
+    GLuint const good = lib.get(ProgramId::DepthCopy).id();
     EXPECT_TRUE(lib.reloadChanged().empty()) << "nothing changed yet";
 
     auto writeLater = [&](std::string const& text) {
@@ -277,14 +275,14 @@ TEST_F(RendererGlTest, FailedHotReloadKeepsLastGoodProgram) {
     ASSERT_EQ(messages.size(), 1u);
     EXPECT_NE(messages[0].find("keeping the last good one"), std::string::npos) << messages[0];
     EXPECT_NE(messages[0].find("depth_copy.frag"), std::string::npos) << "the log names the file: " << messages[0];
-    EXPECT_EQ(lib.get("copy").id(), good) << "the last good program stays in use";
+    EXPECT_EQ(lib.get(ProgramId::DepthCopy).id(), good) << "the last good program stays in use";
 
     std::ifstream original(fs::path(GBL_SOURCE_DIR) / "shaders" / "depth_copy.frag");
     writeLater(std::string(std::istreambuf_iterator<char>(original), {}));
     messages = lib.reloadChanged();
     ASSERT_EQ(messages.size(), 1u);
     EXPECT_NE(messages[0].find("reloaded"), std::string::npos) << messages[0];
-    EXPECT_NE(lib.get("copy").id(), good);
+    EXPECT_NE(lib.get(ProgramId::DepthCopy).id(), good);
     fs::remove_all(dir);
 }
 
