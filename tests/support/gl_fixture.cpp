@@ -36,8 +36,10 @@ void GlTest::expectNoGlErrors() const {
     // The flag directly (as MAGNUM_VERIFY_NO_GL_ERROR does), then the count, which also holds
     // errors that code under test read off the flag or that the debug callback received.
     GLenum const flag = glGetError();
-    EXPECT_EQ(flag, GLenum(GL_NO_ERROR)) << "the GL error flag is set after this test";
-    EXPECT_EQ(glErrorsSinceSetUp(), 0u) << "the GL reported errors during this test (see stderr)";
+    std::uint64_t const counted = glErrorsSinceSetUp();
+    EXPECT_TRUE(flag == GL_NO_ERROR && counted == 0)
+        << "the GL reported errors during this test (see stderr): error flag 0x" << std::hex << flag << std::dec
+        << ", " << counted << " counted";
 }
 
 void GlTest::acceptGlErrors() { errorsAtSetUp_ = glErrorCount(); }
