@@ -78,7 +78,7 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
         ViewTarget target;
         ViewParams params;
         params.view = v;
-        renderer.drawView(params, frame.camera, target);
+        renderer.drawView(params, {frame.camera, frame.lights, frame.settings}, target);
         check(writePng(path("view_" + std::string(enumName(kDebugViewNames, v)) + ".png"), renderer.readViewTarget(target), 3));
     }
     if (err) return err;

@@ -2,6 +2,7 @@
 // its pixels, keeps the lights whose sphere touches the tile's frustum between those bounds
 // (renderer/tile_math.h does the same on the CPU), then shades its pixels with only those.
 #version 430 core
+#include "bindings.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 
@@ -11,8 +12,8 @@ uniform sampler2D uPosition;
 uniform sampler2D uNormal;
 uniform sampler2D uAlbedoSpec;
 uniform sampler2D uDepth;
-layout(rgba16f, binding = 0) uniform writeonly image2D uLighting;
-layout(rg32f, binding = 1) uniform writeonly image2D uCoverage;
+layout(rgba16f, binding = BIND_IMAGE_LIGHTING) uniform writeonly image2D uLightingImage;
+layout(rg32f, binding = BIND_IMAGE_COVERAGE) uniform writeonly image2D uCoverageImage;
 
 uniform int uLightCount;
 uniform vec3 uAmbient;
@@ -129,10 +130,10 @@ void main() {
             }
         }
     }
-    if (uShade) imageStore(uLighting, px, geometry ? vec4(color, 1.0) : vec4(0.0));
+    if (uShade) imageStore(uLightingImage, px, geometry ? vec4(color, 1.0) : vec4(0.0));
     if (uWriteCoverage) {
         uint count = 0u;
         for (uint k = 0u; k < sWordCount; ++k) count += uint(bitCount(sLightMask[sWords[k]]));
-        imageStore(uCoverage, px, vec4(float(count), lit, 0.0, 0.0));
+        imageStore(uCoverageImage, px, vec4(float(count), lit, 0.0, 0.0));
     }
 }

@@ -1,27 +1,9 @@
 // Turns one frame image into displayable colour: the tonemapped final image or a debug view
 // of any attachment, with channel isolation and range remapping (the texture viewers use it too).
 #version 330 core
+#include "bindings.glsl"
 
-// Values match gbl::DebugView in renderer/pipeline_settings.h one-to-one.
-#define VIEW_FINAL 0
-#define VIEW_LIGHTING 1
-#define VIEW_POSITION 2
-#define VIEW_NORMAL 3
-#define VIEW_ALBEDO 4
-#define VIEW_SPECULAR 5
-#define VIEW_DEPTH 6
-#define VIEW_DEPTH_LINEAR 7
-#define VIEW_HEATMAP 8
-#define VIEW_TILE_LIGHTS 9
-
-// Values match gbl::Tonemap.
-#define TONEMAP_EXPOSURE 0
-#define TONEMAP_REINHARD 1
-#define TONEMAP_CLAMP 2
-
-// Values match gbl::NormalDisplay.
-#define NORMALS_BIASED 0
-#define NORMALS_ABSOLUTE 1
+#include "view_constants.glsl"
 
 uniform sampler2D uPosition;
 uniform sampler2D uNormal;

@@ -6,7 +6,7 @@
 
 namespace gbl {
 
-// Values match NORMALS_* in shaders/view.frag.
+// Values match NORMALS_* in shaders/view_constants.glsl (shader_constants_test checks them).
 enum class NormalDisplay { Biased = 0, Absolute = 1 };
 
 struct ViewParams {
