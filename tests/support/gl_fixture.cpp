@@ -21,13 +21,15 @@ void GlTest::SetUpTestSuite() {
 }
 
 void GlTest::SetUp() {
-    // A missing context is a failure, not a skip: every machine this runs on has Mesa's EGL.
+    // A missing context is a failure, not a skip: every machine this runs on has EGL or a display.
     ASSERT_TRUE(gContext) << "no headless GL context: " << gError;
     collectGlErrors();  // start each test from a clean error state
 }
 
 void GlTest::TearDown() {
-    if (gContext) EXPECT_EQ(collectGlErrors(), 0u) << "the GL reported errors during this test (see stderr)";
+    if (gContext) {
+        EXPECT_EQ(collectGlErrors(), 0u) << "the GL reported errors during this test (see stderr)";
+    }
 }
 
 GlCaps const& GlTest::caps() { return gCaps; }
