@@ -206,6 +206,8 @@ void RendererImpl::drawViewInto(ViewParams const& params, Camera const& camera, 
     p.set("uNear", camera.nearPlane);
     p.set("uFar", camera.farPlane);
     p.set("uHeatMax", params.heatMax);
+    p.set("uColormap", int(params.colormap));  // viewer tools (shaders/view_tools.glsl)
+    p.set("uOverlays", int(params.overlays));
     glBindVertexArray(emptyVao.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
