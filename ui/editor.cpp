@@ -7,6 +7,7 @@
 #include "model/editor_state.h"
 #include "panels/layout.h"
 #include "panels/panel_gbuffer.h"
+#include "viewer_tools_service.h"
 #include "panels/panel_lights.h"
 #include "panels/panel_log.h"
 #include "panels/panel_pixel_inspector.h"
@@ -108,13 +109,15 @@ bool parseGlLimit(std::string const& text, int& major, int& minor) {
 
 struct EditorGpu {
     std::array<ViewTarget, 5> viewTargets;  // one per G-buffer viewer
+    ui::ViewerToolsGpu viewerTools;         // diff heat maps of the viewer tools
     std::array<std::optional<ViewParams>, 5> drawnParams;  // what each target last showed
     GpuTimer timer;                         // the editor's own GPU work, for the Stats window
 };
 
 bool sameView(ViewParams const& a, ViewParams const& b) {
     return a.view == b.view && a.channelMask == b.channelMask && a.rangeMin == b.rangeMin && a.rangeMax == b.rangeMax &&
-           a.normalDisplay == b.normalDisplay && a.heatMax == b.heatMax;
+           a.normalDisplay == b.normalDisplay && a.heatMax == b.heatMax && a.colormap == b.colormap &&
+           a.overlays == b.overlays;
 }
 
 // --- scene set-up --------------------------------------------------------------------------
@@ -530,6 +533,7 @@ int runEditor(EditorOptions const& options) {
                 viewerTextures[i] = target.texture.id();
             }
             fitViewerRanges(state, *renderer, frame);
+            ui::serviceViewerTools(state, *renderer, frame, viewerTextures, gpu.viewerTools);
         }
         gpu.timer.end();
         ui::PixelInspectorState& inspector = state.inspector;

@@ -39,12 +39,24 @@ struct ViewerState {
     unsigned overlays = 0;               // kOverlay* bits (core/view_params.h)
     std::optional<glm::ivec2> picked;    // magnifier centre: right-click, arrow keys, Ctrl+G
     std::optional<PixelRect> region;     // Shift+drag; statistics and "Fit to region" use it
+    std::optional<glm::ivec2> regionDragStart;  // texel where the Shift+drag began
+    int histogramDrag = -1;              // 0: dragging the black point, 1: the white point
     bool percentileFitRequested = false; // "Fit 1-99 %": serviced like fitRequested
     bool regionFitRequested = false;     // "Fit to region": min/max inside the region
     bool pinRequested = false;           // "Pin": the loop stores the current values as the pinned image
     bool showDiff = false;               // show |current - pinned| as a heat map instead of the view
     DiffMode diffMode = DiffMode::Absolute;
     float diffThreshold = 0.0f;          // pixels above it are counted ("over threshold")
+};
+
+// What the statistics of a ViewerData were computed for; a change recomputes them.
+struct StatsInputs {
+    unsigned mask = 0;
+    float black = 0.0f, white = 1.0f;
+    std::optional<PixelRect> region;
+    float diffThreshold = 0.0f;
+    DiffMode diffMode = DiffMode::Absolute;
+    bool operator==(StatsInputs const&) const = default;
 };
 
 // What the viewer tools know about one viewer's image, filled by the editor loop from a read-back
@@ -61,6 +73,7 @@ struct ViewerData {
     std::optional<FloatImage> pinned;
     long pinnedFrame = -1;
     DiffStats diff;
+    std::optional<StatsInputs> computedFor;
 };
 
 struct GBufferPanelState {
