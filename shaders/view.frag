@@ -26,6 +26,8 @@ uniform float uHeatMax;      // count shown at the top of the heat ramp
 in vec2 vUV;
 out vec4 fragColor;
 
+#include "view_tools.glsl"
+
 vec3 tonemap(vec3 hdr) {
     vec3 c = hdr * uExposure;
     if (uTonemap == TONEMAP_EXPOSURE) c = vec3(1.0) - exp(-c);
@@ -104,6 +106,7 @@ void main() {
     default: v = vec4(1.0, 0.0, 1.0, 1.0); data = false; break;  // magenta: an unknown view
     }
     if (uView == VIEW_HEATMAP || uView == VIEW_TILE_LIGHTS) v.rgb = heatLegend(px, v.rgb);
+    vec4 raw = v;  // as stored, for the NaN/Inf/negative overlays
     if (data) v = remap(v);
     // Channel isolation: one channel alone is shown as grey (so alpha/specular stays visible).
     float shown = dot(uChannelMask, vec4(1.0));
@@ -113,4 +116,5 @@ void main() {
     } else {
         fragColor = vec4(v.rgb * uChannelMask.rgb, 1.0);
     }
+    if (uView != VIEW_FINAL) fragColor.rgb = viewTools(raw, v, uChannelMask, fragColor.rgb);
 }

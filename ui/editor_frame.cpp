@@ -89,6 +89,7 @@ void drawViewers(Editor& editor, FrameTimes& times) {
         times.viewerTextures[i] = target.texture.id();
     }
     fitViewerRanges(editor.state, renderer, editor.frame);
+    ui::serviceViewerTools(editor.state, renderer, editor.frame, times.viewerTextures, gpu.viewerTools);
 }
 
 // The pixel inspector's sample and its breakdown into per-light terms.

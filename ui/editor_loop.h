@@ -10,6 +10,7 @@
 #include "renderer.h"
 #include "script/ui_script.h"
 #include "session_controller.h"
+#include "viewer_tools_service.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -31,6 +32,7 @@ double msSince(EditorClock::time_point t0);
 // GPU objects the editor owns beside the renderer's.
 struct EditorGpu {
     std::array<ViewTarget, 5> viewTargets;                 // one per G-buffer viewer
+    ui::ViewerToolsGpu viewerTools;                         // diff heat maps of the viewer tools
     std::array<std::optional<ViewParams>, 5> drawnParams;  // what each target last showed
     GpuTimer timer;                                        // the editor's own GPU work, for the Stats window
 };

@@ -9,6 +9,14 @@ namespace gbl {
 // Values match NORMALS_* in shaders/view_constants.glsl (shader_constants_test checks them).
 enum class NormalDisplay { Biased = 0, Absolute = 1 };
 
+// Viewer tools (issue 15). Values match COLORMAP_* and OVERLAY_* in shaders/view_tools.glsl; kept
+// here until they join the shared constant table.
+enum class Colormap { Grey = 0, Turbo = 1, Viridis = 2 };
+inline constexpr unsigned kOverlayNaN = 1u;       // magenta where a shown channel is NaN
+inline constexpr unsigned kOverlayInf = 2u;       // green where a shown channel is +-Inf
+inline constexpr unsigned kOverlayNegative = 4u;  // cyan where a shown channel is below 0
+inline constexpr unsigned kOverlayClip = 8u;      // blue below the black point, red above the white point
+
 struct ViewParams {
     DebugView view = DebugView::Final;
     unsigned channelMask = 0xF;  // bit 0 = R, 1 = G, 2 = B, 3 = A; one bit alone shows grey
@@ -16,6 +24,8 @@ struct ViewParams {
     float rangeMax = 1.0f;
     NormalDisplay normalDisplay = NormalDisplay::Biased;
     float heatMax = 16.0f;       // count at the top of the heat ramp
+    Colormap colormap = Colormap::Grey;  // applied when one channel is shown
+    unsigned overlays = 0;               // kOverlay* bits
 
     // Every member, floats compared with ==: "does the target show something else now".
     bool operator==(ViewParams const&) const = default;

@@ -1,6 +1,8 @@
 // Defaults of the G-buffer viewers and the view each one asks for.
 #include "model/viewer_state.h"
 
+#include "core/depth.h"
+
 
 namespace gbl::ui {
 
@@ -36,7 +38,45 @@ ViewParams viewerParams(ViewerState const& viewer) {
     p.rangeMin = viewer.rangeMin;
     p.rangeMax = viewer.rangeMax;
     p.normalDisplay = viewer.normalDisplay;
+    p.colormap = viewer.colormap;
+    p.overlays = viewer.overlays;
     return p;
+}
+
+Attachment viewerAttachment(ViewerKind kind) {
+    switch (kind) {
+    case ViewerKind::Position: return Attachment::Position;
+    case ViewerKind::Normal: return Attachment::Normal;
+    case ViewerKind::Albedo:
+    case ViewerKind::Specular: return Attachment::AlbedoSpec;
+    case ViewerKind::Depth: return Attachment::Depth;
+    }
+    return Attachment::Position;
+}
+
+FloatImage viewerValues(ViewerState const& viewer, FloatImage const& attachment, float nearPlane, float farPlane) {
+    if (viewer.kind != ViewerKind::Depth || attachment.channels != 1) return attachment;
+    FloatImage out{attachment.width, attachment.height, 4, {}};
+    out.pixels.reserve(attachment.pixels.size() * 4);
+    for (float const d : attachment.pixels) {
+        out.pixels.push_back(viewer.linearDepth ? linearDepth(d, nearPlane, farPlane) : d);
+        out.pixels.push_back(d);
+        out.pixels.push_back(0.0f);
+        out.pixels.push_back(d < 1.0f ? 1.0f : 0.0f);  // the cleared depth is background
+    }
+    return out;
+}
+
+unsigned viewerStatsMask(ViewerState const& viewer) {
+    switch (viewer.kind) {
+    case ViewerKind::Specular: return 0x8u;
+    case ViewerKind::Depth: return 0x1u;
+    default: return viewer.channelMask == 0 ? 0x7u : viewer.channelMask;
+    }
+}
+
+RangeSkip viewerSkip(ViewerKind kind) {
+    return kind == ViewerKind::Albedo || kind == ViewerKind::Specular ? RangeSkip::None : RangeSkip::ZeroAlpha;
 }
 
 }  // namespace gbl::ui

@@ -1,7 +1,9 @@
 // State of the G-buffer viewers (one per attachment): channels, range, zoom and pan, as plain values.
 #pragma once
 
+#include "core/frame_types.h"
 #include "core/view_params.h"
+#include "model/image_stats.h"
 
 #include <glm/glm.hpp>
 
@@ -30,6 +32,48 @@ struct ViewerState {
     float zoom = 1.0f;           // 1 = whole image fits the cell
     glm::vec2 center{0.5f};      // image point (0..1, top-left origin) at the cell centre
     glm::ivec2 imageSize{0};     // texel size of the image last shown
+
+    // --- viewer tools (issue 15); not saved in sessions ----------------------------------------
+    bool showHistogram = false;
+    Colormap colormap = Colormap::Grey;  // when one channel is shown
+    unsigned overlays = 0;               // kOverlay* bits (core/view_params.h)
+    std::optional<glm::ivec2> picked;    // magnifier centre: right-click, arrow keys, Ctrl+G
+    std::optional<PixelRect> region;     // Shift+drag; statistics and "Fit to region" use it
+    std::optional<glm::ivec2> regionDragStart;  // texel where the Shift+drag began
+    int histogramDrag = -1;              // 0: dragging the black point, 1: the white point
+    bool percentileFitRequested = false; // "Fit 1-99 %": serviced like fitRequested
+    bool regionFitRequested = false;     // "Fit to region": min/max inside the region
+    bool pinRequested = false;           // "Pin": the loop stores the current values as the pinned image
+    bool showDiff = false;               // show |current - pinned| as a heat map instead of the view
+    DiffMode diffMode = DiffMode::Absolute;
+    float diffThreshold = 0.0f;          // pixels above it are counted ("over threshold")
+};
+
+// What the statistics of a ViewerData were computed for; a change recomputes them.
+struct StatsInputs {
+    unsigned mask = 0;
+    float black = 0.0f, white = 1.0f;
+    std::optional<PixelRect> region;
+    float diffThreshold = 0.0f;
+    DiffMode diffMode = DiffMode::Absolute;
+    bool operator==(StatsInputs const&) const = default;
+};
+
+// What the viewer tools know about one viewer's image, filled by the editor loop from a read-back
+// (ui/viewer_tools_service.cpp). Lives outside ViewerState so sessions never copy images.
+struct ViewerData {
+    FloatImage values;     // the viewer's values in data units (see viewerValues)
+    long frame = -1;       // editor frame of the read-back; -1 = none yet
+    unsigned key = 0;      // what the values were computed for (kind, depth mode); a change rereads
+    ImageStats stats;      // whole image
+    ImageStats regionStats;
+    Histogram histogram;   // over the histogram range below
+    float histLo = 0.0f, histHi = 1.0f;
+    ClipCounts clip;       // against the viewer's black/white points
+    std::optional<FloatImage> pinned;
+    long pinnedFrame = -1;
+    DiffStats diff;
+    std::optional<StatsInputs> computedFor;
 };
 
 struct GBufferPanelState {
@@ -42,6 +86,12 @@ struct GBufferPanelState {
     bool visible = true;  // the window was drawn last frame; hidden viewers are not redrawn
     std::optional<glm::ivec2> hoverPixel;  // texel under the mouse in any viewer, top-left origin
     std::optional<DebugView> showInViewport;  // a viewer was clicked this frame
+    bool syncViews = false;   // zoom/pan of one viewer is applied to all (same texel under the cursor)
+    int activeViewer = 0;     // the viewer last clicked or hovered: the magnifier and Ctrl+G act on it
+    bool showMagnifier = false;
+    bool goToOpen = false;    // Ctrl+G was pressed: the go-to-pixel popup opens
+    glm::ivec2 goToInput{0};
+    std::array<ViewerData, 5> data{};  // read-backs for the tools, filled by the loop
 
     static std::array<ViewerState, 5> defaultViewers();
 };
@@ -49,5 +99,17 @@ struct GBufferPanelState {
 DebugView viewerDebugView(ViewerState const& viewer);
 // The view-pass parameters a viewer asks for (the loop passes them to Renderer::drawView).
 ViewParams viewerParams(ViewerState const& viewer);
+
+// The attachment a viewer shows and how its values are taken from it, for the tools.
+Attachment viewerAttachment(ViewerKind kind);
+// The viewer's values as 4 channels in data units: position/normal/albedo as stored (alpha = drawn),
+// specular in channel 3, depth as (shown depth: linear when the viewer linearises, raw window depth,
+// 0, 1 where geometry was drawn). Statistics use viewerStatsMask and RangeSkip::ZeroAlpha
+// (albedo and specular: RangeSkip::None).
+FloatImage viewerValues(ViewerState const& viewer, FloatImage const& attachment, float nearPlane, float farPlane);
+unsigned viewerStatsMask(ViewerState const& viewer);
+RangeSkip viewerSkip(ViewerKind kind);
+// Whether the viewer's range remap applies (normals are shown as directions instead).
+inline bool viewerRemaps(ViewerKind kind) { return kind != ViewerKind::Normal; }
 
 }  // namespace gbl::ui

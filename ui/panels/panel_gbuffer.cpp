@@ -4,6 +4,8 @@
 
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
+#include "panels/viewer_tools.h"
+#include "model/viewer_tools.h"
 
 #include <imgui.h>
 
@@ -72,8 +74,18 @@ void viewerControls(ViewerState& v) {
     }
 }
 
+// Outline of a texel rectangle on the drawn image.
+void outlineTexels(ImDrawList* dl, ImVec2 p0, ImVec2 full, glm::ivec2 imageSize, glm::ivec2 a, glm::ivec2 b, ImU32 colour) {
+    float const tw = full.x / float(imageSize.x), th = full.y / float(imageSize.y);
+    dl->AddRect(ImVec2(p0.x + float(a.x) * tw, p0.y + float(a.y) * th), ImVec2(p0.x + float(b.x) * tw, p0.y + float(b.y) * th),
+                colour, 0.0f, 0, 1.5f);
+}
+
 // Draws the image with zoom and pan inside the remaining cell area; returns the hovered texel.
-std::optional<glm::ivec2> viewerImage(ViewerState& v, unsigned texture, glm::ivec2 imageSize, bool& clicked) {
+// Shift+drag draws the statistics region, right-click picks the magnifier's texel; `marker` is a
+// texel hovered in another viewer (Sync), outlined here.
+std::optional<glm::ivec2> viewerImage(ViewerState& v, unsigned texture, glm::ivec2 imageSize, bool& clicked,
+                                      std::optional<glm::ivec2> marker) {
     ImVec2 const avail = ImGui::GetContentRegionAvail();
     ImVec2 const origin = ImGui::GetCursorScreenPos();
     if (avail.x < 4.0f || avail.y < 4.0f || imageSize.x <= 0 || imageSize.y <= 0) return std::nullopt;
@@ -98,8 +110,17 @@ std::optional<glm::ivec2> viewerImage(ViewerState& v, unsigned texture, glm::ive
         glm::vec2 const mouseFromCentre(m.x - cellCentre.x, m.y - cellCentre.y);
         v.center = p - mouseFromCentre / (glm::vec2(full.x, full.y) * k);
     }
-    if (ImGui::IsItemActive() && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
+    auto texelAt = [&](ImVec2 m) {
+        ImVec2 const p = imageMin();
+        glm::vec2 const uv((m.x - p.x) / full.x, (m.y - p.y) / full.y);
+        return glm::clamp(glm::ivec2(glm::floor(uv * glm::vec2(imageSize))), glm::ivec2(0), imageSize - 1);
+    };
+    if (ImGui::IsItemActivated() && io.KeyShift) v.regionDragStart = texelAt(io.MousePos);
+    if (!ImGui::IsItemActive()) v.regionDragStart.reset();
+    if (v.regionDragStart) v.region = rectFromCorners(*v.regionDragStart, texelAt(io.MousePos));
+    else if (ImGui::IsItemActive() && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
         v.center -= glm::vec2(io.MouseDelta.x / full.x, io.MouseDelta.y / full.y);
+    if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right)) v.picked = texelAt(io.MousePos);
     if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
         v.zoom = 1.0f;
         v.center = glm::vec2(0.5f);
@@ -114,6 +135,9 @@ std::optional<glm::ivec2> viewerImage(ViewerState& v, unsigned texture, glm::ive
     dl->PushClipRect(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), true);
     dl->AddRectFilled(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), IM_COL32(12, 12, 14, 255));
     if (texture != 0) dl->AddImage(toImTexture(texture), p0, p1, ImVec2(0, 1), ImVec2(1, 0));
+    if (v.region) outlineTexels(dl, p0, fullNow, imageSize, v.region->min, v.region->max, IM_COL32(255, 255, 255, 230));
+    if (v.picked) outlineTexels(dl, p0, fullNow, imageSize, *v.picked, *v.picked + 1, IM_COL32(255, 160, 0, 255));
+    if (marker) outlineTexels(dl, p0, fullNow, imageSize, *marker, *marker + 1, IM_COL32(0, 255, 255, 255));
     dl->PopClipRect();
 
     if (hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
@@ -137,6 +161,7 @@ std::optional<glm::ivec2> viewerImage(ViewerState& v, unsigned texture, glm::ive
 }  // namespace
 
 void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& textures, glm::ivec2 imageSize) {
+    std::optional<glm::ivec2> const previousHover = state.hoverPixel;
     state.hoverPixel.reset();
     state.showInViewport.reset();
     placeWindow(EditorWindow::GBuffer);
@@ -147,7 +172,16 @@ void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& t
             ImGui::SetTooltip("off: one viewer is redrawn per frame in turn (cheaper on slow GL); a viewer whose\n"
                               "settings change is redrawn at once");
         ImGui::SameLine();
-        ImGui::TextDisabled("click: show in viewport  drag: pan  wheel: zoom  double-click: reset");
+        ImGui::Checkbox("Sync zoom/pan", &state.syncViews);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("link zoom and pan of all viewers: the same texel under the cursor in each");
+        ImGui::SameLine();
+        ImGui::Checkbox("Magnifier", &state.showMagnifier);
+        ImGui::SameLine();
+        ImGui::TextDisabled("(?)");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("click: show in viewport  drag: pan  wheel: zoom  double-click: reset\n"
+                              "Shift+drag: statistics region  right-click: pick texel (magnifier)\n"
+                              "arrow keys: step the picked texel  Ctrl+G: go to pixel");
         if (ImGui::BeginTable("viewers", 5, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame,
                               ImGui::GetContentRegionAvail())) {
             for (std::size_t i = 0; i < state.viewers.size(); ++i) ImGui::TableSetupColumn(kViewerNames[i].data());
@@ -161,17 +195,35 @@ void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& t
                     ImGui::SameLine();
                     ImGui::TextDisabled("x%.1f", v.zoom);
                 }
+                if (v.showDiff && state.data[i].pinned) {
+                    ImGui::SameLine();
+                    ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.2f, 1.0f), "DIFF");
+                }
+                viewerHeaderCounts(v, state.data[i]);
                 viewerControls(v);
+                viewerToolsRow(v, state.data[i]);
+                viewerHistogram(v, state.data[i]);
+                viewerRegionAndDiff(v, state.data[i]);
                 v.imageSize = imageSize;
                 bool clicked = false;
-                if (auto texel = viewerImage(v, textures[i], imageSize, clicked)) state.hoverPixel = texel;
+                float const zoomBefore = v.zoom;
+                glm::vec2 const centerBefore = v.center;
+                std::optional<glm::ivec2> const marker = state.syncViews ? previousHover : std::nullopt;
+                if (auto texel = viewerImage(v, textures[i], imageSize, clicked, marker)) {
+                    state.hoverPixel = texel;
+                    if (!state.showMagnifier || !v.picked) state.activeViewer = int(i);
+                }
+                if (ImGui::IsItemClicked(ImGuiMouseButton_Right) || clicked) state.activeViewer = int(i);
                 if (clicked) state.showInViewport = viewerDebugView(v);
+                if (state.syncViews && (v.zoom != zoomBefore || v.center != centerBefore)) syncViewers(state, i);
                 ImGui::PopID();
             }
             ImGui::EndTable();
         }
+        viewerKeys(state);
     }
     ImGui::End();
+    drawViewerMagnifier(state);
 }
 
 }  // namespace gbl::ui

@@ -1,0 +1,104 @@
+// Viewer tools' model: the depth viewer's values, the 1-99 % fit and region fit requests, pin and diff.
+#include "model/viewer_tools.h"
+
+#include "core/depth.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+using namespace gbl;
+using namespace gbl::ui;
+
+namespace {
+// 10x10 RGBA: R = 1..100 row by row, alpha 1 (drawn everywhere).
+FloatImage positions() {
+    FloatImage img{10, 10, 4, {}};
+    for (int i = 0; i < 100; ++i) img.pixels.insert(img.pixels.end(), {float(i + 1), 0.0f, 0.0f, 1.0f});
+    return img;
+}
+}  // namespace
+
+TEST(ViewerTools, DepthValuesAreLinearisedAndKeepTheStoredDepth) {
+    ViewerState v;
+    v.kind = ViewerKind::Depth;
+    v.linearDepth = true;
+    FloatImage const depth{2, 1, 1, {0.5f, 1.0f}};
+    FloatImage const values = viewerValues(v, depth, 0.1f, 100.0f);
+    ASSERT_EQ(values.channels, 4);
+    EXPECT_FLOAT_EQ(values.at(0, 0, 0), linearDepth(0.5f, 0.1f, 100.0f));
+    EXPECT_EQ(values.at(0, 0, 1), 0.5f);  // stored depth, for the raw bits
+    EXPECT_EQ(values.at(0, 0, 3), 1.0f);
+    EXPECT_EQ(values.at(1, 0, 3), 0.0f);  // cleared depth: background
+    // Background takes no part in the statistics.
+    EXPECT_EQ(imageStats(values, viewerStatsMask(v), {}, viewerSkip(v.kind)).pixels, 1);
+}
+
+TEST(ViewerTools, PercentileFitRequestSetsThePointsAndIsCleared) {
+    ViewerState v;
+    v.kind = ViewerKind::Position;
+    v.channelMask = 0x1;
+    v.autoFit = true;
+    v.percentileFitRequested = true;
+    ViewerData d;
+    FloatImage img = positions();
+    img.pixels[0] = std::numeric_limits<float>::quiet_NaN();  // texel 0's R: not a value
+    setViewerValues(v, d, img, 7);
+    EXPECT_FALSE(v.percentileFitRequested);
+    EXPECT_FALSE(v.autoFit);
+    // 99 values 2..100: rank ceil(0.99) = 1 is 2, rank ceil(98.01) = 99 is 100.
+    EXPECT_EQ(v.rangeMin, 2.0f);
+    EXPECT_EQ(v.rangeMax, 100.0f);
+    EXPECT_EQ(d.stats.nanPixels, 1);
+    EXPECT_EQ(d.frame, 7);
+}
+
+TEST(ViewerTools, RegionFitUsesTheRegionsMinAndMax) {
+    ViewerState v;
+    v.channelMask = 0x1;
+    v.region = rectFromCorners({2, 3}, {4, 4});  // values 33..35, 43..45
+    ViewerData d;
+    setViewerValues(v, d, positions(), 1);
+    EXPECT_EQ(d.regionStats.pixels, 6);
+    v.regionFitRequested = true;
+    updateViewerStats(v, d);
+    EXPECT_FALSE(v.regionFitRequested);
+    EXPECT_EQ(v.rangeMin, 33.0f);
+    EXPECT_EQ(v.rangeMax, 45.0f);
+}
+
+TEST(ViewerTools, PinThenDiffShowsWhatChanged) {
+    ViewerState v;
+    v.channelMask = 0x1;
+    v.pinRequested = true;
+    ViewerData d;
+    setViewerValues(v, d, positions(), 1);
+    ASSERT_TRUE(d.pinned);
+    EXPECT_FALSE(v.pinRequested);
+    v.showDiff = true;
+    FloatImage changed = positions();
+    changed.pixels[(2 * 10 + 5) * 4] += 3.0f;  // texel (5, 2)
+    setViewerValues(v, d, changed, 31);
+    EXPECT_TRUE(d.diff.comparable);
+    EXPECT_EQ(d.diff.max, 3.0f);
+    EXPECT_EQ(d.diff.maxAt, glm::ivec2(5, 2));
+    EXPECT_EQ(d.pinnedFrame, 1);
+    // The heat map: black where equal, the top of turbo at the largest difference.
+    std::vector<std::uint8_t> const rgba = diffHeatmap(d.diff, d.diff.max);
+    ASSERT_EQ(rgba.size(), 400u);
+    EXPECT_EQ(rgba[0], 0);
+    std::size_t const at = (2 * 10 + 5) * 4;
+    EXPECT_EQ(rgba[at], 144);  // turbo(1) = (0.566, 0.050, 0.000) -> 144, 13, 0
+    EXPECT_EQ(rgba[at + 1], 13);
+}
+
+TEST(ViewerTools, SyncCopiesZoomAndPanToEveryViewer) {
+    GBufferPanelState p;
+    p.viewers[2].zoom = 4.0f;
+    p.viewers[2].center = {0.25f, 0.75f};
+    syncViewers(p, 2);
+    for (auto const& v : p.viewers) {
+        EXPECT_EQ(v.zoom, 4.0f);
+        EXPECT_EQ(v.center, glm::vec2(0.25f, 0.75f));
+    }
+}

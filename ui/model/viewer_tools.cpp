@@ -1,0 +1,112 @@
+// Viewer tools: read-back scheduling, statistics, fits, pin and diff.
+#include "model/viewer_tools.h"
+
+#include "model/colormap.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gbl::ui {
+
+bool viewerNeedsData(GBufferPanelState const& panel, std::size_t i) {
+    ViewerState const& v = panel.viewers[i];
+    bool const magnifier = panel.showMagnifier && panel.activeViewer == int(i);
+    return v.showHistogram || v.overlays != 0 || v.region || v.showDiff || v.percentileFitRequested || v.regionFitRequested ||
+           v.pinRequested || magnifier;
+}
+
+unsigned viewerValuesKey(ViewerState const& viewer) {
+    return unsigned(viewer.kind) | (viewer.linearDepth ? 8u : 0u) | (viewer.cameraClipPlanes ? 16u : 0u);
+}
+
+bool viewerDataDue(ViewerState const& viewer, ViewerData const& data, long frame) {
+    // A fit or a pin acts on the newest frame, not on values up to half a second old.
+    if (viewer.percentileFitRequested || viewer.pinRequested) return true;
+    return data.frame < 0 || frame - data.frame >= kViewerDataInterval || data.key != viewerValuesKey(viewer);
+}
+
+void setViewerValues(ViewerState& viewer, ViewerData& data, FloatImage values, long frame) {
+    data.values = std::move(values);
+    data.frame = frame;
+    data.key = viewerValuesKey(viewer);
+    data.computedFor.reset();
+    unsigned const mask = viewerStatsMask(viewer);
+    RangeSkip const skip = viewerSkip(viewer.kind);
+    if (viewer.percentileFitRequested) {
+        viewer.percentileFitRequested = false;
+        ValueRange const r = percentileRange(data.values, mask, 1.0f, 99.0f, {}, skip);
+        if (r.samples > 0 && viewerRemaps(viewer.kind)) {
+            viewer.rangeMin = r.min;
+            viewer.rangeMax = r.max;
+            viewer.autoFit = false;  // auto-fit would undo the fit within a second
+        }
+    }
+    if (viewer.pinRequested) {
+        viewer.pinRequested = false;
+        data.pinned = data.values;
+        data.pinnedFrame = frame;
+    }
+    updateViewerStats(viewer, data);
+}
+
+bool updateViewerStats(ViewerState& viewer, ViewerData& data) {
+    if (data.frame < 0) return false;
+    unsigned const mask = viewerStatsMask(viewer);
+    RangeSkip const skip = viewerSkip(viewer.kind);
+    if (viewer.regionFitRequested) {
+        viewer.regionFitRequested = false;
+        ImageStats const r = imageStats(data.values, mask, viewer.region, skip);
+        if (r.shown.finite > 0 && viewerRemaps(viewer.kind)) {
+            viewer.rangeMin = r.shown.min;
+            viewer.rangeMax = std::max(r.shown.max, r.shown.min + 1e-6f);
+            viewer.autoFit = false;
+        }
+    }
+    StatsInputs const in{mask, viewer.rangeMin, viewer.rangeMax, viewer.region, viewer.diffThreshold, viewer.diffMode};
+    if (data.computedFor == in) return false;
+    bool const newValues = !data.computedFor || data.computedFor->mask != mask;
+    data.computedFor = in;
+    data.stats = imageStats(data.values, mask, {}, skip);
+    data.regionStats = viewer.region ? imageStats(data.values, mask, viewer.region, skip) : ImageStats{};
+    data.clip = clipCounts(data.values, mask, viewer.rangeMin, viewer.rangeMax, {}, skip);
+    // The histogram spans the data (0.1-99.9 %, so a few outliers do not squash it) and the
+    // black/white points, so both are always on it.
+    if (newValues || data.histogram.bins.empty() || viewer.rangeMin < data.histLo || viewer.rangeMax > data.histHi) {
+        ValueRange const span = percentileRange(data.values, mask, 0.1f, 99.9f, {}, skip);
+        float lo = span.samples > 0 ? span.min : 0.0f, hi = span.samples > 0 ? span.max : 1.0f;
+        if (viewerRemaps(viewer.kind)) {
+            lo = std::min(lo, viewer.rangeMin);
+            hi = std::max(hi, viewer.rangeMax);
+        }
+        float const pad = (hi - lo) * 0.02f;
+        data.histLo = lo - pad;
+        data.histHi = std::max(hi + pad, data.histLo + 1e-6f);
+    }
+    data.histogram = histogram(data.values, mask, data.histLo, data.histHi, 128, {}, skip);
+    bool const diffable = data.pinned && viewer.showDiff;
+    data.diff = diffable ? diffImages(data.values, *data.pinned, mask, viewer.diffThreshold, viewer.diffMode) : DiffStats{};
+    return diffable;
+}
+
+std::vector<std::uint8_t> diffHeatmap(DiffStats const& diff, float scale) {
+    std::vector<std::uint8_t> rgba;
+    rgba.reserve(diff.diff.pixels.size() * 4);
+    auto byte = [](float v) { return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+    for (float const d : diff.diff.pixels) {
+        // Exactly equal stays black, so "nothing changed" reads at a glance.
+        glm::vec3 const c = !std::isfinite(d) ? glm::vec3(1.0f, 0.0f, 1.0f)
+                            : d == 0.0f       ? glm::vec3(0.0f)
+                                              : colormap(Colormap::Turbo, scale > 0.0f ? d / scale : 1.0f);
+        rgba.insert(rgba.end(), {byte(c.r), byte(c.g), byte(c.b), 255});
+    }
+    return rgba;
+}
+
+void syncViewers(GBufferPanelState& panel, std::size_t from) {
+    for (auto& v : panel.viewers) {
+        v.zoom = panel.viewers[from].zoom;
+        v.center = panel.viewers[from].center;
+    }
+}
+
+}  // namespace gbl::ui

@@ -1,0 +1,35 @@
+// Logic of the viewer tools over plain state: when a viewer needs a read-back, what is computed
+// from it, the fits and the pin, and the diff heat map's pixels. No GL; the loop feeds read-backs.
+#pragma once
+
+#include "model/viewer_state.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace gbl::ui {
+
+// Frames between read-backs while a tool is open (about twice a second at 60 Hz): a read-back
+// of a full-size attachment costs milliseconds on a software GL.
+inline constexpr long kViewerDataInterval = 30;
+
+// Whether viewer i has a tool open that needs its values on the CPU, or a request pending.
+bool viewerNeedsData(GBufferPanelState const& panel, std::size_t i);
+// Whether the values are missing, stale, or were taken for another kind or depth mode.
+bool viewerDataDue(ViewerState const& viewer, ViewerData const& data, long frame);
+// What identifies the values of a viewer (kind, depth linearisation, clip planes in use).
+unsigned viewerValuesKey(ViewerState const& viewer);
+
+// Takes a fresh read-back (already through viewerValues) and services the requests.
+void setViewerValues(ViewerState& viewer, ViewerData& data, FloatImage values, long frame);
+// Recomputes statistics, histogram, clipping and diff when their inputs changed; services the
+// fit requests that need no new read-back. Returns true when the diff changed (re-upload it).
+bool updateViewerStats(ViewerState& viewer, ViewerData& data);
+
+// RGBA8 rows top to bottom: the diff through turbo from 0 to `scale`, NaN/Inf pixels magenta.
+std::vector<std::uint8_t> diffHeatmap(DiffStats const& diff, float scale);
+
+// Zoom and pan of `from` copied to every viewer (the "Sync zoom/pan" toggle).
+void syncViewers(GBufferPanelState& panel, std::size_t from);
+
+}  // namespace gbl::ui

@@ -1,0 +1,126 @@
+// Magnifier: 9x9 texels around the picked texel of the active viewer, values on hover, and the
+// go-to-pixel popup (Ctrl+G).
+#include "panels/viewer_tools.h"
+
+#include "model/colormap.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+
+namespace gbl::ui {
+
+namespace {
+
+constexpr int kRadius = 4;  // 9x9 texels
+
+// The texel's colour as the viewer shows it, from the CPU values (remap, channels, colormap).
+ImU32 shownColour(ViewerState const& v, ViewerData const& d, int x, int y) {
+    auto remap = [&](float value) {
+        if (!viewerRemaps(v.kind)) return value;
+        return (value - v.rangeMin) / std::max(v.rangeMax - v.rangeMin, 1e-20f);
+    };
+    unsigned const mask = viewerStatsMask(v);
+    glm::vec3 c{0.0f};
+    int const shown = __builtin_popcount(mask);
+    if (shown == 1) {
+        int const ch = __builtin_ctz(mask);
+        float const value = d.values.at(x, y, ch);
+        c = colormap(v.colormap, remap(v.kind == ViewerKind::Normal ? value * 0.5f + 0.5f : value));
+    } else {
+        for (int ch = 0; ch < 3; ++ch) {
+            if (!(mask & (1u << ch))) continue;
+            float const value = d.values.at(x, y, ch);
+            c[ch] = std::clamp(remap(v.kind == ViewerKind::Normal ? value * 0.5f + 0.5f : value), 0.0f, 1.0f);
+        }
+    }
+    c = glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f));
+    return IM_COL32(int(c.r * 255.0f + 0.5f), int(c.g * 255.0f + 0.5f), int(c.b * 255.0f + 0.5f), 255);
+}
+
+void texelValues(ViewerState const& v, ViewerData const& d, glm::ivec2 t) {
+    ImGui::Text("texel %d, %d", t.x, t.y);
+    if (v.kind == ViewerKind::Depth) {
+        float const raw = d.values.at(t.x, t.y, 1);
+        std::uint32_t bits = 0;
+        std::memcpy(&bits, &raw, sizeof bits);
+        ImGui::Text("%s %.6g", v.linearDepth ? "eye depth" : "depth", d.values.at(t.x, t.y, 0));
+        ImGui::Text("stored %.9g (bits 0x%08x)", raw, bits);
+        return;
+    }
+    static constexpr char const* kChannel[4] = {"R", "G", "B", "A"};
+    for (int c = 0; c < 4; ++c) ImGui::Text("%s %.6g", kChannel[c], d.values.at(t.x, t.y, c));
+}
+
+void goToPixelPopup(GBufferPanelState& panel, ViewerState& v) {
+    if (panel.goToOpen) {
+        ImGui::OpenPopup("Go to pixel");
+        panel.goToOpen = false;
+    }
+    if (!ImGui::BeginPopup("Go to pixel")) return;
+    ImGui::TextUnformatted("x, y (top-left origin)");
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    bool go = ImGui::InputInt2("##xy", &panel.goToInput.x, ImGuiInputTextFlags_EnterReturnsTrue);
+    go |= ImGui::Button("Go");
+    if (go && v.imageSize.x > 0) {
+        glm::ivec2 const p = glm::clamp(panel.goToInput, glm::ivec2(0), v.imageSize - 1);
+        v.picked = p;
+        v.zoom = std::max(v.zoom, 8.0f);
+        v.center = (glm::vec2(p) + 0.5f) / glm::vec2(v.imageSize);
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+}  // namespace
+
+void drawViewerMagnifier(GBufferPanelState& panel) {
+    ViewerState& v = panel.viewers[std::size_t(std::clamp(panel.activeViewer, 0, 4))];
+    goToPixelPopup(panel, v);
+    if (!panel.showMagnifier) return;
+    ViewerData const& d = panel.data[std::size_t(std::clamp(panel.activeViewer, 0, 4))];
+    float const cell = ImGui::GetFontSize() * 1.4f;
+    ImGui::SetNextWindowSize(ImVec2(cell * 9 + 40.0f, cell * 9 + ImGui::GetFontSize() * 9), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Magnifier", &panel.showMagnifier)) {
+        ImGui::End();
+        return;
+    }
+    ImGui::Text("%s viewer", kViewerNames[std::size_t(v.kind)].data());
+    if (!v.picked) {
+        ImGui::TextWrapped("Right-click a texel in a viewer to pick it; arrow keys step it; Ctrl+G goes to one.");
+    } else if (d.frame < 0 || d.values.width <= 0) {
+        ImGui::TextDisabled("reading values...");
+    } else {
+        glm::ivec2 const c = glm::clamp(*v.picked, glm::ivec2(0), glm::ivec2(d.values.width, d.values.height) - 1);
+        ImVec2 const p0 = ImGui::GetCursorScreenPos();
+        ImGui::InvisibleButton("grid", ImVec2(cell * 9, cell * 9));
+        bool const hovered = ImGui::IsItemHovered();
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        std::optional<glm::ivec2> hoverTexel;
+        for (int dy = -kRadius; dy <= kRadius; ++dy) {
+            for (int dx = -kRadius; dx <= kRadius; ++dx) {
+                glm::ivec2 const t = c + glm::ivec2(dx, dy);
+                ImVec2 const a(p0.x + float(dx + kRadius) * cell, p0.y + float(dy + kRadius) * cell);
+                ImVec2 const b(a.x + cell, a.y + cell);
+                if (t.x < 0 || t.y < 0 || t.x >= d.values.width || t.y >= d.values.height) {
+                    dl->AddRectFilled(a, b, IM_COL32(30, 30, 30, 255));
+                    continue;
+                }
+                dl->AddRectFilled(a, b, shownColour(v, d, t.x, t.y));
+                if (hovered && ImGui::IsMouseHoveringRect(a, b)) hoverTexel = t;
+            }
+        }
+        ImVec2 const ca(p0.x + kRadius * cell, p0.y + kRadius * cell);
+        dl->AddRect(ca, ImVec2(ca.x + cell, ca.y + cell), IM_COL32(255, 255, 0, 255), 0.0f, 0, 2.0f);
+        if (hoverTexel) {
+            ImGui::BeginTooltip();
+            texelValues(v, d, *hoverTexel);
+            ImGui::EndTooltip();
+        }
+        texelValues(v, d, c);
+        ImGui::TextDisabled("values from frame %ld", d.frame);
+    }
+    ImGui::End();
+}
+
+}  // namespace gbl::ui

@@ -1,0 +1,143 @@
+// Tool toggles, header counts, region and diff statistics, and the viewers' keys.
+#include "panels/viewer_tools.h"
+
+#include "model/colormap.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace gbl::ui {
+
+bool letterPressed(char upper) {
+#if IMGUI_VERSION_NUM >= 18700
+    return ImGui::IsKeyPressed(ImGuiKey(int(ImGuiKey_A) + (upper - 'A')));
+#else
+    return ImGui::IsKeyPressed(int(upper));  // GLFW key codes of letters are their capitals
+#endif
+}
+
+bool arrowPressed(int dx, int dy) {
+    ImGuiKey const key = dx < 0 ? ImGuiKey_LeftArrow : dx > 0 ? ImGuiKey_RightArrow : dy < 0 ? ImGuiKey_UpArrow : ImGuiKey_DownArrow;
+#if IMGUI_VERSION_NUM >= 18700
+    return ImGui::IsKeyPressed(key);
+#else
+    return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key));
+#endif
+}
+
+void viewerHeaderCounts(ViewerState const& v, ViewerData const& d) {
+    if (d.frame < 0 || v.overlays == 0) return;
+    float const right = ImGui::GetItemRectMax().x + ImGui::GetContentRegionAvail().x;
+    auto count = [&](ImU32 colour, char const* label, long n) {
+        char text[40];
+        std::snprintf(text, sizeof text, "%s %ld", label, n);
+        // Wrap instead of running out of a narrow cell.
+        if (ImGui::GetItemRectMax().x + 8.0f + ImGui::CalcTextSize(text).x <= right) ImGui::SameLine();
+        ImGui::PushStyleColor(ImGuiCol_Text, n > 0 ? colour : IM_COL32(140, 140, 140, 255));
+        ImGui::TextUnformatted(text);
+        ImGui::PopStyleColor();
+    };
+    count(kNaNColour, "NaN", d.stats.nanPixels);
+    count(kInfColour, "Inf", d.stats.infPixels);
+    count(kNegativeColour, "neg", d.stats.negativePixels);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("pixels with a shown channel NaN / +-Inf / below 0 (counted on the CPU read-back)");
+}
+
+void viewerToolsRow(ViewerState& v, ViewerData const& d) {
+    // Items wrap to a new line instead of running out of a narrow cell.
+    float const right = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;
+    auto next = [&](char const* label) {
+        float const w = ImGui::CalcTextSize(label).x + ImGui::GetStyle().FramePadding.x * 2.0f;
+        if (ImGui::GetItemRectMax().x + 2.0f + w <= right) ImGui::SameLine(0, 2);
+    };
+    auto toggle = [](char const* label, bool on) {
+        ImGui::PushStyleColor(ImGuiCol_Button, on ? IM_COL32(70, 110, 170, 255) : IM_COL32(50, 50, 55, 255));
+        bool const clicked = ImGui::SmallButton(label);
+        ImGui::PopStyleColor();
+        return clicked;
+    };
+    if (toggle("Hist", v.showHistogram)) v.showHistogram = !v.showHistogram;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("histogram of the shown channels with the black/white points");
+    ImGui::SameLine(0, 2);
+    int map = int(v.colormap);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 4.2f);
+    char const* maps[] = {kColormapNames[0].data(), kColormapNames[1].data(), kColormapNames[2].data()};
+    if (ImGui::Combo("##map", &map, maps, 3)) v.colormap = Colormap(map);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("colormap, used when one channel is shown");
+    next("Ovl");
+    if (toggle("Ovl", v.overlays != 0)) ImGui::OpenPopup("overlays");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("overlays: NaN, Inf, negative, clipping");
+    if (ImGui::BeginPopup("overlays")) {
+        ImGui::CheckboxFlags("NaN (magenta)", &v.overlays, kOverlayNaN);
+        ImGui::CheckboxFlags("Inf (green)", &v.overlays, kOverlayInf);
+        ImGui::CheckboxFlags("negative (cyan)", &v.overlays, kOverlayNegative);
+        ImGui::CheckboxFlags("clipping (blue below black, red above white)", &v.overlays, kOverlayClip);
+        ImGui::EndPopup();
+    }
+    next("Pin");
+    if (ImGui::SmallButton("Pin")) v.pinRequested = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(d.pinned ? "pinned at frame %ld; click to pin the current frame instead" : "keep this frame's values to compare against",
+                          d.pinnedFrame);
+    next("Diff");
+    ImGui::BeginDisabled(!d.pinned);
+    if (toggle("Diff", v.showDiff)) v.showDiff = !v.showDiff;
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("show |current - pinned| as a heat map (black: equal; magenta: NaN/Inf)");
+}
+
+void viewerRegionAndDiff(ViewerState& v, ViewerData const& d) {
+    static constexpr char const* kChannel[4] = {"R", "G", "B", "A"};
+    if (v.region) {
+        PixelRect const r = *v.region;
+        ImGui::TextDisabled("region %d,%d %dx%d", r.min.x, r.min.y, r.max.x - r.min.x, r.max.y - r.min.y);
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Fit to region")) v.regionFitRequested = true;
+        ImGui::SameLine(0, 2);
+        if (ImGui::SmallButton("x##region")) v.region.reset();
+        if (d.frame >= 0 && v.region) {
+            unsigned const mask = viewerStatsMask(v);
+            for (int c = 0; c < 4; ++c) {
+                if (!(mask & (1u << c))) continue;
+                ChannelStats const& s = d.regionStats.channel[std::size_t(c)];
+                ImGui::Text("%s min %.4g max %.4g mean %.4g NaN %ld", v.kind == ViewerKind::Depth ? "d" : kChannel[c], s.min,
+                            s.max, s.mean, s.nan);
+            }
+        }
+    }
+    if (v.showDiff && d.pinned) {
+        if (!d.diff.comparable) {
+            ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "pinned image has another size; pin again");
+            return;
+        }
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5.0f);
+        ImGui::DragFloat("##threshold", &v.diffThreshold, 0.001f, 0.0f, 1e6f, "thr %.4g", ImGuiSliderFlags_AlwaysClamp);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("pixels whose difference is above this are counted; 0 = any change");
+        ImGui::SameLine(0, 2);
+        bool rel = v.diffMode == DiffMode::Relative;
+        if (ImGui::Checkbox("rel", &rel)) v.diffMode = rel ? DiffMode::Relative : DiffMode::Absolute;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("relative: |a - b| / |pinned|");
+        ImGui::Text("max %.4g at %d,%d  mean %.3g", d.diff.max, d.diff.maxAt.x, d.diff.maxAt.y, d.diff.mean);
+        ImGui::Text("over %ld of %ld  NaN/Inf %ld", d.diff.overThreshold, d.diff.pixels, d.diff.nanPixels);
+    }
+}
+
+void viewerKeys(GBufferPanelState& panel) {
+    if (!ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows) || ImGui::GetIO().WantTextInput) return;
+    ViewerState& v = panel.viewers[std::size_t(std::clamp(panel.activeViewer, 0, 4))];
+    if (ImGui::GetIO().KeyCtrl && letterPressed('G')) {
+        panel.goToOpen = true;
+        panel.goToInput = v.picked.value_or(glm::ivec2(0));
+    }
+    if (!v.picked || v.imageSize.x <= 0) return;
+    glm::ivec2 step{0};
+    if (arrowPressed(-1, 0)) step.x -= 1;
+    if (arrowPressed(1, 0)) step.x += 1;
+    if (arrowPressed(0, -1)) step.y -= 1;
+    if (arrowPressed(0, 1)) step.y += 1;
+    if (step != glm::ivec2(0)) v.picked = glm::clamp(*v.picked + step, glm::ivec2(0), v.imageSize - 1);
+}
+
+}  // namespace gbl::ui

@@ -1,0 +1,23 @@
+// The editor loop's side of the viewer tools: reads back the attachments the open tools need,
+// services the viewers' fit/pin requests and uploads the diff heat maps.
+#pragma once
+
+#include "gl/texture.h"
+#include "model/editor_state.h"
+#include "renderer.h"
+
+#include <array>
+
+namespace gbl::ui {
+
+// One heat-map texture per viewer, made on first use.
+struct ViewerToolsGpu {
+    std::array<gl::Texture, 5> diff;
+};
+
+// Call after the viewers' views are drawn; replaces textures[i] with the diff heat map where a
+// viewer shows its difference to the pinned image.
+void serviceViewerTools(EditorState& state, Renderer& renderer, long frame, std::array<unsigned, 5>& textures,
+                        ViewerToolsGpu& gpu);
+
+}  // namespace gbl::ui
