@@ -86,7 +86,7 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
             // Fixed columns with horizontal scrolling: six numbers per light never fit a side column.
             ImGuiTableFlags const flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX |
                                           ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
-            float const height = std::max(ImGui::GetContentRegionAvail().y - ImGui::GetTextLineHeightWithSpacing() * 4.2f, 60.0f);
+            float const height = std::max(ImGui::GetContentRegionAvail().y - ImGui::GetTextLineHeightWithSpacing() * (b.verdicts.empty() ? 4.2f : 5.4f), 60.0f);
             if (ImGui::BeginTable("lights", 8, flags, ImVec2(0, height))) {
                 ImGui::TableSetupScrollFreeze(0, 1);
                 for (char const* c : {"light", "evaluated?", "added", "dist", "atten", "diffuse", "specular", "why"}) ImGui::TableSetupColumn(c);
