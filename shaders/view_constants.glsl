@@ -1,6 +1,6 @@
 // The enum values view.frag switches on. Each list matches a C++ enum one-to-one; the
-// shader_constants_test reads this file and checks it against kDebugViewNames, kTonemapNames
-// and NormalDisplay, so a value added on one side only fails the build's tests.
+// shader_constants_test reads this file and checks it against kDebugViewNames, kTonemapNames,
+// NormalDisplay, kColormapNames and the kOverlay* bits, so a value added on one side only fails the build's tests.
 
 // gbl::DebugView (core/pipeline_settings.h), VIEW_ + the upper-cased kDebugViewNames entry.
 #define VIEW_FINAL 0
@@ -22,3 +22,14 @@
 // gbl::NormalDisplay (core/view_params.h).
 #define NORMALS_BIASED 0
 #define NORMALS_ABSOLUTE 1
+
+// gbl::Colormap (core/view_params.h), COLORMAP_ + the upper-cased kColormapNames entry.
+#define COLORMAP_GREY 0
+#define COLORMAP_TURBO 1
+#define COLORMAP_VIRIDIS 2
+
+// gbl::kOverlay* bits (core/view_params.h).
+#define OVERLAY_NAN 1
+#define OVERLAY_INF 2
+#define OVERLAY_NEGATIVE 4
+#define OVERLAY_CLIP 8

@@ -1,14 +1,7 @@
 // Viewer tools of the view pass: colormaps for one shown channel and the NaN / Inf / negative /
 // clipping overlays. Included by view.frag; the tables match ui/model/colormap.cpp.
 
-// Values match gbl::Colormap and gbl::kOverlay* in renderer/core/view_params.h.
-#define COLORMAP_GREY 0
-#define COLORMAP_TURBO 1
-#define COLORMAP_VIRIDIS 2
-#define OVERLAY_NAN 1
-#define OVERLAY_INF 2
-#define OVERLAY_NEGATIVE 4
-#define OVERLAY_CLIP 8
+// COLORMAP_* and OVERLAY_* come from view_constants.glsl (included first by view.frag).
 
 uniform int uColormap;
 uniform int uOverlays;

@@ -64,11 +64,19 @@ TEST(ShaderConstants, ViewConstantsMatchTheEnums) {
     ASSERT_EQ(all.count("NORMALS_ABSOLUTE"), 1u);
     EXPECT_EQ(all.at("NORMALS_BIASED"), int(NormalDisplay::Biased));
     EXPECT_EQ(all.at("NORMALS_ABSOLUTE"), int(NormalDisplay::Absolute));
+    expectMatchesEnum(all, "COLORMAP_", kColormapNames);
+    std::map<std::string, int> overlays;
+    for (auto const& [name, value] : all)
+        if (name.rfind("OVERLAY_", 0) == 0) overlays[name] = value;
+    std::map<std::string, int> const cpp{{"OVERLAY_NAN", int(kOverlayNaN)}, {"OVERLAY_INF", int(kOverlayInf)},
+                                         {"OVERLAY_NEGATIVE", int(kOverlayNegative)}, {"OVERLAY_CLIP", int(kOverlayClip)}};
+    EXPECT_EQ(overlays, cpp);
 }
 
 TEST(ShaderConstants, ViewShaderTakesItsConstantsFromTheSharedFile) {
     // A second copy of the values in view.frag would drift from the checked one.
     EXPECT_TRUE(defines("view.frag").empty());
+    EXPECT_TRUE(defines("view_tools.glsl").empty());
     std::ifstream f(std::string(GBL_SOURCE_DIR) + "/shaders/view.frag");
     std::stringstream ss;
     ss << f.rdbuf();

@@ -98,7 +98,13 @@ void samplePixel(Editor& editor) {
     ui::PixelInspectorState& inspector = editor.state.inspector;
     if (inspector.pixel && inspector.pixel->x < renderer.width() && inspector.pixel->y < renderer.height()) {
         inspector.sample = renderer.samplePixel(inspector.pixel->x, inspector.pixel->y, editor.state.camera);
-        inspector.breakdown = ui::breakDownPixel(*inspector.sample, editor.drawn, editor.state.camera, editor.state.pipeline);
+        ui::PixelInFrame where{*inspector.pixel, {renderer.width(), renderer.height()}, std::nullopt};
+        // The tile list depends on every pixel of the tile: one depth read back, tiled mode only.
+        if (editor.state.pipeline.mode == LightingMode::Tiled)
+            where.tileBounds = ui::tileDepthBounds(renderer.readAttachment(Attachment::Depth), *inspector.pixel,
+                                                   editor.state.camera.nearPlane, editor.state.camera.farPlane);
+        inspector.breakdown =
+            ui::breakDownPixel(*inspector.sample, editor.drawn, editor.state.camera, editor.state.pipeline, where);
         inspector.breakdownNote = inspector.breakdown ? "" : "background: no surface, no lights";
     } else {
         inspector.sample.reset();

@@ -9,9 +9,11 @@ namespace gbl {
 // Values match NORMALS_* in shaders/view_constants.glsl (shader_constants_test checks them).
 enum class NormalDisplay { Biased = 0, Absolute = 1 };
 
-// Viewer tools (issue 15). Values match COLORMAP_* and OVERLAY_* in shaders/view_tools.glsl; kept
-// here until they join the shared constant table.
+// Viewer tools (issue 15). Values match COLORMAP_* and OVERLAY_* in shaders/view_constants.glsl
+// (shader_constants_test checks them).
 enum class Colormap { Grey = 0, Turbo = 1, Viridis = 2 };
+// In enum order; COLORMAP_ + the upper-cased name in the shader.
+inline constexpr std::array<std::string_view, 3> kColormapNames{"grey", "turbo", "viridis"};
 inline constexpr unsigned kOverlayNaN = 1u;       // magenta where a shown channel is NaN
 inline constexpr unsigned kOverlayInf = 2u;       // green where a shown channel is +-Inf
 inline constexpr unsigned kOverlayNegative = 4u;  // cyan where a shown channel is below 0

@@ -11,7 +11,7 @@
 
 namespace gbl::ui {
 
-inline constexpr std::string_view kColormapNames[] = {"grey", "turbo", "viridis"};
+using gbl::kColormapNames;
 
 // Colour of t (clamped to 0..1) under the map, linear RGB 0..1.
 glm::vec3 colormap(Colormap map, float t);

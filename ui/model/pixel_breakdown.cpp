@@ -8,7 +8,8 @@
 namespace gbl::ui {
 
 std::optional<PixelBreakdown> breakDownPixel(PixelSample const& sample, std::span<PointLight const> lights,
-                                             Camera const& camera, PipelineSettings const& settings) {
+                                             Camera const& camera, PipelineSettings const& settings,
+                                             std::optional<PixelInFrame> const& where) {
     if (!sample.covered) return std::nullopt;
     ShadingInputs in;
     // The stored values, exactly as the lighting pass reads them from the G-buffer.
@@ -26,6 +27,8 @@ std::optional<PixelBreakdown> breakDownPixel(PixelSample const& sample, std::spa
         auto lum = [](glm::vec3 v) { return v.r + v.g + v.b; };
         return lum(x.total()) > lum(y.total());
     });
+    if (where)
+        b.verdicts = explainPixel({sample, where->pixel, where->frameSize, camera, settings, where->tileBounds}, lights);
     return b;
 }
 

@@ -3,6 +3,7 @@
 
 #include "core/frame_types.h"
 #include "core/shading_cpu.h"
+#include "model/why_value.h"
 
 #include <glm/glm.hpp>
 
@@ -18,6 +19,9 @@ struct PixelBreakdown {
     std::vector<gbl::LightContribution> lights;  // only lights that reach the pixel, brightest first
     glm::vec3 total{0.0f};                  // ambient + sum of the lights
     int lightsTested = 0;
+    // Every light, in list order: did the current mode evaluate it here, why, what it added
+    // (model/why_value.h). Empty when the breakdown was made without the frame's geometry.
+    std::vector<LightVerdict> verdicts;
 };
 
 struct PixelInspectorState {
@@ -28,6 +32,7 @@ struct PixelInspectorState {
     std::optional<PixelBreakdown> breakdown;
     std::string breakdownNote;          // why there is no breakdown, when there is none
     int selectLight = -1;               // a light row was clicked: the loop selects it
+    bool everyLight = false;            // list every light, not only those within reach
 };
 
 }  // namespace gbl::ui

@@ -90,4 +90,23 @@ inline float checkItemWidth(char const* label) {
     return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
 }
 
+// Key presses that read the same on ImGui 1.86 (keys by GLFW code) and 1.87+ (named keys).
+inline bool letterPressed(char upper) {
+#if IMGUI_VERSION_NUM >= 18700
+    return ImGui::IsKeyPressed(ImGuiKey(int(ImGuiKey_A) + (upper - 'A')));
+#else
+    return ImGui::IsKeyPressed(int(upper));  // GLFW key codes of letters are their capitals
+#endif
+}
+
+// An arrow key: dx or dy is -1 or +1 (the other 0); y grows downwards, as on screen.
+inline bool arrowPressed(int dx, int dy) {
+    ImGuiKey const key = dx < 0 ? ImGuiKey_LeftArrow : dx > 0 ? ImGuiKey_RightArrow : dy < 0 ? ImGuiKey_UpArrow : ImGuiKey_DownArrow;
+#if IMGUI_VERSION_NUM >= 18700
+    return ImGui::IsKeyPressed(key);
+#else
+    return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key));
+#endif
+}
+
 }  // namespace gbl::ui

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 namespace gbl::ui {
 
@@ -64,32 +65,63 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
         } else {
             PixelBreakdown const& b = *state.breakdown;
             ImGui::Text("%d of %d lights reach it", int(b.lights.size()), b.lightsTested);
+            if (!b.verdicts.empty()) {
+                ImGui::SameLine();
+                ImGui::Checkbox("every light", &state.everyLight);
+            }
+            // Rows: the verdicts (every light, why it was or was not evaluated) when present,
+            // brightest first; otherwise the lights that reach the pixel.
+            std::vector<int> rows;
+            std::vector<int> contributionOf(b.verdicts.size(), -1);
+            for (std::size_t i = 0; i < b.lights.size(); ++i)
+                if (std::size_t(b.lights[i].lightIndex) < contributionOf.size()) contributionOf[std::size_t(b.lights[i].lightIndex)] = int(i);
+            if (b.verdicts.empty()) {
+                for (std::size_t i = 0; i < b.lights.size(); ++i) rows.push_back(int(i));
+            } else {
+                for (std::size_t i = 0; i < b.verdicts.size(); ++i)
+                    if (state.everyLight || b.verdicts[i].withinRadius) rows.push_back(int(i));
+                auto lum = [&](int i) { glm::vec3 a = b.verdicts[std::size_t(i)].added; return a.r + a.g + a.b; };
+                std::stable_sort(rows.begin(), rows.end(), [&](int x, int y) { return lum(x) > lum(y); });
+            }
             // Fixed columns with horizontal scrolling: six numbers per light never fit a side column.
             ImGuiTableFlags const flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX |
                                           ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
-            float const height = std::max(ImGui::GetContentRegionAvail().y - ImGui::GetTextLineHeightWithSpacing() * 3.2f, 60.0f);
-            if (ImGui::BeginTable("lights", 5, flags, ImVec2(0, height))) {
+            float const height = std::max(ImGui::GetContentRegionAvail().y - ImGui::GetTextLineHeightWithSpacing() * (b.verdicts.empty() ? 4.2f : 5.4f), 60.0f);
+            if (ImGui::BeginTable("lights", 8, flags, ImVec2(0, height))) {
                 ImGui::TableSetupScrollFreeze(0, 1);
-                for (char const* c : {"light", "dist", "atten", "diffuse", "specular"}) ImGui::TableSetupColumn(c);
+                for (char const* c : {"light", "evaluated?", "added", "dist", "atten", "diffuse", "specular", "why"}) ImGui::TableSetupColumn(c);
                 ImGui::TableHeadersRow();
                 ImGuiListClipper clipper;
-                clipper.Begin(int(b.lights.size()));
+                clipper.Begin(int(rows.size()));
                 while (clipper.Step()) {
-                    for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
-                        gbl::LightContribution const& c = b.lights[std::size_t(i)];
+                    for (int r = clipper.DisplayStart; r < clipper.DisplayEnd; ++r) {
+                        int const row = rows[std::size_t(r)];
+                        LightVerdict const* v = b.verdicts.empty() ? nullptr : &b.verdicts[std::size_t(row)];
+                        int const ci = v ? contributionOf[std::size_t(row)] : row;
+                        gbl::LightContribution const* c = ci >= 0 ? &b.lights[std::size_t(ci)] : nullptr;
+                        int const index = v ? v->lightIndex : c->lightIndex;
                         ImGui::TableNextRow();
                         ImGui::TableNextColumn();
                         char label[16];
-                        std::snprintf(label, sizeof label, "%d", c.lightIndex);
-                        if (ImGui::Selectable(label, false, ImGuiSelectableFlags_SpanAllColumns)) state.selectLight = c.lightIndex;
+                        std::snprintf(label, sizeof label, "%d", index);
+                        if (ImGui::Selectable(label, false, ImGuiSelectableFlags_SpanAllColumns)) state.selectLight = index;
                         ImGui::TableNextColumn();
-                        ImGui::Text("%.3f", c.distance);
+                        if (!v) ImGui::TextDisabled("-");
+                        else if (v->evaluations > 1) ImGui::Text("yes x%d", v->evaluations);
+                        else ImGui::TextUnformatted(v->evaluated ? "yes" : "no");
                         ImGui::TableNextColumn();
-                        ImGui::Text("%.4f", c.attenuation);
+                        glm::vec3 const added = v ? v->added : c->total();
+                        ImGui::Text("%.3f %.3f %.3f", added.r, added.g, added.b);
                         ImGui::TableNextColumn();
-                        ImGui::Text("%.3f %.3f %.3f", c.diffuse.r, c.diffuse.g, c.diffuse.b);
+                        if (c) ImGui::Text("%.3f", c->distance);
                         ImGui::TableNextColumn();
-                        ImGui::Text("%.3f %.3f %.3f", c.specular.r, c.specular.g, c.specular.b);
+                        if (c) ImGui::Text("%.4f", c->attenuation);
+                        ImGui::TableNextColumn();
+                        if (c) ImGui::Text("%.3f %.3f %.3f", c->diffuse.r, c->diffuse.g, c->diffuse.b);
+                        ImGui::TableNextColumn();
+                        if (c) ImGui::Text("%.3f %.3f %.3f", c->specular.r, c->specular.g, c->specular.b);
+                        ImGui::TableNextColumn();
+                        if (v) ImGui::TextUnformatted(v->why.c_str());
                     }
                 }
                 ImGui::EndTable();
@@ -98,6 +130,12 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
             glm::vec3 const stored = state.sample ? glm::vec3(state.sample->lighting) : glm::vec3(0.0f);
             ImGui::Text("sum     %.4f %.4f %.4f", b.total.r, b.total.g, b.total.b);
             ImGui::Text("stored  %.4f %.4f %.4f", stored.r, stored.g, stored.b);
+            if (!b.verdicts.empty()) {
+                // What this mode should have stored: ambient plus what each evaluated light added.
+                glm::vec3 evaluated = b.ambient;
+                for (LightVerdict const& v : b.verdicts) evaluated += v.added;
+                ImGui::Text("by mode %.4f %.4f %.4f", evaluated.r, evaluated.g, evaluated.b);
+            }
         }
     }
     ImGui::End();

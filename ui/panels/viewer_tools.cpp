@@ -2,28 +2,12 @@
 #include "panels/viewer_tools.h"
 
 #include "model/colormap.h"
+#include "panels/gui_compat.h"
 
 #include <algorithm>
 #include <cstdio>
 
 namespace gbl::ui {
-
-bool letterPressed(char upper) {
-#if IMGUI_VERSION_NUM >= 18700
-    return ImGui::IsKeyPressed(ImGuiKey(int(ImGuiKey_A) + (upper - 'A')));
-#else
-    return ImGui::IsKeyPressed(int(upper));  // GLFW key codes of letters are their capitals
-#endif
-}
-
-bool arrowPressed(int dx, int dy) {
-    ImGuiKey const key = dx < 0 ? ImGuiKey_LeftArrow : dx > 0 ? ImGuiKey_RightArrow : dy < 0 ? ImGuiKey_UpArrow : ImGuiKey_DownArrow;
-#if IMGUI_VERSION_NUM >= 18700
-    return ImGui::IsKeyPressed(key);
-#else
-    return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key));
-#endif
-}
 
 void viewerHeaderCounts(ViewerState const& v, ViewerData const& d) {
     if (d.frame < 0 || v.overlays == 0) return;

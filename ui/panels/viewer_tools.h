@@ -26,9 +26,4 @@ void drawViewerMagnifier(GBufferPanelState& panel);
 // Arrow keys step the picked texel; Ctrl+G opens go-to-pixel. Call inside the G-buffer window.
 void viewerKeys(GBufferPanelState& panel);
 
-// Key presses that read the same on ImGui 1.86 (keys by GLFW code) and 1.87+ (named keys).
-// Belongs in gui_compat.h; kept here while that file is being changed elsewhere.
-bool letterPressed(char upper);
-bool arrowPressed(int dx, int dy);
-
 }  // namespace gbl::ui

@@ -1,0 +1,188 @@
+// "Why this value": each mode's per-light verdict at one pixel, on hand-built frames.
+#include "model/pixel_breakdown.h"
+#include "model/why_value.h"
+
+#include "core/depth.h"
+#include "core/light_math.h"
+#include "core/shading_cpu.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace gbl;
+using namespace gbl::ui;
+
+namespace {
+
+// Camera at the origin looking down -Z at a wall facing it; the pixel sees (0, 0, -10).
+struct Frame {
+    Camera camera;
+    glm::ivec2 size{64, 64};
+    glm::ivec2 pixel{32, 32};
+    PixelSample sample;
+    Frame() {
+        camera.position = glm::vec3(0.0f);
+        camera.yawDegrees = -90.0f;
+        camera.pitchDegrees = 0.0f;
+        sample.covered = true;
+        sample.position = glm::vec4(0.0f, 0.0f, -10.0f, 1.0f);
+        sample.normal = glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);
+        sample.albedoSpec = glm::vec4(0.8f, 0.8f, 0.8f, 0.5f);
+        glm::vec4 const clip = camera.projection(1.0f) * camera.view() * sample.position;
+        sample.depth = clip.z / clip.w * 0.5f + 0.5f;
+    }
+    WhyValueInput input(LightingMode mode, CullMode cull = CullMode::Back) const {
+        WhyValueInput in;
+        in.sample = sample;
+        in.pixel = pixel;
+        in.frameSize = size;
+        in.camera = camera;
+        in.settings.mode = mode;
+        in.settings.cull = cull;
+        return in;
+    }
+    glm::vec3 shaded(PointLight const& l) const {
+        ShadingInputs s;
+        s.position = glm::vec3(sample.position);
+        s.normal = glm::vec3(sample.normal);
+        s.albedo = glm::vec3(sample.albedoSpec);
+        s.specular = sample.albedoSpec.a;
+        s.viewPosition = camera.position;
+        return shadeLightCpu(l, s).total();
+    }
+};
+
+PointLight light(glm::vec3 p, float kl = 0.7f, float kq = 1.8f) {
+    PointLight l;
+    l.position = p;
+    l.kl = kl;
+    l.kq = kq;
+    return l;
+}
+
+bool startsWith(std::string const& s, std::string const& prefix) { return s.rfind(prefix, 0) == 0; }
+
+}  // namespace
+
+TEST(WhyValue, CameraInsideTheVolumeIsLostWithBackFacesCulled) {
+    Frame const f;
+    // Radius about 15.8 around (0, 0, -2): holds both the camera and the surface.
+    PointLight const big = light({0.0f, 0.0f, -2.0f}, 0.0f, 0.2f);
+    ASSERT_GT(lightRadius(big).radius, 12.0f);
+    PointLight const lights[] = {big};
+    auto v = explainPixel(f.input(LightingMode::Volumes, CullMode::Back), lights);
+    ASSERT_EQ(v.size(), 1u);
+    EXPECT_TRUE(v[0].withinRadius);
+    EXPECT_FALSE(v[0].evaluated);
+    EXPECT_TRUE(startsWith(v[0].why, "not evaluated: camera inside the volume, back faces culled")) << v[0].why;
+    EXPECT_EQ(v[0].added, glm::vec3(0.0f));
+
+    // Front faces culled: the back face behind the wall is drawn, the light is shaded once.
+    v = explainPixel(f.input(LightingMode::Volumes, CullMode::Front), lights);
+    EXPECT_TRUE(v[0].evaluated);
+    EXPECT_EQ(v[0].evaluations, 1);
+    glm::vec3 const expected = f.shaded(big);
+    EXPECT_GT(expected.r, 0.01f);
+    EXPECT_NEAR(v[0].added.r, expected.r, 1e-6f);
+
+    // No culling: only the back face is in front of the eye, so once; stencil and flip keep it.
+    EXPECT_EQ(explainPixel(f.input(LightingMode::Volumes, CullMode::None), lights)[0].evaluations, 1);
+    EXPECT_EQ(explainPixel(f.input(LightingMode::Volumes, CullMode::Stencil), lights)[0].evaluations, 1);
+    v = explainPixel(f.input(LightingMode::Volumes, CullMode::Flip), lights);
+    EXPECT_EQ(v[0].evaluations, 1);
+    EXPECT_TRUE(startsWith(v[0].why, "flip, camera may be inside")) << v[0].why;
+}
+
+TEST(WhyValue, LightOutsideTheRadius) {
+    Frame const f;
+    PointLight const far = light({20.0f, 0.0f, -10.0f});  // radius about 5.1, 20 units away
+    PointLight const lights[] = {far};
+    // The quad pass tests it and adds nothing.
+    auto v = explainPixel(f.input(LightingMode::Quad), lights);
+    ASSERT_EQ(v.size(), 1u);
+    EXPECT_FALSE(v[0].withinRadius);
+    EXPECT_TRUE(v[0].evaluated);
+    EXPECT_EQ(v[0].added, glm::vec3(0.0f));
+    EXPECT_NE(v[0].why.find("outside its radius"), std::string::npos) << v[0].why;
+    // Its volume does not cover the pixel at all.
+    v = explainPixel(f.input(LightingMode::Volumes, CullMode::Back), lights);
+    EXPECT_FALSE(v[0].evaluated);
+    EXPECT_EQ(v[0].why, "not evaluated: pixel outside the volume's footprint");
+}
+
+TEST(WhyValue, VolumeBehindTheSurface) {
+    Frame const f;
+    // Radius about 5.1 around (0, 0, -16): the whole volume is behind the wall at depth 10.
+    PointLight const behind = light({0.0f, 0.0f, -16.0f});
+    PointLight const lights[] = {behind};
+    auto v = explainPixel(f.input(LightingMode::Volumes, CullMode::Back), lights);
+    EXPECT_FALSE(v[0].evaluated);
+    EXPECT_TRUE(startsWith(v[0].why, "not evaluated: surface in front of the volume")) << v[0].why;
+    // Culling front faces shades it anyway (its back face is behind the wall), for nothing.
+    v = explainPixel(f.input(LightingMode::Volumes, CullMode::Front), lights);
+    EXPECT_TRUE(v[0].evaluated);
+    EXPECT_FALSE(v[0].withinRadius);
+    EXPECT_EQ(v[0].added, glm::vec3(0.0f));
+    // The stencil test keeps only surfaces inside the volume.
+    v = explainPixel(f.input(LightingMode::Volumes, CullMode::Stencil), lights);
+    EXPECT_FALSE(v[0].evaluated);
+    EXPECT_TRUE(startsWith(v[0].why, "not evaluated: stencil, surface in front")) << v[0].why;
+    // None: both faces, no depth test, counted twice.
+    EXPECT_EQ(explainPixel(f.input(LightingMode::Volumes, CullMode::None), lights)[0].evaluations, 2);
+}
+
+TEST(WhyValue, TiledUsesThePixelsTileList) {
+    Frame const f;
+    // Pixel (32, 32) of 64x64 (top-left origin) is in tile (2, 1): NDC x in [0, 0.5], y in [-0.5, 0].
+    PointLight const inTile = light({0.5f, -0.5f, -9.5f});
+    PointLight const aside = light({-12.0f, 8.0f, -10.0f});  // 12 units left of the tile's frustum
+    PointLight const deeper = light({1.0f, -1.0f, -30.0f});  // in the tile's frustum, past the wall
+    PointLight const lights[] = {inTile, aside, deeper};
+    WhyValueInput in = f.input(LightingMode::Tiled);
+    auto v = explainPixel(in, lights);
+    ASSERT_EQ(v.size(), 3u);
+    EXPECT_TRUE(v[0].evaluated);
+    EXPECT_TRUE(v[0].withinRadius);
+    EXPECT_NEAR(v[0].added.g, f.shaded(inTile).g, 1e-6f);
+    EXPECT_GT(v[0].added.g, 0.0f);
+    EXPECT_FALSE(v[1].evaluated);
+    EXPECT_EQ(v[1].why, "not evaluated: not in the tile's light list");
+    EXPECT_FALSE(v[2].evaluated);  // the tile's depth bounds end at the wall
+    // A tile whose geometry reaches depth 40 lists the deeper light too (it adds nothing here).
+    in.tileBounds = TileDepthBounds{10.0f, 40.0f};
+    v = explainPixel(in, lights);
+    EXPECT_TRUE(v[2].evaluated);
+    EXPECT_EQ(v[2].added, glm::vec3(0.0f));
+    EXPECT_FALSE(v[1].evaluated);
+}
+
+TEST(WhyValue, TileDepthBoundsSkipBackgroundAndOtherTiles) {
+    Camera c;
+    FloatImage depth{32, 32, 1, std::vector<float>(32 * 32, 1.0f)};
+    // Top-left pixel (0, 0) is in the GL tile (0, 1): image rows 0..15, columns 0..15.
+    depth.pixels[3 * 32 + 4] = 0.5f;
+    depth.pixels[10 * 32 + 15] = 0.9f;
+    depth.pixels[20 * 32 + 4] = 0.1f;  // row 20: the tile below, left out
+    auto b = tileDepthBounds(depth, {0, 0}, c.nearPlane, c.farPlane);
+    ASSERT_TRUE(b);
+    EXPECT_FLOAT_EQ(b->minDepth, linearDepth(0.5f, c.nearPlane, c.farPlane));
+    EXPECT_FLOAT_EQ(b->maxDepth, linearDepth(0.9f, c.nearPlane, c.farPlane));
+    EXPECT_FALSE(tileDepthBounds(depth, {20, 0}, c.nearPlane, c.farPlane));  // tile (1, 1): background only
+}
+
+TEST(WhyValue, BreakdownCarriesVerdictsWhoseSumIsTheTotal) {
+    Frame const f;
+    PointLight const lights[] = {light({0.5f, -0.5f, -9.5f}), light({20.0f, 0.0f, -10.0f}), light({-1.0f, 1.0f, -8.0f})};
+    PipelineSettings settings;  // quad: every light tested
+    auto b = breakDownPixel(f.sample, lights, f.camera, settings, PixelInFrame{f.pixel, f.size, std::nullopt});
+    ASSERT_TRUE(b);
+    ASSERT_EQ(b->verdicts.size(), 3u);
+    glm::vec3 sum = b->ambient;
+    for (LightVerdict const& v : b->verdicts) sum += v.added;
+    EXPECT_NEAR(sum.r, b->total.r, 1e-5f);
+    EXPECT_NEAR(sum.b, b->total.b, 1e-5f);
+    EXPECT_EQ(int(b->lights.size()), 2);  // the far light reaches nothing
+    // Without the frame, no verdicts (the old call stays as it was).
+    EXPECT_TRUE(breakDownPixel(f.sample, lights, f.camera, settings)->verdicts.empty());
+}

@@ -1,0 +1,196 @@
+// "Why this value": each mode's light test replayed on the CPU for one pixel.
+#include "model/why_value.h"
+
+#include "core/depth.h"
+#include "core/light_math.h"
+#include "core/light_volume_mesh.h"
+#include "core/shading_cpu.h"
+#include "core/tile_math.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gbl::ui {
+
+namespace {
+
+// The light volume is a polyhedron between the spheres of radius r and r * enclosingScale; the
+// reasoning below takes the enclosing sphere for it (a pixel ray grazing the sphere between two
+// vertices may miss the real mesh) and compares distances along the pixel's ray where the GPU
+// compares quantised depths (ties at the surface can go either way).
+struct VolumeHit {
+    bool cameraInside = false;
+    bool hits = false;   // the pixel's ray crosses the sphere
+    float t0 = 0.0f;     // entry (front face), may be behind the eye
+    float t1 = 0.0f;     // exit (back face)
+};
+
+VolumeHit hitVolume(glm::vec3 eye, glm::vec3 dir, glm::vec3 centre, float radius) {
+    VolumeHit h;
+    glm::vec3 const oc = eye - centre;
+    float const b = glm::dot(oc, dir), c = glm::dot(oc, oc) - radius * radius;
+    h.cameraInside = c < 0.0f;
+    float const disc = b * b - c;
+    if (disc < 0.0f) return h;
+    float const s = std::sqrt(disc);
+    h.hits = true;
+    h.t0 = -b - s;
+    h.t1 = -b + s;
+    return h;
+}
+
+// The range of ray distances between the clip planes, for a ray whose depth grows by `k` per unit.
+struct ClipRange {
+    float tNear = 0.0f, tFar = 0.0f;
+    bool contains(float t) const { return t >= tNear && t <= tFar; }
+};
+
+struct Faces {
+    int count = 0;
+    std::string why;
+};
+
+// Cull back faces, depth test LESS: the front face must lie between the near plane and the surface.
+Faces frontFacesPass(VolumeHit const& h, ClipRange const& clip, float tp) {
+    if (h.cameraInside) return {0, "not evaluated: camera inside the volume, back faces culled"};
+    if (h.t0 < clip.tNear) return {0, "not evaluated: front faces clipped by the near plane, back faces culled"};
+    if (h.t0 >= tp) return {0, "not evaluated: surface in front of the volume (depth test)"};
+    return {1, "front face in front of the surface"};
+}
+
+// Cull front faces, depth test GEQUAL: the back face must lie behind the surface, before the far plane.
+Faces backFacesPass(VolumeHit const& h, ClipRange const& clip, float tp) {
+    if (h.t1 < tp) return {0, "not evaluated: surface behind the volume (outside it), front faces culled"};
+    if (h.t1 > clip.tFar) return {0, "not evaluated: back face past the far plane"};
+    if (h.t1 < clip.tNear) return {0, "not evaluated: volume behind the near plane"};
+    return {1, "back face behind the surface"};
+}
+
+Faces volumePass(PointLight const& light, float radius, WhyValueInput const& in, glm::vec3 dir, float tp,
+                 ClipRange const& clip) {
+    static float const scale = enclosingScale(makeLightVolumeSphere());
+    if (radius <= 0.0f) return {0, "not evaluated: no volume (radius 0)"};
+    float const enclosing = radius * scale;
+    VolumeHit const h = hitVolume(in.camera.position, dir, light.position, enclosing);
+    if (!h.hits) return {0, "not evaluated: pixel outside the volume's footprint"};
+    switch (in.settings.cull) {
+    case CullMode::Back: return frontFacesPass(h, clip, tp);
+    case CullMode::Front: return backFacesPass(h, clip, tp);
+    case CullMode::None: {
+        int const n = int(!h.cameraInside && clip.contains(h.t0)) + int(clip.contains(h.t1));
+        return {n, n == 2   ? "both faces shaded (no culling, no depth test): counted twice"
+                   : n == 1 ? "one face shaded (no culling, no depth test)"
+                            : "not evaluated: both faces clipped"};
+    }
+    case CullMode::Flip: {
+        float const aspect = float(in.frameSize.x) / float(std::max(in.frameSize.y, 1));
+        float const corner = nearPlaneCornerDistance(glm::radians(in.camera.fovYDegrees), aspect, in.camera.nearPlane);
+        bool const inside = volumeMayContainCamera(in.camera.position, light.position, enclosing, corner);
+        Faces f = inside ? backFacesPass(h, clip, tp) : frontFacesPass(h, clip, tp);
+        f.why = (inside ? "flip, camera may be inside: " : "flip, camera outside: ") + f.why;
+        return f;
+    }
+    case CullMode::Stencil: {
+        // Mark: +1 where the back face fails the depth test (behind the surface), -1 where the
+        // front face does; shading keeps marks of exactly 1, once per pixel.
+        bool const backMark = clip.contains(h.t1) && h.t1 >= tp;
+        bool const frontMark = !h.cameraInside && clip.contains(h.t0) && h.t0 >= tp;
+        if (backMark && !frontMark) return {1, "stencil: surface inside the volume"};
+        if (frontMark) return {0, "not evaluated: stencil, surface in front of the volume"};
+        if (h.t1 > clip.tFar) return {0, "not evaluated: stencil, back face past the far plane"};
+        return {0, "not evaluated: stencil, surface behind the volume (outside it)"};
+    }
+    }
+    return {0, "?"};
+}
+
+}  // namespace
+
+std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointLight const> lights) {
+    std::vector<LightVerdict> out;
+    if (!in.sample.covered || in.frameSize.x <= 0 || in.frameSize.y <= 0) return out;
+    ShadingInputs s;
+    s.position = glm::vec3(in.sample.position);
+    s.normal = glm::vec3(in.sample.normal);
+    s.albedo = glm::vec3(in.sample.albedoSpec);
+    s.specular = in.sample.albedoSpec.a;
+    s.viewPosition = in.camera.position;
+    s.shininess = in.settings.shininess;
+
+    glm::vec3 const toSurface = s.position - in.camera.position;
+    float const tp = glm::length(toSurface);
+    glm::vec3 const dir = tp > 0.0f ? toSurface / tp : in.camera.forward();
+    float const k = std::max(glm::dot(dir, in.camera.forward()), 1e-6f);
+    ClipRange const clip{in.camera.nearPlane / k, in.camera.farPlane / k};
+
+    // The pixel's tile, as the compute pass numbers it (bottom-left origin).
+    glm::mat4 const view = in.camera.view();
+    float const aspect = float(in.frameSize.x) / float(in.frameSize.y);
+    TileGrid const grid = tileGrid(in.frameSize.x, in.frameSize.y);
+    int const glY = in.frameSize.y - 1 - in.pixel.y;
+    PixelRect const rect = tilePixelRect(grid, in.frameSize.x, in.frameSize.y, in.pixel.x / grid.tileSize, glY / grid.tileSize);
+    TileFrustum const tile = tileFrustum(glm::inverse(in.camera.projection(aspect)), in.frameSize.x, in.frameSize.y, rect);
+    float const ownDepth = linearDepth(in.sample.depth, in.camera.nearPlane, in.camera.farPlane);
+    TileDepthBounds const bounds = in.tileBounds.value_or(TileDepthBounds{ownDepth, ownDepth});
+
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        PointLight const& light = lights[i];
+        LightVerdict v;
+        v.lightIndex = int(i);
+        float const radius = lightRadius(light).radius;
+        v.withinRadius = glm::distance(light.position, s.position) < radius;
+        switch (in.settings.mode) {
+        case LightingMode::Quad:
+            v.evaluations = 1;
+            v.why = "quad: every light is tested at every pixel";
+            break;
+        case LightingMode::Forward:
+            v.evaluations = 1;
+            v.why = "forward: every light is tested at every fragment";
+            break;
+        case LightingMode::Tiled: {
+            glm::vec3 const centreView = glm::vec3(view * glm::vec4(light.position, 1.0f));
+            bool const listed = radius > 0.0f && sphereTouchesTile(tile, bounds.minDepth, bounds.maxDepth, centreView, radius);
+            v.evaluations = listed ? 1 : 0;
+            v.why = listed ? "in the tile's light list" : "not evaluated: not in the tile's light list";
+            break;
+        }
+        case LightingMode::Volumes: {
+            Faces const f = volumePass(light, radius, in, dir, tp, clip);
+            v.evaluations = f.count;
+            v.why = f.why;
+            break;
+        }
+        }
+        v.evaluated = v.evaluations > 0;
+        // The shaders skip a light beyond its radius (its windowed attenuation is 0 there anyway).
+        if (v.evaluated && v.withinRadius) v.added = shadeLightCpu(light, s).total() * float(v.evaluations);
+        if (v.evaluated && !v.withinRadius) v.why += "; outside its radius, adds nothing";
+        if (!v.evaluated && v.withinRadius) v.why += " (it would have reached the pixel)";
+        out.push_back(std::move(v));
+    }
+    return out;
+}
+
+std::optional<TileDepthBounds> tileDepthBounds(FloatImage const& depth, glm::ivec2 pixel, float nearPlane,
+                                               float farPlane) {
+    if (depth.width <= 0 || depth.height <= 0 || depth.channels < 1) return std::nullopt;
+    TileGrid const grid = tileGrid(depth.width, depth.height);
+    int const glY = depth.height - 1 - pixel.y;
+    PixelRect const r = tilePixelRect(grid, depth.width, depth.height, pixel.x / grid.tileSize, glY / grid.tileSize);
+    std::optional<TileDepthBounds> b;
+    for (int y = r.y0; y < r.y1; ++y) {
+        int const row = depth.height - 1 - y;  // the image's rows run top to bottom
+        for (int x = r.x0; x < r.x1; ++x) {
+            float const d = depth.at(x, row, 0);
+            if (!(d < 1.0f)) continue;  // background
+            float const v = linearDepth(d, nearPlane, farPlane);
+            if (!b) b = TileDepthBounds{v, v};
+            b->minDepth = std::min(b->minDepth, v);
+            b->maxDepth = std::max(b->maxDepth, v);
+        }
+    }
+    return b;
+}
+
+}  // namespace gbl::ui
