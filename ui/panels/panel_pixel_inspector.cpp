@@ -69,6 +69,17 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
                 ImGui::SameLine();
                 ImGui::Checkbox("every light", &state.everyLight);
             }
+            // Totals first, so the table below takes whatever height is left and nothing is cut off.
+            ImGui::Text("ambient %.4f %.4f %.4f", b.ambient.r, b.ambient.g, b.ambient.b);
+            glm::vec3 const stored = state.sample ? glm::vec3(state.sample->lighting) : glm::vec3(0.0f);
+            ImGui::Text("sum     %.4f %.4f %.4f", b.total.r, b.total.g, b.total.b);
+            ImGui::Text("stored  %.4f %.4f %.4f", stored.r, stored.g, stored.b);
+            if (!b.verdicts.empty()) {
+                // What this mode should have stored: ambient plus what each evaluated light added.
+                glm::vec3 evaluated = b.ambient;
+                for (LightVerdict const& v : b.verdicts) evaluated += v.added;
+                ImGui::Text("by mode %.4f %.4f %.4f", evaluated.r, evaluated.g, evaluated.b);
+            }
             // Rows: the verdicts (every light, why it was or was not evaluated) when present,
             // brightest first; otherwise the lights that reach the pixel.
             std::vector<int> rows;
@@ -86,7 +97,7 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
             // Fixed columns with horizontal scrolling: six numbers per light never fit a side column.
             ImGuiTableFlags const flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX |
                                           ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
-            float const height = std::max(ImGui::GetContentRegionAvail().y - ImGui::GetTextLineHeightWithSpacing() * (b.verdicts.empty() ? 4.2f : 5.4f), 60.0f);
+            float const height = std::max(ImGui::GetContentRegionAvail().y - ImGui::GetStyle().ItemSpacing.y, 60.0f);
             if (ImGui::BeginTable("lights", 8, flags, ImVec2(0, height))) {
                 ImGui::TableSetupScrollFreeze(0, 1);
                 for (char const* c : {"light", "evaluated?", "added", "dist", "atten", "diffuse", "specular", "why"}) ImGui::TableSetupColumn(c);
@@ -125,16 +136,6 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
                     }
                 }
                 ImGui::EndTable();
-            }
-            ImGui::Text("ambient %.4f %.4f %.4f", b.ambient.r, b.ambient.g, b.ambient.b);
-            glm::vec3 const stored = state.sample ? glm::vec3(state.sample->lighting) : glm::vec3(0.0f);
-            ImGui::Text("sum     %.4f %.4f %.4f", b.total.r, b.total.g, b.total.b);
-            ImGui::Text("stored  %.4f %.4f %.4f", stored.r, stored.g, stored.b);
-            if (!b.verdicts.empty()) {
-                // What this mode should have stored: ambient plus what each evaluated light added.
-                glm::vec3 evaluated = b.ambient;
-                for (LightVerdict const& v : b.verdicts) evaluated += v.added;
-                ImGui::Text("by mode %.4f %.4f %.4f", evaluated.r, evaluated.g, evaluated.b);
             }
         }
     }
