@@ -41,6 +41,9 @@ struct PipelineSettings {
     glm::vec3 ambient{0.03f};
     float exposure = 1.0f;
     float shininess = 32.0f;
+
+    // Every member, floats compared with ==: what undo's change detection wants.
+    bool operator==(PipelineSettings const&) const = default;
 };
 
 // Names used on the command line and in session files, in enum order.

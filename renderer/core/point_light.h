@@ -22,6 +22,11 @@ struct PointLight {
     float kq = 1.8f;         // quadratic attenuation term
     float threshold = kDefaultLightThreshold;
     std::string name;
+
+    // Every member, floats compared with ==: exactly what undo's "did this edit change anything"
+    // asks. NaN, which never equals itself, never reaches a stored light: validateLight() refuses
+    // it for edits (applyLightEdit) and session files, and the glTF loader refuses it as well.
+    bool operator==(PointLight const&) const = default;
 };
 
 }  // namespace gbl

@@ -90,4 +90,26 @@ inline float checkItemWidth(char const* label) {
     return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
 }
 
+// Escape went down this frame (1.87 made ImGuiKey values the keys themselves).
+inline bool escapePressed() {
+#if IMGUI_VERSION_NUM >= 18700
+    return ImGui::IsKeyPressed(ImGuiKey_Escape, false);
+#else
+    return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+#endif
+}
+
+// Marks this frame's press of `button` as the second of a double click. Called after NewFrame,
+// which decides double clicks from frame times; the editor decides them from event times
+// instead (model/input_events.h), so they work at a few frames per second. 1.88+ also counts
+// clicks, and its widgets read the count.
+inline void markDoubleClick(int button) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.MouseDoubleClicked[button] = true;
+#if IMGUI_VERSION_NUM >= 18800
+    io.MouseClickedCount[button] = 2;
+    io.MouseClickedLastCount[button] = 2;
+#endif
+}
+
 }  // namespace gbl::ui

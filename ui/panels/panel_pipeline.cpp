@@ -72,12 +72,13 @@ void drawPipelinePanel(PipelineSettings& settings, GlCaps const& caps) {
             ImGui::PopStyleColor();
         }
 
-        separatorText("Volume cull mode");
+        separatorText("Volume cull mode (volumes mode only)");
+        // Greyed out, never hidden, in the other modes: rows below keep their place whatever the
+        // mode, so a click aimed at a checkbox does not land on another one.
         bool const volumes = settings.mode == LightingMode::Volumes;
         ImGui::BeginDisabled(!volumes);
         radioRow("cull", settings.cull, kCullModeNames, kCullHelp);
         ImGui::EndDisabled();
-        if (!volumes) ImGui::TextDisabled("applies to the volumes mode only");
 
         separatorText("Blit step (depth before forward pass)");
         radioRow("blit", settings.depthCopy, kDepthCopyNames, kBlitHelp);
@@ -93,12 +94,15 @@ void drawPipelinePanel(PipelineSettings& settings, GlCaps const& caps) {
         ImGui::Checkbox("Normal maps", &settings.normalMaps);
 
         separatorText("Shading");
+        // Labels on the right take their own width; the fields get the rest of the column.
+        ImGui::PushItemWidth(-ImGui::CalcTextSize("Shininess").x - ImGui::GetStyle().ItemInnerSpacing.x * 2.0f);
         ImGui::ColorEdit3("Ambient", &settings.ambient.x, ImGuiColorEditFlags_Float);
         ImGui::DragFloat("Shininess", &settings.shininess, 0.5f, 1.0f, 512.0f, "%.1f", ImGuiSliderFlags_AlwaysClamp);
         int tonemap = int(settings.tonemap);
         char const* tonemapItems[] = {kTonemapNames[0].data(), kTonemapNames[1].data(), kTonemapNames[2].data()};
         if (ImGui::Combo("Tonemap", &tonemap, tonemapItems, 3)) settings.tonemap = Tonemap(tonemap);
         ImGui::SliderFloat("Exposure", &settings.exposure, 0.05f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+        ImGui::PopItemWidth();
     }
     ImGui::End();
 }

@@ -19,13 +19,26 @@ float historyMax(std::array<float, StatsState::kHistory> const& values, int coun
 }
 }  // namespace
 
-void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount) {
+void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount, RenderOnChange* render,
+                    std::string const& renderReason) {
     placeWindow(EditorWindow::Stats);
     if (ImGui::Begin(windowName(EditorWindow::Stats), nullptr, editorWindowFlags())) {
         FrameStats const& f = stats.last;
         double const frameMs = stats.costAverage.frameCpuMs;
         ImGui::Text("Frame %.2f ms (%.0f fps)", frameMs, frameMs > 0.0 ? 1000.0 / frameMs : 0.0);
         ImGui::Text("Renderer GPU %.2f ms at %dx%d", f.gpuFrameMs, f.width, f.height);
+        if (render) {
+            // Render on change: an idle editor shows the last frame again instead of re-rendering it.
+            if (render->renderedLastFrame)
+                ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "Last frame: re-rendered (%s)", renderReason.c_str());
+            else
+                ImGui::TextDisabled("Last frame: reused, nothing changed");
+            ImGui::Checkbox("Render every frame", &render->continuous);
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("for timing: run the renderer each frame even when nothing changed (--continuous)");
+            ImGui::SameLine();
+            ImGui::TextDisabled("%ld rendered, %ld reused", render->renders, render->skipped);
+        }
         ImGui::Text("Mode run: %s", enumName(kLightingModeNames, f.modeUsed).data());
         if (!f.fallbackReason.empty()) {
             ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
@@ -40,9 +53,10 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount)
         ImGui::PlotLines("##gpu", stats.gpuFrameMs.data(), stats.count, offset, "renderer GPU ms", 0.0f, top,
                          ImVec2(plotW, 45.0f));
 
-        if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-            ImGui::TableSetupColumn("pass");
-            ImGui::TableSetupColumn("GPU ms");
+        if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) {
+            // The number column is as wide as its widest value; names take the rest.
+            ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthStretch);
+            ImGui::TableSetupColumn("GPU ms", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("GPU ms 000.000").x);
             ImGui::TableHeadersRow();
             for (auto const& p : f.passes) {
                 ImGui::TableNextRow();
