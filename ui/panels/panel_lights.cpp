@@ -156,7 +156,7 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
                 light.threshold > 0.0f ? lightImax(light) / light.threshold : 0.0f);
     ImGui::SameLine();
     ImGui::Checkbox("log", &state.plotLogScale);
-    float const plotH = std::clamp(ImGui::GetContentRegionAvail().y - 4.0f, 100.0f, 240.0f);
+    float const plotH = std::clamp(ImGui::GetContentRegionAvail().y - 4.0f, ImGui::GetFontSize() * 5.0f, ImGui::GetFontSize() * 18.0f);
     drawAttenuationPlot(light, state.plotLogScale, ImVec2(ImGui::GetContentRegionAvail().x, plotH));
 }
 
@@ -193,7 +193,8 @@ void drawLightsPanel(LightsPanelState& state, std::vector<PointLight>& lights, L
             auto const r = addRandomLights(lights, state.randomCount, sceneBounds, state.randomSeed);
             state.message = r.message;
         }
-        ImGui::SameLine();
+        // Wraps in a narrow column instead of cutting the button off.
+        sameLineIfFits(ImGui::CalcTextSize("Clear").x + ImGui::GetStyle().FramePadding.x * 2.0f, false, rowRightEdge());
         ImGui::BeginDisabled(lights.empty());
         if (ImGui::Button("Clear")) {
             lights.clear();
