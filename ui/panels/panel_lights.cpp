@@ -82,7 +82,7 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
         return;
     }
     // Short labels on the right, values fill the rest of the narrow side column.
-    ImGui::PushItemWidth(-ImGui::GetFontSize() * 4.0f);
+    ImGui::PushItemWidth(-(ImGui::CalcTextSize("Position").x + ImGui::GetStyle().ItemInnerSpacing.x));
     // Widgets edit a copy; the copy replaces the light only when validateLight accepts it.
     PointLight edited = lights[std::size_t(state.selected)];
     bool changed = false;

@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 
 namespace gbl::ui {
 
@@ -29,15 +30,20 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
         ImGui::Text("Renderer GPU %.2f ms at %dx%d", f.gpuFrameMs, f.width, f.height);
         if (render) {
             // Render on change: an idle editor shows the last frame again instead of re-rendering it.
-            if (render->renderedLastFrame)
-                ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "Last frame: re-rendered (%s)", renderReason.c_str());
-            else
+            if (render->renderedLastFrame) {
+                ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.4f, 1.0f));
+                ImGui::TextWrapped("Last frame: re-rendered (%s)", renderReason.c_str());
+                ImGui::PopStyleColor();
+            } else {
                 ImGui::TextDisabled("Last frame: reused, nothing changed");
+            }
             ImGui::Checkbox("Render every frame", &render->continuous);
             if (ImGui::IsItemHovered())
                 ImGui::SetTooltip("for timing: run the renderer each frame even when nothing changed (--continuous)");
-            ImGui::SameLine();
-            ImGui::TextDisabled("%ld rendered, %ld reused", render->renders, render->skipped);
+            char counts[64];
+            std::snprintf(counts, sizeof counts, "%ld rendered, %ld reused", render->renders, render->skipped);
+            sameLineIfFits(ImGui::CalcTextSize(counts).x, false, rowRightEdge());
+            ImGui::TextDisabled("%s", counts);
         }
         ImGui::Text("Mode run: %s", enumName(kLightingModeNames, f.modeUsed).data());
         if (!f.fallbackReason.empty()) {
@@ -68,19 +74,22 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
             ImGui::EndTable();
         }
 
-        ImGui::Text("Lights: %d in the list, %d submitted, %d shaded", lightCount, f.lightsSubmitted, f.lightsShaded);
+        ImGui::TextWrapped("Lights: %d in the list, %d submitted, %d shaded", lightCount, f.lightsSubmitted, f.lightsShaded);
         if (f.fragmentInvocations)
-            ImGui::Text("Fragment invocations (lighting): %llu", (unsigned long long)*f.fragmentInvocations);
-        else
-            ImGui::TextDisabled("Fragment invocations: n/a (%s)", caps.pipelineStatisticsUnavailableReason().c_str());
+            ImGui::TextWrapped("Fragment invocations (lighting): %llu", (unsigned long long)*f.fragmentInvocations);
+        else {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+            ImGui::TextWrapped("Fragment invocations: n/a (%s)", caps.pipelineStatisticsUnavailableReason().c_str());
+            ImGui::PopStyleColor();
+        }
         ImGui::Text("GL errors this frame: %llu", (unsigned long long)f.glErrors);
 
         separatorText("Editor cost");
         EditorCost const& c = stats.costAverage;
         double const editor = c.uiCpuMs + c.viewersGpuMs + c.imguiGpuMs;
         ImGui::Text("UI build %.2f ms (CPU)", c.uiCpuMs);
-        ImGui::Text("Viewers %.2f ms, ImGui draw %.2f ms (GPU)", c.viewersGpuMs, c.imguiGpuMs);
-        ImGui::Text("Editor total %.2f ms = %.0f%% of the frame", editor, frameMs > 0.0 ? 100.0 * editor / frameMs : 0.0);
+        ImGui::TextWrapped("Viewers %.2f ms, ImGui draw %.2f ms (GPU)", c.viewersGpuMs, c.imguiGpuMs);
+        ImGui::TextWrapped("Editor total %.2f ms = %.0f%% of the frame", editor, frameMs > 0.0 ? 100.0 * editor / frameMs : 0.0);
     }
     ImGui::End();
 }
