@@ -14,6 +14,7 @@ struct ViewportState {
     bool hovered = false;
     std::optional<glm::ivec2> hoverPixel;  // renderer pixel under the mouse, origin top-left
     std::optional<glm::ivec2> clickPixel;  // a left click that was not a drag, this frame
+    std::optional<glm::ivec2> doubleClickPixel;  // the second press of a double click, this frame
     glm::vec2 orbitDrag{0.0f};             // this frame's drags, in pixels (see CameraInput)
     glm::vec2 lookDrag{0.0f};
     glm::vec2 panDrag{0.0f};

@@ -53,6 +53,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigne
     state.hovered = false;
     state.hoverPixel.reset();
     state.clickPixel.reset();
+    state.doubleClickPixel.reset();
     state.orbitDrag = state.lookDrag = state.panDrag = glm::vec2(0.0f);
     state.wheel = 0.0f;
     state.frameRequested = false;
@@ -82,8 +83,9 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigne
     ImGui::TextDisabled("(?)");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("left drag: orbit    right drag: look    middle drag: pan    wheel: dolly\n"
-                          "W A S D / Q E: fly (shift: faster)    F: frame the scene\n"
-                          "click a light cube: select it    L: lock the pixel inspector");
+                          "W A S D / Q E: fly (shift: faster)    F: frame the selection    Home: the scene's view\n"
+                          "click a light cube: select it    double-click: select and frame it\n"
+                          "L: lock the pixel inspector    F1: every shortcut");
 
     ImVec2 const avail = ImGui::GetContentRegionAvail();
     ImVec2 const scale = ImGui::GetIO().DisplayFramebufferScale;
@@ -135,6 +137,9 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigne
     if (state.hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
         io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < kClickSlopSq && state.hoverPixel)
         state.clickPixel = state.hoverPixel;
+    // Decided on event times (model/input_events.h), so it works at a few frames per second.
+    if (state.hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && state.hoverPixel)
+        state.doubleClickPixel = state.hoverPixel;
     ImGui::End();
 }
 
