@@ -5,7 +5,7 @@
 #include "core/light_math.h"
 #include "core/pipeline_settings.h"
 #include "core/point_light.h"
-#include "renderer_impl.h"
+#include "renderer.h"
 #include "scene_setup.h"
 #include "session_cli.h"
 
@@ -66,11 +66,7 @@ struct Coverage {
 };
 
 Coverage readCoverage(Renderer& renderer) {
-    RenderTargets const& t = renderer.impl().targets;
-    std::vector<float> rg(std::size_t(t.width) * t.height * 2);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, t.coverageFbo.id());
-    glReadPixels(0, 0, t.width, t.height, GL_RG, GL_FLOAT, rg.data());
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    std::vector<float> const rg = renderer.readAttachment(Attachment::Coverage).pixels;  // x evaluated, y lit
     Coverage c;
     for (std::size_t i = 0; i < rg.size(); i += 2) {
         c.evaluated += std::uint64_t(rg[i]);
@@ -105,9 +101,9 @@ Result runCombination(Renderer& renderer, Camera const& camera, std::span<PointL
                       std::vector<Result> const& done) {
     Result r;
     r.combo = c;
-    if (c.mode == LightingMode::Tiled && !renderer.caps().computeShaders) {
+    if (auto const why = renderer.modeUnavailable(c.mode)) {
         r.status = "unavailable";
-        r.note = renderer.caps().tiledUnavailableReason();
+        r.note = *why;
         return r;
     }
     if (auto const predicted = predictedFrameSeconds(done, c); predicted && *predicted > o.budgetSeconds) {
@@ -150,7 +146,7 @@ Result runCombination(Renderer& renderer, Camera const& camera, std::span<PointL
     }
     r.framesMeasured = int(frame.size());
     // One more frame, untimed, with the heat map: its coverage counts give the lit pixels and
-    // the (light, pixel) pairs (renderer/overlay_pass.cpp). Skipped when over budget.
+    // the (light, pixel) pairs (renderer/passes/coverage.h). Skipped when over budget.
     if (r.framesMeasured > 0 && frameFitsBudget(elapsed(), 2.0 * slowest, o.budgetSeconds)) {
         FrameInput counted = input;
         counted.settings.view = DebugView::Heatmap;

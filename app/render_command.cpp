@@ -118,8 +118,7 @@ int runRender(RenderOptions const& o) {
         return 1;
     }
     Renderer& renderer = *headless->renderer;
-    if (settings.mode == LightingMode::Tiled && !renderer.caps().computeShaders)
-        return badArgument(renderer.caps().tiledUnavailableReason());
+    if (auto const why = renderer.modeUnavailable(settings.mode)) return badArgument(*why);
     if (auto err = renderer.setScene(prepared->scene)) return badArgument(*err);
 
     FrameStats const stats = renderer.render({prepared->camera, prepared->lights, settings, true});

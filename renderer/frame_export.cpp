@@ -2,6 +2,7 @@
 #include "frame_export.h"
 
 #include "image_io.h"
+#include "core/depth.h"
 #include "core/light_math.h"
 
 #include <nlohmann/json.hpp>
@@ -45,10 +46,7 @@ char const* radiusKindName(RadiusKind k) {
 }  // namespace
 
 FloatImage linearDepthImage(FloatImage depth, Camera const& cam) {
-    for (float& z : depth.pixels) {
-        float const ndc = z * 2.0f - 1.0f;
-        z = 2.0f * cam.nearPlane * cam.farPlane / (cam.farPlane + cam.nearPlane - ndc * (cam.farPlane - cam.nearPlane));
-    }
+    for (float& z : depth.pixels) z = linearDepth(z, cam.nearPlane, cam.farPlane);
     return depth;
 }
 
@@ -80,7 +78,7 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
         ViewTarget target;
         ViewParams params;
         params.view = v;
-        renderer.drawView(params, frame.camera, target);
+        renderer.drawView(params, {frame.camera, frame.lights, frame.settings}, target);
         check(writePng(path("view_" + std::string(enumName(kDebugViewNames, v)) + ".png"), renderer.readViewTarget(target), 3));
     }
     if (err) return err;

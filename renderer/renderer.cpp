@@ -1,11 +1,20 @@
-// The frame sequence and the public Renderer API.
+// The frame sequence, the optional lighting modes and the public Renderer API.
 #include "renderer_impl.h"
+#include "renderer_test_access.h"
 
-#include "gl/embedded_shaders.h"
-#include "gl/debug.h"
 #include "core/light_math.h"
-
-#include <glm/gtc/matrix_transform.hpp>
+#include "gl/debug.h"
+#include "gl/embedded_shaders.h"
+#include "passes/coverage.h"
+#include "passes/depth_copy.h"
+#include "passes/forward.h"
+#include "passes/geometry.h"
+#include "passes/light_cubes.h"
+#include "passes/light_volumes.h"
+#include "passes/lighting_quad.h"
+#include "passes/lighting_tiled.h"
+#include "passes/view.h"
+#include "passes/wireframes.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -14,17 +23,6 @@
 namespace gbl {
 
 namespace {
-
-std::vector<ProgramDesc> corePrograms() {
-    return {
-        {"geometry", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "geometry.frag"}}, {}},
-        {"lighting_quad", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "lighting_quad.frag"}}, {}},
-        {"forward", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "forward.frag"}}, {}},
-        {"depth_copy", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "depth_copy.frag"}}, {}},
-        {"light_cube", {{GL_VERTEX_SHADER, "light_cube.vert"}, {GL_FRAGMENT_SHADER, "light_cube.frag"}}, {}},
-        {"view", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "view.frag"}}, {}},
-    };
-}
 
 // 36 vertices of a unit cube centred at the origin (half-extent 1), counter-clockwise outside.
 std::vector<glm::vec3> cubeTriangles() {
@@ -43,17 +41,42 @@ std::string shaderReloadDir() {
     return env && *env ? env : shaderSourceDir();
 }
 
+// The line of a compiler log that says what went wrong (the first one naming an error), so a
+// mode's reason stays one sentence; the whole log stays in ShaderLibrary::failureLog().
+std::string firstErrorLine(std::string const& log) {
+    std::string first;
+    std::size_t pos = 0;
+    while (pos < log.size()) {
+        std::size_t const end = std::min(log.find('\n', pos), log.size());
+        std::string line = log.substr(pos, end - pos);
+        pos = end + 1;
+        if (line.empty() || line.rfind("failed to ", 0) == 0) continue;  // our own stage headers
+        if (first.empty()) first = line;
+        if (line.find("error") != std::string::npos || line.find("ERROR") != std::string::npos) return line;
+    }
+    return first.empty() ? "no compiler log" : first;
+}
+
+std::string programFailure(std::string const& mode, ShaderLibrary const& shaders, ProgramId id) {
+    return mode + " mode is unavailable: its shader program " + programInfo(id).desc.name +
+           " failed to build on this context (" + firstErrorLine(shaders.failureLog(id)) + ")";
+}
+
 }  // namespace
 
 RendererImpl::RendererImpl(GlCaps capsIn, int width, int height)
     : caps(std::move(capsIn)), shaders(shaderReloadDir()) {
     installGlDebug(caps);
-    for (auto& desc : corePrograms()) {
+    glErrorsAtStart = glErrorCount();
+    // Core programs are fatal: without them there is no frame at all. Optional ones are built
+    // when their mode is first asked for (volumesReady, tiledReady).
+    for (ProgramInfo const& p : programTable()) {
+        if (p.group != ProgramGroup::Core) continue;
         std::string log;
-        if (!shaders.add(desc, &log))
-            throw std::runtime_error("Renderer: built-in shader program '" + desc.name + "' failed to build:\n" + log);
+        if (!shaders.add(p.id, &log))
+            throw std::runtime_error("Renderer: built-in shader program '" + p.desc.name + "' failed to build:\n" + log);
     }
-    emptyVao = gl::VertexArray::create("fullscreen");
+    triangle = gl::FullscreenTriangle::create();
     cubeVao = gl::VertexArray::create("light cube");
     auto const cube = cubeTriangles();
     cubeVertices = gl::Buffer::create(GL_ARRAY_BUFFER, cube.size() * sizeof(glm::vec3), cube.data(), GL_STATIC_DRAW,
@@ -67,7 +90,6 @@ RendererImpl::RendererImpl(GlCaps capsIn, int width, int height)
     if (caps.pipelineStatistics) fragmentQuery = gl::Query::create(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, "fragment invocations");
     lights.upload({});
     resizeTargets(width, height);
-    glErrors += collectGlErrors();
 }
 
 void RendererImpl::resizeTargets(int width, int height) {
@@ -77,13 +99,49 @@ void RendererImpl::resizeTargets(int width, int height) {
         throw std::runtime_error("Renderer::resizeTargets(): " + *err);
 }
 
-FrameStats RendererImpl::render(FrameInput const& input) {
-    FrameStats stats;
-    stats.width = targets.width;
-    stats.height = targets.height;
-    stats.lightsSubmitted = int(input.lights.size());
-    if (targets.empty()) return stats;  // minimised: nothing to draw into
+// --- optional modes ------------------------------------------------------------------------------
 
+bool RendererImpl::volumesReady() {
+    OptionalFeature& f = volumesFeature;
+    if (f.tried) return !f.unavailable;
+    f.tried = true;
+    for (ProgramInfo const& p : programTable()) {
+        if (p.group != ProgramGroup::Volumes || shaders.add(p.id, nullptr)) continue;
+        f.unavailable = programFailure("volumes", shaders, p.id);
+        return false;
+    }
+    // Creating the mesh allocates GL objects; a failure there must not escape the frame loop.
+    try {
+        volumes = createLightVolumeGpu();
+    } catch (std::exception const& e) {
+        f.unavailable = std::string("volumes mode is unavailable: the light-volume mesh could not be created (") + e.what() + ")";
+        return false;
+    }
+    return true;
+}
+
+bool RendererImpl::tiledReady() {
+    OptionalFeature& f = tiledFeature;
+    if (f.tried) return !f.unavailable;
+    f.tried = true;
+    if (!caps.computeShaders) f.unavailable = caps.tiledUnavailableReason();
+    else if (!shaders.add(ProgramId::LightingTiled, nullptr)) f.unavailable = programFailure("tiled", shaders, ProgramId::LightingTiled);
+    return !f.unavailable;
+}
+
+std::optional<std::string> RendererImpl::modeUnavailable(LightingMode mode) {
+    switch (mode) {
+    case LightingMode::Volumes: return volumesReady() ? std::nullopt : volumesFeature.unavailable;
+    case LightingMode::Tiled: return tiledReady() ? std::nullopt : tiledFeature.unavailable;
+    case LightingMode::Quad:
+    case LightingMode::Forward: break;  // core programs only
+    }
+    return std::nullopt;
+}
+
+// --- the frame -----------------------------------------------------------------------------------
+
+FrameContext RendererImpl::frameContext(FrameInput const& input) const {
     FrameContext f;
     f.camera = input.camera;
     f.aspect = float(targets.width) / float(targets.height);
@@ -92,18 +150,66 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     f.viewProj = f.projection * f.view;
     f.lights = input.lights;
     f.settings = input.settings;
-    if (f.settings.mode == LightingMode::Tiled && !caps.computeShaders) {
+    return f;
+}
+
+DeferredInputs RendererImpl::deferredInputs(FrameContext const& f) const {
+    return {targets.gbuffer, lights, {f.camera.position, f.settings.shininess, f.settings.ambient}};
+}
+
+void RendererImpl::runLighting(FrameContext const& f) {
+    DeferredInputs const deferred = deferredInputs(f);
+    switch (f.settings.mode) {
+    case LightingMode::Volumes:
+        lightingVolumesPass({deferred, volumes, shaders.get(ProgramId::LightingQuad), shaders.get(ProgramId::LightVolume),
+                             shaders.get(ProgramId::LightVolumeStencil), triangle, {targets.volumeFbo, targets.lighting}},
+                            {f.viewProj, f.settings.cull});
+        break;
+    case LightingMode::Tiled:
+        lightingTiledPass({deferred, shaders.get(ProgramId::LightingTiled), targets.lighting, targets.coverage},
+                          {f.view, f.projection, targets.width, targets.height, f.camera.nearPlane, f.camera.farPlane, true, false});
+        break;
+    default: lightingQuadPass({deferred, shaders.get(ProgramId::LightingQuad), triangle, litTarget()}); break;
+    }
+}
+
+void RendererImpl::runCoverage(FrameContext const& f) {
+    bool const tiles = f.settings.view == DebugView::TileLights || f.settings.mode == LightingMode::Tiled;
+    bool const volumeCounts = !tiles && f.settings.mode == LightingMode::Volumes && volumesReady();
+    if (volumeCounts) prepareVolumeInstances(volumes, {f.camera, f.aspect, f.lights});
+    bool const tiled = tiles && tiledReady();
+    LightingTiledConfig const t{f.view, f.projection, targets.width, targets.height, f.camera.nearPlane, f.camera.farPlane, false, true};
+    coveragePass({deferredInputs(f), triangle, shaders.get(ProgramId::CoverageAllLights), volumeCounts ? &volumes : nullptr,
+                  volumeCounts ? &shaders.get(ProgramId::LightVolumeCoverage) : nullptr,
+                  volumeCounts ? &shaders.get(ProgramId::LightVolumeStencil) : nullptr,
+                  tiled ? &shaders.get(ProgramId::LightingTiled) : nullptr, targets.coverageFbo, targets.coverage, targets.lighting},
+                 {f.settings.mode, f.settings.cull, f.settings.view, t, f.viewProj});
+}
+
+FrameStats RendererImpl::render(FrameInput const& input) {
+    std::uint64_t const errorsBefore = glErrorCount();
+    FrameStats stats;
+    stats.width = targets.width;
+    stats.height = targets.height;
+    stats.lightsSubmitted = int(input.lights.size());
+    if (targets.empty()) return stats;  // minimised: nothing to draw into
+
+    FrameContext f = frameContext(input);
+    if (auto why = modeUnavailable(f.settings.mode)) {
         f.settings.mode = LightingMode::Quad;
-        stats.fallbackReason = caps.tiledUnavailableReason() + "; the full-screen (quad) pass ran instead";
+        stats.fallbackReason = *why + "; the full-screen (quad) pass ran instead";
     }
     stats.modeUsed = f.settings.mode;
+    PipelineSettings const& s = f.settings;
+    ShadingUniforms const shading{f.camera.position, s.shininess, s.ambient};
 
     lights.upload(input.lights);
     for (auto const& l : input.lights) stats.lightsShaded += lightRadius(l).radius > 0.0f ? 1 : 0;
+    bool const volumeInstances = s.mode == LightingMode::Volumes || (s.volumeWireframes && volumesReady());
+    if (volumeInstances) prepareVolumeInstances(volumes, {f.camera, f.aspect, f.lights});
 
     glViewport(0, 0, targets.width, targets.height);
-    bool const forwardMode = f.settings.mode == LightingMode::Forward;
-    if (forwardMode) {
+    if (s.mode == LightingMode::Forward) {
         // No G-buffer in forward mode: clear it so the viewers show that it is unused.
         glBindFramebuffer(GL_FRAMEBUFFER, targets.gbuffer.fbo.id());
         glClearColor(0, 0, 0, 0);
@@ -111,46 +217,49 @@ FrameStats RendererImpl::render(FrameInput const& input) {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
         timer.begin("forward_shading");
         if (fragmentQuery) fragmentQuery.begin();
-        forwardShadingPass(f, MaterialFilter::Opaque);
+        forwardPass({scene, lights, shaders.get(ProgramId::Forward), litTarget()},
+                    {MaterialFilter::Opaque, f.viewProj, shading, s.normalMaps});
         if (fragmentQuery) fragmentQuery.end();
         timer.end();
     } else {
         timer.begin("geometry");
-        geometryPass(f);
+        geometryPass({scene, shaders.get(ProgramId::Geometry), targets.gbuffer}, {f.viewProj, s.normalMaps});
         timer.end();
+        if (frameTestHook) frameTestHook();
         timer.begin("lighting");
         if (fragmentQuery) fragmentQuery.begin();
-        switch (f.settings.mode) {
-        case LightingMode::Volumes: lightingVolumesPass(f); break;
-        case LightingMode::Tiled: lightingTiledPass(f, true, false); break;
-        default: lightingQuadPass(f); break;
-        }
+        runLighting(f);
         if (fragmentQuery) fragmentQuery.end();
         timer.end();
         timer.begin("depth_copy");
-        depthCopyPass(f);
+        depthCopyPass({targets.gbuffer, shaders.get(ProgramId::DepthCopy), triangle, targets.litFbo},
+                      {s.depthCopy, targets.width, targets.height});
         timer.end();
     }
     timer.begin("forward");
-    forwardShadingPass(f, MaterialFilter::Blended);
-    if (f.settings.lightCubes) lightCubesPass(f);
+    forwardPass({scene, lights, shaders.get(ProgramId::Forward), litTarget()},
+                {MaterialFilter::Blended, f.viewProj, shading, s.normalMaps});
+    if (s.lightCubes)
+        lightCubesPass({lights, shaders.get(ProgramId::LightCube), cubeVao, litTarget()}, {f.viewProj, lightCubeHalfSize()});
     timer.end();
-    if (f.settings.volumeWireframes) {
+    if (s.volumeWireframes && volumesReady()) {
         timer.begin("wireframes");
-        volumeWireframesPass(f);
+        // Forward mode leaves the G-buffer empty, so its own depth (in litFbo) is the scene's.
+        LitTarget const target = s.mode == LightingMode::Forward ? litTarget() : LitTarget{targets.volumeFbo, targets.lighting};
+        wireframesPass({lights, volumes, shaders.get(ProgramId::LightVolumeWire), target}, {f.viewProj});
         timer.end();
     }
     // Debug counts for the heat map and tile views, only when one of them is shown.
-    coverageValid = false;
-    if (f.settings.view == DebugView::Heatmap || f.settings.view == DebugView::TileLights) {
+    if (viewNeedsCoverage(s.view)) {
         timer.begin("coverage");
-        coveragePass(f);
+        runCoverage(f);
         timer.end();
     }
-    lastFrame = f;
-    lastFrame.lights = {};  // the caller's span does not outlive this call
     timer.begin("display");
-    displayPass(f);
+    ViewParams display;
+    display.view = s.view;
+    viewPass({targets.gbuffer, targets.lighting, targets.coverage, shaders.get(ProgramId::View), triangle, targets.displayFbo},
+             {display, s.tonemap, s.exposure, f.camera.nearPlane, f.camera.farPlane, targets.width, targets.height});
     timer.end();
 
     for (auto& [name, ms] : timer.finishFrame(input.waitForGpuTimings)) {
@@ -161,9 +270,33 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     if (fragmentQuery && (input.waitForGpuTimings || fragmentQuery.resultAvailable()))
         stats.fragmentInvocations = fragmentQuery.result();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    stats.glErrors = collectGlErrors();
-    glErrors += stats.glErrors;
+    stats.glErrors = glErrorCount() - errorsBefore;
     return stats;
+}
+
+// A view of the frame `frame` describes (the last one rendered): coverage views recount from
+// it, so nothing here depends on what the last render() happened to compute.
+void RendererImpl::drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target) {
+    if (targets.empty()) return;
+    if (!target.texture || target.texture.width() != targets.width || target.texture.height() != targets.height) {
+        target.texture = gl::Texture::create2D(GL_RGBA8, targets.width, targets.height, "view");
+        target.fbo = gl::Framebuffer::create({&target.texture}, nullptr, "view");
+    }
+    FrameContext f = frameContext(frame);
+    if (modeUnavailable(f.settings.mode)) f.settings.mode = LightingMode::Quad;  // as render() ran it
+    if (viewNeedsCoverage(params.view)) {
+        f.settings.view = params.view;
+        lights.upload(frame.lights);
+        runCoverage(f);
+    }
+    viewPass({targets.gbuffer, targets.lighting, targets.coverage, shaders.get(ProgramId::View), triangle, target.fbo},
+             {params, f.settings.tonemap, f.settings.exposure, f.camera.nearPlane, f.camera.farPlane, targets.width,
+              targets.height});
+}
+
+float RendererImpl::lightCubeHalfSize() const {
+    // Small against the scene so cubes mark positions without hiding what they light.
+    return std::max(sceneRadius * 0.006f, 1e-4f);
 }
 
 // --- Renderer (public) -----------------------------------------------------------------------
@@ -180,105 +313,25 @@ int Renderer::height() const { return impl_->targets.height; }
 std::optional<std::string> Renderer::setScene(SceneData const& scene) {
     if (auto err = uploadScene(scene, impl_->scene)) return err;
     impl_->sceneRadius = std::max(scene.bounds().radius(), 1e-3f);
-    impl_->glErrors += collectGlErrors();
     return std::nullopt;
 }
 
 FrameStats Renderer::render(FrameInput const& input) { return impl_->render(input); }
 
-unsigned Renderer::texture(Attachment a) const {
-    RenderTargets const& t = impl_->targets;
-    switch (a) {
-    case Attachment::Position: return t.gbuffer.position.id();
-    case Attachment::Normal: return t.gbuffer.normal.id();
-    case Attachment::AlbedoSpec: return t.gbuffer.albedoSpec.id();
-    case Attachment::Depth: return t.gbuffer.depth.id();
-    case Attachment::Lighting: return t.lighting.id();
-    case Attachment::Final: return t.display.id();
-    }
-    return 0;
-}
+std::optional<std::string> Renderer::modeUnavailable(LightingMode mode) { return impl_->modeUnavailable(mode); }
 
-namespace {
-// Reads a whole framebuffer attachment as floats, flipped so rows run top to bottom.
-FloatImage readFramebuffer(GLuint fbo, GLenum attachment, int width, int height, int channels) {
-    FloatImage img;
-    img.width = width;
-    img.height = height;
-    img.channels = channels;
-    img.pixels.resize(std::size_t(width) * height * channels);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
-    if (attachment != GL_NONE) glReadBuffer(attachment);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, width, height, channels == 1 ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, img.pixels.data());
-    if (attachment != GL_NONE) glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    // GL rows run bottom to top; images and mouse coordinates run top to bottom.
-    std::size_t const row = std::size_t(width) * channels;
-    for (int y = 0; y < height / 2; ++y)
-        std::swap_ranges(img.pixels.begin() + std::ptrdiff_t(y * row), img.pixels.begin() + std::ptrdiff_t((y + 1) * row),
-                         img.pixels.begin() + std::ptrdiff_t((height - 1 - y) * row));
-    return img;
-}
-}  // namespace
-
-FloatImage Renderer::readAttachment(Attachment a) const {
-    RenderTargets const& t = impl_->targets;
-    if (t.empty()) return {};
-    switch (a) {
-    case Attachment::Position: return readFramebuffer(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
-    case Attachment::Normal: return readFramebuffer(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT1, t.width, t.height, 4);
-    case Attachment::AlbedoSpec: return readFramebuffer(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT2, t.width, t.height, 4);
-    case Attachment::Depth: return readFramebuffer(t.gbuffer.fbo.id(), GL_NONE, t.width, t.height, 1);
-    case Attachment::Lighting: return readFramebuffer(t.litFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
-    case Attachment::Final: return readFramebuffer(t.displayFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
-    }
-    return {};
-}
-
-FloatImage Renderer::readViewTarget(ViewTarget const& target) const {
-    if (!target.texture) return {};
-    return readFramebuffer(target.fbo.id(), GL_COLOR_ATTACHMENT0, target.texture.width(), target.texture.height(), 4);
-}
-
-PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
-    RenderTargets const& t = impl_->targets;
-    PixelSample s;
-    if (t.empty() || x < 0 || y < 0 || x >= t.width || y >= t.height) return s;
-    int const glY = t.height - 1 - y;
-    auto readColor = [&](GLuint fbo, GLenum attachment, glm::vec4& out) {
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
-        glReadBuffer(attachment);
-        glReadPixels(x, glY, 1, 1, GL_RGBA, GL_FLOAT, &out[0]);
-        glReadBuffer(GL_COLOR_ATTACHMENT0);
-    };
-    readColor(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT0, s.position);
-    readColor(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT1, s.normal);
-    readColor(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT2, s.albedoSpec);
-    readColor(t.litFbo.id(), GL_COLOR_ATTACHMENT0, s.lighting);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, t.gbuffer.fbo.id());
-    glReadPixels(x, glY, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &s.depth);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    s.covered = s.position.w > 0.0f;
-    // World position rebuilt from depth: unproject the pixel centre through the inverse view-projection.
-    float const aspect = float(t.width) / float(t.height);
-    glm::mat4 const invViewProj = glm::inverse(camera.projection(aspect) * camera.view());
-    glm::vec4 const ndc((float(x) + 0.5f) / float(t.width) * 2.0f - 1.0f, (float(glY) + 0.5f) / float(t.height) * 2.0f - 1.0f,
-                        s.depth * 2.0f - 1.0f, 1.0f);
-    glm::vec4 const world = invViewProj * ndc;
-    s.reconstructedPosition = glm::vec3(world) / world.w;
-    return s;
+void Renderer::drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target) {
+    impl_->drawView(params, frame, target);
 }
 
 std::vector<std::string> Renderer::reloadChangedShaders() { return impl_->shaders.reloadChanged(); }
 
 float Renderer::lightCubeHalfSize() const { return impl_->lightCubeHalfSize(); }
 
-std::uint64_t Renderer::glErrorCount() const { return impl_->glErrors; }
+std::uint64_t Renderer::glErrorCount() const { return gbl::glErrorCount() - impl_->glErrorsAtStart; }
 
-void Renderer::drawView(ViewParams const& params, Camera const& camera, ViewTarget& target) {
-    impl_->ensureCoverage(params.view);  // heat map and tile views of a frame rendered without them
-    impl_->drawView(params, camera, target);
+void RendererTestAccess::setFrameHook(Renderer& renderer, std::function<void()> hook) {
+    renderer.impl().frameTestHook = std::move(hook);
 }
 
 }  // namespace gbl

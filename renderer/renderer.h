@@ -35,7 +35,8 @@ class RendererImpl;
 class Renderer {
 public:
     // Needs a current GL 3.3+ context. Throws std::runtime_error naming the shader and log when
-    // the embedded shaders fail to build (a bug, not user input).
+    // a core shader program fails to build (a bug, not user input). The programs of the volumes
+    // and tiled modes are optional: a failure there makes only that mode unavailable.
     Renderer(GlCaps caps, int width, int height);
     ~Renderer();
     Renderer(Renderer const&) = delete;
@@ -53,7 +54,14 @@ public:
     // error is returned.
     std::optional<std::string> setScene(SceneData const& scene);
 
+    // A mode that is unavailable (modeUnavailable) runs the quad pass instead, and the stats'
+    // fallbackReason says why.
     FrameStats render(FrameInput const& input);
+
+    // Why `mode` cannot run on this context (a missing GL feature, or a program of the mode that
+    // failed to build, with the compiler's reason), in one sentence; nullopt when it can. Builds
+    // the mode's programs on first ask.
+    std::optional<std::string> modeUnavailable(LightingMode mode);
 
     // GL texture name of an attachment (for viewers); 0 when the targets are 0x0.
     unsigned texture(Attachment a) const;
@@ -61,9 +69,11 @@ public:
     // x, y in pixels with the origin at the top-left, as a mouse reports them.
     PixelSample samplePixel(int x, int y, Camera const& camera) const;
 
-    // Draws a view of the current frame (the final image or a remapped attachment) into
-    // `target`, allocating it at the frame size. The editor's texture viewers use this.
-    void drawView(ViewParams const& params, Camera const& camera, ViewTarget& target);
+    // Draws a view of the last rendered frame (the final image or a remapped attachment) into
+    // `target`, allocating it at the frame size. `frame` is that frame's input: its settings
+    // (tonemap, exposure, mode) and camera (clip planes of the depth views) shape the view, and
+    // the heat-map and tile views recount their coverage from it. The editor's viewers use this.
+    void drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target);
     FloatImage readViewTarget(ViewTarget const& target) const;
 
     // Recompiles shaders whose source files in the source tree changed. Returns one message per
@@ -76,9 +86,9 @@ public:
     // Errors reported by the GL since the renderer was created.
     std::uint64_t glErrorCount() const;
 
-    RendererImpl& impl() { return *impl_; }
-
 private:
+    friend struct RendererTestAccess;  // renderer_test_access.h
+    RendererImpl& impl() { return *impl_; }
     std::unique_ptr<RendererImpl> impl_;
 };
 

@@ -1,6 +1,7 @@
 // Coverage for the modes that evaluate every light at every pixel (quad, forward): x = lights
 // evaluated, y = lights that actually reached the surface.
 #version 330 core
+#include "bindings.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 

@@ -1,6 +1,7 @@
 // Forward shading: every light evaluated per fragment while drawing each object (no G-buffer).
 // Used by the `forward` lighting mode and for alpha-blended materials after deferred lighting.
 #version 330 core
+#include "bindings.glsl"
 #include "material.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"

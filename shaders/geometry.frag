@@ -1,5 +1,6 @@
 // Geometry pass: writes world position, world normal and albedo/specular into the G-buffer.
 #version 330 core
+#include "bindings.glsl"
 #include "material.glsl"
 
 in vec3 vWorldPos;

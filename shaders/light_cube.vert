@@ -1,5 +1,6 @@
 // One small cube per light, placed and coloured from the light buffer by instance id.
 #version 330 core
+#include "bindings.glsl"
 layout(location = 0) in vec3 aPosition;
 uniform mat4 uViewProj;
 uniform float uCubeSize;

@@ -2,6 +2,7 @@
 // added to the HDR target by blending. With COVERAGE defined it instead counts, per pixel, the
 // volume fragments that ran (x) and the ones whose light actually reached the surface (y).
 #version 330 core
+#include "bindings.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 

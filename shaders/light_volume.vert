@@ -1,6 +1,7 @@
 // Light volumes: one instance of the unit sphere per light, scaled to the light's radius times
 // the enclosing scale (renderer/light_volume_mesh.h) so the mesh covers the whole true sphere.
 #version 330 core
+#include "bindings.glsl"
 layout(location = 0) in vec3 aPosition;  // unit-sphere vertex
 
 uniform mat4 uViewProj;

@@ -1,5 +1,6 @@
 // Light-volume wireframes: each light's enclosing sphere drawn as lines in the light's colour.
 #version 330 core
+#include "bindings.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 

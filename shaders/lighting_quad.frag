@@ -1,5 +1,6 @@
 // Full-screen lighting: every pixel loops over every light (the first deferred lighting pass).
 #version 330 core
+#include "bindings.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 

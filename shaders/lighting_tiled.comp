@@ -2,6 +2,7 @@
 // its pixels, keeps the lights whose sphere touches the tile's frustum between those bounds
 // (renderer/tile_math.h does the same on the CPU), then shades its pixels with only those.
 #version 430 core
+#include "bindings.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 
@@ -11,8 +12,8 @@ uniform sampler2D uPosition;
 uniform sampler2D uNormal;
 uniform sampler2D uAlbedoSpec;
 uniform sampler2D uDepth;
-layout(rgba16f, binding = 0) uniform writeonly image2D uLighting;
-layout(rg32f, binding = 1) uniform writeonly image2D uCoverage;
+layout(rgba16f, binding = BIND_IMAGE_LIGHTING) uniform writeonly image2D uLightingImage;
+layout(rg32f, binding = BIND_IMAGE_COVERAGE) uniform writeonly image2D uCoverageImage;
 
 uniform int uLightCount;
 uniform vec3 uAmbient;
@@ -32,6 +33,8 @@ shared uint sWords[MAX_LIGHT_WORDS];  // indices of the non-empty words of sLigh
 shared uint sWordCount;
 shared uint sMinDepthBits;
 shared uint sMaxDepthBits;
+
+#include "depth.glsl"
 
 vec3 unprojectFar(vec2 ndc) {
     vec4 v = uInverseProjection * vec4(ndc, 1.0, 1.0);
@@ -62,7 +65,7 @@ void main() {
     bool geometry = pos.w != 0.0;
     if (geometry) {
         float d = texelFetch(uDepth, px, 0).r;
-        float viewDepth = uNear * uFar / ((1.0 - d) * uFar + d * uNear);
+        float viewDepth = linearDepth(d, uNear, uFar);
         atomicMin(sMinDepthBits, floatBitsToUint(viewDepth));
         atomicMax(sMaxDepthBits, floatBitsToUint(viewDepth));
     }
@@ -127,10 +130,10 @@ void main() {
             }
         }
     }
-    if (uShade) imageStore(uLighting, px, geometry ? vec4(color, 1.0) : vec4(0.0));
+    if (uShade) imageStore(uLightingImage, px, geometry ? vec4(color, 1.0) : vec4(0.0));
     if (uWriteCoverage) {
         uint count = 0u;
         for (uint k = 0u; k < sWordCount; ++k) count += uint(bitCount(sLightMask[sWords[k]]));
-        imageStore(uCoverage, px, vec4(float(count), lit, 0.0, 0.0));
+        imageStore(uCoverageImage, px, vec4(float(count), lit, 0.0, 0.0));
     }
 }

@@ -1,27 +1,9 @@
 // Turns one frame image into displayable colour: the tonemapped final image or a debug view
 // of any attachment, with channel isolation and range remapping (the texture viewers use it too).
 #version 330 core
+#include "bindings.glsl"
 
-// Values match gbl::DebugView in renderer/pipeline_settings.h one-to-one.
-#define VIEW_FINAL 0
-#define VIEW_LIGHTING 1
-#define VIEW_POSITION 2
-#define VIEW_NORMAL 3
-#define VIEW_ALBEDO 4
-#define VIEW_SPECULAR 5
-#define VIEW_DEPTH 6
-#define VIEW_DEPTH_LINEAR 7
-#define VIEW_HEATMAP 8
-#define VIEW_TILE_LIGHTS 9
-
-// Values match gbl::Tonemap.
-#define TONEMAP_EXPOSURE 0
-#define TONEMAP_REINHARD 1
-#define TONEMAP_CLAMP 2
-
-// Values match gbl::NormalDisplay.
-#define NORMALS_BIASED 0
-#define NORMALS_ABSOLUTE 1
+#include "view_constants.glsl"
 
 uniform sampler2D uPosition;
 uniform sampler2D uNormal;
@@ -52,10 +34,7 @@ vec3 tonemap(vec3 hdr) {
     return pow(c, vec3(1.0 / 2.2));
 }
 
-float linearDepth(float z) {
-    float ndc = z * 2.0 - 1.0;
-    return 2.0 * uNear * uFar / (uFar + uNear - ndc * (uFar - uNear));
-}
+#include "depth.glsl"
 
 vec4 remap(vec4 v) { return (v - vec4(uRangeMin)) / max(uRangeMax - uRangeMin, 1e-20); }
 
@@ -106,7 +85,7 @@ void main() {
     case VIEW_ALBEDO: v = texelFetch(uAlbedoSpec, px, 0); break;
     case VIEW_SPECULAR: v = vec4(texelFetch(uAlbedoSpec, px, 0).aaa, 1.0); break;
     case VIEW_DEPTH: v = vec4(vec3(texelFetch(uDepth, px, 0).r), 1.0); break;
-    case VIEW_DEPTH_LINEAR: v = vec4(vec3(linearDepth(texelFetch(uDepth, px, 0).r)), 1.0); break;
+    case VIEW_DEPTH_LINEAR: v = vec4(vec3(linearDepth(texelFetch(uDepth, px, 0).r, uNear, uFar)), 1.0); break;
     case VIEW_HEATMAP: {
         // Hue: how many lights were evaluated here (volumes covering, tile list, or all);
         // brightness: the share of them that actually lit the surface. Dim = wasted work.

@@ -25,14 +25,6 @@ bool sameBytes(std::vector<T> const& a, std::vector<T> const& b) {
     return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }
 
-bool sameLight(PointLight const& a, PointLight const& b) {
-    return std::memcmp(&a.position, &b.position, sizeof a.position) == 0 &&
-           std::memcmp(&a.color, &b.color, sizeof a.color) == 0 &&
-           std::memcmp(&a.intensity, &b.intensity, sizeof(float)) == 0 &&
-           std::memcmp(&a.kc, &b.kc, sizeof(float)) == 0 && std::memcmp(&a.kl, &b.kl, sizeof(float)) == 0 &&
-           std::memcmp(&a.kq, &b.kq, sizeof(float)) == 0 && a.name == b.name;
-}
-
 // Checks every vertex frame and every triangle of a mesh against the conventions of
 // mesh_builder.h: unit normals, unit tangents orthogonal to them, |w| = 1, counter-clockwise
 // winding about the normals, and tangent / bitangent agreeing with the UV gradients of each
@@ -286,7 +278,7 @@ TEST(DefaultScene, SameArgumentsGiveIdenticalScenes) {
         EXPECT_TRUE(sameBytes(a.images[i].pixels, b.images[i].pixels)) << a.images[i].name;
     ASSERT_EQ(a.lights.size(), 7u);
     ASSERT_EQ(b.lights.size(), 7u);
-    for (std::size_t i = 0; i < a.lights.size(); ++i) EXPECT_TRUE(sameLight(a.lights[i], b.lights[i]));
+    for (std::size_t i = 0; i < a.lights.size(); ++i) EXPECT_TRUE(a.lights[i] == b.lights[i]);
     ASSERT_TRUE(a.camera && b.camera);
     EXPECT_EQ(a.camera->position, b.camera->position);
 }
@@ -331,7 +323,7 @@ TEST(DefaultLights, CountIsHonouredAndPrefixStable) {
     auto const few = makeDefaultLights(5), many = makeDefaultLights(32);
     ASSERT_EQ(few.size(), 5u);
     ASSERT_EQ(many.size(), 32u);
-    for (std::size_t i = 0; i < few.size(); ++i) EXPECT_TRUE(sameLight(few[i], many[i]));
+    for (std::size_t i = 0; i < few.size(); ++i) EXPECT_TRUE(few[i] == many[i]);
     EXPECT_EQ(makeDefaultLights(100).size(), 100u);
     EXPECT_EQ(makeDefaultScene().lights.size(), 32u);
 }
@@ -368,9 +360,9 @@ TEST(OrbitLights, ZeroTimeIsIdentity) {
     auto const initial = makeDefaultLights(32);
     auto moved = initial;
     orbitLights(moved, defaultSceneCenter(), 0.0f);
-    for (std::size_t i = 0; i < initial.size(); ++i) EXPECT_TRUE(sameLight(initial[i], moved[i])) << i;
+    for (std::size_t i = 0; i < initial.size(); ++i) EXPECT_TRUE(initial[i] == moved[i]) << i;
     orbitLights(moved, glm::vec3(3.0f, 1.0f, -2.0f), 0.0f);
-    for (std::size_t i = 0; i < initial.size(); ++i) EXPECT_TRUE(sameLight(initial[i], moved[i])) << i;
+    for (std::size_t i = 0; i < initial.size(); ++i) EXPECT_TRUE(initial[i] == moved[i]) << i;
 }
 
 TEST(OrbitLights, KeepsRadiusAndHeightAndTurnsAtBoundedRates) {
@@ -404,7 +396,7 @@ TEST(OrbitLights, DependsOnlyOnInitialLightsAndTime) {
     orbitLights(twice, defaultSceneCenter(), 2.0f);
     orbitLights(twice, defaultSceneCenter(), 3.0f);
     for (std::size_t i = 0; i < initial.size(); ++i) {
-        EXPECT_TRUE(sameLight(once[i], again[i])) << i;
+        EXPECT_TRUE(once[i] == again[i]) << i;
         // Rates depend on the index only, so orbiting in steps lands on the same circle point
         // up to float rounding of the extra rotation (~1e-6 relative).
         EXPECT_NEAR(glm::distance(once[i].position, twice[i].position), 0.0f, 1e-4f) << i;

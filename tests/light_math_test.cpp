@@ -183,6 +183,62 @@ TEST(ValidateLight, RejectsNonFinitePositionZeroThresholdAndNoAttenuation) {
     EXPECT_NE(validateLight(l)->find("Kc"), std::string::npos);
 }
 
+TEST(LightFields, TheTableCoversEveryNumberOfPointLightOnce) {
+    PointLight const base = makeLight(1.0f, 1.0f, 0.7f, 1.8f);
+    PointLight probe = base;
+    // Fails to compile when PointLight gains or loses a member: then give a new number an entry
+    // in kLightFields (core/point_light.h) and add the member here. (A sizeof check would miss a
+    // float or bool that fits in the padding before `name`; a structured binding misses nothing.)
+    auto& [position, color, intensity, kc, kl, kq, threshold, name] = probe;
+    // Each numeric member's floats, to check that every entry edits exactly one float of one member.
+    struct Member {
+        float const* first;
+        int floats;
+        int covered = 0;
+    };
+    Member members[] = {{&position.x, 3}, {&color.r, 3}, {&intensity, 1}, {&kc, 1},
+                        {&kl, 1},         {&kq, 1},      {&threshold, 1}};
+    for (LightField const& f : kLightFields) {
+        PointLight edited = base;
+        f.of(edited) += 1.0f;
+        // The edit is seen by == (undo's change detection) and by reading the field back.
+        EXPECT_FALSE(edited == base) << f.name;
+        EXPECT_EQ(f.of(edited), f.of(base) + 1.0f) << f.name;
+        EXPECT_EQ(findLightField(f.name), &f) << f.name;
+        float const* p = &f.of(probe);
+        int hits = 0, hit = -1;
+        for (int i = 0; i < int(std::size(members)); ++i) {
+            if (p < members[i].first || p >= members[i].first + members[i].floats) continue;
+            ++members[i].covered;
+            ++hits;
+            hit = i;
+        }
+        EXPECT_EQ(hits, 1) << f.name;
+        // Position (member 0) need only be finite; every other number must also be >= 0.
+        EXPECT_EQ(f.range == LightFieldRange::Finite, hit == 0) << f.name;
+    }
+    // Every float of every numeric member has exactly one entry (11 in all).
+    for (Member const& m : members) EXPECT_EQ(m.covered, m.floats);
+    EXPECT_EQ(findLightField("name"), nullptr);  // the name is text, edited in the panel only
+    name = "other";
+    EXPECT_FALSE(probe == base);
+}
+
+TEST(LightFields, ValidateLightChecksEveryEntry) {
+    // A negative value is refused for every NonNegative entry, a non-finite one for every entry,
+    // and each sentence names the entry.
+    for (LightField const& f : kLightFields) {
+        PointLight l = makeLight(1.0f, 1.0f, 0.7f, 1.8f);
+        f.of(l) = std::numeric_limits<float>::infinity();
+        auto const msg = validateLight(l);
+        ASSERT_TRUE(msg.has_value()) << f.name;
+        std::string const expected = f.range == LightFieldRange::Finite ? "position" : std::string(f.label);
+        EXPECT_NE(msg->find(expected), std::string::npos) << *msg;
+        f.of(l) = -1.0f;
+        EXPECT_EQ(validateLight(l).has_value(), f.range == LightFieldRange::NonNegative) << f.name;
+    }
+}
+
 // --- windowed attenuation -------------------------------------------------------------------
 
 TEST(WindowedAttenuation, ZeroAtAndPastTheRadius) {

@@ -4,7 +4,6 @@
 #include "gl_fixture.h"
 #include "core/light_math.h"
 #include "core/light_volume_mesh.h"
-#include "renderer_impl.h"
 #include "test_scenes.h"
 #include "core/tile_math.h"
 
@@ -126,13 +125,14 @@ protected:
         return quad;
     }
 
-    // targets.coverage as floats (x evaluated, y lit), rows bottom to top.
+    // The coverage attachment as floats (x evaluated, y lit), rows bottom to top as GL stores them.
     std::vector<glm::vec2> coverage() {
-        RenderTargets const& t = renderer_->impl().targets;
-        std::vector<glm::vec2> out(std::size_t(t.width) * t.height);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, t.coverageFbo.id());
-        glReadPixels(0, 0, t.width, t.height, GL_RG, GL_FLOAT, out.data());
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+        FloatImage const img = renderer_->readAttachment(Attachment::Coverage);  // rows top to bottom
+        EXPECT_EQ(img.channels, 2);
+        std::vector<glm::vec2> out(std::size_t(img.width) * img.height);
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x)
+                out[std::size_t(img.height - 1 - y) * img.width + x] = {img.at(x, y, 0), img.at(x, y, 1)};
         return out;
     }
 
@@ -288,7 +288,7 @@ TEST_F(LightModesGlTest, TileListsMatchTheCpuTileMath) {
                 for (int x = rect.x0; x < rect.x1; ++x) {
                     int const row = kH - 1 - y;
                     if (position.at(x, row, 3) == 0.0f) continue;
-                    float const d = viewDepthFromWindowDepth(depth.at(x, row, 0), camera_.nearPlane, camera_.farPlane);
+                    float const d = linearDepth(depth.at(x, row, 0), camera_.nearPlane, camera_.farPlane);
                     minD = std::min(minD, d);
                     maxD = std::max(maxD, d);
                 }

@@ -7,7 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <cstdlib>
 #include <fstream>
+#include <optional>
 
 using namespace gbl;
 using gbl::test::runGbufferLab;
@@ -135,4 +137,46 @@ TEST(RenderCommand, NormalMapsBendTheStoredNormals) {
             if (ny == 1.0f) ++axisAligned;
         }
     EXPECT_GT(bent, drawn / 10) << "normal-mapped floor pixels lean away from +Y";
+}
+
+namespace {
+// Sets environment variables for the commands this test runs (children inherit them) and
+// restores the old values when it ends.
+class ScopedEnv {
+public:
+    ScopedEnv(std::vector<std::pair<std::string, std::string>> vars) {
+        for (auto const& [name, value] : vars) {
+            char const* old = std::getenv(name.c_str());
+            saved_.push_back({name, old ? std::optional<std::string>(old) : std::nullopt});
+            setenv(name.c_str(), value.c_str(), 1);
+        }
+    }
+    ~ScopedEnv() {
+        for (auto const& [name, old] : saved_) {
+            if (old) setenv(name.c_str(), old->c_str(), 1);
+            else unsetenv(name.c_str());
+        }
+    }
+
+private:
+    std::vector<std::pair<std::string, std::optional<std::string>>> saved_;
+};
+}  // namespace
+
+TEST(RenderCommand, OpenGl33DriverThatListsComputeStillRendersVolumes) {
+    // Mesa told to be GL 3.3 / GLSL 3.30 still lists GL_ARB_compute_shader, so the tiled program
+    // is tried and fails to build. Only tiled may suffer: volumes needs no compute at all.
+    ScopedEnv const env({{"MESA_GL_VERSION_OVERRIDE", "3.3"}, {"MESA_GLSL_VERSION_OVERRIDE", "330"}});
+    std::string const out = test::freshTempDir("render_gl33_volumes");
+    auto const volumes = runGbufferLab({"render", "--out", out, "--size", "64x48", "--mode", "volumes"});
+    ASSERT_EQ(volumes.exitCode, 0) << volumes.output;
+    ASSERT_TRUE(fs::exists(fs::path(out) / "stats.json"));
+    auto const stats = test::readJsonFile(fs::path(out) / "stats.json");
+    EXPECT_EQ(stats["gl_errors"], 0);
+    EXPECT_EQ(stats["gl_version"].get<std::string>().rfind("3.3", 0), 0u) << "the override took effect";
+
+    auto const tiled = test::expectRefused({"render", "--out", out, "--size", "64x48", "--mode", "tiled"}, "tiled mode is unavailable");
+    // One sentence naming the program and the compiler's reason, not a stack trace or the whole log.
+    EXPECT_LE(std::count(tiled.output.begin(), tiled.output.end(), '\n'), 1) << tiled.output;
+    EXPECT_NE(tiled.output.find("lighting_tiled"), std::string::npos) << tiled.output;
 }

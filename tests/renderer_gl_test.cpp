@@ -2,7 +2,7 @@
 // lighting pass against the CPU equation, the blit step, resizing and shader hot reload.
 #include "gl_fixture.h"
 #include "gpu/light_buffer.h"
-#include "renderer_impl.h"
+#include "gl/shader_bindings.h"
 #include "gl/shader_library.h"
 #include "core/shading_cpu.h"
 #include "test_scenes.h"
@@ -12,6 +12,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <thread>
 
 using namespace gbl;
@@ -261,9 +262,8 @@ TEST_F(RendererGlTest, FailedHotReloadKeepsLastGoodProgram) {
                   fs::copy_options::overwrite_existing);
     ShaderLibrary lib(dir);
     std::string log;
-    ProgramDesc const desc{"copy", {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "depth_copy.frag"}}, {}};
-    ASSERT_TRUE(lib.add(desc, &log)) << log;
-    GLuint const good = lib.get("copy").id();
+    ASSERT_TRUE(lib.add(ProgramId::DepthCopy, &log)) << log;
+    GLuint const good = lib.get(ProgramId::DepthCopy).id();
     EXPECT_TRUE(lib.reloadChanged().empty()) << "nothing changed yet";
 
     auto writeLater = [&](std::string const& text) {
@@ -277,14 +277,14 @@ TEST_F(RendererGlTest, FailedHotReloadKeepsLastGoodProgram) {
     ASSERT_EQ(messages.size(), 1u);
     EXPECT_NE(messages[0].find("keeping the last good one"), std::string::npos) << messages[0];
     EXPECT_NE(messages[0].find("depth_copy.frag"), std::string::npos) << "the log names the file: " << messages[0];
-    EXPECT_EQ(lib.get("copy").id(), good) << "the last good program stays in use";
+    EXPECT_EQ(lib.get(ProgramId::DepthCopy).id(), good) << "the last good program stays in use";
 
     std::ifstream original(fs::path(GBL_SOURCE_DIR) / "shaders" / "depth_copy.frag");
     writeLater(std::string(std::istreambuf_iterator<char>(original), {}));
     messages = lib.reloadChanged();
     ASSERT_EQ(messages.size(), 1u);
     EXPECT_NE(messages[0].find("reloaded"), std::string::npos) << messages[0];
-    EXPECT_NE(lib.get("copy").id(), good);
+    EXPECT_NE(lib.get(ProgramId::DepthCopy).id(), good);
     fs::remove_all(dir);
 }
 
@@ -298,4 +298,78 @@ TEST_F(RendererGlTest, GpuTimingsCoverEveryPass) {
         EXPECT_GE(p.gpuMs, 0.0);
     }
     EXPECT_EQ(names, (std::vector<std::string>{"geometry", "lighting", "depth_copy", "forward", "display"}));
+}
+
+TEST_F(RendererGlTest, EverySamplerReadsTheUnitOfBindingsGlsl) {
+    // After linking, the library points each sampler at its slot of shaders/bindings.glsl; a
+    // sampler missing from the table would silently read unit 0.
+    ShaderLibrary lib("");
+    std::map<std::string, int> slots;
+    for (auto const& s : slot::kSamplerSlots) slots[s.uniform] = s.unit;
+    int samplers = 0;
+    for (ProgramInfo const& info : programTable()) {
+        if (info.group == ProgramGroup::Tiled && !caps().computeShaders) continue;
+        std::string log;
+        ASSERT_TRUE(lib.add(info.id, &log)) << info.desc.name << ": " << log;
+        GLuint const program = lib.get(info.id).id();
+        GLint count = 0;
+        glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
+        std::map<int, std::string> unitUsers;
+        for (GLint i = 0; i < count; ++i) {
+            char name[128];
+            GLint size = 0;
+            GLenum type = 0;
+            glGetActiveUniform(program, GLuint(i), sizeof name, nullptr, &size, &type, name);
+            bool const sampler = type == GL_SAMPLER_2D || type == GL_SAMPLER_BUFFER || type == GL_INT_SAMPLER_BUFFER;
+            if (!sampler) continue;
+            ++samplers;
+            auto const it = slots.find(name);
+            ASSERT_NE(it, slots.end()) << info.desc.name << ": sampler " << name << " has no slot in bindings.glsl";
+            GLint unit = -1;
+            glGetUniformiv(program, glGetUniformLocation(program, name), &unit);
+            EXPECT_EQ(unit, it->second) << info.desc.name << ": " << name;
+            // Two samplers on one unit within a program would read the same texture.
+            EXPECT_TRUE(unitUsers.emplace(unit, name).second)
+                << info.desc.name << ": " << name << " and " << unitUsers[unit] << " share unit " << unit;
+        }
+    }
+    EXPECT_GT(samplers, 20) << "the programs declare samplers; none found means the query is wrong";
+}
+
+TEST_F(RendererGlTest, VolumeProgramThatFailsToBuildFallsBackToQuadWithTheReason) {
+    namespace fs = std::filesystem;
+    // A shader directory whose light_volume.frag is broken, seen by hot reload before the
+    // volumes mode is first used: building its programs then fails inside render().
+    fs::path const dir = fs::temp_directory_path() / ("gbl_broken_volume_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    fs::copy_file(fs::path(GBL_SOURCE_DIR) / "shaders" / "light_volume.frag", dir / "light_volume.frag",
+                  fs::copy_options::overwrite_existing);
+    setenv("GBL_SHADER_DIR", dir.c_str(), 1);
+    auto r = makeRenderer(48, 32);
+    unsetenv("GBL_SHADER_DIR");
+    auto const before = fs::last_write_time(dir / "light_volume.frag");
+    std::ofstream(dir / "light_volume.frag") << "#version 330 core\nvoid main() { this is not glsl; }\n";
+    fs::last_write_time(dir / "light_volume.frag", before + std::chrono::seconds(1));
+    r->reloadChangedShaders();
+
+    ASSERT_FALSE(r->setScene(test::floorScene()));
+    Camera const cam = lookingAt({0.0f, 5.0f, 5.0f}, {0.0f, 0.0f, 0.0f});
+    PointLight light;
+    light.position = {0.0f, 1.0f, 0.0f};
+    std::vector<PointLight> const lights{light};
+    PipelineSettings volumes = plainSettings();
+    volumes.mode = LightingMode::Volumes;
+    FrameStats const st = r->render({cam, lights, volumes});
+    EXPECT_EQ(st.modeUsed, LightingMode::Quad);
+    EXPECT_NE(st.fallbackReason.find("light_volume"), std::string::npos) << st.fallbackReason;
+    EXPECT_NE(st.fallbackReason.find("quad"), std::string::npos) << st.fallbackReason;
+    auto const why = r->modeUnavailable(LightingMode::Volumes);
+    ASSERT_TRUE(why.has_value());
+    EXPECT_NE(why->find("volumes mode is unavailable"), std::string::npos) << *why;
+    EXPECT_FALSE(r->modeUnavailable(LightingMode::Quad));
+    // What ran is exactly the quad pass.
+    FloatImage const fallback = r->readAttachment(Attachment::Lighting);
+    r->render({cam, lights, plainSettings()});
+    EXPECT_EQ(fallback.pixels, r->readAttachment(Attachment::Lighting).pixels);
+    fs::remove_all(dir);
 }

@@ -121,3 +121,25 @@ TEST(SceneLoading, RecentListIsMostRecentFirstWithoutDuplicatesAndBounded) {
     EXPECT_EQ(state.recent.size(), kMaxRecentScenes);
     EXPECT_EQ(state.recent.front(), "19.gltf");
 }
+
+TEST(SceneLoading, InstallingAFileSceneKeepsTheLoadersLightsExactly) {
+    // triangle.gltf has no lights: the loader gives it a rig for its bounds, and installing the
+    // scene must take that rig as it is (no second, editor-side rig or rescaled fall-off).
+    SceneLoadingState loading;
+    ASSERT_FALSE(startSceneLoad(loading, localFile("triangle.gltf")));
+    auto const r = waitForLoad(loading);
+    ASSERT_TRUE(r && r->scene) << (r ? r->error : "timed out");
+    ASSERT_FALSE(r->scene->lights.empty());
+    EditorState state;
+    int uploads = 0;
+    auto const upload = [&uploads](SceneData const&) -> std::optional<std::string> {
+        ++uploads;
+        return std::nullopt;
+    };
+    ASSERT_FALSE(installScene(*r->scene, true, 7, state, upload));
+    EXPECT_EQ(uploads, 1);
+    EXPECT_TRUE(state.lights == r->scene->lights);
+    // The procedural scene gets the default rig of the requested size instead.
+    ASSERT_FALSE(installScene(*r->scene, false, 7, state, upload));
+    EXPECT_EQ(state.lights.size(), 7u);
+}

@@ -39,19 +39,6 @@ TEST(TileGrid, LastTileIsClippedToTheScreen) {
     EXPECT_EQ(total, 40 * 20);
 }
 
-TEST(TileMath, ViewDepthFromWindowDepth) {
-    float const n = 0.1f, f = 200.0f;
-    EXPECT_NEAR(viewDepthFromWindowDepth(0.0f, n, f), n, 1e-6);
-    EXPECT_NEAR(viewDepthFromWindowDepth(1.0f, n, f), f, 1e-2);
-    // Round trip through glm::perspective for points at known depths.
-    glm::mat4 const proj = glm::perspective(glm::radians(60.0f), 16.0f / 9.0f, n, f);
-    for (float d : {0.5f, 3.0f, 17.0f, 120.0f}) {
-        glm::vec4 const clip = proj * glm::vec4(0.3f, -0.2f, -d, 1.0f);
-        float const window = clip.z / clip.w * 0.5f + 0.5f;
-        EXPECT_NEAR(viewDepthFromWindowDepth(window, n, f), d, d * 1e-3) << d;
-    }
-}
-
 TEST(TileFrustum, QuadrantTilesOfA90DegreeCameraHaveAnalyticPlanes) {
     // fov 90 and aspect 1: the screen edges are the planes x = +-(-z) and y = +-(-z). On a 32x32
     // screen in 16x16 tiles, tile (1, 1) is the top-right quadrant: x >= 0, y >= 0, x <= -z, y <= -z.

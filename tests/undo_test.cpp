@@ -45,11 +45,11 @@ TEST(Undo, OneEditUndoesAndRedoes) {
     EXPECT_EQ(u.undoSteps(), 1u);
     auto const back = u.undo(edited, 2.0);
     ASSERT_TRUE(back);
-    EXPECT_TRUE(sameSnapshot(*back, start()));
+    EXPECT_TRUE(*back == start());
     EXPECT_TRUE(u.canRedo());
     auto const again = u.redo(*back, 3.0);
     ASSERT_TRUE(again);
-    EXPECT_TRUE(sameSnapshot(*again, edited));
+    EXPECT_TRUE(*again == edited);
     EXPECT_FALSE(u.canRedo());
 }
 
@@ -109,7 +109,7 @@ TEST(Undo, QuickEditsOfTheSameThingMergeOthersDoNot) {
     EXPECT_EQ(c->lights[2].position.x, 5.0f);  // the merged notches are still applied
     auto d = u.undo(*c, 20.3);
     ASSERT_TRUE(d);
-    EXPECT_TRUE(sameSnapshot(*d, start()));
+    EXPECT_TRUE(*d == start());
 }
 
 TEST(Undo, AddingAndDeletingLightsNeverMerge) {
@@ -148,10 +148,10 @@ TEST(Undo, UndoRecordsAPendingEditFirst) {
     UndoSnapshot const pending = withX(start(), 0, 7.0f);
     auto const back = u.undo(pending, 1.0);
     ASSERT_TRUE(back);
-    EXPECT_TRUE(sameSnapshot(*back, start()));
+    EXPECT_TRUE(*back == start());
     auto const fwd = u.redo(*back, 2.0);
     ASSERT_TRUE(fwd);
-    EXPECT_TRUE(sameSnapshot(*fwd, pending));
+    EXPECT_TRUE(*fwd == pending);
 }
 
 TEST(Undo, HistoryIsBoundedInSteps) {
@@ -231,4 +231,24 @@ TEST(Undo, ResetForgetsTheHistory) {
     u.reset(withX(start(), 0, 2.0f));
     EXPECT_FALSE(u.canUndo());
     EXPECT_EQ(u.bytes(), 0u);
+}
+
+TEST(Undo, EveryLightFieldAndThePipelineCountAsAChange) {
+    // Change detection is the structs' defaulted ==, so each table entry (core/point_light.h),
+    // the name and any pipeline switch make an edit with the right target.
+    for (LightField const& f : kLightFields) {
+        UndoSnapshot after = start();
+        f.of(after.lights[1]) += 0.5f;
+        EXPECT_EQ(editTarget(start(), after), "light 1") << f.name;
+    }
+    UndoSnapshot renamed = start();
+    renamed.lights[2].name = "key";
+    EXPECT_EQ(editTarget(start(), renamed), "light 2");
+    UndoSnapshot piped = start();
+    piped.pipeline.ambient.g += 0.01f;
+    EXPECT_EQ(editTarget(start(), piped), "pipeline");
+    piped = start();
+    piped.pipeline.normalMaps = !piped.pipeline.normalMaps;
+    EXPECT_EQ(editTarget(start(), piped), "pipeline");
+    EXPECT_EQ(editTarget(start(), start()), "");
 }

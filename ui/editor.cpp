@@ -23,7 +23,7 @@
 #include "panels/panel_scene_loading.h"
 #include "model/pixel_breakdown.h"
 #include "renderer.h"
-#include "renderer_impl.h"
+#include "gl/gpu_timer.h"
 #include "model/scene_loading.h"
 #include "script/screenshot.h"
 #include "session_controller.h"
@@ -113,8 +113,7 @@ struct EditorGpu {
 };
 
 bool sameView(ViewParams const& a, ViewParams const& b) {
-    return a.view == b.view && a.channelMask == b.channelMask && a.rangeMin == b.rangeMin && a.rangeMax == b.rangeMax &&
-           a.normalDisplay == b.normalDisplay && a.heatMax == b.heatMax;
+    return a == b;
 }
 
 // --- scene set-up --------------------------------------------------------------------------
@@ -399,8 +398,8 @@ int runEditor(EditorOptions const& options) {
             return 2;
         }
     }
-    if (caps.computeShaders == false)
-        ui::logMessage(state.log, caps.tiledUnavailableReason());
+    for (LightingMode mode : {LightingMode::Volumes, LightingMode::Tiled})
+        if (auto why = renderer->modeUnavailable(mode)) ui::logMessage(state.log, *why);
     // Scenes opened from the menu, by drag-and-drop or by scripts load on a worker thread.
     ui::SceneLoadingState loading;
     loading.allowOutsideUris = options.allowOutsideUris;
@@ -522,7 +521,7 @@ int runEditor(EditorOptions const& options) {
                         clip.nearPlane = v.nearPlane;
                         clip.farPlane = v.farPlane;
                     }
-                    renderer->drawView(params, clip, target);
+                    renderer->drawView(params, FrameInput{clip, drawn, state.pipeline}, target);
                     // Exact texels when zoomed in: the viewers are for reading values, not pictures.
                     target.texture.setFilter(GL_NEAREST, GL_NEAREST);
                     gpu.drawnParams[i] = params;
@@ -562,7 +561,7 @@ int runEditor(EditorOptions const& options) {
         EditRequest const edit = drawMainMenu(state, caps, sessions, loading);
         ui::beginLayout(state.layout);
         ui::drawLightsPanel(state.lightsPanel, state.lights, state.animation, state.sceneBounds);
-        ui::drawPipelinePanel(state.pipeline, caps);
+        ui::drawPipelinePanel(state.pipeline, ui::modeReasons([&](LightingMode m) { return renderer->modeUnavailable(m); }));
         ui::drawViewportPanel(state.viewport, state.pipeline, renderer->texture(Attachment::Final),
                               {renderer->width(), renderer->height()}, selectedLightInImage(state, drawn, *renderer));
         ui::drawGBufferPanel(state.gbuffer, viewerTextures, {renderer->width(), renderer->height()});

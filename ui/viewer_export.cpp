@@ -18,7 +18,8 @@ std::optional<std::string> exportViewerPng(Renderer& renderer, ViewerState const
                                            std::string const& path) {
     if (renderer.width() <= 0 || renderer.height() <= 0) return "cannot write " + path + ": there is no frame (the viewport is 0x0)";
     ViewTarget target;
-    renderer.drawView(viewerParams(viewer), viewerCamera(viewer, sceneCamera), target);
+    // Viewers show G-buffer data: of the frame they need only the clip planes (depth views).
+    renderer.drawView(viewerParams(viewer), FrameInput{viewerCamera(viewer, sceneCamera), {}, {}}, target);
     return writePng(path, renderer.readViewTarget(target), 3);
 }
 

@@ -21,6 +21,9 @@ enum class Attachment {
     AlbedoSpec,  // RGBA8 linear albedo, alpha = specular intensity
     Depth,       // DEPTH32F_STENCIL8 window-space depth of the geometry pass
     Lighting,    // RGBA16F HDR lit image (lighting + forward passes, before tonemap)
+    // RG32F: x = lights evaluated at the pixel, y = lights that lit it. Read back with 2 channels;
+    // filled only by a frame (or view) showing the heat map or the lights-per-tile view.
+    Coverage,
     Final,       // RGBA8 display image: tonemapped, gamma-encoded, or the chosen debug view
 };
 
@@ -39,7 +42,7 @@ struct FrameStats {
     std::optional<std::uint64_t> fragmentInvocations;  // lighting pass, when pipeline statistics exist
     std::uint64_t glErrors = 0;      // errors reported while rendering this frame
     // The lighting mode that actually ran; differs from the requested one only after a fallback
-    // (tiled without compute shaders runs quad), and then fallbackReason says why.
+    // (a mode unavailable on this context runs quad), and then fallbackReason says why.
     LightingMode modeUsed = LightingMode::Quad;
     std::string fallbackReason;
 };

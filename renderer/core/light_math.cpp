@@ -10,24 +10,15 @@ bool badNumber(float v) { return !std::isfinite(v) || v < 0.0f; }
 }  // namespace
 
 std::optional<std::string> validateLight(PointLight const& light) {
-    struct Field {
-        char const* name;
-        float value;
-    };
-    Field const fields[] = {
-        {"color.r", light.color.r}, {"color.g", light.color.g}, {"color.b", light.color.b},
-        {"intensity", light.intensity}, {"Kc", light.kc}, {"Kl", light.kl}, {"Kq", light.kq},
-        {"threshold", light.threshold},
-    };
-    for (auto const& f : fields) {
-        if (badNumber(f.value))
-            return std::string("light parameter ") + f.name + " must be a finite number >= 0 (got " +
-                   std::to_string(f.value) + ")";
+    // Sign errors first, then non-finite positions: the order the messages always had.
+    for (LightField const& f : kLightFields) {
+        float const v = f.of(light);
+        if (f.range == LightFieldRange::NonNegative && badNumber(v))
+            return std::string("light parameter ") + std::string(f.label) + " must be a finite number >= 0 (got " +
+                   std::to_string(v) + ")";
     }
-    for (int i = 0; i < 3; ++i) {
-        if (!std::isfinite(light.position[i]))
-            return "light position must be finite";
-    }
+    for (LightField const& f : kLightFields)
+        if (f.range == LightFieldRange::Finite && !std::isfinite(f.of(light))) return "light position must be finite";
     if (light.threshold <= 0.0f) return "light threshold must be greater than 0";
     if (light.kc <= 0.0f && light.kl <= 0.0f && light.kq <= 0.0f)
         return "light attenuation Kc, Kl and Kq cannot all be 0 (infinite brightness at the light)";

@@ -13,9 +13,11 @@ enum class LightingMode { Quad, Volumes, Tiled, Forward };
 enum class CullMode { Back, Front, None, Flip, Stencil };
 // How the G-buffer depth reaches the lit target before the forward pass (the "blit step").
 enum class DepthCopy { Blit, Shader, Off };
+// Values match TONEMAP_* in shaders/view_constants.glsl.
 enum class Tonemap { Exposure, Reinhard, Clamp };
 
-// What the final image shows. Values match the VIEW_* constants in shaders/view.frag.
+// What the final image shows. Values match the VIEW_* constants in shaders/view_constants.glsl
+// (shader_constants_test checks them).
 enum class DebugView {
     Final = 0,
     Lighting = 1,

@@ -1,6 +1,9 @@
 // Tiled lighting's geometry: the 16x16 tile grid, each tile's view-space frustum and the
-// sphere-versus-tile test. Pure math; shaders/lighting_tiled.comp does the same per tile.
+// sphere-versus-tile test (depth bounds come from linearDepth(), core/depth.h). Pure math;
+// shaders/lighting_tiled.comp does the same per tile.
 #pragma once
+
+#include "core/depth.h"
 
 #include <glm/glm.hpp>
 
@@ -35,14 +38,6 @@ struct PixelRect {
 inline PixelRect tilePixelRect(TileGrid const& g, int width, int height, int tx, int ty) {
     return {tx * g.tileSize, ty * g.tileSize, std::min((tx + 1) * g.tileSize, width),
             std::min((ty + 1) * g.tileSize, height)};
-}
-
-// Positive distance in front of the camera (-z in view space) of a window-space depth written
-// with glm::perspective (OpenGL clip space, NDC z in [-1, 1], depth range [0, 1]).
-// 2nf / (f + n - ndcZ (f - n)) with ndcZ = 2 windowDepth - 1, rearranged so that nothing
-// cancels at windowDepth = 1 (the denominator becomes exactly n there).
-inline float viewDepthFromWindowDepth(float windowDepth, float nearPlane, float farPlane) {
-    return nearPlane * farPlane / ((1.0f - windowDepth) * farPlane + windowDepth * nearPlane);
 }
 
 // The four side planes of a tile's frustum in view space, as (inward unit normal, 0): they all

@@ -6,7 +6,7 @@
 
 namespace gbl {
 
-// Values match NORMALS_* in shaders/view.frag.
+// Values match NORMALS_* in shaders/view_constants.glsl (shader_constants_test checks them).
 enum class NormalDisplay { Biased = 0, Absolute = 1 };
 
 struct ViewParams {
@@ -16,6 +16,9 @@ struct ViewParams {
     float rangeMax = 1.0f;
     NormalDisplay normalDisplay = NormalDisplay::Biased;
     float heatMax = 16.0f;       // count at the top of the heat ramp
+
+    // Every member, floats compared with ==: "does the target show something else now".
+    bool operator==(ViewParams const&) const = default;
 };
 
 }  // namespace gbl

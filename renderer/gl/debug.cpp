@@ -9,9 +9,8 @@
 namespace gbl {
 
 namespace {
-std::atomic<std::uint64_t> gCallbackErrors{0};
-std::atomic<std::uint64_t> gTotal{0};
-bool gCallbackActive = false;
+std::atomic<std::uint64_t> gErrors{0};
+std::atomic<bool> gCallbackActive{false};
 
 void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei, GLchar const* message,
                                void const*) {
@@ -19,7 +18,7 @@ void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum sev
     // a bad shader edit is user input, not a GL error.
     if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
     if (type == GL_DEBUG_TYPE_ERROR) {
-        ++gCallbackErrors;
+        ++gErrors;
         std::fprintf(stderr, "GL error (id %u): %s\n", id, message);
     } else if (severity == GL_DEBUG_SEVERITY_HIGH) {
         std::fprintf(stderr, "GL warning (id %u): %s\n", id, message);
@@ -37,20 +36,16 @@ void installGlDebug(GlCaps const& caps) {
     gCallbackActive = true;
 }
 
-std::uint64_t collectGlErrors() {
-    std::uint64_t polled = 0;
+std::uint64_t glErrorCount() {
     for (int i = 0; i < 64; ++i) {
         GLenum const e = glGetError();
         if (e == GL_NO_ERROR) break;
-        ++polled;
-        if (!gCallbackActive) std::fprintf(stderr, "GL error 0x%04x\n", e);
+        // With the callback active the flag repeats an error the callback already counted.
+        if (gCallbackActive) continue;
+        ++gErrors;
+        std::fprintf(stderr, "GL error 0x%04x\n", e);
     }
-    // With the callback active the flag repeats errors it already counted.
-    std::uint64_t const n = gCallbackActive ? gCallbackErrors.exchange(0) : polled;
-    gTotal += n;
-    return n;
+    return gErrors.load();
 }
-
-std::uint64_t totalGlErrors() { return gTotal.load(); }
 
 }  // namespace gbl

@@ -4,8 +4,6 @@
 #include "gl/caps.h"
 
 #include <cstdint>
-#include <functional>
-#include <string>
 
 namespace gbl {
 
@@ -13,11 +11,9 @@ namespace gbl {
 // error are counted and logged to stderr; other high-severity messages are logged only.
 void installGlDebug(GlCaps const& caps);
 
-// Drains glGetError and returns the number of errors the GL reported since the last call,
-// from either the callback or the error flag (each error counted once).
-std::uint64_t collectGlErrors();
-
-// Total errors counted in this process.
-std::uint64_t totalGlErrors();
+// Errors the GL reported in this process so far, from the callback or the error flag (each
+// counted once; the flag is drained into the count). Only ever grows: a check compares the
+// count before and after the code it watches, so no caller can hide an error from another.
+std::uint64_t glErrorCount();
 
 }  // namespace gbl

@@ -7,7 +7,7 @@ namespace gbl {
 
 void GpuTimer::begin(std::string const& pass) {
     Frame& f = frames_[current_];
-    if (f.used == f.slots.size()) f.slots.push_back({pass, gl::Query::create(GL_TIME_ELAPSED, "pass timer")});
+    if (f.used == f.slots.size()) f.slots.push_back({pass, gl::Query::create(GL_TIME_ELAPSED, "pass timer"), {}});
     Slot& s = f.slots[f.used++];
     s.name = pass;
     s.begun = std::chrono::steady_clock::now();

@@ -2,8 +2,8 @@
 #include "gl/shader_library.h"
 
 #include "gl/embedded_shaders.h"
+#include "gl/shader_bindings.h"
 
-#include <cassert>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -83,20 +83,28 @@ std::optional<gl::Program> ShaderLibrary::build(ProgramDesc const& desc, std::st
     return gl::Program::build(stages, desc.name, log);
 }
 
-bool ShaderLibrary::add(ProgramDesc desc, std::string* log) {
-    auto program = build(desc, log);
-    if (!program) return false;
-    std::string name = desc.name;
-    programs_.insert_or_assign(std::move(name), Entry{std::move(desc), std::move(*program)});
-    return true;
+namespace {
+// Points every sampler the program declares at its unit from shaders/bindings.glsl, once after
+// linking, so no pass sets a unit by hand.
+void bindSamplerSlots(gl::Program const& program) {
+    program.use();
+    for (slot::SamplerSlot const& s : slot::kSamplerSlots) program.set(s.uniform, s.unit);
+    glUseProgram(0);
 }
+}  // namespace
 
-bool ShaderLibrary::has(std::string_view name) const { return programs_.find(name) != programs_.end(); }
-
-gl::Program const& ShaderLibrary::get(std::string_view name) const {
-    auto it = programs_.find(name);
-    assert(it != programs_.end() && "ShaderLibrary::get(): unknown program; was it added in RendererImpl()?");
-    return it->second.program;
+bool ShaderLibrary::add(ProgramId id, std::string* log) {
+    std::string buildLog;
+    auto program = build(programInfo(id).desc, &buildLog);
+    if (log) *log = buildLog;
+    if (!program) {
+        failures_[std::size_t(id)] = buildLog.empty() ? "unknown error" : buildLog;
+        return false;
+    }
+    bindSamplerSlots(*program);
+    programs_[std::size_t(id)] = std::move(*program);
+    failures_[std::size_t(id)].clear();
+    return true;
 }
 
 std::vector<std::string> ShaderLibrary::reloadChanged() {
@@ -115,16 +123,20 @@ std::vector<std::string> ShaderLibrary::reloadChanged() {
         changed.insert(file);
     }
     if (changed.empty()) return messages;
-    for (auto& [name, entry] : programs_) {
+    for (ProgramInfo const& info : programTable()) {
+        gl::Program& current = programs_[std::size_t(info.id)];
+        if (!current) continue;  // never built: its group builds it on first use
+        std::string const& name = info.desc.name;
         // A program depends on its stage files and on everything they include; rebuilding
         // every program when any included file changed is simpler and still cheap.
         bool affected = false;
-        for (auto const& [stage, file] : entry.desc.stages) affected |= changed.count(file) > 0;
+        for (auto const& [stage, file] : info.desc.stages) affected |= changed.count(file) > 0;
         for (auto const& f : changed) affected |= f.ends_with(".glsl");
         if (!affected) continue;
         std::string log;
-        if (auto program = build(entry.desc, &log)) {
-            entry.program = std::move(*program);
+        if (auto program = build(info.desc, &log)) {
+            bindSamplerSlots(*program);
+            current = std::move(*program);
             messages.push_back("reloaded shader program " + name);
         } else {
             messages.push_back("shader program " + name + " failed to rebuild; keeping the last good one.\n" + log);

@@ -1,33 +1,35 @@
-// Named GLSL programs built from shaders/ (embedded copy), rebuilt when the sources change.
+// The renderer's GLSL programs (gl/program_id.h) built from shaders/ (embedded copy), rebuilt
+// when the sources change.
 #pragma once
 
 #include "gl/program.h"
+#include "gl/program_id.h"
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 namespace gbl {
-
-struct ProgramDesc {
-    std::string name;                                    // e.g. "geometry"
-    std::vector<std::pair<GLenum, std::string>> stages;  // stage and file name in shaders/
-    std::vector<std::string> defines;                    // inserted after #version as "#define X"
-};
 
 class ShaderLibrary {
 public:
     // sourceDir: where hot reload looks for changed files; empty disables reloading.
     explicit ShaderLibrary(std::filesystem::path sourceDir);
 
-    // Builds a program from the embedded sources. Returns false and fills *log on failure.
-    bool add(ProgramDesc desc, std::string* log);
-    bool has(std::string_view name) const;
-    // The last program that built successfully. Asserts the name was added.
-    gl::Program const& get(std::string_view name) const;
+    // Builds the program from its sources and points its samplers at the units of
+    // shaders/bindings.glsl. Returns false and fills *log on failure; the log is also kept
+    // (failureLog) until a later build succeeds.
+    bool add(ProgramId id, std::string* log);
+    bool has(ProgramId id) const { return bool(programs_[std::size_t(id)]); }
+    // The last program of `id` that built successfully; an empty program (which draws nothing
+    // and raises a GL error the tests catch) when it never built. Callers build optional
+    // programs first and check has().
+    gl::Program const& get(ProgramId id) const { return programs_[std::size_t(id)]; }
+    // The compiler's log of the last failed build of `id`; empty when it built or was never tried.
+    std::string const& failureLog(ProgramId id) const { return failures_[std::size_t(id)]; }
 
     // Rebuilds programs whose files changed on disk since the last look. A failed rebuild keeps
     // the previous program. Returns one message per program rebuilt ("reloaded X") or failed
@@ -39,15 +41,12 @@ public:
     std::optional<std::string> source(std::string const& file, std::string* error = nullptr) const;
 
 private:
-    struct Entry {
-        ProgramDesc desc;
-        gl::Program program;
-    };
     std::optional<gl::Program> build(ProgramDesc const& desc, std::string* log) const;
     std::optional<std::string> rawSource(std::string const& file) const;
 
     std::filesystem::path sourceDir_;
-    std::map<std::string, Entry, std::less<>> programs_;
+    std::array<gl::Program, kProgramCount> programs_;
+    std::array<std::string, kProgramCount> failures_;
     std::map<std::string, std::filesystem::file_time_type> seenTimes_;  // per file on disk
     std::map<std::string, std::string> diskOverrides_;                  // files read from disk
 };

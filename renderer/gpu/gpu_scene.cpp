@@ -1,6 +1,8 @@
 // Scene upload and the draw loop shared by the geometry and forward passes.
 #include "gpu/gpu_scene.h"
 
+#include "gl/shader_bindings.h"
+
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include <cstddef>
@@ -105,9 +107,6 @@ std::optional<std::string> uploadScene(SceneData const& scene, GpuScene& out) {
 
 void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter filter, bool useNormalMaps) {
     static Material const kDefaultMaterial{};
-    program.set("uBaseColorTex", 0);
-    program.set("uNormalTex", 1);
-    program.set("uSpecularTex", 2);
     program.set("uUseNormalMaps", useNormalMaps ? 1 : 0);
     auto bindTexture = [&](int unit, int index, char const* flag) {
         glActiveTexture(GLenum(GL_TEXTURE0 + unit));
@@ -127,9 +126,9 @@ void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter
         program.set("uSpecularFactor", m.specularFactor);
         program.set("uAlphaMask", m.alphaMode == AlphaMode::Mask ? 1 : 0);
         program.set("uAlphaCutoff", m.alphaCutoff);
-        bindTexture(0, m.baseColorTexture, "uHasBaseColorTex");
-        bindTexture(1, m.normalTexture, "uHasNormalTex");
-        bindTexture(2, m.specularTexture, "uHasSpecularTex");
+        bindTexture(slot::BIND_MATERIAL_BASE_COLOR, m.baseColorTexture, "uHasBaseColorTex");
+        bindTexture(slot::BIND_MATERIAL_NORMAL, m.normalTexture, "uHasNormalTex");
+        bindTexture(slot::BIND_MATERIAL_SPECULAR, m.specularTexture, "uHasSpecularTex");
         if (m.doubleSided) glDisable(GL_CULL_FACE);
         else glEnable(GL_CULL_FACE);
         // A mirroring transform turns counter-clockwise triangles clockwise on screen (glTF 2.0

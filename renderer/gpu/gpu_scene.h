@@ -38,8 +38,8 @@ std::optional<std::string> uploadScene(SceneData const& scene, GpuScene& out);
 enum class MaterialFilter { Opaque, Blended, All };
 
 // Draws every instance whose material passes the filter with `program`, setting the per-object
-// uniforms (uModel, uNormalMatrix) and material uniforms of shaders/material.glsl. Texture
-// units 0..2 are used for base colour, normal and specular.
+// uniforms (uModel, uNormalMatrix) and material uniforms of shaders/material.glsl. The material
+// textures go to the BIND_MATERIAL_* units of shaders/bindings.glsl.
 void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter filter, bool useNormalMaps);
 
 }  // namespace gbl

@@ -28,4 +28,7 @@ struct LightVolumeGpu {
     explicit operator bool() const { return bool(triangleVao); }
 };
 
+// Uploads the sphere of core/light_volume_mesh.h (instances stay empty until a frame fills them).
+LightVolumeGpu createLightVolumeGpu();
+
 }  // namespace gbl

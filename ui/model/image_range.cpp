@@ -1,6 +1,8 @@
 // Value ranges of read-back attachments.
 #include "model/image_range.h"
 
+#include "core/depth.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -20,7 +22,7 @@ ValueRange fitRange(FloatImage const& image, unsigned channelMask, RangeSkip ski
             for (int c = 0; c < channels; ++c) {
                 if (!(channelMask & (1u << c))) continue;
                 float v = image.at(x, y, c);
-                if (linearize) v = linearizeDepth(v, nearPlane, farPlane);
+                if (linearize) v = linearDepth(v, nearPlane, farPlane);
                 if (!std::isfinite(v)) continue;
                 lo = std::min(lo, v);
                 hi = std::max(hi, v);

@@ -18,15 +18,9 @@ enum class RangeSkip {
     FarDepth,   // value >= 1: the cleared depth (depth attachment)
 };
 
-// Eye-space distance from a window-space depth, for a standard OpenGL perspective projection
-// (the same formula as linearDepth() in shaders/view.frag).
-inline float linearizeDepth(float windowDepth, float nearPlane, float farPlane) {
-    float const ndc = windowDepth * 2.0f - 1.0f;
-    return 2.0f * nearPlane * farPlane / (farPlane + nearPlane - ndc * (farPlane - nearPlane));
-}
-
 // Min and max over the channels set in channelMask (bit 0 = R ... bit 3 = A), skipping
-// background pixels. With linearize, values are depths turned into eye distances first.
+// background pixels. With linearize, values are window depths turned into
+// distances in front of the camera first (linearDepth(), core/depth.h).
 ValueRange fitRange(FloatImage const& image, unsigned channelMask, RangeSkip skip, bool linearize = false,
                     float nearPlane = 0.1f, float farPlane = 100.0f);
 

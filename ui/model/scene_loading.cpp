@@ -108,19 +108,9 @@ std::optional<GltfLoadResult> takeFinishedLoad(SceneLoadingState& state) {
 
 std::optional<std::string> installScene(SceneData const& scene, bool fromFile, int defaultLightCount,
                                         EditorState& state, SceneUploader const& upload) {
+    // A file's scene always has lights: the loader lights a file without any itself, with a rig
+    // made for its bounds (gltf/mapping.h, generateLightsForBounds).
     std::vector<PointLight> lights = fromFile ? scene.lights : makeDefaultLights(defaultLightCount);
-    if (fromFile && lights.empty()) {
-        // A model without lights would be black: light it with the default rig.
-        lights = makeDefaultLights(defaultLightCount);
-        Bounds const b = scene.bounds();
-        float const s = std::max(b.radius(), 1e-3f) / 16.0f;  // default lights fit a ~33-unit courtyard
-        for (auto& l : lights) {
-            l.position = b.center() + (l.position - defaultSceneCenter()) * s;
-            // Scale the fall-off with the scene so each light still covers a similar share.
-            l.kl /= s;
-            l.kq /= s * s;
-        }
-    }
     // The upload is the only step that can still fail; nothing in the state changes before it.
     if (auto error = upload(scene)) return *error;
     for (auto const& w : scene.warnings) logMessage(state.log, scene.source + ": " + w);

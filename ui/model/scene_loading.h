@@ -101,8 +101,8 @@ bool loadHeld(SceneLoadingState const& state);
 std::optional<GltfLoadResult> takeFinishedLoad(SceneLoadingState& state);
 
 // Makes `scene` the editor's scene: uploads it (render thread) and resets what depends on it:
-// lights (from the file, or the default rig scaled to the scene), bounds, orbit centre, and a
-// camera framing it. fromFile: a glTF scene (false: the procedural default scene). On failure
+// lights (the file's, which the loader generates for a file without any; or the default rig),
+// bounds, orbit centre, and a camera framing it. fromFile: a glTF scene (false: the procedural default scene). On failure
 // the renderer and the state keep the previous scene and the error sentence is returned.
 std::optional<std::string> installScene(SceneData const& scene, bool fromFile, int defaultLightCount,
                                         EditorState& state, SceneUploader const& upload);

@@ -13,35 +13,16 @@ std::size_t snapshotBytes(UndoSnapshot const& s) {
 
 }  // namespace
 
-bool sameLight(PointLight const& a, PointLight const& b) {
-    return a.position == b.position && a.color == b.color && a.intensity == b.intensity && a.kc == b.kc &&
-           a.kl == b.kl && a.kq == b.kq && a.threshold == b.threshold && a.name == b.name;
-}
-
-bool samePipeline(PipelineSettings const& a, PipelineSettings const& b) {
-    return a.mode == b.mode && a.cull == b.cull && a.depthCopy == b.depthCopy && a.tonemap == b.tonemap &&
-           a.view == b.view && a.lightCubes == b.lightCubes && a.volumeWireframes == b.volumeWireframes &&
-           a.normalMaps == b.normalMaps && a.ambient == b.ambient && a.exposure == b.exposure &&
-           a.shininess == b.shininess;
-}
-
-bool sameSnapshot(UndoSnapshot const& a, UndoSnapshot const& b) {
-    if (!samePipeline(a.pipeline, b.pipeline) || a.lights.size() != b.lights.size()) return false;
-    for (std::size_t i = 0; i < a.lights.size(); ++i)
-        if (!sameLight(a.lights[i], b.lights[i])) return false;
-    return true;
-}
-
 std::string editTarget(UndoSnapshot const& before, UndoSnapshot const& after) {
     return editTarget(before, after.lights, after.pipeline);
 }
 
 std::string editTarget(UndoSnapshot const& before, std::vector<PointLight> const& lights, PipelineSettings const& pipeline) {
-    bool const pipelineChanged = !samePipeline(before.pipeline, pipeline);
+    bool const pipelineChanged = before.pipeline != pipeline;
     if (before.lights.size() != lights.size()) return "lights";
     int changed = -1, count = 0;
     for (std::size_t i = 0; i < before.lights.size(); ++i)
-        if (!sameLight(before.lights[i], lights[i])) {
+        if (before.lights[i] != lights[i]) {
             changed = int(i);
             ++count;
         }

@@ -13,16 +13,14 @@
 
 namespace gbl::ui {
 
+// Snapshots compare with the members' defaulted operator==: every field, floats exactly, which
+// is what "did this edit change anything" means.
 struct UndoSnapshot {
     std::vector<PointLight> lights;
     PipelineSettings pipeline;
-};
 
-// Field-by-field equality (the structs define no operator==; floats compare exactly, which is
-// what "did this edit change anything" means).
-bool sameLight(PointLight const& a, PointLight const& b);
-bool samePipeline(PipelineSettings const& a, PipelineSettings const& b);
-bool sameSnapshot(UndoSnapshot const& a, UndoSnapshot const& b);
+    bool operator==(UndoSnapshot const&) const = default;
+};
 
 // What an edit touched, so that repeated edits of the same thing can merge: "light 3",
 // "pipeline", "lights" (added, deleted or more than one changed), "" for no change.

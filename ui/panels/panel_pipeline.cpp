@@ -8,11 +8,6 @@
 
 namespace gbl::ui {
 
-std::string lightingModeUnavailableReason(LightingMode mode, GlCaps const& caps) {
-    if (mode == LightingMode::Tiled) return caps.tiledUnavailableReason();
-    return {};
-}
-
 namespace {
 // One-line explanations shown on hover: the editor is a teaching tool, the lesson is the point.
 constexpr char const* kModeHelp[] = {
@@ -54,24 +49,24 @@ void radioRow(char const* id, Enum& value, std::array<std::string_view, N> const
 }
 }  // namespace
 
-void drawPipelinePanel(PipelineSettings& settings, GlCaps const& caps) {
+void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailable) {
     placeWindow(EditorWindow::Pipeline);
     if (ImGui::Begin(windowName(EditorWindow::Pipeline), nullptr, editorWindowFlags())) {
         float const right = rowRightEdge();
         if (section("Lighting mode")) {
         for (std::size_t i = 0; i < kLightingModeNames.size(); ++i) {
             auto const mode = LightingMode(i);
-            std::string const reason = lightingModeUnavailableReason(mode, caps);
+            std::string const& reason = unavailable[i];
             sameLineIfFits(checkItemWidth(kLightingModeNames[i].data()), i == 0, right);
             ImGui::BeginDisabled(!reason.empty());
             if (ImGui::RadioButton(kLightingModeNames[i].data(), settings.mode == mode)) settings.mode = mode;
             ImGui::EndDisabled();
             helpTooltip(reason.empty() ? kModeHelp[i] : reason.c_str());
         }
-        if (std::string const reason = lightingModeUnavailableReason(LightingMode::Tiled, caps); !reason.empty())
-        {
+        for (std::string const& reason : unavailable) {
+            if (reason.empty()) continue;
             ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-            ImGui::TextWrapped("tiled: %s", reason.c_str());
+            ImGui::TextWrapped("%s", reason.c_str());
             ImGui::PopStyleColor();
         }
         }

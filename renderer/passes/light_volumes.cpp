@@ -1,81 +1,24 @@
-// Light volumes: one enclosing sphere per light, drawn instanced and added by blending, with
-// the five cull modes of the volumes pass (back, front, none, flip, stencil).
-#include "renderer_impl.h"
+// Light volumes: instance lists, the cull modes and the volumes lighting pass.
+#include "passes/light_volumes.h"
 
 #include "core/light_math.h"
 #include "core/light_volume_mesh.h"
+#include "gl/shader_bindings.h"
 
 #include <glm/gtc/constants.hpp>
 
-#include <stdexcept>
+#include <cstdint>
+#include <vector>
 
 namespace gbl {
 
-namespace {
-
-// Texture unit of the instance list; 0..2 hold the G-buffer and 3 the lights.
-constexpr int kInstanceUnit = 4;
-
-std::vector<ProgramDesc> volumePrograms(bool compute) {
-    std::vector<ProgramDesc> p = {
-        {"light_volume", {{GL_VERTEX_SHADER, "light_volume.vert"}, {GL_FRAGMENT_SHADER, "light_volume.frag"}}, {}},
-        {"light_volume_coverage",
-         {{GL_VERTEX_SHADER, "light_volume.vert"}, {GL_FRAGMENT_SHADER, "light_volume.frag"}},
-         {"COVERAGE"}},
-        {"light_volume_stencil",
-         {{GL_VERTEX_SHADER, "light_volume.vert"}, {GL_FRAGMENT_SHADER, "light_volume_stencil.frag"}},
-         {}},
-        {"light_volume_wire", {{GL_VERTEX_SHADER, "light_volume.vert"}, {GL_FRAGMENT_SHADER, "light_volume_wire.frag"}}, {}},
-        {"coverage_all_lights",
-         {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "coverage_all_lights.frag"}},
-         {}},
-    };
-    if (compute) p.push_back({"lighting_tiled", {{GL_COMPUTE_SHADER, "lighting_tiled.comp"}}, {}});
-    return p;
-}
-
-}  // namespace
-
-void RendererImpl::initLightVolumes() {
-    if (volumes) return;
-    for (auto& desc : volumePrograms(caps.computeShaders)) {
-        std::string log;
-        if (!shaders.add(desc, &log))
-            throw std::runtime_error("Renderer: built-in shader program '" + desc.name + "' failed to build:\n" + log);
-    }
-    SphereMesh const mesh = makeLightVolumeSphere();
-    volumes.enclosingScale = enclosingScale(mesh);
-    volumes.vertices = gl::Buffer::create(GL_ARRAY_BUFFER, mesh.positions.size() * sizeof(glm::vec3), mesh.positions.data(),
-                                          GL_STATIC_DRAW, "light volume.vertices");
-    volumes.triangles = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, mesh.triangles.size() * sizeof(std::uint32_t),
-                                           mesh.triangles.data(), GL_STATIC_DRAW, "light volume.triangles");
-    volumes.lines = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, mesh.lines.size() * sizeof(std::uint32_t), mesh.lines.data(),
-                                       GL_STATIC_DRAW, "light volume.lines");
-    volumes.triangleIndexCount = GLsizei(mesh.triangles.size());
-    volumes.lineIndexCount = GLsizei(mesh.lines.size());
-    auto makeVao = [&](gl::VertexArray& vao, gl::Buffer const& indices, char const* label) {
-        vao = gl::VertexArray::create(label);
-        glBindVertexArray(vao.id());
-        glBindBuffer(GL_ARRAY_BUFFER, volumes.vertices.id());
-        glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
-        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices.id());
-        glBindVertexArray(0);
-        glBindBuffer(GL_ARRAY_BUFFER, 0);
-    };
-    makeVao(volumes.triangleVao, volumes.triangles, "light volume");
-    makeVao(volumes.lineVao, volumes.lines, "light volume.wire");
-}
-
-void RendererImpl::prepareVolumeInstances(FrameContext const& f) {
-    initLightVolumes();
-    // Lights whose volume may hold the camera go last, so `flip` draws two contiguous ranges.
+void prepareVolumeInstances(LightVolumeGpu& volumes, VolumeInstancesConfig const& c) {
     std::vector<std::int32_t> outside, inside;
-    float const nearCorner = nearPlaneCornerDistance(glm::radians(f.camera.fovYDegrees), f.aspect, f.camera.nearPlane);
-    for (std::size_t i = 0; i < f.lights.size(); ++i) {
-        float const r = lightRadius(f.lights[i]).radius;
+    float const nearCorner = nearPlaneCornerDistance(glm::radians(c.camera.fovYDegrees), c.aspect, c.camera.nearPlane);
+    for (std::size_t i = 0; i < c.lights.size(); ++i) {
+        float const r = lightRadius(c.lights[i]).radius;
         if (r <= 0.0f) continue;  // too dim or invalid: no volume at all
-        bool const in = volumeMayContainCamera(f.camera.position, f.lights[i].position, r * volumes.enclosingScale, nearCorner);
+        bool const in = volumeMayContainCamera(c.camera.position, c.lights[i].position, r * volumes.enclosingScale, nearCorner);
         (in ? inside : outside).push_back(std::int32_t(i));
     }
     volumes.outsideCount = int(outside.size());
@@ -103,17 +46,16 @@ void RendererImpl::prepareVolumeInstances(FrameContext const& f) {
 //   stencil: per light, a stencil pass marks the pixels whose surface lies inside the volume
 //            (back face behind the surface +1, front face behind the surface -1), then the
 //            volume shades only pixels marked 1 and resets every mark.
-void RendererImpl::drawLightVolumes(FrameContext const& f, gl::Program const& p, CullMode cull) {
+void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, CullMode cull) {
+    LightVolumeGpu const& volumes = in.volumes;
     int const total = volumes.outsideCount + volumes.insideCount;
     if (total == 0) return;
+    gl::Program const& p = in.program;
     auto setCommon = [&](gl::Program const& prog) {
         prog.use();
-        bindLightingInputs(prog, f);
-        glActiveTexture(GLenum(GL_TEXTURE0 + kInstanceUnit));
-        glBindTexture(GL_TEXTURE_BUFFER, volumes.instancesTbo.id());
-        glActiveTexture(GL_TEXTURE0);
-        prog.set("uInstances", kInstanceUnit);
-        prog.set("uViewProj", f.viewProj);
+        bindDeferredInputs(prog, in.deferred);
+        bindTextureUnit(slot::BIND_VOLUME_INSTANCES, GL_TEXTURE_BUFFER, volumes.instancesTbo.id());
+        prog.set("uViewProj", viewProj);
         prog.set("uEnclosingScale", volumes.enclosingScale);
     };
     auto draw = [&](gl::Program const& prog, int first, int count) {
@@ -161,7 +103,7 @@ void RendererImpl::drawLightVolumes(FrameContext const& f, gl::Program const& p,
         draw(p, volumes.outsideCount, volumes.insideCount);
         break;
     case CullMode::Stencil: {
-        gl::Program const& mark = shaders.get("light_volume_stencil");
+        gl::Program const& mark = in.stencilMark;
         setCommon(mark);
         glEnable(GL_STENCIL_TEST);
         GLboolean blend = glIsEnabled(GL_BLEND);
@@ -204,28 +146,23 @@ void RendererImpl::drawLightVolumes(FrameContext const& f, gl::Program const& p,
 }
 
 // --- lighting: volumes ---------------------------------------------------------------------------
-// Cost: one full-screen ambient pass plus the pixels each light's volume covers, not
-// pixels x lights.
-void RendererImpl::lightingVolumesPass(FrameContext const& f) {
-    prepareVolumeInstances(f);
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.volumeFbo.id());
+LightingOutput lightingVolumesPass(LightingVolumesInput const& in, LightingVolumesConfig const& config) {
+    glBindFramebuffer(GL_FRAMEBUFFER, in.target.fbo.id());
     // Ambient (and zero on the background) with the full-screen program and no lights, so the
     // ambient term is the very same expression as in the quad pass.
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
-    gl::Program const& ambient = shaders.get("lighting_quad");
-    ambient.use();
-    bindLightingInputs(ambient, f);
-    ambient.set("uLightCount", 0);
-    glBindVertexArray(emptyVao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
+    in.ambient.use();
+    bindDeferredInputs(in.ambient, in.deferred);
+    in.ambient.set("uLightCount", 0);
+    in.triangle.draw();
 
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
-    drawLightVolumes(f, shaders.get("light_volume"), f.settings.cull);
+    drawLightVolumes({in.deferred, in.volumes, in.shade, in.stencilMark}, config.viewProj, config.cull);
     glDisable(GL_BLEND);
+    return {in.target.hdr};
 }
 
 }  // namespace gbl

@@ -1,0 +1,23 @@
+# gbl_write_shader_bindings(IN OUT): turns shaders/bindings.glsl into a C++ header with the same
+# names, so C++ and GLSL share one table of texture and image units. Runs at configure time;
+# shaders/CMakeLists.txt re-runs configuration when bindings.glsl changes.
+function(gbl_write_shader_bindings in out)
+  file(STRINGS ${in} lines REGEX "^#define BIND_")
+  set(constants "")
+  set(samplers "")
+  foreach(line ${lines})
+    if(NOT line MATCHES "^#define (BIND_[A-Z0-9_]+) +([0-9]+)(.*)$")
+      message(FATAL_ERROR "${in}: cannot read the line '${line}' (expected #define BIND_NAME NUMBER)")
+    endif()
+    set(name ${CMAKE_MATCH_1})
+    set(value ${CMAKE_MATCH_2})
+    set(rest "${CMAKE_MATCH_3}")
+    string(APPEND constants "inline constexpr int ${name} = ${value};\n")
+    if(rest MATCHES "// sampler ([A-Za-z0-9_]+)")
+      string(APPEND samplers "    {\"${CMAKE_MATCH_1}\", ${name}},\n")
+    endif()
+  endforeach()
+  set(text "// Generated from shaders/bindings.glsl by cmake/shader_bindings.cmake. Do not edit.\n#pragma once\n\nnamespace gbl::slot {\n\n${constants}\nstruct SamplerSlot {\n    char const* uniform;\n    int unit;\n};\n\n// The unit each sampler uniform reads from, in every program that declares it.\ninline constexpr SamplerSlot kSamplerSlots[] = {\n${samplers}};\n\n}  // namespace gbl::slot\n")
+  file(WRITE ${out}.tmp "${text}")
+  file(COPY_FILE ${out}.tmp ${out} ONLY_IF_DIFFERENT)
+endfunction()

@@ -1,0 +1,53 @@
+// The renderer's GLSL programs by typed id, with the files each is built from and what a failed
+// build costs: a core program is fatal, an optional one takes its lighting mode away.
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gbl {
+
+enum class ProgramId {
+    // core
+    Geometry,
+    LightingQuad,
+    Forward,
+    DepthCopy,
+    LightCube,
+    View,
+    CoverageAllLights,
+    // volumes mode
+    LightVolume,
+    LightVolumeCoverage,
+    LightVolumeStencil,
+    LightVolumeWire,
+    // tiled mode
+    LightingTiled,
+};
+inline constexpr std::size_t kProgramCount = std::size_t(ProgramId::LightingTiled) + 1;
+
+// What needs the program: every frame (core), or one optional group that is built on first use.
+enum class ProgramGroup { Core, Volumes, Tiled };
+
+struct ProgramDesc {
+    std::string name;                                    // e.g. "geometry", for logs and labels
+    std::vector<std::pair<GLenum, std::string>> stages;  // stage and file name in shaders/
+    std::vector<std::string> defines;                    // inserted after #version as "#define X"
+};
+
+struct ProgramInfo {
+    ProgramId id;
+    ProgramGroup group;
+    ProgramDesc desc;
+};
+
+// Every program, in ProgramId order.
+std::span<ProgramInfo const> programTable();
+inline ProgramInfo const& programInfo(ProgramId id) { return programTable()[std::size_t(id)]; }
+
+}  // namespace gbl

@@ -1,0 +1,39 @@
+// Uploading the light-volume sphere.
+#include "gpu/light_volume_gpu.h"
+
+#include "core/light_volume_mesh.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+
+namespace gbl {
+
+LightVolumeGpu createLightVolumeGpu() {
+    LightVolumeGpu v;
+    SphereMesh const mesh = makeLightVolumeSphere();
+    v.enclosingScale = enclosingScale(mesh);
+    v.vertices = gl::Buffer::create(GL_ARRAY_BUFFER, mesh.positions.size() * sizeof(glm::vec3), mesh.positions.data(),
+                                    GL_STATIC_DRAW, "light volume.vertices");
+    v.triangles = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, mesh.triangles.size() * sizeof(std::uint32_t),
+                                     mesh.triangles.data(), GL_STATIC_DRAW, "light volume.triangles");
+    v.lines = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, mesh.lines.size() * sizeof(std::uint32_t), mesh.lines.data(),
+                                 GL_STATIC_DRAW, "light volume.lines");
+    v.triangleIndexCount = GLsizei(mesh.triangles.size());
+    v.lineIndexCount = GLsizei(mesh.lines.size());
+    auto makeVao = [&](gl::VertexArray& vao, gl::Buffer const& indices, char const* label) {
+        vao = gl::VertexArray::create(label);
+        glBindVertexArray(vao.id());
+        glBindBuffer(GL_ARRAY_BUFFER, v.vertices.id());
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices.id());
+        glBindVertexArray(0);
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
+    };
+    makeVao(v.triangleVao, v.triangles, "light volume");
+    makeVao(v.lineVao, v.lines, "light volume.wire");
+    return v;
+}
+
+}  // namespace gbl

@@ -1,0 +1,37 @@
+// Coverage counts pass.
+#include "passes/coverage.h"
+
+namespace gbl {
+
+CoverageOutput coveragePass(CoverageInput const& in, CoverageConfig const& c) {
+    glBindFramebuffer(GL_FRAMEBUFFER, in.target.id());
+    glViewport(0, 0, c.tiled.width, c.tiled.height);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    bool const tiles = c.view == DebugView::TileLights || c.mode == LightingMode::Tiled;
+    if (tiles) {
+        if (in.tiled) {
+            LightingTiledConfig t = c.tiled;
+            t.shade = false;
+            t.coverage = true;
+            lightingTiledPass({in.deferred, *in.tiled, in.hdr, in.coverage}, t);
+        }
+    } else if (c.mode == LightingMode::Volumes) {
+        if (in.volumes && in.volumeCoverage && in.volumeStencil) {
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFunc(GL_ONE, GL_ONE);
+            drawLightVolumes({in.deferred, *in.volumes, *in.volumeCoverage, *in.volumeStencil}, c.viewProj, c.cull);
+            glDisable(GL_BLEND);
+        }
+    } else if (c.mode == LightingMode::Quad) {
+        glDisable(GL_DEPTH_TEST);
+        in.allLights.use();
+        bindDeferredInputs(in.allLights, in.deferred);
+        in.triangle.draw();
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return {in.coverage};
+}
+
+}  // namespace gbl

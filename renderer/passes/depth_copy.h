@@ -1,0 +1,27 @@
+// The blit step: brings the G-buffer depth into the lit target so forward-drawn things are
+// hidden by the scene. Off leaves the lit target's depth cleared: light cubes then show
+// through walls.
+#pragma once
+
+#include "core/pipeline_settings.h"
+#include "gl/fullscreen_triangle.h"
+#include "gl/program.h"
+#include "gpu/render_targets.h"
+
+namespace gbl {
+
+struct DepthCopyInput {
+    GBuffer const& gbuffer;
+    gl::Program const& program;  // ProgramId::DepthCopy (the shader variant)
+    gl::FullscreenTriangle const& triangle;
+    gl::Framebuffer const& target;  // its depth-stencil is cleared, then written
+};
+struct DepthCopyConfig {
+    DepthCopy mode = DepthCopy::Blit;
+    int width = 0;
+    int height = 0;
+};
+
+void depthCopyPass(DepthCopyInput const& in, DepthCopyConfig const& config);
+
+}  // namespace gbl

@@ -1,0 +1,26 @@
+// Forward shading: every light evaluated per fragment while drawing each object (no G-buffer).
+// Opaque: the `forward` lighting mode. Blended: transparent materials after the deferred
+// lighting, depth-tested against the scene and not writing depth.
+#pragma once
+
+#include "gpu/gpu_scene.h"
+#include "passes/shading_inputs.h"
+
+namespace gbl {
+
+struct ForwardInput {
+    GpuScene const& scene;
+    LightBuffer const& lights;
+    gl::Program const& program;  // ProgramId::Forward
+    LitTarget target;            // Opaque clears it first; Blended blends over it
+};
+struct ForwardConfig {
+    MaterialFilter filter = MaterialFilter::Opaque;
+    glm::mat4 viewProj{1.0f};
+    ShadingUniforms shading;
+    bool normalMaps = true;
+};
+
+LightingOutput forwardPass(ForwardInput const& in, ForwardConfig const& config);
+
+}  // namespace gbl

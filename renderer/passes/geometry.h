@@ -1,0 +1,27 @@
+// Geometry pass: the opaque scene into the G-buffer.
+#pragma once
+
+#include "gl/program.h"
+#include "gpu/gpu_scene.h"
+#include "gpu/render_targets.h"
+
+#include <glm/glm.hpp>
+
+namespace gbl {
+
+struct GeometryInput {
+    GpuScene const& scene;
+    gl::Program const& program;  // ProgramId::Geometry
+    GBuffer const& target;       // cleared, then written
+};
+struct GeometryConfig {
+    glm::mat4 viewProj{1.0f};
+    bool normalMaps = true;
+};
+struct GeometryOutput {
+    GBuffer const& gbuffer;  // position, normal, albedo/specular and depth of the opaque scene
+};
+
+GeometryOutput geometryPass(GeometryInput const& in, GeometryConfig const& config);
+
+}  // namespace gbl

@@ -1,0 +1,27 @@
+// Light cubes pass.
+#include "passes/light_cubes.h"
+
+#include "core/frame_types.h"
+
+namespace gbl {
+
+void lightCubesPass(LightCubesInput const& in, LightCubesConfig const& config) {
+    if (in.lights.count == 0) return;
+    glBindFramebuffer(GL_FRAMEBUFFER, in.target.fbo.id());
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    in.program.use();
+    in.program.set("uViewProj", config.viewProj);
+    in.program.set("uCubeSize", config.halfSize);
+    in.program.set("uEmissive", kLightCubeEmissive);
+    bindLights(in.program, in.lights);
+    glBindVertexArray(in.cube.id());
+    glDrawArraysInstanced(GL_TRIANGLES, 0, 36, in.lights.count);
+    glBindVertexArray(0);
+}
+
+}  // namespace gbl

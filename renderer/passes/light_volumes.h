@@ -1,0 +1,54 @@
+// Light volumes: one enclosing sphere per light, drawn instanced and added by blending, with
+// the five cull modes (back, front, none, flip, stencil). Shared by the volumes lighting pass,
+// its coverage counts and the wireframes.
+#pragma once
+
+#include "core/camera.h"
+#include "core/pipeline_settings.h"
+#include "core/point_light.h"
+#include "gl/fullscreen_triangle.h"
+#include "gpu/light_volume_gpu.h"
+#include "passes/shading_inputs.h"
+
+#include <span>
+
+namespace gbl {
+
+// Fills volumes.instances with this frame's lights (radius > 0), the ones whose volume may hold
+// the camera last, so `flip` draws two contiguous ranges.
+struct VolumeInstancesConfig {
+    Camera camera;
+    float aspect = 1.0f;
+    std::span<PointLight const> lights;
+};
+void prepareVolumeInstances(LightVolumeGpu& volumes, VolumeInstancesConfig const& config);
+
+// Draws the volumes with `program` into the bound framebuffer, with the face culling, depth and
+// stencil state of `cull`; `stencilMark` is the marking program of the stencil mode.
+struct LightVolumeDraw {
+    DeferredInputs deferred;
+    LightVolumeGpu const& volumes;
+    gl::Program const& program;
+    gl::Program const& stencilMark;  // ProgramId::LightVolumeStencil
+};
+void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, CullMode cull);
+
+struct LightingVolumesInput {
+    DeferredInputs deferred;
+    LightVolumeGpu const& volumes;  // instances prepared for this frame
+    gl::Program const& ambient;     // ProgramId::LightingQuad, run with no lights
+    gl::Program const& shade;       // ProgramId::LightVolume
+    gl::Program const& stencilMark; // ProgramId::LightVolumeStencil
+    gl::FullscreenTriangle const& triangle;
+    LitTarget target;  // volumeFbo: the HDR image and the G-buffer's depth-stencil
+};
+struct LightingVolumesConfig {
+    glm::mat4 viewProj{1.0f};
+    CullMode cull = CullMode::Front;
+};
+
+// Ambient full-screen, then the volumes added by blending. Cost: one full-screen pass plus the
+// pixels each light's volume covers, not pixels x lights.
+LightingOutput lightingVolumesPass(LightingVolumesInput const& in, LightingVolumesConfig const& config);
+
+}  // namespace gbl

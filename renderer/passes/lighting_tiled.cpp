@@ -1,0 +1,33 @@
+// Tiled lighting pass.
+#include "passes/lighting_tiled.h"
+
+#include "core/tile_math.h"
+#include "gl/shader_bindings.h"
+
+namespace gbl {
+
+LightingOutput lightingTiledPass(LightingTiledInput const& in, LightingTiledConfig const& c) {
+    gl::Program const& p = in.program;
+    p.use();
+    bindDeferredInputs(p, in.deferred);
+    bindTextureUnit(slot::BIND_DEPTH, GL_TEXTURE_2D, in.deferred.gbuffer.depth.id());
+    p.set("uView", c.view);
+    p.set("uInverseProjection", glm::inverse(c.projection));
+    glUniform2i(p.uniform("uScreenSize"), c.width, c.height);
+    p.set("uNear", c.nearPlane);
+    p.set("uFar", c.farPlane);
+    p.set("uShade", c.shade ? 1 : 0);
+    p.set("uWriteCoverage", c.coverage ? 1 : 0);
+    // Both image units are bound whatever the flags, so the program's declared images are valid.
+    glBindImageTexture(slot::BIND_IMAGE_LIGHTING, in.hdr.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(slot::BIND_IMAGE_COVERAGE, in.coverage.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    TileGrid const grid = tileGrid(c.width, c.height);
+    glDispatchCompute(GLuint(grid.tilesX), GLuint(grid.tilesY), 1);
+    // Later passes read the images as textures and framebuffer attachments.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glBindImageTexture(slot::BIND_IMAGE_LIGHTING, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(slot::BIND_IMAGE_COVERAGE, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    return {in.hdr};
+}
+
+}  // namespace gbl

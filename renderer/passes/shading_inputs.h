@@ -1,0 +1,49 @@
+// What the lighting shaders read besides their own uniforms: the G-buffer, the light buffer and
+// the uniforms of shaders/lighting.glsl, bound to the slots of shaders/bindings.glsl.
+#pragma once
+
+#include "gl/framebuffer.h"
+#include "gl/program.h"
+#include "gpu/light_buffer.h"
+#include "gpu/render_targets.h"
+
+#include <glm/glm.hpp>
+
+namespace gbl {
+
+// The uniforms of shaders/lighting.glsl and the ambient term.
+struct ShadingUniforms {
+    glm::vec3 viewPosition{0.0f};
+    float shininess = 32.0f;
+    glm::vec3 ambient{0.0f};
+};
+
+// Binds `texture` to texture unit `unit` (a BIND_* slot) and leaves unit 0 active.
+void bindTextureUnit(int unit, GLenum target, GLuint texture);
+
+// The G-buffer attachments on their BIND_GBUFFER_* units.
+void bindGBuffer(GBuffer const& gbuffer);
+// The light buffer on BIND_LIGHTS, and uLightCount.
+void bindLights(gl::Program const& program, LightBuffer const& lights);
+void setShadingUniforms(gl::Program const& program, ShadingUniforms const& shading);
+
+// All three: what every deferred lighting program reads.
+struct DeferredInputs {
+    GBuffer const& gbuffer;
+    LightBuffer const& lights;
+    ShadingUniforms shading;
+};
+void bindDeferredInputs(gl::Program const& program, DeferredInputs const& in);
+
+// The HDR image a pass draws into, and the framebuffer that holds it with a depth-stencil
+// (litFbo: its own depth; volumeFbo: the G-buffer's).
+struct LitTarget {
+    gl::Framebuffer const& fbo;
+    gl::Texture const& hdr;
+};
+// What a lighting pass wrote.
+struct LightingOutput {
+    gl::Texture const& hdr;  // the lit image
+};
+
+}  // namespace gbl

@@ -1,0 +1,38 @@
+// View pass.
+#include "passes/view.h"
+
+#include "gl/shader_bindings.h"
+#include "passes/shading_inputs.h"
+
+namespace gbl {
+
+void viewPass(ViewInput const& in, ViewConfig const& c) {
+    glBindFramebuffer(GL_FRAMEBUFFER, in.target.id());
+    glViewport(0, 0, c.width, c.height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    gl::Program const& p = in.program;
+    p.use();
+    bindGBuffer(in.gbuffer);
+    bindTextureUnit(slot::BIND_DEPTH, GL_TEXTURE_2D, in.gbuffer.depth.id());
+    bindTextureUnit(slot::BIND_LIGHTING, GL_TEXTURE_2D, in.hdr.id());
+    bindTextureUnit(slot::BIND_COVERAGE, GL_TEXTURE_2D, in.coverage.id());
+    ViewParams const& v = c.params;
+    p.set("uView", int(v.view));
+    p.set("uTonemap", int(c.tonemap));
+    p.set("uExposure", c.exposure);
+    p.set("uChannelMask", glm::vec4(v.channelMask & 1 ? 1 : 0, v.channelMask & 2 ? 1 : 0, v.channelMask & 4 ? 1 : 0,
+                                    v.channelMask & 8 ? 1 : 0));
+    p.set("uRangeMin", v.rangeMin);
+    p.set("uRangeMax", v.rangeMax);
+    p.set("uNormalDisplay", int(v.normalDisplay));
+    p.set("uNear", c.nearPlane);
+    p.set("uFar", c.farPlane);
+    p.set("uHeatMax", v.heatMax);
+    in.triangle.draw();
+    glEnable(GL_CULL_FACE);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace gbl

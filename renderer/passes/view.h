@@ -1,0 +1,34 @@
+// View pass: one frame image turned into displayable colour (shaders/view.frag): the tonemapped
+// final image or a remapped debug view. The display pass and every texture viewer use it.
+#pragma once
+
+#include "core/pipeline_settings.h"
+#include "core/view_params.h"
+#include "gl/framebuffer.h"
+#include "gl/fullscreen_triangle.h"
+#include "gl/program.h"
+#include "gpu/render_targets.h"
+
+namespace gbl {
+
+struct ViewInput {
+    GBuffer const& gbuffer;
+    gl::Texture const& hdr;
+    gl::Texture const& coverage;  // this frame's counts, for the heat map and tile views
+    gl::Program const& program;   // ProgramId::View
+    gl::FullscreenTriangle const& triangle;
+    gl::Framebuffer const& target;  // RGBA8, frame-sized
+};
+struct ViewConfig {
+    ViewParams params;
+    Tonemap tonemap = Tonemap::Exposure;
+    float exposure = 1.0f;
+    float nearPlane = 0.1f;  // for the linear depth view
+    float farPlane = 100.0f;
+    int width = 0;
+    int height = 0;
+};
+
+void viewPass(ViewInput const& in, ViewConfig const& config);
+
+}  // namespace gbl

@@ -1,0 +1,96 @@
+// Reading the frame's images back: attachments as floats, one pixel for the inspector, views.
+#include "renderer_impl.h"
+
+#include <algorithm>
+
+namespace gbl {
+
+unsigned Renderer::texture(Attachment a) const {
+    RenderTargets const& t = impl_->targets;
+    switch (a) {
+    case Attachment::Position: return t.gbuffer.position.id();
+    case Attachment::Normal: return t.gbuffer.normal.id();
+    case Attachment::AlbedoSpec: return t.gbuffer.albedoSpec.id();
+    case Attachment::Depth: return t.gbuffer.depth.id();
+    case Attachment::Lighting: return t.lighting.id();
+    case Attachment::Coverage: return t.coverage.id();
+    case Attachment::Final: return t.display.id();
+    }
+    return 0;
+}
+
+namespace {
+// Reads a whole framebuffer attachment as floats, flipped so rows run top to bottom: one channel
+// reads depth, two read RG, four RGBA.
+FloatImage readFramebuffer(GLuint fbo, GLenum attachment, int width, int height, int channels) {
+    FloatImage img;
+    img.width = width;
+    img.height = height;
+    img.channels = channels;
+    img.pixels.resize(std::size_t(width) * height * channels);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    if (attachment != GL_NONE) glReadBuffer(attachment);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    GLenum const format = channels == 1 ? GL_DEPTH_COMPONENT : channels == 2 ? GL_RG : GL_RGBA;
+    glReadPixels(0, 0, width, height, format, GL_FLOAT, img.pixels.data());
+    if (attachment != GL_NONE) glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    // GL rows run bottom to top; images and mouse coordinates run top to bottom.
+    std::size_t const row = std::size_t(width) * channels;
+    for (int y = 0; y < height / 2; ++y)
+        std::swap_ranges(img.pixels.begin() + std::ptrdiff_t(y * row), img.pixels.begin() + std::ptrdiff_t((y + 1) * row),
+                         img.pixels.begin() + std::ptrdiff_t((height - 1 - y) * row));
+    return img;
+}
+}  // namespace
+
+FloatImage Renderer::readAttachment(Attachment a) const {
+    RenderTargets const& t = impl_->targets;
+    if (t.empty()) return {};
+    switch (a) {
+    case Attachment::Position: return readFramebuffer(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
+    case Attachment::Normal: return readFramebuffer(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT1, t.width, t.height, 4);
+    case Attachment::AlbedoSpec: return readFramebuffer(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT2, t.width, t.height, 4);
+    case Attachment::Depth: return readFramebuffer(t.gbuffer.fbo.id(), GL_NONE, t.width, t.height, 1);
+    case Attachment::Lighting: return readFramebuffer(t.litFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
+    case Attachment::Coverage: return readFramebuffer(t.coverageFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 2);
+    case Attachment::Final: return readFramebuffer(t.displayFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
+    }
+    return {};
+}
+
+FloatImage Renderer::readViewTarget(ViewTarget const& target) const {
+    if (!target.texture) return {};
+    return readFramebuffer(target.fbo.id(), GL_COLOR_ATTACHMENT0, target.texture.width(), target.texture.height(), 4);
+}
+
+PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
+    RenderTargets const& t = impl_->targets;
+    PixelSample s;
+    if (t.empty() || x < 0 || y < 0 || x >= t.width || y >= t.height) return s;
+    int const glY = t.height - 1 - y;
+    auto readColor = [&](GLuint fbo, GLenum attachment, glm::vec4& out) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+        glReadBuffer(attachment);
+        glReadPixels(x, glY, 1, 1, GL_RGBA, GL_FLOAT, &out[0]);
+        glReadBuffer(GL_COLOR_ATTACHMENT0);
+    };
+    readColor(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT0, s.position);
+    readColor(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT1, s.normal);
+    readColor(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT2, s.albedoSpec);
+    readColor(t.litFbo.id(), GL_COLOR_ATTACHMENT0, s.lighting);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, t.gbuffer.fbo.id());
+    glReadPixels(x, glY, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &s.depth);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    s.covered = s.position.w > 0.0f;
+    // World position rebuilt from depth: unproject the pixel centre through the inverse view-projection.
+    float const aspect = float(t.width) / float(t.height);
+    glm::mat4 const invViewProj = glm::inverse(camera.projection(aspect) * camera.view());
+    glm::vec4 const ndc((float(x) + 0.5f) / float(t.width) * 2.0f - 1.0f, (float(glY) + 0.5f) / float(t.height) * 2.0f - 1.0f,
+                        s.depth * 2.0f - 1.0f, 1.0f);
+    glm::vec4 const world = invViewProj * ndc;
+    s.reconstructedPosition = glm::vec3(world) / world.w;
+    return s;
+}
+
+}  // namespace gbl

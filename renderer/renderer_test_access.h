@@ -1,0 +1,17 @@
+// TEST ONLY: what a test may do to a Renderer that no caller of the renderer may. Never
+// included by the renderer's users (app/, ui/).
+#pragma once
+
+#include "renderer.h"
+
+#include <functional>
+
+namespace gbl {
+
+struct RendererTestAccess {
+    // Runs `hook` inside every later render() call, between the geometry and lighting passes
+    // (an empty function removes it). The GL error tests raise an error there.
+    static void setFrameHook(Renderer& renderer, std::function<void()> hook);
+};
+
+}  // namespace gbl

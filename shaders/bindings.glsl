@@ -1,0 +1,21 @@
+// Texture and image units of every shader, one name per slot. The C++ side reads this very file
+// (cmake/shader_bindings.cmake turns it into gl/shader_bindings.h), and the comment after each
+// sampler slot names the sampler uniform the shader library points at that unit after linking.
+// Slots may repeat across programs that never run together (material vs G-buffer), never within one.
+#ifndef GBL_BINDINGS_GLSL
+#define GBL_BINDINGS_GLSL
+#define BIND_GBUFFER_POSITION 0     // sampler uPosition
+#define BIND_GBUFFER_NORMAL 1       // sampler uNormal
+#define BIND_GBUFFER_ALBEDO_SPEC 2  // sampler uAlbedoSpec
+#define BIND_LIGHTS 3               // sampler uLights
+#define BIND_VOLUME_INSTANCES 4     // sampler uInstances
+#define BIND_DEPTH 5                // sampler uDepth
+#define BIND_LIGHTING 6             // sampler uLighting
+#define BIND_COVERAGE 7             // sampler uCoverage
+#define BIND_MATERIAL_BASE_COLOR 0  // sampler uBaseColorTex
+#define BIND_MATERIAL_NORMAL 1      // sampler uNormalTex
+#define BIND_MATERIAL_SPECULAR 2    // sampler uSpecularTex
+// Image units of the tiled compute pass (declared with layout(binding = ...) in the shader).
+#define BIND_IMAGE_LIGHTING 0
+#define BIND_IMAGE_COVERAGE 1
+#endif

@@ -1,0 +1,176 @@
+// UI script commands that edit the editor's state, drive its input and wait.
+#include "script/script_run.h"
+
+#include "core/light_math.h"
+#include "model/light_list.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+namespace gbl::ui {
+
+namespace {
+
+template <class Enum, std::size_t N>
+bool setEnum(Enum& field, std::array<std::string_view, N> const& names, std::string const& value) {
+    auto const e = enumFromName<Enum>(names, value);
+    if (e) field = *e;
+    return bool(e);
+}
+
+constexpr EnumSetting kEnumSettings[] = {
+    {"mode", [](PipelineSettings& p, std::string const& v) { return setEnum(p.mode, kLightingModeNames, v); },
+     [](PipelineSettings const& p) { return enumName(kLightingModeNames, p.mode); }},
+    {"cull", [](PipelineSettings& p, std::string const& v) { return setEnum(p.cull, kCullModeNames, v); },
+     [](PipelineSettings const& p) { return enumName(kCullModeNames, p.cull); }},
+    {"blit", [](PipelineSettings& p, std::string const& v) { return setEnum(p.depthCopy, kDepthCopyNames, v); },
+     [](PipelineSettings const& p) { return enumName(kDepthCopyNames, p.depthCopy); }},
+    {"view", [](PipelineSettings& p, std::string const& v) { return setEnum(p.view, kDebugViewNames, v); },
+     [](PipelineSettings const& p) { return enumName(kDebugViewNames, p.view); }},
+    {"tonemap", [](PipelineSettings& p, std::string const& v) { return setEnum(p.tonemap, kTonemapNames, v); },
+     [](PipelineSettings const& p) { return enumName(kTonemapNames, p.tonemap); }},
+};
+
+void setCommand(CommandCall const& c) {
+    EditorState& s = c.host.state;
+    std::string const& key = c.w[1];
+    std::string const& value = c.w[2];
+    bool ok = true;
+    if (auto const* e = std::find_if(std::begin(kEnumSettings), std::end(kEnumSettings),
+                                     [&](EnumSetting const& x) { return x.key == key; });
+        e != std::end(kEnumSettings))
+        ok = e->set(s.pipeline, value);
+    else if (key == "exposure") s.pipeline.exposure = number(value);
+    else if (key == "cubes") s.pipeline.lightCubes = value != "0";
+    else if (key == "wireframes") s.pipeline.volumeWireframes = value != "0";
+    else if (key == "animate") s.animation.enabled = value != "0";
+    else if (key == "time") s.animation.time = number(value);
+    else if (key == "lights") {
+        ok = bool(c.host.defaultLights);
+        if (ok) s.lights = c.host.defaultLights(std::atoi(value.c_str()));
+    } else ok = false;
+    if (!ok) c.check(false, "unknown setting or value");
+}
+
+void lightCommand(CommandCall const& c) {
+    EditorState& s = c.host.state;
+    int const i = std::atoi(c.w[1].c_str());
+    if (i < 0 || i >= int(s.lights.size())) return c.check(false, "no such light");
+    LightField const* field = findLightField(c.w[2]);
+    if (!field) return c.check(false, "unknown light field");
+    PointLight edited = s.lights[std::size_t(i)];
+    field->of(edited) = number(c.w[3]);
+    auto const error = applyLightEdit(s.lights, i, edited);
+    s.lightsPanel.message = error ? *error : std::string();
+}
+
+void clickLightCommand(CommandCall const& c) {
+    EditorState& s = c.host.state;
+    int const i = std::atoi(c.w[1].c_str());
+    if (i < 0 || i >= int(s.lights.size())) return c.check(false, "no such light");
+    glm::ivec2 const size(c.host.renderer.width(), c.host.renderer.height());
+    if (size.x <= 0 || size.y <= 0) return c.check(false, "the viewport has no pixels");
+    // The pixel whose centre sees the light's centre: project it as the renderer does.
+    glm::vec4 const clip = s.camera.projection(float(size.x) / float(size.y)) * s.camera.view() *
+                           glm::vec4(s.lights[std::size_t(i)].position, 1.0f);
+    if (clip.w <= 0.0f) return c.check(false, "the light is behind the camera");
+    glm::vec2 const ndc = glm::vec2(clip) / clip.w;
+    glm::ivec2 const px(int((ndc.x * 0.5f + 0.5f) * float(size.x)), int((0.5f - ndc.y * 0.5f) * float(size.y)));
+    c.host.clickViewport(px);
+}
+
+// shader-break and shader-fix edit only a copy of the shaders: editing the source tree would
+// disturb everyone else working in it.
+std::optional<std::string> shaderCopyPath(CommandCall const& c) {
+    char const* dir = std::getenv("GBL_SHADER_DIR");
+    if (!dir || !*dir) {
+        c.check(false, "GBL_SHADER_DIR is not set; refusing to edit the source tree");
+        return std::nullopt;
+    }
+    return (std::filesystem::path(dir) / c.w[1]).string();
+}
+
+void shaderBreakCommand(CommandCall const& c) {
+    auto const path = shaderCopyPath(c);
+    if (!path) return;
+    std::ifstream in(*path);
+    if (!in) return c.check(false, "cannot read " + *path);
+    std::string const text((std::istreambuf_iterator<char>(in)), {});
+    c.run.brokenShaders[c.w[1]] = text;
+    std::ofstream(*path) << text << "\n#error broken on purpose by a UI test script\n";
+}
+
+void shaderFixCommand(CommandCall const& c) {
+    auto const path = shaderCopyPath(c);
+    if (!path) return;
+    auto const it = c.run.brokenShaders.find(c.w[1]);
+    if (it == c.run.brokenShaders.end()) return c.check(false, "not broken by shader-break");
+    std::ofstream(*path) << it->second;
+    c.run.brokenShaders.erase(it);
+}
+
+constexpr ScriptCommandSpec kCommands[] = {
+    {"frames", "N", "run N frames before the next command",
+     [](CommandCall const& c) { c.run.wait = std::max(std::atoi(c.w[1].c_str()), 1); }},
+    {"set", "KEY VALUE",
+     "mode|cull|blit|view|tonemap NAME, exposure F, cubes|wireframes|animate 0|1,\n"
+     "time SECONDS (light animation), lights N (default scene lights)",
+     setCommand},
+    {"light", "I FIELD VALUE",
+     "edit light I through the validated path the Lights panel uses;\n"
+     "FIELD = x y z r g b intensity kc kl kq threshold (kLightFields)",
+     lightCommand},
+    {"select", "I", "select light I (as a click in the list does)",
+     [](CommandCall const& c) { c.host.state.lightsPanel.selected = std::atoi(c.w[1].c_str()); }},
+    {"click-light", "I", "click the pixel where light I's cube is drawn (ray pick)", clickLightCommand},
+    {"frame-scene", "", "the F key", [](CommandCall const& c) { c.host.frameScene(); }},
+    {"inspect", "X Y", "lock the pixel inspector on viewport pixel (X, Y)",
+     [](CommandCall const& c) {
+         auto& in = c.host.state.inspector;
+         in.pixel = glm::ivec2(std::atoi(c.w[1].c_str()), std::atoi(c.w[2].c_str()));
+         in.locked = true;
+         in.source = "script";
+     }},
+    {"resize", "W H", "resize the window (0 0 minimises the viewport)",
+     [](CommandCall const& c) { c.host.resizeWindow(std::atoi(c.w[1].c_str()), std::atoi(c.w[2].c_str())); }},
+    {"measure", "N", "measure the editor's own cost over N frames and print it",
+     [](CommandCall const& c) {
+         CostMeasurement& m = c.host.state.measurement;
+         m = CostMeasurement{};
+         m.remaining = std::max(std::atoi(c.w[1].c_str()), 1);
+         c.run.wait = m.remaining + 1;
+     }},
+    {"wait", "SECONDS", "run frames for SECONDS of wall-clock time",
+     [](CommandCall const& c) {
+         // Wall-clock time, for what is defined in seconds (undo merging, autosave delays).
+         double const until = nowSeconds() + number(c.w[1]);
+         c.waitUntil([until] { return nowSeconds() >= until; }, number(c.w[1]) + 3600.0);
+     }},
+    {"wait-log", "SECONDS TEXT...", "run frames until a log line contains TEXT (fails after SECONDS)",
+     [](CommandCall const& c) {
+         std::string const text = joinWords(c.w, 2);
+         LogState const* log = &c.host.state.log;
+         c.waitUntil(
+             [log, text] {
+                 return std::any_of(log->lines.begin(), log->lines.end(),
+                                    [&](std::string const& line) { return line.find(text) != std::string::npos; });
+             },
+             number(c.w[1]));
+     }},
+    {"shader-break", "FILE", "append a compile error to FILE in $GBL_SHADER_DIR (never the source tree)",
+     shaderBreakCommand},
+    {"shader-fix", "FILE", "put FILE back as it was before shader-break", shaderFixCommand},
+    {"print", "TEXT...", "print TEXT",
+     [](CommandCall const& c) { std::printf("ui-test: %s\n", joinWords(c.w, 1).c_str()); }},
+};
+
+}  // namespace
+
+std::span<EnumSetting const> enumSettings() { return kEnumSettings; }
+std::span<ScriptCommandSpec const> editCommands() { return kCommands; }
+
+}  // namespace gbl::ui
