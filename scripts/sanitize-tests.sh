@@ -24,7 +24,10 @@ start=$(date +%s)
 # The sanitizer runtimes are linked statically so that LD_PRELOAD (below) can name the GL driver
 # alone: with a shared ASan runtime it would have to be preloaded as well, into every process
 # (bash, xauth and Xvfb under xvfb-run included), whose own leaks would then fail the tests.
-cmake -S "$root" -B "$build" -DGBL_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+# Warnings are not errors here: scripts/test.sh's build is the warning gate, and GCC's flow analysis
+# over instrumented code can warn about paths the plain build has not (-Wmaybe-uninitialized,
+# -Wstringop-overflow), which would fail this build for no defect of the code.
+cmake -S "$root" -B "$build" -DGBL_SANITIZE=ON -DGBL_WERROR=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     "-DCMAKE_EXE_LINKER_FLAGS=-static-libasan -static-libubsan" >/dev/null
 cmake --build "$build" -j"$jobs"
 built=$(date +%s)

@@ -166,8 +166,11 @@ TEST(GltfRender, BoxFaceNormalsAreAxisAlignedUnitVectors) {
             // Flat faces carry one vertex normal, so interpolation changes nothing: the only
             // error is the RGBA16F store, exact for 0 and 1 (2^-11 covers any rounding).
             ASSERT_NEAR(std::abs(n[axis]), 1.0f, 1.0f / 2048.0f) << "pixel " << x << "," << y;
-            for (int a = 0; a < 3; ++a)
-                if (a != axis) ASSERT_NEAR(n[a], 0.0f, 1.0f / 2048.0f) << "pixel " << x << "," << y;
+            for (int a = 0; a < 3; ++a) {
+                if (a != axis) {
+                    ASSERT_NEAR(n[a], 0.0f, 1.0f / 2048.0f) << "pixel " << x << "," << y;
+                }
+            }
             ++faces[std::size_t(axis * 2 + (n[axis] < 0.0f))];
         }
     // The framing camera sits on +Z, 20 degrees up and centred in x: it sees the front (+Z) and
@@ -267,7 +270,7 @@ TEST(GltfRender, NormalTangentTestNormalMapChangesTheNormals) {
                 auto const [x, y] = stack.back();
                 stack.pop_back();
                 pixels.push_back({x, y});
-                for (auto const [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+                for (auto const& [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
                     int const nx = x + dx, ny = y + dy;
                     if (nx < 0 || ny < 0 || nx >= w || ny >= h || seen[std::size_t(ny * w + nx)] || !tilted(nx, ny)) continue;
                     seen[std::size_t(ny * w + nx)] = 1;
@@ -276,10 +279,10 @@ TEST(GltfRender, NormalTangentTestNormalMapChangesTheNormals) {
             }
             if (pixels.size() < 40) continue;  // a dome is about 14 pixels across at this size
             double cx = 0.0, cy = 0.0;
-            for (auto const [x, y] : pixels) cx += x, cy += y;
+            for (auto const& [x, y] : pixels) cx += x, cy += y;
             cx /= double(pixels.size()), cy /= double(pixels.size());
             double alongX = 0.0, alongY = 0.0;  // correlation of the normal with the offset from the centre
-            for (auto const [x, y] : pixels) {
+            for (auto const& [x, y] : pixels) {
                 alongX += mapped.normal.at(x, y, 0) * (x - cx);
                 alongY += mapped.normal.at(x, y, 1) * (cy - y);  // image rows grow downwards
             }

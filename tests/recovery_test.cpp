@@ -192,7 +192,7 @@ TEST(Recovery, DirectoryComesFromTheEnvironment) {
     ::setenv("GBL_RECOVERY_DIR", "/tmp/somewhere-else", 1);
     EXPECT_EQ(defaultRecoveryDir(), "/tmp/somewhere-else");
     ::unsetenv("GBL_RECOVERY_DIR");
-    ::setenv("XDG_STATE_HOME", "/tmp/state", 1);
-    EXPECT_EQ(defaultRecoveryDir(), "/tmp/state/gbuffer-lab");
-    ::unsetenv("XDG_STATE_HOME");
+    ::setenv("XDG_CONFIG_HOME", "/tmp/config", 1);
+    EXPECT_EQ(defaultRecoveryDir(), "/tmp/config/gbuffer-lab");
+    ::unsetenv("XDG_CONFIG_HOME");
 }

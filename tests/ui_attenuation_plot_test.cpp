@@ -23,8 +23,12 @@ TEST(UiAttenuationPlot, CurvesMeetThresholdAndZeroAtTheRadius) {
     EXPECT_NEAR(imax * attenuation(light.kc, light.kl, light.kq, r), light.threshold, 1e-5f);
     for (std::size_t i = 0; i < c.distance.size(); ++i) {
         EXPECT_LE(c.applied[i], c.classic[i]);
-        if (c.distance[i] >= r) EXPECT_EQ(c.applied[i], 0.0f) << "d = " << c.distance[i];
-        if (i > 0) EXPECT_LE(c.applied[i], c.applied[i - 1]);  // never brighter further away
+        if (c.distance[i] >= r) {
+            EXPECT_EQ(c.applied[i], 0.0f) << "d = " << c.distance[i];
+        }
+        if (i > 0) {
+            EXPECT_LE(c.applied[i], c.applied[i - 1]);  // never brighter further away
+        }
     }
     EXPECT_GT(c.applied[std::size_t(100)], 0.0f);  // 100/256 of 1.25 r is inside the radius
 }

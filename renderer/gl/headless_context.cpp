@@ -1,77 +1,65 @@
-// EGL context creation: surfaceless Mesa platform first, the default display as a fallback.
+// Chooses the headless context's backend: EGL when built with it, else (or when asked) a hidden GLFW window.
 #include "gl/headless_context.h"
 
-#include <epoxy/egl.h>
+#include "gl/headless_backend.h"
+
+#include <cstdio>
+#include <cstdlib>
 
 namespace gbl {
 
-namespace {
-EGLDisplay openDisplay() {
-    if (epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless")) {
-        EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-        if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr)) return d;
-    }
-    EGLDisplay d = eglGetDisplay(EGL_DEFAULT_DISPLAY);
-    if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr)) return d;
-    return EGL_NO_DISPLAY;
+HeadlessContext::HeadlessContext(std::unique_ptr<detail::HeadlessBackend> impl, Backend backend)
+    : impl_(std::move(impl)), backend_(backend) {}
+
+HeadlessContext::~HeadlessContext() = default;
+
+void HeadlessContext::makeCurrent() {
+    impl_->makeCurrent();
 }
-}  // namespace
+
+bool HeadlessContext::hasEgl() {
+#ifdef GBL_HEADLESS_GLFW
+    return false;
+#else
+    return true;
+#endif
+}
+
+char const* backendName(HeadlessContext::Backend backend) {
+    return backend == HeadlessContext::Backend::Egl ? "egl" : "glfw";
+}
 
 std::unique_ptr<HeadlessContext> HeadlessContext::create(std::string* error, bool debug) {
     auto fail = [&](std::string msg) -> std::unique_ptr<HeadlessContext> {
         if (error) *error = std::move(msg);
         return nullptr;
     };
-    EGLDisplay display = openDisplay();
-    if (display == EGL_NO_DISPLAY)
-        return fail("no EGL display could be opened for a headless OpenGL context (is Mesa's libegl installed?)");
-    if (!eglBindAPI(EGL_OPENGL_API)) return fail("this EGL implementation does not offer desktop OpenGL");
+    char const* env = std::getenv("GBL_HEADLESS");
+    std::string const asked = env ? env : "";
+    if (!asked.empty() && asked != "egl" && asked != "glfw")
+        return fail("GBL_HEADLESS=" + asked + " names no headless OpenGL backend (use egl or glfw, or unset it)");
+    if (asked == "egl" && !hasEgl())
+        return fail(
+            "GBL_HEADLESS=egl, but this build has no EGL (configured without libEGL or with "
+            "-DGBL_HEADLESS_GLFW=ON)");
 
-    EGLint const configAttribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
-                                    EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_NONE};
-    EGLConfig config = nullptr;
-    EGLint count = 0;
-    if (!eglChooseConfig(display, configAttribs, &config, 1, &count) || count == 0) {
-        // Surfaceless displays may expose configs without pbuffer support.
-        EGLint const anyConfig[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
-        if (!eglChooseConfig(display, anyConfig, &config, 1, &count) || count == 0)
-            return fail("no EGL config supports desktop OpenGL");
+    std::string eglReason;
+#ifndef GBL_HEADLESS_GLFW
+    if (asked != "glfw") {
+        if (auto egl = detail::createEglContext(debug, &eglReason))
+            return std::unique_ptr<HeadlessContext>(new HeadlessContext(std::move(egl), Backend::Egl));
+        if (asked == "egl") return fail("no OpenGL context: EGL failed (" + eglReason + ")");
     }
-
-    static constexpr int kVersions[][2] = {{4, 6}, {4, 5}, {4, 3}, {4, 1}, {3, 3}};
-    EGLContext context = EGL_NO_CONTEXT;
-    for (auto const& v : kVersions) {
-        EGLint const attribs[] = {EGL_CONTEXT_MAJOR_VERSION, v[0], EGL_CONTEXT_MINOR_VERSION, v[1],
-                                  EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                  EGL_CONTEXT_OPENGL_DEBUG, debug ? EGL_TRUE : EGL_FALSE, EGL_NONE};
-        context = eglCreateContext(display, config, EGL_NO_CONTEXT, attribs);
-        if (context != EGL_NO_CONTEXT) break;
+#endif
+    std::string glfwReason;
+    if (auto glfw = detail::createGlfwContext(debug, &glfwReason)) {
+        // A fallback is said once, so a machine whose EGL broke does not pass for one that works.
+        if (!eglReason.empty())
+            std::fprintf(stderr, "EGL failed (%s); using a hidden GLFW window\n", eglReason.c_str());
+        return std::unique_ptr<HeadlessContext>(new HeadlessContext(std::move(glfw), Backend::Glfw));
     }
-    if (context == EGL_NO_CONTEXT) return fail("no OpenGL 3.3 core context could be created through EGL");
-
-    std::unique_ptr<HeadlessContext> ctx(new HeadlessContext());
-    ctx->display_ = display;
-    ctx->context_ = context;
-    if (!epoxy_has_egl_extension(display, "EGL_KHR_surfaceless_context")) {
-        EGLint const pbufferAttribs[] = {EGL_WIDTH, 1, EGL_HEIGHT, 1, EGL_NONE};
-        ctx->surface_ = eglCreatePbufferSurface(display, config, pbufferAttribs);
-    }
-    ctx->makeCurrent();
-    if (eglGetCurrentContext() != context) return fail("the headless OpenGL context could not be made current");
-    return ctx;
-}
-
-void HeadlessContext::makeCurrent() {
-    EGLSurface s = surface_ ? EGLSurface(surface_) : EGL_NO_SURFACE;
-    eglMakeCurrent(EGLDisplay(display_), s, s, EGLContext(context_));
-}
-
-HeadlessContext::~HeadlessContext() {
-    EGLDisplay d = EGLDisplay(display_);
-    eglMakeCurrent(d, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    if (surface_) eglDestroySurface(d, EGLSurface(surface_));
-    eglDestroyContext(d, EGLContext(context_));
-    eglTerminate(d);
+    if (!eglReason.empty()) return fail("no OpenGL context: EGL failed (" + eglReason + ") and " + glfwReason);
+    return fail("no OpenGL context: " + glfwReason);
 }
 
 }  // namespace gbl

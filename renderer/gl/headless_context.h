@@ -1,4 +1,4 @@
-// An OpenGL context without a window (EGL), for tests and the render/bench commands.
+// An OpenGL context without a visible window (EGL, or a hidden GLFW window), for tests and render/bench.
 #pragma once
 
 #include <memory>
@@ -6,22 +6,36 @@
 
 namespace gbl {
 
+namespace detail {
+class HeadlessBackend;
+}
+
 class HeadlessContext {
 public:
-    // Creates and makes current a core-profile context, trying 4.6 down to 3.3. Returns null
-    // and sets *error to one sentence when no EGL display or context can be had.
+    enum class Backend { Egl, Glfw };
+
+    // Creates and makes current a core-profile context, trying 4.6 down to 3.3. EGL is used when the build
+    // has it, with a hidden GLFW window (which needs a display) as the fallback; GBL_HEADLESS=egl or
+    // GBL_HEADLESS=glfw in the environment asks for one backend and allows no fallback. Returns null and
+    // sets *error to one sentence when no context can be had.
     static std::unique_ptr<HeadlessContext> create(std::string* error, bool debug = true);
+    // False where the build has no EGL: macOS, Windows, or Linux configured with -DGBL_HEADLESS_GLFW=ON.
+    static bool hasEgl();
+
     ~HeadlessContext();
     HeadlessContext(HeadlessContext const&) = delete;
     HeadlessContext& operator=(HeadlessContext const&) = delete;
 
     void makeCurrent();
+    Backend backend() const { return backend_; }
 
 private:
-    HeadlessContext() = default;
-    void* display_ = nullptr;
-    void* context_ = nullptr;
-    void* surface_ = nullptr;  // a 1x1 pbuffer when surfaceless contexts are unsupported
+    HeadlessContext(std::unique_ptr<detail::HeadlessBackend> impl, Backend backend);
+    std::unique_ptr<detail::HeadlessBackend> impl_;
+    Backend backend_;
 };
+
+// "egl" or "glfw", the names GBL_HEADLESS takes.
+char const* backendName(HeadlessContext::Backend backend);
 
 }  // namespace gbl

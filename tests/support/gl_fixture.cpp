@@ -21,7 +21,7 @@ void GlTest::SetUpTestSuite() {
 }
 
 void GlTest::SetUp() {
-    // A missing context is a failure, not a skip: every machine this runs on has Mesa's EGL.
+    // A missing context is a failure, not a skip: every machine this runs on has EGL or a display.
     ASSERT_TRUE(gContext) << "no headless GL context: " << gError;
     acceptGlErrors();
 }

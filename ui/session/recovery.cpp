@@ -2,6 +2,7 @@
 #include "session/recovery.h"
 
 #include "session/atomic_file.h"
+#include "session/config_dir.h"
 
 #include <signal.h>
 
@@ -113,9 +114,8 @@ void RecoveryDir::discard(UncleanExit const& exit) const {
 
 std::string defaultRecoveryDir() {
     if (char const* d = std::getenv("GBL_RECOVERY_DIR"); d && *d) return d;
-    if (char const* d = std::getenv("XDG_STATE_HOME"); d && *d) return (fs::path(d) / "gbuffer-lab").string();
-    if (char const* h = std::getenv("HOME"); h && *h) return (fs::path(h) / ".local/state/gbuffer-lab").string();
-    return "/tmp/gbuffer-lab-recovery";
+    // Beside imgui.ini in the user's config folder, never in the directory the editor started in.
+    return configDir().value_or("/tmp/gbuffer-lab-recovery");
 }
 
 }  // namespace gbl::ui

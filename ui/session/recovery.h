@@ -77,8 +77,8 @@ private:
     std::string dir_;
 };
 
-// $GBL_RECOVERY_DIR, else $XDG_STATE_HOME/gbuffer-lab, else ~/.local/state/gbuffer-lab,
-// else /tmp/gbuffer-lab-recovery.
+// $GBL_RECOVERY_DIR, else the config folder (session/config_dir.h: $XDG_CONFIG_HOME/gbuffer-lab,
+// else ~/.config/gbuffer-lab), else /tmp/gbuffer-lab-recovery.
 std::string defaultRecoveryDir();
 
 }  // namespace gbl::ui

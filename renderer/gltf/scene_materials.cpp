@@ -1,0 +1,173 @@
+// The glTF scene builder's images and materials: decoding on first use, sRGB/linear copies, baked specular.
+#include "gltf/scene_builder_parts.h"
+
+#include "gltf/images.h"
+#include "gltf/mapping.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+
+namespace gbl::gltf {
+
+int SceneBuilder::textureSource(int texture, std::string const& who) {
+    if (texture < 0) return -1;
+    if (std::size_t(texture) >= model_.textures.size())
+        fail(who + " refers to texture " + std::to_string(texture) + ", but the file has " + num(model_.textures.size()));
+    int const source = model_.textures[std::size_t(texture)].source;
+    if (source < 0) {
+        scene_.warnings.push_back(who + " uses texture " + std::to_string(texture) +
+                                  ", which has no image this loader can read; ignored");
+        return -1;
+    }
+    if (std::size_t(source) >= model_.images.size())
+        fail("texture " + std::to_string(texture) + " refers to image " + std::to_string(source) + ", but the file has " +
+             num(model_.images.size()));
+    return source;
+}
+
+std::size_t SceneBuilder::countImages(std::set<int> const& materials) {
+    std::set<int> images;
+    for (int m : materials) {
+        auto const& mat = model_.materials[std::size_t(m)];
+        std::string const who = "material " + std::to_string(m);
+        for (int t : {mat.pbrMetallicRoughness.baseColorTexture.index, mat.normalTexture.index,
+                      mat.pbrMetallicRoughness.metallicRoughnessTexture.index})
+            if (int s = textureSource(t, who); s >= 0) images.insert(s);
+    }
+    return std::max<std::size_t>(images.size(), 1);
+}
+
+// The decoded image, or null (with a warning) when it is missing or unreadable.
+ImageData const* SceneBuilder::decoded(int image) {
+    auto found = decoded_.find(image);
+    if (found != decoded_.end()) return found->second ? &*found->second : nullptr;
+    auto const& src = model_.images[std::size_t(image)];
+    std::string const label = "image " + std::to_string(image) + (src.uri.empty() || src.uri.rfind("data:", 0) == 0
+                                                                       ? std::string()
+                                                                       : " ('" + printable(src.uri, 80) + "')");
+    std::span<std::uint8_t const> bytes;
+    if (src.bufferView >= 0) {
+        bytes = reader_.bufferView(src.bufferView, "image " + std::to_string(image));
+    } else if (auto it = stash_.encoded.find(image); it != stash_.encoded.end()) {
+        bytes = it->second;
+    }
+    std::optional<ImageData> result;
+    if (bytes.empty()) {
+        scene_.warnings.push_back(label + " is missing; a placeholder texture is shown instead");
+    } else {
+        DecodedImage d = decodeImage(bytes, src.name.empty() ? label : src.name,
+                                     src.mimeType.empty() ? std::string_view(src.uri) : std::string_view(src.mimeType),
+                                     options_.maxImagePixels);
+        if (d.overLimit) fail(label + ": " + d.error);
+        if (!d.image) scene_.warnings.push_back(label + " cannot be used (" + d.error + "); a placeholder texture is shown instead");
+        result = std::move(d.image);
+    }
+    ++imagesDecoded_;
+    progress_.report(0.1f + 0.5f * float(imagesDecoded_) / float(imagesToDecode_), "decoding images");
+    auto const& stored = decoded_.emplace(image, std::move(result)).first->second;
+    return stored ? &*stored : nullptr;
+}
+
+// Index into scene_.images for a glTF image used as colour (sRGB) or as data (linear).
+int SceneBuilder::sceneImage(int image, bool srgb) {
+    auto const key = std::make_pair(image, srgb);
+    if (auto it = sceneImages_.find(key); it != sceneImages_.end()) return it->second;
+    ImageData const* img = decoded(image);
+    ImageData copy = img ? *img : placeholderImage("placeholder for image " + std::to_string(image));
+    copy.srgb = srgb;
+    scene_.images.push_back(std::move(copy));
+    int const index = int(scene_.images.size() - 1);
+    sceneImages_.emplace(key, index);
+    return index;
+}
+
+int SceneBuilder::material(int index) {
+    if (auto it = materials_.find(index); it != materials_.end()) return it->second;
+    auto const& src = model_.materials[std::size_t(index)];
+    std::string const who = "material " + std::to_string(index);
+    Material mat;
+    mat.name = src.name.empty() ? who : src.name;
+    auto const& pbr = src.pbrMetallicRoughness;
+    if (pbr.baseColorFactor.size() == 4)
+        mat.baseColorFactor = glm::clamp(glm::vec4(float(pbr.baseColorFactor[0]), float(pbr.baseColorFactor[1]),
+                                                   float(pbr.baseColorFactor[2]), float(pbr.baseColorFactor[3])),
+                                         0.0f, 1.0f);
+    else if (!pbr.baseColorFactor.empty())
+        scene_.warnings.push_back(who + "'s baseColorFactor does not have 4 numbers; white is used");
+    auto noteTexCoord = [&](int texCoord, char const* what) {
+        if (texCoord != 0)
+            scene_.warnings.push_back(who + "'s " + what + " uses TEXCOORD_" + std::to_string(texCoord) +
+                                      "; only TEXCOORD_0 is loaded");
+    };
+    if (int s = textureSource(pbr.baseColorTexture.index, who); s >= 0) {
+        mat.baseColorTexture = sceneImage(s, true);
+        noteTexCoord(pbr.baseColorTexture.texCoord, "base colour texture");
+    }
+    if (int s = textureSource(src.normalTexture.index, who); s >= 0) {
+        mat.normalTexture = sceneImage(s, false);
+        mat.normalScale = std::isfinite(src.normalTexture.scale) ? float(src.normalTexture.scale) : 1.0f;
+        noteTexCoord(src.normalTexture.texCoord, "normal texture");
+    }
+
+    // Specular intensity: docs/gltf.md, "glTF materials and lights".
+    float weight = 1.0f;
+    int specularImage = -1;
+    Json const* specExt = nullptr;
+    if (Json const* mats = member(doc_, "materials"); mats && std::size_t(index) < mats->size())
+        if (Json const* ext = member((*mats)[std::size_t(index)], "extensions"))
+            specExt = member(*ext, "KHR_materials_specular");
+    if (specExt) {
+        requireKind(*specExt, Kind::Object, who + "'s KHR_materials_specular");
+        if (Json const* f = member(*specExt, "specularFactor")) {
+            requireKind(*f, Kind::Number, who + "'s specularFactor");
+            weight = f->get<float>();
+        }
+        if (Json const* f = member(*specExt, "specularColorFactor")) {
+            requireKind(*f, Kind::NumberArray, who + "'s specularColorFactor");
+            float strongest = 0.0f;
+            for (auto const& c : *f) strongest = std::max(strongest, c.get<float>());
+            if (!f->empty()) weight *= strongest;
+        }
+        if (Json const* t = member(*specExt, "specularTexture")) {
+            requireKind(*t, Kind::Object, who + "'s specularTexture");
+            if (Json const* i = member(*t, "index")) {
+                requireKind(*i, Kind::Index, who + "'s specularTexture.index");
+                specularImage = textureSource(int(std::min<std::uint64_t>(i->get<std::uint64_t>(), INT_MAX)), who);
+            }
+        }
+    }
+    float const metallic = float(pbr.metallicFactor), roughness = float(pbr.roughnessFactor);
+    int const mrImage = textureSource(pbr.metallicRoughnessTexture.index, who);
+    ImageData const* mr = mrImage >= 0 ? decoded(mrImage) : nullptr;
+    ImageData const* sp = specularImage >= 0 ? decoded(specularImage) : nullptr;
+    if (mr || sp) {
+        // Bake once per distinct input: many materials share one texture set.
+        std::string const key = std::to_string(mr ? mrImage : -1) + "/" + std::to_string(sp ? specularImage : -1) + "/" +
+                                std::to_string(metallic) + "/" + std::to_string(roughness) + "/" + std::to_string(weight);
+        auto it = bakes_.find(key);
+        if (it == bakes_.end()) {
+            scene_.images.push_back(
+                bakeSpecularImage(mr, sp, metallic, roughness, weight, mat.name + " specular (baked)"));
+            it = bakes_.emplace(key, int(scene_.images.size() - 1)).first;
+        }
+        mat.specularTexture = it->second;
+        mat.specularFactor = 1.0f;
+    } else {
+        mat.specularFactor = specularFromMetallicRoughness(metallic, roughness, weight);
+    }
+
+    if (src.alphaMode == "MASK") mat.alphaMode = AlphaMode::Mask;
+    else if (src.alphaMode == "BLEND") mat.alphaMode = AlphaMode::Blend;
+    else if (src.alphaMode != "OPAQUE" && !src.alphaMode.empty())
+        scene_.warnings.push_back(who + " has an unknown alphaMode '" + printable(src.alphaMode, 20) + "'; drawn opaque");
+    mat.alphaCutoff = std::isfinite(src.alphaCutoff) ? float(src.alphaCutoff) : 0.5f;
+    mat.doubleSided = src.doubleSided;
+
+    scene_.materials.push_back(std::move(mat));
+    int const ours = int(scene_.materials.size() - 1);
+    materials_.emplace(index, ours);
+    return ours;
+}
+
+}  // namespace gbl::gltf

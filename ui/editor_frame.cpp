@@ -1,0 +1,262 @@
+// The editor's per-frame work outside the panels: the deferred frame, the G-buffer viewers and their
+// range fits, the inspector's sample, shader reloads, presenting, scripts, screenshots and timings.
+#include "editor_loop.h"
+
+#include "core/light_math.h"
+#include "model/image_range.h"
+#include "model/light_pick.h"
+#include "model/pixel_breakdown.h"
+#include "scene/default_scene.h"
+#include "script/screenshot.h"
+
+#include <epoxy/gl.h>
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+
+#include <cstdio>
+#include <limits>
+
+namespace gbl {
+
+namespace {
+
+using ui::EditorState;
+
+std::vector<PointLight> animatedLights(EditorState const& state) {
+    std::vector<PointLight> lights = state.lights;
+    if (state.animation.time != 0.0f) orbitLights(lights, state.orbitCenter, state.animation.time);
+    return lights;
+}
+
+// Refits viewer ranges that asked for it (button) or are on auto (about once a second).
+void fitViewerRanges(EditorState& state, Renderer& renderer, long frame) {
+    for (auto& v : state.gbuffer.viewers) {
+        // Auto-fit at the first frame with data, then about once a second (60 frames).
+        bool const autoDue = v.autoFit && (v.lastFitFrame < 0 || frame - v.lastFitFrame >= 60);
+        if (!v.fitRequested && !autoDue) continue;
+        v.fitRequested = false;
+        ui::ValueRange r;
+        switch (v.kind) {
+        case ui::ViewerKind::Position:
+            r = ui::fitRange(renderer.readAttachment(Attachment::Position), v.channelMask & 0x7, ui::RangeSkip::ZeroAlpha);
+            break;
+        case ui::ViewerKind::Depth:
+            r = ui::fitRange(renderer.readAttachment(Attachment::Depth), 0x1, ui::RangeSkip::FarDepth, v.linearDepth,
+                             v.cameraClipPlanes ? state.camera.nearPlane : v.nearPlane,
+                             v.cameraClipPlanes ? state.camera.farPlane : v.farPlane);
+            break;
+        case ui::ViewerKind::Albedo:
+        case ui::ViewerKind::Specular: {
+            unsigned const mask = v.kind == ui::ViewerKind::Specular ? 0x8u : (v.channelMask & 0x7);
+            r = ui::fitRange(renderer.readAttachment(Attachment::AlbedoSpec), mask, ui::RangeSkip::None);
+            break;
+        }
+        case ui::ViewerKind::Normal: continue;  // normals are shown as directions, not remapped
+        }
+        if (r.samples > 0) {
+            v.rangeMin = r.min;
+            v.rangeMax = r.max;
+            v.lastFitFrame = frame;
+        }
+    }
+}
+
+// Redraws the viewers whose picture is stale, plus one in turn (or all when asked to refresh every frame).
+void drawViewers(Editor& editor, FrameTimes& times) {
+    Renderer& renderer = *editor.renderer;
+    EditorGpu& gpu = editor.gpu;
+    ui::GBufferPanelState& gb = editor.state.gbuffer;
+    int const turn = gb.nextRefresh;
+    gb.nextRefresh = (gb.nextRefresh + 1) % int(gb.viewers.size());
+    for (std::size_t i = 0; i < gpu.viewTargets.size(); ++i) {
+        ui::ViewerState const& v = gb.viewers[i];
+        ViewParams const params = ui::viewerParams(v);
+        ViewTarget& target = gpu.viewTargets[i];
+        bool const stale = !target.texture || target.texture.width() != renderer.width() ||
+                           target.texture.height() != renderer.height() || !gpu.drawnParams[i] ||
+                           *gpu.drawnParams[i] != params;
+        if (gb.refreshEveryFrame || int(i) == turn || stale) {
+            Camera clip = editor.state.camera;
+            if (v.kind == ui::ViewerKind::Depth && !v.cameraClipPlanes) {
+                clip.nearPlane = v.nearPlane;
+                clip.farPlane = v.farPlane;
+            }
+            renderer.drawView(params, FrameInput{clip, editor.drawn, editor.state.pipeline}, target);
+            // Exact texels when zoomed in: the viewers are for reading values, not pictures.
+            target.texture.setFilter(GL_NEAREST, GL_NEAREST);
+            gpu.drawnParams[i] = params;
+        }
+        times.viewerTextures[i] = target.texture.id();
+    }
+    fitViewerRanges(editor.state, renderer, editor.frame);
+}
+
+// The pixel inspector's sample and its breakdown into per-light terms.
+void samplePixel(Editor& editor) {
+    Renderer& renderer = *editor.renderer;
+    ui::PixelInspectorState& inspector = editor.state.inspector;
+    if (inspector.pixel && inspector.pixel->x < renderer.width() && inspector.pixel->y < renderer.height()) {
+        inspector.sample = renderer.samplePixel(inspector.pixel->x, inspector.pixel->y, editor.state.camera);
+        inspector.breakdown = ui::breakDownPixel(*inspector.sample, editor.drawn, editor.state.camera, editor.state.pipeline);
+        inspector.breakdownNote = inspector.breakdown ? "" : "background: no surface, no lights";
+    } else {
+        inspector.sample.reset();
+        inspector.breakdown.reset();
+        inspector.breakdownNote = "no pixel";
+    }
+}
+
+// A measurement waits for the GPU at each boundary so the times belong to their part.
+void finishIfMeasuring(FrameTimes const& times) {
+    if (times.measuring) glFinish();
+}
+
+void printMeasurement(ui::CostMeasurement const& m, glm::ivec2 window, glm::ivec2 viewport, int lights) {
+    double const n = std::max(m.frames, 1);
+    double const editor = (m.viewersMs + m.uiMs + m.imguiMs) / n;
+    double const frame = m.frameMs / n;
+    std::printf("editor cost over %d frames, window %dx%d, viewport %dx%d, %d lights:\n", m.frames, window.x, window.y,
+                viewport.x, viewport.y, lights);
+    std::printf("  renderer frame   %8.2f ms\n", m.renderMs / n);
+    std::printf("  viewers          %8.2f ms  (view passes, range fits, pixel sample)\n", m.viewersMs / n);
+    std::printf("  UI build         %8.2f ms  (all panels, CPU)\n", m.uiMs / n);
+    std::printf("  ImGui draw       %8.2f ms\n", m.imguiMs / n);
+    std::printf("  whole frame      %8.2f ms\n", frame);
+    std::printf("  editor share     %8.1f %%  (viewers + UI build + ImGui draw) / whole frame\n",
+                frame > 0.0 ? 100.0 * editor / frame : 0.0);
+    std::fflush(stdout);
+}
+
+}  // namespace
+
+// Selects the light whose cube is under the pixel. With a depth step the cubes are hidden by
+// walls, so only cubes in front of the surface at that pixel can be hit; without one they show
+// through walls and are pickable through them too, as drawn.
+void pickLightAt(EditorState& state, Renderer& renderer, std::span<PointLight const> drawn, glm::ivec2 pixel) {
+    glm::vec2 const size(float(renderer.width()), float(renderer.height()));
+    ui::Ray const ray = ui::cameraRay(state.camera, glm::vec2(pixel), size);
+    float maxDistance = std::numeric_limits<float>::max();
+    if (state.pipeline.depthCopy != DepthCopy::Off) {
+        PixelSample const s = renderer.samplePixel(pixel.x, pixel.y, state.camera);
+        // A little past the surface so a cube resting on it is still hit.
+        if (s.covered) maxDistance = glm::length(glm::vec3(s.position) - state.camera.position) * 1.001f + 1e-3f;
+    }
+    int const hit = ui::pickLight(ray, drawn, renderer.lightCubeHalfSize(), maxDistance);
+    if (hit >= 0) {
+        state.lightsPanel.selected = hit;
+        state.lightsPanel.message.clear();
+    }
+}
+
+bool beginFrame(Editor& editor, FrameTimes& times) {
+    times.start = EditorClock::now();
+    times.dt = float(std::chrono::duration<double>(times.start - editor.lastFrame).count());
+    editor.lastFrame = times.start;
+    glfwPollEvents();
+    glfwGetFramebufferSize(editor.window(), &times.fbWidth, &times.fbHeight);
+    if ((times.fbWidth == 0 || times.fbHeight == 0) && !editor.unattended) {
+        // Minimised: nothing to draw into; wait instead of spinning.
+        glfwWaitEventsTimeout(0.1);
+        return false;
+    }
+    ++editor.frame;
+    times.measuring = editor.state.measurement.remaining > 0;
+    return true;
+}
+
+void renderScene(Editor& editor, FrameTimes& times) {
+    EditorState& state = editor.state;
+    Renderer& renderer = *editor.renderer;
+    // A finished load becomes the scene before this frame renders; requested ones start.
+    if (ui::updateSceneLoading(editor.loading, editor.defaultLightCount, state,
+                               [&](SceneData const& scene) { return renderer.setScene(scene); }))
+        editor.sessions->sceneChanged(state);
+
+    // The deferred frame, at the size the viewport had last frame.
+    if (state.viewport.size != glm::ivec2(renderer.width(), renderer.height()))
+        renderer.resizeTargets(state.viewport.size.x, state.viewport.size.y);
+    if (state.animation.enabled) state.animation.time += times.dt * state.animation.speed;
+    editor.drawn = animatedLights(state);
+    finishIfMeasuring(times);
+    auto t0 = EditorClock::now();
+    if (renderer.width() > 0 && renderer.height() > 0)
+        // Interactive frames take the previous frame's GPU timings instead of waiting for
+        // this one's; a measurement waits anyway (glFinish), so it can have exact ones.
+        times.frameStats = renderer.render(FrameInput{state.camera, editor.drawn, state.pipeline, times.measuring});
+    finishIfMeasuring(times);
+    times.renderMs = msSince(t0);
+
+    // Viewers, range fits and the pixel inspector's sample.
+    t0 = EditorClock::now();
+    editor.gpu.timer.begin("viewers");
+    if (renderer.width() > 0 && renderer.height() > 0 && state.gbuffer.visible) drawViewers(editor, times);
+    editor.gpu.timer.end();
+    samplePixel(editor);
+    finishIfMeasuring(times);
+    times.viewersMs = msSince(t0);
+}
+
+void reloadShaders(Editor& editor) {
+    if (std::chrono::duration<double>(EditorClock::now() - editor.lastReload).count() < 1.0) return;
+    editor.lastReload = EditorClock::now();
+    for (auto const& message : editor.renderer->reloadChangedShaders()) {
+        bool const failed = message.find("fail") != std::string::npos || message.find("error") != std::string::npos;
+        ui::logMessage(editor.state.log, message, failed);
+    }
+}
+
+void present(Editor& editor, FrameTimes& times) {
+    auto const t0 = EditorClock::now();
+    editor.gpu.timer.begin("imgui");
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, times.fbWidth, times.fbHeight);
+    glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    editor.gpu.timer.end();
+    finishIfMeasuring(times);
+    times.imguiMs = msSince(t0);
+    times.cost.uiCpuMs = times.uiMs;
+    for (auto const& [name, ms] : editor.gpu.timer.finishFrame(false)) {
+        if (name == "viewers") times.cost.viewersGpuMs = ms;
+        if (name == "imgui") times.cost.imguiGpuMs = ms;
+    }
+
+    EditorOptions const& options = editor.options;
+    EditorState& state = editor.state;
+    if (editor.script) {
+        editor.script->step(*editor.host);
+        if (editor.script->finished()) state.quitRequested = true;
+    }
+    int const screenshotFrames = options.frames > 0 ? options.frames : 5;
+    if (options.screenshotPath && editor.frame == screenshotFrames) {
+        if (auto error = ui::writePng(editor.host->readWindow(), *options.screenshotPath)) {
+            std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
+            editor.exitCode = 2;
+        }
+        state.quitRequested = true;
+    }
+    if (!options.screenshotPath && !editor.script && options.frames > 0 && editor.frame >= options.frames)
+        state.quitRequested = true;
+
+    glfwSwapBuffers(editor.window());
+}
+
+void recordFrame(Editor& editor, FrameTimes const& times) {
+    ui::EditorCost cost = times.cost;
+    cost.frameCpuMs = msSince(times.start);
+    ui::recordFrame(editor.state.stats, times.frameStats, cost);
+    if (!times.measuring) return;
+    ui::CostMeasurement& m = editor.state.measurement;
+    ++m.frames;
+    m.renderMs += times.renderMs;
+    m.viewersMs += times.viewersMs;
+    m.uiMs += times.uiMs;
+    m.imguiMs += times.imguiMs;
+    m.frameMs += cost.frameCpuMs;
+    if (--m.remaining == 0)
+        printMeasurement(m, {times.fbWidth, times.fbHeight}, {editor.renderer->width(), editor.renderer->height()},
+                         int(editor.drawn.size()));
+}
+
+}  // namespace gbl

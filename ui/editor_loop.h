@@ -1,0 +1,153 @@
+// What the editor's main-loop steps share, and the steps themselves (runEditor in editor.cpp calls them in order).
+#pragma once
+
+#include "editor.h"
+#include "gl/caps.h"
+#include "gl/gpu_timer.h"
+#include "gpu/view_target.h"
+#include "model/editor_state.h"
+#include "model/scene_loading.h"
+#include "renderer.h"
+#include "script/ui_script.h"
+#include "session_controller.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <array>
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace gbl {
+
+using EditorClock = std::chrono::steady_clock;
+
+double msSince(EditorClock::time_point t0);
+
+// GPU objects the editor owns beside the renderer's.
+struct EditorGpu {
+    std::array<ViewTarget, 5> viewTargets;                 // one per G-buffer viewer
+    std::array<std::optional<ViewParams>, 5> drawnParams;  // what each target last showed
+    GpuTimer timer;                                        // the editor's own GPU work, for the Stats window
+};
+
+// Key presses (edges, not held keys) the editor reacts to outside ImGui widgets.
+struct KeyEdges {
+    bool wasDown[GLFW_KEY_LAST + 1] = {};
+    bool pressed(GLFWwindow* window, int key) {
+        bool const down = glfwGetKey(window, key) == GLFW_PRESS;
+        bool const edge = down && !wasDown[key];
+        wasDown[key] = down;
+        return edge;
+    }
+};
+
+// The GLFW library and the editor's window; terminates GLFW when it goes.
+struct GlfwSession {
+    GlfwSession() = default;
+    GlfwSession(GlfwSession const&) = delete;
+    GlfwSession& operator=(GlfwSession const&) = delete;
+    ~GlfwSession() {
+        if (window) glfwDestroyWindow(window);
+        glfwTerminate();
+    }
+    GLFWwindow* window = nullptr;
+};
+
+// What the Edit menu asked for this frame.
+struct EditRequest {
+    bool undo = false;
+    bool redo = false;
+};
+
+// Wall-clock times of one frame's parts, for the editor cost measurement.
+struct FrameTimes {
+    EditorClock::time_point start;
+    bool measuring = false;  // a measurement waits for the GPU (glFinish) at each boundary
+    double renderMs = 0.0;
+    double viewersMs = 0.0;
+    double uiMs = 0.0;
+    double imguiMs = 0.0;
+    FrameStats frameStats;
+    ui::EditorCost cost;  // the editor's own CPU and GPU costs, for the Stats window
+    std::array<unsigned, 5> viewerTextures{};
+    int fbWidth = 0;
+    int fbHeight = 0;
+    float dt = 0.0f;
+};
+
+// Everything the steps share. Members are torn down in reverse order: the load job before the
+// sessions, those before the renderer, the renderer while GLFW's context is still current.
+struct Editor {
+    explicit Editor(EditorOptions const& options) : options(options) {}
+
+    EditorOptions const& options;
+    GlfwSession glfw;
+    GlCaps caps;
+    bool unattended = false;  // screenshots, UI tests, frame counts: no vsync, layout file or recovery
+    int defaultLightCount = 32;
+
+    std::optional<ui::UiScript> script;
+    ui::EditorState state;
+    std::unique_ptr<Renderer> renderer;
+    ui::SceneLoader sceneLoader;
+    std::optional<ui::SessionController> sessions;
+    ui::SceneLoadingState loading;
+    std::optional<ui::ScriptHost> host;
+    std::string iniPath;  // imgui.ini in the user's config folder; ImGui keeps a pointer to it
+
+    EditorGpu gpu;
+    KeyEdges keys;
+    std::vector<PointLight> drawn;  // this frame's lights (animated)
+    long frame = 0;
+    int exitCode = 0;
+    EditorClock::time_point lastFrame = EditorClock::now();
+    EditorClock::time_point lastReload = EditorClock::now();
+
+    GLFWwindow* window() const { return glfw.window; }
+};
+
+// --- window and start-up (editor_window.cpp) -------------------------------------------------
+
+// Checks the options, loads the test script and opens the window with a GL 3.3 core context;
+// nullopt on success, else the exit code.
+std::optional<int> openWindow(Editor& editor);
+// Starts the renderer, loads the first scene and session, sets up crash recovery; nullopt or the exit code.
+std::optional<int> startEditor(Editor& editor);
+// Creates the ImGui context and backends; imgui.ini goes to the user's config folder.
+void initImGui(Editor& editor);
+// Answers the UI test script's questions about this editor (ui/script/ui_script.h, ScriptHost).
+void connectScriptHost(Editor& editor);
+// Reports the script's outcome, ends the session cleanly and releases ImGui and GL objects; the exit code.
+int shutdownEditor(Editor& editor);
+
+// --- the frame (editor_frame.cpp) -------------------------------------------------------------
+
+// Polls events and starts the frame's clock; false when the window is minimised (skip the frame).
+bool beginFrame(Editor& editor, FrameTimes& times);
+// Finished scene loads, the deferred frame at the viewport's size, the viewers and the inspector's sample.
+void renderScene(Editor& editor, FrameTimes& times);
+// Picks shaders changed on disk, about once a second.
+void reloadShaders(Editor& editor);
+// Clears the window and draws ImGui's lists, runs the script, takes the screenshot and swaps.
+void present(Editor& editor, FrameTimes& times);
+// The Stats window's numbers and the cost measurement (printed when it completes).
+void recordFrame(Editor& editor, FrameTimes const& times);
+
+// Selects the light whose cube is under the viewport pixel.
+void pickLightAt(ui::EditorState& state, Renderer& renderer, std::span<PointLight const> drawn, glm::ivec2 pixel);
+
+// --- the UI (editor_panels.cpp, editor_requests.cpp) ------------------------------------------
+
+// Starts the ImGui frame and draws the menu bar and every panel; returns what the Edit menu asked for.
+EditRequest drawPanels(Editor& editor, FrameTimes const& times);
+// What the panels asked for and the shortcuts: picking, inspector, camera, sessions, undo.
+void handleRequests(Editor& editor, FrameTimes const& times, EditRequest const& edit);
+// Where an editor window falls short of usable; empty when it is visible (for UI test checks).
+std::string windowProblem(ui::EditorWindow which);
+
+}  // namespace gbl

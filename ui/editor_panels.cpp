@@ -1,0 +1,113 @@
+// The editor's UI build: the ImGui frame, the main menu bar and every panel, and the UI tests'
+// check that an editor window is usable.
+#include "editor_loop.h"
+
+#include "panels/gui_compat.h"
+#include "panels/layout.h"
+#include "panels/panel_gbuffer.h"
+#include "panels/panel_lights.h"
+#include "panels/panel_log.h"
+#include "panels/panel_pipeline.h"
+#include "panels/panel_pixel_inspector.h"
+#include "panels/panel_scene_loading.h"
+#include "panels/panel_stats.h"
+#include "panels/panel_viewport.h"
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+#include <imgui_internal.h>
+
+namespace gbl {
+
+namespace {
+
+using ui::EditorState;
+
+// The selected light's centre in the viewport image (0..1, top-left origin), when in front.
+std::optional<glm::vec2> selectedLightInImage(EditorState const& state, std::span<PointLight const> drawn,
+                                              Renderer const& renderer) {
+    int const i = state.lightsPanel.selected;
+    if (i < 0 || i >= int(drawn.size()) || renderer.width() <= 0 || renderer.height() <= 0) return std::nullopt;
+    float const aspect = float(renderer.width()) / float(renderer.height());
+    glm::vec4 const clip = state.camera.projection(aspect) * state.camera.view() * glm::vec4(drawn[std::size_t(i)].position, 1.0f);
+    if (clip.w <= state.camera.nearPlane) return std::nullopt;
+    glm::vec2 const ndc = glm::vec2(clip) / clip.w;
+    return glm::vec2(ndc.x * 0.5f + 0.5f, 0.5f - ndc.y * 0.5f);
+}
+
+EditRequest drawMainMenu(EditorState& state, GlCaps const& caps, ui::SessionController& sessions,
+                         ui::SceneLoadingState& loading) {
+    EditRequest edit;
+    if (!ImGui::BeginMainMenuBar()) return edit;
+    if (ImGui::BeginMenu("File")) {
+        ui::drawSceneMenuItems(loading);
+        ImGui::Separator();
+        ui::drawSessionMenuItems(sessions.panel);
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit")) state.quitRequested = true;
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit")) {
+        if (ImGui::MenuItem("Undo", "Ctrl+Z", false, sessions.history().canUndo())) edit.undo = true;
+        if (ImGui::MenuItem("Redo", "Ctrl+Y", false, sessions.history().canRedo())) edit.redo = true;
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+        if (ImGui::MenuItem("Reset layout", nullptr, false, ui::kHasDocking)) state.layout.resetRequested = true;
+        if (!ui::kHasDocking && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip("this ImGui build has no docking: the windows are tiled and always in place");
+        if (ImGui::MenuItem("Frame scene", "F")) ui::frameBounds(state.rig, state.camera, state.sceneBounds);
+        ImGui::EndMenu();
+    }
+    // Status on the right: context and the newest log line.
+    std::string status = caps.renderer + " | GL " + std::to_string(caps.major) + "." + std::to_string(caps.minor);
+    if (!state.log.lines.empty()) status = state.log.lines.back() + "   " + status;
+    float const width = ImGui::CalcTextSize(status.c_str()).x;
+    float const x = ImGui::GetWindowWidth() - width - 12.0f;
+    if (x > ImGui::GetCursorPosX()) {
+        ImGui::SetCursorPosX(x);
+        ImGui::TextDisabled("%s", status.c_str());
+    }
+    ImGui::EndMainMenuBar();
+    return edit;
+}
+
+}  // namespace
+
+std::string windowProblem(ui::EditorWindow which) {
+    ImGuiWindow const* w = ImGui::FindWindowByName(ui::windowName(which));
+    if (!w) return "does not exist";
+    if (!w->Active) return "was not drawn this frame";
+    if (w->Hidden) return "is hidden";
+    if (w->Collapsed) return "is collapsed";
+    if (w->Size.x < 40.0f || w->Size.y < 40.0f) return "is too small to use";
+    ImVec2 const display = ImGui::GetIO().DisplaySize;
+    if (w->Pos.x < -1.0f || w->Pos.y < -1.0f || w->Pos.x + w->Size.x > display.x + 1.0f ||
+        w->Pos.y + w->Size.y > display.y + 1.0f)
+        return "extends past the window";
+    return {};
+}
+
+EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
+    EditorState& state = editor.state;
+    Renderer const& renderer = *editor.renderer;
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    EditRequest const edit = drawMainMenu(state, editor.caps, *editor.sessions, editor.loading);
+    ui::beginLayout(state.layout);
+    ui::drawLightsPanel(state.lightsPanel, state.lights, state.animation, state.sceneBounds);
+    ui::drawPipelinePanel(state.pipeline,
+                          ui::modeReasons([&](LightingMode m) { return editor.renderer->modeUnavailable(m); }));
+    ui::drawViewportPanel(state.viewport, state.pipeline, renderer.texture(Attachment::Final),
+                          {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer));
+    ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()});
+    ui::drawPixelInspectorPanel(state.inspector);
+    ui::drawStatsPanel(state.stats, editor.caps, int(state.lights.size()));
+    ui::drawLogPanel(state.log);
+    ui::drawSceneLoadingUi(editor.loading);
+    return edit;
+}
+
+}  // namespace gbl

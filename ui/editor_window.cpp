@@ -1,0 +1,280 @@
+// The editor's start and end: options, GLFW window and GL context, renderer, first scene and session,
+// ImGui and its layout file, the UI test script's host, and the orderly shutdown.
+#include "editor_loop.h"
+
+#include "gltf/loader.h"
+#include "panels/gui_compat.h"
+#include "panels/panel_log.h"
+#include "panels/panel_scene_loading.h"
+#include "scene/default_scene.h"
+#include "script/screenshot.h"
+#include "session/config_dir.h"
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+#include <imgui_internal.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+#include <unistd.h>
+
+namespace gbl {
+
+namespace {
+
+// GLFW reports errors through a C callback without a user pointer; the latest one is kept so
+// start-up failures can say why in one sentence.
+std::string gLastGlfwError;
+
+void onGlfwError(int, char const* description) { gLastGlfwError = description ? description : "unknown error"; }
+
+bool displayAvailable() {
+#if defined(__linux__) || defined(__FreeBSD__)
+    char const* x11 = std::getenv("DISPLAY");
+    char const* wayland = std::getenv("WAYLAND_DISPLAY");
+    return (x11 && *x11) || (wayland && *wayland);
+#else
+    return true;
+#endif
+}
+
+void printNoDisplay(std::string const& why) {
+    std::fprintf(stderr,
+                 "gbuffer-lab: no display (%s): the editor needs a window; use `gbuffer-lab render --out DIR` to "
+                 "render without one, or run the editor under xvfb-run.\n",
+                 why.c_str());
+}
+
+// Parses "3.3" into (3, 3); empty means no limit.
+bool parseGlLimit(std::string const& text, int& major, int& minor) {
+    major = minor = 0;
+    if (text.empty()) return true;
+    return std::sscanf(text.c_str(), "%d.%d", &major, &minor) == 2 && major >= 3;
+}
+
+// Loads a glTF file (or builds the default scene when path is empty) on this thread and installs
+// it (ui/model/scene_loading.h, installScene). Start-up and sessions use it; File > Open, drops and
+// scripts load on a worker instead (updateSceneLoading). On failure the current scene and
+// state stay as they were and an error sentence is returned.
+std::optional<std::string> loadScene(std::optional<std::string> const& path, int defaultLightCount, bool allowOutsideUris,
+                                     ui::EditorState& state, Renderer& renderer) {
+    auto const upload = [&renderer](SceneData const& scene) { return renderer.setScene(scene); };
+    if (!path) return ui::installScene(makeDefaultScene({}), false, defaultLightCount, state, upload);
+    GltfLoadOptions gltfOptions;
+    gltfOptions.allowOutsideUris = allowOutsideUris;
+    GltfLoadResult result = loadGltf(*path, gltfOptions);
+    if (!result.scene) return result.error;
+    return ui::installScene(*result.scene, true, defaultLightCount, state, upload);
+}
+
+// GLFW's drop callback has no closure: the window's user pointer is the loading state.
+void onFilesDropped(GLFWwindow* window, int count, char const** paths) {
+    auto* loading = static_cast<ui::SceneLoadingState*>(glfwGetWindowUserPointer(window));
+    if (!loading) return;
+    for (int i = 0; i < count; ++i) loading->dropped.emplace_back(paths[i]);
+}
+
+// The layout file in the user's config folder; empty (no layout file) when there is none to be had.
+std::string layoutFilePath(ui::LogState& log) {
+    std::optional<std::string> const dir = ui::configDir();
+    std::string why;
+    if (!dir) why = "neither XDG_CONFIG_HOME nor HOME names a folder";
+    else if (auto error = ui::ensureConfigDir(*dir)) why = *error;
+    if (why.empty()) return ui::configFile(*dir, "imgui.ini");
+    std::string const line = "window layout not saved: " + why;
+    std::fprintf(stderr, "gbuffer-lab: %s\n", line.c_str());
+    ui::logMessage(log, line, true);
+    return {};
+}
+
+}  // namespace
+
+double msSince(EditorClock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(EditorClock::now() - t0).count();
+}
+
+std::optional<int> openWindow(Editor& editor) {
+    EditorOptions const& options = editor.options;
+    if (!displayAvailable()) {
+        printNoDisplay("neither DISPLAY nor WAYLAND_DISPLAY is set");
+        return 1;
+    }
+    int limitMajor = 0, limitMinor = 0;
+    if (!parseGlLimit(options.glLimit, limitMajor, limitMinor)) {
+        std::fprintf(stderr, "gbuffer-lab: --gl \"%s\" is not a version like 3.3 (at least 3.3).\n", options.glLimit.c_str());
+        return 2;
+    }
+    if (options.width <= 0 || options.height <= 0) {
+        std::fprintf(stderr, "gbuffer-lab: the window size must be at least 1x1 (got %dx%d).\n", options.width, options.height);
+        return 2;
+    }
+    if (options.uiTestScript) {
+        std::string error;
+        editor.script = ui::UiScript::load(*options.uiTestScript, &error);
+        if (!editor.script) {
+            std::fprintf(stderr, "gbuffer-lab: %s\n", error.c_str());
+            return 2;
+        }
+    }
+
+    glfwSetErrorCallback(onGlfwError);
+    if (!glfwInit()) {
+        printNoDisplay(gLastGlfwError);
+        return 1;
+    }
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    // macOS only hands out core contexts that are forward-compatible.
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+    editor.glfw.window = glfwCreateWindow(options.width, options.height, "gbuffer-lab", nullptr, nullptr);
+    if (!editor.glfw.window) {
+        std::fprintf(stderr, "gbuffer-lab: could not open an OpenGL 3.3 core window: %s\n", gLastGlfwError.c_str());
+        return 1;
+    }
+    glfwMakeContextCurrent(editor.window());
+    editor.unattended = options.screenshotPath || options.uiTestScript || options.frames > 0;
+    glfwSwapInterval(options.vsync && !editor.unattended ? 1 : 0);
+    editor.caps = detectGlCaps(limitMajor, limitMinor);
+    return std::nullopt;
+}
+
+std::optional<int> startEditor(Editor& editor) {
+    EditorOptions const& options = editor.options;
+    ui::EditorState& state = editor.state;
+    try {
+        editor.renderer = std::make_unique<Renderer>(editor.caps, 0, 0);
+    } catch (std::exception const& e) {
+        std::fprintf(stderr, "gbuffer-lab: the renderer could not start on %s (%s): %s\n", editor.caps.renderer.c_str(),
+                     editor.caps.version.c_str(), e.what());
+        return 1;
+    }
+    editor.defaultLightCount = options.lightCount.value_or(32);
+    if (auto error = loadScene(options.scenePath, editor.defaultLightCount, options.allowOutsideUris, state, *editor.renderer)) {
+        std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
+        return 2;
+    }
+    editor.sceneLoader = [&editor](std::string const& scene, int lightCount) {
+        std::optional<std::string> path;
+        if (scene != "default") path = scene;
+        return loadScene(path, lightCount, editor.options.allowOutsideUris, editor.state, *editor.renderer);
+    };
+    // Crash recovery for interactive runs. Unattended runs (screenshots, UI tests) neither
+    // offer nor leave autosaves unless a test asks for it with GBL_RECOVERY_DIR.
+    std::optional<ui::RecoveryDir> recoveryDir;
+    char const* recoveryEnv = std::getenv("GBL_RECOVERY_DIR");
+    if (!editor.unattended || (recoveryEnv && *recoveryEnv)) recoveryDir.emplace(ui::defaultRecoveryDir());
+    ui::SessionController& sessions = editor.sessions.emplace(ui::steadyClock(), recoveryDir, long(::getpid()));
+    sessions.start(state, editor.defaultLightCount);
+    if (options.sessionPath) {
+        if (auto error = sessions.openSession(*options.sessionPath, state, editor.sceneLoader)) {
+            std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
+            sessions.endCleanly();  // a refused file is a clean exit, not a crash to recover from
+            return 2;
+        }
+    }
+    for (LightingMode mode : {LightingMode::Volumes, LightingMode::Tiled})
+        if (auto why = editor.renderer->modeUnavailable(mode)) ui::logMessage(state.log, *why);
+    // Scenes opened from the menu, by drag-and-drop or by scripts load on a worker thread.
+    editor.loading.allowOutsideUris = options.allowOutsideUris;
+    if (options.scenePath) ui::rememberRecentScene(editor.loading, *options.scenePath);
+    glfwSetWindowUserPointer(editor.window(), &editor.loading);
+    glfwSetDropCallback(editor.window(), onFilesDropped);
+    return std::nullopt;
+}
+
+void initImGui(Editor& editor) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    // Unattended runs must not depend on, or leave behind, a layout file; interactive ones keep
+    // it in the config folder, not in whatever directory the editor was started from.
+    if (!editor.unattended) editor.iniPath = layoutFilePath(editor.state.log);
+    io.IniFilename = editor.iniPath.empty() ? nullptr : editor.iniPath.c_str();
+    ui::enableConfigFlags(io);
+    ImGui::StyleColorsDark();
+    ui::loadFonts();
+    float xscale = 1.0f, yscale = 1.0f;
+    glfwGetWindowContentScale(editor.window(), &xscale, &yscale);
+    ui::applyContentScale(xscale);
+    ImGui_ImplGlfw_InitForOpenGL(editor.window(), true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+}
+
+void connectScriptHost(Editor& editor) {
+    ui::EditorState& state = editor.state;
+    ui::SessionController& sessions = *editor.sessions;
+    ui::ScriptHost& host = editor.host.emplace(ui::ScriptHost{.state = state, .renderer = *editor.renderer});
+    GLFWwindow* window = editor.window();
+    host.sceneLoading = &editor.loading;
+    host.windowProblem = windowProblem;
+    host.readWindow = [window] {
+        int w = 0, h = 0;
+        glfwGetFramebufferSize(window, &w, &h);
+        return ui::readWindow(w, h);
+    };
+    host.resizeWindow = [window](int w, int h) { glfwSetWindowSize(window, std::max(w, 1), std::max(h, 1)); };
+    host.clickViewport = [&editor](glm::ivec2 px) { pickLightAt(editor.state, *editor.renderer, editor.drawn, px); };
+    host.frameScene = [&state] { ui::frameBounds(state.rig, state.camera, state.sceneBounds); };
+    if (state.sceneSource == "default") host.defaultLights = [](int n) { return makeDefaultLights(n); };
+    host.openSession = [&editor](std::string const& path) {
+        return editor.sessions->openSession(path, editor.state, editor.sceneLoader);
+    };
+    host.saveSession = [&sessions, &state](std::string const& path) { return sessions.saveSession(path, state); };
+    host.undo = [&sessions, &state] { sessions.undo(state); };
+    host.redo = [&sessions, &state] { sessions.redo(state); };
+    host.recoveryOffered = [&sessions] { return sessions.panel.recoveryOffer.has_value(); };
+    host.autosaves = [&sessions] { return sessions.autosaves(); };
+    host.exportAll = [&editor](std::string const& dir) {
+        ui::EditorState const& s = editor.state;
+        return ui::SessionController::exportAll(
+            dir, *editor.renderer, FrameExport{s.camera, editor.drawn, s.pipeline, s.stats.last, s.sceneTriangles, {}});
+    };
+    host.exportViewer = [&editor](int viewer, bool raw, std::string const& path) {
+        return ui::SessionController::exportViewer(viewer, raw, path, editor.state, *editor.renderer);
+    };
+    host.acceptRecovery = [&editor] {
+        if (auto error = editor.sessions->restoreRecovery(editor.state, editor.sceneLoader))
+            ui::logMessage(editor.state.log, *error, true);
+    };
+    host.windowShown = [](std::string const& name) {
+        ImGuiWindow const* w = ImGui::FindWindowByName(name.c_str());
+        return w && w->Active && !w->Hidden;
+    };
+}
+
+int shutdownEditor(Editor& editor) {
+    // Stop a load still running (it ends at its next progress report) before the renderer goes.
+    editor.loading.job.reset();
+    glfwSetWindowUserPointer(editor.window(), nullptr);
+
+    if (editor.script) {
+        ui::UiScript const& script = *editor.script;
+        if (script.skipped()) {
+            std::printf("ui-test: skipped\n");
+        } else if (!script.finished()) {
+            std::printf("ui-test FAIL: the window closed before the script ended\n");
+            editor.exitCode = 1;
+        } else if (script.failures() > 0) {
+            std::printf("ui-test: %d check(s) failed\n", script.failures());
+            editor.exitCode = 1;
+        } else {
+            std::printf("ui-test: all checks passed\n");
+        }
+    }
+
+    editor.sessions->endCleanly();
+
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    // The renderer's GL objects go while the context is still current.
+    editor.gpu = EditorGpu{};
+    editor.renderer.reset();
+    return editor.exitCode;
+}
+
+}  // namespace gbl
