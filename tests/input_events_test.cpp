@@ -198,21 +198,27 @@ TEST(InputEvents, DoubleClickFollowsEventTimesAtAnyFrameRate) {
     EXPECT_FALSE(isDoubleClick(u, p, {40, 10}));
 }
 
-TEST(InputEvents, ReplayGivesAClickWithinOneFrameTwoFramesAtItsPlace) {
+TEST(InputEvents, ReplayGivesAClickWithinOneFrameItsOwnFramesAtItsPlace) {
     InputReplay r;
     // Move to the button, press, release, move away: all in one poll.
     std::vector<InputEvent> const poll{cursor(50, 60), button(0, kPress), button(0, kRelease), cursor(300, 300)};
     ReplayFrame const f1 = replayFrame(r, poll);
-    EXPECT_TRUE(r.buttons[0]) << "the press reaches ImGui this frame";
+    EXPECT_EQ(r.mouse, glm::dvec2(50, 60));
+    EXPECT_FALSE(r.buttons[0]) << "not in the frame the pointer jumped: ImGui would read the jump as a drag";
+    EXPECT_EQ(f1.events.size(), 1u);
+    replayFrame(r, {});
+    EXPECT_TRUE(r.buttons[0]) << "the press, alone in its frame";
     EXPECT_EQ(r.mouse, glm::dvec2(50, 60)) << "at the place it happened";
-    EXPECT_EQ(f1.events.size(), 2u);
-    ReplayFrame const f2 = replayFrame(r, {});
+    ReplayFrame const f3 = replayFrame(r, {});
     EXPECT_FALSE(r.buttons[0]) << "the release the next frame";
     EXPECT_EQ(r.mouse, glm::dvec2(50, 60)) << "still where it was released";
-    EXPECT_EQ(f2.events.size(), 1u);
+    EXPECT_EQ(f3.events.size(), 1u);
     replayFrame(r, {});
     EXPECT_EQ(r.mouse, glm::dvec2(300, 300));
     EXPECT_TRUE(r.pending.empty());
+    // A press where the pointer already is needs no extra frame.
+    replayFrame(r, std::vector<InputEvent>{cursor(300, 300), button(1, kPress)});
+    EXPECT_TRUE(r.buttons[1]);
 }
 
 TEST(InputEvents, ReplayDeliversADoubleClickAndFlagsTheSecondPress) {
@@ -221,7 +227,7 @@ TEST(InputEvents, ReplayDeliversADoubleClickAndFlagsTheSecondPress) {
                                  button(0, kRelease)};
     for (auto& e : poll) e.earliest = 0.0, e.time = 0.4;  // one poll at 2.5 fps
     int presses = 0, doubles = 0;
-    for (int frame = 0; frame < 6; ++frame) {
+    for (int frame = 0; frame < 8; ++frame) {
         bool const before = r.buttons[0];
         ReplayFrame const f = replayFrame(r, frame == 0 ? std::span<InputEvent const>(poll) : std::span<InputEvent const>());
         if (!before && r.buttons[0]) ++presses;

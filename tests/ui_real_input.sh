@@ -15,6 +15,9 @@ fi
 rm -rf "$work"
 mkdir -p "$work"
 log="$work/frames.jsonl"
+# Crash recovery files and the layout file stay inside the test's folder.
+export GBL_RECOVERY_DIR="$work/recovery" XDG_CONFIG_HOME="$work/config"
+mkdir -p "$GBL_RECOVERY_DIR" "$XDG_CONFIG_HOME"
 pid=""
 
 fail() {
@@ -81,15 +84,24 @@ echo "idle: $renders render(s) over 40 frames"
 ms=$(field frameMs)
 echo "frame time $ms ms"
 
-# --- a click with a 30 ms dwell selects the light under the pointer --------------------------
-pick=$(field pickable | sed 's/^\[\[\([^]]*\)\].*/\1/')
-[ -n "$pick" ] && [ "$pick" != "[]" ] || fail "no light cube in view to click on"
-light=$(echo "$pick" | cut -d, -f1)
-lx=$(echo "$pick" | awk -F, '{ printf "%d", $2 }')
-ly=$(echo "$pick" | awk -F, '{ printf "%d", $3 }')
+# pick_other: a light cube in view that is not the selected one; sets light, lx, ly.
+pick_other() {
+    selected=$(field selectedLight)
+    pick=$(last | sed -n 's/.*"pickable":\[\(.*\)\],"events".*/\1/p' | tr -d '[' | tr ']' '\n' | sed 's/^,//' | grep -v '^$' |
+        awk -F, -v s="$selected" '$1 != s { print; exit }')
+    [ -n "$pick" ] || fail "no light cube in view other than the selected one ($selected)"
+    light=$(echo "$pick" | cut -d, -f1)
+    lx=$(echo "$pick" | awk -F, '{ printf "%d", $2 }')
+    ly=$(echo "$pick" | awk -F, '{ printf "%d", $3 }')
+}
+
+# --- a click with a 30 ms dwell selects the light under the pointer, and does not orbit -------
+pick_other
+before=$(field camera)
 xdotool mousemove --window "$wid" "$lx" "$ly" mousedown 1 sleep 0.03 mouseup 1
-wait_frames 4
+wait_frames 5
 [ "$(field selectedLight)" = "$light" ] || fail "clicking light $light at $lx,$ly selected $(field selectedLight)"
+[ "$(field camera)" = "$before" ] || fail "the click moved the camera: $before -> $(field camera)"
 echo "click at $lx,$ly selected light $light"
 
 # --- a 20 ms F tap frames the selected light ---------------------------------------------------
@@ -122,13 +134,11 @@ wait_frames 4
 events_since "$mark" | grep -q "home-view" || fail "no home-view action logged"
 home=$(field camera)
 [ "$home" != "$after" ] || fail "Home did not move the camera from the framed light"
-pick=$(field pickable | sed 's/^\[\[\([^]]*\)\].*/\1/')
-[ -n "$pick" ] && [ "$pick" != "[]" ] || fail "no light cube in the home view"
-light=$(echo "$pick" | cut -d, -f1)
-lx=$(echo "$pick" | awk -F, '{ printf "%d", $2 }')
-ly=$(echo "$pick" | awk -F, '{ printf "%d", $3 }')
-xdotool mousemove --window "$wid" "$lx" "$ly" click --repeat 2 --delay 80 1
-wait_frames 6
+pick_other
+mark=$(lines)
+xdotool mousemove --window "$wid" "$lx" "$ly" sleep 0.2 click --repeat 2 --delay 80 1
+wait_frames 8
+events_since "$mark" | grep -q "double-click-frame" || fail "no double click seen on light $light"
 [ "$(field selectedLight)" = "$light" ] || fail "the double click did not select light $light"
 [ "$(field camera)" != "$home" ] || fail "the double click on light $light did not frame it"
 echo "double click framed light $light"

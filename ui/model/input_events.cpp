@@ -199,6 +199,7 @@ ReplayFrame replayFrame(InputReplay& replay, std::span<InputEvent const> incomin
     std::array<bool, keys::Last + 1> keyChanged{};
     std::array<bool, kMouseButtons> buttonChanged{};
     bool anyButtonChanged = false;
+    bool pointerMoved = false;
     while (!replay.pending.empty()) {
         InputEvent const e = replay.pending.front();
         if (e.kind == InputKind::Key && validKey(e.code) && e.action != kRepeat) {
@@ -208,6 +209,8 @@ ReplayFrame replayFrame(InputReplay& replay, std::span<InputEvent const> incomin
             replay.mods = modsFromKeys(replay.keysDown);
         } else if (e.kind == InputKind::MouseButton && validButton(e.code)) {
             if (buttonChanged[std::size_t(e.code)]) break;
+            // A press in the frame the pointer jumped to it would read the jump as a drag.
+            if (e.action == kPress && pointerMoved) break;
             buttonChanged[std::size_t(e.code)] = true;
             anyButtonChanged = true;
             bool const press = e.action == kPress;
@@ -216,6 +219,7 @@ ReplayFrame replayFrame(InputReplay& replay, std::span<InputEvent const> incomin
         } else if (e.kind == InputKind::Cursor) {
             // A move after a press or release this frame would put that click somewhere else.
             if (anyButtonChanged) break;
+            pointerMoved = pointerMoved || e.value != replay.mouse;
             replay.mouse = e.value;
         } else if (e.kind == InputKind::Scroll) {
             out.scroll += e.value;

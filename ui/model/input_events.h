@@ -192,8 +192,9 @@ bool isDoubleClick(ClickTracker& tracker, InputEvent const& press, glm::dvec2 po
 // ImGui 1.86 reads the mouse buttons, keys and pointer once per frame, so a press and release
 // between two frames, or a press and a move away, are lost. The replay applies the queued events
 // to a state ImGui reads, but ends a frame's share before a second change of the same key or
-// button and before a pointer move that follows a button change: each press and release then
-// reaches ImGui in its own frame, at the place it happened. The rest waits for the next frame.
+// button, before a pointer move that follows a button change and before a press that follows a
+// pointer move: each press and release then reaches ImGui in its own frame, at the place it
+// happened, with no pointer jump read as a drag. The rest waits for the next frame.
 struct InputReplay {
     std::deque<InputEvent> pending;
     glm::dvec2 mouse{-1.0e9};  // pointer in window coordinates; far away until the first move

@@ -11,6 +11,7 @@ namespace gbl::ui {
 
 struct ViewportState {
     glm::ivec2 size{0};  // image area in framebuffer pixels; the renderer follows it next frame
+    glm::vec4 imageRect{0.0f};  // the image in window coordinates: x, y, width, height
     bool hovered = false;
     std::optional<glm::ivec2> hoverPixel;  // renderer pixel under the mouse, origin top-left
     std::optional<glm::ivec2> clickPixel;  // a left click that was not a drag, this frame

@@ -101,12 +101,12 @@ inline bool escapePressed() {
 
 // Marks this frame's press of `button` as the second of a double click. Called after NewFrame,
 // which decides double clicks from frame times; the editor decides them from event times
-// instead (model/input_events.h), so they work at a few frames per second. 1.88+ also counts
-// clicks, and its widgets read the count.
+// instead (model/input_events.h), so they work at a few frames per second. 1.86 started
+// counting clicks, and from then on IsMouseDoubleClicked reads the count.
 inline void markDoubleClick(int button) {
     ImGuiIO& io = ImGui::GetIO();
     io.MouseDoubleClicked[button] = true;
-#if IMGUI_VERSION_NUM >= 18800
+#if IMGUI_VERSION_NUM >= 18600
     io.MouseClickedCount[button] = 2;
     io.MouseClickedLastCount[button] = 2;
 #endif

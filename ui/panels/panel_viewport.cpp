@@ -96,6 +96,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigne
     }
 
     ImVec2 const origin = ImGui::GetCursorScreenPos();
+    state.imageRect = glm::vec4(origin.x, origin.y, avail.x, avail.y);
     ImGui::InvisibleButton("viewport-image", avail,
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                ImGuiButtonFlags_MouseButtonMiddle);
