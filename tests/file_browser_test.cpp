@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 using namespace gbl::ui;
 namespace fs = std::filesystem;
@@ -105,7 +105,8 @@ TEST_F(TempTree, ConfirmGivesAnAbsolutePathAndRemembersThePlace) {
 TEST(FileBrowser, DefaultFolderIsAbsolute) {
     EXPECT_TRUE(fs::path(defaultFolder()).is_absolute());
     EXPECT_EQ(defaultFolder(), fs::current_path().string());
-    EXPECT_EQ(defaultFolder("session.json"), fs::current_path().string()) << "a relative name starts in the working folder";
+    EXPECT_EQ(defaultFolder("session.json"), fs::current_path().string())
+        << "a relative name starts in the working folder";
 }
 
 TEST(FileBrowser, RecentPlacesAreUniqueNewestFirstAndBounded) {

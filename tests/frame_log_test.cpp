@@ -20,6 +20,7 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     l.pickable = {{3, {100.5f, 200.0f}}};
     l.events = {"key 70 press mods 0 -> frame-selection", "quote \" and \\ and \n"};
     l.sessionPath = "/tmp/s.json";
+    l.clipped = {"Stats: content 330 px wide in 302 px"};
     nlohmann::json const j = nlohmann::json::parse(frameLogJson(l));
     EXPECT_EQ(j["frame"], 41);
     EXPECT_EQ(j["rendered"], true);
@@ -31,6 +32,7 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     EXPECT_EQ(j["events"][1], "quote \" and \\ and \n");
     EXPECT_EQ(j["session"], "/tmp/s.json");
     EXPECT_EQ(j["actions"].size(), 0u);
+    EXPECT_EQ(j["clipped"][0], "Stats: content 330 px wide in 302 px");
 }
 
 TEST(FrameLog, WritesOneLinePerFrame) {

@@ -89,11 +89,11 @@ TEST(InputEvents, ATapBetweenTwoFramesActsExactlyOnce) {
     EXPECT_EQ(a.taps[0], EditorAction::FrameSelection);
     EXPECT_TRUE(f.frame({}, 0.9).taps.empty());
     // Three Ctrl+Z taps of 100 ms within one slow frame: three undos.
-    FrameActions const z = f.frame({key(keys::LeftControl, kPress, kModControl), key(keys::Z, kPress, kModControl),
-                                    key(keys::Z, kRelease, kModControl), key(keys::Z, kPress, kModControl),
-                                    key(keys::Z, kRelease, kModControl), key(keys::Z, kPress, kModControl),
-                                    key(keys::Z, kRelease, kModControl), key(keys::LeftControl, kRelease)},
-                                   1.2);
+    FrameActions const z = f.frame(
+        {key(keys::LeftControl, kPress, kModControl), key(keys::Z, kPress, kModControl),
+         key(keys::Z, kRelease, kModControl), key(keys::Z, kPress, kModControl), key(keys::Z, kRelease, kModControl),
+         key(keys::Z, kPress, kModControl), key(keys::Z, kRelease, kModControl), key(keys::LeftControl, kRelease)},
+        1.2);
     EXPECT_EQ(z.taps, std::vector<EditorAction>(3, EditorAction::Undo));
 }
 
@@ -105,7 +105,8 @@ TEST(InputEvents, KeyRepeatDoesNotRetrigger) {
 
 TEST(InputEvents, CtrlSSavesAndDoesNotFlyBack) {
     Frames f;
-    FrameActions const a = f.frame({key(keys::LeftControl, kPress, kModControl), key(keys::S, kPress, kModControl)}, 0.2);
+    FrameActions const a =
+        f.frame({key(keys::LeftControl, kPress, kModControl), key(keys::S, kPress, kModControl)}, 0.2);
     EXPECT_EQ(a.taps, std::vector<EditorAction>{EditorAction::SaveSession});
     EXPECT_EQ(a.move, glm::vec3(0.0f));
     // Ctrl let go while S is still held: S was pressed for the save, it still must not fly.
@@ -229,7 +230,8 @@ TEST(InputEvents, ReplayDeliversADoubleClickAndFlagsTheSecondPress) {
     int presses = 0, doubles = 0;
     for (int frame = 0; frame < 8; ++frame) {
         bool const before = r.buttons[0];
-        ReplayFrame const f = replayFrame(r, frame == 0 ? std::span<InputEvent const>(poll) : std::span<InputEvent const>());
+        ReplayFrame const f =
+            replayFrame(r, frame == 0 ? std::span<InputEvent const>(poll) : std::span<InputEvent const>());
         if (!before && r.buttons[0]) ++presses;
         doubles += f.doubleClicked[0];
     }

@@ -77,7 +77,9 @@ void onFocus(GLFWwindow* window, int focused) {
     ImGui_ImplGlfw_WindowFocusCallback(window, focused);
 }
 
-void onCursorEnter(GLFWwindow* window, int entered) { ImGui_ImplGlfw_CursorEnterCallback(window, entered); }
+void onCursorEnter(GLFWwindow* window, int entered) {
+    ImGui_ImplGlfw_CursorEnterCallback(window, entered);
+}
 
 }  // namespace
 
@@ -121,12 +123,23 @@ void feedImGuiBeforeBackendNewFrame(EditorInput const& input, GLFWwindow* window
 #if IMGUI_VERSION_NUM >= 18700
     for (ui::InputEvent const& e : input.imguiFrame.events) {
         switch (e.kind) {
-        case ui::InputKind::Key: ImGui_ImplGlfw_KeyCallback(window, e.code, e.scancode, e.action, e.mods); break;
-        case ui::InputKind::MouseButton: ImGui_ImplGlfw_MouseButtonCallback(window, e.code, e.action, e.mods); break;
-        case ui::InputKind::Char: ImGui_ImplGlfw_CharCallback(window, unsigned(e.code)); break;
-        case ui::InputKind::Scroll: ImGui_ImplGlfw_ScrollCallback(window, e.value.x, e.value.y); break;
-        case ui::InputKind::Cursor: ImGui_ImplGlfw_CursorPosCallback(window, e.value.x, e.value.y); break;
-        case ui::InputKind::Focus: break;  // forwarded when it happened (onFocus)
+            case ui::InputKind::Key:
+                ImGui_ImplGlfw_KeyCallback(window, e.code, e.scancode, e.action, e.mods);
+                break;
+            case ui::InputKind::MouseButton:
+                ImGui_ImplGlfw_MouseButtonCallback(window, e.code, e.action, e.mods);
+                break;
+            case ui::InputKind::Char:
+                ImGui_ImplGlfw_CharCallback(window, unsigned(e.code));
+                break;
+            case ui::InputKind::Scroll:
+                ImGui_ImplGlfw_ScrollCallback(window, e.value.x, e.value.y);
+                break;
+            case ui::InputKind::Cursor:
+                ImGui_ImplGlfw_CursorPosCallback(window, e.value.x, e.value.y);
+                break;
+            case ui::InputKind::Focus:
+                break;  // forwarded when it happened (onFocus)
         }
     }
 #else
@@ -143,7 +156,8 @@ void feedImGuiAfterBackendNewFrame(EditorInput const& input) {
     // they were at this frame's share of the events instead.
     io.MousePos = r.mouse.x < -1.0e8 ? ImVec2(-FLT_MAX, -FLT_MAX) : ImVec2(float(r.mouse.x), float(r.mouse.y));
     for (int b = 0; b < ui::kMouseButtons; ++b) io.MouseDown[b] = r.buttons[std::size_t(b)];
-    for (int k = 0; k <= ui::keys::Last && k < int(IM_ARRAYSIZE(io.KeysDown)); ++k) io.KeysDown[k] = r.keysDown[std::size_t(k)];
+    for (int k = 0; k <= ui::keys::Last && k < int(IM_ARRAYSIZE(io.KeysDown)); ++k)
+        io.KeysDown[k] = r.keysDown[std::size_t(k)];
     io.KeyCtrl = (r.mods & ui::kModControl) != 0;
     io.KeyShift = (r.mods & ui::kModShift) != 0;
     io.KeyAlt = (r.mods & ui::kModAlt) != 0;

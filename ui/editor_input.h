@@ -14,12 +14,12 @@ namespace gbl {
 
 struct EditorInput {
     ui::InputQueue queue;
-    ui::InputTracker tracker;   // held keys, for the shortcuts and fly keys
-    ui::InputReplay replay;     // what ImGui has been shown so far
+    ui::InputTracker tracker;                 // held keys, for the shortcuts and fly keys
+    ui::InputReplay replay;                   // what ImGui has been shown so far
     std::vector<ui::InputEvent> frameEvents;  // taken this frame, oldest first
     ui::ReplayFrame imguiFrame;               // this frame's share for ImGui
-    double frameStart = 0.0;  // the previous take
-    double frameEnd = 0.0;    // this take
+    double frameStart = 0.0;                  // the previous take
+    double frameEnd = 0.0;                    // this take
 };
 
 // Installs the editor's callbacks on `window`. ImGui's GLFW backend must have been initialised

@@ -1,6 +1,8 @@
 // --log-frames: what each frame did, for tests that drive the real window from outside.
 #include "editor_loop.h"
 
+#include "panels/clip_check.h"
+
 #include <imgui.h>
 
 namespace gbl {
@@ -50,6 +52,7 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     for (ui::InputEvent const& e : editor.input.imguiFrame.events)
         if (e.kind == ui::InputKind::MouseButton) line.events.push_back(ui::describeEvent(e));
     line.actions = editor.actionLog;
+    line.clipped = ui::clippedItems();
     line.sessionPath = editor.sessions->panel.currentPath;
     editor.frameLog.write(line);
 }

@@ -30,10 +30,14 @@ inline std::optional<DiscardingAction> takeConfirmed(DiscardGuard& guard) {
 
 inline char const* discardingVerb(DiscardingAction action) {
     switch (action) {
-    case DiscardingAction::Quit: return "Quit";
-    case DiscardingAction::NewSession: return "Start a new session";
-    case DiscardingAction::OpenScene: return "Open another scene";
-    case DiscardingAction::OpenSession: return "Open another session";
+        case DiscardingAction::Quit:
+            return "Quit";
+        case DiscardingAction::NewSession:
+            return "Start a new session";
+        case DiscardingAction::OpenScene:
+            return "Open another scene";
+        case DiscardingAction::OpenSession:
+            return "Open another session";
     }
     return "";
 }

@@ -31,18 +31,23 @@ fs::path normalFolder(fs::path const& p) {
 
 std::vector<std::string> extensionsFor(FileBrowserPurpose purpose) {
     switch (purpose) {
-    case FileBrowserPurpose::OpenScene: return {".gltf", ".glb"};
-    case FileBrowserPurpose::OpenSession:
-    case FileBrowserPurpose::SaveSession: return {".json"};
+        case FileBrowserPurpose::OpenScene:
+            return {".gltf", ".glb"};
+        case FileBrowserPurpose::OpenSession:
+        case FileBrowserPurpose::SaveSession:
+            return {".json"};
     }
     return {};
 }
 
 char const* browserTitle(FileBrowserPurpose purpose) {
     switch (purpose) {
-    case FileBrowserPurpose::OpenScene: return "Open scene";
-    case FileBrowserPurpose::OpenSession: return "Open session";
-    case FileBrowserPurpose::SaveSession: return "Save session as";
+        case FileBrowserPurpose::OpenScene:
+            return "Open scene";
+        case FileBrowserPurpose::OpenSession:
+            return "Open session";
+        case FileBrowserPurpose::SaveSession:
+            return "Save session as";
     }
     return "";
 }
@@ -70,7 +75,8 @@ bool changeFolder(FileBrowserState& state, std::string const& path) {
     fs::path const folder = normalFolder(path);
     std::error_code ec;
     if (!fs::is_directory(folder, ec)) {
-        state.error = folder.string() + " is not a folder that can be opened" + (ec ? ": " + ec.message() : std::string()) + ".";
+        state.error =
+            folder.string() + " is not a folder that can be opened" + (ec ? ": " + ec.message() : std::string()) + ".";
         return false;
     }
     fs::directory_iterator it(folder, fs::directory_options::skip_permission_denied, ec);
@@ -102,7 +108,9 @@ bool changeFolder(FileBrowserState& state, std::string const& path) {
     return true;
 }
 
-bool refreshFolder(FileBrowserState& state) { return changeFolder(state, state.folder); }
+bool refreshFolder(FileBrowserState& state) {
+    return changeFolder(state, state.folder);
+}
 
 bool goToParent(FileBrowserState& state) {
     fs::path const p(state.folder);

@@ -25,13 +25,13 @@ struct FileBrowserState {
     bool open = false;
     bool justOpened = false;  // the window focuses its name field on the first frame
     FileBrowserPurpose purpose = FileBrowserPurpose::OpenScene;
-    std::string folder;                   // absolute, without a trailing separator (except "/")
-    std::vector<std::string> extensions;  // lower case with the dot (".gltf"); empty = every file
-    std::vector<FileEntry> entries;       // folders first, then files, each sorted by name
-    std::string fileName;                 // the name field: a file in `folder`, or an absolute path
-    int selected = -1;                    // index into entries
+    std::string folder;                     // absolute, without a trailing separator (except "/")
+    std::vector<std::string> extensions;    // lower case with the dot (".gltf"); empty = every file
+    std::vector<FileEntry> entries;         // folders first, then files, each sorted by name
+    std::string fileName;                   // the name field: a file in `folder`, or an absolute path
+    int selected = -1;                      // index into entries
     std::vector<std::string> recentPlaces;  // absolute folders, most recent first
-    std::string error;                    // one sentence; empty when the last step worked
+    std::string error;                      // one sentence; empty when the last step worked
 };
 
 // Extensions each purpose lists.

@@ -59,6 +59,7 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += "]";
     out += ",\"events\":" + strings(l.events);
     out += ",\"actions\":" + strings(l.actions);
+    out += ",\"clipped\":" + strings(l.clipped);
     if (l.sessionPath) out += ",\"session\":" + quoted(*l.sessionPath);
     return out + "}";
 }

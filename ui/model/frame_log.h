@@ -20,18 +20,19 @@ struct PickableLight {
 
 struct FrameLogLine {
     long frame = 0;
-    bool rendered = false;      // the renderer ran (render on change)
-    std::string renderReason;   // what changed ("camera, lights"), "nothing" when it did not run
-    double frameMs = 0.0;       // wall clock of the whole loop iteration
-    glm::vec3 camera{0.0f};     // camera position
+    bool rendered = false;         // the renderer ran (render on change)
+    std::string renderReason;      // what changed ("camera, lights"), "nothing" when it did not run
+    double frameMs = 0.0;          // wall clock of the whole loop iteration
+    glm::vec3 camera{0.0f};        // camera position
     glm::vec2 cameraAngles{0.0f};  // yaw, pitch in degrees
     int selectedLight = -1;
-    bool textInput = false;     // a text field has the keyboard
+    bool textInput = false;  // a text field has the keyboard
     bool viewportHovered = false;
-    glm::vec4 viewport{0.0f};   // the viewport image in window coordinates: x, y, width, height
+    glm::vec4 viewport{0.0f};  // the viewport image in window coordinates: x, y, width, height
     std::vector<PickableLight> pickable;
-    std::vector<std::string> events;  // input events applied this frame, and what they did
-    std::vector<std::string> actions;  // editor actions carried out this frame
+    std::vector<std::string> events;         // input events applied this frame, and what they did
+    std::vector<std::string> actions;        // editor actions carried out this frame
+    std::vector<std::string> clipped;        // UI content cut off this frame, where ImGui can tell
     std::optional<std::string> sessionPath;  // the session file of the editor ("" = untitled)
 };
 

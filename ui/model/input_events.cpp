@@ -8,20 +8,29 @@ namespace gbl::ui {
 
 namespace {
 
-bool validKey(int key) { return key >= 0 && key <= keys::Last; }
-bool validButton(int button) { return button >= 0 && button < kMouseButtons; }
+bool validKey(int key) {
+    return key >= 0 && key <= keys::Last;
+}
+bool validButton(int button) {
+    return button >= 0 && button < kMouseButtons;
+}
 
 int modifierBit(int key) {
     switch (key) {
-    case keys::LeftShift:
-    case keys::RightShift: return kModShift;
-    case keys::LeftControl:
-    case keys::RightControl: return kModControl;
-    case keys::LeftAlt:
-    case keys::RightAlt: return kModAlt;
-    case keys::LeftSuper:
-    case keys::RightSuper: return kModSuper;
-    default: return 0;
+        case keys::LeftShift:
+        case keys::RightShift:
+            return kModShift;
+        case keys::LeftControl:
+        case keys::RightControl:
+            return kModControl;
+        case keys::LeftAlt:
+        case keys::RightAlt:
+            return kModAlt;
+        case keys::LeftSuper:
+        case keys::RightSuper:
+            return kModSuper;
+        default:
+            return 0;
     }
 }
 
@@ -42,13 +51,20 @@ bool inScope(Shortcut const& s, InputContext const& context) {
 
 glm::vec3 flyDirection(EditorAction action) {
     switch (action) {
-    case EditorAction::FlyForward: return {0, 0, 1};
-    case EditorAction::FlyBack: return {0, 0, -1};
-    case EditorAction::FlyLeft: return {-1, 0, 0};
-    case EditorAction::FlyRight: return {1, 0, 0};
-    case EditorAction::FlyUp: return {0, 1, 0};
-    case EditorAction::FlyDown: return {0, -1, 0};
-    default: return {0, 0, 0};
+        case EditorAction::FlyForward:
+            return {0, 0, 1};
+        case EditorAction::FlyBack:
+            return {0, 0, -1};
+        case EditorAction::FlyLeft:
+            return {-1, 0, 0};
+        case EditorAction::FlyRight:
+            return {1, 0, 0};
+        case EditorAction::FlyUp:
+            return {0, 1, 0};
+        case EditorAction::FlyDown:
+            return {0, -1, 0};
+        default:
+            return {0, 0, 0};
     }
 }
 
@@ -64,14 +80,24 @@ std::string describeEvent(InputEvent const& e) {
     char text[96];
     char const* action = e.action == kPress ? "press" : e.action == kRelease ? "release" : "repeat";
     switch (e.kind) {
-    case InputKind::Key: std::snprintf(text, sizeof text, "key %d %s mods %d", e.code, action, e.mods); break;
-    case InputKind::MouseButton:
-        std::snprintf(text, sizeof text, "button %d %s mods %d", e.code, action, e.mods);
-        break;
-    case InputKind::Char: std::snprintf(text, sizeof text, "char %u", unsigned(e.code)); break;
-    case InputKind::Scroll: std::snprintf(text, sizeof text, "scroll %.2f %.2f", e.value.x, e.value.y); break;
-    case InputKind::Cursor: std::snprintf(text, sizeof text, "cursor %.0f %.0f", e.value.x, e.value.y); break;
-    case InputKind::Focus: std::snprintf(text, sizeof text, "focus %s", e.code ? "gained" : "lost"); break;
+        case InputKind::Key:
+            std::snprintf(text, sizeof text, "key %d %s mods %d", e.code, action, e.mods);
+            break;
+        case InputKind::MouseButton:
+            std::snprintf(text, sizeof text, "button %d %s mods %d", e.code, action, e.mods);
+            break;
+        case InputKind::Char:
+            std::snprintf(text, sizeof text, "char %u", unsigned(e.code));
+            break;
+        case InputKind::Scroll:
+            std::snprintf(text, sizeof text, "scroll %.2f %.2f", e.value.x, e.value.y);
+            break;
+        case InputKind::Cursor:
+            std::snprintf(text, sizeof text, "cursor %.0f %.0f", e.value.x, e.value.y);
+            break;
+        case InputKind::Focus:
+            std::snprintf(text, sizeof text, "focus %s", e.code ? "gained" : "lost");
+            break;
     }
     return text;
 }
@@ -97,23 +123,40 @@ Shortcut const& shortcutFor(EditorAction action) {
 
 std::string_view actionName(EditorAction action) {
     switch (action) {
-    case EditorAction::Undo: return "undo";
-    case EditorAction::Redo: return "redo";
-    case EditorAction::SaveSession: return "save-session";
-    case EditorAction::OpenSession: return "open-session";
-    case EditorAction::OpenScene: return "open-scene";
-    case EditorAction::NewSession: return "new-session";
-    case EditorAction::Quit: return "quit";
-    case EditorAction::FrameSelection: return "frame-selection";
-    case EditorAction::HomeView: return "home-view";
-    case EditorAction::ToggleInspectorLock: return "toggle-inspector-lock";
-    case EditorAction::ShowShortcuts: return "show-shortcuts";
-    case EditorAction::FlyForward: return "fly-forward";
-    case EditorAction::FlyBack: return "fly-back";
-    case EditorAction::FlyLeft: return "fly-left";
-    case EditorAction::FlyRight: return "fly-right";
-    case EditorAction::FlyUp: return "fly-up";
-    case EditorAction::FlyDown: return "fly-down";
+        case EditorAction::Undo:
+            return "undo";
+        case EditorAction::Redo:
+            return "redo";
+        case EditorAction::SaveSession:
+            return "save-session";
+        case EditorAction::OpenSession:
+            return "open-session";
+        case EditorAction::OpenScene:
+            return "open-scene";
+        case EditorAction::NewSession:
+            return "new-session";
+        case EditorAction::Quit:
+            return "quit";
+        case EditorAction::FrameSelection:
+            return "frame-selection";
+        case EditorAction::HomeView:
+            return "home-view";
+        case EditorAction::ToggleInspectorLock:
+            return "toggle-inspector-lock";
+        case EditorAction::ShowShortcuts:
+            return "show-shortcuts";
+        case EditorAction::FlyForward:
+            return "fly-forward";
+        case EditorAction::FlyBack:
+            return "fly-back";
+        case EditorAction::FlyLeft:
+            return "fly-left";
+        case EditorAction::FlyRight:
+            return "fly-right";
+        case EditorAction::FlyUp:
+            return "fly-up";
+        case EditorAction::FlyDown:
+            return "fly-down";
     }
     return "?";
 }
@@ -170,11 +213,14 @@ FrameActions translateInput(InputTracker& tracker, std::span<InputEvent const> e
     }
     // Keys still held fly until the end of the frame.
     for (std::size_t k = 0; k < tracker.flying.size(); ++k)
-        if (tracker.flying[k]) heldSeconds[k] += std::max(context.frameEnd - std::max(tracker.downSince[k], context.frameStart), 0.0);
+        if (tracker.flying[k])
+            heldSeconds[k] += std::max(context.frameEnd - std::max(tracker.downSince[k], context.frameStart), 0.0);
 
     if (context.viewportHovered && !context.textInput) {
         for (Shortcut const& s : kShortcuts)
-            if (s.held) out.move += flyDirection(s.action) * float(std::min(heldSeconds[std::size_t(s.key)] / frameSeconds, 1.0));
+            if (s.held)
+                out.move +=
+                    flyDirection(s.action) * float(std::min(heldSeconds[std::size_t(s.key)] / frameSeconds, 1.0));
         out.move = glm::clamp(out.move, glm::vec3(-1.0f), glm::vec3(1.0f));
     }
     out.fast = (tracker.mods & kModShift) != 0;

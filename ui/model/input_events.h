@@ -18,8 +18,8 @@ namespace gbl::ui {
 // glfw3.h), so this layer and its tests need no GLFW.
 namespace keys {
 inline constexpr int Space = 32;
-inline constexpr int A = 'A', D = 'D', E = 'E', F = 'F', L = 'L', N = 'N', O = 'O', Q = 'Q', S = 'S', W = 'W',
-                     Y = 'Y', Z = 'Z';
+inline constexpr int A = 'A', D = 'D', E = 'E', F = 'F', L = 'L', N = 'N', O = 'O', Q = 'Q', S = 'S', W = 'W', Y = 'Y',
+                     Z = 'Z';
 inline constexpr int Escape = 256, Enter = 257, Tab = 258, Backspace = 259, Delete = 261;
 inline constexpr int Right = 262, Left = 263, Down = 264, Up = 265, Home = 268, End = 269;
 inline constexpr int F1 = 290;
@@ -40,10 +40,10 @@ enum class InputKind { Key, MouseButton, Char, Scroll, Cursor, Focus };
 
 struct InputEvent {
     InputKind kind = InputKind::Key;
-    int code = 0;      // key, mouse button, Unicode code point, or 1/0 for focus gained/lost
-    int scancode = 0;  // keys: what GLFW passed along (ImGui 1.87+ backends want it)
-    int action = 0;    // keys and buttons: kRelease, kPress, kRepeat
-    int mods = 0;      // kMod* bits
+    int code = 0;           // key, mouse button, Unicode code point, or 1/0 for focus gained/lost
+    int scancode = 0;       // keys: what GLFW passed along (ImGui 1.87+ backends want it)
+    int action = 0;         // keys and buttons: kRelease, kPress, kRepeat
+    int mods = 0;           // kMod* bits
     glm::dvec2 value{0.0};  // cursor: position in window coordinates; scroll: offsets
     // When it happened is only known to within a poll: after `earliest` (the previous poll) and
     // no later than `time` (the poll that delivered it), both in seconds of one clock.
@@ -101,7 +101,7 @@ struct Shortcut {
     int mods = 0;  // exact: Ctrl+S does not match S, S does not match Ctrl+S
     EditorAction action = EditorAction::Undo;
     ShortcutScope scope = ShortcutScope::Editor;
-    bool held = false;  // acts for as long as the key is down (flying) rather than once per press
+    bool held = false;      // acts for as long as the key is down (flying) rather than once per press
     std::string_view keys;  // as the Help > Shortcuts window and menus show it
     std::string_view help;
 };
@@ -206,7 +206,7 @@ struct InputReplay {
 };
 
 struct ReplayFrame {
-    std::vector<InputEvent> events;  // what this frame applies, in order (ImGui 1.87+ takes these)
+    std::vector<InputEvent> events;                   // what this frame applies, in order (ImGui 1.87+ takes these)
     std::array<bool, kMouseButtons> doubleClicked{};  // a press this frame that is a double click
     glm::dvec2 scroll{0.0};
     std::vector<unsigned> chars;

@@ -41,7 +41,8 @@ std::string describeChange(std::optional<RenderInputs> const& before, RenderInpu
         if (!out.empty()) out += ", ";
         out += what;
     };
-    add(before->view != now.view || before->projection != now.projection || before->cameraPosition != now.cameraPosition,
+    add(before->view != now.view || before->projection != now.projection ||
+            before->cameraPosition != now.cameraPosition,
         "camera");
     add(!(before->lights == now.lights), "lights");
     add(!(before->pipeline == now.pipeline), "pipeline");

@@ -24,8 +24,8 @@ struct RenderInputs {
     glm::vec3 cameraPosition{0.0f};
     std::vector<PointLight> lights;  // as drawn this frame (animated lights have moved)
     PipelineSettings pipeline;
-    glm::ivec2 size{0};                 // the renderer's targets
-    std::uint64_t sceneGeneration = 0;  // counts scenes handed to Renderer::setScene
+    glm::ivec2 size{0};                  // the renderer's targets
+    std::uint64_t sceneGeneration = 0;   // counts scenes handed to Renderer::setScene
     std::uint64_t shaderGeneration = 0;  // counts hot reloads that replaced a program
     float animationTime = 0.0f;
     bool measuring = false;  // a cost measurement times real frames, so each of its frames renders
@@ -39,7 +39,7 @@ RenderInputs renderInputs(Camera const& camera, std::span<PointLight const> ligh
 
 // The loop's memory of the last rendered frame and its decision for this one.
 struct RenderOnChange {
-    bool continuous = false;  // --continuous / the Stats checkbox: render every frame (timing)
+    bool continuous = false;           // --continuous / the Stats checkbox: render every frame (timing)
     std::optional<RenderInputs> last;  // what the frame on screen was rendered from
     bool renderedLastFrame = false;
     long renders = 0;  // frames the renderer ran, since start

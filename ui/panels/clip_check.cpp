@@ -25,12 +25,14 @@ std::vector<std::string> clippedItems() {
     ImGuiContext& g = *ImGui::GetCurrentContext();
     for (ImGuiWindow* w : g.Windows) {
         if (!w->Active || w->Hidden || w->Collapsed || w->SkipItems) continue;
-        if (w->Flags & (ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_MenuBar)) continue;
+        if (w->Flags & (ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_MenuBar))
+            continue;
         if (w->ScrollbarX || (w->Flags & ImGuiWindowFlags_HorizontalScrollbar)) continue;
         float const content = w->DC.CursorMaxPos.x - w->DC.CursorStartPos.x;
         float const visible = w->ContentRegionRect.GetWidth();
         if (content > visible + kTolerance)
-            out.push_back(sentence("%s: content %.0f px wide in %.0f px, no horizontal scrollbar", w->Name, content, visible));
+            out.push_back(
+                sentence("%s: content %.0f px wide in %.0f px, no horizontal scrollbar", w->Name, content, visible));
     }
     for (int n = 0; n < g.Tables.GetMapSize(); ++n) {
         ImGuiTable* t = g.Tables.TryGetMapData(n);

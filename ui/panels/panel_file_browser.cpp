@@ -70,7 +70,8 @@ bool drawEntries(FileBrowserState& state, float height) {
         }
         if (!e.folder) {
             std::string const size = sizeText(e.bytes);
-            ImGui::SameLine(std::max(ImGui::GetContentRegionAvail().x, sizeColumn) - ImGui::CalcTextSize(size.c_str()).x);
+            ImGui::SameLine(std::max(ImGui::GetContentRegionAvail().x, sizeColumn) -
+                            ImGui::CalcTextSize(size.c_str()).x);
             ImGui::TextDisabled("%s", size.c_str());
         }
         ImGui::PopID();
