@@ -27,6 +27,13 @@ int main(int argc, char** argv) {
     app.add_option("--gl", editor.glLimit, "Pretend the context is at most this OpenGL version, e.g. 3.3");
     app.add_flag("--no-vsync", noVsync, "Render as fast as possible");
     app.add_flag("--allow-outside-uris", editor.allowOutsideUris, "Let glTF files read files outside their folder");
+    app.add_option("--log-frames", editor.logFramesPath,
+                   "Write one JSON line per frame to FILE: rendered or not, frame ms, camera, selection, input events");
+    app.add_option("--frame-sleep-ms", editor.frameSleepMs,
+                   "Sleep this long every frame, still taking input (tests of slow machines)")
+        ->check(CLI::Range(0, 10000));
+    app.add_flag("--continuous", editor.continuousRender,
+                 "Run the renderer every frame even when nothing changed (for timing)");
 
     gbl::RenderOptions renderOptions;
     CLI::App* render = app.add_subcommand("render", "Render one frame headlessly and write every intermediate image");

@@ -211,3 +211,24 @@ TEST(SessionController, UnwritableRecoveryDirectoryTurnsRecoveryOffWithAMessage)
     f.run(c, 5.0);  // and the editor goes on working
     EXPECT_EQ(c.autosaves(), 0);
 }
+
+TEST(SessionController, KnowsWhenEditsAreUnsaved) {
+    Fixture f("controller_dirty");
+    SessionController c(f.clock(), std::nullopt, 5007);
+    c.start(f.state, 32);
+    EXPECT_FALSE(c.hasUnsavedEdits(f.state));
+    // Looking around is not an edit.
+    f.state.camera.position.x += 3.0f;
+    f.state.animation.time = 2.5f;
+    EXPECT_FALSE(c.hasUnsavedEdits(f.state));
+    f.state.lights[1].intensity = 4.0f;
+    EXPECT_TRUE(c.hasUnsavedEdits(f.state));
+    std::string const path = f.dir + "/saved.json";
+    ASSERT_EQ(c.saveSession(path, f.state), std::nullopt);
+    EXPECT_FALSE(c.hasUnsavedEdits(f.state)) << "saved";
+    f.state.pipeline.exposure = 3.0f;
+    EXPECT_TRUE(c.hasUnsavedEdits(f.state));
+    ASSERT_EQ(c.openSession(path, f.state, f.loader()), std::nullopt);
+    EXPECT_FALSE(c.hasUnsavedEdits(f.state)) << "opened: what is shown is what the file holds";
+    EXPECT_EQ(f.state.pipeline.exposure, 1.0f);
+}

@@ -1,5 +1,6 @@
 // Light list edits: validated changes, refusals with messages, presets, deterministic random lights.
 #include "model/light_list.h"
+#include "model/drag_speed.h"
 #include "core/light_math.h"
 
 #include <gtest/gtest.h>
@@ -78,6 +79,44 @@ TEST(UiLightList, PresetsRoundTripAndReachFurtherWithRange) {
     }
     light.kl = 0.123f;
     EXPECT_EQ(matchingPreset(light), -1);
+}
+
+TEST(UiLightList, PresetsAreNamedByTheRadiusTheyGive) {
+    // A brighter light than the default, as in the report where "range 13" gave a radius of 34.6.
+    for (float intensity : {1.0f, 12.0f}) {
+        PointLight light;
+        light.intensity = intensity;
+        for (auto const& p : kAttenuationPresets) {
+            PointLight applied = light;
+            applyPreset(applied, p);
+            float const radius = lightRadius(applied).radius;
+            std::string const label = presetLabel(light, p);
+            ASSERT_EQ(label.rfind("radius ", 0), 0u) << label;
+            float const shown = std::stof(label.substr(7));
+            EXPECT_NEAR(shown, radius, 0.05f + 1e-4f * radius) << label << " (one decimal)";
+            EXPECT_FLOAT_EQ(presetRadius(light, p), radius);
+        }
+    }
+    // The classic "13" triple on the default light reaches about 10.3, not 13.
+    PointLight light;
+    EXPECT_EQ(presetLabel(light, kAttenuationPresets[1]), "radius 10.3");
+}
+
+TEST(UiLightList, DragSpeedIsProportionalAndLogarithmicForAttenuation) {
+    EXPECT_FLOAT_EQ(proportionalDragSpeed(0.44f, 1e-4f, kLogDragShare), 0.0088f);
+    EXPECT_FLOAT_EQ(proportionalDragSpeed(-50.0f, 1e-3f), 0.5f);
+    EXPECT_FLOAT_EQ(proportionalDragSpeed(0.0f, 1e-4f), 1e-4f) << "a zero can be dragged away";
+    // Kq across its useful range, 0.001 to 2, in under 400 pixels (about 0.0005 per pixel before,
+    // which took 4000), simulated pixel by pixel as ImGui applies the speed.
+    float kq = 0.001f;
+    int pixels = 0;
+    while (kq < 2.0f && pixels < 10000) {
+        kq += proportionalDragSpeed(kq, 1e-5f, kLogDragShare);
+        ++pixels;
+    }
+    EXPECT_LT(pixels, 400);
+    EXPECT_GT(pixels, 100) << "not so fast that a value cannot be set";
+    EXPECT_NEAR(pixelsToDrag(0.001f, 2.0f), pixels, 3);
 }
 
 TEST(UiLightList, RandomLightsAreValidInsideAndDeterministic) {

@@ -18,6 +18,9 @@ struct EditorOptions {
     bool allowOutsideUris = false;              // glTF files may read files outside their folder
     std::string glLimit;                        // "3.3": pretend the context is at most that version
     bool vsync = true;                          // off for screenshots, tests and measurements
+    std::optional<std::string> logFramesPath;   // one JSON line per frame (ui/model/frame_log.h)
+    int frameSleepMs = 0;                       // a sleep per frame that still takes input: slow-machine tests
+    bool continuousRender = false;              // render every frame, changed or not (timing)
 };
 
 // Opens the window and runs until it is closed, the frame count is reached or the test script

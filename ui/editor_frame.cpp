@@ -29,10 +29,11 @@ std::vector<PointLight> animatedLights(EditorState const& state) {
 }
 
 // Refits viewer ranges that asked for it (button) or are on auto (about once a second).
-void fitViewerRanges(EditorState& state, Renderer& renderer, long frame) {
+// Without a new frame the attachments hold what they held, so auto-fits wait for one.
+void fitViewerRanges(EditorState& state, Renderer& renderer, long frame, bool rendered) {
     for (auto& v : state.gbuffer.viewers) {
         // Auto-fit at the first frame with data, then about once a second (60 frames).
-        bool const autoDue = v.autoFit && (v.lastFitFrame < 0 || frame - v.lastFitFrame >= 60);
+        bool const autoDue = v.autoFit && (v.lastFitFrame < 0 || (rendered && frame - v.lastFitFrame >= 60));
         if (!v.fitRequested && !autoDue) continue;
         v.fitRequested = false;
         ui::ValueRange r;
@@ -61,7 +62,8 @@ void fitViewerRanges(EditorState& state, Renderer& renderer, long frame) {
     }
 }
 
-// Redraws the viewers whose picture is stale, plus one in turn (or all when asked to refresh every frame).
+// Redraws the viewers whose picture is stale, plus, after a new frame, one in turn (or all when
+// asked to refresh every frame).
 void drawViewers(Editor& editor, FrameTimes& times) {
     Renderer& renderer = *editor.renderer;
     EditorGpu& gpu = editor.gpu;
@@ -75,7 +77,7 @@ void drawViewers(Editor& editor, FrameTimes& times) {
         bool const stale = !target.texture || target.texture.width() != renderer.width() ||
                            target.texture.height() != renderer.height() || !gpu.drawnParams[i] ||
                            *gpu.drawnParams[i] != params;
-        if (gb.refreshEveryFrame || int(i) == turn || stale) {
+        if ((times.rendered && (gb.refreshEveryFrame || int(i) == turn)) || stale) {
             Camera clip = editor.state.camera;
             if (v.kind == ui::ViewerKind::Depth && !v.cameraClipPlanes) {
                 clip.nearPlane = v.nearPlane;
@@ -88,14 +90,17 @@ void drawViewers(Editor& editor, FrameTimes& times) {
         }
         times.viewerTextures[i] = target.texture.id();
     }
-    fitViewerRanges(editor.state, renderer, editor.frame);
+    fitViewerRanges(editor.state, renderer, editor.frame, times.rendered);
     ui::serviceViewerTools(editor.state, renderer, editor.frame, times.viewerTextures, gpu.viewerTools);
 }
 
-// The pixel inspector's sample and its breakdown into per-light terms.
-void samplePixel(Editor& editor) {
+// The pixel inspector's sample and its breakdown into per-light terms, again only when the frame
+// or the pixel changed.
+void samplePixel(Editor& editor, bool rendered) {
     Renderer& renderer = *editor.renderer;
     ui::PixelInspectorState& inspector = editor.state.inspector;
+    if (!rendered && inspector.pixel == editor.sampledPixel && (inspector.sample || !inspector.pixel)) return;
+    editor.sampledPixel = inspector.pixel;
     if (inspector.pixel && inspector.pixel->x < renderer.width() && inspector.pixel->y < renderer.height()) {
         inspector.sample = renderer.samplePixel(inspector.pixel->x, inspector.pixel->y, editor.state.camera);
         ui::PixelInFrame where{*inspector.pixel, {renderer.width(), renderer.height()}, std::nullopt};
@@ -139,7 +144,7 @@ void printMeasurement(ui::CostMeasurement const& m, glm::ivec2 window, glm::ivec
 // Selects the light whose cube is under the pixel. With a depth step the cubes are hidden by
 // walls, so only cubes in front of the surface at that pixel can be hit; without one they show
 // through walls and are pickable through them too, as drawn.
-void pickLightAt(EditorState& state, Renderer& renderer, std::span<PointLight const> drawn, glm::ivec2 pixel) {
+int lightAtPixel(EditorState const& state, Renderer& renderer, std::span<PointLight const> drawn, glm::ivec2 pixel) {
     glm::vec2 const size(float(renderer.width()), float(renderer.height()));
     ui::Ray const ray = ui::cameraRay(state.camera, glm::vec2(pixel), size);
     float maxDistance = std::numeric_limits<float>::max();
@@ -148,7 +153,11 @@ void pickLightAt(EditorState& state, Renderer& renderer, std::span<PointLight co
         // A little past the surface so a cube resting on it is still hit.
         if (s.covered) maxDistance = glm::length(glm::vec3(s.position) - state.camera.position) * 1.001f + 1e-3f;
     }
-    int const hit = ui::pickLight(ray, drawn, renderer.lightCubeHalfSize(), maxDistance);
+    return ui::pickLight(ray, drawn, renderer.lightCubeHalfSize(), maxDistance);
+}
+
+void pickLightAt(EditorState& state, Renderer& renderer, std::span<PointLight const> drawn, glm::ivec2 pixel) {
+    int const hit = lightAtPixel(state, renderer, drawn, pixel);
     if (hit >= 0) {
         state.lightsPanel.selected = hit;
         state.lightsPanel.message.clear();
@@ -160,6 +169,12 @@ bool beginFrame(Editor& editor, FrameTimes& times) {
     times.dt = float(std::chrono::duration<double>(times.start - editor.lastFrame).count());
     editor.lastFrame = times.start;
     glfwPollEvents();
+    takeFrameInput(editor.input);
+    // The window's close button asks first too when edits would be lost.
+    if (glfwWindowShouldClose(editor.window()) && !editor.script && editor.sessions->hasUnsavedEdits(editor.state)) {
+        glfwSetWindowShouldClose(editor.window(), GLFW_FALSE);
+        ui::mayDiscard(editor.discard, ui::DiscardingAction::Quit, true);
+    }
     glfwGetFramebufferSize(editor.window(), &times.fbWidth, &times.fbHeight);
     if ((times.fbWidth == 0 || times.fbHeight == 0) && !editor.unattended) {
         // Minimised: nothing to draw into; wait instead of spinning.
@@ -176,8 +191,10 @@ void renderScene(Editor& editor, FrameTimes& times) {
     Renderer& renderer = *editor.renderer;
     // A finished load becomes the scene before this frame renders; requested ones start.
     if (ui::updateSceneLoading(editor.loading, editor.defaultLightCount, state,
-                               [&](SceneData const& scene) { return renderer.setScene(scene); }))
+                               [&](SceneData const& scene) { return renderer.setScene(scene); })) {
         editor.sessions->sceneChanged(state);
+        rememberHomeView(editor);
+    }
 
     // The deferred frame, at the size the viewport had last frame.
     if (state.viewport.size != glm::ivec2(renderer.width(), renderer.height()))
@@ -186,10 +203,20 @@ void renderScene(Editor& editor, FrameTimes& times) {
     editor.drawn = animatedLights(state);
     finishIfMeasuring(times);
     auto t0 = EditorClock::now();
-    if (renderer.width() > 0 && renderer.height() > 0)
+    // Render on change: the frame is rendered again only when something it depends on changed;
+    // otherwise the last image, viewers and statistics stay on screen.
+    glm::ivec2 const size(renderer.width(), renderer.height());
+    ui::RenderInputs const inputs = ui::renderInputs(state.camera, editor.drawn, state.pipeline, size, editor.sceneGeneration,
+                                                     editor.shaderGeneration, state.animation.time, times.measuring);
+    std::optional<ui::RenderInputs> const before = editor.render.last;
+    times.rendered = size.x > 0 && size.y > 0 && ui::needsRender(editor.render, inputs);
+    editor.renderReason = times.rendered ? ui::describeChange(before, inputs) : std::string("nothing");
+    if (times.rendered)
         // Interactive frames take the previous frame's GPU timings instead of waiting for
         // this one's; a measurement waits anyway (glFinish), so it can have exact ones.
         times.frameStats = renderer.render(FrameInput{state.camera, editor.drawn, state.pipeline, times.measuring});
+    else
+        times.frameStats = state.stats.last;
     finishIfMeasuring(times);
     times.renderMs = msSince(t0);
 
@@ -198,7 +225,7 @@ void renderScene(Editor& editor, FrameTimes& times) {
     editor.gpu.timer.begin("viewers");
     if (renderer.width() > 0 && renderer.height() > 0 && state.gbuffer.visible) drawViewers(editor, times);
     editor.gpu.timer.end();
-    samplePixel(editor);
+    samplePixel(editor, times.rendered);
     finishIfMeasuring(times);
     times.viewersMs = msSince(t0);
 }
@@ -207,6 +234,7 @@ void reloadShaders(Editor& editor) {
     if (std::chrono::duration<double>(EditorClock::now() - editor.lastReload).count() < 1.0) return;
     editor.lastReload = EditorClock::now();
     for (auto const& message : editor.renderer->reloadChangedShaders()) {
+        ++editor.shaderGeneration;  // a reloaded (or failed) program: the next frame renders again
         bool const failed = message.find("fail") != std::string::npos || message.find("error") != std::string::npos;
         ui::logMessage(editor.state.log, message, failed);
     }
@@ -247,12 +275,20 @@ void present(Editor& editor, FrameTimes& times) {
         state.quitRequested = true;
 
     glfwSwapBuffers(editor.window());
+    // A test's slow machine: the sleep still takes events, so their times stay exact.
+    if (options.frameSleepMs > 0) sleepTakingEvents(options.frameSleepMs);
+    // Idle (nothing rendered, no input, nothing loading or waiting for ImGui): sleep until the
+    // next event, at most 1/20 s, instead of redrawing the same UI as fast as possible.
+    else if (!times.rendered && !editor.unattended && editor.input.frameEvents.empty() &&
+             editor.input.replay.pending.empty() && !editor.loading.job)
+        glfwWaitEventsTimeout(0.05);
 }
 
 void recordFrame(Editor& editor, FrameTimes const& times) {
     ui::EditorCost cost = times.cost;
     cost.frameCpuMs = msSince(times.start);
     ui::recordFrame(editor.state.stats, times.frameStats, cost);
+    if (editor.frameLog.isOpen()) logFrame(editor, times, cost.frameCpuMs);
     if (!times.measuring) return;
     ui::CostMeasurement& m = editor.state.measurement;
     ++m.frames;

@@ -2,10 +2,15 @@
 #pragma once
 
 #include "editor.h"
+#include "editor_input.h"
 #include "gl/caps.h"
 #include "gl/gpu_timer.h"
 #include "gpu/view_target.h"
+#include "model/camera_views.h"
+#include "model/discard_guard.h"
 #include "model/editor_state.h"
+#include "model/frame_log.h"
+#include "model/render_inputs.h"
 #include "model/scene_loading.h"
 #include "renderer.h"
 #include "script/ui_script.h"
@@ -17,6 +22,7 @@
 
 #include <array>
 #include <chrono>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <span>
@@ -37,17 +43,6 @@ struct EditorGpu {
     GpuTimer timer;                                        // the editor's own GPU work, for the Stats window
 };
 
-// Key presses (edges, not held keys) the editor reacts to outside ImGui widgets.
-struct KeyEdges {
-    bool wasDown[GLFW_KEY_LAST + 1] = {};
-    bool pressed(GLFWwindow* window, int key) {
-        bool const down = glfwGetKey(window, key) == GLFW_PRESS;
-        bool const edge = down && !wasDown[key];
-        wasDown[key] = down;
-        return edge;
-    }
-};
-
 // The GLFW library and the editor's window; terminates GLFW when it goes.
 struct GlfwSession {
     GlfwSession() = default;
@@ -64,6 +59,10 @@ struct GlfwSession {
 struct EditRequest {
     bool undo = false;
     bool redo = false;
+    bool quit = false;
+    bool newSession = false;
+    bool frameSelection = false;
+    bool homeView = false;
 };
 
 // Wall-clock times of one frame's parts, for the editor cost measurement.
@@ -80,6 +79,7 @@ struct FrameTimes {
     int fbWidth = 0;
     int fbHeight = 0;
     float dt = 0.0f;
+    bool rendered = false;  // the renderer ran this frame (render on change)
 };
 
 // Everything the steps share. Members are torn down in reverse order: the load job before the
@@ -103,7 +103,21 @@ struct Editor {
     std::string iniPath;  // imgui.ini in the user's config folder; ImGui keeps a pointer to it
 
     EditorGpu gpu;
-    KeyEdges keys;
+    EditorInput input;                     // GLFW's events, queued (editor_input.h)
+    ui::FrameActions actions;              // this frame's shortcuts and fly keys
+    std::vector<std::string> actionLog;    // what the editor did this frame, for --log-frames
+    ui::RenderOnChange render;             // what the frame on screen was rendered from
+    std::string renderReason;              // what changed, for the Stats window
+    std::uint64_t sceneGeneration = 1;     // counts scenes handed to the renderer
+    std::uint64_t shaderGeneration = 0;    // counts shader reloads
+    std::optional<glm::ivec2> sampledPixel;  // the inspector's pixel at its last sample
+    ui::CameraView home;                   // the scene's view (Home)
+    bool showShortcuts = false;            // Help > Shortcuts
+    ui::DiscardGuard discard;              // Quit / New / Open over unsaved edits
+    std::vector<std::string> heldScenes;   // scene opens waiting for that answer
+    std::optional<ui::SessionRequest> heldSession;
+    bool releaseHeld = false;              // the answer was Discard: let the held requests through
+    ui::FrameLog frameLog;                 // --log-frames
     std::vector<PointLight> drawn;  // this frame's lights (animated)
     long frame = 0;
     int exitCode = 0;
@@ -140,8 +154,14 @@ void present(Editor& editor, FrameTimes& times);
 // The Stats window's numbers and the cost measurement (printed when it completes).
 void recordFrame(Editor& editor, FrameTimes const& times);
 
+// The light whose cube is under the viewport pixel, or -1.
+int lightAtPixel(ui::EditorState const& state, Renderer& renderer, std::span<PointLight const> drawn, glm::ivec2 pixel);
 // Selects the light whose cube is under the viewport pixel.
 void pickLightAt(ui::EditorState& state, Renderer& renderer, std::span<PointLight const> drawn, glm::ivec2 pixel);
+// Writes this frame's --log-frames line (editor_log.cpp).
+void logFrame(Editor& editor, FrameTimes const& times, double frameMs);
+// Remembers the camera a newly installed scene starts with, for Home.
+void rememberHomeView(Editor& editor);
 
 // --- the UI (editor_panels.cpp, editor_requests.cpp) ------------------------------------------
 

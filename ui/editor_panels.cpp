@@ -4,12 +4,14 @@
 
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
+#include "panels/panel_confirm.h"
 #include "panels/panel_gbuffer.h"
 #include "panels/panel_lights.h"
 #include "panels/panel_log.h"
 #include "panels/panel_pipeline.h"
 #include "panels/panel_pixel_inspector.h"
 #include "panels/panel_scene_loading.h"
+#include "panels/panel_shortcuts.h"
 #include "panels/panel_stats.h"
 #include "panels/panel_viewport.h"
 
@@ -36,30 +38,42 @@ std::optional<glm::vec2> selectedLightInImage(EditorState const& state, std::spa
     return glm::vec2(ndc.x * 0.5f + 0.5f, 0.5f - ndc.y * 0.5f);
 }
 
-EditRequest drawMainMenu(EditorState& state, GlCaps const& caps, ui::SessionController& sessions,
-                         ui::SceneLoadingState& loading) {
+char const* keysFor(ui::EditorAction action) { return ui::shortcutFor(action).keys.data(); }
+
+EditRequest drawMainMenu(Editor& editor) {
+    EditorState& state = editor.state;
+    ui::SessionController& sessions = *editor.sessions;
     EditRequest edit;
     if (!ImGui::BeginMainMenuBar()) return edit;
     if (ImGui::BeginMenu("File")) {
-        ui::drawSceneMenuItems(loading);
+        if (ImGui::MenuItem("New session", keysFor(ui::EditorAction::NewSession))) edit.newSession = true;
+        ImGui::Separator();
+        ui::drawSceneMenuItems(editor.loading);
         ImGui::Separator();
         ui::drawSessionMenuItems(sessions.panel);
         ImGui::Separator();
-        if (ImGui::MenuItem("Quit")) state.quitRequested = true;
+        if (ImGui::MenuItem("Quit", keysFor(ui::EditorAction::Quit))) edit.quit = true;
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {
-        if (ImGui::MenuItem("Undo", "Ctrl+Z", false, sessions.history().canUndo())) edit.undo = true;
-        if (ImGui::MenuItem("Redo", "Ctrl+Y", false, sessions.history().canRedo())) edit.redo = true;
+        if (ImGui::MenuItem("Undo", keysFor(ui::EditorAction::Undo), false, sessions.history().canUndo())) edit.undo = true;
+        if (ImGui::MenuItem("Redo", keysFor(ui::EditorAction::Redo), false, sessions.history().canRedo())) edit.redo = true;
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
         if (ImGui::MenuItem("Reset layout", nullptr, false, ui::kHasDocking)) state.layout.resetRequested = true;
         if (!ui::kHasDocking && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
             ImGui::SetTooltip("this ImGui build has no docking: the windows are tiled and always in place");
-        if (ImGui::MenuItem("Frame scene", "F")) ui::frameBounds(state.rig, state.camera, state.sceneBounds);
+        if (ImGui::MenuItem("Frame selection", keysFor(ui::EditorAction::FrameSelection))) edit.frameSelection = true;
+        if (ImGui::MenuItem("Home view", keysFor(ui::EditorAction::HomeView))) edit.homeView = true;
+        if (ImGui::MenuItem("Frame the whole scene")) ui::frameBounds(state.rig, state.camera, state.sceneBounds);
         ImGui::EndMenu();
     }
+    if (ImGui::BeginMenu("Help")) {
+        if (ImGui::MenuItem("Shortcuts", keysFor(ui::EditorAction::ShowShortcuts))) editor.showShortcuts = true;
+        ImGui::EndMenu();
+    }
+    GlCaps const& caps = editor.caps;
     // Status on the right: context and the newest log line.
     std::string status = caps.renderer + " | GL " + std::to_string(caps.major) + "." + std::to_string(caps.minor);
     if (!state.log.lines.empty()) status = state.log.lines.back() + "   " + status;
@@ -93,9 +107,12 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     EditorState& state = editor.state;
     Renderer const& renderer = *editor.renderer;
     ImGui_ImplOpenGL3_NewFrame();
+    feedImGuiBeforeBackendNewFrame(editor.input, editor.window());
     ImGui_ImplGlfw_NewFrame();
+    feedImGuiAfterBackendNewFrame(editor.input);
     ImGui::NewFrame();
-    EditRequest const edit = drawMainMenu(state, editor.caps, *editor.sessions, editor.loading);
+    markImGuiDoubleClicks(editor.input);
+    EditRequest const edit = drawMainMenu(editor);
     ui::beginLayout(state.layout);
     ui::drawLightsPanel(state.lightsPanel, state.lights, state.animation, state.sceneBounds);
     ui::drawPipelinePanel(state.pipeline,
@@ -104,9 +121,11 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
                           {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer));
     ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()});
     ui::drawPixelInspectorPanel(state.inspector);
-    ui::drawStatsPanel(state.stats, editor.caps, int(state.lights.size()));
+    ui::drawStatsPanel(state.stats, editor.caps, int(state.lights.size()), &editor.render, editor.renderReason);
     ui::drawLogPanel(state.log);
     ui::drawSceneLoadingUi(editor.loading);
+    ui::drawShortcutsWindow(editor.showShortcuts);
+    ui::drawDiscardConfirmation(editor.discard);
     return edit;
 }
 

@@ -1,18 +1,24 @@
 // What the panels and the keyboard asked for this frame: light picking, the inspector's pixel,
-// camera flight, session dialogs and shortcuts, undo and redo.
+// camera views and flight, session dialogs and shortcuts, undo and redo, and the question
+// before unsaved edits are discarded.
 #include "editor_loop.h"
 
+#include "core/light_math.h"
 #include "panels/panel_scene_loading.h"
 
 #include <imgui.h>
+
+#include <algorithm>
 
 namespace gbl {
 
 namespace {
 
+using ui::EditorAction;
 using ui::EditorState;
 
-ui::CameraInput gatherCameraInput(GLFWwindow* window, EditorState const& state, float dt, bool keyboardFree) {
+ui::CameraInput gatherCameraInput(Editor const& editor, float dt) {
+    EditorState const& state = editor.state;
     ui::CameraInput in;
     in.orbitDrag = state.viewport.orbitDrag;
     in.lookDrag = state.viewport.lookDrag;
@@ -20,24 +26,44 @@ ui::CameraInput gatherCameraInput(GLFWwindow* window, EditorState const& state, 
     in.dolly = state.viewport.wheel;
     in.dt = dt;
     in.viewportHeight = float(std::max(state.viewport.size.y, 1));
-    // Keys fly the camera while the mouse is over the viewport or a drag started there, and
-    // never while a text field has the keyboard.
-    bool const flying = keyboardFree && (state.viewport.hovered || state.viewport.lookDrag != glm::vec2(0.0f));
-    if (flying) {
-        auto key = [&](int k) { return glfwGetKey(window, k) == GLFW_PRESS ? 1.0f : 0.0f; };
-        in.move = glm::vec3(key(GLFW_KEY_D) - key(GLFW_KEY_A), key(GLFW_KEY_E) - key(GLFW_KEY_Q),
-                            key(GLFW_KEY_W) - key(GLFW_KEY_S));
-        in.fast = key(GLFW_KEY_LEFT_SHIFT) > 0.0f || key(GLFW_KEY_RIGHT_SHIFT) > 0.0f;
-    }
+    // The fly keys' share of this frame, from their events (model/input_events.h): only over the
+    // viewport, never with Ctrl/Alt/Super or while a text field has the keyboard.
+    in.move = editor.actions.move;
+    in.fast = editor.actions.fast;
     return in;
 }
 
-// Picking, the inspector's pixel and lock, framing and flying the camera.
-void handleViewRequests(Editor& editor, float dt, bool keyboardFree) {
+// F: the selected light, or the scene from its home view when that is inside it.
+void frameSelection(Editor& editor) {
     EditorState& state = editor.state;
-    GLFWwindow* window = editor.window();
+    int const i = state.lightsPanel.selected;
+    if (i >= 0 && i < int(editor.drawn.size())) {
+        PointLight const& light = editor.drawn[std::size_t(i)];
+        ui::frameLight(state.rig, state.camera, light.position, lightRadius(light).radius, state.sceneBounds);
+    } else {
+        ui::frameNothingSelected(state.rig, state.camera, editor.home, state.sceneBounds);
+    }
+}
+
+void homeView(Editor& editor) {
+    editor.state.camera = editor.home.camera;
+    editor.state.rig = editor.home.rig;
+}
+
+// Picking, the inspector's pixel and lock, camera views and flying the camera.
+void handleViewRequests(Editor& editor, float dt) {
+    EditorState& state = editor.state;
     ui::PixelInspectorState& inspector = state.inspector;
     if (state.viewport.clickPixel) pickLightAt(state, *editor.renderer, editor.drawn, *state.viewport.clickPixel);
+    // A double click on a cube selects it and frames it.
+    if (state.viewport.doubleClickPixel) {
+        int const hit = lightAtPixel(state, *editor.renderer, editor.drawn, *state.viewport.doubleClickPixel);
+        if (hit >= 0) {
+            state.lightsPanel.selected = hit;
+            frameSelection(editor);
+            editor.actionLog.push_back("double-click-frame");
+        }
+    }
     if (state.gbuffer.showInViewport) state.pipeline.view = *state.gbuffer.showInViewport;
     if (inspector.selectLight >= 0) state.lightsPanel.selected = inspector.selectLight;
     if (!inspector.locked || !inspector.pixel) {
@@ -49,41 +75,106 @@ void handleViewRequests(Editor& editor, float dt, bool keyboardFree) {
             inspector.source = "G-buffer viewer";
         }
     }
-    if (keyboardFree && editor.keys.pressed(window, GLFW_KEY_L)) inspector.locked = !inspector.locked;
-    bool const frameKey = keyboardFree && editor.keys.pressed(window, GLFW_KEY_F);
-    if (state.viewport.frameRequested || frameKey) ui::frameBounds(state.rig, state.camera, state.sceneBounds);
-    ui::applyCameraInput(state.rig, state.camera, gatherCameraInput(window, state, dt, keyboardFree));
+    if (state.viewport.frameRequested) frameSelection(editor);
+    ui::applyCameraInput(state.rig, state.camera, gatherCameraInput(editor, dt));
 }
 
-// Sessions, exports, undo and crash recovery (ui/session_controller.h), and their shortcuts.
-void handleSessionRequests(Editor& editor, FrameTimes const& times, EditRequest const& edit, bool keyboardFree) {
+// Whether an action that replaces the session must ask first. Scripted runs never ask: a
+// script sets state directly and would wait for an answer forever.
+bool mustAsk(Editor const& editor) { return !editor.script && editor.sessions->hasUnsavedEdits(editor.state); }
+
+// Scene opens and session opens wait for the answer when edits would be lost.
+void holdDiscardingRequests(Editor& editor, ui::SessionRequest& request) {
+    ui::SceneLoadingState& loading = editor.loading;
+    if (editor.releaseHeld) {
+        editor.releaseHeld = false;
+        return;
+    }
+    bool const scenes = !loading.requests.empty() || !loading.dropped.empty();
+    if (scenes && !ui::mayDiscard(editor.discard, ui::DiscardingAction::OpenScene, mustAsk(editor))) {
+        editor.heldScenes.insert(editor.heldScenes.end(), loading.requests.begin(), loading.requests.end());
+        editor.heldScenes.insert(editor.heldScenes.end(), loading.dropped.begin(), loading.dropped.end());
+        loading.requests.clear();
+        loading.dropped.clear();
+    }
+    if (request.kind == ui::SessionRequestKind::Open &&
+        !ui::mayDiscard(editor.discard, ui::DiscardingAction::OpenSession, mustAsk(editor))) {
+        editor.heldSession = request;
+        request = {};
+    }
+}
+
+// What a confirmed "Discard" lets through.
+void releaseConfirmed(Editor& editor, ui::SessionRequest& request) {
+    auto const confirmed = ui::takeConfirmed(editor.discard);
+    if (!confirmed) {
+        if (!editor.discard.asking) {
+            // Cancelled: the held requests are dropped.
+            editor.heldScenes.clear();
+            editor.heldSession.reset();
+        }
+        return;
+    }
+    editor.actionLog.push_back("discard-confirmed");
+    switch (*confirmed) {
+    case ui::DiscardingAction::Quit: editor.state.quitRequested = true; break;
+    case ui::DiscardingAction::NewSession:
+        if (auto error = editor.sessions->newSession(editor.state, editor.sceneLoader))
+            ui::logMessage(editor.state.log, *error, true);
+        break;
+    case ui::DiscardingAction::OpenScene:
+        editor.loading.requests.insert(editor.loading.requests.end(), editor.heldScenes.begin(), editor.heldScenes.end());
+        editor.heldScenes.clear();
+        editor.releaseHeld = true;
+        break;
+    case ui::DiscardingAction::OpenSession:
+        if (editor.heldSession) request = *editor.heldSession;
+        editor.heldSession.reset();
+        break;
+    }
+}
+
+void carryOut(Editor& editor, EditorAction action) {
     EditorState& state = editor.state;
     ui::SessionController& sessions = *editor.sessions;
-    GLFWwindow* window = editor.window();
-    KeyEdges& keys = editor.keys;
-    ui::SessionRequest const request = ui::drawSessionDialogs(sessions.panel);
+    editor.actionLog.emplace_back(ui::actionName(action));
+    switch (action) {
+    case EditorAction::Undo: sessions.undo(state); break;
+    case EditorAction::Redo: sessions.redo(state); break;
+    case EditorAction::SaveSession: sessions.panel.saveRequested = true; break;
+    case EditorAction::OpenSession:
+        ui::openSessionDialog(sessions.panel, ui::SessionDialog::Open,
+                              sessions.panel.currentPath.empty() ? "session.json" : sessions.panel.currentPath);
+        break;
+    case EditorAction::OpenScene:
+        ui::openSceneDialog(editor.loading, editor.loading.recent.empty() ? std::string() : editor.loading.recent.front());
+        break;
+    case EditorAction::NewSession:
+        if (ui::mayDiscard(editor.discard, ui::DiscardingAction::NewSession, mustAsk(editor)))
+            if (auto error = sessions.newSession(state, editor.sceneLoader)) ui::logMessage(state.log, *error, true);
+        break;
+    case EditorAction::Quit:
+        if (ui::mayDiscard(editor.discard, ui::DiscardingAction::Quit, mustAsk(editor))) state.quitRequested = true;
+        break;
+    case EditorAction::FrameSelection: frameSelection(editor); break;
+    case EditorAction::HomeView: homeView(editor); break;
+    case EditorAction::ToggleInspectorLock: state.inspector.locked = !state.inspector.locked; break;
+    case EditorAction::ShowShortcuts: editor.showShortcuts = !editor.showShortcuts; break;
+    default: break;  // fly keys act through CameraInput::move
+    }
+}
+
+// Sessions, exports, undo and crash recovery (ui/session_controller.h).
+void handleSessionRequests(Editor& editor, FrameTimes const& times) {
+    EditorState& state = editor.state;
+    ui::SessionController& sessions = *editor.sessions;
+    ui::SessionRequest request = ui::drawSessionDialogs(sessions.panel);
+    holdDiscardingRequests(editor, request);
+    releaseConfirmed(editor, request);
     if (request.kind != ui::SessionRequestKind::None) {
         FrameExport exported{state.camera, editor.drawn, state.pipeline, times.frameStats, state.sceneTriangles, {}};
         sessions.handle(request, state, *editor.renderer, exported, editor.sceneLoader);
     }
-    bool const ctrl = glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS ||
-                      glfwGetKey(window, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
-    bool const zPressed = keys.pressed(window, GLFW_KEY_Z);
-    bool const yPressed = keys.pressed(window, GLFW_KEY_Y);
-    bool const sPressed = keys.pressed(window, GLFW_KEY_S);
-    bool const oPressed = keys.pressed(window, GLFW_KEY_O);
-    if (keyboardFree && ctrl && sPressed) sessions.panel.saveRequested = true;
-    // Ctrl+O opens a session, Ctrl+Shift+O a scene.
-    bool const shift = glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
-                       glfwGetKey(window, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
-    ui::SceneLoadingState& loading = editor.loading;
-    if (keyboardFree && ctrl && shift && oPressed)
-        ui::openSceneDialog(loading, loading.recent.empty() ? std::string() : loading.recent.front());
-    if (keyboardFree && ctrl && !shift && oPressed)
-        ui::openSessionDialog(sessions.panel, ui::SessionDialog::Open,
-                              sessions.panel.currentPath.empty() ? "session.json" : sessions.panel.currentPath);
-    if (edit.undo || (keyboardFree && ctrl && zPressed)) sessions.undo(state);
-    if (edit.redo || (keyboardFree && ctrl && yPressed)) sessions.redo(state);
     // A held slider is one edit: it becomes an undo step when released.
     sessions.afterFrame(state, ImGui::IsAnyItemActive());
 }
@@ -91,9 +182,20 @@ void handleSessionRequests(Editor& editor, FrameTimes const& times, EditRequest 
 }  // namespace
 
 void handleRequests(Editor& editor, FrameTimes const& times, EditRequest const& edit) {
-    bool const keyboardFree = !ImGui::GetIO().WantTextInput;
-    handleViewRequests(editor, times.dt, keyboardFree);
-    handleSessionRequests(editor, times, edit, keyboardFree);
+    EditorState& state = editor.state;
+    // This frame's shortcuts from the queued events: every tap counts once, whatever its length.
+    editor.actionLog.clear();
+    editor.actions = frameActions(editor.input, state.viewport.hovered, ImGui::GetIO().WantTextInput);
+    handleViewRequests(editor, times.dt);
+    for (EditorAction const action : editor.actions.taps) carryOut(editor, action);
+    // The menus' entries do what their shortcuts do.
+    if (edit.undo) carryOut(editor, EditorAction::Undo);
+    if (edit.redo) carryOut(editor, EditorAction::Redo);
+    if (edit.quit) carryOut(editor, EditorAction::Quit);
+    if (edit.newSession) carryOut(editor, EditorAction::NewSession);
+    if (edit.frameSelection) carryOut(editor, EditorAction::FrameSelection);
+    if (edit.homeView) carryOut(editor, EditorAction::HomeView);
+    handleSessionRequests(editor, times);
 }
 
 }  // namespace gbl

@@ -157,10 +157,13 @@ std::optional<int> startEditor(Editor& editor) {
         std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
         return 2;
     }
+    rememberHomeView(editor);
     editor.sceneLoader = [&editor](std::string const& scene, int lightCount) {
         std::optional<std::string> path;
         if (scene != "default") path = scene;
-        return loadScene(path, lightCount, editor.options.allowOutsideUris, editor.state, *editor.renderer);
+        auto error = loadScene(path, lightCount, editor.options.allowOutsideUris, editor.state, *editor.renderer);
+        if (!error) rememberHomeView(editor);
+        return error;
     };
     // Crash recovery for interactive runs. Unattended runs (screenshots, UI tests) neither
     // offer nor leave autosaves unless a test asks for it with GBL_RECOVERY_DIR.
@@ -178,6 +181,14 @@ std::optional<int> startEditor(Editor& editor) {
     }
     for (LightingMode mode : {LightingMode::Volumes, LightingMode::Tiled})
         if (auto why = editor.renderer->modeUnavailable(mode)) ui::logMessage(state.log, *why);
+    if (options.logFramesPath) {
+        if (auto error = editor.frameLog.open(*options.logFramesPath)) {
+            std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
+            sessions.endCleanly();
+            return 2;
+        }
+    }
+    editor.render.continuous = options.continuousRender;
     // Scenes opened from the menu, by drag-and-drop or by scripts load on a worker thread.
     editor.loading.allowOutsideUris = options.allowOutsideUris;
     if (options.scenePath) ui::rememberRecentScene(editor.loading, *options.scenePath);
@@ -200,8 +211,17 @@ void initImGui(Editor& editor) {
     float xscale = 1.0f, yscale = 1.0f;
     glfwGetWindowContentScale(editor.window(), &xscale, &yscale);
     ui::applyContentScale(xscale);
-    ImGui_ImplGlfw_InitForOpenGL(editor.window(), true);
+    // ImGui's backend installs no callbacks: the editor's own queue every event and feed ImGui
+    // at a pace it can follow (editor_input.h), with 1.86 and 1.87+ alike.
+    ImGui_ImplGlfw_InitForOpenGL(editor.window(), false);
     ImGui_ImplOpenGL3_Init("#version 330 core");
+    installInputCallbacks(editor.window(), editor.input);
+}
+
+void rememberHomeView(Editor& editor) {
+    // installScene has just placed the camera where the scene suggests (or framed it).
+    editor.home = ui::CameraView{editor.state.camera, editor.state.rig};
+    ++editor.sceneGeneration;
 }
 
 void connectScriptHost(Editor& editor) {
@@ -268,6 +288,7 @@ int shutdownEditor(Editor& editor) {
 
     editor.sessions->endCleanly();
 
+    removeInputCallbacks(editor.window());
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();

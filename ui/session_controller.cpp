@@ -25,6 +25,7 @@ void SessionController::start(EditorState& state, int defaultSceneLights) {
     defaultSceneLights_ = defaultSceneLights;
     undo_.reset(undoSnapshot(state));
     lastSeen_ = lastSaved_ = sessionToJson(captureSession(state, defaultSceneLights_));
+    savedEdits_ = editsText(state);
     if (!recovery_) return;
     // Look before marking: our own marker must not count as a crash.
     auto const unclean = recovery_->uncleanExits();
@@ -100,6 +101,31 @@ std::optional<std::string> SessionController::applyLoaded(Session const& session
     return std::nullopt;
 }
 
+std::optional<std::string> SessionController::newSession(EditorState& state, SceneLoader const& load) {
+    EditorState const before = state;
+    if (auto err = load("default", defaultSceneLights_)) {
+        state = before;
+        return err;
+    }
+    state.pipeline = PipelineSettings{};
+    state.animation = LightAnimation{};
+    state.lightsPanel.selected = -1;
+    undo_.reset(undoSnapshot(state));
+    panel.currentPath.clear();
+    savedEdits_ = editsText(state);
+    logMessage(state.log, "new session");
+    return std::nullopt;
+}
+
+std::string SessionController::editsText(EditorState const& state) const {
+    Session session = captureSession(state, defaultSceneLights_);
+    session.camera = Camera{};
+    session.animation.time = 0.0f;
+    return sessionToJson(session);
+}
+
+bool SessionController::hasUnsavedEdits(EditorState const& state) const { return editsText(state) != savedEdits_; }
+
 void SessionController::sceneChanged(EditorState const& state) { undo_.reset(undoSnapshot(state)); }
 
 std::optional<std::string> SessionController::openSession(std::string const& path, EditorState& state, SceneLoader const& load) {
@@ -116,6 +142,7 @@ std::optional<std::string> SessionController::openSession(std::string const& pat
         return message;
     }
     panel.currentPath = path;
+    savedEdits_ = editsText(state);
     logMessage(state.log, "opened session " + path);
     return std::nullopt;
 }
@@ -123,6 +150,7 @@ std::optional<std::string> SessionController::openSession(std::string const& pat
 std::optional<std::string> SessionController::saveSession(std::string const& path, EditorState const& state) {
     if (auto err = ui::saveSession(path, captureSession(state, defaultSceneLights_))) return err;
     panel.currentPath = path;
+    savedEdits_ = editsText(state);
     return std::nullopt;
 }
 

@@ -41,6 +41,8 @@ public:
     // All or nothing: on any error the state is as before and the error is returned.
     std::optional<std::string> openSession(std::string const& path, EditorState& state, SceneLoader const& load);
     std::optional<std::string> saveSession(std::string const& path, EditorState const& state);
+    // File > New: the default scene with its lights and default settings, untitled.
+    std::optional<std::string> newSession(EditorState& state, SceneLoader const& load);
     std::optional<std::string> restoreRecovery(EditorState& state, SceneLoader const& load);
     void discardRecovery();
 
@@ -60,6 +62,10 @@ public:
     // The clean-exit path: removes this run's marker and recovery session.
     void endCleanly();
 
+    // Edits since the session was last opened or saved (or since start) that Quit, New and Open
+    // would discard. Looking around is not an edit: the camera and the animation clock are left out.
+    bool hasUnsavedEdits(EditorState const& state) const;
+
     int autosaves() const { return autosaves_; }
     std::optional<RecoveryDir> const& recovery() const { return recovery_; }
     std::string recoveryPath() const { return recovery_ ? recovery_->sessionPath(pid_) : std::string(); }
@@ -69,6 +75,7 @@ public:
 
 private:
     std::optional<std::string> applyLoaded(Session const& session, EditorState& state, SceneLoader const& load);
+    std::string editsText(EditorState const& state) const;
 
     Clock clock_;
     std::optional<RecoveryDir> recovery_;
@@ -78,6 +85,7 @@ private:
     int defaultSceneLights_ = 32;
     std::string lastSeen_;    // session text at the last change check
     std::string lastSaved_;   // session text in the recovery file
+    std::string savedEdits_;  // editsText when the session was last opened or saved by the user
     double lastCheck_ = -1e300;
     int autosaves_ = 0;
 };

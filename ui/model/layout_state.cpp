@@ -12,9 +12,9 @@ TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize) {
     float const centreW = workSize.x - leftW - rightW;
     float const h = workSize.y;
     float const stripH = std::floor(h * kViewerStrip);
-    float const leftTopH = std::floor(h * 0.64f);
-    float const rightTopH = std::floor(h * 0.52f);
-    float const statsH = std::floor(h * 0.30f);
+    float const leftTopH = std::floor(h * kLightsShare);
+    float const rightTopH = std::floor(h * kInspectorShare);
+    float const statsH = std::floor(h * kStatsShare);
     glm::vec2 const p = workPos;
     switch (window) {
     case EditorWindow::Lights: return {p, {leftW, leftTopH}};

@@ -27,9 +27,16 @@ struct TileRect {
 };
 
 // Fractions of the work area: the side columns keep their widths, the centre gets the rest.
-inline constexpr float kLeftColumn = 0.22f;
-inline constexpr float kRightColumn = 0.24f;
+// At 1280x720 the side columns are about 300 px: the narrowest that fits the Lights and Pipeline
+// rows in the built-in 13 px font without cutting a label.
+inline constexpr float kLeftColumn = 0.24f;
+inline constexpr float kRightColumn = 0.26f;
 inline constexpr float kViewerStrip = 0.30f;  // share of the centre column below the viewport
+// Shares of the column heights: Lights over Pipeline (each about half, so the Pipeline panel
+// shows all its rows from 1600x900 on); Pixel inspector over Stats over Log on the right.
+inline constexpr float kLightsShare = 0.50f;
+inline constexpr float kInspectorShare = 0.46f;
+inline constexpr float kStatsShare = 0.34f;
 
 // Where a window sits in the tiled arrangement (no docking): lights over pipeline on the
 // left, viewport over the G-buffer strip in the centre, pixel inspector over stats over log on

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 namespace gbl::ui {
@@ -21,6 +22,18 @@ void applyPreset(PointLight& light, AttenuationPreset const& preset) {
     light.kc = preset.kc;
     light.kl = preset.kl;
     light.kq = preset.kq;
+}
+
+float presetRadius(PointLight const& light, AttenuationPreset const& preset) {
+    PointLight withPreset = light;
+    applyPreset(withPreset, preset);
+    return lightRadius(withPreset).radius;
+}
+
+std::string presetLabel(PointLight const& light, AttenuationPreset const& preset) {
+    char text[48];
+    std::snprintf(text, sizeof text, "radius %.1f", presetRadius(light, preset));
+    return text;
 }
 
 namespace {

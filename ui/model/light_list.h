@@ -17,7 +17,9 @@ namespace gbl::ui {
 // with a message.
 inline constexpr int kMaxEditorLights = 4096;
 
-// The widely used table of (Kc, Kl, Kq) triples, indexed by the distance a light should reach.
+// The widely used table of (Kc, Kl, Kq) triples. `range` is the distance the classic table files
+// each triple under; the radius a light really gets depends on its brightness and threshold
+// (lightRadius), so the editor names presets by presetRadius, never by `range`.
 struct AttenuationPreset {
     int range;
     float kc, kl, kq;
@@ -40,6 +42,10 @@ inline constexpr std::array<AttenuationPreset, 12> kAttenuationPresets{{
 // Index of the preset whose (Kc, Kl, Kq) equal the light's, or -1.
 int matchingPreset(PointLight const& light);
 void applyPreset(PointLight& light, AttenuationPreset const& preset);
+// The radius (lightRadius) `light` gets with the preset's terms: what the preset is named by.
+float presetRadius(PointLight const& light, AttenuationPreset const& preset);
+// "radius 10.3": the preset's name for this light, the radius to one decimal.
+std::string presetLabel(PointLight const& light, AttenuationPreset const& preset);
 
 // Result of an operation that may refuse: the index it produced (or -1) and why it refused.
 struct EditResult {

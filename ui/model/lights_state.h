@@ -18,6 +18,7 @@ struct LightAnimation {
 
 struct LightsPanelState {
     int selected = -1;
+    int listShows = -1;  // the selection the list last scrolled to; a new one (viewport pick) scrolls
     int randomCount = 16;
     std::uint32_t randomSeed = 20240611u;
     bool plotLogScale = false;

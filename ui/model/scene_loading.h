@@ -1,6 +1,7 @@
 // Loading glTF scenes in the editor: a worker thread parses and decodes, the render thread uploads.
 #pragma once
 
+#include "model/file_browser.h"
 #include "model/editor_state.h"
 #include "gltf/loader.h"
 #include "scene/scene_data.h"
@@ -62,10 +63,8 @@ struct SceneLoadingState {
     bool allowOutsideUris = false;       // --allow-outside-uris
 
     // File > Open scene… dialog and the recent list (most recent first).
-    bool dialogOpen = false;
-    bool dialogJustOpened = false;        // focus the path field on the first frame
-    std::array<char, 1024> dialogPath{};  // the dialog's text field
     std::vector<std::string> recent;
+    FileBrowserState browser;  // File > Open scene
 
     // The last finished load, for the error dialog and for tests.
     SceneLoadOutcome lastOutcome = SceneLoadOutcome::None;

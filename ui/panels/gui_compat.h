@@ -109,4 +109,26 @@ inline bool arrowPressed(int dx, int dy) {
 #endif
 }
 
+// Escape went down this frame (1.87 made ImGuiKey values the keys themselves).
+inline bool escapePressed() {
+#if IMGUI_VERSION_NUM >= 18700
+    return ImGui::IsKeyPressed(ImGuiKey_Escape, false);
+#else
+    return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+#endif
+}
+
+// Marks this frame's press of `button` as the second of a double click. Called after NewFrame,
+// which decides double clicks from frame times; the editor decides them from event times
+// instead (model/input_events.h), so they work at a few frames per second. 1.86 started
+// counting clicks, and from then on IsMouseDoubleClicked reads the count.
+inline void markDoubleClick(int button) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.MouseDoubleClicked[button] = true;
+#if IMGUI_VERSION_NUM >= 18600
+    io.MouseClickedCount[button] = 2;
+    io.MouseClickedLastCount[button] = 2;
+#endif
+}
+
 }  // namespace gbl::ui

@@ -29,10 +29,12 @@ void buildDefaultDockLayout(ImGuiID dockspace, ImGuiViewport const* viewport) {
         ImGui::DockBuilderSplitNode(centre, ImGuiDir_Right, kRightColumn / (1.0f - kLeftColumn), nullptr, &centre);
     ImGuiID const strip = ImGui::DockBuilderSplitNode(centre, ImGuiDir_Down, kViewerStrip, nullptr, &centre);
     ImGuiID leftTop = left;
-    ImGuiID const leftBottom = ImGui::DockBuilderSplitNode(leftTop, ImGuiDir_Down, 0.36f, nullptr, &leftTop);
+    ImGuiID const leftBottom = ImGui::DockBuilderSplitNode(leftTop, ImGuiDir_Down, 1.0f - kLightsShare, nullptr, &leftTop);
     ImGuiID rightTop = right;
-    ImGuiID rightMiddle = ImGui::DockBuilderSplitNode(rightTop, ImGuiDir_Down, 0.48f, nullptr, &rightTop);
-    ImGuiID const rightBottom = ImGui::DockBuilderSplitNode(rightMiddle, ImGuiDir_Down, 0.38f, nullptr, &rightMiddle);
+    ImGuiID rightMiddle = ImGui::DockBuilderSplitNode(rightTop, ImGuiDir_Down, 1.0f - kInspectorShare, nullptr, &rightTop);
+    // The log's share of what is below the inspector.
+    ImGuiID const rightBottom = ImGui::DockBuilderSplitNode(
+        rightMiddle, ImGuiDir_Down, 1.0f - kStatsShare / (1.0f - kInspectorShare), nullptr, &rightMiddle);
 
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::Viewport), centre);
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::GBuffer), strip);

@@ -4,13 +4,16 @@
 #include "panels/attenuation_plot.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
+#include "model/drag_speed.h"
 #include "model/light_list.h"
 #include "core/light_math.h"
 
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace gbl::ui {
 
@@ -27,26 +30,48 @@ char const* radiusKindText(RadiusKind kind) {
 }
 
 void drawList(LightsPanelState& state, std::vector<PointLight>& lights) {
-    float const height = std::min(ImGui::GetTextLineHeightWithSpacing() * 5.5f, ImGui::GetContentRegionAvail().y * 0.4f);
-    beginFramedChild("light-list", ImVec2(0, std::max(height, 60.0f)));
+    float const row = ImGui::GetTextLineHeightWithSpacing();
+    float const height = std::min(row * 6.5f, ImGui::GetContentRegionAvail().y * 0.4f);
+    beginFramedChild("light-list", ImVec2(0, std::max(height, row * 3.0f)));
+    // A selection made elsewhere (a pick in the viewport, undo) is scrolled into the middle of the
+    // list; the clipper would not even create its row otherwise.
+    if (state.selected != state.listShows) {
+        if (state.selected >= 0) {
+            float const top = float(state.selected) * row;
+            ImGui::SetScrollY(std::max(0.0f, top - (ImGui::GetWindowHeight() - row) * 0.5f));
+        }
+        state.listShows = state.selected;
+    }
     ImGuiListClipper clipper;
-    clipper.Begin(int(lights.size()));
+    clipper.Begin(int(lights.size()), row);
     while (clipper.Step()) {
         for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
             PointLight const& l = lights[std::size_t(i)];
             ImGui::PushID(i);
+            bool const selected = state.selected == i;
+            if (selected) {
+                // The picked light stands out, not only by the faint selectable background.
+                ImVec2 const p = ImGui::GetCursorScreenPos();
+                ImGui::GetWindowDrawList()->AddRectFilled(
+                    p, ImVec2(p.x + ImGui::GetContentRegionAvail().x, p.y + ImGui::GetTextLineHeight()),
+                    IM_COL32(200, 160, 40, 110));
+            }
             ImGui::ColorButton("##c", ImVec4(l.color.r, l.color.g, l.color.b, 1.0f),
-                               ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoPicker, ImVec2(12, 12));
+                               ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoPicker,
+                               ImVec2(ImGui::GetTextLineHeight(), ImGui::GetTextLineHeight()));
             ImGui::SameLine();
             char label[96];
             std::snprintf(label, sizeof label, "%3d  %s  r=%.2f", i, l.name.empty() ? "light" : l.name.c_str(),
                           lightRadius(l).radius);
-            if (ImGui::Selectable(label, state.selected == i)) state.selected = i;
-            if (state.selected == i && ImGui::IsWindowAppearing()) ImGui::SetScrollHereY();
+            if (ImGui::Selectable(label, selected)) state.selected = state.listShows = i;
             ImGui::PopID();
         }
     }
     ImGui::EndChild();
+}
+
+void dragHelp() {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("drag: 2%% per pixel; Ctrl+click or double-click: type a value");
 }
 
 void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
@@ -57,7 +82,7 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
         return;
     }
     // Short labels on the right, values fill the rest of the narrow side column.
-    ImGui::PushItemWidth(-ImGui::GetFontSize() * 4.0f);
+    ImGui::PushItemWidth(-(ImGui::CalcTextSize("Position").x + ImGui::GetStyle().ItemInnerSpacing.x));
     // Widgets edit a copy; the copy replaces the light only when validateLight accepts it.
     PointLight edited = lights[std::size_t(state.selected)];
     bool changed = false;
@@ -67,39 +92,49 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
         edited.name = name;
         changed = true;
     }
-    changed |= ImGui::DragFloat3("Position", &edited.position.x, 0.05f);
+    // Positions move by 1% of their distance from the origin per pixel, at least 0.01.
+    float const reach = std::max({std::abs(edited.position.x), std::abs(edited.position.y), std::abs(edited.position.z)});
+    changed |= ImGui::DragFloat3("Position", &edited.position.x, proportionalDragSpeed(reach, 0.01f));
     changed |= ImGui::ColorEdit3("Colour", &edited.color.x, ImGuiColorEditFlags_Float);
     // Three attenuation terms on one row, as in the formula Kc + Kl d + Kq d^2; each keeps its
     // own drag speed because they differ by orders of magnitude.
     float const third = (ImGui::CalcItemWidth() - 2.0f * ImGui::GetStyle().ItemInnerSpacing.x) / 3.0f;
     ImGui::PushItemWidth(third);
-    changed |= ImGui::DragFloat("##kc", &edited.kc, 0.005f, 0.0f, 100.0f, "Kc %.3f");
+    // Speeds follow each value (model/drag_speed.h): a pixel changes Kc/Kl/Kq by 2%, so 0.001 to 2
+    // is a few hundred pixels; Ctrl+click or double-click types a value.
+    changed |= ImGui::DragFloat("##kc", &edited.kc, proportionalDragSpeed(edited.kc, 1e-3f, kLogDragShare), 0.0f,
+                                100.0f, "Kc %.3f");
+    dragHelp();
     ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
-    changed |= ImGui::DragFloat("##kl", &edited.kl, 0.001f, 0.0f, 100.0f, "Kl %.4f");
+    changed |= ImGui::DragFloat("##kl", &edited.kl, proportionalDragSpeed(edited.kl, 1e-4f, kLogDragShare), 0.0f,
+                                100.0f, "Kl %.4f");
+    dragHelp();
     ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
-    changed |= ImGui::DragFloat("##kq", &edited.kq, 0.0005f, 0.0f, 100.0f, "Kq %.5f");
+    changed |= ImGui::DragFloat("##kq", &edited.kq, proportionalDragSpeed(edited.kq, 1e-5f, kLogDragShare), 0.0f,
+                                100.0f, "Kq %.5f");
+    dragHelp();
     ImGui::PopItemWidth();
     ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
     ImGui::TextUnformatted("Atten.");
     float const half = (ImGui::CalcItemWidth() - ImGui::GetStyle().ItemInnerSpacing.x) / 2.0f;
     ImGui::PushItemWidth(half);
-    changed |= ImGui::DragFloat("##intensity", &edited.intensity, 0.01f, 0.0f, 1000.0f, "I %.3f");
+    changed |= ImGui::DragFloat("##intensity", &edited.intensity, proportionalDragSpeed(edited.intensity, 1e-3f), 0.0f, 1000.0f, "I %.3f");
     ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
-    changed |= ImGui::DragFloat("##threshold", &edited.threshold, 0.0005f, 0.0f, 1.0f, "cut %.5f");
+    changed |= ImGui::DragFloat("##threshold", &edited.threshold, proportionalDragSpeed(edited.threshold, 1e-5f), 0.0f, 1.0f, "cut %.5f");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("brightness below which the light counts as dark (5/256 by default)");
     ImGui::PopItemWidth();
     ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
     ImGui::TextUnformatted("I, cut");
 
-    int preset = matchingPreset(edited);
-    char presetLabel[32];
-    std::snprintf(presetLabel, sizeof presetLabel, preset >= 0 ? "range %d" : "custom",
-                  preset >= 0 ? kAttenuationPresets[std::size_t(preset)].range : 0);
-    if (ImGui::BeginCombo("Preset", presetLabel)) {
+    // Presets are named by the radius they give this light (its brightness and cut-off included).
+    int const preset = matchingPreset(edited);
+    std::string const presetName =
+        preset >= 0 ? presetLabel(edited, kAttenuationPresets[std::size_t(preset)]) : std::string("custom");
+    if (ImGui::BeginCombo("Preset", presetName.c_str())) {
         for (std::size_t i = 0; i < kAttenuationPresets.size(); ++i) {
             auto const& p = kAttenuationPresets[i];
             char item[96];
-            std::snprintf(item, sizeof item, "range %4d:  Kc %.1f  Kl %.4f  Kq %.6f", p.range, p.kc, p.kl, p.kq);
+            std::snprintf(item, sizeof item, "%-13s Kl %.4f  Kq %.6f", presetLabel(edited, p).c_str(), p.kl, p.kq);
             if (ImGui::Selectable(item, preset == int(i))) {
                 applyPreset(edited, p);
                 changed = true;
@@ -121,7 +156,7 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
                 light.threshold > 0.0f ? lightImax(light) / light.threshold : 0.0f);
     ImGui::SameLine();
     ImGui::Checkbox("log", &state.plotLogScale);
-    float const plotH = std::clamp(ImGui::GetContentRegionAvail().y - 4.0f, 100.0f, 240.0f);
+    float const plotH = std::clamp(ImGui::GetContentRegionAvail().y - 4.0f, ImGui::GetFontSize() * 5.0f, ImGui::GetFontSize() * 18.0f);
     drawAttenuationPlot(light, state.plotLogScale, ImVec2(ImGui::GetContentRegionAvail().x, plotH));
 }
 
@@ -158,7 +193,8 @@ void drawLightsPanel(LightsPanelState& state, std::vector<PointLight>& lights, L
             auto const r = addRandomLights(lights, state.randomCount, sceneBounds, state.randomSeed);
             state.message = r.message;
         }
-        ImGui::SameLine();
+        // Wraps in a narrow column instead of cutting the button off.
+        sameLineIfFits(ImGui::CalcTextSize("Clear").x + ImGui::GetStyle().FramePadding.x * 2.0f, false, rowRightEdge());
         ImGui::BeginDisabled(lights.empty());
         if (ImGui::Button("Clear")) {
             lights.clear();

@@ -29,6 +29,9 @@ constexpr char const* kBlitHelp[] = {
     "off: no depth before the forward pass; light cubes show through walls",
 };
 
+// A section the user can fold away; open by default so every row is visible at first.
+bool section(char const* label) { return ImGui::CollapsingHeader(label, ImGuiTreeNodeFlags_DefaultOpen); }
+
 void helpTooltip(char const* text) {
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", text);
 }
@@ -49,8 +52,8 @@ void radioRow(char const* id, Enum& value, std::array<std::string_view, N> const
 void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailable) {
     placeWindow(EditorWindow::Pipeline);
     if (ImGui::Begin(windowName(EditorWindow::Pipeline), nullptr, editorWindowFlags())) {
-        separatorText("Lighting mode");
         float const right = rowRightEdge();
+        if (section("Lighting mode")) {
         for (std::size_t i = 0; i < kLightingModeNames.size(); ++i) {
             auto const mode = LightingMode(i);
             std::string const& reason = unavailable[i];
@@ -66,18 +69,22 @@ void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailabl
             ImGui::TextWrapped("%s", reason.c_str());
             ImGui::PopStyleColor();
         }
+        }
 
-        separatorText("Volume cull mode");
+        if (section("Volume cull mode (volumes only)")) {
+        // Greyed out, never hidden, in the other modes: rows below keep their place whatever the
+        // mode, so a click aimed at a checkbox does not land on another one.
         bool const volumes = settings.mode == LightingMode::Volumes;
         ImGui::BeginDisabled(!volumes);
         radioRow("cull", settings.cull, kCullModeNames, kCullHelp);
         ImGui::EndDisabled();
-        if (!volumes) ImGui::TextDisabled("applies to the volumes mode only");
+        }
 
-        separatorText("Blit step (depth before forward pass)");
-        radioRow("blit", settings.depthCopy, kDepthCopyNames, kBlitHelp);
+        if (section("Depth before the forward pass")) {
+            radioRow("blit", settings.depthCopy, kDepthCopyNames, kBlitHelp);
+        }
 
-        separatorText("Overlays and views");
+        if (section("Overlays and views")) {
         ImGui::Checkbox("Light cubes", &settings.lightCubes);
         sameLineIfFits(checkItemWidth("Volume wireframes"), false, right);
         ImGui::Checkbox("Volume wireframes", &settings.volumeWireframes);
@@ -86,14 +93,19 @@ void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailabl
         helpTooltip("per pixel: how many light volumes covered it and how many actually lit it");
         sameLineIfFits(checkItemWidth("Normal maps"), false, right);
         ImGui::Checkbox("Normal maps", &settings.normalMaps);
+        }
 
-        separatorText("Shading");
+        if (section("Shading")) {
+        // Labels on the right take their own width; the fields get the rest of the column.
+        ImGui::PushItemWidth(-ImGui::CalcTextSize("Shininess").x - ImGui::GetStyle().ItemInnerSpacing.x * 2.0f);
         ImGui::ColorEdit3("Ambient", &settings.ambient.x, ImGuiColorEditFlags_Float);
         ImGui::DragFloat("Shininess", &settings.shininess, 0.5f, 1.0f, 512.0f, "%.1f", ImGuiSliderFlags_AlwaysClamp);
         int tonemap = int(settings.tonemap);
         char const* tonemapItems[] = {kTonemapNames[0].data(), kTonemapNames[1].data(), kTonemapNames[2].data()};
         if (ImGui::Combo("Tonemap", &tonemap, tonemapItems, 3)) settings.tonemap = Tonemap(tonemap);
         ImGui::SliderFloat("Exposure", &settings.exposure, 0.05f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+        ImGui::PopItemWidth();
+        }
     }
     ImGui::End();
 }

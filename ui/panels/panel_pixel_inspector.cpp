@@ -34,7 +34,7 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
         if (state.pixel)
             ImGui::Text("pixel (%d, %d) from %s", state.pixel->x, state.pixel->y, state.source.c_str());
         else
-            ImGui::TextDisabled("hover the viewport or a G-buffer viewer");
+            ImGui::TextDisabled("hover the viewport or a viewer");
 
         if (state.sample) {
             PixelSample const& s = *state.sample;

@@ -1,6 +1,8 @@
 // Scene open dialog, recent files, loading progress and load errors.
 #include "panels/panel_scene_loading.h"
 
+#include "panels/panel_file_browser.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -12,48 +14,15 @@ namespace gbl::ui {
 
 namespace {
 
-constexpr char const* kOpenTitle = "Open scene";
 constexpr char const* kErrorTitle = "Scene not loaded";
 
 void requestOpen(SceneLoadingState& state, std::string const& path) {
     state.requests.push_back(path);
 }
 
+// The file browser for .gltf/.glb; the chosen file is requested like any other open.
 void drawOpenDialog(SceneLoadingState& state) {
-    if (!state.dialogOpen) return;
-    ImGui::OpenPopup(kOpenTitle);
-    bool open = true;
-    if (ImGui::BeginPopupModal(kOpenTitle, &open, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::TextUnformatted("A glTF 2.0 file (.gltf or .glb). You can also drop files onto the window.");
-        if (state.dialogJustOpened) ImGui::SetKeyboardFocusHere();
-        state.dialogJustOpened = false;
-        ImGui::SetNextItemWidth(520.0f);
-        bool const entered = ImGui::InputText("path", state.dialogPath.data(), state.dialogPath.size(),
-                                              ImGuiInputTextFlags_EnterReturnsTrue);
-        std::string const path = state.dialogPath.data();
-        // Say early when the path cannot be opened, so the user fixes it before loading starts.
-        std::error_code ec;
-        bool const exists = !path.empty() && std::filesystem::is_regular_file(path, ec);
-        if (!path.empty() && !exists) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "no such file");
-        if (!state.recent.empty()) {
-            ImGui::Separator();
-            ImGui::TextDisabled("recent");
-            for (auto const& r : state.recent)
-                if (ImGui::Selectable(r.c_str())) std::snprintf(state.dialogPath.data(), state.dialogPath.size(), "%s", r.c_str());
-        }
-        ImGui::Separator();
-        bool const ok = ImGui::Button("Open") || entered;
-        ImGui::SameLine();
-        bool const cancel = ImGui::Button("Cancel");
-        // A missing file is still handed to the loader: its message is the one users see
-        // everywhere else, and the error dialog shows it.
-        if ((ok && !path.empty()) || cancel || !open) {
-            if (ok && !path.empty()) requestOpen(state, path);
-            state.dialogOpen = false;
-            ImGui::CloseCurrentPopup();
-        }
-        ImGui::EndPopup();
-    }
+    if (auto const path = drawFileBrowser(state.browser)) requestOpen(state, *path);
 }
 
 void drawProgressWindow(SceneLoadingState& state) {
@@ -104,9 +73,10 @@ void drawErrorDialog(SceneLoadingState& state) {
 }  // namespace
 
 void openSceneDialog(SceneLoadingState& state, std::string const& prefill) {
-    state.dialogOpen = true;
-    state.dialogJustOpened = true;
-    std::snprintf(state.dialogPath.data(), state.dialogPath.size(), "%s", prefill.c_str());
+    openFileBrowser(state.browser, FileBrowserPurpose::OpenScene, prefill);
+    // The recent scenes' folders are the first recent places.
+    for (auto it = state.recent.rbegin(); it != state.recent.rend(); ++it)
+        rememberPlace(state.browser.recentPlaces, std::filesystem::path(*it).parent_path().string());
 }
 
 void drawSceneMenuItems(SceneLoadingState& state) {

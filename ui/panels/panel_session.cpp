@@ -1,6 +1,7 @@
 // Session, export and recovery dialogs: a path field per action, a modal for the recovery offer.
 #include "panels/panel_session.h"
 
+#include "panels/panel_file_browser.h"
 #include "panels/panel_gbuffer.h"
 
 #include <imgui.h>
@@ -30,6 +31,13 @@ char const* pathLabel(SessionDialog d) {
 }  // namespace
 
 void openSessionDialog(SessionPanelState& state, SessionDialog dialog, std::string const& prefill) {
+    if (dialog == SessionDialog::Open || dialog == SessionDialog::Save) {
+        state.message.clear();
+        openFileBrowser(state.browser,
+                        dialog == SessionDialog::Open ? FileBrowserPurpose::OpenSession : FileBrowserPurpose::SaveSession,
+                        prefill);
+        return;
+    }
     state.dialog = dialog;
     state.dialogJustOpened = true;
     state.message.clear();
@@ -91,6 +99,13 @@ SessionRequest drawSessionDialogs(SessionPanelState& state) {
         return request;
     }
 
+    if (state.browser.open) {
+        if (auto const path = drawFileBrowser(state.browser)) {
+            bool const saving = state.browser.purpose == FileBrowserPurpose::SaveSession;
+            return {saving ? SessionRequestKind::Save : SessionRequestKind::Open, *path, 0};
+        }
+        return request;
+    }
     if (state.dialog == SessionDialog::None) return request;
     char const* title = dialogTitle(state.dialog);
     ImGui::OpenPopup(title);

@@ -2,6 +2,7 @@
 // collect what the user asked for; the window loop carries it out (it owns renderer and scene).
 #pragma once
 
+#include "model/file_browser.h"
 #include "session/recovery.h"
 
 #include <array>
@@ -16,7 +17,8 @@ struct SessionPanelState {
     std::string currentPath;              // session last opened or saved ("" = untitled)
     SessionDialog dialog = SessionDialog::None;
     bool dialogJustOpened = false;        // focus the path field on the first frame
-    std::array<char, 1024> pathInput{};   // the dialog's text field
+    std::array<char, 1024> pathInput{};   // the export dialogs' text field
+    FileBrowserState browser;             // Open session and Save session as
     int exportViewer = 0;                 // index into the G-buffer viewers
     bool exportRaw = false;               // viewer export: raw attachment as EXR instead of PNG
     std::optional<UncleanExit> recoveryOffer;  // shown as a modal until answered
@@ -36,7 +38,8 @@ struct SessionRequest {
 
 // Menu items for the File menu (call between BeginMenu("File") and EndMenu()).
 void drawSessionMenuItems(SessionPanelState& state);
-// Opens a dialog with the path field prefilled (the menu items and keyboard shortcuts use it).
+// Opens a dialog with the path field prefilled (the menu items and keyboard shortcuts use it);
+// Open and Save open the file browser in the folder of `prefill` (the working folder if relative).
 void openSessionDialog(SessionPanelState& state, SessionDialog dialog, std::string const& prefill);
 
 // Reports how the window loop carried out a request: success closes the dialog, an error keeps

@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 
 namespace gbl::ui {
 
@@ -19,13 +20,31 @@ float historyMax(std::array<float, StatsState::kHistory> const& values, int coun
 }
 }  // namespace
 
-void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount) {
+void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount, RenderOnChange* render,
+                    std::string const& renderReason) {
     placeWindow(EditorWindow::Stats);
     if (ImGui::Begin(windowName(EditorWindow::Stats), nullptr, editorWindowFlags())) {
         FrameStats const& f = stats.last;
         double const frameMs = stats.costAverage.frameCpuMs;
         ImGui::Text("Frame %.2f ms (%.0f fps)", frameMs, frameMs > 0.0 ? 1000.0 / frameMs : 0.0);
         ImGui::Text("Renderer GPU %.2f ms at %dx%d", f.gpuFrameMs, f.width, f.height);
+        if (render) {
+            // Render on change: an idle editor shows the last frame again instead of re-rendering it.
+            if (render->renderedLastFrame) {
+                ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.4f, 1.0f));
+                ImGui::TextWrapped("Last frame: re-rendered (%s)", renderReason.c_str());
+                ImGui::PopStyleColor();
+            } else {
+                ImGui::TextDisabled("Last frame: reused, nothing changed");
+            }
+            ImGui::Checkbox("Render every frame", &render->continuous);
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("for timing: run the renderer each frame even when nothing changed (--continuous)");
+            char counts[64];
+            std::snprintf(counts, sizeof counts, "%ld rendered, %ld reused", render->renders, render->skipped);
+            sameLineIfFits(ImGui::CalcTextSize(counts).x, false, rowRightEdge());
+            ImGui::TextDisabled("%s", counts);
+        }
         ImGui::Text("Mode run: %s", enumName(kLightingModeNames, f.modeUsed).data());
         if (!f.fallbackReason.empty()) {
             ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
@@ -40,9 +59,10 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount)
         ImGui::PlotLines("##gpu", stats.gpuFrameMs.data(), stats.count, offset, "renderer GPU ms", 0.0f, top,
                          ImVec2(plotW, 45.0f));
 
-        if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-            ImGui::TableSetupColumn("pass");
-            ImGui::TableSetupColumn("GPU ms");
+        if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) {
+            // The number column is as wide as its widest value; names take the rest.
+            ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthStretch);
+            ImGui::TableSetupColumn("GPU ms", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("GPU ms 000.000").x);
             ImGui::TableHeadersRow();
             for (auto const& p : f.passes) {
                 ImGui::TableNextRow();
@@ -54,19 +74,22 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount)
             ImGui::EndTable();
         }
 
-        ImGui::Text("Lights: %d in the list, %d submitted, %d shaded", lightCount, f.lightsSubmitted, f.lightsShaded);
+        ImGui::TextWrapped("Lights: %d in the list, %d submitted, %d shaded", lightCount, f.lightsSubmitted, f.lightsShaded);
         if (f.fragmentInvocations)
-            ImGui::Text("Fragment invocations (lighting): %llu", (unsigned long long)*f.fragmentInvocations);
-        else
-            ImGui::TextDisabled("Fragment invocations: n/a (%s)", caps.pipelineStatisticsUnavailableReason().c_str());
+            ImGui::TextWrapped("Fragment invocations (lighting): %llu", (unsigned long long)*f.fragmentInvocations);
+        else {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+            ImGui::TextWrapped("Fragment invocations: n/a (%s)", caps.pipelineStatisticsUnavailableReason().c_str());
+            ImGui::PopStyleColor();
+        }
         ImGui::Text("GL errors this frame: %llu", (unsigned long long)f.glErrors);
 
         separatorText("Editor cost");
         EditorCost const& c = stats.costAverage;
         double const editor = c.uiCpuMs + c.viewersGpuMs + c.imguiGpuMs;
         ImGui::Text("UI build %.2f ms (CPU)", c.uiCpuMs);
-        ImGui::Text("Viewers %.2f ms, ImGui draw %.2f ms (GPU)", c.viewersGpuMs, c.imguiGpuMs);
-        ImGui::Text("Editor total %.2f ms = %.0f%% of the frame", editor, frameMs > 0.0 ? 100.0 * editor / frameMs : 0.0);
+        ImGui::TextWrapped("Viewers %.2f ms, ImGui draw %.2f ms (GPU)", c.viewersGpuMs, c.imguiGpuMs);
+        ImGui::TextWrapped("Editor total %.2f ms = %.0f%% of the frame", editor, frameMs > 0.0 ? 100.0 * editor / frameMs : 0.0);
     }
     ImGui::End();
 }

@@ -1,11 +1,17 @@
 // Stats window: frame times, pass times and the editor's own cost.
 #pragma once
 
+#include "model/render_inputs.h"
 #include "model/stats_state.h"
 #include "gl/caps.h"
 
+#include <string>
+
 namespace gbl::ui {
 
-void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount);
+// render: the loop's render-on-change record, shown as "re-rendered"/"reused" with a checkbox for
+// continuous rendering; null hides that line.
+void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount, RenderOnChange* render = nullptr,
+                    std::string const& renderReason = {});
 
 }  // namespace gbl::ui

@@ -26,26 +26,24 @@ void viewCombo(PipelineSettings& settings) {
         ImGui::EndCombo();
     }
 }
-// Legend for the heat views, in the stops of heatRamp() in shaders/view.frag (blue, cyan,
-// green, yellow, red at 0, 1/4, 1/2, 3/4, 1), up to the count the display pass maps to red.
-void drawHeatLegend(ImVec2 imageMin, ImVec2 imageMax, DebugView view) {
+// Labels for the heat legend that shaders/view.frag draws into the image itself (heatLegend: a
+// ramp from texel x 8 to min(width - 8, 264), rows 6..22 from the bottom). Only the words are
+// drawn here, over the image just above that ramp, so there is one legend and it is labelled.
+void labelHeatLegend(ImVec2 imageMin, ImVec2 imageMax, glm::ivec2 textureSize, DebugView view) {
+    if (textureSize.x < 64 || textureSize.y < 64) return;  // the shader draws no legend either
+    float const sx = (imageMax.x - imageMin.x) / float(textureSize.x);
+    float const sy = (imageMax.y - imageMin.y) / float(textureSize.y);
+    float const x0 = imageMin.x + 8.0f * sx, x1 = imageMin.x + float(std::min(textureSize.x - 8, 264)) * sx;
+    float const barTop = imageMax.y - 23.0f * sy;
+    char text[96];
+    std::snprintf(text, sizeof text, "%s: 0 .. %.0f+", view == DebugView::TileLights ? "lights per tile" : "volumes per pixel",
+                  ViewParams{}.heatMax);
+    ImVec2 const size = ImGui::CalcTextSize(text);
+    ImVec2 const p(x0, barTop - size.y - 3.0f);
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    ImU32 const stops[5] = {IM_COL32(0, 0, 255, 255), IM_COL32(0, 255, 255, 255), IM_COL32(0, 255, 0, 255),
-                            IM_COL32(255, 255, 0, 255), IM_COL32(255, 0, 0, 255)};
-    float const w = std::min(240.0f, (imageMax.x - imageMin.x) * 0.5f), h = 12.0f;
-    ImVec2 const p0(imageMax.x - w - 12.0f, imageMax.y - h - 26.0f);
-    dl->AddRectFilled(ImVec2(p0.x - 6, p0.y - 20), ImVec2(p0.x + w + 6, p0.y + h + 18), IM_COL32(0, 0, 0, 170));
-    for (int i = 0; i < 4; ++i) {
-        float const x0 = p0.x + w * float(i) / 4.0f, x1 = p0.x + w * float(i + 1) / 4.0f;
-        dl->AddRectFilledMultiColor(ImVec2(x0, p0.y), ImVec2(x1, p0.y + h), stops[i], stops[i + 1], stops[i + 1], stops[i]);
-    }
-    float const heatMax = ViewParams{}.heatMax;
-    char top[32];
-    std::snprintf(top, sizeof top, "%.0f+", heatMax);
-    dl->AddText(ImVec2(p0.x, p0.y - 17), IM_COL32(230, 230, 230, 255),
-                view == DebugView::TileLights ? "lights per tile" : "light volumes covering the pixel");
-    dl->AddText(ImVec2(p0.x, p0.y + h + 2), IM_COL32(230, 230, 230, 255), "0 (black)");
-    dl->AddText(ImVec2(p0.x + w - ImGui::CalcTextSize(top).x, p0.y + h + 2), IM_COL32(230, 230, 230, 255), top);
+    dl->AddRectFilled(ImVec2(p.x - 3.0f, p.y - 1.0f), ImVec2(std::max(x1, p.x + size.x) + 3.0f, barTop),
+                      IM_COL32(0, 0, 0, 170));
+    dl->AddText(p, IM_COL32(235, 235, 235, 255), text);
 }
 
 }  // namespace
@@ -55,6 +53,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigne
     state.hovered = false;
     state.hoverPixel.reset();
     state.clickPixel.reset();
+    state.doubleClickPixel.reset();
     state.orbitDrag = state.lookDrag = state.panDrag = glm::vec2(0.0f);
     state.wheel = 0.0f;
     state.frameRequested = false;
@@ -84,8 +83,9 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigne
     ImGui::TextDisabled("(?)");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("left drag: orbit    right drag: look    middle drag: pan    wheel: dolly\n"
-                          "W A S D / Q E: fly (shift: faster)    F: frame the scene\n"
-                          "click a light cube: select it    L: lock the pixel inspector");
+                          "W A S D / Q E: fly (shift: faster)    F: frame the selection    Home: the scene's view\n"
+                          "click a light cube: select it    double-click: select and frame it\n"
+                          "L: lock the pixel inspector    F1: every shortcut");
 
     ImVec2 const avail = ImGui::GetContentRegionAvail();
     ImVec2 const scale = ImGui::GetIO().DisplayFramebufferScale;
@@ -96,6 +96,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigne
     }
 
     ImVec2 const origin = ImGui::GetCursorScreenPos();
+    state.imageRect = glm::vec4(origin.x, origin.y, avail.x, avail.y);
     ImGui::InvisibleButton("viewport-image", avail,
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                ImGuiButtonFlags_MouseButtonMiddle);
@@ -117,7 +118,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigne
         dl->PopClipRect();
     }
     if (settings.view == DebugView::Heatmap || settings.view == DebugView::TileLights)
-        drawHeatLegend(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), settings.view);
+        labelHeatLegend(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), textureSize, settings.view);
 
     ImGuiIO const& io = ImGui::GetIO();
     state.hovered = ImGui::IsItemHovered();
@@ -137,6 +138,9 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigne
     if (state.hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
         io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < kClickSlopSq && state.hoverPixel)
         state.clickPixel = state.hoverPixel;
+    // Decided on event times (model/input_events.h), so it works at a few frames per second.
+    if (state.hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && state.hoverPixel)
+        state.doubleClickPixel = state.hoverPixel;
     ImGui::End();
 }
 

@@ -1,0 +1,58 @@
+// The --log-frames line is valid JSON that carries each field, strings escaped.
+#include "model/frame_log.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+using namespace gbl::ui;
+
+TEST(FrameLog, LinesAreJsonWithEveryField) {
+    FrameLogLine l;
+    l.frame = 41;
+    l.rendered = true;
+    l.renderReason = "camera";
+    l.frameMs = 153.25;
+    l.camera = {1.5f, -2.0f, 3.0f};
+    l.selectedLight = 7;
+    l.viewport = {10, 20, 640, 360};
+    l.pickable = {{3, {100.5f, 200.0f}}};
+    l.events = {"key 70 press mods 0 -> frame-selection", "quote \" and \\ and \n"};
+    l.sessionPath = "/tmp/s.json";
+    l.clipped = {"Stats: content 330 px wide in 302 px"};
+    nlohmann::json const j = nlohmann::json::parse(frameLogJson(l));
+    EXPECT_EQ(j["frame"], 41);
+    EXPECT_EQ(j["rendered"], true);
+    EXPECT_DOUBLE_EQ(j["frameMs"].get<double>(), 153.25);
+    EXPECT_DOUBLE_EQ(j["camera"][1].get<double>(), -2.0);
+    EXPECT_EQ(j["selectedLight"], 7);
+    EXPECT_DOUBLE_EQ(j["viewport"][2].get<double>(), 640.0);
+    EXPECT_EQ(j["pickable"][0][0], 3);
+    EXPECT_EQ(j["events"][1], "quote \" and \\ and \n");
+    EXPECT_EQ(j["session"], "/tmp/s.json");
+    EXPECT_EQ(j["actions"].size(), 0u);
+    EXPECT_EQ(j["clipped"][0], "Stats: content 330 px wide in 302 px");
+}
+
+TEST(FrameLog, WritesOneLinePerFrame) {
+    std::string const path = ::testing::TempDir() + "frame_log_test.jsonl";
+    {
+        FrameLog log;
+        ASSERT_FALSE(log.open(path));
+        for (long f = 1; f <= 3; ++f) {
+            FrameLogLine l;
+            l.frame = f;
+            log.write(l);
+        }
+    }
+    std::ifstream in(path);
+    std::string line;
+    long count = 0;
+    while (std::getline(in, line)) EXPECT_EQ(nlohmann::json::parse(line)["frame"], ++count);
+    EXPECT_EQ(count, 3);
+    FrameLog bad;
+    auto const error = bad.open("/nonexistent-folder/x.jsonl");
+    ASSERT_TRUE(error);
+    EXPECT_NE(error->find("/nonexistent-folder/x.jsonl"), std::string::npos);
+}

@@ -1,0 +1,148 @@
+#!/bin/sh
+# The real editor driven by real X events (xdotool) while each frame takes 150 ms or more: a click
+# selects a light, a 20 ms F tap frames it, Ctrl+S over the viewport saves without flying, Home
+# returns to the scene's view, a double click frames a light, and an idle editor does not render.
+# Every check reads the editor's --log-frames lines or the saved session file.
+# usage: ui_real_input.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
+set -eu
+bin="$1"
+work="$2"
+
+if ! command -v xdotool >/dev/null 2>&1; then
+    echo "ui_real_input skipped: xdotool not found (scripts/install-deps.sh installs it)"
+    exit 0
+fi
+rm -rf "$work"
+mkdir -p "$work"
+log="$work/frames.jsonl"
+# Crash recovery files and the layout file stay inside the test's folder.
+export GBL_RECOVERY_DIR="$work/recovery" XDG_CONFIG_HOME="$work/config"
+mkdir -p "$GBL_RECOVERY_DIR" "$XDG_CONFIG_HOME"
+pid=""
+
+fail() {
+    echo "ui_real_input: FAIL: $*"
+    [ -f "$log" ] && tail -n 3 "$log"
+    [ -n "$pid" ] && kill "$pid" 2>/dev/null
+    exit 1
+}
+
+# --- reading the frame log (flat JSON lines written by ui/model/frame_log.cpp) ---------------
+lines() { [ -f "$log" ] && wc -l < "$log" || echo 0; }
+last() { tail -n 1 "$log"; }
+# field NAME [LINE]: the raw value of a number, boolean or [..] array field.
+field() {
+    line="${2:-$(last)}"
+    printf '%s\n' "$line" | sed -n "s/.*\"$1\":\(\[[^]]*\]\|[^,}]*\).*/\1/p"
+}
+# wait_frames N: until N more frames are logged (at most 60 s).
+wait_frames() {
+    target=$(( $(lines) + $1 ))
+    i=0
+    while [ "$(lines)" -lt "$target" ]; do
+        kill -0 "$pid" 2>/dev/null || fail "the editor exited (see $work/editor.log)"
+        i=$((i + 1))
+        [ "$i" -le 600 ] || fail "no frame logged for 60 s"
+        sleep 0.1
+    done
+}
+# events_since N: the events and actions logged after line N.
+events_since() { tail -n +"$(( $1 + 1 ))" "$log" | sed -n 's/.*"events":\(\[[^]]*\]\).*"actions":\(\[[^]]*\]\).*/\1 \2/p'; }
+
+# --- a session file to start from, written by the editor's own save --------------------------
+cat > "$work/make_session.txt" <<SCRIPT
+frames 2
+save-session $work/session.json
+SCRIPT
+"$bin" --size 1280x720 --no-vsync --ui-test "$work/make_session.txt" > "$work/make_session.log" 2>&1 ||
+    { cat "$work/make_session.log"; fail "could not write the starting session"; }
+cp "$work/session.json" "$work/start.json"
+
+"$bin" --size 1280x720 --no-vsync --session "$work/session.json" --frame-sleep-ms 150 --log-frames "$log" \
+    > "$work/editor.log" 2>&1 &
+pid=$!
+wait_frames 4
+wid=$(xdotool search --sync --onlyvisible --name '^gbuffer-lab$' | head -n 1)
+[ -n "$wid" ] || fail "no gbuffer-lab window"
+xdotool windowactivate --sync "$wid" 2>/dev/null || xdotool windowfocus --sync "$wid"
+
+# The pointer over the middle of the viewport image.
+vp=$(field viewport | tr -d '[]')
+cx=$(echo "$vp" | awk -F, '{ printf "%d", $1 + $3 / 2 }')
+cy=$(echo "$vp" | awk -F, '{ printf "%d", $2 + $4 / 2 }')
+xdotool mousemove --window "$wid" "$cx" "$cy"
+wait_frames 4
+[ "$(field viewportHovered)" = "true" ] || fail "the pointer at $cx,$cy is not over the viewport ($vp)"
+
+# --- idle: no change, so at most one render over 40 frames ----------------------------------
+wait_frames 3
+start=$(lines)
+wait_frames 40
+renders=$(tail -n +"$(( start + 1 ))" "$log" | head -n 40 | grep -c '"rendered":true' || true)
+echo "idle: $renders render(s) over 40 frames"
+[ "$renders" -le 1 ] || fail "the idle editor rendered $renders times over 40 frames"
+ms=$(field frameMs)
+echo "frame time $ms ms"
+
+# pick_other: a light cube in view that is not the selected one; sets light, lx, ly.
+pick_other() {
+    selected=$(field selectedLight)
+    pick=$(last | sed -n 's/.*"pickable":\[\(.*\)\],"events".*/\1/p' | tr -d '[' | tr ']' '\n' | sed 's/^,//' | grep -v '^$' |
+        awk -F, -v s="$selected" '$1 != s { print; exit }')
+    [ -n "$pick" ] || fail "no light cube in view other than the selected one ($selected)"
+    light=$(echo "$pick" | cut -d, -f1)
+    lx=$(echo "$pick" | awk -F, '{ printf "%d", $2 }')
+    ly=$(echo "$pick" | awk -F, '{ printf "%d", $3 }')
+}
+
+# --- a click with a 30 ms dwell selects the light under the pointer, and does not orbit -------
+pick_other
+before=$(field camera)
+xdotool mousemove --window "$wid" "$lx" "$ly" mousedown 1 sleep 0.03 mouseup 1
+wait_frames 5
+[ "$(field selectedLight)" = "$light" ] || fail "clicking light $light at $lx,$ly selected $(field selectedLight)"
+[ "$(field camera)" = "$before" ] || fail "the click moved the camera: $before -> $(field camera)"
+echo "click at $lx,$ly selected light $light"
+
+# --- a 20 ms F tap frames the selected light ---------------------------------------------------
+before=$(field camera)
+mark=$(lines)
+xdotool keydown f sleep 0.02 keyup f
+wait_frames 4
+after=$(field camera)
+[ "$after" != "$before" ] || fail "a 20 ms F tap did not move the camera ($before)"
+events_since "$mark" | grep -q "frame-selection" || fail "no frame-selection action logged"
+echo "F: camera $before -> $after"
+
+# --- Ctrl+S over the viewport saves and does not fly back ------------------------------------
+xdotool mousemove --window "$wid" "$cx" "$cy"
+wait_frames 2
+before=$(field camera)
+mark=$(lines)
+xdotool keydown ctrl keydown s sleep 0.02 keyup s keyup ctrl
+wait_frames 4
+after=$(field camera)
+[ "$after" = "$before" ] || fail "Ctrl+S moved the camera: $before -> $after"
+events_since "$mark" | grep -q "save-session" || fail "no save-session action logged"
+cmp -s "$work/session.json" "$work/start.json" && fail "Ctrl+S did not write the session file"
+echo "Ctrl+S saved $work/session.json; camera stayed at $after"
+
+# --- Home returns to the scene's view; a double click frames a light ---------------------------
+mark=$(lines)
+xdotool key --delay 20 Home
+wait_frames 4
+events_since "$mark" | grep -q "home-view" || fail "no home-view action logged"
+home=$(field camera)
+[ "$home" != "$after" ] || fail "Home did not move the camera from the framed light"
+pick_other
+mark=$(lines)
+xdotool mousemove --window "$wid" "$lx" "$ly" sleep 0.2 click --repeat 2 --delay 80 1
+wait_frames 8
+events_since "$mark" | grep -q "double-click-frame" || fail "no double click seen on light $light"
+[ "$(field selectedLight)" = "$light" ] || fail "the double click did not select light $light"
+[ "$(field camera)" != "$home" ] || fail "the double click on light $light did not frame it"
+echo "double click framed light $light"
+
+kill "$pid" 2>/dev/null || true
+wait "$pid" 2>/dev/null || true
+echo "ui_real_input: PASS"

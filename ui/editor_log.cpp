@@ -1,0 +1,60 @@
+// --log-frames: what each frame did, for tests that drive the real window from outside.
+#include "editor_loop.h"
+
+#include "panels/clip_check.h"
+
+#include <imgui.h>
+
+namespace gbl {
+
+namespace {
+
+// Lights a click on their cube's centre would select, in window coordinates: the test clicks
+// there. At most a few, nearest to the middle of the image first is not needed: list order.
+std::vector<ui::PickableLight> pickableLights(Editor& editor) {
+    std::vector<ui::PickableLight> out;
+    ui::EditorState const& state = editor.state;
+    Renderer& renderer = *editor.renderer;
+    glm::vec4 const rect = state.viewport.imageRect;
+    if (renderer.width() <= 0 || renderer.height() <= 0 || rect.z <= 0.0f || rect.w <= 0.0f) return out;
+    float const aspect = float(renderer.width()) / float(renderer.height());
+    glm::mat4 const viewProjection = state.camera.projection(aspect) * state.camera.view();
+    for (std::size_t i = 0; i < editor.drawn.size() && out.size() < 3; ++i) {
+        glm::vec4 const clip = viewProjection * glm::vec4(editor.drawn[i].position, 1.0f);
+        if (clip.w <= state.camera.nearPlane) continue;
+        glm::vec2 const uv(clip.x / clip.w * 0.5f + 0.5f, 0.5f - clip.y / clip.w * 0.5f);
+        // Keep clear of the edges, where a click might land on the viewport's frame.
+        if (uv.x < 0.05f || uv.x > 0.95f || uv.y < 0.05f || uv.y > 0.95f) continue;
+        glm::ivec2 const pixel(int(uv.x * float(renderer.width())), int(uv.y * float(renderer.height())));
+        if (lightAtPixel(state, renderer, editor.drawn, pixel) != int(i)) continue;
+        out.push_back({int(i), glm::vec2(rect.x + uv.x * rect.z, rect.y + uv.y * rect.w)});
+    }
+    return out;
+}
+
+}  // namespace
+
+void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
+    ui::EditorState const& state = editor.state;
+    ui::FrameLogLine line;
+    line.frame = editor.frame;
+    line.rendered = times.rendered;
+    line.renderReason = editor.renderReason;
+    line.frameMs = frameMs;
+    line.camera = state.camera.position;
+    line.cameraAngles = {state.camera.yawDegrees, state.camera.pitchDegrees};
+    line.selectedLight = state.lightsPanel.selected;
+    line.textInput = ImGui::GetIO().WantTextInput;
+    line.viewportHovered = state.viewport.hovered;
+    line.viewport = state.viewport.imageRect;
+    line.pickable = pickableLights(editor);
+    line.events = editor.actions.applied;
+    for (ui::InputEvent const& e : editor.input.imguiFrame.events)
+        if (e.kind == ui::InputKind::MouseButton) line.events.push_back(ui::describeEvent(e));
+    line.actions = editor.actionLog;
+    line.clipped = ui::clippedItems();
+    line.sessionPath = editor.sessions->panel.currentPath;
+    editor.frameLog.write(line);
+}
+
+}  // namespace gbl

@@ -1,0 +1,34 @@
+// Named camera views of the editor: the scene's home view (Home) and framing the selection (F).
+// Pure math over the rig and camera, no GL.
+#pragma once
+
+#include "core/camera.h"
+#include "model/camera_rig.h"
+#include "scene/scene_data.h"
+
+#include <optional>
+
+namespace gbl::ui {
+
+// A camera with the rig target it orbits around.
+struct CameraView {
+    Camera camera;
+    CameraRig rig;
+};
+
+// The view a scene starts in: its suggested camera, or, without one, the whole scene framed
+// from the default direction. Captured when a scene is installed; Home returns to it.
+CameraView homeView(std::optional<Camera> const& suggested, Bounds const& bounds, CameraRig const& rig);
+
+bool insideBounds(glm::vec3 point, Bounds const& bounds);
+
+// F with a light selected: the light at the centre of the view, seen from the current direction
+// at a distance that shows the cube and what it lights near by (half its radius, at least 1,
+// at most a third of the scene's radius, and never less than 1).
+void frameLight(CameraRig& rig, Camera& camera, glm::vec3 lightPosition, float lightRadius, Bounds const& scene);
+
+// F with nothing selected: the home view when it looks at the scene from inside (a courtyard is
+// seen from within its walls), else the whole scene framed from the current direction.
+void frameNothingSelected(CameraRig& rig, Camera& camera, CameraView const& home, Bounds const& scene);
+
+}  // namespace gbl::ui

@@ -1,0 +1,80 @@
+// JSON lines of the frame log, written without a JSON library: flat values and string arrays.
+#include "model/frame_log.h"
+
+#include <cerrno>
+#include <cstring>
+
+namespace gbl::ui {
+
+namespace {
+
+std::string quoted(std::string const& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        unsigned char const u = static_cast<unsigned char>(c);
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (u < 0x20) {
+            char esc[8];
+            std::snprintf(esc, sizeof esc, "\\u%04x", u);
+            out += esc;
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+std::string number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4f", v);
+    return text;
+}
+
+std::string strings(std::vector<std::string> const& items) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < items.size(); ++i) out += (i ? "," : "") + quoted(items[i]);
+    return out + "]";
+}
+
+}  // namespace
+
+std::string frameLogJson(FrameLogLine const& l) {
+    std::string out = "{\"frame\":" + std::to_string(l.frame);
+    out += ",\"rendered\":" + std::string(l.rendered ? "true" : "false");
+    out += ",\"renderReason\":" + quoted(l.renderReason);
+    out += ",\"frameMs\":" + number(l.frameMs);
+    out += ",\"camera\":[" + number(l.camera.x) + "," + number(l.camera.y) + "," + number(l.camera.z) + "]";
+    out += ",\"cameraAngles\":[" + number(l.cameraAngles.x) + "," + number(l.cameraAngles.y) + "]";
+    out += ",\"selectedLight\":" + std::to_string(l.selectedLight);
+    out += ",\"textInput\":" + std::string(l.textInput ? "true" : "false");
+    out += ",\"viewportHovered\":" + std::string(l.viewportHovered ? "true" : "false");
+    out += ",\"viewport\":[" + number(l.viewport.x) + "," + number(l.viewport.y) + "," + number(l.viewport.z) + "," +
+           number(l.viewport.w) + "]";
+    out += ",\"pickable\":[";
+    for (std::size_t i = 0; i < l.pickable.size(); ++i)
+        out += (i ? ",[" : "[") + std::to_string(l.pickable[i].index) + "," + number(l.pickable[i].window.x) + "," +
+               number(l.pickable[i].window.y) + "]";
+    out += "]";
+    out += ",\"events\":" + strings(l.events);
+    out += ",\"actions\":" + strings(l.actions);
+    out += ",\"clipped\":" + strings(l.clipped);
+    if (l.sessionPath) out += ",\"session\":" + quoted(*l.sessionPath);
+    return out + "}";
+}
+
+std::optional<std::string> FrameLog::open(std::string const& path) {
+    file_.reset(std::fopen(path.c_str(), "w"));
+    if (!file_) return "Cannot write the frame log " + path + ": " + std::strerror(errno) + ".";
+    return std::nullopt;
+}
+
+void FrameLog::write(FrameLogLine const& line) {
+    if (!file_) return;
+    std::string const text = frameLogJson(line) + "\n";
+    std::fwrite(text.data(), 1, text.size(), file_.get());
+    std::fflush(file_.get());
+}
+
+}  // namespace gbl::ui

@@ -1,0 +1,56 @@
+// --log-frames: one JSON line per editor frame, so tests driving the real window from outside
+// (xdotool) can read what each frame did.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gbl::ui {
+
+// A light a click at (x, y) in window coordinates would select (the test clicks there).
+struct PickableLight {
+    int index = -1;
+    glm::vec2 window{0.0f};
+};
+
+struct FrameLogLine {
+    long frame = 0;
+    bool rendered = false;         // the renderer ran (render on change)
+    std::string renderReason;      // what changed ("camera, lights"), "nothing" when it did not run
+    double frameMs = 0.0;          // wall clock of the whole loop iteration
+    glm::vec3 camera{0.0f};        // camera position
+    glm::vec2 cameraAngles{0.0f};  // yaw, pitch in degrees
+    int selectedLight = -1;
+    bool textInput = false;  // a text field has the keyboard
+    bool viewportHovered = false;
+    glm::vec4 viewport{0.0f};  // the viewport image in window coordinates: x, y, width, height
+    std::vector<PickableLight> pickable;
+    std::vector<std::string> events;         // input events applied this frame, and what they did
+    std::vector<std::string> actions;        // editor actions carried out this frame
+    std::vector<std::string> clipped;        // UI content cut off this frame, where ImGui can tell
+    std::optional<std::string> sessionPath;  // the session file of the editor ("" = untitled)
+};
+
+std::string frameLogJson(FrameLogLine const& line);
+
+// The open log file; writes and flushes one line per frame so a reader sees it at once.
+class FrameLog {
+public:
+    // nullopt on success, else one sentence.
+    std::optional<std::string> open(std::string const& path);
+    bool isOpen() const { return file_ != nullptr; }
+    void write(FrameLogLine const& line);
+
+private:
+    struct Close {
+        void operator()(std::FILE* f) const { std::fclose(f); }
+    };
+    std::unique_ptr<std::FILE, Close> file_;
+};
+
+}  // namespace gbl::ui
