@@ -13,8 +13,8 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <span>
@@ -51,7 +51,7 @@ struct Result {
     double wallSeconds = 0.0;
     Summary frameMs;
     std::vector<std::pair<std::string, Summary>> passMs;  // in frame order
-    std::optional<double> fragmentInvocations;             // median over measured frames
+    std::optional<double> fragmentInvocations;            // median over measured frames
     std::optional<std::uint64_t> litPixels;
     std::optional<std::uint64_t> lightPixelPairs;
     std::optional<std::uint64_t> evaluatedPairs;
@@ -76,7 +76,9 @@ Coverage readCoverage(Renderer& renderer) {
     return c;
 }
 
-Summary summarize(std::vector<double> const& v) { return {percentile(v, 0.5), percentile(v, 0.95)}; }
+Summary summarize(std::vector<double> const& v) {
+    return {percentile(v, 0.5), percentile(v, 0.95)};
+}
 
 std::string comboName(Combination const& c) {
     std::string s(enumName(kLightingModeNames, c.mode));
@@ -108,8 +110,9 @@ Result runCombination(Renderer& renderer, Camera const& camera, std::span<PointL
     }
     if (auto const predicted = predictedFrameSeconds(done, c); predicted && *predicted > o.budgetSeconds) {
         char buf[160];
-        std::snprintf(buf, sizeof buf, "predicted %.1f s per frame from the previous light count, over the %.0f s budget",
-                      *predicted, o.budgetSeconds);
+        std::snprintf(buf, sizeof buf,
+                      "predicted %.1f s per frame from the previous light count, over the %.0f s budget", *predicted,
+                      o.budgetSeconds);
         r.status = "skipped";
         r.note = buf;
         return r;
@@ -173,10 +176,14 @@ Result runCombination(Renderer& renderer, Camera const& camera, std::span<PointL
 std::string formatCount(std::optional<double> v) {
     if (!v) return "-";
     char buf[32];
-    if (*v >= 1e9) std::snprintf(buf, sizeof buf, "%.2fG", *v * 1e-9);
-    else if (*v >= 1e6) std::snprintf(buf, sizeof buf, "%.2fM", *v * 1e-6);
-    else if (*v >= 1e3) std::snprintf(buf, sizeof buf, "%.1fk", *v * 1e-3);
-    else std::snprintf(buf, sizeof buf, "%.0f", *v);
+    if (*v >= 1e9)
+        std::snprintf(buf, sizeof buf, "%.2fG", *v * 1e-9);
+    else if (*v >= 1e6)
+        std::snprintf(buf, sizeof buf, "%.2fM", *v * 1e-6);
+    else if (*v >= 1e3)
+        std::snprintf(buf, sizeof buf, "%.1fk", *v * 1e-3);
+    else
+        std::snprintf(buf, sizeof buf, "%.0f", *v);
     return buf;
 }
 
@@ -197,7 +204,8 @@ void printTable(std::vector<Result> const& results, GlCaps const& caps, Size2 si
     std::printf("%d warm-up + %d measured frames per combination, budget %.0f s each; GPU times from timer queries\n\n",
                 o.warmup, o.frames, o.budgetSeconds);
     std::printf("%-16s %6s %6s %7s %11s %11s %9s %10s %10s %8s %9s %9s  %s\n", "mode", "lights", "radius", "frames",
-                "frame med", "frame p95", "vs quad", "frag.inv", "lit px", "shaded", "lit pairs", "evaluated", "status");
+                "frame med", "frame p95", "vs quad", "frag.inv", "lit px", "shaded", "lit pairs", "evaluated",
+                "status");
     for (auto const& r : results) {
         std::string speed = "-";
         if (Result const* q = quadFor(results, r.combo.lights); q && r.framesMeasured > 0 && r.frameMs.median > 0) {
@@ -215,10 +223,10 @@ void printTable(std::vector<Result> const& results, GlCaps const& caps, Size2 si
         std::snprintf(radius, sizeof radius, "x%.3g", r.combo.radiusScale);
         std::printf("%-16s %6d %6s %7d %11s %11s %9s %10s %10s %8d %9s %9s  %s%s%s\n", comboName(r.combo).c_str(),
                     r.combo.lights, radius, r.framesMeasured, ms(r.frameMs.median).c_str(), ms(r.frameMs.p95).c_str(),
-                    speed.c_str(), formatCount(r.fragmentInvocations).c_str(), formatCount(asDouble(r.litPixels)).c_str(),
-                    r.lightsShaded, formatCount(asDouble(r.lightPixelPairs)).c_str(),
-                    formatCount(asDouble(r.evaluatedPairs)).c_str(), r.status.c_str(), r.note.empty() ? "" : ": ",
-                    r.note.c_str());
+                    speed.c_str(), formatCount(r.fragmentInvocations).c_str(),
+                    formatCount(asDouble(r.litPixels)).c_str(), r.lightsShaded,
+                    formatCount(asDouble(r.lightPixelPairs)).c_str(), formatCount(asDouble(r.evaluatedPairs)).c_str(),
+                    r.status.c_str(), r.note.empty() ? "" : ": ", r.note.c_str());
         if (!r.passMs.empty()) {
             std::printf("%-16s", "");
             for (auto const& [name, s] : r.passMs) std::printf("  %s %.2f/%.2f", name.c_str(), s.median, s.p95);
@@ -227,11 +235,12 @@ void printTable(std::vector<Result> const& results, GlCaps const& caps, Size2 si
     }
     std::printf("\nfrag.inv: fragment-shader invocations of the lighting pass (ARB_pipeline_statistics_query%s).\n",
                 caps.pipelineStatistics ? "" : ": unavailable on this context");
-    std::printf("frag.inv counts fragment shaders only: tiled shades in a compute shader, so it shows the lighting\n"
-                "pass's 0 there. radius: the lights' radius scale (--radius-scale). lit px: pixels some light reached;\n"
-                "lit pairs: (light, pixel) pairs where the light reached the surface; evaluated: (light, pixel) pairs the\n"
-                "mode ran its shading for (volume fragments, tile-list entries, every light for quad). lit pairs /\n"
-                "lit px is the least work per pixel any exact method needs; evaluated / lit pairs is the waste.\n");
+    std::printf(
+        "frag.inv counts fragment shaders only: tiled shades in a compute shader, so it shows the lighting\n"
+        "pass's 0 there. radius: the lights' radius scale (--radius-scale). lit px: pixels some light reached;\n"
+        "lit pairs: (light, pixel) pairs where the light reached the surface; evaluated: (light, pixel) pairs the\n"
+        "mode ran its shading for (volume fragments, tile-list entries, every light for quad). lit pairs /\n"
+        "lit px is the least work per pixel any exact method needs; evaluated / lit pairs is the waste.\n");
 }
 
 json toJson(std::vector<Result> const& results, GlCaps const& caps, Size2 size, BenchOptions const& o) {
@@ -277,14 +286,14 @@ void addBenchOptions(CLI::App& sub, BenchOptions& o) {
     sub.add_option("--modes", o.modes, "Lighting modes, comma-separated: quad, volumes, tiled, forward")
         ->delimiter(',')
         ->capture_default_str();
-    sub.add_option("--cull", o.culls, "Cull modes measured for volumes, comma-separated: back, front, none, flip, stencil")
+    sub.add_option("--cull", o.culls,
+                   "Cull modes measured for volumes, comma-separated: back, front, none, flip, stencil")
         ->delimiter(',')
         ->capture_default_str();
     sub.add_option("--frames", o.frames, "Measured frames per combination")->capture_default_str();
     sub.add_option("--warmup", o.warmup, "Warm-up frames per combination, not measured")->capture_default_str();
     sub.add_option("--budget", o.budgetSeconds, "Wall-clock seconds allowed per combination")->capture_default_str();
-    sub.add_option("--radius-scale", o.radiusScale,
-                   "Scale every light's radius: a number, or auto = sqrt(32 / lights)")
+    sub.add_option("--radius-scale", o.radiusScale, "Scale every light's radius: a number, or auto = sqrt(32 / lights)")
         ->capture_default_str();
     sub.add_option("--json", o.jsonPath, "Also write the results to this JSON file");
     sub.add_option("--session", o.sessionPath, "Measure the scene, camera, lights and settings of a session file");
@@ -299,7 +308,8 @@ int runBench(BenchOptions const& o) {
     if (o.lights.empty()) return badArgument("--lights needs at least one count");
     for (int n : o.lights)
         if (n < 0 || n > kMaxLights)
-            return badArgument("--lights counts must be 0.." + std::to_string(kMaxLights) + ", got " + std::to_string(n));
+            return badArgument("--lights counts must be 0.." + std::to_string(kMaxLights) + ", got " +
+                               std::to_string(n));
     std::vector<LightingMode> modes;
     for (auto const& name : o.modes) {
         auto m = enumFromName<LightingMode>(kLightingModeNames, name);
@@ -333,7 +343,8 @@ int runBench(BenchOptions const& o) {
     std::vector<int> counts = o.lights;
     std::optional<PreparedScene> prepared;
     PipelineSettings base;
-    if (o.scenePath && o.sessionPath) return badArgument("--scene and --session cannot be combined: the session names its scene");
+    if (o.scenePath && o.sessionPath)
+        return badArgument("--scene and --session cannot be combined: the session names its scene");
     if (o.sessionPath) {
         ui::SessionLoad loaded = ui::loadSession(*o.sessionPath);
         if (!loaded.session) return badArgument(loaded.error);

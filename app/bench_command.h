@@ -31,8 +31,8 @@ struct BenchOptions {
     // from --modes/--cull). Without --lights the session's own light count is measured.
     std::optional<std::string> sessionPath;
     std::optional<std::string> scenePath;  // a glTF scene instead of the default one
-    bool lightsGiven = false;   // --lights was on the command line
-    std::string glLimit;        // "3.3" pretends the context is at most that version
+    bool lightsGiven = false;              // --lights was on the command line
+    std::string glLimit;                   // "3.3" pretends the context is at most that version
 };
 
 void addBenchOptions(CLI::App& sub, BenchOptions& options);

@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
     std::string windowSize;
     bool noVsync = false;
     app.add_option("scene", scene, "A glTF 2.0 file (.gltf or .glb) to open instead of the default scene");
-    app.add_option("--screenshot", editor.screenshotPath, "Write the editor window as PNG after --frames frames, then exit");
+    app.add_option("--screenshot", editor.screenshotPath,
+                   "Write the editor window as PNG after --frames frames, then exit");
     app.add_option("--frames", editor.frames, "Frames to run before exiting (0: until the window is closed)");
     app.add_option("--size", windowSize, "Window size WxH");
     app.add_option("--lights", editor.lightCount, "Number of lights in the default scene");

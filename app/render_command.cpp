@@ -42,12 +42,14 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
     sub.add_option("--time", o.time, "Seconds of light animation")->capture_default_str();
     sub.add_option("--blit", o.blit, "Depth copy before the forward pass: blit, shader or off")->capture_default_str();
     sub.add_option("--mode", o.mode, "Lighting mode: quad, volumes, tiled or forward")->capture_default_str();
-    sub.add_option("--cull", o.cull, "Light volume cull mode: back, front, none, flip or stencil")->capture_default_str();
+    sub.add_option("--cull", o.cull, "Light volume cull mode: back, front, none, flip or stencil")
+        ->capture_default_str();
     sub.add_option("--view", o.views, "Extra debug view(s) to write as view_NAME.png");
     sub.add_option("--scene", o.scene, "A glTF 2.0 scene instead of the default scene");
     sub.add_flag("--allow-outside-uris", o.allowOutsideUris, "Let the glTF file read files outside its folder");
     sub.add_option("--gl", o.glLimit, "Pretend the context is at most this OpenGL version, e.g. 3.3");
-    sub.add_option("--session", o.sessionPath, "Render the frame a session file describes (--mode, --cull, --blit, --time override it)");
+    sub.add_option("--session", o.sessionPath,
+                   "Render the frame a session file describes (--mode, --cull, --blit, --time override it)");
     sub.add_option("--save-session", o.saveSessionPath, "Also write the session that reproduces this frame");
     sub.parse_complete_callback([&sub, &o] {
         for (char const* name : {"--scene", "--lights", "--time", "--blit", "--mode", "--cull"})
@@ -61,7 +63,8 @@ int runRender(RenderOptions const& o) {
     if (!size) return badArgument(error);
     if (o.lights && *o.lights < 0) return badArgument("--lights must be 0 or more, got " + std::to_string(*o.lights));
     if (o.lights && *o.lights > kMaxLights)
-        return badArgument("--lights is limited to " + std::to_string(kMaxLights) + ", got " + std::to_string(*o.lights));
+        return badArgument("--lights is limited to " + std::to_string(kMaxLights) + ", got " +
+                           std::to_string(*o.lights));
     PipelineSettings settings;
     auto const mode = enumFromName<LightingMode>(kLightingModeNames, o.mode);
     auto const cull = enumFromName<CullMode>(kCullModeNames, o.cull);
@@ -72,8 +75,10 @@ int runRender(RenderOptions const& o) {
     std::vector<DebugView> views;
     for (auto const& name : o.views) {
         auto v = enumFromName<DebugView>(kDebugViewNames, name);
-        if (!v) return badArgument("--view '" + name + "' is not one of final, lighting, position, normal, albedo, "
-                                   "specular, depth, depth_linear, heatmap, tile_lights");
+        if (!v)
+            return badArgument("--view '" + name +
+                               "' is not one of final, lighting, position, normal, albedo, "
+                               "specular, depth, depth_linear, heatmap, tile_lights");
         views.push_back(*v);
     }
     settings.mode = *mode;
@@ -94,7 +99,8 @@ int runRender(RenderOptions const& o) {
     if (o.sessionPath) {
         // The session names its scene and lights; options that change the frame override it.
         if (o.given.count("--scene") || o.given.count("--lights"))
-            return badArgument("--scene and --lights cannot be combined with --session (the session names its scene and lights)");
+            return badArgument(
+                "--scene and --lights cannot be combined with --session (the session names its scene and lights)");
         ui::SessionLoad loaded = ui::loadSession(*o.sessionPath);
         if (!loaded.session) return badArgument(loaded.error);
         session = std::move(loaded.session);

@@ -1,8 +1,8 @@
 // Scene and context set-up for the render and bench commands.
 #include "scene_setup.h"
 
-#include "scene/default_scene.h"
 #include "gltf/loader.h"
+#include "scene/default_scene.h"
 
 #include <cstdio>
 
@@ -21,7 +21,8 @@ std::optional<PreparedScene> prepareScene(SceneRequest const& request, std::stri
         out.scene = std::move(*loaded.scene);
         for (auto const& w : out.scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
         out.lights = out.scene.lights;
-        if (request.lightCount && *request.lightCount < int(out.lights.size())) out.lights.resize(std::size_t(*request.lightCount));
+        if (request.lightCount && *request.lightCount < int(out.lights.size()))
+            out.lights.resize(std::size_t(*request.lightCount));
     } else {
         DefaultSceneOptions options;
         options.lightCount = request.lightCount.value_or(options.lightCount);

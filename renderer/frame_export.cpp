@@ -1,9 +1,9 @@
 // The files of one exported frame: images through OpenImageIO, descriptions as JSON.
 #include "frame_export.h"
 
-#include "image_io.h"
 #include "core/depth.h"
 #include "core/light_math.h"
+#include "image_io.h"
 
 #include <nlohmann/json.hpp>
 
@@ -23,7 +23,9 @@ json toJson(glm::mat4 const& m) {
     return rows;
 }
 
-json toJson(glm::vec3 v) { return {v.x, v.y, v.z}; }
+json toJson(glm::vec3 v) {
+    return {v.x, v.y, v.z};
+}
 
 std::optional<std::string> writeJson(fs::path const& path, json const& j) {
     std::ofstream f(path);
@@ -35,10 +37,14 @@ std::optional<std::string> writeJson(fs::path const& path, json const& j) {
 
 char const* radiusKindName(RadiusKind k) {
     switch (k) {
-    case RadiusKind::Quadratic: return "quadratic";
-    case RadiusKind::Linear: return "linear";
-    case RadiusKind::Capped: return "capped";
-    case RadiusKind::Zero: return "zero";
+        case RadiusKind::Quadratic:
+            return "quadratic";
+        case RadiusKind::Linear:
+            return "linear";
+        case RadiusKind::Capped:
+            return "capped";
+        case RadiusKind::Zero:
+            return "zero";
     }
     return "zero";
 }
@@ -79,34 +85,55 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
         ViewParams params;
         params.view = v;
         renderer.drawView(params, {frame.camera, frame.lights, frame.settings}, target);
-        check(writePng(path("view_" + std::string(enumName(kDebugViewNames, v)) + ".png"), renderer.readViewTarget(target), 3));
+        check(writePng(path("view_" + std::string(enumName(kDebugViewNames, v)) + ".png"),
+                       renderer.readViewTarget(target), 3));
     }
     if (err) return err;
 
     json lightsJson = json::array();
     for (auto const& l : frame.lights) {
         LightRadius const r = lightRadius(l);
-        lightsJson.push_back({{"name", l.name}, {"position", toJson(l.position)}, {"color", toJson(l.color)},
-                              {"intensity", l.intensity}, {"kc", l.kc}, {"kl", l.kl}, {"kq", l.kq},
-                              {"threshold", l.threshold}, {"radius", r.radius}, {"radius_kind", radiusKindName(r.kind)}});
+        lightsJson.push_back({{"name", l.name},
+                              {"position", toJson(l.position)},
+                              {"color", toJson(l.color)},
+                              {"intensity", l.intensity},
+                              {"kc", l.kc},
+                              {"kl", l.kl},
+                              {"kq", l.kq},
+                              {"threshold", l.threshold},
+                              {"radius", r.radius},
+                              {"radius_kind", radiusKindName(r.kind)}});
     }
     int const width = renderer.width(), height = renderer.height();
     Camera const& cam = frame.camera;
     float const aspect = float(width) / float(height);
-    json const cameraJson = {{"position", toJson(cam.position)}, {"yaw_degrees", cam.yawDegrees},
-                             {"pitch_degrees", cam.pitchDegrees}, {"fov_y_degrees", cam.fovYDegrees},
-                             {"near", cam.nearPlane}, {"far", cam.farPlane}, {"aspect", aspect},
-                             {"view", toJson(cam.view())}, {"projection", toJson(cam.projection(aspect))},
+    json const cameraJson = {{"position", toJson(cam.position)},
+                             {"yaw_degrees", cam.yawDegrees},
+                             {"pitch_degrees", cam.pitchDegrees},
+                             {"fov_y_degrees", cam.fovYDegrees},
+                             {"near", cam.nearPlane},
+                             {"far", cam.farPlane},
+                             {"aspect", aspect},
+                             {"view", toJson(cam.view())},
+                             {"projection", toJson(cam.projection(aspect))},
                              {"matrix_layout", "row-major: view[r][c]"}};
     json passes = json::object();
     for (auto const& p : frame.stats.passes) passes[p.name] = p.gpuMs;
     GlCaps const& caps = renderer.caps();
     PipelineSettings const& s = frame.settings;
-    json statsJson = {{"gl_vendor", caps.vendor}, {"gl_renderer", caps.renderer}, {"gl_version", caps.version},
-                      {"width", width}, {"height", height}, {"lights", frame.stats.lightsSubmitted},
-                      {"lights_shaded", frame.stats.lightsShaded}, {"mode", enumName(kLightingModeNames, s.mode)},
-                      {"cull", enumName(kCullModeNames, s.cull)}, {"blit", enumName(kDepthCopyNames, s.depthCopy)},
-                      {"gpu_ms", passes}, {"gpu_frame_ms", frame.stats.gpuFrameMs}, {"triangles", frame.triangles},
+    json statsJson = {{"gl_vendor", caps.vendor},
+                      {"gl_renderer", caps.renderer},
+                      {"gl_version", caps.version},
+                      {"width", width},
+                      {"height", height},
+                      {"lights", frame.stats.lightsSubmitted},
+                      {"lights_shaded", frame.stats.lightsShaded},
+                      {"mode", enumName(kLightingModeNames, s.mode)},
+                      {"cull", enumName(kCullModeNames, s.cull)},
+                      {"blit", enumName(kDepthCopyNames, s.depthCopy)},
+                      {"gpu_ms", passes},
+                      {"gpu_frame_ms", frame.stats.gpuFrameMs},
+                      {"triangles", frame.triangles},
                       {"gl_errors", renderer.glErrorCount()}};
     if (frame.stats.fragmentInvocations) statsJson["fragment_invocations"] = *frame.stats.fragmentInvocations;
     check(writeJson(out / "lights.json", lightsJson));

@@ -16,12 +16,12 @@
 namespace gbl {
 
 struct FrameExport {
-    Camera camera;                         // the camera the frame was rendered with
-    std::span<PointLight const> lights;    // the lights as rendered (after animation)
+    Camera camera;                       // the camera the frame was rendered with
+    std::span<PointLight const> lights;  // the lights as rendered (after animation)
     PipelineSettings settings;
-    FrameStats stats;                      // what Renderer::render returned for the frame
-    std::size_t triangles = 0;             // scene size, for stats.json
-    std::vector<DebugView> extraViews;     // also written as view_<name>.png
+    FrameStats stats;                   // what Renderer::render returned for the frame
+    std::size_t triangles = 0;          // scene size, for stats.json
+    std::vector<DebugView> extraViews;  // also written as view_<name>.png
 };
 
 // Writes into `dir` (which must exist): final.png, lighting.exr, position.exr, normal.exr,

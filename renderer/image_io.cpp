@@ -11,8 +11,7 @@ std::optional<std::string> write(std::string const& path, FloatImage const& imag
                                  OIIO::TypeDesc format) {
     if (image.width <= 0 || image.height <= 0) return "cannot write " + path + ": the image is empty";
     if (count <= 0) count = image.channels - first;
-    if (first < 0 || first + count > image.channels)
-        return "cannot write " + path + ": channel range out of bounds";
+    if (first < 0 || first + count > image.channels) return "cannot write " + path + ": channel range out of bounds";
     // Pack the chosen channels contiguously.
     std::vector<float> packed(std::size_t(image.width) * image.height * count);
     for (std::size_t p = 0; p < std::size_t(image.width) * image.height; ++p)

@@ -26,7 +26,8 @@ namespace {
 
 // 36 vertices of a unit cube centred at the origin (half-extent 1), counter-clockwise outside.
 std::vector<glm::vec3> cubeTriangles() {
-    static constexpr int kFaces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    static constexpr int kFaces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                         {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
     std::vector<glm::vec3> out;
     auto corner = [](int i) { return glm::vec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1); };
     for (auto const& f : kFaces)
@@ -64,8 +65,7 @@ std::string programFailure(std::string const& mode, ShaderLibrary const& shaders
 
 }  // namespace
 
-RendererImpl::RendererImpl(GlCaps capsIn, int width, int height)
-    : caps(std::move(capsIn)), shaders(shaderReloadDir()) {
+RendererImpl::RendererImpl(GlCaps capsIn, int width, int height) : caps(std::move(capsIn)), shaders(shaderReloadDir()) {
     installGlDebug(caps);
     glErrorsAtStart = glErrorCount();
     // Core programs are fatal: without them there is no frame at all. Optional ones are built
@@ -74,7 +74,8 @@ RendererImpl::RendererImpl(GlCaps capsIn, int width, int height)
         if (p.group != ProgramGroup::Core) continue;
         std::string log;
         if (!shaders.add(p.id, &log))
-            throw std::runtime_error("Renderer: built-in shader program '" + p.desc.name + "' failed to build:\n" + log);
+            throw std::runtime_error("Renderer: built-in shader program '" + p.desc.name + "' failed to build:\n" +
+                                     log);
     }
     triangle = gl::FullscreenTriangle::create();
     cubeVao = gl::VertexArray::create("light cube");
@@ -87,7 +88,8 @@ RendererImpl::RendererImpl(GlCaps capsIn, int width, int height)
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
-    if (caps.pipelineStatistics) fragmentQuery = gl::Query::create(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, "fragment invocations");
+    if (caps.pipelineStatistics)
+        fragmentQuery = gl::Query::create(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, "fragment invocations");
     lights.upload({});
     resizeTargets(width, height);
 }
@@ -114,7 +116,8 @@ bool RendererImpl::volumesReady() {
     try {
         volumes = createLightVolumeGpu();
     } catch (std::exception const& e) {
-        f.unavailable = std::string("volumes mode is unavailable: the light-volume mesh could not be created (") + e.what() + ")";
+        f.unavailable =
+            std::string("volumes mode is unavailable: the light-volume mesh could not be created (") + e.what() + ")";
         return false;
     }
     return true;
@@ -124,17 +127,22 @@ bool RendererImpl::tiledReady() {
     OptionalFeature& f = tiledFeature;
     if (f.tried) return !f.unavailable;
     f.tried = true;
-    if (!caps.computeShaders) f.unavailable = caps.tiledUnavailableReason();
-    else if (!shaders.add(ProgramId::LightingTiled, nullptr)) f.unavailable = programFailure("tiled", shaders, ProgramId::LightingTiled);
+    if (!caps.computeShaders)
+        f.unavailable = caps.tiledUnavailableReason();
+    else if (!shaders.add(ProgramId::LightingTiled, nullptr))
+        f.unavailable = programFailure("tiled", shaders, ProgramId::LightingTiled);
     return !f.unavailable;
 }
 
 std::optional<std::string> RendererImpl::modeUnavailable(LightingMode mode) {
     switch (mode) {
-    case LightingMode::Volumes: return volumesReady() ? std::nullopt : volumesFeature.unavailable;
-    case LightingMode::Tiled: return tiledReady() ? std::nullopt : tiledFeature.unavailable;
-    case LightingMode::Quad:
-    case LightingMode::Forward: break;  // core programs only
+        case LightingMode::Volumes:
+            return volumesReady() ? std::nullopt : volumesFeature.unavailable;
+        case LightingMode::Tiled:
+            return tiledReady() ? std::nullopt : tiledFeature.unavailable;
+        case LightingMode::Quad:
+        case LightingMode::Forward:
+            break;  // core programs only
     }
     return std::nullopt;
 }
@@ -160,16 +168,24 @@ DeferredInputs RendererImpl::deferredInputs(FrameContext const& f) const {
 void RendererImpl::runLighting(FrameContext const& f) {
     DeferredInputs const deferred = deferredInputs(f);
     switch (f.settings.mode) {
-    case LightingMode::Volumes:
-        lightingVolumesPass({deferred, volumes, shaders.get(ProgramId::LightingQuad), shaders.get(ProgramId::LightVolume),
-                             shaders.get(ProgramId::LightVolumeStencil), triangle, {targets.volumeFbo, targets.lighting}},
-                            {f.viewProj, f.settings.cull});
-        break;
-    case LightingMode::Tiled:
-        lightingTiledPass({deferred, shaders.get(ProgramId::LightingTiled), targets.lighting, targets.coverage},
-                          {f.view, f.projection, targets.width, targets.height, f.camera.nearPlane, f.camera.farPlane, true, false});
-        break;
-    default: lightingQuadPass({deferred, shaders.get(ProgramId::LightingQuad), triangle, litTarget()}); break;
+        case LightingMode::Volumes:
+            lightingVolumesPass({deferred,
+                                 volumes,
+                                 shaders.get(ProgramId::LightingQuad),
+                                 shaders.get(ProgramId::LightVolume),
+                                 shaders.get(ProgramId::LightVolumeStencil),
+                                 triangle,
+                                 {targets.volumeFbo, targets.lighting}},
+                                {f.viewProj, f.settings.cull});
+            break;
+        case LightingMode::Tiled:
+            lightingTiledPass({deferred, shaders.get(ProgramId::LightingTiled), targets.lighting, targets.coverage},
+                              {f.view, f.projection, targets.width, targets.height, f.camera.nearPlane,
+                               f.camera.farPlane, true, false});
+            break;
+        default:
+            lightingQuadPass({deferred, shaders.get(ProgramId::LightingQuad), triangle, litTarget()});
+            break;
     }
 }
 
@@ -178,12 +194,15 @@ void RendererImpl::runCoverage(FrameContext const& f) {
     bool const volumeCounts = !tiles && f.settings.mode == LightingMode::Volumes && volumesReady();
     if (volumeCounts) prepareVolumeInstances(volumes, {f.camera, f.aspect, f.lights});
     bool const tiled = tiles && tiledReady();
-    LightingTiledConfig const t{f.view, f.projection, targets.width, targets.height, f.camera.nearPlane, f.camera.farPlane, false, true};
-    coveragePass({deferredInputs(f), triangle, shaders.get(ProgramId::CoverageAllLights), volumeCounts ? &volumes : nullptr,
-                  volumeCounts ? &shaders.get(ProgramId::LightVolumeCoverage) : nullptr,
-                  volumeCounts ? &shaders.get(ProgramId::LightVolumeStencil) : nullptr,
-                  tiled ? &shaders.get(ProgramId::LightingTiled) : nullptr, targets.coverageFbo, targets.coverage, targets.lighting},
-                 {f.settings.mode, f.settings.cull, f.settings.view, t, f.viewProj});
+    LightingTiledConfig const t{
+        f.view, f.projection, targets.width, targets.height, f.camera.nearPlane, f.camera.farPlane, false, true};
+    coveragePass(
+        {deferredInputs(f), triangle, shaders.get(ProgramId::CoverageAllLights), volumeCounts ? &volumes : nullptr,
+         volumeCounts ? &shaders.get(ProgramId::LightVolumeCoverage) : nullptr,
+         volumeCounts ? &shaders.get(ProgramId::LightVolumeStencil) : nullptr,
+         tiled ? &shaders.get(ProgramId::LightingTiled) : nullptr, targets.coverageFbo, targets.coverage,
+         targets.lighting},
+        {f.settings.mode, f.settings.cull, f.settings.view, t, f.viewProj});
 }
 
 FrameStats RendererImpl::render(FrameInput const& input) {
@@ -240,12 +259,14 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     forwardPass({scene, lights, shaders.get(ProgramId::Forward), litTarget()},
                 {MaterialFilter::Blended, f.viewProj, shading, s.normalMaps});
     if (s.lightCubes)
-        lightCubesPass({lights, shaders.get(ProgramId::LightCube), cubeVao, litTarget()}, {f.viewProj, lightCubeHalfSize()});
+        lightCubesPass({lights, shaders.get(ProgramId::LightCube), cubeVao, litTarget()},
+                       {f.viewProj, lightCubeHalfSize()});
     timer.end();
     if (s.volumeWireframes && volumesReady()) {
         timer.begin("wireframes");
         // Forward mode leaves the G-buffer empty, so its own depth (in litFbo) is the scene's.
-        LitTarget const target = s.mode == LightingMode::Forward ? litTarget() : LitTarget{targets.volumeFbo, targets.lighting};
+        LitTarget const target =
+            s.mode == LightingMode::Forward ? litTarget() : LitTarget{targets.volumeFbo, targets.lighting};
         wireframesPass({lights, volumes, shaders.get(ProgramId::LightVolumeWire), target}, {f.viewProj});
         timer.end();
     }
@@ -258,7 +279,8 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     timer.begin("display");
     ViewParams display;
     display.view = s.view;
-    viewPass({targets.gbuffer, targets.lighting, targets.coverage, shaders.get(ProgramId::View), triangle, targets.displayFbo},
+    viewPass({targets.gbuffer, targets.lighting, targets.coverage, shaders.get(ProgramId::View), triangle,
+              targets.displayFbo},
              {display, s.tonemap, s.exposure, f.camera.nearPlane, f.camera.farPlane, targets.width, targets.height});
     timer.end();
 
@@ -305,10 +327,18 @@ Renderer::Renderer(GlCaps caps, int width, int height)
     : impl_(std::make_unique<RendererImpl>(std::move(caps), width, height)) {}
 Renderer::~Renderer() = default;
 
-GlCaps const& Renderer::caps() const { return impl_->caps; }
-void Renderer::resizeTargets(int width, int height) { impl_->resizeTargets(width, height); }
-int Renderer::width() const { return impl_->targets.width; }
-int Renderer::height() const { return impl_->targets.height; }
+GlCaps const& Renderer::caps() const {
+    return impl_->caps;
+}
+void Renderer::resizeTargets(int width, int height) {
+    impl_->resizeTargets(width, height);
+}
+int Renderer::width() const {
+    return impl_->targets.width;
+}
+int Renderer::height() const {
+    return impl_->targets.height;
+}
 
 std::optional<std::string> Renderer::setScene(SceneData const& scene) {
     if (auto err = uploadScene(scene, impl_->scene)) return err;
@@ -316,19 +346,29 @@ std::optional<std::string> Renderer::setScene(SceneData const& scene) {
     return std::nullopt;
 }
 
-FrameStats Renderer::render(FrameInput const& input) { return impl_->render(input); }
+FrameStats Renderer::render(FrameInput const& input) {
+    return impl_->render(input);
+}
 
-std::optional<std::string> Renderer::modeUnavailable(LightingMode mode) { return impl_->modeUnavailable(mode); }
+std::optional<std::string> Renderer::modeUnavailable(LightingMode mode) {
+    return impl_->modeUnavailable(mode);
+}
 
 void Renderer::drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target) {
     impl_->drawView(params, frame, target);
 }
 
-std::vector<std::string> Renderer::reloadChangedShaders() { return impl_->shaders.reloadChanged(); }
+std::vector<std::string> Renderer::reloadChangedShaders() {
+    return impl_->shaders.reloadChanged();
+}
 
-float Renderer::lightCubeHalfSize() const { return impl_->lightCubeHalfSize(); }
+float Renderer::lightCubeHalfSize() const {
+    return impl_->lightCubeHalfSize();
+}
 
-std::uint64_t Renderer::glErrorCount() const { return gbl::glErrorCount() - impl_->glErrorsAtStart; }
+std::uint64_t Renderer::glErrorCount() const {
+    return gbl::glErrorCount() - impl_->glErrorsAtStart;
+}
 
 void RendererTestAccess::setFrameHook(Renderer& renderer, std::function<void()> hook) {
     renderer.impl().frameTestHook = std::move(hook);

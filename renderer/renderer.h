@@ -4,11 +4,11 @@
 
 #include "core/camera.h"
 #include "core/frame_types.h"
-#include "gl/caps.h"
 #include "core/pipeline_settings.h"
 #include "core/point_light.h"
-#include "scene/scene_data.h"
+#include "gl/caps.h"
 #include "gpu/view_target.h"
+#include "scene/scene_data.h"
 
 #include <glm/glm.hpp>
 

@@ -8,13 +8,20 @@ namespace gbl {
 unsigned Renderer::texture(Attachment a) const {
     RenderTargets const& t = impl_->targets;
     switch (a) {
-    case Attachment::Position: return t.gbuffer.position.id();
-    case Attachment::Normal: return t.gbuffer.normal.id();
-    case Attachment::AlbedoSpec: return t.gbuffer.albedoSpec.id();
-    case Attachment::Depth: return t.gbuffer.depth.id();
-    case Attachment::Lighting: return t.lighting.id();
-    case Attachment::Coverage: return t.coverage.id();
-    case Attachment::Final: return t.display.id();
+        case Attachment::Position:
+            return t.gbuffer.position.id();
+        case Attachment::Normal:
+            return t.gbuffer.normal.id();
+        case Attachment::AlbedoSpec:
+            return t.gbuffer.albedoSpec.id();
+        case Attachment::Depth:
+            return t.gbuffer.depth.id();
+        case Attachment::Lighting:
+            return t.lighting.id();
+        case Attachment::Coverage:
+            return t.coverage.id();
+        case Attachment::Final:
+            return t.display.id();
     }
     return 0;
 }
@@ -38,7 +45,8 @@ FloatImage readFramebuffer(GLuint fbo, GLenum attachment, int width, int height,
     // GL rows run bottom to top; images and mouse coordinates run top to bottom.
     std::size_t const row = std::size_t(width) * channels;
     for (int y = 0; y < height / 2; ++y)
-        std::swap_ranges(img.pixels.begin() + std::ptrdiff_t(y * row), img.pixels.begin() + std::ptrdiff_t((y + 1) * row),
+        std::swap_ranges(img.pixels.begin() + std::ptrdiff_t(y * row),
+                         img.pixels.begin() + std::ptrdiff_t((y + 1) * row),
                          img.pixels.begin() + std::ptrdiff_t((height - 1 - y) * row));
     return img;
 }
@@ -48,13 +56,20 @@ FloatImage Renderer::readAttachment(Attachment a) const {
     RenderTargets const& t = impl_->targets;
     if (t.empty()) return {};
     switch (a) {
-    case Attachment::Position: return readFramebuffer(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
-    case Attachment::Normal: return readFramebuffer(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT1, t.width, t.height, 4);
-    case Attachment::AlbedoSpec: return readFramebuffer(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT2, t.width, t.height, 4);
-    case Attachment::Depth: return readFramebuffer(t.gbuffer.fbo.id(), GL_NONE, t.width, t.height, 1);
-    case Attachment::Lighting: return readFramebuffer(t.litFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
-    case Attachment::Coverage: return readFramebuffer(t.coverageFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 2);
-    case Attachment::Final: return readFramebuffer(t.displayFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
+        case Attachment::Position:
+            return readFramebuffer(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
+        case Attachment::Normal:
+            return readFramebuffer(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT1, t.width, t.height, 4);
+        case Attachment::AlbedoSpec:
+            return readFramebuffer(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT2, t.width, t.height, 4);
+        case Attachment::Depth:
+            return readFramebuffer(t.gbuffer.fbo.id(), GL_NONE, t.width, t.height, 1);
+        case Attachment::Lighting:
+            return readFramebuffer(t.litFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
+        case Attachment::Coverage:
+            return readFramebuffer(t.coverageFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 2);
+        case Attachment::Final:
+            return readFramebuffer(t.displayFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
     }
     return {};
 }
@@ -86,8 +101,8 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
     // World position rebuilt from depth: unproject the pixel centre through the inverse view-projection.
     float const aspect = float(t.width) / float(t.height);
     glm::mat4 const invViewProj = glm::inverse(camera.projection(aspect) * camera.view());
-    glm::vec4 const ndc((float(x) + 0.5f) / float(t.width) * 2.0f - 1.0f, (float(glY) + 0.5f) / float(t.height) * 2.0f - 1.0f,
-                        s.depth * 2.0f - 1.0f, 1.0f);
+    glm::vec4 const ndc((float(x) + 0.5f) / float(t.width) * 2.0f - 1.0f,
+                        (float(glY) + 0.5f) / float(t.height) * 2.0f - 1.0f, s.depth * 2.0f - 1.0f, 1.0f);
     glm::vec4 const world = invViewProj * ndc;
     s.reconstructedPosition = glm::vec3(world) / world.w;
     return s;

@@ -9,7 +9,9 @@ using namespace gbl;
 using namespace gbl::ui;
 
 namespace {
-float luma(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+float luma(glm::vec3 c) {
+    return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+}
 }  // namespace
 
 TEST(Colormap, GreyIsTheValueClamped) {
@@ -28,7 +30,8 @@ TEST(Colormap, ViridisRunsFromDarkPurpleToYellowAndGetsLighter) {
     EXPECT_LT(hi.b, 0.2f);
     // Viridis is designed to be perceptually ordered: luma rises at every step of 1/64.
     for (int i = 1; i <= 64; ++i)
-        EXPECT_GT(luma(colormap(Colormap::Viridis, float(i) / 64.0f)), luma(colormap(Colormap::Viridis, float(i - 1) / 64.0f)))
+        EXPECT_GT(luma(colormap(Colormap::Viridis, float(i) / 64.0f)),
+                  luma(colormap(Colormap::Viridis, float(i - 1) / 64.0f)))
             << i;
 }
 

@@ -43,7 +43,10 @@ TEST(ConfigDir, EnvironmentIsRead) {
     ::unsetenv("XDG_CONFIG_HOME");
     ::setenv("HOME", "/tmp/home-from-env", 1);
     EXPECT_EQ(configDir(), "/tmp/home-from-env/.config/gbuffer-lab");
-    if (oldHome) ::setenv("HOME", savedHome.c_str(), 1); else ::unsetenv("HOME");
+    if (oldHome)
+        ::setenv("HOME", savedHome.c_str(), 1);
+    else
+        ::unsetenv("HOME");
 }
 
 TEST(ConfigDir, CreatedWithItsParents) {

@@ -25,7 +25,9 @@ float textbookLinearDepth(float d, float n, float f) {
     return 2.0f * n * f / (f + n - ndc * (f - n));
 }
 
-double relativeError(float got, double exact) { return std::abs(double(got) - exact) / exact; }
+double relativeError(float got, double exact) {
+    return std::abs(double(got) - exact) / exact;
+}
 
 }  // namespace
 

@@ -1,8 +1,8 @@
 // glTF loader on the CPU: the shared sample models, handcrafted bad files, mappings, progress.
+#include "core/light_math.h"
 #include "gltf/geometry.h"
 #include "gltf/loader.h"
 #include "gltf/mapping.h"
-#include "core/light_math.h"
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
@@ -21,15 +21,19 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path localFile(std::string const& name) { return fs::path(test::dataDir()) / "gltf" / name; }
+fs::path localFile(std::string const& name) {
+    return fs::path(test::dataDir()) / "gltf" / name;
+}
 
-fs::path sharedModel(std::string const& relative) { return fs::path(test::sharedGltfDir()) / relative; }
+fs::path sharedModel(std::string const& relative) {
+    return fs::path(test::sharedGltfDir()) / relative;
+}
 
-#define SKIP_WITHOUT_SHARED_MODELS()                                                                    \
-    do {                                                                                                \
-        if (!fs::is_directory(test::sharedGltfDir()))                                                   \
-            GTEST_SKIP() << "shared glTF models not found at " << test::sharedGltfDir()                \
-                         << " (see ../shared/gltf/README.md)";                                          \
+#define SKIP_WITHOUT_SHARED_MODELS()                                                    \
+    do {                                                                                \
+        if (!fs::is_directory(test::sharedGltfDir()))                                   \
+            GTEST_SKIP() << "shared glTF models not found at " << test::sharedGltfDir() \
+                         << " (see ../shared/gltf/README.md)";                          \
     } while (0)
 
 SceneData loadOk(fs::path const& file, GltfLoadOptions const& options = {}) {
@@ -54,7 +58,9 @@ void expectRefused(fs::path const& file, std::string const& cause, GltfLoadOptio
     expectRefused(loadGltf(file, options), file.filename().string(), cause);
 }
 
-std::vector<std::uint8_t> bytesOf(std::string const& s) { return {s.begin(), s.end()}; }
+std::vector<std::uint8_t> bytesOf(std::string const& s) {
+    return {s.begin(), s.end()};
+}
 
 std::vector<std::uint8_t> readFile(fs::path const& p) {
     std::ifstream in(p, std::ios::binary);
@@ -354,17 +360,25 @@ TEST(GltfMapping, RadiusOfALightMadeForARadius) {
 
 // --- bad input: one test per class ---------------------------------------------------------------
 
-TEST(GltfBadInput, MissingFile) { expectRefused(localFile("no_such_scene.gltf"), "does not exist"); }
+TEST(GltfBadInput, MissingFile) {
+    expectRefused(localFile("no_such_scene.gltf"), "does not exist");
+}
 
-TEST(GltfBadInput, NotGltf) { expectRefused(localFile("not_gltf.gltf"), "not a glTF file"); }
+TEST(GltfBadInput, NotGltf) {
+    expectRefused(localFile("not_gltf.gltf"), "not a glTF file");
+}
 
-TEST(GltfBadInput, MalformedJson) { expectRefused(localFile("malformed.gltf"), "malformed (at line 3"); }
+TEST(GltfBadInput, MalformedJson) {
+    expectRefused(localFile("malformed.gltf"), "malformed (at line 3");
+}
 
 TEST(GltfBadInput, WrongJsonTypes) {
     expectRefused(localFile("wrong_types.gltf"), "nodes[0].mesh must be a non-negative integer but is string");
 }
 
-TEST(GltfBadInput, MissingBuffer) { expectRefused(localFile("missing_buffer.gltf"), "'does_not_exist.bin', which does not exist"); }
+TEST(GltfBadInput, MissingBuffer) {
+    expectRefused(localFile("missing_buffer.gltf"), "'does_not_exist.bin', which does not exist");
+}
 
 TEST(GltfBadInput, ShortBuffer) {
     expectRefused(localFile("short_buffer.gltf"), "holds 8 bytes but its byteLength is 44 (short buffer)");
@@ -379,12 +393,17 @@ TEST(GltfBadInput, ShortBuffer) {
 }
 
 TEST(GltfBadInput, AccessorOutOfRange) {
-    expectRefused(localFile("accessor_out_of_range.gltf"), "accessor 1 reads bytes up to 360 but buffer view 1 holds only 36");
+    expectRefused(localFile("accessor_out_of_range.gltf"),
+                  "accessor 1 reads bytes up to 360 but buffer view 1 holds only 36");
 }
 
-TEST(GltfBadInput, IndexOutOfRange) { expectRefused(localFile("index_out_of_range.gltf"), "has index 7 at position 2, but only 3 vertices"); }
+TEST(GltfBadInput, IndexOutOfRange) {
+    expectRefused(localFile("index_out_of_range.gltf"), "has index 7 at position 2, but only 3 vertices");
+}
 
-TEST(GltfBadInput, RecursiveNodeGraph) { expectRefused(localFile("cycle.gltf"), "the node graph is recursive"); }
+TEST(GltfBadInput, RecursiveNodeGraph) {
+    expectRefused(localFile("cycle.gltf"), "the node graph is recursive");
+}
 
 TEST(GltfBadInput, NanAndInfinitePositions) {
     expectRefused(localFile("nan_position.gltf"), "NaN or infinite position at vertex 1");
@@ -416,7 +435,8 @@ TEST(GltfBadInput, UriOutsideTheScenesFolderIsRefusedUnlessAllowed) {
     std::vector<std::uint8_t> const original = readFile(localFile("triangle_external.gltf"));
     std::string json(original.begin(), original.end());
     json.replace(json.find("triangle.bin"), 12, "/etc/passwd");
-    expectRefused(loadGltfFromMemory(bytesOf(json), localFile("absolute.gltf")), "absolute.gltf", "leaves the scene's folder");
+    expectRefused(loadGltfFromMemory(bytesOf(json), localFile("absolute.gltf")), "absolute.gltf",
+                  "leaves the scene's folder");
 }
 
 TEST(GltfBadInput, AbsurdCountsAndSizes) {
@@ -437,7 +457,8 @@ TEST(GltfBadInput, AbsurdCountsAndSizes) {
     for (int i = 0; i < 1000; ++i) deep += '[';
     for (int i = 0; i < 1000; ++i) deep += ']';
     deep += '}';
-    expectRefused(loadGltfFromMemory(bytesOf(deep), localFile("deep.gltf")), "deep.gltf", "deeper than the limit of 64");
+    expectRefused(loadGltfFromMemory(bytesOf(deep), localFile("deep.gltf")), "deep.gltf",
+                  "deeper than the limit of 64");
 }
 
 TEST(GltfBadInput, TruncatedBinaryAndUnsupportedVersions) {
@@ -447,8 +468,9 @@ TEST(GltfBadInput, TruncatedBinaryAndUnsupportedVersions) {
     expectRefused(loadGltfFromMemory(glb, localFile("cut.glb")), "cut.glb", "truncated");
     expectRefused(loadGltfFromMemory(bytesOf(R"({"asset":{"version":"1.0"}})"), localFile("old.gltf")), "old.gltf",
                   "only glTF 2.0 is supported");
-    expectRefused(loadGltfFromMemory(bytesOf(R"({"asset":{"version":"2.0"},"extensionsRequired":["KHR_draco_mesh_compression"]})"),
-                                     localFile("draco.gltf")),
+    expectRefused(loadGltfFromMemory(
+                      bytesOf(R"({"asset":{"version":"2.0"},"extensionsRequired":["KHR_draco_mesh_compression"]})"),
+                      localFile("draco.gltf")),
                   "draco.gltf", "KHR_draco_mesh_compression");
     expectRefused(loadGltfFromMemory({}, localFile("empty.gltf")), "empty.gltf", "empty");
 }

@@ -1,10 +1,11 @@
-// Real glTF files through `gbuffer-lab render --scene`: every shared model renders, and the G-buffer holds what the files say.
+// Real glTF files through `gbuffer-lab render --scene`: every shared model renders, and the G-buffer holds what the
+// files say.
 #include "image_io.h"
 #include "run_command.h"
 #include "test_paths.h"
 
-#include <glm/glm.hpp>
 #include <gtest/gtest.h>
+#include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -26,14 +27,18 @@ constexpr int kWidth = 160;
 constexpr int kHeight = 120;
 constexpr char const* kSize = "160x120";
 
-#define SKIP_WITHOUT_SHARED_MODELS()                                                                    \
-    do {                                                                                                \
-        if (!fs::is_directory(test::sharedGltfDir()))                                                   \
-            GTEST_SKIP() << "../shared/gltf not found: " << test::sharedGltfDir();                      \
+#define SKIP_WITHOUT_SHARED_MODELS()                                               \
+    do {                                                                           \
+        if (!fs::is_directory(test::sharedGltfDir()))                              \
+            GTEST_SKIP() << "../shared/gltf not found: " << test::sharedGltfDir(); \
     } while (0)
 
-fs::path sharedModel(std::string const& relative) { return fs::path(test::sharedGltfDir()) / relative; }
-fs::path localFile(std::string const& name) { return fs::path(test::dataDir()) / "gltf" / name; }
+fs::path sharedModel(std::string const& relative) {
+    return fs::path(test::sharedGltfDir()) / relative;
+}
+fs::path localFile(std::string const& name) {
+    return fs::path(test::dataDir()) / "gltf" / name;
+}
 
 struct Frame {
     bool ok = false;
@@ -50,8 +55,8 @@ struct Frame {
     }
 };
 
-// Renders the scene (at kSize unless `size` says otherwise) into a fresh folder and reads the images back. Reports a test
-// failure (and returns ok = false) when the command fails or an image is missing.
+// Renders the scene (at kSize unless `size` says otherwise) into a fresh folder and reads the images back. Reports a
+// test failure (and returns ok = false) when the command fails or an image is missing.
 Frame renderScene(fs::path const& scene, std::string const& name, std::vector<std::string> const& extra = {},
                   std::string const& size = kSize) {
     Frame f;
@@ -84,7 +89,9 @@ Frame renderScene(fs::path const& scene, std::string const& name, std::vector<st
     return f;
 }
 
-float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+float srgbToLinear(float c) {
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
 
 // Bilinear sample of an image at glTF UV (origin at the top-left texel's corner), repeat wrapping.
 std::array<float, 3> sampleBilinear(FloatImage const& img, float u, float v) {
@@ -200,7 +207,8 @@ TEST(GltfRender, BoxTexturedAlbedoShowsTheCesiumLogo) {
         for (int x = 0; x < kWidth; ++x) {
             if (!f.covered(x, y)) continue;
             ++all;
-            for (int c = 0; c < 3; ++c) sum[c] += f.albedo.at(x, y, c), sumSq[c] += f.albedo.at(x, y, c) * f.albedo.at(x, y, c);
+            for (int c = 0; c < 3; ++c)
+                sum[c] += f.albedo.at(x, y, c), sumSq[c] += f.albedo.at(x, y, c) * f.albedo.at(x, y, c);
             if (f.normal.at(x, y, 2) < 0.999f) continue;
             ++front;
             auto const expected = sampleBilinear(linear, 0.5f - f.position.at(x, y, 0), 0.5f - f.position.at(x, y, 1));
@@ -272,7 +280,8 @@ TEST(GltfRender, NormalTangentTestNormalMapChangesTheNormals) {
                 pixels.push_back({x, y});
                 for (auto const& [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
                     int const nx = x + dx, ny = y + dy;
-                    if (nx < 0 || ny < 0 || nx >= w || ny >= h || seen[std::size_t(ny * w + nx)] || !tilted(nx, ny)) continue;
+                    if (nx < 0 || ny < 0 || nx >= w || ny >= h || seen[std::size_t(ny * w + nx)] || !tilted(nx, ny))
+                        continue;
                     seen[std::size_t(ny * w + nx)] = 1;
                     stack.push_back({nx, ny});
                 }

@@ -310,8 +310,8 @@ TEST(LightRadius, ScalingTheFalloffScalesTheRadius) {
         EXPECT_NEAR(lightRadius(s).radius, lightRadius(l).radius * scale, 1e-4 * scale) << scale;
         // The whole profile stretches: the same attenuation at scaled distances.
         for (float d : {0.0f, 0.5f, 2.0f, 4.0f})
-            EXPECT_NEAR(windowedAttenuation(s, lightRadius(s).radius, d * scale), windowedAttenuation(l, lightRadius(l).radius, d),
-                        1e-5)
+            EXPECT_NEAR(windowedAttenuation(s, lightRadius(s).radius, d * scale),
+                        windowedAttenuation(l, lightRadius(l).radius, d), 1e-5)
                 << scale << " " << d;
     }
     // Linear falloff too: (51.2 * 3 - 1) / 0.7 = 218.0 -> 54.5 at a quarter.

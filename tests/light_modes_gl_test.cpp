@@ -1,11 +1,11 @@
 // The four lighting modes and the five volume cull modes on the default scene: one image, with
 // the differences that are bugs (cull none, back faces with the camera inside) shown to be real.
-#include "scene/default_scene.h"
-#include "gl_fixture.h"
 #include "core/light_math.h"
 #include "core/light_volume_mesh.h"
-#include "test_scenes.h"
 #include "core/tile_math.h"
+#include "gl_fixture.h"
+#include "scene/default_scene.h"
+#include "test_scenes.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -23,9 +23,9 @@ constexpr int kW = 320, kH = 180;
 struct Diff {
     double maxAbs = 0.0;
     double meanAbs = 0.0;
-    double maxRel = 0.0;       // |a - b| / max(|a|, |b|) over channels with max(|a|, |b|) > relFloor
-    double meanValue = 0.0;    // mean of |reference| over every channel, for scale
-    int pixelsOver = 0;        // pixels where some channel exceeds the per-pixel bound given
+    double maxRel = 0.0;     // |a - b| / max(|a|, |b|) over channels with max(|a|, |b|) > relFloor
+    double meanValue = 0.0;  // mean of |reference| over every channel, for scale
+    int pixelsOver = 0;      // pixels where some channel exceeds the per-pixel bound given
 };
 
 // Compares the RGB channels of two lighting images. bound(ref) is the per-channel error
@@ -155,7 +155,8 @@ protected:
 
 TEST_F(LightModesGlTest, TestCameraIsOutsideEveryVolume) {
     // The cull-mode assertions below rely on this; if the scene changes, pick another camera.
-    float const nearCorner = nearPlaneCornerDistance(glm::radians(camera_.fovYDegrees), float(kW) / kH, camera_.nearPlane);
+    float const nearCorner =
+        nearPlaneCornerDistance(glm::radians(camera_.fovYDegrees), float(kW) / kH, camera_.nearPlane);
     float const scale = enclosingScale(makeLightVolumeSphere());
     ASSERT_EQ(lights_.size(), 32u);
     for (auto const& l : lights_)
@@ -177,14 +178,15 @@ TEST_F(LightModesGlTest, VolumesTiledAndForwardMatchQuad) {
         Diff const d = compare(lighting(settingsFor(LightingMode::Volumes, cull)), quad, blendBound);
         EXPECT_EQ(d.pixelsOver, 0) << "volumes/" << enumName(kCullModeNames, cull) << ": " << describe(d);
         // On average a handful of roundings: under 8 half-ulps of the mean value.
-        EXPECT_LT(d.meanAbs, 8 * kHalfUlp * q.meanValue) << "volumes/" << enumName(kCullModeNames, cull) << ": " << describe(d);
+        EXPECT_LT(d.meanAbs, 8 * kHalfUlp * q.meanValue)
+            << "volumes/" << enumName(kCullModeNames, cull) << ": " << describe(d);
     }
 
     if (caps().computeShaders) {
         // Tiled adds the same lights in the same order in fp32 and stores once: one fp16 rounding
         // (a half-ulp each side, so 2 half-ulps) plus slack for the compiler fusing differently.
-        Diff const d = compare(lighting(settingsFor(LightingMode::Tiled)), quad,
-                               [](double v) { return 4 * kHalfUlp * v + 1e-5; });
+        Diff const d =
+            compare(lighting(settingsFor(LightingMode::Tiled)), quad, [](double v) { return 4 * kHalfUlp * v + 1e-5; });
         EXPECT_EQ(d.pixelsOver, 0) << "tiled: " << describe(d);
     }
 
@@ -193,7 +195,8 @@ TEST_F(LightModesGlTest, VolumesTiledAndForwardMatchQuad) {
     // in 8 bits (1/510 absolute), normal in fp16. Those move the result by a few percent at worst
     // (dark albedo, grazing specular), so forward is held to a mean error of 1% of the mean
     // value and 99.5% of pixels within 3% + 2e-3.
-    Diff const f = compare(lighting(settingsFor(LightingMode::Forward)), quad, [](double v) { return 0.03 * v + 2e-3; });
+    Diff const f =
+        compare(lighting(settingsFor(LightingMode::Forward)), quad, [](double v) { return 0.03 * v + 2e-3; });
     EXPECT_LT(f.meanAbs, 0.01 * q.meanValue) << "forward: " << describe(f);
     EXPECT_LT(f.pixelsOver, kW * kH / 200) << "forward: " << describe(f);
 }
@@ -211,7 +214,8 @@ TEST_F(LightModesGlTest, CameraInsideAVolume) {
 
     // Culling back faces loses the light the camera is in: its front faces are behind the eye.
     // Light 0 fills most of this view, so a large share of pixels must lose light.
-    Diff const back = compare(lighting(settingsFor(LightingMode::Volumes, CullMode::Back), cam, lights_), quad, volumeBound);
+    Diff const back =
+        compare(lighting(settingsFor(LightingMode::Volumes, CullMode::Back), cam, lights_), quad, volumeBound);
     EXPECT_GT(back.pixelsOver, kW * kH / 4) << "back-face culling should fail inside a volume: " << describe(back);
 }
 
@@ -258,7 +262,7 @@ TEST_F(LightModesGlTest, CoverageCountsAgreeBetweenModes) {
     }
     EXPECT_GT(geometry, kW * kH / 2);
     EXPECT_GT(litSomewhere, geometry / 4);
-    EXPECT_GT(volumeWaste, 0);  // the heat map has executed-but-unlit pixels to show
+    EXPECT_GT(volumeWaste, 0);   // the heat map has executed-but-unlit pixels to show
     EXPECT_GT(stencilSaves, 0);  // the stencil test does skip work somewhere
     if (caps().computeShaders) {
         auto const tiled = counts(LightingMode::Tiled);
@@ -297,7 +301,8 @@ TEST_F(LightModesGlTest, TileListsMatchTheCpuTileMath) {
                 TileFrustum const fr = tileFrustum(inv, kW, kH, rect);
                 for (auto const& l : lights_) {
                     float const r = lightRadius(l).radius;
-                    if (r > 0 && sphereTouchesTile(fr, minD, maxD, glm::vec3(view * glm::vec4(l.position, 1.0f)), r)) ++cpu;
+                    if (r > 0 && sphereTouchesTile(fr, minD, maxD, glm::vec3(view * glm::vec4(l.position, 1.0f)), r))
+                        ++cpu;
                 }
             }
             int const g = int(gpu[std::size_t(rect.y0) * kW + rect.x0].x);
@@ -373,4 +378,3 @@ TEST_F(LightModesGlTest, WireframesAreDrawnInTheLightColourAndHiddenByTheScene) 
     changed({0.0f, 2.0f, 3.0f}, onWall, elsewhere, redder);  // in front of the wall, camera outside
     EXPECT_GT(onWall, 20) << "wires in front of the wall are visible over it";
 }
-

@@ -32,8 +32,8 @@ std::vector<Plane> scaledPlanes(SphereMesh const& m, float scale) {
     return planes;
 }
 
-std::pair<int, int> const kTessellations[] = {{kLightVolumeStacks, kLightVolumeSlices}, {2, 3}, {3, 4}, {8, 12},
-                                              {9, 7}, {16, 32}, {33, 64}};
+std::pair<int, int> const kTessellations[] = {
+    {kLightVolumeStacks, kLightVolumeSlices}, {2, 3}, {3, 4}, {8, 12}, {9, 7}, {16, 32}, {33, 64}};
 
 }  // namespace
 

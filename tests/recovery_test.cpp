@@ -1,7 +1,7 @@
 // Recovery: autosave timing on a fake clock, run markers, and unclean-exit detection with a real SIGKILL.
-#include "session/atomic_file.h"
 #include "session/recovery.h"
 #include "run_command.h"
+#include "session/atomic_file.h"
 
 #include <gtest/gtest.h>
 

@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <filesystem>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 
@@ -15,8 +15,7 @@ using namespace gbl;
 using gbl::test::runGbufferLab;
 namespace fs = std::filesystem;
 
-namespace {
-}  // namespace
+namespace {}  // namespace
 
 TEST(RenderCommand, WritesEveryImageAndJsonFile) {
     std::string const out = test::freshTempDir("render_all");
@@ -61,8 +60,9 @@ TEST(RenderCommand, WritesEveryImageAndJsonFile) {
         for (int x = 0; x < normal->width; ++x) {
             if (normal->at(x, y, 3) == 0.0f) continue;
             ++drawn;
-            float const len = std::sqrt(normal->at(x, y, 0) * normal->at(x, y, 0) + normal->at(x, y, 1) * normal->at(x, y, 1) +
-                                        normal->at(x, y, 2) * normal->at(x, y, 2));
+            float const len =
+                std::sqrt(normal->at(x, y, 0) * normal->at(x, y, 0) + normal->at(x, y, 1) * normal->at(x, y, 1) +
+                          normal->at(x, y, 2) * normal->at(x, y, 2));
             // Half-float components: length within 2e-3 of 1.
             EXPECT_NEAR(len, 1.0f, 2e-3f);
             float const d = depthLinear->at(x, y, 0);
@@ -89,7 +89,8 @@ TEST(RenderCommand, TimeMovesTheLights) {
     std::string const a = test::freshTempDir("render_t0"), b = test::freshTempDir("render_t5");
     ASSERT_EQ(runGbufferLab({"render", "--out", a, "--size", "32x32", "--time", "0"}).exitCode, 0);
     ASSERT_EQ(runGbufferLab({"render", "--out", b, "--size", "32x32", "--time", "5"}).exitCode, 0);
-    auto const la = test::readJsonFile(fs::path(a) / "lights.json"), lb = test::readJsonFile(fs::path(b) / "lights.json");
+    auto const la = test::readJsonFile(fs::path(a) / "lights.json"),
+               lb = test::readJsonFile(fs::path(b) / "lights.json");
     EXPECT_NE(la[0]["position"], lb[0]["position"]);
 }
 
@@ -153,8 +154,10 @@ public:
     }
     ~ScopedEnv() {
         for (auto const& [name, old] : saved_) {
-            if (old) setenv(name.c_str(), old->c_str(), 1);
-            else unsetenv(name.c_str());
+            if (old)
+                setenv(name.c_str(), old->c_str(), 1);
+            else
+                unsetenv(name.c_str());
         }
     }
 
@@ -175,7 +178,8 @@ TEST(RenderCommand, OpenGl33DriverThatListsComputeStillRendersVolumes) {
     EXPECT_EQ(stats["gl_errors"], 0);
     EXPECT_EQ(stats["gl_version"].get<std::string>().rfind("3.3", 0), 0u) << "the override took effect";
 
-    auto const tiled = test::expectRefused({"render", "--out", out, "--size", "64x48", "--mode", "tiled"}, "tiled mode is unavailable");
+    auto const tiled = test::expectRefused({"render", "--out", out, "--size", "64x48", "--mode", "tiled"},
+                                           "tiled mode is unavailable");
     // One sentence naming the program and the compiler's reason, not a stack trace or the whole log.
     EXPECT_LE(std::count(tiled.output.begin(), tiled.output.end(), '\n'), 1) << tiled.output;
     EXPECT_NE(tiled.output.find("lighting_tiled"), std::string::npos) << tiled.output;

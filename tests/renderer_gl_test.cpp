@@ -1,10 +1,10 @@
 // The deferred core on a headless context: G-buffer contents against analytic values, the
 // lighting pass against the CPU equation, the blit step, resizing and shader hot reload.
-#include "gl_fixture.h"
-#include "gpu/light_buffer.h"
+#include "core/shading_cpu.h"
 #include "gl/shader_bindings.h"
 #include "gl/shader_library.h"
-#include "core/shading_cpu.h"
+#include "gl_fixture.h"
+#include "gpu/light_buffer.h"
 #include "test_scenes.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -203,7 +203,8 @@ glm::vec3 cubePixel(Renderer& r, Camera const& cam, PointLight const& light, Dep
     s.depthCopy = copy;
     std::vector<PointLight> const lights{light};
     r.render({cam, lights, s});
-    glm::vec4 clip = cam.projection(float(r.width()) / float(r.height())) * cam.view() * glm::vec4(light.position, 1.0f);
+    glm::vec4 clip =
+        cam.projection(float(r.width()) / float(r.height())) * cam.view() * glm::vec4(light.position, 1.0f);
     glm::vec3 const ndc = glm::vec3(clip) / clip.w;
     int const x = int((ndc.x * 0.5f + 0.5f) * float(r.width()));
     int const y = int((0.5f - ndc.y * 0.5f) * float(r.height()));

@@ -14,7 +14,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string localFile(std::string const& name) { return (fs::path(test::dataDir()) / "gltf" / name).string(); }
+std::string localFile(std::string const& name) {
+    return (fs::path(test::dataDir()) / "gltf" / name).string();
+}
 
 // Polls as the editor does once per frame, with a deadline far above any real load of these files.
 std::optional<GltfLoadResult> waitForLoad(SceneLoadingState& state) {

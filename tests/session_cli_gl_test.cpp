@@ -35,8 +35,9 @@ TEST(SessionCli, SavedSessionReproducesTheSameFrame) {
     std::string const dir = test::freshTempDir("session_cli_same");
     std::string const a = dir + "/a", b = dir + "/b", session = dir + "/frame.json";
     // Non-default everything the command line can set, so a value the session forgets shows.
-    auto const first = runGbufferLab({"render", "--out", a, "--size", "192x108", "--lights", "12", "--time", "3.5",
-                                      "--mode", "volumes", "--cull", "back", "--blit", "shader", "--save-session", session});
+    auto const first =
+        runGbufferLab({"render", "--out", a, "--size", "192x108", "--lights", "12", "--time", "3.5", "--mode",
+                       "volumes", "--cull", "back", "--blit", "shader", "--save-session", session});
     ASSERT_EQ(first.exitCode, 0) << first.output;
     ui::SessionLoad const saved = ui::loadSession(session);
     ASSERT_TRUE(saved.session) << saved.error;
@@ -66,9 +67,10 @@ TEST(SessionCli, TheSessionsValuesAreWhatGetsRendered) {
     // the test above could pass by ignoring the session and using the same defaults.
     std::string const dir = test::freshTempDir("session_cli_used");
     std::string const session = dir + "/s.json";
-    ASSERT_EQ(runGbufferLab({"render", "--out", dir + "/a", "--size", "160x90", "--lights", "8", "--save-session", session})
-                  .exitCode,
-              0);
+    ASSERT_EQ(
+        runGbufferLab({"render", "--out", dir + "/a", "--size", "160x90", "--lights", "8", "--save-session", session})
+            .exitCode,
+        0);
     ui::Session s = *ui::loadSession(session).session;
     for (auto& l : s.lights) l.intensity *= 4.0f;
     s.lights[0].name = "edited";
@@ -88,11 +90,12 @@ TEST(SessionCli, TheSessionsValuesAreWhatGetsRendered) {
 TEST(SessionCli, OptionsOnTheCommandLineOverrideTheSession) {
     std::string const dir = test::freshTempDir("session_cli_override");
     std::string const session = dir + "/s.json";
-    ASSERT_EQ(runGbufferLab({"render", "--out", dir + "/a", "--size", "96x54", "--mode", "volumes", "--save-session", session})
+    ASSERT_EQ(runGbufferLab(
+                  {"render", "--out", dir + "/a", "--size", "96x54", "--mode", "volumes", "--save-session", session})
                   .exitCode,
               0);
-    auto const r = runGbufferLab({"render", "--out", dir + "/b", "--size", "96x54", "--session", session, "--mode", "quad",
-                                  "--blit", "off"});
+    auto const r = runGbufferLab(
+        {"render", "--out", dir + "/b", "--size", "96x54", "--session", session, "--mode", "quad", "--blit", "off"});
     ASSERT_EQ(r.exitCode, 0) << r.output;
     auto const stats = test::readJsonFile(dir + "/b/stats.json");
     EXPECT_EQ(stats["mode"], "quad");
@@ -103,7 +106,9 @@ TEST(SessionCli, OptionsOnTheCommandLineOverrideTheSession) {
 TEST(SessionCli, BadSessionsExitTwoWithOneSentenceNamingTheField) {
     std::string const dir = test::freshTempDir("session_cli_bad");
     std::string const good = dir + "/good.json";
-    ASSERT_EQ(runGbufferLab({"render", "--out", dir + "/a", "--size", "64x36", "--lights", "4", "--save-session", good}).exitCode, 0);
+    ASSERT_EQ(runGbufferLab({"render", "--out", dir + "/a", "--size", "64x36", "--lights", "4", "--save-session", good})
+                  .exitCode,
+              0);
     auto j = test::readJsonFile(good);
     j["lights"][3]["kq"] = -1.0;
     std::string const bad = dir + "/bad.json";
@@ -113,7 +118,8 @@ TEST(SessionCli, BadSessionsExitTwoWithOneSentenceNamingTheField) {
         std::string expect;
     };
     std::vector<Case> const cases{
-        {{"render", "--out", dir + "/b", "--session", bad}, bad + ": lights[3].kq must be a finite number >= 0 (got -1.0)"},
+        {{"render", "--out", dir + "/b", "--session", bad},
+         bad + ": lights[3].kq must be a finite number >= 0 (got -1.0)"},
         {{"render", "--out", dir + "/b", "--session", dir + "/missing.json"}, dir + "/missing.json"},
         {{"render", "--out", dir + "/b", "--session", good, "--lights", "3"}, "cannot be combined with --session"},
         {{"render", "--out", dir + "/b", "--session", good, "--save-session", "/proc/x/s.json"}, "/proc/x/s.json"},

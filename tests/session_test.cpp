@@ -1,7 +1,7 @@
 // Session files: exact round trips, one clear message per kind of bad field, atomic writes.
-#include "session/atomic_file.h"
 #include "session/session.h"
 #include "run_command.h"
+#include "session/atomic_file.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -200,10 +200,14 @@ struct BadCase {
 TEST(Session, EveryKindOfBadFieldGetsOneMessageNamingIt) {
     std::vector<BadCase> const cases{
         // unknown fields, at every level
-        {"unknown top-level field", [](json& j) { j["colour_grading"] = true; }, "s.json: colour_grading is not a known field"},
-        {"typo in a light field", [](json& j) { j["lights"][2]["intesity"] = 2; }, "s.json: lights[2].intesity is not a known field"},
-        {"unknown pipeline field", [](json& j) { j["pipeline"]["ssao"] = true; }, "s.json: pipeline.ssao is not a known field"},
-        {"unknown viewer", [](json& j) { j["viewers"]["emission"] = j["viewers"]["albedo"]; }, "s.json: viewers.emission is not a known field"},
+        {"unknown top-level field", [](json& j) { j["colour_grading"] = true; },
+         "s.json: colour_grading is not a known field"},
+        {"typo in a light field", [](json& j) { j["lights"][2]["intesity"] = 2; },
+         "s.json: lights[2].intesity is not a known field"},
+        {"unknown pipeline field", [](json& j) { j["pipeline"]["ssao"] = true; },
+         "s.json: pipeline.ssao is not a known field"},
+        {"unknown viewer", [](json& j) { j["viewers"]["emission"] = j["viewers"]["albedo"]; },
+         "s.json: viewers.emission is not a known field"},
         // missing required fields
         {"missing camera.near", [](json& j) { j["camera"].erase("near"); }, "s.json: camera.near is missing"},
         {"missing kq", [](json& j) { j["lights"][1].erase("kq"); }, "s.json: lights[1].kq is missing"},
@@ -211,47 +215,87 @@ TEST(Session, EveryKindOfBadFieldGetsOneMessageNamingIt) {
         {"missing viewer", [](json& j) { j["viewers"].erase("depth"); }, "s.json: viewers.depth is missing"},
         {"missing format", [](json& j) { j.erase("format"); }, "s.json: format is missing"},
         // wrong types
-        {"kq as a string", [](json& j) { j["lights"][3]["kq"] = "1.8"; }, "s.json: lights[3].kq must be a finite number >= 0 (got a string)"},
-        {"bool as a number", [](json& j) { j["pipeline"]["light_cubes"] = 1; }, "s.json: pipeline.light_cubes must be true or false (got a number)"},
-        {"lights as an object", [](json& j) { j["lights"] = json::object(); }, "s.json: lights must be an array (got an object)"},
-        {"light as an array", [](json& j) { j["lights"][0] = json::array(); }, "s.json: lights[0] must be an object (got an array)"},
-        {"short vector", [](json& j) { j["camera"]["position"] = {1, 2}; }, "s.json: camera.position must be an array of 3 numbers"},
-        {"vector element", [](json& j) { j["lights"][4]["color"][1] = true; }, "s.json: lights[4].color[1] must be a finite number >= 0 (got true/false)"},
-        {"fractional mask", [](json& j) { j["viewers"]["albedo"]["channel_mask"] = 1.5; }, "s.json: viewers.albedo.channel_mask must be a whole number from 0 to 15 (got 1.5)"},
+        {"kq as a string", [](json& j) { j["lights"][3]["kq"] = "1.8"; },
+         "s.json: lights[3].kq must be a finite number >= 0 (got a string)"},
+        {"bool as a number", [](json& j) { j["pipeline"]["light_cubes"] = 1; },
+         "s.json: pipeline.light_cubes must be true or false (got a number)"},
+        {"lights as an object", [](json& j) { j["lights"] = json::object(); },
+         "s.json: lights must be an array (got an object)"},
+        {"light as an array", [](json& j) { j["lights"][0] = json::array(); },
+         "s.json: lights[0] must be an object (got an array)"},
+        {"short vector",
+         [](json& j) {
+             j["camera"]["position"] = {1, 2};
+         },
+         "s.json: camera.position must be an array of 3 numbers"},
+        {"vector element", [](json& j) { j["lights"][4]["color"][1] = true; },
+         "s.json: lights[4].color[1] must be a finite number >= 0 (got true/false)"},
+        {"fractional mask", [](json& j) { j["viewers"]["albedo"]["channel_mask"] = 1.5; },
+         "s.json: viewers.albedo.channel_mask must be a whole number from 0 to 15 (got 1.5)"},
         // NaN, infinity, negative: JSON writers turn NaN into null; 1e39 is finite as a double
         // but infinite as the float the renderer uses.
-        {"NaN written as null", [](json& j) { j["lights"][3]["kq"] = nullptr; }, "s.json: lights[3].kq must be a finite number >= 0 (got null)"},
-        {"float overflow", [](json& j) { j["lights"][3]["intensity"] = 1e39; }, "s.json: lights[3].intensity must be a finite number >= 0 (got 1e+39)"},
-        {"negative kq", [](json& j) { j["lights"][3]["kq"] = -0.5; }, "s.json: lights[3].kq must be a finite number >= 0 (got -0.5)"},
-        {"negative colour", [](json& j) { j["lights"][0]["color"][2] = -1; }, "s.json: lights[0].color[2] must be a finite number >= 0 (got -1)"},
-        {"zero threshold", [](json& j) { j["lights"][0]["threshold"] = 0; }, "s.json: lights[0].threshold must be a finite number > 0 (got 0)"},
-        {"infinite position", [](json& j) { j["lights"][1]["position"][0] = -1e300; }, "s.json: lights[1].position[0] must be a finite number (got -1e+300)"},
-        {"no attenuation at all", [](json& j) { j["lights"][2]["kc"] = 0; j["lights"][2]["kl"] = 0; j["lights"][2]["kq"] = 0; },
+        {"NaN written as null", [](json& j) { j["lights"][3]["kq"] = nullptr; },
+         "s.json: lights[3].kq must be a finite number >= 0 (got null)"},
+        {"float overflow", [](json& j) { j["lights"][3]["intensity"] = 1e39; },
+         "s.json: lights[3].intensity must be a finite number >= 0 (got 1e+39)"},
+        {"negative kq", [](json& j) { j["lights"][3]["kq"] = -0.5; },
+         "s.json: lights[3].kq must be a finite number >= 0 (got -0.5)"},
+        {"negative colour", [](json& j) { j["lights"][0]["color"][2] = -1; },
+         "s.json: lights[0].color[2] must be a finite number >= 0 (got -1)"},
+        {"zero threshold", [](json& j) { j["lights"][0]["threshold"] = 0; },
+         "s.json: lights[0].threshold must be a finite number > 0 (got 0)"},
+        {"infinite position", [](json& j) { j["lights"][1]["position"][0] = -1e300; },
+         "s.json: lights[1].position[0] must be a finite number (got -1e+300)"},
+        {"no attenuation at all",
+         [](json& j) {
+             j["lights"][2]["kc"] = 0;
+             j["lights"][2]["kl"] = 0;
+             j["lights"][2]["kq"] = 0;
+         },
          "s.json: lights[2]: light attenuation Kc, Kl and Kq cannot all be 0 (infinite brightness at the light)"},
-        {"negative exposure", [](json& j) { j["pipeline"]["exposure"] = -1; }, "s.json: pipeline.exposure must be a finite number > 0 (got -1)"},
+        {"negative exposure", [](json& j) { j["pipeline"]["exposure"] = -1; },
+         "s.json: pipeline.exposure must be a finite number > 0 (got -1)"},
         // out of range
-        {"far before near", [](json& j) { j["camera"]["far"] = 0.001; }, "s.json: camera.far must be greater than camera.near"},
-        {"pitch past the pole", [](json& j) { j["camera"]["pitch_degrees"] = 90; }, "s.json: camera.pitch_degrees must be between -89 and 89 (got 90)"},
-        {"zoom out of range", [](json& j) { j["viewers"]["normal"]["zoom"] = 0.5; }, "s.json: viewers.normal.zoom must be between 1 and 256 (got 0.5)"},
-        {"empty remap range", [](json& j) { j["viewers"]["position"]["range_max"] = j["viewers"]["position"]["range_min"]; },
+        {"far before near", [](json& j) { j["camera"]["far"] = 0.001; },
+         "s.json: camera.far must be greater than camera.near"},
+        {"pitch past the pole", [](json& j) { j["camera"]["pitch_degrees"] = 90; },
+         "s.json: camera.pitch_degrees must be between -89 and 89 (got 90)"},
+        {"zoom out of range", [](json& j) { j["viewers"]["normal"]["zoom"] = 0.5; },
+         "s.json: viewers.normal.zoom must be between 1 and 256 (got 0.5)"},
+        {"empty remap range",
+         [](json& j) { j["viewers"]["position"]["range_max"] = j["viewers"]["position"]["range_min"]; },
          "s.json: viewers.position.range_max must be greater than viewers.position.range_min"},
-        {"light count", [](json& j) { j["scene"]["default_scene_lights"] = 16385; }, "s.json: scene.default_scene_lights must be a whole number from 0 to 16384 (got 16385)"},
+        {"light count", [](json& j) { j["scene"]["default_scene_lights"] = 16385; },
+         "s.json: scene.default_scene_lights must be a whole number from 0 to 16384 (got 16385)"},
         // enums
-        {"unknown mode", [](json& j) { j["pipeline"]["mode"] = "raytraced"; }, "s.json: pipeline.mode must be one of quad, volumes, tiled or forward (got \"raytraced\")"},
-        {"unknown blit", [](json& j) { j["pipeline"]["blit"] = "copy"; }, "s.json: pipeline.blit must be one of blit, shader or off (got \"copy\")"},
-        {"enum by number", [](json& j) { j["pipeline"]["cull"] = 1; }, "s.json: pipeline.cull must be one of back, front, none, flip or stencil (got a number)"},
+        {"unknown mode", [](json& j) { j["pipeline"]["mode"] = "raytraced"; },
+         "s.json: pipeline.mode must be one of quad, volumes, tiled or forward (got \"raytraced\")"},
+        {"unknown blit", [](json& j) { j["pipeline"]["blit"] = "copy"; },
+         "s.json: pipeline.blit must be one of blit, shader or off (got \"copy\")"},
+        {"enum by number", [](json& j) { j["pipeline"]["cull"] = 1; },
+         "s.json: pipeline.cull must be one of back, front, none, flip or stencil (got a number)"},
         {"unknown normal display", [](json& j) { j["viewers"]["normal"]["normal_display"] = "signed"; },
          "s.json: viewers.normal.normal_display must be one of biased or absolute (got \"signed\")"},
         // versions and format
-        {"newer version", [](json& j) { j["version"] = 2; }, "s.json: version 2 is not supported; this program reads version 1 (the file comes from a newer gbuffer-lab)"},
-        {"older version", [](json& j) { j["version"] = 0; }, "s.json: version 0 is not supported; this program reads version 1"},
+        {"newer version", [](json& j) { j["version"] = 2; },
+         "s.json: version 2 is not supported; this program reads version 1 (the file comes from a newer gbuffer-lab)"},
+        {"older version", [](json& j) { j["version"] = 0; },
+         "s.json: version 0 is not supported; this program reads version 1"},
         {"version as text", [](json& j) { j["version"] = "1"; }, "s.json: version must be a whole number (got \"1\")"},
         {"another format", [](json& j) { j["format"] = "blender-scene"; },
          "s.json: format must be \"gbuffer-lab-session\" (got \"blender-scene\"); this is not a gbuffer-lab session"},
         // a newer file's new fields do not hide its version
-        {"newer version with new fields", [](json& j) { j["version"] = 3; j["shadows"] = true; },
+        {"newer version with new fields",
+         [](json& j) {
+             j["version"] = 3;
+             j["shadows"] = true;
+         },
          "s.json: version 3 is not supported; this program reads version 1 (the file comes from a newer gbuffer-lab)"},
-        {"not an object", [](json& j) { j = json::array({1, 2}); }, "s.json: the file must hold a JSON object (got an array)"},
+        {"not an object",
+         [](json& j) {
+             j = json::array({1, 2});
+         },
+         "s.json: the file must hold a JSON object (got an array)"},
     };
     for (auto const& c : cases) {
         json j = json::parse(sessionToJson(richSession()));
@@ -275,8 +319,8 @@ TEST(Session, TooManyLightsAreRefusedWithTheLimit) {
 }
 
 TEST(Session, TextThatIsNotJsonNamesTheFileAndPlace) {
-    for (std::string const text : {"", "{", "{\"format\": \"gbuffer-lab-session\", \"version\": 1,}",
-                                   "{\"kq\": NaN}", "{\"kq\": 1e999}", "\xff\xfe"}) {
+    for (std::string const text : {"", "{", "{\"format\": \"gbuffer-lab-session\", \"version\": 1,}", "{\"kq\": NaN}",
+                                   "{\"kq\": 1e999}", "\xff\xfe"}) {
         SessionLoad const r = parseSession(text, "broken.json");
         EXPECT_FALSE(r.session) << text;
         EXPECT_EQ(r.error.rfind("broken.json: not valid JSON: ", 0), 0u) << r.error;

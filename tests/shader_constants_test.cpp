@@ -68,8 +68,10 @@ TEST(ShaderConstants, ViewConstantsMatchTheEnums) {
     std::map<std::string, int> overlays;
     for (auto const& [name, value] : all)
         if (name.rfind("OVERLAY_", 0) == 0) overlays[name] = value;
-    std::map<std::string, int> const cpp{{"OVERLAY_NAN", int(kOverlayNaN)}, {"OVERLAY_INF", int(kOverlayInf)},
-                                         {"OVERLAY_NEGATIVE", int(kOverlayNegative)}, {"OVERLAY_CLIP", int(kOverlayClip)}};
+    std::map<std::string, int> const cpp{{"OVERLAY_NAN", int(kOverlayNaN)},
+                                         {"OVERLAY_INF", int(kOverlayInf)},
+                                         {"OVERLAY_NEGATIVE", int(kOverlayNegative)},
+                                         {"OVERLAY_CLIP", int(kOverlayClip)}};
     EXPECT_EQ(overlays, cpp);
 }
 
@@ -87,14 +89,19 @@ TEST(ShaderConstants, GeneratedBindingsHeaderMatchesBindingsGlsl) {
     // The header is generated at configure time; an edit of bindings.glsl reconfigures. This
     // catches a stale build tree and a parse that dropped a line.
     auto const all = defines("bindings.glsl");
-    std::map<std::string, int> const cpp{
-        {"BIND_GBUFFER_POSITION", slot::BIND_GBUFFER_POSITION}, {"BIND_GBUFFER_NORMAL", slot::BIND_GBUFFER_NORMAL},
-        {"BIND_GBUFFER_ALBEDO_SPEC", slot::BIND_GBUFFER_ALBEDO_SPEC}, {"BIND_LIGHTS", slot::BIND_LIGHTS},
-        {"BIND_VOLUME_INSTANCES", slot::BIND_VOLUME_INSTANCES}, {"BIND_DEPTH", slot::BIND_DEPTH},
-        {"BIND_LIGHTING", slot::BIND_LIGHTING}, {"BIND_COVERAGE", slot::BIND_COVERAGE},
-        {"BIND_MATERIAL_BASE_COLOR", slot::BIND_MATERIAL_BASE_COLOR}, {"BIND_MATERIAL_NORMAL", slot::BIND_MATERIAL_NORMAL},
-        {"BIND_MATERIAL_SPECULAR", slot::BIND_MATERIAL_SPECULAR}, {"BIND_IMAGE_LIGHTING", slot::BIND_IMAGE_LIGHTING},
-        {"BIND_IMAGE_COVERAGE", slot::BIND_IMAGE_COVERAGE}};
+    std::map<std::string, int> const cpp{{"BIND_GBUFFER_POSITION", slot::BIND_GBUFFER_POSITION},
+                                         {"BIND_GBUFFER_NORMAL", slot::BIND_GBUFFER_NORMAL},
+                                         {"BIND_GBUFFER_ALBEDO_SPEC", slot::BIND_GBUFFER_ALBEDO_SPEC},
+                                         {"BIND_LIGHTS", slot::BIND_LIGHTS},
+                                         {"BIND_VOLUME_INSTANCES", slot::BIND_VOLUME_INSTANCES},
+                                         {"BIND_DEPTH", slot::BIND_DEPTH},
+                                         {"BIND_LIGHTING", slot::BIND_LIGHTING},
+                                         {"BIND_COVERAGE", slot::BIND_COVERAGE},
+                                         {"BIND_MATERIAL_BASE_COLOR", slot::BIND_MATERIAL_BASE_COLOR},
+                                         {"BIND_MATERIAL_NORMAL", slot::BIND_MATERIAL_NORMAL},
+                                         {"BIND_MATERIAL_SPECULAR", slot::BIND_MATERIAL_SPECULAR},
+                                         {"BIND_IMAGE_LIGHTING", slot::BIND_IMAGE_LIGHTING},
+                                         {"BIND_IMAGE_COVERAGE", slot::BIND_IMAGE_COVERAGE}};
     EXPECT_EQ(all, cpp);
     // Each sampler uniform has exactly one unit, and the three G-buffer samplers, the lights and
     // every texture the view pass reads are distinct (they are bound together).
@@ -102,11 +109,13 @@ TEST(ShaderConstants, GeneratedBindingsHeaderMatchesBindingsGlsl) {
     for (auto const& s : slot::kSamplerSlots) EXPECT_TRUE(names.insert(s.uniform).second) << s.uniform;
     std::ifstream f(std::string(GBL_SOURCE_DIR) + "/shaders/bindings.glsl");
     std::size_t annotated = 0;
-    for (std::string line; std::getline(f, line);) annotated += line.rfind("#define BIND_", 0) == 0 && line.find("// sampler ") != std::string::npos;
+    for (std::string line; std::getline(f, line);)
+        annotated += line.rfind("#define BIND_", 0) == 0 && line.find("// sampler ") != std::string::npos;
     EXPECT_EQ(names.size(), annotated) << "every `// sampler uName` annotation reaches kSamplerSlots";
-    std::set<int> const together{slot::BIND_GBUFFER_POSITION, slot::BIND_GBUFFER_NORMAL, slot::BIND_GBUFFER_ALBEDO_SPEC,
-                                 slot::BIND_LIGHTS,           slot::BIND_VOLUME_INSTANCES, slot::BIND_DEPTH,
-                                 slot::BIND_LIGHTING,         slot::BIND_COVERAGE};
+    std::set<int> const together{
+        slot::BIND_GBUFFER_POSITION, slot::BIND_GBUFFER_NORMAL,   slot::BIND_GBUFFER_ALBEDO_SPEC,
+        slot::BIND_LIGHTS,           slot::BIND_VOLUME_INSTANCES, slot::BIND_DEPTH,
+        slot::BIND_LIGHTING,         slot::BIND_COVERAGE};
     EXPECT_EQ(together.size(), 8u);
     // GL 3.3 guarantees 16 texture units per fragment stage.
     for (auto const& s : slot::kSamplerSlots) EXPECT_LT(s.unit, 16) << s.uniform;

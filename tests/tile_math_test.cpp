@@ -77,7 +77,8 @@ TEST(TileFrustum, SphereAgainstQuadrantTiles) {
     EXPECT_FALSE(sphereTouchesTile(tile(1, 1), nearD, farD, {1, 1, 10}, 1.0f));
     // Camera inside the sphere: every tile.
     for (int ty = 0; ty < 2; ++ty)
-        for (int tx = 0; tx < 2; ++tx) EXPECT_TRUE(sphereTouchesTile(tile(tx, ty), nearD, farD, {0.2f, -0.3f, 0.5f}, 2.0f));
+        for (int tx = 0; tx < 2; ++tx)
+            EXPECT_TRUE(sphereTouchesTile(tile(tx, ty), nearD, farD, {0.2f, -0.3f, 0.5f}, 2.0f));
 }
 
 TEST(TileFrustum, DepthBoundsCutTheTile) {
@@ -113,7 +114,8 @@ TEST(TileFrustum, NeverMissesASphereOverItsPixelsAndRejectsFarTiles) {
         int const ctx = px / kTileSize, cty = py / kTileSize;
         for (int ty = 0; ty < g.tilesY; ++ty) {
             for (int tx = 0; tx < g.tilesX; ++tx) {
-                bool const hit = sphereTouchesTile(tileFrustum(inv, w, h, tilePixelRect(g, w, h, tx, ty)), 0.1f, 200.0f, p, radius);
+                bool const hit =
+                    sphereTouchesTile(tileFrustum(inv, w, h, tilePixelRect(g, w, h, tx, ty)), 0.1f, 200.0f, p, radius);
                 if (tx == ctx && ty == cty) {
                     ASSERT_TRUE(hit) << "sphere " << i << " missed by its own tile";
                     ++accepted;

@@ -1,7 +1,7 @@
 // The attenuation plot shows the renderer's numbers: the applied curve ends at the radius, the
 // classic curve meets the threshold there.
-#include "panels/attenuation_plot.h"
 #include "core/light_math.h"
+#include "panels/attenuation_plot.h"
 
 #include <gtest/gtest.h>
 

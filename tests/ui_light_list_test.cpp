@@ -1,7 +1,7 @@
 // Light list edits: validated changes, refusals with messages, presets, deterministic random lights.
-#include "model/light_list.h"
-#include "model/drag_speed.h"
 #include "core/light_math.h"
+#include "model/drag_speed.h"
+#include "model/light_list.h"
 
 #include <gtest/gtest.h>
 

@@ -62,7 +62,7 @@ TEST(Undo, ASliderDragIsOneStep) {
         live = withX(live, 0, float(f) * 0.1f);
         EXPECT_FALSE(u.observe(live, true, f / 60.0));
     }
-    EXPECT_FALSE(u.canUndo());  // nothing recorded mid-drag
+    EXPECT_FALSE(u.canUndo());                 // nothing recorded mid-drag
     EXPECT_TRUE(u.observe(live, false, 1.1));  // released
     EXPECT_EQ(u.undoSteps(), 1u);
     auto const back = u.undo(live, 5.0);

@@ -1,6 +1,6 @@
 // "Why this value": each mode's per-light verdict at one pixel, on hand-built frames.
-#include "model/pixel_breakdown.h"
 #include "model/why_value.h"
+#include "model/pixel_breakdown.h"
 
 #include "core/depth.h"
 #include "core/light_math.h"
@@ -61,7 +61,9 @@ PointLight light(glm::vec3 p, float kl = 0.7f, float kq = 1.8f) {
     return l;
 }
 
-bool startsWith(std::string const& s, std::string const& prefix) { return s.rfind(prefix, 0) == 0; }
+bool startsWith(std::string const& s, std::string const& prefix) {
+    return s.rfind(prefix, 0) == 0;
+}
 
 }  // namespace
 
@@ -173,7 +175,8 @@ TEST(WhyValue, TileDepthBoundsSkipBackgroundAndOtherTiles) {
 
 TEST(WhyValue, BreakdownCarriesVerdictsWhoseSumIsTheTotal) {
     Frame const f;
-    PointLight const lights[] = {light({0.5f, -0.5f, -9.5f}), light({20.0f, 0.0f, -10.0f}), light({-1.0f, 1.0f, -8.0f})};
+    PointLight const lights[] = {light({0.5f, -0.5f, -9.5f}), light({20.0f, 0.0f, -10.0f}),
+                                 light({-1.0f, 1.0f, -8.0f})};
     PipelineSettings settings;  // quad: every light tested
     auto b = breakDownPixel(f.sample, lights, f.camera, settings, PixelInFrame{f.pixel, f.size, std::nullopt});
     ASSERT_TRUE(b);

@@ -13,14 +13,14 @@ struct EditorOptions {
     int frames = 0;                             // 0 = run until the window is closed
     int width = 1600;                           // window size in screen coordinates
     int height = 900;
-    std::optional<std::string> sessionPath;     // session file to open (issue 6)
-    std::optional<std::string> uiTestScript;    // run a UI test script (see ui/ui_script.h), exit 0 if it passes
-    bool allowOutsideUris = false;              // glTF files may read files outside their folder
-    std::string glLimit;                        // "3.3": pretend the context is at most that version
-    bool vsync = true;                          // off for screenshots, tests and measurements
-    std::optional<std::string> logFramesPath;   // one JSON line per frame (ui/model/frame_log.h)
-    int frameSleepMs = 0;                       // a sleep per frame that still takes input: slow-machine tests
-    bool continuousRender = false;              // render every frame, changed or not (timing)
+    std::optional<std::string> sessionPath;    // session file to open (issue 6)
+    std::optional<std::string> uiTestScript;   // run a UI test script (see ui/ui_script.h), exit 0 if it passes
+    bool allowOutsideUris = false;             // glTF files may read files outside their folder
+    std::string glLimit;                       // "3.3": pretend the context is at most that version
+    bool vsync = true;                         // off for screenshots, tests and measurements
+    std::optional<std::string> logFramesPath;  // one JSON line per frame (ui/model/frame_log.h)
+    int frameSleepMs = 0;                      // a sleep per frame that still takes input: slow-machine tests
+    bool continuousRender = false;             // render every frame, changed or not (timing)
 };
 
 // Opens the window and runs until it is closed, the frame count is reached or the test script

@@ -38,21 +38,23 @@ void fitViewerRanges(EditorState& state, Renderer& renderer, long frame, bool re
         v.fitRequested = false;
         ui::ValueRange r;
         switch (v.kind) {
-        case ui::ViewerKind::Position:
-            r = ui::fitRange(renderer.readAttachment(Attachment::Position), v.channelMask & 0x7, ui::RangeSkip::ZeroAlpha);
-            break;
-        case ui::ViewerKind::Depth:
-            r = ui::fitRange(renderer.readAttachment(Attachment::Depth), 0x1, ui::RangeSkip::FarDepth, v.linearDepth,
-                             v.cameraClipPlanes ? state.camera.nearPlane : v.nearPlane,
-                             v.cameraClipPlanes ? state.camera.farPlane : v.farPlane);
-            break;
-        case ui::ViewerKind::Albedo:
-        case ui::ViewerKind::Specular: {
-            unsigned const mask = v.kind == ui::ViewerKind::Specular ? 0x8u : (v.channelMask & 0x7);
-            r = ui::fitRange(renderer.readAttachment(Attachment::AlbedoSpec), mask, ui::RangeSkip::None);
-            break;
-        }
-        case ui::ViewerKind::Normal: continue;  // normals are shown as directions, not remapped
+            case ui::ViewerKind::Position:
+                r = ui::fitRange(renderer.readAttachment(Attachment::Position), v.channelMask & 0x7,
+                                 ui::RangeSkip::ZeroAlpha);
+                break;
+            case ui::ViewerKind::Depth:
+                r = ui::fitRange(renderer.readAttachment(Attachment::Depth), 0x1, ui::RangeSkip::FarDepth,
+                                 v.linearDepth, v.cameraClipPlanes ? state.camera.nearPlane : v.nearPlane,
+                                 v.cameraClipPlanes ? state.camera.farPlane : v.farPlane);
+                break;
+            case ui::ViewerKind::Albedo:
+            case ui::ViewerKind::Specular: {
+                unsigned const mask = v.kind == ui::ViewerKind::Specular ? 0x8u : (v.channelMask & 0x7);
+                r = ui::fitRange(renderer.readAttachment(Attachment::AlbedoSpec), mask, ui::RangeSkip::None);
+                break;
+            }
+            case ui::ViewerKind::Normal:
+                continue;  // normals are shown as directions, not remapped
         }
         if (r.samples > 0) {
             v.rangeMin = r.min;
@@ -206,8 +208,9 @@ void renderScene(Editor& editor, FrameTimes& times) {
     // Render on change: the frame is rendered again only when something it depends on changed;
     // otherwise the last image, viewers and statistics stay on screen.
     glm::ivec2 const size(renderer.width(), renderer.height());
-    ui::RenderInputs const inputs = ui::renderInputs(state.camera, editor.drawn, state.pipeline, size, editor.sceneGeneration,
-                                                     editor.shaderGeneration, state.animation.time, times.measuring);
+    ui::RenderInputs const inputs =
+        ui::renderInputs(state.camera, editor.drawn, state.pipeline, size, editor.sceneGeneration,
+                         editor.shaderGeneration, state.animation.time, times.measuring);
     std::optional<ui::RenderInputs> const before = editor.render.last;
     times.rendered = size.x > 0 && size.y > 0 && ui::needsRender(editor.render, inputs);
     editor.renderReason = times.rendered ? ui::describeChange(before, inputs) : std::string("nothing");

@@ -38,7 +38,7 @@ double msSince(EditorClock::time_point t0);
 // GPU objects the editor owns beside the renderer's.
 struct EditorGpu {
     std::array<ViewTarget, 5> viewTargets;                 // one per G-buffer viewer
-    ui::ViewerToolsGpu viewerTools;                         // diff heat maps of the viewer tools
+    ui::ViewerToolsGpu viewerTools;                        // diff heat maps of the viewer tools
     std::array<std::optional<ViewParams>, 5> drawnParams;  // what each target last showed
     GpuTimer timer;                                        // the editor's own GPU work, for the Stats window
 };
@@ -103,21 +103,21 @@ struct Editor {
     std::string iniPath;  // imgui.ini in the user's config folder; ImGui keeps a pointer to it
 
     EditorGpu gpu;
-    EditorInput input;                     // GLFW's events, queued (editor_input.h)
-    ui::FrameActions actions;              // this frame's shortcuts and fly keys
-    std::vector<std::string> actionLog;    // what the editor did this frame, for --log-frames
-    ui::RenderOnChange render;             // what the frame on screen was rendered from
-    std::string renderReason;              // what changed, for the Stats window
-    std::uint64_t sceneGeneration = 1;     // counts scenes handed to the renderer
-    std::uint64_t shaderGeneration = 0;    // counts shader reloads
+    EditorInput input;                       // GLFW's events, queued (editor_input.h)
+    ui::FrameActions actions;                // this frame's shortcuts and fly keys
+    std::vector<std::string> actionLog;      // what the editor did this frame, for --log-frames
+    ui::RenderOnChange render;               // what the frame on screen was rendered from
+    std::string renderReason;                // what changed, for the Stats window
+    std::uint64_t sceneGeneration = 1;       // counts scenes handed to the renderer
+    std::uint64_t shaderGeneration = 0;      // counts shader reloads
     std::optional<glm::ivec2> sampledPixel;  // the inspector's pixel at its last sample
-    ui::CameraView home;                   // the scene's view (Home)
-    bool showShortcuts = false;            // Help > Shortcuts
-    ui::DiscardGuard discard;              // Quit / New / Open over unsaved edits
-    std::vector<std::string> heldScenes;   // scene opens waiting for that answer
+    ui::CameraView home;                     // the scene's view (Home)
+    bool showShortcuts = false;              // Help > Shortcuts
+    ui::DiscardGuard discard;                // Quit / New / Open over unsaved edits
+    std::vector<std::string> heldScenes;     // scene opens waiting for that answer
     std::optional<ui::SessionRequest> heldSession;
-    bool releaseHeld = false;              // the answer was Discard: let the held requests through
-    ui::FrameLog frameLog;                 // --log-frames
+    bool releaseHeld = false;       // the answer was Discard: let the held requests through
+    ui::FrameLog frameLog;          // --log-frames
     std::vector<PointLight> drawn;  // this frame's lights (animated)
     long frame = 0;
     int exitCode = 0;

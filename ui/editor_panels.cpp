@@ -32,13 +32,16 @@ std::optional<glm::vec2> selectedLightInImage(EditorState const& state, std::spa
     int const i = state.lightsPanel.selected;
     if (i < 0 || i >= int(drawn.size()) || renderer.width() <= 0 || renderer.height() <= 0) return std::nullopt;
     float const aspect = float(renderer.width()) / float(renderer.height());
-    glm::vec4 const clip = state.camera.projection(aspect) * state.camera.view() * glm::vec4(drawn[std::size_t(i)].position, 1.0f);
+    glm::vec4 const clip =
+        state.camera.projection(aspect) * state.camera.view() * glm::vec4(drawn[std::size_t(i)].position, 1.0f);
     if (clip.w <= state.camera.nearPlane) return std::nullopt;
     glm::vec2 const ndc = glm::vec2(clip) / clip.w;
     return glm::vec2(ndc.x * 0.5f + 0.5f, 0.5f - ndc.y * 0.5f);
 }
 
-char const* keysFor(ui::EditorAction action) { return ui::shortcutFor(action).keys.data(); }
+char const* keysFor(ui::EditorAction action) {
+    return ui::shortcutFor(action).keys.data();
+}
 
 EditRequest drawMainMenu(Editor& editor) {
     EditorState& state = editor.state;
@@ -56,8 +59,10 @@ EditRequest drawMainMenu(Editor& editor) {
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {
-        if (ImGui::MenuItem("Undo", keysFor(ui::EditorAction::Undo), false, sessions.history().canUndo())) edit.undo = true;
-        if (ImGui::MenuItem("Redo", keysFor(ui::EditorAction::Redo), false, sessions.history().canRedo())) edit.redo = true;
+        if (ImGui::MenuItem("Undo", keysFor(ui::EditorAction::Undo), false, sessions.history().canUndo()))
+            edit.undo = true;
+        if (ImGui::MenuItem("Redo", keysFor(ui::EditorAction::Redo), false, sessions.history().canRedo()))
+            edit.redo = true;
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {

@@ -81,7 +81,9 @@ void handleViewRequests(Editor& editor, float dt) {
 
 // Whether an action that replaces the session must ask first. Scripted runs never ask: a
 // script sets state directly and would wait for an answer forever.
-bool mustAsk(Editor const& editor) { return !editor.script && editor.sessions->hasUnsavedEdits(editor.state); }
+bool mustAsk(Editor const& editor) {
+    return !editor.script && editor.sessions->hasUnsavedEdits(editor.state);
+}
 
 // Scene opens and session opens wait for the answer when edits would be lost.
 void holdDiscardingRequests(Editor& editor, ui::SessionRequest& request) {
@@ -117,20 +119,23 @@ void releaseConfirmed(Editor& editor, ui::SessionRequest& request) {
     }
     editor.actionLog.push_back("discard-confirmed");
     switch (*confirmed) {
-    case ui::DiscardingAction::Quit: editor.state.quitRequested = true; break;
-    case ui::DiscardingAction::NewSession:
-        if (auto error = editor.sessions->newSession(editor.state, editor.sceneLoader))
-            ui::logMessage(editor.state.log, *error, true);
-        break;
-    case ui::DiscardingAction::OpenScene:
-        editor.loading.requests.insert(editor.loading.requests.end(), editor.heldScenes.begin(), editor.heldScenes.end());
-        editor.heldScenes.clear();
-        editor.releaseHeld = true;
-        break;
-    case ui::DiscardingAction::OpenSession:
-        if (editor.heldSession) request = *editor.heldSession;
-        editor.heldSession.reset();
-        break;
+        case ui::DiscardingAction::Quit:
+            editor.state.quitRequested = true;
+            break;
+        case ui::DiscardingAction::NewSession:
+            if (auto error = editor.sessions->newSession(editor.state, editor.sceneLoader))
+                ui::logMessage(editor.state.log, *error, true);
+            break;
+        case ui::DiscardingAction::OpenScene:
+            editor.loading.requests.insert(editor.loading.requests.end(), editor.heldScenes.begin(),
+                                           editor.heldScenes.end());
+            editor.heldScenes.clear();
+            editor.releaseHeld = true;
+            break;
+        case ui::DiscardingAction::OpenSession:
+            if (editor.heldSession) request = *editor.heldSession;
+            editor.heldSession.reset();
+            break;
     }
 }
 
@@ -139,28 +144,45 @@ void carryOut(Editor& editor, EditorAction action) {
     ui::SessionController& sessions = *editor.sessions;
     editor.actionLog.emplace_back(ui::actionName(action));
     switch (action) {
-    case EditorAction::Undo: sessions.undo(state); break;
-    case EditorAction::Redo: sessions.redo(state); break;
-    case EditorAction::SaveSession: sessions.panel.saveRequested = true; break;
-    case EditorAction::OpenSession:
-        ui::openSessionDialog(sessions.panel, ui::SessionDialog::Open,
-                              sessions.panel.currentPath.empty() ? "session.json" : sessions.panel.currentPath);
-        break;
-    case EditorAction::OpenScene:
-        ui::openSceneDialog(editor.loading, editor.loading.recent.empty() ? std::string() : editor.loading.recent.front());
-        break;
-    case EditorAction::NewSession:
-        if (ui::mayDiscard(editor.discard, ui::DiscardingAction::NewSession, mustAsk(editor)))
-            if (auto error = sessions.newSession(state, editor.sceneLoader)) ui::logMessage(state.log, *error, true);
-        break;
-    case EditorAction::Quit:
-        if (ui::mayDiscard(editor.discard, ui::DiscardingAction::Quit, mustAsk(editor))) state.quitRequested = true;
-        break;
-    case EditorAction::FrameSelection: frameSelection(editor); break;
-    case EditorAction::HomeView: homeView(editor); break;
-    case EditorAction::ToggleInspectorLock: state.inspector.locked = !state.inspector.locked; break;
-    case EditorAction::ShowShortcuts: editor.showShortcuts = !editor.showShortcuts; break;
-    default: break;  // fly keys act through CameraInput::move
+        case EditorAction::Undo:
+            sessions.undo(state);
+            break;
+        case EditorAction::Redo:
+            sessions.redo(state);
+            break;
+        case EditorAction::SaveSession:
+            sessions.panel.saveRequested = true;
+            break;
+        case EditorAction::OpenSession:
+            ui::openSessionDialog(sessions.panel, ui::SessionDialog::Open,
+                                  sessions.panel.currentPath.empty() ? "session.json" : sessions.panel.currentPath);
+            break;
+        case EditorAction::OpenScene:
+            ui::openSceneDialog(editor.loading,
+                                editor.loading.recent.empty() ? std::string() : editor.loading.recent.front());
+            break;
+        case EditorAction::NewSession:
+            if (ui::mayDiscard(editor.discard, ui::DiscardingAction::NewSession, mustAsk(editor)))
+                if (auto error = sessions.newSession(state, editor.sceneLoader))
+                    ui::logMessage(state.log, *error, true);
+            break;
+        case EditorAction::Quit:
+            if (ui::mayDiscard(editor.discard, ui::DiscardingAction::Quit, mustAsk(editor))) state.quitRequested = true;
+            break;
+        case EditorAction::FrameSelection:
+            frameSelection(editor);
+            break;
+        case EditorAction::HomeView:
+            homeView(editor);
+            break;
+        case EditorAction::ToggleInspectorLock:
+            state.inspector.locked = !state.inspector.locked;
+            break;
+        case EditorAction::ShowShortcuts:
+            editor.showShortcuts = !editor.showShortcuts;
+            break;
+        default:
+            break;  // fly keys act through CameraInput::move
     }
 }
 

@@ -28,7 +28,9 @@ namespace {
 // start-up failures can say why in one sentence.
 std::string gLastGlfwError;
 
-void onGlfwError(int, char const* description) { gLastGlfwError = description ? description : "unknown error"; }
+void onGlfwError(int, char const* description) {
+    gLastGlfwError = description ? description : "unknown error";
+}
 
 bool displayAvailable() {
 #if defined(__linux__) || defined(__FreeBSD__)
@@ -58,8 +60,8 @@ bool parseGlLimit(std::string const& text, int& major, int& minor) {
 // it (ui/model/scene_loading.h, installScene). Start-up and sessions use it; File > Open, drops and
 // scripts load on a worker instead (updateSceneLoading). On failure the current scene and
 // state stay as they were and an error sentence is returned.
-std::optional<std::string> loadScene(std::optional<std::string> const& path, int defaultLightCount, bool allowOutsideUris,
-                                     ui::EditorState& state, Renderer& renderer) {
+std::optional<std::string> loadScene(std::optional<std::string> const& path, int defaultLightCount,
+                                     bool allowOutsideUris, ui::EditorState& state, Renderer& renderer) {
     auto const upload = [&renderer](SceneData const& scene) { return renderer.setScene(scene); };
     if (!path) return ui::installScene(makeDefaultScene({}), false, defaultLightCount, state, upload);
     GltfLoadOptions gltfOptions;
@@ -80,8 +82,10 @@ void onFilesDropped(GLFWwindow* window, int count, char const** paths) {
 std::string layoutFilePath(ui::LogState& log) {
     std::optional<std::string> const dir = ui::configDir();
     std::string why;
-    if (!dir) why = "neither XDG_CONFIG_HOME nor HOME names a folder";
-    else if (auto error = ui::ensureConfigDir(*dir)) why = *error;
+    if (!dir)
+        why = "neither XDG_CONFIG_HOME nor HOME names a folder";
+    else if (auto error = ui::ensureConfigDir(*dir))
+        why = *error;
     if (why.empty()) return ui::configFile(*dir, "imgui.ini");
     std::string const line = "window layout not saved: " + why;
     std::fprintf(stderr, "gbuffer-lab: %s\n", line.c_str());
@@ -103,11 +107,13 @@ std::optional<int> openWindow(Editor& editor) {
     }
     int limitMajor = 0, limitMinor = 0;
     if (!parseGlLimit(options.glLimit, limitMajor, limitMinor)) {
-        std::fprintf(stderr, "gbuffer-lab: --gl \"%s\" is not a version like 3.3 (at least 3.3).\n", options.glLimit.c_str());
+        std::fprintf(stderr, "gbuffer-lab: --gl \"%s\" is not a version like 3.3 (at least 3.3).\n",
+                     options.glLimit.c_str());
         return 2;
     }
     if (options.width <= 0 || options.height <= 0) {
-        std::fprintf(stderr, "gbuffer-lab: the window size must be at least 1x1 (got %dx%d).\n", options.width, options.height);
+        std::fprintf(stderr, "gbuffer-lab: the window size must be at least 1x1 (got %dx%d).\n", options.width,
+                     options.height);
         return 2;
     }
     if (options.uiTestScript) {
@@ -153,7 +159,8 @@ std::optional<int> startEditor(Editor& editor) {
         return 1;
     }
     editor.defaultLightCount = options.lightCount.value_or(32);
-    if (auto error = loadScene(options.scenePath, editor.defaultLightCount, options.allowOutsideUris, state, *editor.renderer)) {
+    if (auto error =
+            loadScene(options.scenePath, editor.defaultLightCount, options.allowOutsideUris, state, *editor.renderer)) {
         std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
         return 2;
     }

@@ -36,7 +36,8 @@ void SessionController::start(EditorState& state, int defaultSceneLights) {
             panel.recoveryWhy = peek.session ? "Its autosaved session (" + std::to_string(peek.session->lights.size()) +
                                                    " lights, scene " + peek.session->scene + ") can be restored."
                                              : "Its autosave cannot be read: " + peek.error;
-            logMessage(state.log, "an earlier editor (pid " + std::to_string(u.pid) + ") did not exit cleanly; its session is offered");
+            logMessage(state.log, "an earlier editor (pid " + std::to_string(u.pid) +
+                                      ") did not exit cleanly; its session is offered");
         } else {
             recovery_->discard(u);  // nothing saved, or an older crash than the one offered
         }
@@ -84,7 +85,8 @@ void SessionController::redo(EditorState& state) {
     if (auto s = undo_.redo(undoSnapshot(state), clock_())) applyUndoSnapshot(*s, state);
 }
 
-std::optional<std::string> SessionController::applyLoaded(Session const& session, EditorState& state, SceneLoader const& load) {
+std::optional<std::string> SessionController::applyLoaded(Session const& session, EditorState& state,
+                                                          SceneLoader const& load) {
     // The state is copied first so a scene that fails to load leaves everything as it was.
     EditorState const before = state;
     bool const sameScene = session.scene == (state.sceneSource.empty() ? "default" : state.sceneSource) &&
@@ -124,11 +126,16 @@ std::string SessionController::editsText(EditorState const& state) const {
     return sessionToJson(session);
 }
 
-bool SessionController::hasUnsavedEdits(EditorState const& state) const { return editsText(state) != savedEdits_; }
+bool SessionController::hasUnsavedEdits(EditorState const& state) const {
+    return editsText(state) != savedEdits_;
+}
 
-void SessionController::sceneChanged(EditorState const& state) { undo_.reset(undoSnapshot(state)); }
+void SessionController::sceneChanged(EditorState const& state) {
+    undo_.reset(undoSnapshot(state));
+}
 
-std::optional<std::string> SessionController::openSession(std::string const& path, EditorState& state, SceneLoader const& load) {
+std::optional<std::string> SessionController::openSession(std::string const& path, EditorState& state,
+                                                          SceneLoader const& load) {
     // Refusals are logged here (the Log window and the menu bar show them) for every caller:
     // the File menu, --session and UI scripts.
     SessionLoad const loaded = loadSession(path);
@@ -183,30 +190,32 @@ void SessionController::handle(SessionRequest const& request, EditorState& state
     std::optional<std::string> err;
     std::string done;
     switch (request.kind) {
-    case SessionRequestKind::None: return;
-    case SessionRequestKind::Open:
-        err = openSession(request.path, state, load);
-        break;
-    case SessionRequestKind::Save:
-        err = saveSession(request.path, state);
-        done = "saved session " + request.path;
-        break;
-    case SessionRequestKind::ExportAll:
-        err = exportAll(request.path, renderer, frame);
-        done = "exported the frame to " + request.path;
-        break;
-    case SessionRequestKind::ExportViewerPng:
-    case SessionRequestKind::ExportViewerExr:
-        err = exportViewer(request.viewer, request.kind == SessionRequestKind::ExportViewerExr, request.path, state, renderer);
-        done = "exported a viewer to " + request.path;
-        break;
-    case SessionRequestKind::Restore:
-        err = restoreRecovery(state, load);
-        break;
-    case SessionRequestKind::DiscardRecovery:
-        discardRecovery();
-        logMessage(state.log, "discarded the recovered session");
-        return;
+        case SessionRequestKind::None:
+            return;
+        case SessionRequestKind::Open:
+            err = openSession(request.path, state, load);
+            break;
+        case SessionRequestKind::Save:
+            err = saveSession(request.path, state);
+            done = "saved session " + request.path;
+            break;
+        case SessionRequestKind::ExportAll:
+            err = exportAll(request.path, renderer, frame);
+            done = "exported the frame to " + request.path;
+            break;
+        case SessionRequestKind::ExportViewerPng:
+        case SessionRequestKind::ExportViewerExr:
+            err = exportViewer(request.viewer, request.kind == SessionRequestKind::ExportViewerExr, request.path, state,
+                               renderer);
+            done = "exported a viewer to " + request.path;
+            break;
+        case SessionRequestKind::Restore:
+            err = restoreRecovery(state, load);
+            break;
+        case SessionRequestKind::DiscardRecovery:
+            discardRecovery();
+            logMessage(state.log, "discarded the recovered session");
+            return;
     }
     if (err && request.kind != SessionRequestKind::Open && request.kind != SessionRequestKind::Restore)
         logMessage(state.log, *err, true);  // open and restore log their own refusals
@@ -215,7 +224,8 @@ void SessionController::handle(SessionRequest const& request, EditorState& state
     finishSessionRequest(panel, err);
 }
 
-std::optional<std::string> SessionController::exportAll(std::string const& dir, Renderer& renderer, FrameExport const& frame) {
+std::optional<std::string> SessionController::exportAll(std::string const& dir, Renderer& renderer,
+                                                        FrameExport const& frame) {
     if (renderer.width() <= 0 || renderer.height() <= 0) return std::string("nothing to export: the viewport is 0x0");
     std::error_code ec;
     fs::create_directories(dir, ec);
@@ -225,7 +235,8 @@ std::optional<std::string> SessionController::exportAll(std::string const& dir, 
 
 std::optional<std::string> SessionController::exportViewer(int viewer, bool raw, std::string const& path,
                                                            EditorState const& state, Renderer& renderer) {
-    if (viewer < 0 || viewer >= int(state.gbuffer.viewers.size())) return "there is no viewer " + std::to_string(viewer);
+    if (viewer < 0 || viewer >= int(state.gbuffer.viewers.size()))
+        return "there is no viewer " + std::to_string(viewer);
     ViewerState const& v = state.gbuffer.viewers[std::size_t(viewer)];
     return raw ? exportViewerExr(renderer, v.kind, path) : exportViewerPng(renderer, v, state.camera, path);
 }

@@ -2,13 +2,13 @@
 // recovery, and exports. The window loop owns one and calls it at fixed points of the frame.
 #pragma once
 
-#include "model/editor_state.h"
 #include "frame_export.h"
-#include "panels/panel_session.h"
-#include "session/recovery.h"
-#include "renderer.h"
-#include "session/session.h"
+#include "model/editor_state.h"
 #include "model/undo.h"
+#include "panels/panel_session.h"
+#include "renderer.h"
+#include "session/recovery.h"
+#include "session/session.h"
 
 #include <functional>
 #include <optional>
@@ -53,8 +53,8 @@ public:
 
     // File > Export all (creates the folder) and the viewer export; error sentence or nullopt.
     static std::optional<std::string> exportAll(std::string const& dir, Renderer& renderer, FrameExport const& frame);
-    static std::optional<std::string> exportViewer(int viewer, bool raw, std::string const& path, EditorState const& state,
-                                                   Renderer& renderer);
+    static std::optional<std::string> exportViewer(int viewer, bool raw, std::string const& path,
+                                                   EditorState const& state, Renderer& renderer);
 
     // Writes the recovery session now if a change is pending (used before risky operations
     // and by tests); returns true when a file was written.

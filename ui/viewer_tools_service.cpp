@@ -20,8 +20,8 @@ void serviceViewerTools(EditorState& state, Renderer& renderer, long frame, std:
             bool const ownPlanes = v.kind == ViewerKind::Depth && !v.cameraClipPlanes;
             float const nearPlane = ownPlanes ? v.nearPlane : state.camera.nearPlane;
             float const farPlane = ownPlanes ? v.farPlane : state.camera.farPlane;
-            setViewerValues(v, d, viewerValues(v, renderer.readAttachment(viewerAttachment(v.kind)), nearPlane, farPlane),
-                            frame);
+            setViewerValues(
+                v, d, viewerValues(v, renderer.readAttachment(viewerAttachment(v.kind)), nearPlane, farPlane), frame);
             diffChanged = v.showDiff && d.pinned;
         } else {
             diffChanged = updateViewerStats(v, d);

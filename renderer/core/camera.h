@@ -18,8 +18,8 @@ struct Camera {
 
     glm::vec3 forward() const {
         float const yaw = glm::radians(yawDegrees), pitch = glm::radians(pitchDegrees);
-        return glm::normalize(glm::vec3(std::cos(yaw) * std::cos(pitch), std::sin(pitch),
-                                        std::sin(yaw) * std::cos(pitch)));
+        return glm::normalize(
+            glm::vec3(std::cos(yaw) * std::cos(pitch), std::sin(pitch), std::sin(yaw) * std::cos(pitch)));
     }
     glm::vec3 right() const { return glm::normalize(glm::cross(forward(), glm::vec3(0, 1, 0))); }
     glm::vec3 up() const { return glm::cross(right(), forward()); }

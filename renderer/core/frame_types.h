@@ -24,7 +24,7 @@ enum class Attachment {
     // RG32F: x = lights evaluated at the pixel, y = lights that lit it. Read back with 2 channels;
     // filled only by a frame (or view) showing the heat map or the lights-per-tile view.
     Coverage,
-    Final,       // RGBA8 display image: tonemapped, gamma-encoded, or the chosen debug view
+    Final,  // RGBA8 display image: tonemapped, gamma-encoded, or the chosen debug view
 };
 
 struct PassTiming {
@@ -38,9 +38,9 @@ struct FrameStats {
     std::vector<PassTiming> passes;  // in frame order
     double gpuFrameMs = 0.0;         // sum of the passes
     int lightsSubmitted = 0;
-    int lightsShaded = 0;            // lights with a radius > 0
+    int lightsShaded = 0;                              // lights with a radius > 0
     std::optional<std::uint64_t> fragmentInvocations;  // lighting pass, when pipeline statistics exist
-    std::uint64_t glErrors = 0;      // errors reported while rendering this frame
+    std::uint64_t glErrors = 0;                        // errors reported while rendering this frame
     // The lighting mode that actually ran; differs from the requested one only after a fallback
     // (a mode unavailable on this context runs quad), and then fallbackReason says why.
     LightingMode modeUsed = LightingMode::Quad;
@@ -49,11 +49,11 @@ struct FrameStats {
 
 // Everything stored at one pixel, read back as floats (for the pixel inspector and tests).
 struct PixelSample {
-    bool covered = false;          // geometry was drawn here
+    bool covered = false;  // geometry was drawn here
     glm::vec4 position{0.0f};
     glm::vec4 normal{0.0f};
     glm::vec4 albedoSpec{0.0f};
-    float depth = 1.0f;            // window-space depth 0..1
+    float depth = 1.0f;                     // window-space depth 0..1
     glm::vec3 reconstructedPosition{0.0f};  // world position rebuilt from depth and the camera
     glm::vec4 lighting{0.0f};
 };

@@ -6,7 +6,9 @@
 namespace gbl {
 
 namespace {
-bool badNumber(float v) { return !std::isfinite(v) || v < 0.0f; }
+bool badNumber(float v) {
+    return !std::isfinite(v) || v < 0.0f;
+}
 }  // namespace
 
 std::optional<std::string> validateLight(PointLight const& light) {
@@ -26,8 +28,7 @@ std::optional<std::string> validateLight(PointLight const& light) {
 }
 
 LightRadius solveLightRadius(float imax, float kc, float kl, float kq, float threshold) {
-    if (badNumber(imax) || badNumber(kc) || badNumber(kl) || badNumber(kq) || badNumber(threshold) ||
-        threshold <= 0.0f)
+    if (badNumber(imax) || badNumber(kc) || badNumber(kl) || badNumber(kq) || badNumber(threshold) || threshold <= 0.0f)
         return {0.0f, RadiusKind::Zero};
     // Solve in double: Imax/threshold can be large and the quadratic formula cancels badly.
     double const c = double(kc) - double(imax) / double(threshold);

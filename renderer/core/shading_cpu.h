@@ -13,7 +13,7 @@
 namespace gbl {
 
 struct ShadingInputs {
-    glm::vec3 position{0.0f};  // world-space surface point
+    glm::vec3 position{0.0f};            // world-space surface point
     glm::vec3 normal{0.0f, 1.0f, 0.0f};  // unit
     glm::vec3 albedo{1.0f};
     float specular = 0.5f;

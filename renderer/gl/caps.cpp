@@ -30,9 +30,9 @@ GlCaps detectGlCaps(int limitMajor, int limitMinor) {
     // the limit shows what a real context of that version would offer.
     auto has = [&](char const* ext) { return !limited && epoxy_has_gl_extension(ext); };
     caps.khrDebug = caps.atLeast(4, 3) || has("GL_KHR_debug");
-    caps.computeShaders = caps.atLeast(4, 3) ||
-                          (has("GL_ARB_compute_shader") && has("GL_ARB_shader_storage_buffer_object") &&
-                           has("GL_ARB_shader_image_load_store"));
+    caps.computeShaders =
+        caps.atLeast(4, 3) || (has("GL_ARB_compute_shader") && has("GL_ARB_shader_storage_buffer_object") &&
+                               has("GL_ARB_shader_image_load_store"));
     caps.pipelineStatistics = caps.atLeast(4, 6) || has("GL_ARB_pipeline_statistics_query");
     return caps;
 }

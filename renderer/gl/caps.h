@@ -12,8 +12,8 @@ struct GlCaps {
     std::string renderer;
     std::string version;
     std::string glslVersion;
-    bool khrDebug = false;        // GL 4.3 or GL_KHR_debug: debug callback and object labels
-    bool computeShaders = false;  // GL 4.3 or ARB_compute_shader + SSBOs: tiled lighting
+    bool khrDebug = false;            // GL 4.3 or GL_KHR_debug: debug callback and object labels
+    bool computeShaders = false;      // GL 4.3 or ARB_compute_shader + SSBOs: tiled lighting
     bool pipelineStatistics = false;  // ARB_pipeline_statistics_query: fragment invocations
 
     bool atLeast(int maj, int min) const { return major > maj || (major == maj && minor >= min); }

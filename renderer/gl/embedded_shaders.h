@@ -6,7 +6,7 @@
 namespace gbl {
 
 struct EmbeddedShader {
-    char const* name;    // file name inside shaders/, e.g. "geometry.frag"
+    char const* name;  // file name inside shaders/, e.g. "geometry.frag"
     char const* source;
 };
 

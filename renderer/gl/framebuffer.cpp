@@ -7,20 +7,31 @@ namespace gbl::gl {
 
 std::string_view framebufferStatusName(GLenum status) {
     switch (status) {
-    case GL_FRAMEBUFFER_COMPLETE: return "GL_FRAMEBUFFER_COMPLETE";
-    case GL_FRAMEBUFFER_UNDEFINED: return "GL_FRAMEBUFFER_UNDEFINED";
-    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
-    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
-    case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
-    case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
-    case GL_FRAMEBUFFER_UNSUPPORTED: return "GL_FRAMEBUFFER_UNSUPPORTED";
-    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
-    case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS: return "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS";
-    default: return "unknown framebuffer status";
+        case GL_FRAMEBUFFER_COMPLETE:
+            return "GL_FRAMEBUFFER_COMPLETE";
+        case GL_FRAMEBUFFER_UNDEFINED:
+            return "GL_FRAMEBUFFER_UNDEFINED";
+        case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT:
+            return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
+        case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
+            return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
+        case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER:
+            return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
+        case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER:
+            return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
+        case GL_FRAMEBUFFER_UNSUPPORTED:
+            return "GL_FRAMEBUFFER_UNSUPPORTED";
+        case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE:
+            return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
+        case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS:
+            return "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS";
+        default:
+            return "unknown framebuffer status";
     }
 }
 
-Framebuffer Framebuffer::create(std::initializer_list<Texture const*> colors, Texture const* depth, std::string_view label) {
+Framebuffer Framebuffer::create(std::initializer_list<Texture const*> colors, Texture const* depth,
+                                std::string_view label) {
     Framebuffer fb;
     GLuint id = 0;
     glGenFramebuffers(1, &id);
@@ -33,7 +44,8 @@ Framebuffer Framebuffer::create(std::initializer_list<Texture const*> colors, Te
         drawBuffers.push_back(slot++);
     }
     if (depth) {
-        bool const hasStencil = depth->internalFormat() == GL_DEPTH32F_STENCIL8 || depth->internalFormat() == GL_DEPTH24_STENCIL8;
+        bool const hasStencil =
+            depth->internalFormat() == GL_DEPTH32F_STENCIL8 || depth->internalFormat() == GL_DEPTH24_STENCIL8;
         glFramebufferTexture2D(GL_FRAMEBUFFER, hasStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
                                GL_TEXTURE_2D, depth->id(), 0);
     }
@@ -45,8 +57,8 @@ Framebuffer Framebuffer::create(std::initializer_list<Texture const*> colors, Te
     }
     GLenum const status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
-        fb.error_ = std::string("framebuffer '") + std::string(label) + "' is incomplete: " +
-                    std::string(framebufferStatusName(status));
+        fb.error_ = std::string("framebuffer '") + std::string(label) +
+                    "' is incomplete: " + std::string(framebufferStatusName(status));
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     setLabel(GL_FRAMEBUFFER, id, label);
     return fb;

@@ -20,7 +20,8 @@ public:
     Framebuffer() = default;
     // Attaches colour textures to GL_COLOR_ATTACHMENT0.. in order and an optional depth(-stencil)
     // texture, enables those draw buffers, and checks completeness.
-    static Framebuffer create(std::initializer_list<Texture const*> colors, Texture const* depth, std::string_view label);
+    static Framebuffer create(std::initializer_list<Texture const*> colors, Texture const* depth,
+                              std::string_view label);
 
     GLuint id() const { return handle_.id(); }
     explicit operator bool() const { return bool(handle_); }

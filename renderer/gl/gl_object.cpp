@@ -13,11 +13,17 @@ bool labelsSupported() {
 }
 }  // namespace
 
-int liveObjectCount() { return gLive.load(); }
+int liveObjectCount() {
+    return gLive.load();
+}
 
 namespace detail {
-void countCreated() { ++gLive; }
-void countDeleted() { --gLive; }
+void countCreated() {
+    ++gLive;
+}
+void countDeleted() {
+    --gLive;
+}
 }  // namespace detail
 
 void setLabel(GLenum identifier, GLuint id, std::string_view label) {

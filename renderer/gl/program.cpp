@@ -6,21 +6,29 @@ namespace gbl::gl {
 namespace {
 char const* stageName(GLenum stage) {
     switch (stage) {
-    case GL_VERTEX_SHADER: return "vertex";
-    case GL_FRAGMENT_SHADER: return "fragment";
-    case GL_COMPUTE_SHADER: return "compute";
-    default: return "shader";
+        case GL_VERTEX_SHADER:
+            return "vertex";
+        case GL_FRAGMENT_SHADER:
+            return "fragment";
+        case GL_COMPUTE_SHADER:
+            return "compute";
+        default:
+            return "shader";
     }
 }
 
 std::string infoLog(GLuint object, bool isProgram) {
     GLint length = 0;
-    if (isProgram) glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
-    else glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    if (isProgram)
+        glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+    else
+        glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
     std::string text(std::size_t(length > 0 ? length : 0), '\0');
     if (length > 0) {
-        if (isProgram) glGetProgramInfoLog(object, length, nullptr, text.data());
-        else glGetShaderInfoLog(object, length, nullptr, text.data());
+        if (isProgram)
+            glGetProgramInfoLog(object, length, nullptr, text.data());
+        else
+            glGetShaderInfoLog(object, length, nullptr, text.data());
     }
     while (!text.empty() && (text.back() == '\0' || text.back() == '\n')) text.pop_back();
     return text;

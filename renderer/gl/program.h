@@ -42,8 +42,12 @@ public:
     void set(std::string_view name, glm::vec2 v) const { glUniform2f(uniform(name), v.x, v.y); }
     void set(std::string_view name, glm::vec3 v) const { glUniform3f(uniform(name), v.x, v.y, v.z); }
     void set(std::string_view name, glm::vec4 v) const { glUniform4f(uniform(name), v.x, v.y, v.z, v.w); }
-    void set(std::string_view name, glm::mat3 const& m) const { glUniformMatrix3fv(uniform(name), 1, GL_FALSE, &m[0][0]); }
-    void set(std::string_view name, glm::mat4 const& m) const { glUniformMatrix4fv(uniform(name), 1, GL_FALSE, &m[0][0]); }
+    void set(std::string_view name, glm::mat3 const& m) const {
+        glUniformMatrix3fv(uniform(name), 1, GL_FALSE, &m[0][0]);
+    }
+    void set(std::string_view name, glm::mat4 const& m) const {
+        glUniformMatrix4fv(uniform(name), 1, GL_FALSE, &m[0][0]);
+    }
 
 private:
     Handle<ProgramDeleter> handle_;

@@ -48,6 +48,8 @@ struct ProgramInfo {
 
 // Every program, in ProgramId order.
 std::span<ProgramInfo const> programTable();
-inline ProgramInfo const& programInfo(ProgramId id) { return programTable()[std::size_t(id)]; }
+inline ProgramInfo const& programInfo(ProgramId id) {
+    return programTable()[std::size_t(id)];
+}
 
 }  // namespace gbl

@@ -9,14 +9,43 @@ namespace {
 // Format/type pairs for glTexImage2D; the data pointer is null so they only need to be valid.
 void formatAndType(GLenum internalFormat, GLenum& format, GLenum& type) {
     switch (internalFormat) {
-    case GL_DEPTH32F_STENCIL8: format = GL_DEPTH_STENCIL; type = GL_FLOAT_32_UNSIGNED_INT_24_8_REV; return;
-    case GL_DEPTH24_STENCIL8: format = GL_DEPTH_STENCIL; type = GL_UNSIGNED_INT_24_8; return;
-    case GL_DEPTH_COMPONENT32F: format = GL_DEPTH_COMPONENT; type = GL_FLOAT; return;
-    case GL_R8: case GL_R16F: case GL_R32F: format = GL_RED; type = GL_FLOAT; return;
-    case GL_R32UI: format = GL_RED_INTEGER; type = GL_UNSIGNED_INT; return;
-    case GL_RG16F: case GL_RG32F: format = GL_RG; type = GL_FLOAT; return;
-    case GL_RGB8: case GL_SRGB8: case GL_RGB16F: format = GL_RGB; type = GL_FLOAT; return;
-    default: format = GL_RGBA; type = GL_FLOAT; return;
+        case GL_DEPTH32F_STENCIL8:
+            format = GL_DEPTH_STENCIL;
+            type = GL_FLOAT_32_UNSIGNED_INT_24_8_REV;
+            return;
+        case GL_DEPTH24_STENCIL8:
+            format = GL_DEPTH_STENCIL;
+            type = GL_UNSIGNED_INT_24_8;
+            return;
+        case GL_DEPTH_COMPONENT32F:
+            format = GL_DEPTH_COMPONENT;
+            type = GL_FLOAT;
+            return;
+        case GL_R8:
+        case GL_R16F:
+        case GL_R32F:
+            format = GL_RED;
+            type = GL_FLOAT;
+            return;
+        case GL_R32UI:
+            format = GL_RED_INTEGER;
+            type = GL_UNSIGNED_INT;
+            return;
+        case GL_RG16F:
+        case GL_RG32F:
+            format = GL_RG;
+            type = GL_FLOAT;
+            return;
+        case GL_RGB8:
+        case GL_SRGB8:
+        case GL_RGB16F:
+            format = GL_RGB;
+            type = GL_FLOAT;
+            return;
+        default:
+            format = GL_RGBA;
+            type = GL_FLOAT;
+            return;
     }
 }
 }  // namespace

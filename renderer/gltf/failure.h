@@ -18,9 +18,13 @@ struct LoadFailure {
 };
 struct LoadCancelled {};
 
-[[noreturn]] inline void fail(std::string cause) { throw LoadFailure{std::move(cause)}; }
+[[noreturn]] inline void fail(std::string cause) {
+    throw LoadFailure{std::move(cause)};
+}
 
-inline std::string num(std::size_t v) { return std::to_string(v); }
+inline std::string num(std::size_t v) {
+    return std::to_string(v);
+}
 
 // Keeps messages to one readable line: no control bytes, no multi-kilobyte data URIs.
 inline std::string printable(std::string_view s, std::size_t maxLen = 120) {

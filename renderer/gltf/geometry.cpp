@@ -16,7 +16,9 @@ glm::vec3 perpendicular(glm::vec3 n) {
     return glm::normalize(glm::cross(axis, n));
 }
 
-bool finiteVec(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finiteVec(glm::vec3 v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 }  // namespace
 

@@ -20,8 +20,7 @@ std::string formatName(std::span<std::uint8_t const> b, std::string_view hint) {
     if (b.size() >= 4 && std::memcmp(b.data(), kPng, 4) == 0) return "image.png";
     if (b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF) return "image.jpg";
     if (hint.find("png") != std::string_view::npos) return "image.png";
-    if (hint.find("jpeg") != std::string_view::npos || hint.find("jpg") != std::string_view::npos)
-        return "image.jpg";
+    if (hint.find("jpeg") != std::string_view::npos || hint.find("jpg") != std::string_view::npos) return "image.jpg";
     auto const dot = hint.find_last_of('.');
     if (dot != std::string_view::npos && hint.size() - dot <= 6) return "image" + std::string(hint.substr(dot));
     return "image.png";
@@ -109,8 +108,10 @@ float sampleNearest(ImageData const& img, float u, float v, int c) {
     int const y = std::clamp(int(v * float(img.height)), 0, img.height - 1);
     std::uint8_t const* p = &img.pixels[(std::size_t(y) * std::size_t(img.width) + std::size_t(x)) * img.channels];
     int src = c;
-    if (img.channels <= 2) src = c == 3 ? (img.channels == 2 ? 1 : -1) : 0;
-    else if (c >= img.channels) src = -1;
+    if (img.channels <= 2)
+        src = c == 3 ? (img.channels == 2 ? 1 : -1) : 0;
+    else if (c >= img.channels)
+        src = -1;
     return src < 0 ? 1.0f : float(p[src]) / 255.0f;
 }
 

@@ -14,8 +14,8 @@ namespace gbl {
 
 struct DecodedImage {
     std::optional<ImageData> image;
-    std::string error;      // why decoding failed (the caller decides: placeholder or refusal)
-    bool overLimit = false; // the image is larger than maxPixels; error states the limit
+    std::string error;       // why decoding failed (the caller decides: placeholder or refusal)
+    bool overLimit = false;  // the image is larger than maxPixels; error states the limit
 };
 
 // Decodes PNG, JPEG or any format OpenImageIO reads from memory into 8 bits per channel,

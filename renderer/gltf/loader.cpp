@@ -47,7 +47,9 @@ bool fsFileExists(std::string const& path, void* user) {
     return fs::is_regular_file(p, ec);
 }
 
-std::string fsExpandFilePath(std::string const& path, void*) { return path; }
+std::string fsExpandFilePath(std::string const& path, void*) {
+    return path;
+}
 
 bool fsReadWholeFile(std::vector<unsigned char>* out, std::string* err, std::string const& path, void* user) {
     auto* st = static_cast<FsState*>(user);
@@ -76,7 +78,9 @@ bool fsReadWholeFile(std::vector<unsigned char>* out, std::string* err, std::str
     return true;
 }
 
-bool fsWriteWholeFile(std::string*, std::string const&, std::vector<unsigned char> const&, void*) { return false; }
+bool fsWriteWholeFile(std::string*, std::string const&, std::vector<unsigned char> const&, void*) {
+    return false;
+}
 
 // Keeps the encoded bytes of URI images for the builder (see ImageStash).
 bool stashImage(tinygltf::Image* image, int index, std::string*, std::string*, int, int, unsigned char const* bytes,
@@ -94,7 +98,8 @@ SceneData loadFromBytes(std::span<std::uint8_t const> data, fs::path const& file
                         Progress& progress) {
     if (data.empty()) fail("the file is empty");
     if (data.size() > options.maxFileBytes)
-        fail("the file is " + num(data.size()) + " bytes, more than the limit of " + num(options.maxFileBytes) + " bytes");
+        fail("the file is " + num(data.size()) + " bytes, more than the limit of " + num(options.maxFileBytes) +
+             " bytes");
     if (data.size() > UINT_MAX) fail("the file is larger than 4 GiB, which tinygltf cannot read");
 
     bool const isGlb = data.size() >= 4 && std::memcmp(data.data(), "glTF", 4) == 0;
@@ -107,8 +112,7 @@ SceneData loadFromBytes(std::span<std::uint8_t const> data, fs::path const& file
         std::size_t i = 0;
         if (data.size() >= 3 && data[0] == 0xEF && data[1] == 0xBB && data[2] == 0xBF) i = 3;  // UTF-8 BOM
         while (i < data.size() && std::isspace(data[i])) ++i;
-        if (i == data.size() || data[i] != '{')
-            fail("it is not a glTF file (neither a JSON object nor binary glTF)");
+        if (i == data.size() || data[i] != '{') fail("it is not a glTF file (neither a JSON object nor binary glTF)");
         jsonText = data.subspan(i);
     }
 
@@ -131,9 +135,10 @@ SceneData loadFromBytes(std::span<std::uint8_t const> data, fs::path const& file
     tinygltf::Model model;
     std::string err, warn;
     std::string const baseDir = fsState.folder.string();
-    bool const ok = isGlb ? loader.LoadBinaryFromMemory(&model, &err, &warn, data.data(), unsigned(data.size()), baseDir)
-                          : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<char const*>(jsonText.data()),
-                                                       unsigned(jsonText.size()), baseDir);
+    bool const ok =
+        isGlb ? loader.LoadBinaryFromMemory(&model, &err, &warn, data.data(), unsigned(data.size()), baseDir)
+              : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<char const*>(jsonText.data()),
+                                           unsigned(jsonText.size()), baseDir);
     if (!fsState.failure.empty()) fail(fsState.failure);
     if (!ok) {
         std::string first = err.substr(0, err.find('\n'));

@@ -18,8 +18,7 @@ float specularFromMetallicRoughness(float metallic, float roughness, float diele
     return std::clamp(gloss * base, 0.0f, 1.0f);
 }
 
-PointLight pointLightWithRadius(glm::vec3 position, glm::vec3 color, float intensity, float radius,
-                                std::string name) {
+PointLight pointLightWithRadius(glm::vec3 position, glm::vec3 color, float intensity, float radius, std::string name) {
     PointLight light;
     light.position = position;
     light.color = color;
@@ -36,8 +35,8 @@ PointLight pointLightWithRadius(glm::vec3 position, glm::vec3 color, float inten
     return light;
 }
 
-std::optional<PointLight> pointLightFromGltf(glm::vec3 position, glm::vec3 color, float intensityCandela,
-                                             float range, std::string name, std::string* why) {
+std::optional<PointLight> pointLightFromGltf(glm::vec3 position, glm::vec3 color, float intensityCandela, float range,
+                                             std::string name, std::string* why) {
     auto fail = [&](std::string reason) -> std::optional<PointLight> {
         if (why) *why = std::move(reason);
         return std::nullopt;
@@ -45,7 +44,8 @@ std::optional<PointLight> pointLightFromGltf(glm::vec3 position, glm::vec3 color
     if (!std::isfinite(intensityCandela) || intensityCandela < 0.0f)
         return fail("its intensity is negative or not a finite number");
     for (int i = 0; i < 3; ++i) {
-        if (!std::isfinite(color[i]) || color[i] < 0.0f) return fail("its colour has a negative or non-finite component");
+        if (!std::isfinite(color[i]) || color[i] < 0.0f)
+            return fail("its colour has a negative or non-finite component");
         if (!std::isfinite(position[i])) return fail("its node transform places it at a non-finite position");
     }
     if (!std::isfinite(range) || range < 0.0f) return fail("its range is negative or not a finite number");
@@ -87,9 +87,9 @@ std::vector<PointLight> generateLightsForBounds(Bounds const& bounds) {
         float const phi = 2.39996323f * float(i);  // golden angle
         glm::vec3 const p = c + extent * 1.1f * glm::vec3(std::cos(phi) * ring, y, std::sin(phi) * ring);
         float const hue = std::fmod(float(i) * 0.618034f, 1.0f) * 6.0f;
-        glm::vec3 const rgb = glm::clamp(glm::vec3(std::abs(hue - 3.0f) - 1.0f, 2.0f - std::abs(hue - 2.0f),
-                                                   2.0f - std::abs(hue - 4.0f)),
-                                         0.0f, 1.0f);
+        glm::vec3 const rgb =
+            glm::clamp(glm::vec3(std::abs(hue - 3.0f) - 1.0f, 2.0f - std::abs(hue - 2.0f), 2.0f - std::abs(hue - 4.0f)),
+                       0.0f, 1.0f);
         lights.push_back(pointLightWithRadius(p, glm::mix(rgb, glm::vec3(1.0f), 0.25f), 1.0f, 0.8f * r,
                                               "fill " + std::to_string(i + 1)));
     }

@@ -24,14 +24,13 @@ float specularFromMetallicRoughness(float metallic, float roughness, float diele
 
 // A light with Kc = 1, Kl = 0 and Kq chosen so that solveLightRadius() returns `radius`.
 // When the light is too dim to ever reach the threshold, Kq = 1 and the radius is 0.
-PointLight pointLightWithRadius(glm::vec3 position, glm::vec3 color, float intensity, float radius,
-                                std::string name);
+PointLight pointLightWithRadius(glm::vec3 position, glm::vec3 color, float intensity, float radius, std::string name);
 
 // A KHR_lights_punctual point light. range <= 0 means "infinite" in glTF: we then keep the
 // inverse-square law of the file (Kc = 1, Kl = 0, Kq = 1 per square scene unit) and let the
 // threshold decide the radius. Returns nullopt (with the reason) for unusable values.
-std::optional<PointLight> pointLightFromGltf(glm::vec3 position, glm::vec3 color, float intensityCandela,
-                                             float range, std::string name, std::string* why = nullptr);
+std::optional<PointLight> pointLightFromGltf(glm::vec3 position, glm::vec3 color, float intensityCandela, float range,
+                                             std::string name, std::string* why = nullptr);
 
 // A deterministic light set for scenes without lights: four white key lights around and above
 // the bounds that reach the whole scene, and twelve small coloured lights spread through it.

@@ -33,16 +33,20 @@ std::string decodeUri(std::string const& uri) {
     };
     std::string out;
     for (std::size_t i = 0; i < uri.size(); ++i) {
-        if (uri[i] == '+') out += ' ';
+        if (uri[i] == '+')
+            out += ' ';
         else if (uri[i] == '%' && i + 2 < uri.size()) {
             out += char(hex(uri[i + 1]) * 16 + hex(uri[i + 2]));
             i += 2;
-        } else out += uri[i];
+        } else
+            out += uri[i];
     }
     return out;
 }
 
-char const* typeName(Json const& v) { return v.type_name(); }
+char const* typeName(Json const& v) {
+    return v.type_name();
+}
 
 struct FieldRule {
     char const* collection;
@@ -52,22 +56,38 @@ struct FieldRule {
 
 // The properties whose types tinygltf would otherwise ignore silently or misread.
 constexpr FieldRule kFieldRules[] = {
-    {"accessors", "bufferView", Kind::Index},   {"accessors", "byteOffset", Kind::Index},
-    {"accessors", "componentType", Kind::Index}, {"accessors", "count", Kind::Index},
-    {"accessors", "type", Kind::String},         {"accessors", "normalized", Kind::Bool},
-    {"accessors", "sparse", Kind::Object},       {"buffers", "byteLength", Kind::Index},
-    {"buffers", "uri", Kind::String},            {"bufferViews", "buffer", Kind::Index},
-    {"bufferViews", "byteOffset", Kind::Index},  {"bufferViews", "byteLength", Kind::Index},
-    {"bufferViews", "byteStride", Kind::Index},  {"images", "uri", Kind::String},
-    {"images", "bufferView", Kind::Index},       {"images", "mimeType", Kind::String},
-    {"materials", "pbrMetallicRoughness", Kind::Object}, {"materials", "normalTexture", Kind::Object},
-    {"materials", "alphaMode", Kind::String},    {"materials", "alphaCutoff", Kind::Number},
-    {"materials", "doubleSided", Kind::Bool},    {"materials", "extensions", Kind::Object},
-    {"meshes", "primitives", Kind::Array},       {"nodes", "mesh", Kind::Index},
-    {"nodes", "children", Kind::IndexArray},     {"nodes", "matrix", Kind::NumberArray},
-    {"nodes", "translation", Kind::NumberArray}, {"nodes", "rotation", Kind::NumberArray},
-    {"nodes", "scale", Kind::NumberArray},       {"nodes", "extensions", Kind::Object},
-    {"scenes", "nodes", Kind::IndexArray},       {"textures", "source", Kind::Index},
+    {"accessors", "bufferView", Kind::Index},
+    {"accessors", "byteOffset", Kind::Index},
+    {"accessors", "componentType", Kind::Index},
+    {"accessors", "count", Kind::Index},
+    {"accessors", "type", Kind::String},
+    {"accessors", "normalized", Kind::Bool},
+    {"accessors", "sparse", Kind::Object},
+    {"buffers", "byteLength", Kind::Index},
+    {"buffers", "uri", Kind::String},
+    {"bufferViews", "buffer", Kind::Index},
+    {"bufferViews", "byteOffset", Kind::Index},
+    {"bufferViews", "byteLength", Kind::Index},
+    {"bufferViews", "byteStride", Kind::Index},
+    {"images", "uri", Kind::String},
+    {"images", "bufferView", Kind::Index},
+    {"images", "mimeType", Kind::String},
+    {"materials", "pbrMetallicRoughness", Kind::Object},
+    {"materials", "normalTexture", Kind::Object},
+    {"materials", "alphaMode", Kind::String},
+    {"materials", "alphaCutoff", Kind::Number},
+    {"materials", "doubleSided", Kind::Bool},
+    {"materials", "extensions", Kind::Object},
+    {"meshes", "primitives", Kind::Array},
+    {"nodes", "mesh", Kind::Index},
+    {"nodes", "children", Kind::IndexArray},
+    {"nodes", "matrix", Kind::NumberArray},
+    {"nodes", "translation", Kind::NumberArray},
+    {"nodes", "rotation", Kind::NumberArray},
+    {"nodes", "scale", Kind::NumberArray},
+    {"nodes", "extensions", Kind::Object},
+    {"scenes", "nodes", Kind::IndexArray},
+    {"textures", "source", Kind::Index},
     {"textures", "sampler", Kind::Index},
 };
 
@@ -76,8 +96,8 @@ constexpr char const* kCollections[] = {"accessors", "animations", "buffers", "b
                                         "scenes",    "skins",      "textures"};
 
 // Extensions whose absence changes what the file means; anything else required is refused.
-constexpr char const* kSupportedRequired[] = {"KHR_lights_punctual", "KHR_materials_specular",
-                                              "KHR_mesh_quantization", "KHR_materials_emissive_strength"};
+constexpr char const* kSupportedRequired[] = {"KHR_lights_punctual", "KHR_materials_specular", "KHR_mesh_quantization",
+                                              "KHR_materials_emissive_strength"};
 
 std::size_t base64DecodedSize(std::string const& uri) {
     auto const comma = uri.find(',');
@@ -139,8 +159,7 @@ Glb splitGlb(std::span<std::uint8_t const> data) {
 
 Json parseJson(std::span<std::uint8_t const> text, std::size_t maxDepth) {
     auto const limitDepth = [maxDepth](int depth, Json::parse_event_t, Json&) {
-        if (std::size_t(depth) > maxDepth)
-            fail("the JSON nests deeper than the limit of " + num(maxDepth) + " levels");
+        if (std::size_t(depth) > maxDepth) fail("the JSON nests deeper than the limit of " + num(maxDepth) + " levels");
         return true;
     };
     try {
@@ -163,19 +182,31 @@ void requireKind(Json const& v, Kind kind, std::string const& where) {
     bool ok = false;
     char const* want = "";
     switch (kind) {
-    case Kind::Index: ok = isIndex(v), want = "a non-negative integer"; break;
-    case Kind::Number: ok = v.is_number(), want = "a number"; break;
-    case Kind::String: ok = v.is_string(), want = "a string"; break;
-    case Kind::Bool: ok = v.is_boolean(), want = "true or false"; break;
-    case Kind::Object: ok = v.is_object(), want = "an object"; break;
-    case Kind::Array: ok = v.is_array(), want = "an array"; break;
-    case Kind::IndexArray:
-        ok = v.is_array() && std::all_of(v.begin(), v.end(), isIndex), want = "an array of non-negative integers";
-        break;
-    case Kind::NumberArray:
-        ok = v.is_array() && std::all_of(v.begin(), v.end(), [](Json const& x) { return x.is_number(); }),
-        want = "an array of numbers";
-        break;
+        case Kind::Index:
+            ok = isIndex(v), want = "a non-negative integer";
+            break;
+        case Kind::Number:
+            ok = v.is_number(), want = "a number";
+            break;
+        case Kind::String:
+            ok = v.is_string(), want = "a string";
+            break;
+        case Kind::Bool:
+            ok = v.is_boolean(), want = "true or false";
+            break;
+        case Kind::Object:
+            ok = v.is_object(), want = "an object";
+            break;
+        case Kind::Array:
+            ok = v.is_array(), want = "an array";
+            break;
+        case Kind::IndexArray:
+            ok = v.is_array() && std::all_of(v.begin(), v.end(), isIndex), want = "an array of non-negative integers";
+            break;
+        case Kind::NumberArray:
+            ok = v.is_array() && std::all_of(v.begin(), v.end(), [](Json const& x) { return x.is_number(); }),
+            want = "an array of numbers";
+            break;
     }
     if (!ok) fail(where + " must be " + want + " but is " + (v.is_array() || v.is_object() ? "a " : "") + typeName(v));
 }
@@ -255,7 +286,8 @@ void precheck(Json const& doc, Glb const* glb, fs::path const& folder, GltfLoadO
     };
     if (Json const* images = member(doc, "images"))
         for (std::size_t i = 0; i < images->size(); ++i)
-            if (Json const* uri = member((*images)[i], "uri")) checkUri(uri->get<std::string>(), "image " + num(i) + "'s");
+            if (Json const* uri = member((*images)[i], "uri"))
+                checkUri(uri->get<std::string>(), "image " + num(i) + "'s");
     if (Json const* buffers = member(doc, "buffers")) {
         for (std::size_t i = 0; i < buffers->size(); ++i) {
             Json const& b = (*buffers)[i];
@@ -272,8 +304,8 @@ void precheck(Json const& doc, Glb const* glb, fs::path const& folder, GltfLoadO
                 if (!glb) fail(what + " has no uri, which only a binary glTF may omit");
                 if (i != 0 || !glb->hasBin) fail(what + " has no uri and the binary glTF has no BIN chunk for it");
                 if (glb->bin.size() < byteLength)
-                    fail(what + " is short: it declares " + std::to_string(byteLength) + " bytes but the BIN chunk holds " +
-                         num(glb->bin.size()));
+                    fail(what + " is short: it declares " + std::to_string(byteLength) +
+                         " bytes but the BIN chunk holds " + num(glb->bin.size()));
                 continue;
             }
             std::string const uri = uriJson->get<std::string>();

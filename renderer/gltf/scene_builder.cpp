@@ -60,8 +60,8 @@ SceneData SceneBuilder::build() {
         int const meshIndex = model_.nodes[std::size_t(node)].mesh;
         if (meshIndex < 0) continue;
         if (std::size_t(meshIndex) >= model_.meshes.size())
-            fail("node " + std::to_string(node) + " refers to mesh " + std::to_string(meshIndex) + ", but the file has " +
-                 num(model_.meshes.size()));
+            fail("node " + std::to_string(node) + " refers to mesh " + std::to_string(meshIndex) +
+                 ", but the file has " + num(model_.meshes.size()));
         for (auto const& prim : model_.meshes[std::size_t(meshIndex)].primitives) {
             if (prim.material >= 0 && std::size_t(prim.material) >= model_.materials.size())
                 fail("mesh " + std::to_string(meshIndex) + " refers to material " + std::to_string(prim.material) +
@@ -111,7 +111,8 @@ std::vector<std::pair<int, glm::mat4>> SceneBuilder::placeNodes() {
     for (std::size_t i = 0; i < n; ++i) {
         for (int c : model_.nodes[i].children) {
             if (c < 0 || std::size_t(c) >= n)
-                fail("node " + num(i) + " lists child " + std::to_string(c) + ", but the file has " + num(n) + " nodes");
+                fail("node " + num(i) + " lists child " + std::to_string(c) + ", but the file has " + num(n) +
+                     " nodes");
             if (std::size_t(c) == i) fail("node " + num(i) + " is its own child (the node graph is recursive)");
             if (parent[std::size_t(c)] >= 0)
                 fail("node " + std::to_string(c) + " has two parents (nodes " + std::to_string(parent[std::size_t(c)]) +

@@ -1,8 +1,8 @@
 // The glTF scene builder's lights: KHR_lights_punctual point (and spot) lights placed by their nodes.
 #include "gltf/scene_builder_parts.h"
 
-#include "gltf/mapping.h"
 #include "core/light_math.h"
+#include "gltf/mapping.h"
 
 namespace gbl::gltf {
 
@@ -29,7 +29,8 @@ void SceneBuilder::addLights(std::vector<std::pair<int, glm::mat4>> const& place
         std::string const lw = "light " + std::to_string(l);
         requireKind(light, Kind::Object, lw);
         std::string type = "point";
-        if (Json const* t = member(light, "type")) requireKind(*t, Kind::String, lw + ".type"), type = t->get<std::string>();
+        if (Json const* t = member(light, "type"))
+            requireKind(*t, Kind::String, lw + ".type"), type = t->get<std::string>();
         glm::vec3 color(1.0f);
         if (Json const* c = member(light, "color")) {
             requireKind(*c, Kind::NumberArray, lw + ".color");
@@ -37,8 +38,10 @@ void SceneBuilder::addLights(std::vector<std::pair<int, glm::mat4>> const& place
             color = glm::vec3((*c)[0].get<float>(), (*c)[1].get<float>(), (*c)[2].get<float>());
         }
         float intensity = 1.0f, range = 0.0f;
-        if (Json const* i = member(light, "intensity")) requireKind(*i, Kind::Number, lw + ".intensity"), intensity = i->get<float>();
-        if (Json const* r = member(light, "range")) requireKind(*r, Kind::Number, lw + ".range"), range = r->get<float>();
+        if (Json const* i = member(light, "intensity"))
+            requireKind(*i, Kind::Number, lw + ".intensity"), intensity = i->get<float>();
+        if (Json const* r = member(light, "range"))
+            requireKind(*r, Kind::Number, lw + ".range"), range = r->get<float>();
         std::string name = "light " + std::to_string(l);
         if (Json const* nm = member(light, "name"); nm && nm->is_string()) name = nm->get<std::string>();
         if (type == "directional") {

@@ -13,7 +13,8 @@ namespace gbl::gltf {
 int SceneBuilder::textureSource(int texture, std::string const& who) {
     if (texture < 0) return -1;
     if (std::size_t(texture) >= model_.textures.size())
-        fail(who + " refers to texture " + std::to_string(texture) + ", but the file has " + num(model_.textures.size()));
+        fail(who + " refers to texture " + std::to_string(texture) + ", but the file has " +
+             num(model_.textures.size()));
     int const source = model_.textures[std::size_t(texture)].source;
     if (source < 0) {
         scene_.warnings.push_back(who + " uses texture " + std::to_string(texture) +
@@ -21,8 +22,8 @@ int SceneBuilder::textureSource(int texture, std::string const& who) {
         return -1;
     }
     if (std::size_t(source) >= model_.images.size())
-        fail("texture " + std::to_string(texture) + " refers to image " + std::to_string(source) + ", but the file has " +
-             num(model_.images.size()));
+        fail("texture " + std::to_string(texture) + " refers to image " + std::to_string(source) +
+             ", but the file has " + num(model_.images.size()));
     return source;
 }
 
@@ -43,9 +44,9 @@ ImageData const* SceneBuilder::decoded(int image) {
     auto found = decoded_.find(image);
     if (found != decoded_.end()) return found->second ? &*found->second : nullptr;
     auto const& src = model_.images[std::size_t(image)];
-    std::string const label = "image " + std::to_string(image) + (src.uri.empty() || src.uri.rfind("data:", 0) == 0
-                                                                       ? std::string()
-                                                                       : " ('" + printable(src.uri, 80) + "')");
+    std::string const label =
+        "image " + std::to_string(image) +
+        (src.uri.empty() || src.uri.rfind("data:", 0) == 0 ? std::string() : " ('" + printable(src.uri, 80) + "')");
     std::span<std::uint8_t const> bytes;
     if (src.bufferView >= 0) {
         bytes = reader_.bufferView(src.bufferView, "image " + std::to_string(image));
@@ -60,7 +61,9 @@ ImageData const* SceneBuilder::decoded(int image) {
                                      src.mimeType.empty() ? std::string_view(src.uri) : std::string_view(src.mimeType),
                                      options_.maxImagePixels);
         if (d.overLimit) fail(label + ": " + d.error);
-        if (!d.image) scene_.warnings.push_back(label + " cannot be used (" + d.error + "); a placeholder texture is shown instead");
+        if (!d.image)
+            scene_.warnings.push_back(label + " cannot be used (" + d.error +
+                                      "); a placeholder texture is shown instead");
         result = std::move(d.image);
     }
     ++imagesDecoded_;
@@ -143,8 +146,9 @@ int SceneBuilder::material(int index) {
     ImageData const* sp = specularImage >= 0 ? decoded(specularImage) : nullptr;
     if (mr || sp) {
         // Bake once per distinct input: many materials share one texture set.
-        std::string const key = std::to_string(mr ? mrImage : -1) + "/" + std::to_string(sp ? specularImage : -1) + "/" +
-                                std::to_string(metallic) + "/" + std::to_string(roughness) + "/" + std::to_string(weight);
+        std::string const key = std::to_string(mr ? mrImage : -1) + "/" + std::to_string(sp ? specularImage : -1) +
+                                "/" + std::to_string(metallic) + "/" + std::to_string(roughness) + "/" +
+                                std::to_string(weight);
         auto it = bakes_.find(key);
         if (it == bakes_.end()) {
             scene_.images.push_back(
@@ -157,10 +161,13 @@ int SceneBuilder::material(int index) {
         mat.specularFactor = specularFromMetallicRoughness(metallic, roughness, weight);
     }
 
-    if (src.alphaMode == "MASK") mat.alphaMode = AlphaMode::Mask;
-    else if (src.alphaMode == "BLEND") mat.alphaMode = AlphaMode::Blend;
+    if (src.alphaMode == "MASK")
+        mat.alphaMode = AlphaMode::Mask;
+    else if (src.alphaMode == "BLEND")
+        mat.alphaMode = AlphaMode::Blend;
     else if (src.alphaMode != "OPAQUE" && !src.alphaMode.empty())
-        scene_.warnings.push_back(who + " has an unknown alphaMode '" + printable(src.alphaMode, 20) + "'; drawn opaque");
+        scene_.warnings.push_back(who + " has an unknown alphaMode '" + printable(src.alphaMode, 20) +
+                                  "'; drawn opaque");
     mat.alphaCutoff = std::isfinite(src.alphaCutoff) ? float(src.alphaCutoff) : 0.5f;
     mat.doubleSided = src.doubleSided;
 

@@ -15,7 +15,7 @@ std::vector<int> SceneBuilder::buildMesh(int meshIndex) {
         auto const& prim = mesh.primitives[p];
         std::string const who = "mesh " + std::to_string(meshIndex) + " primitive " + num(p);
         if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1) {
-            static constexpr char const* kModes[] = {"points", "lines", "line loops", "line strips",
+            static constexpr char const* kModes[] = {"points",    "lines",           "line loops",   "line strips",
                                                      "triangles", "triangle strips", "triangle fans"};
             std::string const mode = prim.mode >= 0 && prim.mode <= 6 ? kModes[prim.mode] : "an unknown mode";
             scene_.warnings.push_back(who + " draws " + mode + "; only triangle lists are loaded, so it is skipped");
@@ -38,15 +38,15 @@ std::vector<int> SceneBuilder::buildMesh(int meshIndex) {
         std::vector<double> const pos = reader_.read(posAccessor, who + " POSITION", 3);
         std::size_t const n = pos.size() / 3;
         for (std::size_t i = 0; i < pos.size(); ++i)
-            if (!std::isfinite(float(pos[i])))
-                fail(who + " has a NaN or infinite position at vertex " + num(i / 3));
+            if (!std::isfinite(float(pos[i]))) fail(who + " has a NaN or infinite position at vertex " + num(i / 3));
         out.vertices.resize(n);
         for (std::size_t i = 0; i < n; ++i)
             out.vertices[i].position = glm::vec3(float(pos[3 * i]), float(pos[3 * i + 1]), float(pos[3 * i + 2]));
 
         auto sameCount = [&](std::vector<double> const& v, int comps, char const* what) {
             if (v.size() / std::size_t(comps) != n)
-                fail(who + " has " + num(v.size() / std::size_t(comps)) + " " + what + " values for " + num(n) + " positions");
+                fail(who + " has " + num(v.size() / std::size_t(comps)) + " " + what + " values for " + num(n) +
+                     " positions");
         };
         bool haveNormals = false;
         if (int a = attr("NORMAL"); a >= 0) {
@@ -56,8 +56,10 @@ std::vector<int> SceneBuilder::buildMesh(int meshIndex) {
             for (std::size_t i = 0; i < n && haveNormals; ++i) {
                 glm::vec3 const nn = glm::vec3(float(v[3 * i]), float(v[3 * i + 1]), float(v[3 * i + 2]));
                 float const len = glm::length(nn);
-                if (!(len > 0.0f) || !std::isfinite(len)) haveNormals = false;
-                else out.vertices[i].normal = nn / len;
+                if (!(len > 0.0f) || !std::isfinite(len))
+                    haveNormals = false;
+                else
+                    out.vertices[i].normal = nn / len;
             }
             if (!haveNormals) scene_.warnings.push_back(who + " has zero or non-finite normals; flat normals are used");
         }
@@ -80,8 +82,10 @@ std::vector<int> SceneBuilder::buildMesh(int meshIndex) {
             for (std::size_t i = 0; i < n && haveTangents; ++i) {
                 glm::vec3 const t = glm::vec3(float(v[4 * i]), float(v[4 * i + 1]), float(v[4 * i + 2]));
                 float const len = glm::length(t);
-                if (!(len > 0.0f) || !std::isfinite(len) || !std::isfinite(float(v[4 * i + 3]))) haveTangents = false;
-                else out.vertices[i].tangent = glm::vec4(t / len, v[4 * i + 3] < 0.0 ? -1.0f : 1.0f);
+                if (!(len > 0.0f) || !std::isfinite(len) || !std::isfinite(float(v[4 * i + 3])))
+                    haveTangents = false;
+                else
+                    out.vertices[i].tangent = glm::vec4(t / len, v[4 * i + 3] < 0.0 ? -1.0f : 1.0f);
             }
             if (!haveTangents) scene_.warnings.push_back(who + " has zero or non-finite tangents; they are generated");
         }
@@ -117,8 +121,7 @@ std::vector<int> SceneBuilder::buildMesh(int meshIndex) {
             continue;
         }
         if (!haveNormals) generateFlatNormals(out);
-        bool const normalMapped =
-            prim.material >= 0 && scene_.materials[std::size_t(out.material)].normalTexture >= 0;
+        bool const normalMapped = prim.material >= 0 && scene_.materials[std::size_t(out.material)].normalTexture >= 0;
         if (normalMapped && !haveTangents) generateTangents(out);
         scene_.meshes.push_back(std::move(out));
         parts.push_back(int(scene_.meshes.size() - 1));

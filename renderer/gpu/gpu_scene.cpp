@@ -29,25 +29,32 @@ std::optional<std::string> validate(SceneData const& scene) {
             return "mesh " + mesh.name + " names a material that does not exist";
         for (auto idx : mesh.indices)
             if (idx >= mesh.vertices.size()) return "mesh " + mesh.name + " has an index out of range";
-        if (mesh.indices.size() % 3 != 0) return "mesh " + mesh.name + " has an index count that is not a multiple of 3";
+        if (mesh.indices.size() % 3 != 0)
+            return "mesh " + mesh.name + " has an index count that is not a multiple of 3";
     }
     for (auto const& inst : scene.instances)
-        if (inst.mesh < 0 || inst.mesh >= int(scene.meshes.size())) return "an instance names a mesh that does not exist";
+        if (inst.mesh < 0 || inst.mesh >= int(scene.meshes.size()))
+            return "an instance names a mesh that does not exist";
     return std::nullopt;
 }
 
 gl::Texture uploadImage(ImageData const& img) {
     static constexpr GLenum kFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
     GLenum internal = GL_RGBA8;
-    if (img.srgb) internal = img.channels == 4 ? GL_SRGB8_ALPHA8 : GL_SRGB8;
-    else if (img.channels == 1) internal = GL_R8;
-    else if (img.channels == 2) internal = GL_RG8;
-    else if (img.channels == 3) internal = GL_RGB8;
+    if (img.srgb)
+        internal = img.channels == 4 ? GL_SRGB8_ALPHA8 : GL_SRGB8;
+    else if (img.channels == 1)
+        internal = GL_R8;
+    else if (img.channels == 2)
+        internal = GL_RG8;
+    else if (img.channels == 3)
+        internal = GL_RGB8;
     // sRGB textures need 3 or 4 channels; grey sRGB images are expanded by the sampler swizzle below.
     if (img.srgb && img.channels < 3) internal = img.channels == 1 ? GL_R8 : GL_RG8;
     int levels = 1;
     for (int s = std::max(img.width, img.height); s > 1; s /= 2) ++levels;
-    gl::Texture t = gl::Texture::create2D(internal, img.width, img.height, img.name.empty() ? "scene image" : img.name, levels);
+    gl::Texture t =
+        gl::Texture::create2D(internal, img.width, img.height, img.name.empty() ? "scene image" : img.name, levels);
     glBindTexture(GL_TEXTURE_2D, t.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, img.width, img.height, kFormats[img.channels - 1], GL_UNSIGNED_BYTE,
@@ -129,8 +136,10 @@ void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter
         bindTexture(slot::BIND_MATERIAL_BASE_COLOR, m.baseColorTexture, "uHasBaseColorTex");
         bindTexture(slot::BIND_MATERIAL_NORMAL, m.normalTexture, "uHasNormalTex");
         bindTexture(slot::BIND_MATERIAL_SPECULAR, m.specularTexture, "uHasSpecularTex");
-        if (m.doubleSided) glDisable(GL_CULL_FACE);
-        else glEnable(GL_CULL_FACE);
+        if (m.doubleSided)
+            glDisable(GL_CULL_FACE);
+        else
+            glEnable(GL_CULL_FACE);
         // A mirroring transform turns counter-clockwise triangles clockwise on screen (glTF 2.0
         // asks renderers to flip the winding for such nodes).
         glFrontFace(glm::determinant(glm::mat3(inst.model)) < 0.0f ? GL_CW : GL_CCW);

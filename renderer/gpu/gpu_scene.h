@@ -27,7 +27,7 @@ struct GpuScene {
     std::vector<GpuMesh> meshes;
     std::vector<MeshInstance> instances;
     std::size_t triangleCount = 0;
-    gl::Texture white;                  // stands in for missing textures
+    gl::Texture white;  // stands in for missing textures
 };
 
 // Uploads everything; returns an error (and leaves `out` untouched) when the scene is

@@ -5,9 +5,9 @@
 //   texel 3: colour (0..1, for light cubes and wireframes), 0
 #pragma once
 
+#include "core/point_light.h"
 #include "gl/buffer.h"
 #include "gl/texture.h"
-#include "core/point_light.h"
 
 #include <glm/glm.hpp>
 

@@ -21,15 +21,15 @@ struct RenderTargets {
     int width = 0;
     int height = 0;
     GBuffer gbuffer;
-    gl::Texture lighting;   // RGBA16F HDR
-    gl::Texture litDepth;   // DEPTH32F_STENCIL8: same format as the G-buffer depth so blits work
-    gl::Framebuffer litFbo; // lighting + litDepth: lighting passes and the forward pass
+    gl::Texture lighting;    // RGBA16F HDR
+    gl::Texture litDepth;    // DEPTH32F_STENCIL8: same format as the G-buffer depth so blits work
+    gl::Framebuffer litFbo;  // lighting + litDepth: lighting passes and the forward pass
     // lighting + the G-buffer's depth-stencil: light volumes test against the scene depth (and
     // use its stencil) without needing the blit step.
     gl::Framebuffer volumeFbo;
-    gl::Texture coverage;   // RG32F: x = volumes that covered the pixel, y = lights that lit it
+    gl::Texture coverage;  // RG32F: x = volumes that covered the pixel, y = lights that lit it
     gl::Framebuffer coverageFbo;
-    gl::Texture display;    // RGBA8 final image
+    gl::Texture display;  // RGBA8 final image
     gl::Framebuffer displayFbo;
 
     bool empty() const { return width == 0 || height == 0; }

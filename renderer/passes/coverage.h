@@ -14,13 +14,13 @@ struct CoverageInput {
     gl::FullscreenTriangle const& triangle;
     gl::Program const& allLights;  // ProgramId::CoverageAllLights
     // Null where the mode's programs are unavailable: those counts then stay zero.
-    LightVolumeGpu const* volumes;            // instances prepared for this frame
-    gl::Program const* volumeCoverage;        // ProgramId::LightVolumeCoverage
-    gl::Program const* volumeStencil;         // ProgramId::LightVolumeStencil
-    gl::Program const* tiled;                 // ProgramId::LightingTiled
-    gl::Framebuffer const& target;            // coverageFbo: the counts and the G-buffer's depth-stencil
-    gl::Texture const& coverage;              // its colour attachment (the tiled pass writes it as an image)
-    gl::Texture const& hdr;                   // bound (not written) for the tiled program's lit image
+    LightVolumeGpu const* volumes;      // instances prepared for this frame
+    gl::Program const* volumeCoverage;  // ProgramId::LightVolumeCoverage
+    gl::Program const* volumeStencil;   // ProgramId::LightVolumeStencil
+    gl::Program const* tiled;           // ProgramId::LightingTiled
+    gl::Framebuffer const& target;      // coverageFbo: the counts and the G-buffer's depth-stencil
+    gl::Texture const& coverage;        // its colour attachment (the tiled pass writes it as an image)
+    gl::Texture const& hdr;             // bound (not written) for the tiled program's lit image
 };
 struct CoverageConfig {
     LightingMode mode = LightingMode::Quad;
@@ -37,6 +37,8 @@ struct CoverageOutput {
 // mode has no G-buffer to count over: the counts stay zero.
 CoverageOutput coveragePass(CoverageInput const& in, CoverageConfig const& config);
 
-inline bool viewNeedsCoverage(DebugView v) { return v == DebugView::Heatmap || v == DebugView::TileLights; }
+inline bool viewNeedsCoverage(DebugView v) {
+    return v == DebugView::Heatmap || v == DebugView::TileLights;
+}
 
 }  // namespace gbl

@@ -8,9 +8,9 @@ namespace gbl {
 
 struct LightCubesInput {
     LightBuffer const& lights;
-    gl::Program const& program;  // ProgramId::LightCube
-    gl::VertexArray const& cube; // 36 vertices of a unit cube
-    LitTarget target;            // depth-tested against its depth (the blit step's copy)
+    gl::Program const& program;   // ProgramId::LightCube
+    gl::VertexArray const& cube;  // 36 vertices of a unit cube
+    LitTarget target;             // depth-tested against its depth (the blit step's copy)
 };
 struct LightCubesConfig {
     glm::mat4 viewProj{1.0f};

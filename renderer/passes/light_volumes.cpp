@@ -18,7 +18,8 @@ void prepareVolumeInstances(LightVolumeGpu& volumes, VolumeInstancesConfig const
     for (std::size_t i = 0; i < c.lights.size(); ++i) {
         float const r = lightRadius(c.lights[i]).radius;
         if (r <= 0.0f) continue;  // too dim or invalid: no volume at all
-        bool const in = volumeMayContainCamera(c.camera.position, c.lights[i].position, r * volumes.enclosingScale, nearCorner);
+        bool const in =
+            volumeMayContainCamera(c.camera.position, c.lights[i].position, r * volumes.enclosingScale, nearCorner);
         (in ? inside : outside).push_back(std::int32_t(i));
     }
     volumes.outsideCount = int(outside.size());
@@ -27,7 +28,8 @@ void prepareVolumeInstances(LightVolumeGpu& volumes, VolumeInstancesConfig const
     if (outside.empty()) outside.push_back(0);  // a buffer texture needs storage
     std::size_t const bytes = outside.size() * sizeof(std::int32_t);
     if (!volumes.instances || volumes.instances.size() < bytes) {
-        volumes.instances = gl::Buffer::create(GL_TEXTURE_BUFFER, bytes, outside.data(), GL_DYNAMIC_DRAW, "light volume.instances");
+        volumes.instances =
+            gl::Buffer::create(GL_TEXTURE_BUFFER, bytes, outside.data(), GL_DYNAMIC_DRAW, "light volume.instances");
         volumes.instancesTbo = gl::Texture::createBuffer(GL_R32I, volumes.instances.id(), "light volume.instances.tbo");
     } else {
         volumes.instances.upload(bytes, outside.data());
@@ -83,59 +85,59 @@ void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, Cull
     glBindVertexArray(volumes.triangleVao.id());
     setCommon(p);
     switch (cull) {
-    case CullMode::Back:
-        frontFaces();
-        draw(p, 0, total);
-        break;
-    case CullMode::Front:
-        backFaces();
-        draw(p, 0, total);
-        break;
-    case CullMode::None:
-        glDisable(GL_CULL_FACE);
-        glDisable(GL_DEPTH_TEST);
-        draw(p, 0, total);
-        break;
-    case CullMode::Flip:
-        frontFaces();
-        draw(p, 0, volumes.outsideCount);
-        backFaces();
-        draw(p, volumes.outsideCount, volumes.insideCount);
-        break;
-    case CullMode::Stencil: {
-        gl::Program const& mark = in.stencilMark;
-        setCommon(mark);
-        glEnable(GL_STENCIL_TEST);
-        GLboolean blend = glIsEnabled(GL_BLEND);
-        for (int i = 0; i < total; ++i) {
-            // Mark: both faces, depth-tested, no colour; only depth failures count.
-            mark.use();
-            glDisable(GL_BLEND);
-            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        case CullMode::Back:
+            frontFaces();
+            draw(p, 0, total);
+            break;
+        case CullMode::Front:
+            backFaces();
+            draw(p, 0, total);
+            break;
+        case CullMode::None:
             glDisable(GL_CULL_FACE);
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(GL_LESS);
-            glStencilFunc(GL_ALWAYS, 0, 0xFF);
-            glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
-            glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
-            draw(mark, i, 1);
-            // Shade: both faces, no depth test, so every pixel of the footprint is visited; only
-            // a mark of exactly 1 (behind the front face, in front of the back face) passes,
-            // and every visit resets the mark to 0 for the next light, pass or fail (which is
-            // why light_volume.frag never discards).
-            p.use();
-            if (blend) glEnable(GL_BLEND);
-            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
             glDisable(GL_DEPTH_TEST);
-            glStencilFunc(GL_EQUAL, 1, 0xFF);
-            glStencilOp(GL_ZERO, GL_ZERO, GL_ZERO);
-            draw(p, i, 1);
+            draw(p, 0, total);
+            break;
+        case CullMode::Flip:
+            frontFaces();
+            draw(p, 0, volumes.outsideCount);
+            backFaces();
+            draw(p, volumes.outsideCount, volumes.insideCount);
+            break;
+        case CullMode::Stencil: {
+            gl::Program const& mark = in.stencilMark;
+            setCommon(mark);
+            glEnable(GL_STENCIL_TEST);
+            GLboolean blend = glIsEnabled(GL_BLEND);
+            for (int i = 0; i < total; ++i) {
+                // Mark: both faces, depth-tested, no colour; only depth failures count.
+                mark.use();
+                glDisable(GL_BLEND);
+                glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+                glDisable(GL_CULL_FACE);
+                glEnable(GL_DEPTH_TEST);
+                glDepthFunc(GL_LESS);
+                glStencilFunc(GL_ALWAYS, 0, 0xFF);
+                glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+                glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+                draw(mark, i, 1);
+                // Shade: both faces, no depth test, so every pixel of the footprint is visited; only
+                // a mark of exactly 1 (behind the front face, in front of the back face) passes,
+                // and every visit resets the mark to 0 for the next light, pass or fail (which is
+                // why light_volume.frag never discards).
+                p.use();
+                if (blend) glEnable(GL_BLEND);
+                glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+                glDisable(GL_DEPTH_TEST);
+                glStencilFunc(GL_EQUAL, 1, 0xFF);
+                glStencilOp(GL_ZERO, GL_ZERO, GL_ZERO);
+                draw(p, i, 1);
+            }
+            glDisable(GL_STENCIL_TEST);
+            glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+            glStencilFunc(GL_ALWAYS, 0, 0xFF);
+            break;
         }
-        glDisable(GL_STENCIL_TEST);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-        glStencilFunc(GL_ALWAYS, 0, 0xFF);
-        break;
-    }
     }
     glBindVertexArray(0);
     glEnable(GL_CULL_FACE);

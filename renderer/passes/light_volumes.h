@@ -35,10 +35,10 @@ void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, Cull
 
 struct LightingVolumesInput {
     DeferredInputs deferred;
-    LightVolumeGpu const& volumes;  // instances prepared for this frame
-    gl::Program const& ambient;     // ProgramId::LightingQuad, run with no lights
-    gl::Program const& shade;       // ProgramId::LightVolume
-    gl::Program const& stencilMark; // ProgramId::LightVolumeStencil
+    LightVolumeGpu const& volumes;   // instances prepared for this frame
+    gl::Program const& ambient;      // ProgramId::LightingQuad, run with no lights
+    gl::Program const& shade;        // ProgramId::LightVolume
+    gl::Program const& stencilMark;  // ProgramId::LightVolumeStencil
     gl::FullscreenTriangle const& triangle;
     LitTarget target;  // volumeFbo: the HDR image and the G-buffer's depth-stencil
 };

@@ -7,9 +7,9 @@ namespace gbl {
 
 struct LightingTiledInput {
     DeferredInputs deferred;
-    gl::Program const& program;     // ProgramId::LightingTiled
-    gl::Texture const& hdr;         // RGBA16F image written when config.shade
-    gl::Texture const& coverage;    // RG32F image written when config.coverage
+    gl::Program const& program;   // ProgramId::LightingTiled
+    gl::Texture const& hdr;       // RGBA16F image written when config.shade
+    gl::Texture const& coverage;  // RG32F image written when config.coverage
 };
 struct LightingTiledConfig {
     glm::mat4 view{1.0f};

@@ -19,19 +19,19 @@ namespace {
 
 // --- Layout (units are metres-ish; floor at y = 0) -------------------------------------------
 
-constexpr float kWallInner = 16.0f;      // inner faces of the outer walls
+constexpr float kWallInner = 16.0f;  // inner faces of the outer walls
 constexpr float kWallThickness = 0.5f;
 constexpr float kWallHeight = 10.2f;
-constexpr float kArcade = 12.5f;         // column centre lines of the four arcades
-constexpr int kBays = 7;                 // arches per side, so an arch (not a column) faces the centre
+constexpr float kArcade = 12.5f;  // column centre lines of the four arcades
+constexpr int kBays = 7;          // arches per side, so an arch (not a column) faces the centre
 constexpr float kSpacing = 2.0f * kArcade / float(kBays);
-constexpr float kCapitalHalf = 0.35f;    // half width of a capital; the arch feet rest on it
+constexpr float kCapitalHalf = 0.35f;  // half width of a capital; the arch feet rest on it
 constexpr float kArchOuter = kSpacing * 0.5f;
 constexpr float kArchInner = kArchOuter - kCapitalHalf;
 constexpr float kArchDepth = 0.6f;
-constexpr float kSlab = 0.3f;            // gallery floor and cornice thickness
-constexpr float kColumn1 = 3.0f;         // ground-floor column height
-constexpr float kColumn2 = 2.6f;         // gallery column height
+constexpr float kSlab = 0.3f;                              // gallery floor and cornice thickness
+constexpr float kColumn1 = 3.0f;                           // ground-floor column height
+constexpr float kColumn2 = 2.6f;                           // gallery column height
 constexpr float kStorey2 = kColumn1 + kArchOuter + kSlab;  // gallery floor level
 constexpr float kCornice = kStorey2 + kColumn2 + kArchOuter;
 
@@ -39,8 +39,12 @@ constexpr int kTextureSize = 512;
 
 enum MaterialId { Flagstone, Brick, Sandstone, Wood, Iron, Marble, RedGlaze, Gold, BlueGlaze, MaterialCount };
 
-glm::mat4 translate(glm::vec3 t) { return glm::translate(glm::mat4(1.0f), t); }
-glm::mat4 rotateY(float radians) { return glm::rotate(glm::mat4(1.0f), radians, glm::vec3(0, 1, 0)); }
+glm::mat4 translate(glm::vec3 t) {
+    return glm::translate(glm::mat4(1.0f), t);
+}
+glm::mat4 rotateY(float radians) {
+    return glm::rotate(glm::mat4(1.0f), radians, glm::vec3(0, 1, 0));
+}
 
 // Box from min to max corner, UVs at the given density.
 void addBox(MeshData& dst, glm::vec3 lo, glm::vec3 hi, float uvScale, glm::mat4 const& m = glm::mat4(1.0f)) {
@@ -115,7 +119,9 @@ MeshData makeBalustrade(float length) {
 }
 
 // Angle in radians from a hash, so props are turned differently but reproducibly.
-float propYaw(int i) { return 6.2831853f * hashUnit(i, 0, 0xc0ffeeU); }
+float propYaw(int i) {
+    return 6.2831853f * hashUnit(i, 0, 0xc0ffeeU);
+}
 
 void addArchitecture(std::array<MeshData, MaterialCount>& mat) {
     float const outer = kWallInner + kWallThickness;
@@ -172,10 +178,9 @@ void addProps(std::array<MeshData, MaterialCount>& mat) {
         float x, z, size, base;
     };
     Crate const crates[] = {
-        {9.0f, -3.2f, 1.0f, 0.0f},  {10.3f, -3.0f, 0.9f, 0.0f}, {9.5f, -1.9f, 0.8f, 0.0f},
-        {9.05f, -3.15f, 0.7f, 1.0f}, {-9.2f, 3.8f, 1.1f, 0.0f}, {-10.4f, 4.6f, 0.8f, 0.0f},
-        {-9.0f, 5.3f, 0.9f, 0.0f},  {-9.25f, 3.85f, 0.8f, 1.1f}, {3.0f, 9.8f, 0.9f, 0.0f},
-        {4.3f, 10.0f, 0.7f, 0.0f},
+        {9.0f, -3.2f, 1.0f, 0.0f}, {10.3f, -3.0f, 0.9f, 0.0f}, {9.5f, -1.9f, 0.8f, 0.0f}, {9.05f, -3.15f, 0.7f, 1.0f},
+        {-9.2f, 3.8f, 1.1f, 0.0f}, {-10.4f, 4.6f, 0.8f, 0.0f}, {-9.0f, 5.3f, 0.9f, 0.0f}, {-9.25f, 3.85f, 0.8f, 1.1f},
+        {3.0f, 9.8f, 0.9f, 0.0f},  {4.3f, 10.0f, 0.7f, 0.0f},
     };
     for (Crate const& c : crates) {
         // Stacked crates are only slightly askew on the one below.
@@ -261,16 +266,24 @@ glm::vec3 hsvToRgb(float h, float s, float v) {
     float const f = h6 - float(sector);
     float const p = v * (1.0f - s), q = v * (1.0f - s * f), t = v * (1.0f - s * (1.0f - f));
     switch (sector) {
-    case 0: return {v, t, p};
-    case 1: return {q, v, p};
-    case 2: return {p, v, t};
-    case 3: return {p, q, v};
-    case 4: return {t, p, v};
-    default: return {v, p, q};
+        case 0:
+            return {v, t, p};
+        case 1:
+            return {q, v, p};
+        case 2:
+            return {p, v, t};
+        case 3:
+            return {p, q, v};
+        case 4:
+            return {t, p, v};
+        default:
+            return {v, p, q};
     }
 }
 
-float fract(double x) { return float(x - std::floor(x)); }
+float fract(double x) {
+    return float(x - std::floor(x));
+}
 
 // Per-light orbit rate in rad/s: 0.15..0.25, alternating direction.
 double orbitRate(std::size_t i) {
@@ -366,6 +379,8 @@ void orbitLights(std::span<PointLight> lights, glm::vec3 center, float seconds) 
     }
 }
 
-glm::vec3 defaultSceneCenter() { return {0.0f, 0.0f, 0.0f}; }
+glm::vec3 defaultSceneCenter() {
+    return {0.0f, 0.0f, 0.0f};
+}
 
 }  // namespace gbl

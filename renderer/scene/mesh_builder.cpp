@@ -96,8 +96,7 @@ MeshData makePlane(glm::vec2 size, int segX, int segZ, float uvScale) {
     glm::vec2 const h = size * 0.5f;
     addSurface(m, segX, segZ, [&](int i, int j) {
         float const x = -h.x + size.x * float(i) / float(segX), z = -h.y + size.y * float(j) / float(segZ);
-        return surfaceVertex({x, 0.0f, z}, {0, 1, 0}, glm::vec2(x + h.x, z + h.y) * uvScale, {1, 0, 0},
-                             {0, 0, 1});
+        return surfaceVertex({x, 0.0f, z}, {0, 1, 0}, glm::vec2(x + h.x, z + h.y) * uvScale, {1, 0, 0}, {0, 0, 1});
     });
     return m;
 }
@@ -111,8 +110,8 @@ void addDisc(MeshData& m, float r, float y, bool up, int segments, float uvScale
         float const rr = j == 0 ? r : 0.0f;
         glm::vec3 const p(rr * c.y, y, rr * c.x);
         glm::vec3 const dv = up ? glm::vec3(0, 0, 1) : glm::vec3(0, 0, -1);
-        return surfaceVertex(p, {0, up ? 1.0f : -1.0f, 0}, glm::vec2(p.x + r, glm::dot(p, dv) + r) * uvScale,
-                             {1, 0, 0}, dv);
+        return surfaceVertex(p, {0, up ? 1.0f : -1.0f, 0}, glm::vec2(p.x + r, glm::dot(p, dv) + r) * uvScale, {1, 0, 0},
+                             dv);
     });
 }
 
@@ -140,8 +139,7 @@ MeshData makeCylinder(float radius, float height, int segments, int rings, float
     return m;
 }
 
-MeshData makeArch(float innerRadius, float outerRadius, float depth, int segments, float uvScale,
-                  bool squareOuter) {
+MeshData makeArch(float innerRadius, float outerRadius, float depth, int segments, float uvScale, bool squareOuter) {
     MeshData m;
     m.name = "arch";
     segments = std::max(4, (segments + 3) / 4 * 4);
@@ -175,16 +173,16 @@ MeshData makeArch(float innerRadius, float outerRadius, float depth, int segment
     });
     if (squareOuter) {
         glm::vec3 const X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1);
-        addQuad(m, {-ro, ro, -hz}, X * (2.0f * ro), Z * depth, Y, uvScale);   // top
-        addQuad(m, {ro, ro, hz}, -Z * depth, -Y * ro, X, uvScale);            // +X side
-        addQuad(m, {-ro, ro, -hz}, Z * depth, -Y * ro, -X, uvScale);          // -X side
+        addQuad(m, {-ro, ro, -hz}, X * (2.0f * ro), Z * depth, Y, uvScale);  // top
+        addQuad(m, {ro, ro, hz}, -Z * depth, -Y * ro, X, uvScale);           // +X side
+        addQuad(m, {-ro, ro, -hz}, Z * depth, -Y * ro, -X, uvScale);         // -X side
     } else {
         addSurface(m, segments, 1, [&](int i, int j) {
             glm::vec2 const c = circlePoint(i, segments, true);
             float const z = j == 0 ? hz : -hz;
             return surfaceVertex({ro * c.x, ro * c.y, z}, {c.x, c.y, 0},
-                                 glm::vec2(ro * kPi * float(i) / float(segments), hz - z) * uvScale,
-                                 {-c.y, c.x, 0}, {0, 0, -1});
+                                 glm::vec2(ro * kPi * float(i) / float(segments), hz - z) * uvScale, {-c.y, c.x, 0},
+                                 {0, 0, -1});
         });
     }
     // The two feet, facing down.
@@ -205,11 +203,11 @@ MeshData makeSphere(float radius, int slices, int stacks, float uvScale) {
         glm::vec2 const lat = circlePoint(j, stacks, true);  // (cos, sin) of the angle from the pole
         glm::vec3 const n(lat.y * lon.y, lat.x, lat.y * lon.x);
         // The east direction is well defined even at the poles, where dP/du vanishes.
-        return surfaceVertex(radius * n, n,
-                             glm::vec2(circumference * float(i) / float(slices),
-                                       0.5f * circumference * float(j) / float(stacks)) *
-                                 uvScale,
-                             {lon.x, 0.0f, -lon.y}, {lat.x * lon.y, -lat.y, lat.x * lon.x});
+        return surfaceVertex(
+            radius * n, n,
+            glm::vec2(circumference * float(i) / float(slices), 0.5f * circumference * float(j) / float(stacks)) *
+                uvScale,
+            {lon.x, 0.0f, -lon.y}, {lat.x * lon.y, -lat.y, lat.x * lon.x});
     });
     return m;
 }

@@ -26,8 +26,7 @@ MeshData makePlane(glm::vec2 size, int segX = 1, int segZ = 1, float uvScale = 1
 
 // Cylinder around +Y from y = 0 to y = height; `rings` rows of quads along the height.
 // u runs around the side (arc length), v downwards; caps close both ends when asked.
-MeshData makeCylinder(float radius, float height, int segments, int rings = 1, float uvScale = 1.0f,
-                      bool caps = true);
+MeshData makeCylinder(float radius, float height, int segments, int rings = 1, float uvScale = 1.0f, bool caps = true);
 
 // The curved part of an arch: a half annulus in the XY plane (centre at the origin, feet on
 // y = 0, opening towards -Y) extruded along Z by `depth` (centred on z = 0).
@@ -41,8 +40,7 @@ MeshData makeArch(float innerRadius, float outerRadius, float depth, int segment
 MeshData makeSphere(float radius, int slices, int stacks, float uvScale = 1.0f);
 
 // Torus around +Y in the XZ plane: ring radius majorRadius, tube radius minorRadius.
-MeshData makeTorus(float majorRadius, float minorRadius, int majorSegments, int minorSegments,
-                   float uvScale = 1.0f);
+MeshData makeTorus(float majorRadius, float minorRadius, int majorSegments, int minorSegments, float uvScale = 1.0f);
 
 // Applies an affine transform: positions by m, normals by its inverse transpose, tangents by
 // m then re-orthogonalised. A mirroring transform flips tangent.w and the winding.

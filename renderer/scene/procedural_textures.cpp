@@ -27,9 +27,15 @@ float hashUnit(int x, int y, std::uint32_t seed) {
 
 namespace {
 
-int wrap(int i, int n) { return ((i % n) + n) % n; }
-float fract(float x) { return x - std::floor(x); }
-float smooth01(float t) { return t * t * (3.0f - 2.0f * t); }
+int wrap(int i, int n) {
+    return ((i % n) + n) % n;
+}
+float fract(float x) {
+    return x - std::floor(x);
+}
+float smooth01(float t) {
+    return t * t * (3.0f - 2.0f * t);
+}
 
 // Value noise whose lattice repeats every periodX cells along x and periodY along y.
 float noise2(float x, float y, int periodX, int periodY, std::uint32_t seed) {
@@ -60,7 +66,9 @@ struct Texel {
     float specular;   // 0..1
 };
 
-std::uint8_t toByte(float v) { return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
+std::uint8_t toByte(float v) {
+    return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+}
 
 // Evaluates texelAt(u, v) at every texel centre and packs the three maps.
 template <class F>
@@ -154,8 +162,7 @@ TextureSet makeFlagstoneTextures(int size, std::uint32_t seed) {
         float const edge = edgeDistance(lx, ly, 0.25f, 0.25f) - 0.007f;
         float const fine = fbm2(u, v, 16, 16, 4, seed);
         float const grit = noise2(u * 96.0f, v * 96.0f, 96, 96, seed + 3U);
-        if (edge < 0.0f)
-            return Texel{glm::vec3(0.28f, 0.27f, 0.25f) * (0.8f + 0.3f * grit), 0.05f * grit, 0.05f};
+        if (edge < 0.0f) return Texel{glm::vec3(0.28f, 0.27f, 0.25f) * (0.8f + 0.3f * grit), 0.05f * grit, 0.05f};
         float const pick = hashUnit(cx, cy, seed + 1U);
         glm::vec3 const base = glm::mix(glm::vec3(0.52f, 0.51f, 0.49f), glm::vec3(0.68f, 0.61f, 0.50f), pick);
         // Each stone is laid slightly out of level.
@@ -171,8 +178,8 @@ TextureSet makeSandstoneTextures(int size, std::uint32_t seed) {
     return generate(size, "sandstone", 0.008f * float(size), [&](float u, float v) {
         int const course = int(std::floor(v * 2.0f));
         float const bx = fract(u + (course % 2 ? 0.5f : 0.0f));
-        float const joint = std::min({std::min(bx, 1.0f - bx), fract(v * 2.0f) * 0.5f,
-                                      (1.0f - fract(v * 2.0f)) * 0.5f}) - 0.004f;
+        float const joint =
+            std::min({std::min(bx, 1.0f - bx), fract(v * 2.0f) * 0.5f, (1.0f - fract(v * 2.0f)) * 0.5f}) - 0.004f;
         float const layers = fbm2(u, v, 2, 24, 3, seed);  // sediment bands run horizontally
         float const grain = fbm2(u, v, 32, 32, 4, seed + 11U);
         float const pits = noise2(u * 160.0f, v * 160.0f, 160, 160, seed + 13U);  // tooling marks
@@ -195,8 +202,8 @@ TextureSet makeWoodTextures(int size, std::uint32_t seed) {
         float const warp = fbm2(u, v, 8, 2, 3, seed + std::uint32_t(plank));
         float const rings = 0.5f + 0.5f * std::sin((lx * 7.0f + warp * 6.0f + float(plank)) * 6.2831853f);
         float const fibre = fbm2(u, v, 64, 4, 2, seed + 17U);
-        glm::vec3 const base = glm::mix(glm::vec3(0.42f, 0.26f, 0.14f), glm::vec3(0.62f, 0.42f, 0.24f),
-                                        hashUnit(plank, 0, seed + 1U));
+        glm::vec3 const base =
+            glm::mix(glm::vec3(0.42f, 0.26f, 0.14f), glm::vec3(0.62f, 0.42f, 0.24f), hashUnit(plank, 0, seed + 1U));
         float const bevel = smooth01(std::min(gap / 0.01f, 1.0f));
         float const h = 0.5f + 0.35f * bevel + 0.06f * rings + 0.05f * fibre;
         return Texel{base * (0.7f + 0.25f * rings + 0.2f * fibre), h, 0.15f + 0.15f * rings};

@@ -31,8 +31,7 @@ float tiledFbm(float x, float y, int basePeriod, int octaves, std::uint32_t seed
 // edges). Heights are in texels times `strength`: n = normalize(-s dh/dx, -s dh/dy, 1) by
 // central differences, where x grows with u (the tangent) and y with v (the bitangent).
 // A flat region encodes (128, 128, 255).
-ImageData normalMapFromHeight(std::span<float const> height, int width, int heightPx, float strength,
-                              std::string name);
+ImageData normalMapFromHeight(std::span<float const> height, int width, int heightPx, float strength, std::string name);
 
 // Surfaces of the default scene. size is the edge in texels (a power of two >= 64).
 TextureSet makeBrickTextures(int size, std::uint32_t seed);      // red brick, running bond, 8 courses

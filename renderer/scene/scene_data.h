@@ -36,11 +36,11 @@ enum class AlphaMode { Opaque, Mask, Blend };
 struct Material {
     std::string name;
     glm::vec4 baseColorFactor{1.0f};
-    int baseColorTexture = -1;   // index into SceneData::images
-    int normalTexture = -1;      // tangent-space normal map
+    int baseColorTexture = -1;  // index into SceneData::images
+    int normalTexture = -1;     // tangent-space normal map
     float normalScale = 1.0f;
-    float specularFactor = 0.5f; // specular intensity stored in the G-buffer's albedo alpha
-    int specularTexture = -1;    // multiplies specularFactor; its red channel is used
+    float specularFactor = 0.5f;  // specular intensity stored in the G-buffer's albedo alpha
+    int specularTexture = -1;     // multiplies specularFactor; its red channel is used
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;
@@ -72,7 +72,7 @@ struct SceneData {
     std::vector<MeshData> meshes;
     std::vector<MeshInstance> instances;
     std::vector<PointLight> lights;
-    std::optional<Camera> camera;   // a suggested camera framing the scene
+    std::optional<Camera> camera;  // a suggested camera framing the scene
     std::vector<std::string> warnings;
 
     std::size_t triangleCount() const;

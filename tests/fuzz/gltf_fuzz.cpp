@@ -36,7 +36,8 @@ extern "C" int LLVMFuzzerTestOneInput(std::uint8_t const* data, std::size_t size
     for (auto const& m : s.meshes) {
         check(m.indices.size() % 3 == 0);
         for (auto i : m.indices) check(i < m.vertices.size());
-        for (auto const& v : m.vertices) check(std::isfinite(v.position.x) && std::isfinite(v.position.y) && std::isfinite(v.position.z));
+        for (auto const& v : m.vertices)
+            check(std::isfinite(v.position.x) && std::isfinite(v.position.y) && std::isfinite(v.position.z));
         check(m.material >= -1 && m.material < int(s.materials.size()));
     }
     for (auto const& inst : s.instances) check(inst.mesh >= 0 && std::size_t(inst.mesh) < s.meshes.size());

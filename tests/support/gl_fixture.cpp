@@ -30,7 +30,9 @@ void GlTest::TearDown() {
     if (gContext) expectNoGlErrors();
 }
 
-std::uint64_t GlTest::glErrorsSinceSetUp() const { return glErrorCount() - errorsAtSetUp_; }
+std::uint64_t GlTest::glErrorsSinceSetUp() const {
+    return glErrorCount() - errorsAtSetUp_;
+}
 
 void GlTest::expectNoGlErrors() const {
     // The flag directly (as MAGNUM_VERIFY_NO_GL_ERROR does), then the count, which also holds
@@ -38,13 +40,17 @@ void GlTest::expectNoGlErrors() const {
     GLenum const flag = glGetError();
     std::uint64_t const counted = glErrorsSinceSetUp();
     EXPECT_TRUE(flag == GL_NO_ERROR && counted == 0)
-        << "the GL reported errors during this test (see stderr): error flag 0x" << std::hex << flag << std::dec
-        << ", " << counted << " counted";
+        << "the GL reported errors during this test (see stderr): error flag 0x" << std::hex << flag << std::dec << ", "
+        << counted << " counted";
 }
 
-void GlTest::acceptGlErrors() { errorsAtSetUp_ = glErrorCount(); }
+void GlTest::acceptGlErrors() {
+    errorsAtSetUp_ = glErrorCount();
+}
 
-GlCaps const& GlTest::caps() { return gCaps; }
+GlCaps const& GlTest::caps() {
+    return gCaps;
+}
 
 std::unique_ptr<Renderer> GlTest::makeRenderer(int width, int height) {
     return std::make_unique<Renderer>(gCaps, width, height);

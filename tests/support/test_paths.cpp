@@ -2,7 +2,13 @@
 #include "test_paths.h"
 
 namespace gbl::test {
-std::string dataDir() { return GBL_TEST_DATA_DIR; }
-std::string sharedGltfDir() { return GBL_SHARED_GLTF_DIR; }
-std::string binaryPath() { return GBL_BINARY; }
+std::string dataDir() {
+    return GBL_TEST_DATA_DIR;
+}
+std::string sharedGltfDir() {
+    return GBL_SHARED_GLTF_DIR;
+}
+std::string binaryPath() {
+    return GBL_BINARY;
+}
 }  // namespace gbl::test

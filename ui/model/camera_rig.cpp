@@ -31,8 +31,8 @@ void applyCameraInput(CameraRig& rig, Camera& camera, CameraInput const& input) 
     }
     if (input.panDrag != glm::vec2(0.0f)) {
         // One pixel of drag moves the target by one pixel's worth of world at its distance.
-        float const worldPerPixel = 2.0f * distance * std::tan(glm::radians(camera.fovYDegrees) * 0.5f) /
-                                    std::max(input.viewportHeight, 1.0f);
+        float const worldPerPixel =
+            2.0f * distance * std::tan(glm::radians(camera.fovYDegrees) * 0.5f) / std::max(input.viewportHeight, 1.0f);
         glm::vec3 const shift = (-camera.right() * input.panDrag.x + camera.up() * input.panDrag.y) * worldPerPixel;
         camera.position += shift;
         rig.target += shift;
@@ -45,8 +45,9 @@ void applyCameraInput(CameraRig& rig, Camera& camera, CameraInput const& input) 
     }
     if (input.move != glm::vec3(0.0f) && input.dt > 0.0f) {
         float const speed = rig.moveSpeed * (input.fast ? 4.0f : 1.0f) * input.dt;
-        glm::vec3 const step = (camera.right() * input.move.x + glm::vec3(0, 1, 0) * input.move.y +
-                                camera.forward() * input.move.z) * speed;
+        glm::vec3 const step =
+            (camera.right() * input.move.x + glm::vec3(0, 1, 0) * input.move.y + camera.forward() * input.move.z) *
+            speed;
         camera.position += step;
         rig.target += step;
     }

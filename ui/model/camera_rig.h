@@ -12,8 +12,8 @@ namespace gbl::ui {
 // orientation, so a session only needs the Camera plus the target.
 struct CameraRig {
     glm::vec3 target{0.0f};
-    float moveSpeed = 6.0f;          // world units per second for WASD
-    float degreesPerPixel = 0.3f;    // mouse look and orbit sensitivity
+    float moveSpeed = 6.0f;        // world units per second for WASD
+    float degreesPerPixel = 0.3f;  // mouse look and orbit sensitivity
 };
 
 // One frame of user input, gathered by the window loop from the mouse over the viewport and

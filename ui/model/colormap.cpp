@@ -48,9 +48,12 @@ glm::vec3 sampleStops(std::array<glm::vec3, kStops> const& stops, float t) {
 glm::vec3 colormap(Colormap map, float t) {
     t = std::isnan(t) ? 0.0f : std::clamp(t, 0.0f, 1.0f);
     switch (map) {
-    case Colormap::Grey: return glm::vec3(t);
-    case Colormap::Turbo: return sampleStops(kTurbo, t);
-    case Colormap::Viridis: return sampleStops(kViridis, t);
+        case Colormap::Grey:
+            return glm::vec3(t);
+        case Colormap::Turbo:
+            return sampleStops(kTurbo, t);
+        case Colormap::Viridis:
+            return sampleStops(kViridis, t);
     }
     return glm::vec3(t);
 }

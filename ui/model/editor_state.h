@@ -3,16 +3,16 @@
 #pragma once
 
 #include "core/camera.h"
+#include "core/pipeline_settings.h"
+#include "core/point_light.h"
 #include "model/camera_rig.h"
 #include "model/layout_state.h"
-#include "model/viewer_state.h"
 #include "model/lights_state.h"
 #include "model/log_state.h"
 #include "model/pixel_inspector_state.h"
 #include "model/stats_state.h"
+#include "model/viewer_state.h"
 #include "model/viewport_state.h"
-#include "core/pipeline_settings.h"
-#include "core/point_light.h"
 #include "scene/scene_data.h"
 
 #include <string>
@@ -34,10 +34,10 @@ struct CostMeasurement {
 
 struct EditorState {
     // --- the scene being looked at ------------------------------------------------------
-    std::string sceneSource;      // "default" or the glTF path
+    std::string sceneSource;  // "default" or the glTF path
     Bounds sceneBounds;
     std::size_t sceneTriangles = 0;
-    glm::vec3 orbitCenter{0.0f};  // lights orbit around this point when animated
+    glm::vec3 orbitCenter{0.0f};     // lights orbit around this point when animated
     std::vector<PointLight> lights;  // as edited; animation moves a copy, never these
     LightAnimation animation;
     Camera camera;

@@ -53,7 +53,9 @@ void add(ChannelStats& s, double& sum, float v) {
 
 }  // namespace
 
-PixelRect rectFromCorners(glm::ivec2 a, glm::ivec2 b) { return {glm::min(a, b), glm::max(a, b) + 1}; }
+PixelRect rectFromCorners(glm::ivec2 a, glm::ivec2 b) {
+    return {glm::min(a, b), glm::max(a, b) + 1};
+}
 
 PixelRect clampRect(std::optional<PixelRect> const& r, int width, int height) {
     PixelRect const whole{{0, 0}, {std::max(width, 0), std::max(height, 0)}};
@@ -88,7 +90,9 @@ ImageStats imageStats(FloatImage const& image, unsigned channelMask, std::option
     return s;
 }
 
-long Histogram::maxBin() const { return bins.empty() ? 0 : *std::max_element(bins.begin(), bins.end()); }
+long Histogram::maxBin() const {
+    return bins.empty() ? 0 : *std::max_element(bins.begin(), bins.end());
+}
 
 Histogram histogram(FloatImage const& image, unsigned channelMask, float lo, float hi, int bins,
                     std::optional<PixelRect> region, RangeSkip skip) {
@@ -101,8 +105,10 @@ Histogram histogram(FloatImage const& image, unsigned channelMask, float lo, flo
         image, channelMask, region, skip, [](int, int) {},
         [&](int, float v) {
             if (!std::isfinite(v)) return;
-            if (v < lo) ++h.below;
-            else if (v > hi) ++h.above;
+            if (v < lo)
+                ++h.below;
+            else if (v > hi)
+                ++h.above;
             else {
                 auto const i = std::size_t(std::floor((double(v) - double(lo)) * scale));
                 ++h.bins[std::min(i, h.bins.size() - 1)];
@@ -141,9 +147,12 @@ ClipCounts clipCounts(FloatImage const& image, unsigned channelMask, float black
         image, channelMask, region, skip, [](int, int) {},
         [&](int, float v) {
             if (!std::isfinite(v)) return;
-            if (v < black) ++c.below;
-            else if (v > white) ++c.above;
-            else ++c.inside;
+            if (v < black)
+                ++c.below;
+            else if (v > white)
+                ++c.above;
+            else
+                ++c.inside;
         },
         [] {});
     return c;

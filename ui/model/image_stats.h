@@ -30,7 +30,7 @@ struct ChannelStats {
     float min = 0.0f;  // over finite values; 0 when there are none
     float max = 0.0f;
     double mean = 0.0;
-    long finite = 0;    // finite values counted
+    long finite = 0;  // finite values counted
     long nan = 0;
     long inf = 0;       // +Inf and -Inf
     long negative = 0;  // finite values below 0, and -Inf
@@ -69,8 +69,8 @@ ValueRange percentileRange(FloatImage const& image, unsigned channelMask, float 
                            std::optional<PixelRect> region = {}, RangeSkip skip = RangeSkip::None);
 
 struct ClipCounts {
-    long below = 0;   // finite shown values below the black point
-    long above = 0;   // finite shown values above the white point
+    long below = 0;  // finite shown values below the black point
+    long above = 0;  // finite shown values above the white point
     long inside = 0;
 };
 ClipCounts clipCounts(FloatImage const& image, unsigned channelMask, float black, float white,

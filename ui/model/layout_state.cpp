@@ -17,14 +17,20 @@ TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize) {
     float const statsH = std::floor(h * kStatsShare);
     glm::vec2 const p = workPos;
     switch (window) {
-    case EditorWindow::Lights: return {p, {leftW, leftTopH}};
-    case EditorWindow::Pipeline: return {p + glm::vec2(0, leftTopH), {leftW, h - leftTopH}};
-    case EditorWindow::Viewport: return {p + glm::vec2(leftW, 0), {centreW, h - stripH}};
-    case EditorWindow::GBuffer: return {p + glm::vec2(leftW, h - stripH), {centreW, stripH}};
-    case EditorWindow::PixelInspector: return {p + glm::vec2(leftW + centreW, 0), {rightW, rightTopH}};
-    case EditorWindow::Stats: return {p + glm::vec2(leftW + centreW, rightTopH), {rightW, statsH}};
-    case EditorWindow::Log:
-        return {p + glm::vec2(leftW + centreW, rightTopH + statsH), {rightW, h - rightTopH - statsH}};
+        case EditorWindow::Lights:
+            return {p, {leftW, leftTopH}};
+        case EditorWindow::Pipeline:
+            return {p + glm::vec2(0, leftTopH), {leftW, h - leftTopH}};
+        case EditorWindow::Viewport:
+            return {p + glm::vec2(leftW, 0), {centreW, h - stripH}};
+        case EditorWindow::GBuffer:
+            return {p + glm::vec2(leftW, h - stripH), {centreW, stripH}};
+        case EditorWindow::PixelInspector:
+            return {p + glm::vec2(leftW + centreW, 0), {rightW, rightTopH}};
+        case EditorWindow::Stats:
+            return {p + glm::vec2(leftW + centreW, rightTopH), {rightW, statsH}};
+        case EditorWindow::Log:
+            return {p + glm::vec2(leftW + centreW, rightTopH + statsH), {rightW, h - rightTopH - statsH}};
     }
     return {};
 }

@@ -14,7 +14,9 @@ enum class EditorWindow { Viewport, GBuffer, PixelInspector, Lights, Pipeline, S
 inline constexpr std::array<std::string_view, 7> kEditorWindowNames{
     "Viewport", "G-buffer", "Pixel inspector", "Lights", "Pipeline", "Stats", "Log"};
 
-inline char const* windowName(EditorWindow w) { return kEditorWindowNames[std::size_t(w)].data(); }
+inline char const* windowName(EditorWindow w) {
+    return kEditorWindowNames[std::size_t(w)].data();
+}
 
 struct LayoutState {
     bool resetRequested = false;  // "Reset layout" in the View menu

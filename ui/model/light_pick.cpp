@@ -13,7 +13,8 @@ Ray cameraRay(Camera const& camera, glm::vec2 pixel, glm::vec2 viewportSize) {
     glm::vec2 const ndc((pixel.x + 0.5f) / size.x * 2.0f - 1.0f, 1.0f - (pixel.y + 0.5f) / size.y * 2.0f);
     float const tanHalf = std::tan(glm::radians(camera.fovYDegrees) * 0.5f);
     float const aspect = size.x / size.y;
-    glm::vec3 const dir = camera.forward() + camera.right() * (ndc.x * tanHalf * aspect) + camera.up() * (ndc.y * tanHalf);
+    glm::vec3 const dir =
+        camera.forward() + camera.right() * (ndc.x * tanHalf * aspect) + camera.up() * (ndc.y * tanHalf);
     return {camera.position, glm::normalize(dir)};
 }
 

@@ -28,7 +28,8 @@ std::optional<PixelBreakdown> breakDownPixel(PixelSample const& sample, std::spa
         return lum(x.total()) > lum(y.total());
     });
     if (where)
-        b.verdicts = explainPixel({sample, where->pixel, where->frameSize, camera, settings, where->tileBounds}, lights);
+        b.verdicts =
+            explainPixel({sample, where->pixel, where->frameSize, camera, settings, where->tileBounds}, lights);
     return b;
 }
 

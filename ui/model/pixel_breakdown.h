@@ -3,8 +3,8 @@
 #pragma once
 
 #include "core/camera.h"
-#include "model/pixel_inspector_state.h"
 #include "core/pipeline_settings.h"
+#include "model/pixel_inspector_state.h"
 
 #include <span>
 

@@ -15,9 +15,9 @@ namespace gbl::ui {
 
 // Each light's share of the lit value at one pixel, from the CPU copy of the shader's math.
 struct PixelBreakdown {
-    glm::vec3 ambient{0.0f};                // ambient * albedo
+    glm::vec3 ambient{0.0f};                     // ambient * albedo
     std::vector<gbl::LightContribution> lights;  // only lights that reach the pixel, brightest first
-    glm::vec3 total{0.0f};                  // ambient + sum of the lights
+    glm::vec3 total{0.0f};                       // ambient + sum of the lights
     int lightsTested = 0;
     // Every light, in list order: did the current mode evaluate it here, why, what it added
     // (model/why_value.h). Empty when the breakdown was made without the frame's geometry.
@@ -30,9 +30,9 @@ struct PixelInspectorState {
     std::string source;                 // where the mouse was: "viewport" or a viewer's name
     std::optional<PixelSample> sample;  // read by Renderer::samplePixel after the frame
     std::optional<PixelBreakdown> breakdown;
-    std::string breakdownNote;          // why there is no breakdown, when there is none
-    int selectLight = -1;               // a light row was clicked: the loop selects it
-    bool everyLight = false;            // list every light, not only those within reach
+    std::string breakdownNote;  // why there is no breakdown, when there is none
+    int selectLight = -1;       // a light row was clicked: the loop selects it
+    bool everyLight = false;    // list every light, not only those within reach
 };
 
 }  // namespace gbl::ui

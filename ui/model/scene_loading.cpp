@@ -80,7 +80,9 @@ void releaseHeldLoad(SceneLoadingState& state) {
     if (state.job) wakeWorker(*state.job->progress);
 }
 
-bool sceneLoading(SceneLoadingState const& state) { return state.job.has_value(); }
+bool sceneLoading(SceneLoadingState const& state) {
+    return state.job.has_value();
+}
 
 std::string currentLoadStage(SceneLoadingState const& state) {
     if (!state.job) return {};
@@ -132,7 +134,8 @@ std::optional<std::string> installScene(SceneData const& scene, bool fromFile, i
     return std::nullopt;
 }
 
-bool updateSceneLoading(SceneLoadingState& loading, int defaultLightCount, EditorState& state, SceneUploader const& upload) {
+bool updateSceneLoading(SceneLoadingState& loading, int defaultLightCount, EditorState& state,
+                        SceneUploader const& upload) {
     // Requests start in order; while a load runs the others are refused with a message, so
     // two scenes never race to become current.
     if (!loading.dropped.empty()) {
@@ -143,8 +146,10 @@ bool updateSceneLoading(SceneLoadingState& loading, int defaultLightCount, Edito
         loading.requests.push_back(dropped.front());
     }
     for (std::string const& path : std::exchange(loading.requests, {})) {
-        if (auto refused = startSceneLoad(loading, path)) logMessage(state.log, *refused, true);
-        else logMessage(state.log, "loading " + path + " ...");
+        if (auto refused = startSceneLoad(loading, path))
+            logMessage(state.log, *refused, true);
+        else
+            logMessage(state.log, "loading " + path + " ...");
     }
 
     auto result = takeFinishedLoad(loading);

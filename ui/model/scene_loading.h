@@ -1,9 +1,9 @@
 // Loading glTF scenes in the editor: a worker thread parses and decodes, the render thread uploads.
 #pragma once
 
-#include "model/file_browser.h"
-#include "model/editor_state.h"
 #include "gltf/loader.h"
+#include "model/editor_state.h"
+#include "model/file_browser.h"
 #include "scene/scene_data.h"
 
 #include <array>
@@ -32,7 +32,7 @@ struct SceneLoadProgress {
     std::string holdAtStage;  // fixed before the worker starts
     std::mutex mutex;         // guards stage, released
     std::condition_variable wake;
-    std::string stage;        // the loader's stage names are short; a copy per report is cheap
+    std::string stage;  // the loader's stage names are short; a copy per report is cheap
     bool released = false;
 };
 
@@ -56,11 +56,11 @@ enum class SceneLoadOutcome { None, Loaded, Failed, Cancelled };
 // Everything about scene loading between frames. Not part of EditorState: it owns a thread
 // and is not a value a session saves or an undo step restores.
 struct SceneLoadingState {
-    std::optional<SceneLoadJob> job;     // the load in progress, if any
-    std::vector<std::string> requests;   // paths asked for (menu, dialog, recent, script), oldest first
-    std::vector<std::string> dropped;    // files dropped onto the window since the last frame
-    std::string holdNextAtStage;         // test hook, applied to the next load that starts
-    bool allowOutsideUris = false;       // --allow-outside-uris
+    std::optional<SceneLoadJob> job;    // the load in progress, if any
+    std::vector<std::string> requests;  // paths asked for (menu, dialog, recent, script), oldest first
+    std::vector<std::string> dropped;   // files dropped onto the window since the last frame
+    std::string holdNextAtStage;        // test hook, applied to the next load that starts
+    bool allowOutsideUris = false;      // --allow-outside-uris
 
     // File > Open scene… dialog and the recent list (most recent first).
     std::vector<std::string> recent;
@@ -102,8 +102,8 @@ std::optional<GltfLoadResult> takeFinishedLoad(SceneLoadingState& state);
 
 // Makes `scene` the editor's scene: uploads it (render thread) and resets what depends on it:
 // lights (the file's, which the loader generates for a file without any; or the default rig),
-// bounds, orbit centre, and a camera framing it. fromFile: a glTF scene (false: the procedural default scene). On failure
-// the renderer and the state keep the previous scene and the error sentence is returned.
+// bounds, orbit centre, and a camera framing it. fromFile: a glTF scene (false: the procedural default scene). On
+// failure the renderer and the state keep the previous scene and the error sentence is returned.
 std::optional<std::string> installScene(SceneData const& scene, bool fromFile, int defaultLightCount,
                                         EditorState& state, SceneUploader const& upload);
 
@@ -111,6 +111,7 @@ std::optional<std::string> installScene(SceneData const& scene, bool fromFile, i
 // installs a finished one. Errors
 // and cancellations are logged; errors also open the error dialog. Returns true when a new
 // scene became current.
-bool updateSceneLoading(SceneLoadingState& loading, int defaultLightCount, EditorState& state, SceneUploader const& upload);
+bool updateSceneLoading(SceneLoadingState& loading, int defaultLightCount, EditorState& state,
+                        SceneUploader const& upload);
 
 }  // namespace gbl::ui

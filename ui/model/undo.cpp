@@ -17,7 +17,8 @@ std::string editTarget(UndoSnapshot const& before, UndoSnapshot const& after) {
     return editTarget(before, after.lights, after.pipeline);
 }
 
-std::string editTarget(UndoSnapshot const& before, std::vector<PointLight> const& lights, PipelineSettings const& pipeline) {
+std::string editTarget(UndoSnapshot const& before, std::vector<PointLight> const& lights,
+                       PipelineSettings const& pipeline) {
     bool const pipelineChanged = before.pipeline != pipeline;
     if (before.lights.size() != lights.size()) return "lights";
     int changed = -1, count = 0;
@@ -46,15 +47,16 @@ bool UndoStack::observe(UndoSnapshot const& current, bool editing, double now) {
     return observe(current.lights, current.pipeline, editing, now);
 }
 
-bool UndoStack::observe(std::vector<PointLight> const& lights, PipelineSettings const& pipeline, bool editing, double now) {
+bool UndoStack::observe(std::vector<PointLight> const& lights, PipelineSettings const& pipeline, bool editing,
+                        double now) {
     if (editing) return false;
     std::string const target = editTarget(recorded_, lights, pipeline);
     if (target.empty()) return false;
     // Two edits of the same light (or of the pipeline) in quick succession are one gesture:
     // keep the state before the first as the undo point and move only the end state. "lights"
     // edits (add, delete) never merge: each is a deliberate action.
-    bool const merge = !undo_.empty() && target == lastTarget_ && target != "lights" &&
-                       now - lastTime_ < limits_.mergeSeconds;
+    bool const merge =
+        !undo_.empty() && target == lastTarget_ && target != "lights" && now - lastTime_ < limits_.mergeSeconds;
     if (!merge) {
         bytes_ += snapshotBytes(recorded_);
         undo_.push_back(std::move(recorded_));

@@ -25,7 +25,8 @@ struct UndoSnapshot {
 // What an edit touched, so that repeated edits of the same thing can merge: "light 3",
 // "pipeline", "lights" (added, deleted or more than one changed), "" for no change.
 std::string editTarget(UndoSnapshot const& before, UndoSnapshot const& after);
-std::string editTarget(UndoSnapshot const& before, std::vector<PointLight> const& lights, PipelineSettings const& pipeline);
+std::string editTarget(UndoSnapshot const& before, std::vector<PointLight> const& lights,
+                       PipelineSettings const& pipeline);
 
 struct UndoLimits {
     std::size_t maxSteps = 200;
@@ -73,7 +74,7 @@ private:
     std::vector<UndoSnapshot> redo_;  // states undone, most recent last
     std::string lastTarget_;          // what the last step changed, for merging
     double lastTime_ = -1e300;
-    std::size_t bytes_ = 0;           // approximate memory held by undo_ and redo_
+    std::size_t bytes_ = 0;  // approximate memory held by undo_ and redo_
 };
 
 }  // namespace gbl::ui

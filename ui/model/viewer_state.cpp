@@ -3,7 +3,6 @@
 
 #include "core/depth.h"
 
-
 namespace gbl::ui {
 
 std::array<ViewerState, 5> GBufferPanelState::defaultViewers() {
@@ -22,11 +21,16 @@ std::array<ViewerState, 5> GBufferPanelState::defaultViewers() {
 
 DebugView viewerDebugView(ViewerState const& viewer) {
     switch (viewer.kind) {
-    case ViewerKind::Position: return DebugView::Position;
-    case ViewerKind::Normal: return DebugView::Normal;
-    case ViewerKind::Albedo: return DebugView::Albedo;
-    case ViewerKind::Specular: return DebugView::Specular;
-    case ViewerKind::Depth: return viewer.linearDepth ? DebugView::DepthLinear : DebugView::Depth;
+        case ViewerKind::Position:
+            return DebugView::Position;
+        case ViewerKind::Normal:
+            return DebugView::Normal;
+        case ViewerKind::Albedo:
+            return DebugView::Albedo;
+        case ViewerKind::Specular:
+            return DebugView::Specular;
+        case ViewerKind::Depth:
+            return viewer.linearDepth ? DebugView::DepthLinear : DebugView::Depth;
     }
     return DebugView::Final;
 }
@@ -45,11 +49,15 @@ ViewParams viewerParams(ViewerState const& viewer) {
 
 Attachment viewerAttachment(ViewerKind kind) {
     switch (kind) {
-    case ViewerKind::Position: return Attachment::Position;
-    case ViewerKind::Normal: return Attachment::Normal;
-    case ViewerKind::Albedo:
-    case ViewerKind::Specular: return Attachment::AlbedoSpec;
-    case ViewerKind::Depth: return Attachment::Depth;
+        case ViewerKind::Position:
+            return Attachment::Position;
+        case ViewerKind::Normal:
+            return Attachment::Normal;
+        case ViewerKind::Albedo:
+        case ViewerKind::Specular:
+            return Attachment::AlbedoSpec;
+        case ViewerKind::Depth:
+            return Attachment::Depth;
     }
     return Attachment::Position;
 }
@@ -69,9 +77,12 @@ FloatImage viewerValues(ViewerState const& viewer, FloatImage const& attachment,
 
 unsigned viewerStatsMask(ViewerState const& viewer) {
     switch (viewer.kind) {
-    case ViewerKind::Specular: return 0x8u;
-    case ViewerKind::Depth: return 0x1u;
-    default: return viewer.channelMask == 0 ? 0x7u : viewer.channelMask;
+        case ViewerKind::Specular:
+            return 0x8u;
+        case ViewerKind::Depth:
+            return 0x1u;
+        default:
+            return viewer.channelMask == 0 ? 0x7u : viewer.channelMask;
     }
 }
 

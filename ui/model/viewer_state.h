@@ -21,32 +21,32 @@ struct ViewerState {
     unsigned channelMask = 0x7;  // bit 0 = R ... bit 3 = A
     float rangeMin = 0.0f;
     float rangeMax = 1.0f;
-    bool autoFit = false;        // refit the range to the data about once a second
-    bool fitRequested = false;   // the Fit button; the loop reads the attachment and clears it
-    long lastFitFrame = -1;      // frame of the last fit that found data; -1 = never fitted
+    bool autoFit = false;       // refit the range to the data about once a second
+    bool fitRequested = false;  // the Fit button; the loop reads the attachment and clears it
+    long lastFitFrame = -1;     // frame of the last fit that found data; -1 = never fitted
     NormalDisplay normalDisplay = NormalDisplay::Biased;
-    bool linearDepth = true;     // depth viewer: eye distance instead of window depth
+    bool linearDepth = true;       // depth viewer: eye distance instead of window depth
     bool cameraClipPlanes = true;  // linear depth with the camera's near/far, else the fields below
     float nearPlane = 0.1f;
     float farPlane = 100.0f;
-    float zoom = 1.0f;           // 1 = whole image fits the cell
-    glm::vec2 center{0.5f};      // image point (0..1, top-left origin) at the cell centre
-    glm::ivec2 imageSize{0};     // texel size of the image last shown
+    float zoom = 1.0f;        // 1 = whole image fits the cell
+    glm::vec2 center{0.5f};   // image point (0..1, top-left origin) at the cell centre
+    glm::ivec2 imageSize{0};  // texel size of the image last shown
 
     // --- viewer tools (issue 15); not saved in sessions ----------------------------------------
     bool showHistogram = false;
-    Colormap colormap = Colormap::Grey;  // when one channel is shown
-    unsigned overlays = 0;               // kOverlay* bits (core/view_params.h)
-    std::optional<glm::ivec2> picked;    // magnifier centre: right-click, arrow keys, Ctrl+G
-    std::optional<PixelRect> region;     // Shift+drag; statistics and "Fit to region" use it
+    Colormap colormap = Colormap::Grey;         // when one channel is shown
+    unsigned overlays = 0;                      // kOverlay* bits (core/view_params.h)
+    std::optional<glm::ivec2> picked;           // magnifier centre: right-click, arrow keys, Ctrl+G
+    std::optional<PixelRect> region;            // Shift+drag; statistics and "Fit to region" use it
     std::optional<glm::ivec2> regionDragStart;  // texel where the Shift+drag began
-    int histogramDrag = -1;              // 0: dragging the black point, 1: the white point
-    bool percentileFitRequested = false; // "Fit 1-99 %": serviced like fitRequested
-    bool regionFitRequested = false;     // "Fit to region": min/max inside the region
-    bool pinRequested = false;           // "Pin": the loop stores the current values as the pinned image
-    bool showDiff = false;               // show |current - pinned| as a heat map instead of the view
+    int histogramDrag = -1;                     // 0: dragging the black point, 1: the white point
+    bool percentileFitRequested = false;        // "Fit 1-99 %": serviced like fitRequested
+    bool regionFitRequested = false;            // "Fit to region": min/max inside the region
+    bool pinRequested = false;                  // "Pin": the loop stores the current values as the pinned image
+    bool showDiff = false;                      // show |current - pinned| as a heat map instead of the view
     DiffMode diffMode = DiffMode::Absolute;
-    float diffThreshold = 0.0f;          // pixels above it are counted ("over threshold")
+    float diffThreshold = 0.0f;  // pixels above it are counted ("over threshold")
 };
 
 // What the statistics of a ViewerData were computed for; a change recomputes them.
@@ -62,14 +62,14 @@ struct StatsInputs {
 // What the viewer tools know about one viewer's image, filled by the editor loop from a read-back
 // (ui/viewer_tools_service.cpp). Lives outside ViewerState so sessions never copy images.
 struct ViewerData {
-    FloatImage values;     // the viewer's values in data units (see viewerValues)
-    long frame = -1;       // editor frame of the read-back; -1 = none yet
-    unsigned key = 0;      // what the values were computed for (kind, depth mode); a change rereads
-    ImageStats stats;      // whole image
+    FloatImage values;  // the viewer's values in data units (see viewerValues)
+    long frame = -1;    // editor frame of the read-back; -1 = none yet
+    unsigned key = 0;   // what the values were computed for (kind, depth mode); a change rereads
+    ImageStats stats;   // whole image
     ImageStats regionStats;
-    Histogram histogram;   // over the histogram range below
+    Histogram histogram;  // over the histogram range below
     float histLo = 0.0f, histHi = 1.0f;
-    ClipCounts clip;       // against the viewer's black/white points
+    ClipCounts clip;  // against the viewer's black/white points
     std::optional<FloatImage> pinned;
     long pinnedFrame = -1;
     DiffStats diff;
@@ -83,13 +83,13 @@ struct GBufferPanelState {
     // settings change). On a GPU at 60 Hz that is still 12 refreshes a second per viewer.
     bool refreshEveryFrame = false;
     int nextRefresh = 0;
-    bool visible = true;  // the window was drawn last frame; hidden viewers are not redrawn
-    std::optional<glm::ivec2> hoverPixel;  // texel under the mouse in any viewer, top-left origin
+    bool visible = true;                      // the window was drawn last frame; hidden viewers are not redrawn
+    std::optional<glm::ivec2> hoverPixel;     // texel under the mouse in any viewer, top-left origin
     std::optional<DebugView> showInViewport;  // a viewer was clicked this frame
-    bool syncViews = false;   // zoom/pan of one viewer is applied to all (same texel under the cursor)
-    int activeViewer = 0;     // the viewer last clicked or hovered: the magnifier and Ctrl+G act on it
+    bool syncViews = false;                   // zoom/pan of one viewer is applied to all (same texel under the cursor)
+    int activeViewer = 0;                     // the viewer last clicked or hovered: the magnifier and Ctrl+G act on it
     bool showMagnifier = false;
-    bool goToOpen = false;    // Ctrl+G was pressed: the go-to-pixel popup opens
+    bool goToOpen = false;  // Ctrl+G was pressed: the go-to-pixel popup opens
     glm::ivec2 goToInput{0};
     std::array<ViewerData, 5> data{};  // read-backs for the tools, filled by the loop
 
@@ -110,6 +110,8 @@ FloatImage viewerValues(ViewerState const& viewer, FloatImage const& attachment,
 unsigned viewerStatsMask(ViewerState const& viewer);
 RangeSkip viewerSkip(ViewerKind kind);
 // Whether the viewer's range remap applies (normals are shown as directions instead).
-inline bool viewerRemaps(ViewerKind kind) { return kind != ViewerKind::Normal; }
+inline bool viewerRemaps(ViewerKind kind) {
+    return kind != ViewerKind::Normal;
+}
 
 }  // namespace gbl::ui

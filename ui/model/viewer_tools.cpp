@@ -11,8 +11,8 @@ namespace gbl::ui {
 bool viewerNeedsData(GBufferPanelState const& panel, std::size_t i) {
     ViewerState const& v = panel.viewers[i];
     bool const magnifier = panel.showMagnifier && panel.activeViewer == int(i);
-    return v.showHistogram || v.overlays != 0 || v.region || v.showDiff || v.percentileFitRequested || v.regionFitRequested ||
-           v.pinRequested || magnifier;
+    return v.showHistogram || v.overlays != 0 || v.region || v.showDiff || v.percentileFitRequested ||
+           v.regionFitRequested || v.pinRequested || magnifier;
 }
 
 unsigned viewerValuesKey(ViewerState const& viewer) {
@@ -84,7 +84,8 @@ bool updateViewerStats(ViewerState& viewer, ViewerData& data) {
     }
     data.histogram = histogram(data.values, mask, data.histLo, data.histHi, 128, {}, skip);
     bool const diffable = data.pinned && viewer.showDiff;
-    data.diff = diffable ? diffImages(data.values, *data.pinned, mask, viewer.diffThreshold, viewer.diffMode) : DiffStats{};
+    data.diff =
+        diffable ? diffImages(data.values, *data.pinned, mask, viewer.diffThreshold, viewer.diffMode) : DiffStats{};
     return diffable;
 }
 

@@ -10,17 +10,17 @@
 namespace gbl::ui {
 
 struct ViewportState {
-    glm::ivec2 size{0};  // image area in framebuffer pixels; the renderer follows it next frame
+    glm::ivec2 size{0};         // image area in framebuffer pixels; the renderer follows it next frame
     glm::vec4 imageRect{0.0f};  // the image in window coordinates: x, y, width, height
     bool hovered = false;
-    std::optional<glm::ivec2> hoverPixel;  // renderer pixel under the mouse, origin top-left
-    std::optional<glm::ivec2> clickPixel;  // a left click that was not a drag, this frame
+    std::optional<glm::ivec2> hoverPixel;        // renderer pixel under the mouse, origin top-left
+    std::optional<glm::ivec2> clickPixel;        // a left click that was not a drag, this frame
     std::optional<glm::ivec2> doubleClickPixel;  // the second press of a double click, this frame
-    glm::vec2 orbitDrag{0.0f};             // this frame's drags, in pixels (see CameraInput)
+    glm::vec2 orbitDrag{0.0f};                   // this frame's drags, in pixels (see CameraInput)
     glm::vec2 lookDrag{0.0f};
     glm::vec2 panDrag{0.0f};
     float wheel = 0.0f;
-    bool frameRequested = false;           // the Frame button (the F key is read by the loop)
+    bool frameRequested = false;  // the Frame button (the F key is read by the loop)
 };
 
 }  // namespace gbl::ui

@@ -20,9 +20,9 @@ namespace {
 // compares quantised depths (ties at the surface can go either way).
 struct VolumeHit {
     bool cameraInside = false;
-    bool hits = false;   // the pixel's ray crosses the sphere
-    float t0 = 0.0f;     // entry (front face), may be behind the eye
-    float t1 = 0.0f;     // exit (back face)
+    bool hits = false;  // the pixel's ray crosses the sphere
+    float t0 = 0.0f;    // entry (front face), may be behind the eye
+    float t1 = 0.0f;    // exit (back face)
 };
 
 VolumeHit hitVolume(glm::vec3 eye, glm::vec3 dir, glm::vec3 centre, float radius) {
@@ -74,32 +74,35 @@ Faces volumePass(PointLight const& light, float radius, WhyValueInput const& in,
     VolumeHit const h = hitVolume(in.camera.position, dir, light.position, enclosing);
     if (!h.hits) return {0, "not evaluated: pixel outside the volume's footprint"};
     switch (in.settings.cull) {
-    case CullMode::Back: return frontFacesPass(h, clip, tp);
-    case CullMode::Front: return backFacesPass(h, clip, tp);
-    case CullMode::None: {
-        int const n = int(!h.cameraInside && clip.contains(h.t0)) + int(clip.contains(h.t1));
-        return {n, n == 2   ? "both faces shaded (no culling, no depth test): counted twice"
-                   : n == 1 ? "one face shaded (no culling, no depth test)"
-                            : "not evaluated: both faces clipped"};
-    }
-    case CullMode::Flip: {
-        float const aspect = float(in.frameSize.x) / float(std::max(in.frameSize.y, 1));
-        float const corner = nearPlaneCornerDistance(glm::radians(in.camera.fovYDegrees), aspect, in.camera.nearPlane);
-        bool const inside = volumeMayContainCamera(in.camera.position, light.position, enclosing, corner);
-        Faces f = inside ? backFacesPass(h, clip, tp) : frontFacesPass(h, clip, tp);
-        f.why = (inside ? "flip, camera may be inside: " : "flip, camera outside: ") + f.why;
-        return f;
-    }
-    case CullMode::Stencil: {
-        // Mark: +1 where the back face fails the depth test (behind the surface), -1 where the
-        // front face does; shading keeps marks of exactly 1, once per pixel.
-        bool const backMark = clip.contains(h.t1) && h.t1 >= tp;
-        bool const frontMark = !h.cameraInside && clip.contains(h.t0) && h.t0 >= tp;
-        if (backMark && !frontMark) return {1, "stencil: surface inside the volume"};
-        if (frontMark) return {0, "not evaluated: stencil, surface in front of the volume"};
-        if (h.t1 > clip.tFar) return {0, "not evaluated: stencil, back face past the far plane"};
-        return {0, "not evaluated: stencil, surface behind the volume (outside it)"};
-    }
+        case CullMode::Back:
+            return frontFacesPass(h, clip, tp);
+        case CullMode::Front:
+            return backFacesPass(h, clip, tp);
+        case CullMode::None: {
+            int const n = int(!h.cameraInside && clip.contains(h.t0)) + int(clip.contains(h.t1));
+            return {n, n == 2   ? "both faces shaded (no culling, no depth test): counted twice"
+                       : n == 1 ? "one face shaded (no culling, no depth test)"
+                                : "not evaluated: both faces clipped"};
+        }
+        case CullMode::Flip: {
+            float const aspect = float(in.frameSize.x) / float(std::max(in.frameSize.y, 1));
+            float const corner =
+                nearPlaneCornerDistance(glm::radians(in.camera.fovYDegrees), aspect, in.camera.nearPlane);
+            bool const inside = volumeMayContainCamera(in.camera.position, light.position, enclosing, corner);
+            Faces f = inside ? backFacesPass(h, clip, tp) : frontFacesPass(h, clip, tp);
+            f.why = (inside ? "flip, camera may be inside: " : "flip, camera outside: ") + f.why;
+            return f;
+        }
+        case CullMode::Stencil: {
+            // Mark: +1 where the back face fails the depth test (behind the surface), -1 where the
+            // front face does; shading keeps marks of exactly 1, once per pixel.
+            bool const backMark = clip.contains(h.t1) && h.t1 >= tp;
+            bool const frontMark = !h.cameraInside && clip.contains(h.t0) && h.t0 >= tp;
+            if (backMark && !frontMark) return {1, "stencil: surface inside the volume"};
+            if (frontMark) return {0, "not evaluated: stencil, surface in front of the volume"};
+            if (h.t1 > clip.tFar) return {0, "not evaluated: stencil, back face past the far plane"};
+            return {0, "not evaluated: stencil, surface behind the volume (outside it)"};
+        }
     }
     return {0, "?"};
 }
@@ -128,8 +131,10 @@ std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointL
     float const aspect = float(in.frameSize.x) / float(in.frameSize.y);
     TileGrid const grid = tileGrid(in.frameSize.x, in.frameSize.y);
     int const glY = in.frameSize.y - 1 - in.pixel.y;
-    PixelRect const rect = tilePixelRect(grid, in.frameSize.x, in.frameSize.y, in.pixel.x / grid.tileSize, glY / grid.tileSize);
-    TileFrustum const tile = tileFrustum(glm::inverse(in.camera.projection(aspect)), in.frameSize.x, in.frameSize.y, rect);
+    PixelRect const rect =
+        tilePixelRect(grid, in.frameSize.x, in.frameSize.y, in.pixel.x / grid.tileSize, glY / grid.tileSize);
+    TileFrustum const tile =
+        tileFrustum(glm::inverse(in.camera.projection(aspect)), in.frameSize.x, in.frameSize.y, rect);
     float const ownDepth = linearDepth(in.sample.depth, in.camera.nearPlane, in.camera.farPlane);
     TileDepthBounds const bounds = in.tileBounds.value_or(TileDepthBounds{ownDepth, ownDepth});
 
@@ -140,27 +145,28 @@ std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointL
         float const radius = lightRadius(light).radius;
         v.withinRadius = glm::distance(light.position, s.position) < radius;
         switch (in.settings.mode) {
-        case LightingMode::Quad:
-            v.evaluations = 1;
-            v.why = "quad: every light is tested at every pixel";
-            break;
-        case LightingMode::Forward:
-            v.evaluations = 1;
-            v.why = "forward: every light is tested at every fragment";
-            break;
-        case LightingMode::Tiled: {
-            glm::vec3 const centreView = glm::vec3(view * glm::vec4(light.position, 1.0f));
-            bool const listed = radius > 0.0f && sphereTouchesTile(tile, bounds.minDepth, bounds.maxDepth, centreView, radius);
-            v.evaluations = listed ? 1 : 0;
-            v.why = listed ? "in the tile's light list" : "not evaluated: not in the tile's light list";
-            break;
-        }
-        case LightingMode::Volumes: {
-            Faces const f = volumePass(light, radius, in, dir, tp, clip);
-            v.evaluations = f.count;
-            v.why = f.why;
-            break;
-        }
+            case LightingMode::Quad:
+                v.evaluations = 1;
+                v.why = "quad: every light is tested at every pixel";
+                break;
+            case LightingMode::Forward:
+                v.evaluations = 1;
+                v.why = "forward: every light is tested at every fragment";
+                break;
+            case LightingMode::Tiled: {
+                glm::vec3 const centreView = glm::vec3(view * glm::vec4(light.position, 1.0f));
+                bool const listed =
+                    radius > 0.0f && sphereTouchesTile(tile, bounds.minDepth, bounds.maxDepth, centreView, radius);
+                v.evaluations = listed ? 1 : 0;
+                v.why = listed ? "in the tile's light list" : "not evaluated: not in the tile's light list";
+                break;
+            }
+            case LightingMode::Volumes: {
+                Faces const f = volumePass(light, radius, in, dir, tp, clip);
+                v.evaluations = f.count;
+                v.why = f.why;
+                break;
+            }
         }
         v.evaluated = v.evaluations > 0;
         // The shaders skip a light beyond its radius (its windowed attenuation is 0 there anyway).

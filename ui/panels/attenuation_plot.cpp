@@ -63,8 +63,12 @@ void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size) {
     bool const hovered = ImGui::IsItemHovered();
 
     float const peak = std::max(c.classic.empty() ? 1.0f : c.classic.front(), light.threshold * 2.0f);
-    Axes const axes{ImVec2(p0.x + 4, p0.y + 14), ImVec2(p1.x - 4, p1.y - 14), c.maxDistance, peak * 1.05f,
-                    logScale ? light.threshold * 0.1f : 0.0f, logScale};
+    Axes const axes{ImVec2(p0.x + 4, p0.y + 14),
+                    ImVec2(p1.x - 4, p1.y - 14),
+                    c.maxDistance,
+                    peak * 1.05f,
+                    logScale ? light.threshold * 0.1f : 0.0f,
+                    logScale};
 
     dl->AddRectFilled(p0, p1, IM_COL32(20, 22, 26, 255));
     dl->AddRect(p0, p1, IM_COL32(90, 90, 100, 255));

@@ -14,8 +14,8 @@ struct AttenuationCurve {
     float maxDistance = 1.0f;
     float radius = 0.0f;
     std::vector<float> distance;
-    std::vector<float> classic;   // Imax / (Kc + Kl d + Kq d^2)
-    std::vector<float> applied;   // Imax * windowedAttenuation: what every lighting mode adds
+    std::vector<float> classic;  // Imax / (Kc + Kl d + Kq d^2)
+    std::vector<float> applied;  // Imax * windowedAttenuation: what every lighting mode adds
 };
 
 // Samples both curves from 0 to a little past the radius.

@@ -75,7 +75,9 @@ inline void separatorText(char const* label) {
 
 // Right edge of the content area, taken at the start of a row (GetWindowContentRegionMax is
 // obsolete in 1.92).
-inline float rowRightEdge() { return ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x; }
+inline float rowRightEdge() {
+    return ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;
+}
 
 // Puts the next item on the current line when `itemWidth` still fits before `rightEdge`, else
 // on a new line: radio rows wrap in narrow side columns instead of running off the window.
@@ -101,7 +103,10 @@ inline bool letterPressed(char upper) {
 
 // An arrow key: dx or dy is -1 or +1 (the other 0); y grows downwards, as on screen.
 inline bool arrowPressed(int dx, int dy) {
-    ImGuiKey const key = dx < 0 ? ImGuiKey_LeftArrow : dx > 0 ? ImGuiKey_RightArrow : dy < 0 ? ImGuiKey_UpArrow : ImGuiKey_DownArrow;
+    ImGuiKey const key = dx < 0   ? ImGuiKey_LeftArrow
+                         : dx > 0 ? ImGuiKey_RightArrow
+                         : dy < 0 ? ImGuiKey_UpArrow
+                                  : ImGuiKey_DownArrow;
 #if IMGUI_VERSION_NUM >= 18700
     return ImGui::IsKeyPressed(key);
 #else

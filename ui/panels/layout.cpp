@@ -29,9 +29,11 @@ void buildDefaultDockLayout(ImGuiID dockspace, ImGuiViewport const* viewport) {
         ImGui::DockBuilderSplitNode(centre, ImGuiDir_Right, kRightColumn / (1.0f - kLeftColumn), nullptr, &centre);
     ImGuiID const strip = ImGui::DockBuilderSplitNode(centre, ImGuiDir_Down, kViewerStrip, nullptr, &centre);
     ImGuiID leftTop = left;
-    ImGuiID const leftBottom = ImGui::DockBuilderSplitNode(leftTop, ImGuiDir_Down, 1.0f - kLightsShare, nullptr, &leftTop);
+    ImGuiID const leftBottom =
+        ImGui::DockBuilderSplitNode(leftTop, ImGuiDir_Down, 1.0f - kLightsShare, nullptr, &leftTop);
     ImGuiID rightTop = right;
-    ImGuiID rightMiddle = ImGui::DockBuilderSplitNode(rightTop, ImGuiDir_Down, 1.0f - kInspectorShare, nullptr, &rightTop);
+    ImGuiID rightMiddle =
+        ImGui::DockBuilderSplitNode(rightTop, ImGuiDir_Down, 1.0f - kInspectorShare, nullptr, &rightTop);
     // The log's share of what is below the inspector.
     ImGuiID const rightBottom = ImGui::DockBuilderSplitNode(
         rightMiddle, ImGuiDir_Down, 1.0f - kStatsShare / (1.0f - kInspectorShare), nullptr, &rightMiddle);
@@ -62,7 +64,9 @@ void beginLayout(LayoutState& state) {
 
 void placeWindow(EditorWindow) {}
 
-int editorWindowFlags() { return 0; }
+int editorWindowFlags() {
+    return 0;
+}
 
 #else
 
@@ -73,8 +77,8 @@ void beginLayout(LayoutState& state) {
 
 void placeWindow(EditorWindow window) {
     ImGuiViewport const* viewport = ImGui::GetMainViewport();
-    TileRect const r = tiledRect(window, {viewport->WorkPos.x, viewport->WorkPos.y},
-                                 {viewport->WorkSize.x, viewport->WorkSize.y});
+    TileRect const r =
+        tiledRect(window, {viewport->WorkPos.x, viewport->WorkPos.y}, {viewport->WorkSize.x, viewport->WorkSize.y});
     ImGui::SetNextWindowPos(ImVec2(r.pos.x, r.pos.y), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(r.size.x, r.size.y), ImGuiCond_Always);
 }

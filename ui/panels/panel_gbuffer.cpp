@@ -2,10 +2,10 @@
 // texels so zooming in shows exact stored pixels.
 #include "panels/panel_gbuffer.h"
 
+#include "model/viewer_tools.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
 #include "panels/viewer_tools.h"
-#include "model/viewer_tools.h"
 
 #include <imgui.h>
 
@@ -28,11 +28,14 @@ void channelToggles(ViewerState& v) {
         ImGui::PushStyleColor(ImGuiCol_Button, on ? kChannelColours[c] : IM_COL32(50, 50, 55, 255));
         if (ImGui::SmallButton(kChannelLabels[c])) {
             // Ctrl+click adds or removes a channel; a plain click isolates it (or restores RGB).
-            if (ImGui::GetIO().KeyCtrl) v.channelMask ^= 1u << c;
-            else v.channelMask = (v.channelMask == (1u << c)) ? 0x7u : (1u << c);
+            if (ImGui::GetIO().KeyCtrl)
+                v.channelMask ^= 1u << c;
+            else
+                v.channelMask = (v.channelMask == (1u << c)) ? 0x7u : (1u << c);
         }
         ImGui::PopStyleColor();
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("click: show %s alone (grey); Ctrl+click: add/remove", kChannelLabels[c]);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("click: show %s alone (grey); Ctrl+click: add/remove", kChannelLabels[c]);
     }
 }
 
@@ -67,7 +70,8 @@ void viewerControls(ViewerState& v) {
             ImGui::Checkbox("camera's near/far", &v.cameraClipPlanes);
             ImGui::BeginDisabled(v.cameraClipPlanes);
             ImGui::DragFloat("near", &v.nearPlane, 0.01f, 0.001f, v.farPlane, "%.3f", ImGuiSliderFlags_AlwaysClamp);
-            ImGui::DragFloat("far", &v.farPlane, 0.5f, v.nearPlane + 0.001f, 1e6f, "%.1f", ImGuiSliderFlags_AlwaysClamp);
+            ImGui::DragFloat("far", &v.farPlane, 0.5f, v.nearPlane + 0.001f, 1e6f, "%.1f",
+                             ImGuiSliderFlags_AlwaysClamp);
             ImGui::EndDisabled();
             ImGui::EndPopup();
         }
@@ -75,10 +79,11 @@ void viewerControls(ViewerState& v) {
 }
 
 // Outline of a texel rectangle on the drawn image.
-void outlineTexels(ImDrawList* dl, ImVec2 p0, ImVec2 full, glm::ivec2 imageSize, glm::ivec2 a, glm::ivec2 b, ImU32 colour) {
+void outlineTexels(ImDrawList* dl, ImVec2 p0, ImVec2 full, glm::ivec2 imageSize, glm::ivec2 a, glm::ivec2 b,
+                   ImU32 colour) {
     float const tw = full.x / float(imageSize.x), th = full.y / float(imageSize.y);
-    dl->AddRect(ImVec2(p0.x + float(a.x) * tw, p0.y + float(a.y) * th), ImVec2(p0.x + float(b.x) * tw, p0.y + float(b.y) * th),
-                colour, 0.0f, 0, 1.5f);
+    dl->AddRect(ImVec2(p0.x + float(a.x) * tw, p0.y + float(a.y) * th),
+                ImVec2(p0.x + float(b.x) * tw, p0.y + float(b.y) * th), colour, 0.0f, 0, 1.5f);
 }
 
 // Draws the image with zoom and pan inside the remaining cell area; returns the hovered texel.
@@ -117,7 +122,8 @@ std::optional<glm::ivec2> viewerImage(ViewerState& v, unsigned texture, glm::ive
     };
     if (ImGui::IsItemActivated() && io.KeyShift) v.regionDragStart = texelAt(io.MousePos);
     if (!ImGui::IsItemActive()) v.regionDragStart.reset();
-    if (v.regionDragStart) v.region = rectFromCorners(*v.regionDragStart, texelAt(io.MousePos));
+    if (v.regionDragStart)
+        v.region = rectFromCorners(*v.regionDragStart, texelAt(io.MousePos));
     else if (ImGui::IsItemActive() && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
         v.center -= glm::vec2(io.MouseDelta.x / full.x, io.MouseDelta.y / full.y);
     if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right)) v.picked = texelAt(io.MousePos);
@@ -169,19 +175,22 @@ void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& t
     if (state.visible) {
         ImGui::Checkbox("Redraw all every frame", &state.refreshEveryFrame);
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("off: one viewer is redrawn per frame in turn (cheaper on slow GL); a viewer whose\n"
-                              "settings change is redrawn at once");
+            ImGui::SetTooltip(
+                "off: one viewer is redrawn per frame in turn (cheaper on slow GL); a viewer whose\n"
+                "settings change is redrawn at once");
         ImGui::SameLine();
         ImGui::Checkbox("Sync zoom/pan", &state.syncViews);
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("link zoom and pan of all viewers: the same texel under the cursor in each");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("link zoom and pan of all viewers: the same texel under the cursor in each");
         ImGui::SameLine();
         ImGui::Checkbox("Magnifier", &state.showMagnifier);
         ImGui::SameLine();
         ImGui::TextDisabled("(?)");
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("click: show in viewport  drag: pan  wheel: zoom  double-click: reset\n"
-                              "Shift+drag: statistics region  right-click: pick texel (magnifier)\n"
-                              "arrow keys: step the picked texel  Ctrl+G: go to pixel");
+            ImGui::SetTooltip(
+                "click: show in viewport  drag: pan  wheel: zoom  double-click: reset\n"
+                "Shift+drag: statistics region  right-click: pick texel (magnifier)\n"
+                "arrow keys: step the picked texel  Ctrl+G: go to pixel");
         if (ImGui::BeginTable("viewers", 5, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame,
                               ImGui::GetContentRegionAvail())) {
             for (std::size_t i = 0; i < state.viewers.size(); ++i) ImGui::TableSetupColumn(kViewerNames[i].data());

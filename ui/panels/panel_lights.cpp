@@ -1,12 +1,12 @@
 // Lights window.
 #include "panels/panel_lights.h"
 
+#include "core/light_math.h"
+#include "model/drag_speed.h"
+#include "model/light_list.h"
 #include "panels/attenuation_plot.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
-#include "model/drag_speed.h"
-#include "model/light_list.h"
-#include "core/light_math.h"
 
 #include <imgui.h>
 
@@ -21,10 +21,14 @@ namespace {
 
 char const* radiusKindText(RadiusKind kind) {
     switch (kind) {
-    case RadiusKind::Quadratic: return "quadratic root";
-    case RadiusKind::Linear: return "linear (Kq = 0)";
-    case RadiusKind::Capped: return "never falls off (Kl = Kq = 0): capped";
-    case RadiusKind::Zero: return "never reaches the threshold: skipped";
+        case RadiusKind::Quadratic:
+            return "quadratic root";
+        case RadiusKind::Linear:
+            return "linear (Kq = 0)";
+        case RadiusKind::Capped:
+            return "never falls off (Kl = Kq = 0): capped";
+        case RadiusKind::Zero:
+            return "never reaches the threshold: skipped";
     }
     return "";
 }
@@ -93,7 +97,8 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
         changed = true;
     }
     // Positions move by 1% of their distance from the origin per pixel, at least 0.01.
-    float const reach = std::max({std::abs(edited.position.x), std::abs(edited.position.y), std::abs(edited.position.z)});
+    float const reach =
+        std::max({std::abs(edited.position.x), std::abs(edited.position.y), std::abs(edited.position.z)});
     changed |= ImGui::DragFloat3("Position", &edited.position.x, proportionalDragSpeed(reach, 0.01f));
     changed |= ImGui::ColorEdit3("Colour", &edited.color.x, ImGuiColorEditFlags_Float);
     // Three attenuation terms on one row, as in the formula Kc + Kl d + Kq d^2; each keeps its
@@ -118,9 +123,11 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
     ImGui::TextUnformatted("Atten.");
     float const half = (ImGui::CalcItemWidth() - ImGui::GetStyle().ItemInnerSpacing.x) / 2.0f;
     ImGui::PushItemWidth(half);
-    changed |= ImGui::DragFloat("##intensity", &edited.intensity, proportionalDragSpeed(edited.intensity, 1e-3f), 0.0f, 1000.0f, "I %.3f");
+    changed |= ImGui::DragFloat("##intensity", &edited.intensity, proportionalDragSpeed(edited.intensity, 1e-3f), 0.0f,
+                                1000.0f, "I %.3f");
     ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
-    changed |= ImGui::DragFloat("##threshold", &edited.threshold, proportionalDragSpeed(edited.threshold, 1e-5f), 0.0f, 1.0f, "cut %.5f");
+    changed |= ImGui::DragFloat("##threshold", &edited.threshold, proportionalDragSpeed(edited.threshold, 1e-5f), 0.0f,
+                                1.0f, "cut %.5f");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("brightness below which the light counts as dark (5/256 by default)");
     ImGui::PopItemWidth();
     ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
@@ -156,7 +163,8 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
                 light.threshold > 0.0f ? lightImax(light) / light.threshold : 0.0f);
     ImGui::SameLine();
     ImGui::Checkbox("log", &state.plotLogScale);
-    float const plotH = std::clamp(ImGui::GetContentRegionAvail().y - 4.0f, ImGui::GetFontSize() * 5.0f, ImGui::GetFontSize() * 18.0f);
+    float const plotH =
+        std::clamp(ImGui::GetContentRegionAvail().y - 4.0f, ImGui::GetFontSize() * 5.0f, ImGui::GetFontSize() * 18.0f);
     drawAttenuationPlot(light, state.plotLogScale, ImVec2(ImGui::GetContentRegionAvail().x, plotH));
 }
 

@@ -2,10 +2,10 @@
 // random lights and animation.
 #pragma once
 
-#include "model/lights_state.h"
-#include "core/point_light.h"
-#include "scene/scene_data.h"
 #include <vector>
+#include "core/point_light.h"
+#include "model/lights_state.h"
+#include "scene/scene_data.h"
 
 namespace gbl::ui {
 

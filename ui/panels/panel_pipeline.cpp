@@ -30,7 +30,9 @@ constexpr char const* kBlitHelp[] = {
 };
 
 // A section the user can fold away; open by default so every row is visible at first.
-bool section(char const* label) { return ImGui::CollapsingHeader(label, ImGuiTreeNodeFlags_DefaultOpen); }
+bool section(char const* label) {
+    return ImGui::CollapsingHeader(label, ImGuiTreeNodeFlags_DefaultOpen);
+}
 
 void helpTooltip(char const* text) {
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", text);
@@ -54,30 +56,30 @@ void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailabl
     if (ImGui::Begin(windowName(EditorWindow::Pipeline), nullptr, editorWindowFlags())) {
         float const right = rowRightEdge();
         if (section("Lighting mode")) {
-        for (std::size_t i = 0; i < kLightingModeNames.size(); ++i) {
-            auto const mode = LightingMode(i);
-            std::string const& reason = unavailable[i];
-            sameLineIfFits(checkItemWidth(kLightingModeNames[i].data()), i == 0, right);
-            ImGui::BeginDisabled(!reason.empty());
-            if (ImGui::RadioButton(kLightingModeNames[i].data(), settings.mode == mode)) settings.mode = mode;
-            ImGui::EndDisabled();
-            helpTooltip(reason.empty() ? kModeHelp[i] : reason.c_str());
-        }
-        for (std::string const& reason : unavailable) {
-            if (reason.empty()) continue;
-            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-            ImGui::TextWrapped("%s", reason.c_str());
-            ImGui::PopStyleColor();
-        }
+            for (std::size_t i = 0; i < kLightingModeNames.size(); ++i) {
+                auto const mode = LightingMode(i);
+                std::string const& reason = unavailable[i];
+                sameLineIfFits(checkItemWidth(kLightingModeNames[i].data()), i == 0, right);
+                ImGui::BeginDisabled(!reason.empty());
+                if (ImGui::RadioButton(kLightingModeNames[i].data(), settings.mode == mode)) settings.mode = mode;
+                ImGui::EndDisabled();
+                helpTooltip(reason.empty() ? kModeHelp[i] : reason.c_str());
+            }
+            for (std::string const& reason : unavailable) {
+                if (reason.empty()) continue;
+                ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+                ImGui::TextWrapped("%s", reason.c_str());
+                ImGui::PopStyleColor();
+            }
         }
 
         if (section("Volume cull mode (volumes only)")) {
-        // Greyed out, never hidden, in the other modes: rows below keep their place whatever the
-        // mode, so a click aimed at a checkbox does not land on another one.
-        bool const volumes = settings.mode == LightingMode::Volumes;
-        ImGui::BeginDisabled(!volumes);
-        radioRow("cull", settings.cull, kCullModeNames, kCullHelp);
-        ImGui::EndDisabled();
+            // Greyed out, never hidden, in the other modes: rows below keep their place whatever the
+            // mode, so a click aimed at a checkbox does not land on another one.
+            bool const volumes = settings.mode == LightingMode::Volumes;
+            ImGui::BeginDisabled(!volumes);
+            radioRow("cull", settings.cull, kCullModeNames, kCullHelp);
+            ImGui::EndDisabled();
         }
 
         if (section("Depth before the forward pass")) {
@@ -85,26 +87,29 @@ void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailabl
         }
 
         if (section("Overlays and views")) {
-        ImGui::Checkbox("Light cubes", &settings.lightCubes);
-        sameLineIfFits(checkItemWidth("Volume wireframes"), false, right);
-        ImGui::Checkbox("Volume wireframes", &settings.volumeWireframes);
-        bool heatmap = settings.view == DebugView::Heatmap;
-        if (ImGui::Checkbox("Coverage heatmap", &heatmap)) settings.view = heatmap ? DebugView::Heatmap : DebugView::Final;
-        helpTooltip("per pixel: how many light volumes covered it and how many actually lit it");
-        sameLineIfFits(checkItemWidth("Normal maps"), false, right);
-        ImGui::Checkbox("Normal maps", &settings.normalMaps);
+            ImGui::Checkbox("Light cubes", &settings.lightCubes);
+            sameLineIfFits(checkItemWidth("Volume wireframes"), false, right);
+            ImGui::Checkbox("Volume wireframes", &settings.volumeWireframes);
+            bool heatmap = settings.view == DebugView::Heatmap;
+            if (ImGui::Checkbox("Coverage heatmap", &heatmap))
+                settings.view = heatmap ? DebugView::Heatmap : DebugView::Final;
+            helpTooltip("per pixel: how many light volumes covered it and how many actually lit it");
+            sameLineIfFits(checkItemWidth("Normal maps"), false, right);
+            ImGui::Checkbox("Normal maps", &settings.normalMaps);
         }
 
         if (section("Shading")) {
-        // Labels on the right take their own width; the fields get the rest of the column.
-        ImGui::PushItemWidth(-ImGui::CalcTextSize("Shininess").x - ImGui::GetStyle().ItemInnerSpacing.x * 2.0f);
-        ImGui::ColorEdit3("Ambient", &settings.ambient.x, ImGuiColorEditFlags_Float);
-        ImGui::DragFloat("Shininess", &settings.shininess, 0.5f, 1.0f, 512.0f, "%.1f", ImGuiSliderFlags_AlwaysClamp);
-        int tonemap = int(settings.tonemap);
-        char const* tonemapItems[] = {kTonemapNames[0].data(), kTonemapNames[1].data(), kTonemapNames[2].data()};
-        if (ImGui::Combo("Tonemap", &tonemap, tonemapItems, 3)) settings.tonemap = Tonemap(tonemap);
-        ImGui::SliderFloat("Exposure", &settings.exposure, 0.05f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-        ImGui::PopItemWidth();
+            // Labels on the right take their own width; the fields get the rest of the column.
+            ImGui::PushItemWidth(-ImGui::CalcTextSize("Shininess").x - ImGui::GetStyle().ItemInnerSpacing.x * 2.0f);
+            ImGui::ColorEdit3("Ambient", &settings.ambient.x, ImGuiColorEditFlags_Float);
+            ImGui::DragFloat("Shininess", &settings.shininess, 0.5f, 1.0f, 512.0f, "%.1f",
+                             ImGuiSliderFlags_AlwaysClamp);
+            int tonemap = int(settings.tonemap);
+            char const* tonemapItems[] = {kTonemapNames[0].data(), kTonemapNames[1].data(), kTonemapNames[2].data()};
+            if (ImGui::Combo("Tonemap", &tonemap, tonemapItems, 3)) settings.tonemap = Tonemap(tonemap);
+            ImGui::SliderFloat("Exposure", &settings.exposure, 0.05f, 16.0f, "%.2f",
+                               ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+            ImGui::PopItemWidth();
         }
     }
     ImGui::End();

@@ -39,7 +39,8 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
         if (state.sample) {
             PixelSample const& s = *state.sample;
             if (!s.covered) ImGui::TextDisabled("background: no geometry at this pixel");
-            ImGuiTableFlags const flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
+            ImGuiTableFlags const flags =
+                ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
             if (ImGui::BeginTable("values", 5, flags)) {
                 ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFontSize() * 6.5f);
                 for (char const* c : {"x / r", "y / g", "z / b", "w / a"}) ImGui::TableSetupColumn(c);
@@ -85,22 +86,28 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
             std::vector<int> rows;
             std::vector<int> contributionOf(b.verdicts.size(), -1);
             for (std::size_t i = 0; i < b.lights.size(); ++i)
-                if (std::size_t(b.lights[i].lightIndex) < contributionOf.size()) contributionOf[std::size_t(b.lights[i].lightIndex)] = int(i);
+                if (std::size_t(b.lights[i].lightIndex) < contributionOf.size())
+                    contributionOf[std::size_t(b.lights[i].lightIndex)] = int(i);
             if (b.verdicts.empty()) {
                 for (std::size_t i = 0; i < b.lights.size(); ++i) rows.push_back(int(i));
             } else {
                 for (std::size_t i = 0; i < b.verdicts.size(); ++i)
                     if (state.everyLight || b.verdicts[i].withinRadius) rows.push_back(int(i));
-                auto lum = [&](int i) { glm::vec3 a = b.verdicts[std::size_t(i)].added; return a.r + a.g + a.b; };
+                auto lum = [&](int i) {
+                    glm::vec3 a = b.verdicts[std::size_t(i)].added;
+                    return a.r + a.g + a.b;
+                };
                 std::stable_sort(rows.begin(), rows.end(), [&](int x, int y) { return lum(x) > lum(y); });
             }
             // Fixed columns with horizontal scrolling: six numbers per light never fit a side column.
-            ImGuiTableFlags const flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX |
-                                          ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
+            ImGuiTableFlags const flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                                          ImGuiTableFlags_ScrollX | ImGuiTableFlags_ScrollY |
+                                          ImGuiTableFlags_SizingFixedFit;
             float const height = std::max(ImGui::GetContentRegionAvail().y - ImGui::GetStyle().ItemSpacing.y, 60.0f);
             if (ImGui::BeginTable("lights", 8, flags, ImVec2(0, height))) {
                 ImGui::TableSetupScrollFreeze(0, 1);
-                for (char const* c : {"light", "evaluated?", "added", "dist", "atten", "diffuse", "specular", "why"}) ImGui::TableSetupColumn(c);
+                for (char const* c : {"light", "evaluated?", "added", "dist", "atten", "diffuse", "specular", "why"})
+                    ImGui::TableSetupColumn(c);
                 ImGui::TableHeadersRow();
                 ImGuiListClipper clipper;
                 clipper.Begin(int(rows.size()));
@@ -115,11 +122,15 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
                         ImGui::TableNextColumn();
                         char label[16];
                         std::snprintf(label, sizeof label, "%d", index);
-                        if (ImGui::Selectable(label, false, ImGuiSelectableFlags_SpanAllColumns)) state.selectLight = index;
+                        if (ImGui::Selectable(label, false, ImGuiSelectableFlags_SpanAllColumns))
+                            state.selectLight = index;
                         ImGui::TableNextColumn();
-                        if (!v) ImGui::TextDisabled("-");
-                        else if (v->evaluations > 1) ImGui::Text("yes x%d", v->evaluations);
-                        else ImGui::TextUnformatted(v->evaluated ? "yes" : "no");
+                        if (!v)
+                            ImGui::TextDisabled("-");
+                        else if (v->evaluations > 1)
+                            ImGui::Text("yes x%d", v->evaluations);
+                        else
+                            ImGui::TextUnformatted(v->evaluated ? "yes" : "no");
                         ImGui::TableNextColumn();
                         glm::vec3 const added = v ? v->added : c->total();
                         ImGui::Text("%.3f %.3f %.3f", added.r, added.g, added.b);

@@ -42,8 +42,10 @@ void drawProgressWindow(SceneLoadingState& state) {
         ImGui::Text("Loading %s  (%.1f s)", name.c_str(), seconds);
         std::string stage = currentLoadStage(state);
         if (stage.empty()) stage = "starting";
-        if (cancelling) stage = "cancelling after " + stage;
-        else if (loadHeld(state)) stage += " (held by a test)";
+        if (cancelling)
+            stage = "cancelling after " + stage;
+        else if (loadHeld(state))
+            stage += " (held by a test)";
         ImGui::ProgressBar(currentLoadFraction(state), ImVec2(360.0f, 0.0f), stage.c_str());
         ImGui::SameLine();
         ImGui::BeginDisabled(cancelling);

@@ -15,11 +15,16 @@ namespace {
 
 char const* dialogTitle(SessionDialog d) {
     switch (d) {
-    case SessionDialog::Open: return "Open session";
-    case SessionDialog::Save: return "Save session as";
-    case SessionDialog::ExportAll: return "Export all";
-    case SessionDialog::ExportViewer: return "Export viewer";
-    case SessionDialog::None: break;
+        case SessionDialog::Open:
+            return "Open session";
+        case SessionDialog::Save:
+            return "Save session as";
+        case SessionDialog::ExportAll:
+            return "Export all";
+        case SessionDialog::ExportViewer:
+            return "Export viewer";
+        case SessionDialog::None:
+            break;
     }
     return "";
 }
@@ -33,9 +38,9 @@ char const* pathLabel(SessionDialog d) {
 void openSessionDialog(SessionPanelState& state, SessionDialog dialog, std::string const& prefill) {
     if (dialog == SessionDialog::Open || dialog == SessionDialog::Save) {
         state.message.clear();
-        openFileBrowser(state.browser,
-                        dialog == SessionDialog::Open ? FileBrowserPurpose::OpenSession : FileBrowserPurpose::SaveSession,
-                        prefill);
+        openFileBrowser(
+            state.browser,
+            dialog == SessionDialog::Open ? FileBrowserPurpose::OpenSession : FileBrowserPurpose::SaveSession, prefill);
         return;
     }
     state.dialog = dialog;
@@ -139,13 +144,21 @@ SessionRequest drawSessionDialogs(SessionPanelState& state) {
         std::string const path = state.pathInput.data();
         if (ok && !path.empty()) {
             switch (state.dialog) {
-            case SessionDialog::Open: request.kind = SessionRequestKind::Open; break;
-            case SessionDialog::Save: request.kind = SessionRequestKind::Save; break;
-            case SessionDialog::ExportAll: request.kind = SessionRequestKind::ExportAll; break;
-            case SessionDialog::ExportViewer:
-                request.kind = state.exportRaw ? SessionRequestKind::ExportViewerExr : SessionRequestKind::ExportViewerPng;
-                break;
-            case SessionDialog::None: break;
+                case SessionDialog::Open:
+                    request.kind = SessionRequestKind::Open;
+                    break;
+                case SessionDialog::Save:
+                    request.kind = SessionRequestKind::Save;
+                    break;
+                case SessionDialog::ExportAll:
+                    request.kind = SessionRequestKind::ExportAll;
+                    break;
+                case SessionDialog::ExportViewer:
+                    request.kind =
+                        state.exportRaw ? SessionRequestKind::ExportViewerExr : SessionRequestKind::ExportViewerPng;
+                    break;
+                case SessionDialog::None:
+                    break;
             }
             request.path = path;
             request.viewer = state.exportViewer;

@@ -14,21 +14,30 @@ namespace gbl::ui {
 enum class SessionDialog { None, Open, Save, ExportAll, ExportViewer };
 
 struct SessionPanelState {
-    std::string currentPath;              // session last opened or saved ("" = untitled)
+    std::string currentPath;  // session last opened or saved ("" = untitled)
     SessionDialog dialog = SessionDialog::None;
-    bool dialogJustOpened = false;        // focus the path field on the first frame
-    std::array<char, 1024> pathInput{};   // the export dialogs' text field
-    FileBrowserState browser;             // Open session and Save session as
-    int exportViewer = 0;                 // index into the G-buffer viewers
-    bool exportRaw = false;               // viewer export: raw attachment as EXR instead of PNG
+    bool dialogJustOpened = false;             // focus the path field on the first frame
+    std::array<char, 1024> pathInput{};        // the export dialogs' text field
+    FileBrowserState browser;                  // Open session and Save session as
+    int exportViewer = 0;                      // index into the G-buffer viewers
+    bool exportRaw = false;                    // viewer export: raw attachment as EXR instead of PNG
     std::optional<UncleanExit> recoveryOffer;  // shown as a modal until answered
-    std::string recoveryWhy;              // one line about the offered session (age, lights)
-    std::string message;                  // result of the last request, shown in the dialog
-    bool saveRequested = false;           // "Save session" (or Ctrl+S) with a known path: no dialog
-    bool closePending = false;            // the request succeeded: close the dialog next frame
+    std::string recoveryWhy;                   // one line about the offered session (age, lights)
+    std::string message;                       // result of the last request, shown in the dialog
+    bool saveRequested = false;                // "Save session" (or Ctrl+S) with a known path: no dialog
+    bool closePending = false;                 // the request succeeded: close the dialog next frame
 };
 
-enum class SessionRequestKind { None, Open, Save, ExportAll, ExportViewerPng, ExportViewerExr, Restore, DiscardRecovery };
+enum class SessionRequestKind {
+    None,
+    Open,
+    Save,
+    ExportAll,
+    ExportViewerPng,
+    ExportViewerExr,
+    Restore,
+    DiscardRecovery
+};
 
 struct SessionRequest {
     SessionRequestKind kind = SessionRequestKind::None;

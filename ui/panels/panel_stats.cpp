@@ -55,14 +55,18 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
         float const top = historyMax(stats.frameMs, stats.count) * 1.1f;
         // PlotLines takes a literal width (no "fill" convention), so pass the available width.
         float const plotW = ImGui::GetContentRegionAvail().x;
-        ImGui::PlotLines("##frame", stats.frameMs.data(), stats.count, offset, "frame ms", 0.0f, top, ImVec2(plotW, 45.0f));
+        ImGui::PlotLines("##frame", stats.frameMs.data(), stats.count, offset, "frame ms", 0.0f, top,
+                         ImVec2(plotW, 45.0f));
         ImGui::PlotLines("##gpu", stats.gpuFrameMs.data(), stats.count, offset, "renderer GPU ms", 0.0f, top,
                          ImVec2(plotW, 45.0f));
 
-        if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) {
+        if (ImGui::BeginTable(
+                "passes", 2,
+                ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) {
             // The number column is as wide as its widest value; names take the rest.
             ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthStretch);
-            ImGui::TableSetupColumn("GPU ms", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("GPU ms 000.000").x);
+            ImGui::TableSetupColumn("GPU ms", ImGuiTableColumnFlags_WidthFixed,
+                                    ImGui::CalcTextSize("GPU ms 000.000").x);
             ImGui::TableHeadersRow();
             for (auto const& p : f.passes) {
                 ImGui::TableNextRow();
@@ -74,7 +78,8 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
             ImGui::EndTable();
         }
 
-        ImGui::TextWrapped("Lights: %d in the list, %d submitted, %d shaded", lightCount, f.lightsSubmitted, f.lightsShaded);
+        ImGui::TextWrapped("Lights: %d in the list, %d submitted, %d shaded", lightCount, f.lightsSubmitted,
+                           f.lightsShaded);
         if (f.fragmentInvocations)
             ImGui::TextWrapped("Fragment invocations (lighting): %llu", (unsigned long long)*f.fragmentInvocations);
         else {
@@ -89,7 +94,8 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
         double const editor = c.uiCpuMs + c.viewersGpuMs + c.imguiGpuMs;
         ImGui::Text("UI build %.2f ms (CPU)", c.uiCpuMs);
         ImGui::TextWrapped("Viewers %.2f ms, ImGui draw %.2f ms (GPU)", c.viewersGpuMs, c.imguiGpuMs);
-        ImGui::TextWrapped("Editor total %.2f ms = %.0f%% of the frame", editor, frameMs > 0.0 ? 100.0 * editor / frameMs : 0.0);
+        ImGui::TextWrapped("Editor total %.2f ms = %.0f%% of the frame", editor,
+                           frameMs > 0.0 ? 100.0 * editor / frameMs : 0.0);
     }
     ImGui::End();
 }

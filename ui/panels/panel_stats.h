@@ -1,9 +1,9 @@
 // Stats window: frame times, pass times and the editor's own cost.
 #pragma once
 
+#include "gl/caps.h"
 #include "model/render_inputs.h"
 #include "model/stats_state.h"
-#include "gl/caps.h"
 
 #include <string>
 

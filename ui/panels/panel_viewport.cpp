@@ -1,9 +1,9 @@
 // Viewport window.
 #include "panels/panel_viewport.h"
 
+#include "gpu/view_target.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
-#include "gpu/view_target.h"
 
 #include <imgui.h>
 
@@ -36,8 +36,8 @@ void labelHeatLegend(ImVec2 imageMin, ImVec2 imageMax, glm::ivec2 textureSize, D
     float const x0 = imageMin.x + 8.0f * sx, x1 = imageMin.x + float(std::min(textureSize.x - 8, 264)) * sx;
     float const barTop = imageMax.y - 23.0f * sy;
     char text[96];
-    std::snprintf(text, sizeof text, "%s: 0 .. %.0f+", view == DebugView::TileLights ? "lights per tile" : "volumes per pixel",
-                  ViewParams{}.heatMax);
+    std::snprintf(text, sizeof text, "%s: 0 .. %.0f+",
+                  view == DebugView::TileLights ? "lights per tile" : "volumes per pixel", ViewParams{}.heatMax);
     ImVec2 const size = ImGui::CalcTextSize(text);
     ImVec2 const p(x0, barTop - size.y - 3.0f);
     ImDrawList* dl = ImGui::GetWindowDrawList();
@@ -61,8 +61,9 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigne
     placeWindow(EditorWindow::Viewport);
     // No padding: the image fills the window edge to edge.
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
-    bool const open = ImGui::Begin(windowName(EditorWindow::Viewport), nullptr,
-                                   editorWindowFlags() | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    bool const open =
+        ImGui::Begin(windowName(EditorWindow::Viewport), nullptr,
+                     editorWindowFlags() | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     ImGui::PopStyleVar();
     if (!open) {
         // Collapsed or a hidden tab: render nothing rather than a frame nobody sees.
@@ -82,10 +83,11 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigne
     ImGui::SameLine();
     ImGui::TextDisabled("(?)");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("left drag: orbit    right drag: look    middle drag: pan    wheel: dolly\n"
-                          "W A S D / Q E: fly (shift: faster)    F: frame the selection    Home: the scene's view\n"
-                          "click a light cube: select it    double-click: select and frame it\n"
-                          "L: lock the pixel inspector    F1: every shortcut");
+        ImGui::SetTooltip(
+            "left drag: orbit    right drag: look    middle drag: pan    wheel: dolly\n"
+            "W A S D / Q E: fly (shift: faster)    F: frame the selection    Home: the scene's view\n"
+            "click a light cube: select it    double-click: select and frame it\n"
+            "L: lock the pixel inspector    F1: every shortcut");
 
     ImVec2 const avail = ImGui::GetContentRegionAvail();
     ImVec2 const scale = ImGui::GetIO().DisplayFramebufferScale;
@@ -97,13 +99,13 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigne
 
     ImVec2 const origin = ImGui::GetCursorScreenPos();
     state.imageRect = glm::vec4(origin.x, origin.y, avail.x, avail.y);
-    ImGui::InvisibleButton("viewport-image", avail,
-                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
-                               ImGuiButtonFlags_MouseButtonMiddle);
+    ImGui::InvisibleButton(
+        "viewport-image", avail,
+        ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
     if (texture != 0) {
         // GL images start at the bottom row; flip v so the picture is upright.
-        ImGui::GetWindowDrawList()->AddImage(toImTexture(texture), origin, ImVec2(origin.x + avail.x, origin.y + avail.y),
-                                             ImVec2(0, 1), ImVec2(1, 0));
+        ImGui::GetWindowDrawList()->AddImage(
+            toImTexture(texture), origin, ImVec2(origin.x + avail.x, origin.y + avail.y), ImVec2(0, 1), ImVec2(1, 0));
     } else {
         ImGui::GetWindowDrawList()->AddText(ImVec2(origin.x + 10, origin.y + 10), IM_COL32(200, 200, 200, 255),
                                             "no frame yet");

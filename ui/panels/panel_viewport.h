@@ -1,9 +1,9 @@
 // Viewport window: the live frame, with camera drags, picking and the view selector.
 #pragma once
 
-#include "model/viewport_state.h"
 #include <glm/glm.hpp>
 #include <optional>
+#include "model/viewport_state.h"
 
 namespace gbl::ui {
 

@@ -28,7 +28,8 @@ void legend(ViewerState const& v, ImVec2 p0, float width, float lo, float hi) {
     int const steps = 48;
     for (int i = 0; i < steps; ++i) {
         float const a = x0 + (x1 - x0) * float(i) / steps, b = x0 + (x1 - x0) * float(i + 1) / steps;
-        dl->AddRectFilled(ImVec2(a, p0.y), ImVec2(b + 0.5f, p0.y + h), toImColour(colormap(map, (float(i) + 0.5f) / steps)));
+        dl->AddRectFilled(ImVec2(a, p0.y), ImVec2(b + 0.5f, p0.y + h),
+                          toImColour(colormap(map, (float(i) + 0.5f) / steps)));
     }
     float const textY = p0.y + h + 1.0f;
     float lastRight = -1e9f;
@@ -56,8 +57,9 @@ void viewerHistogram(ViewerState& v, ViewerData const& d) {
         ImGui::SameLine(0, 2);
         if (ImGui::SmallButton("Fit 1-99 %")) v.percentileFitRequested = true;
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("black/white points at the 1st and 99th percentile of the finite values: NaN, Inf\n"
-                              "and the 1 %% outliers at each end do not stretch the range");
+            ImGui::SetTooltip(
+                "black/white points at the 1st and 99th percentile of the finite values: NaN, Inf\n"
+                "and the 1 %% outliers at each end do not stretch the range");
     }
     if (d.frame < 0 || d.histogram.bins.empty()) {
         ImGui::TextDisabled("reading values...");
@@ -96,13 +98,16 @@ void viewerHistogram(ViewerState& v, ViewerData const& d) {
         if (active && v.histogramDrag >= 0) {
             float const value = valueAt(std::clamp(io.MousePos.x, p0.x, p0.x + width));
             float const gap = (hi - lo) * 1e-4f;
-            if (v.histogramDrag == 0) v.rangeMin = std::min(value, v.rangeMax - gap);
-            else v.rangeMax = std::max(value, v.rangeMin + gap);
+            if (v.histogramDrag == 0)
+                v.rangeMin = std::min(value, v.rangeMax - gap);
+            else
+                v.rangeMax = std::max(value, v.rangeMin + gap);
             v.autoFit = false;  // a dragged point stays where it was put
         }
         if (hovered)
-            ImGui::SetTooltip("%.4g\ndrag: move the nearer point (blue: black, red: white)\nbelow black %ld  above white %ld",
-                              double(valueAt(io.MousePos.x)), d.clip.below, d.clip.above);
+            ImGui::SetTooltip(
+                "%.4g\ndrag: move the nearer point (blue: black, red: white)\nbelow black %ld  above white %ld",
+                double(valueAt(io.MousePos.x)), d.clip.below, d.clip.above);
     } else if (hovered) {
         ImGui::SetTooltip("%.4g", double(valueAt(ImGui::GetIO().MousePos.x)));
     }

@@ -62,7 +62,8 @@ void viewerToolsRow(ViewerState& v, ViewerData const& d) {
     next("Pin");
     if (ImGui::SmallButton("Pin")) v.pinRequested = true;
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(d.pinned ? "pinned at frame %ld; click to pin the current frame instead" : "keep this frame's values to compare against",
+        ImGui::SetTooltip(d.pinned ? "pinned at frame %ld; click to pin the current frame instead"
+                                   : "keep this frame's values to compare against",
                           d.pinnedFrame);
     next("Diff");
     ImGui::BeginDisabled(!d.pinned);
@@ -86,8 +87,8 @@ void viewerRegionAndDiff(ViewerState& v, ViewerData const& d) {
             for (int c = 0; c < 4; ++c) {
                 if (!(mask & (1u << c))) continue;
                 ChannelStats const& s = d.regionStats.channel[std::size_t(c)];
-                ImGui::Text("%s min %.4g max %.4g mean %.4g NaN %ld", v.kind == ViewerKind::Depth ? "d" : kChannel[c], s.min,
-                            s.max, s.mean, s.nan);
+                ImGui::Text("%s min %.4g max %.4g mean %.4g NaN %ld", v.kind == ViewerKind::Depth ? "d" : kChannel[c],
+                            s.min, s.max, s.mean, s.nan);
             }
         }
     }
@@ -98,7 +99,8 @@ void viewerRegionAndDiff(ViewerState& v, ViewerData const& d) {
         }
         ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5.0f);
         ImGui::DragFloat("##threshold", &v.diffThreshold, 0.001f, 0.0f, 1e6f, "thr %.4g", ImGuiSliderFlags_AlwaysClamp);
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("pixels whose difference is above this are counted; 0 = any change");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("pixels whose difference is above this are counted; 0 = any change");
         ImGui::SameLine(0, 2);
         bool rel = v.diffMode == DiffMode::Relative;
         if (ImGui::Checkbox("rel", &rel)) v.diffMode = rel ? DiffMode::Relative : DiffMode::Absolute;

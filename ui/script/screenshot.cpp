@@ -1,8 +1,8 @@
 // Window read-back and PNG output.
 #include "script/screenshot.h"
 
-#include <epoxy/gl.h>
 #include <OpenImageIO/imageio.h>
+#include <epoxy/gl.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -48,7 +48,8 @@ std::optional<std::string> writePng(RgbImage const& image, std::string const& pa
 }
 
 ImageDifference compareImages(RgbImage const& a, RgbImage const& b) {
-    if (a.width != b.width || a.height != b.height) return {255.0, long(std::max(a.pixels.size(), b.pixels.size()) / 3)};
+    if (a.width != b.width || a.height != b.height)
+        return {255.0, long(std::max(a.pixels.size(), b.pixels.size()) / 3)};
     ImageDifference d;
     double sum = 0.0;
     for (std::size_t i = 0; i < a.pixels.size(); i += 3) {

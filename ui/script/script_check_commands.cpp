@@ -126,16 +126,22 @@ void viewerToolCommand(CommandCall const& c) {
     ViewerState& v = panel.viewers[std::size_t(i)];
     auto overlay = [&](unsigned bit) { v.overlays = on ? v.overlays | bit : v.overlays & ~bit; };
     std::string const& tool = c.w[2];
-    if (tool == "histogram") v.showHistogram = on;
-    else if (tool == "nan") overlay(kOverlayNaN);
-    else if (tool == "inf") overlay(kOverlayInf);
-    else if (tool == "negative") overlay(kOverlayNegative);
-    else if (tool == "clip") overlay(kOverlayClip);
+    if (tool == "histogram")
+        v.showHistogram = on;
+    else if (tool == "nan")
+        overlay(kOverlayNaN);
+    else if (tool == "inf")
+        overlay(kOverlayInf);
+    else if (tool == "negative")
+        overlay(kOverlayNegative);
+    else if (tool == "clip")
+        overlay(kOverlayClip);
     else if (tool == "magnifier") {
         panel.showMagnifier = on;
         panel.activeViewer = i;
         if (on && !v.picked) v.picked = glm::ivec2(c.host.renderer.width() / 2, c.host.renderer.height() / 2);
-    } else return c.check(false, "unknown tool " + tool + " (histogram nan inf negative clip magnifier)");
+    } else
+        return c.check(false, "unknown tool " + tool + " (histogram nan inf negative clip magnifier)");
 }
 
 void expectViewerStatCommand(CommandCall const& c) {
@@ -162,7 +168,8 @@ void expectViewerStatCommand(CommandCall const& c) {
 // against the stored lit value: the "why this value" answer checked against the GPU.
 void whySumsCommand(CommandCall const& c) {
     auto const& in = c.host.state.inspector;
-    if (!in.sample || !in.breakdown || in.breakdown->verdicts.empty()) return c.check(false, "no verdicts at the inspected pixel");
+    if (!in.sample || !in.breakdown || in.breakdown->verdicts.empty())
+        return c.check(false, "no verdicts at the inspected pixel");
     glm::vec3 sum = in.breakdown->ambient;
     int evaluated = 0;
     for (LightVerdict const& v : in.breakdown->verdicts) {
@@ -290,6 +297,8 @@ constexpr ScriptCommandSpec kCommands[] = {
 
 }  // namespace
 
-std::span<ScriptCommandSpec const> checkCommands() { return kCommands; }
+std::span<ScriptCommandSpec const> checkCommands() {
+    return kCommands;
+}
 
 }  // namespace gbl::ui

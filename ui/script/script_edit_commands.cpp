@@ -44,15 +44,21 @@ void setCommand(CommandCall const& c) {
                                      [&](EnumSetting const& x) { return x.key == key; });
         e != std::end(kEnumSettings))
         ok = e->set(s.pipeline, value);
-    else if (key == "exposure") s.pipeline.exposure = number(value);
-    else if (key == "cubes") s.pipeline.lightCubes = value != "0";
-    else if (key == "wireframes") s.pipeline.volumeWireframes = value != "0";
-    else if (key == "animate") s.animation.enabled = value != "0";
-    else if (key == "time") s.animation.time = number(value);
+    else if (key == "exposure")
+        s.pipeline.exposure = number(value);
+    else if (key == "cubes")
+        s.pipeline.lightCubes = value != "0";
+    else if (key == "wireframes")
+        s.pipeline.volumeWireframes = value != "0";
+    else if (key == "animate")
+        s.animation.enabled = value != "0";
+    else if (key == "time")
+        s.animation.time = number(value);
     else if (key == "lights") {
         ok = bool(c.host.defaultLights);
         if (ok) s.lights = c.host.defaultLights(std::atoi(value.c_str()));
-    } else ok = false;
+    } else
+        ok = false;
     if (!ok) c.check(false, "unknown setting or value");
 }
 
@@ -170,7 +176,11 @@ constexpr ScriptCommandSpec kCommands[] = {
 
 }  // namespace
 
-std::span<EnumSetting const> enumSettings() { return kEnumSettings; }
-std::span<ScriptCommandSpec const> editCommands() { return kCommands; }
+std::span<EnumSetting const> enumSettings() {
+    return kEnumSettings;
+}
+std::span<ScriptCommandSpec const> editCommands() {
+    return kCommands;
+}
 
 }  // namespace gbl::ui

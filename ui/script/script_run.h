@@ -74,7 +74,7 @@ std::span<ScriptCommandSpec const> sceneCommands();    // ui_script_scene.cpp
 
 // The pipeline's named switches, for `set` and `expect-setting` (script_edit_commands.cpp).
 struct EnumSetting {
-    std::string_view key;  // mode cull blit view tonemap
+    std::string_view key;                                     // mode cull blit view tonemap
     bool (*set)(PipelineSettings&, std::string const& name);  // false: no such name
     std::string_view (*get)(PipelineSettings const&);
 };

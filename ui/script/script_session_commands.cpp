@@ -6,7 +6,9 @@ namespace gbl::ui {
 namespace {
 
 // An error sentence from the host: the check passes when there is none.
-void expectOk(CommandCall const& c, std::optional<std::string> const& error) { c.check(!error, error.value_or("")); }
+void expectOk(CommandCall const& c, std::optional<std::string> const& error) {
+    c.check(!error, error.value_or(""));
+}
 
 void exportViewerCommand(CommandCall const& c) {
     if (!c.host.exportViewer) return c.check(false, "no export in this editor build");
@@ -54,6 +56,8 @@ constexpr ScriptCommandSpec kCommands[] = {
 
 }  // namespace
 
-std::span<ScriptCommandSpec const> sessionCommands() { return kCommands; }
+std::span<ScriptCommandSpec const> sessionCommands() {
+    return kCommands;
+}
 
 }  // namespace gbl::ui

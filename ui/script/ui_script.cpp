@@ -98,7 +98,9 @@ std::string joinWords(std::vector<std::string> const& words, std::size_t from) {
     return s;
 }
 
-float number(std::string const& s) { return std::strtof(s.c_str(), nullptr); }
+float number(std::string const& s) {
+    return std::strtof(s.c_str(), nullptr);
+}
 
 void ScriptRun::check(bool ok, ScriptCommand const& c, std::string const& detail) {
     std::printf("ui-test %s %s:%d %s%s%s\n", ok ? "PASS" : "FAIL", path.c_str(), c.line, joinWords(c.words, 0).c_str(),
@@ -134,9 +136,15 @@ UiScript::UiScript(UiScript&&) noexcept = default;
 UiScript& UiScript::operator=(UiScript&&) noexcept = default;
 UiScript::~UiScript() = default;
 
-bool UiScript::finished() const { return run_->next >= run_->commands.size() && run_->wait == 0 && !run_->until; }
-int UiScript::failures() const { return run_->failures; }
-bool UiScript::skipped() const { return run_->skipped; }
+bool UiScript::finished() const {
+    return run_->next >= run_->commands.size() && run_->wait == 0 && !run_->until;
+}
+int UiScript::failures() const {
+    return run_->failures;
+}
+bool UiScript::skipped() const {
+    return run_->skipped;
+}
 
 std::optional<UiScript> UiScript::load(std::string const& path, std::string* error) {
     std::ifstream in(path);

@@ -6,8 +6,8 @@
 #pragma once
 
 #include "model/editor_state.h"
-#include "renderer.h"
 #include "model/scene_loading.h"
+#include "renderer.h"
 #include "script/screenshot.h"
 
 #include <functional>

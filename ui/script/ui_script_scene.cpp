@@ -18,10 +18,14 @@ constexpr double kHoldTimeoutSeconds = 60.0;
 
 char const* outcomeName(SceneLoadOutcome o) {
     switch (o) {
-    case SceneLoadOutcome::None: return "none";
-    case SceneLoadOutcome::Loaded: return "loaded";
-    case SceneLoadOutcome::Failed: return "failed";
-    case SceneLoadOutcome::Cancelled: return "cancelled";
+        case SceneLoadOutcome::None:
+            return "none";
+        case SceneLoadOutcome::Loaded:
+            return "loaded";
+        case SceneLoadOutcome::Failed:
+            return "failed";
+        case SceneLoadOutcome::Cancelled:
+            return "cancelled";
     }
     return "?";
 }
@@ -82,7 +86,9 @@ void cameraFramesSceneCommand(CommandCall const& c) {
     c.check(inFront && worst <= 1.0f && worst >= 0.2f, detail);
 }
 
-SceneLoadingState& loading(CommandCall const& c) { return *c.host.sceneLoading; }
+SceneLoadingState& loading(CommandCall const& c) {
+    return *c.host.sceneLoading;
+}
 
 constexpr auto kLoads = CommandNeeds::SceneLoading;
 
@@ -158,6 +164,8 @@ constexpr ScriptCommandSpec kCommands[] = {
 
 }  // namespace
 
-std::span<ScriptCommandSpec const> sceneCommands() { return kCommands; }
+std::span<ScriptCommandSpec const> sceneCommands() {
+    return kCommands;
+}
 
 }  // namespace gbl::ui

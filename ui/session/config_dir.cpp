@@ -16,9 +16,13 @@ std::optional<std::string> configDirFrom(char const* xdgConfigHome, char const* 
     return std::nullopt;
 }
 
-std::optional<std::string> configDir() { return configDirFrom(std::getenv("XDG_CONFIG_HOME"), std::getenv("HOME")); }
+std::optional<std::string> configDir() {
+    return configDirFrom(std::getenv("XDG_CONFIG_HOME"), std::getenv("HOME"));
+}
 
-std::string configFile(std::string const& dir, std::string const& name) { return (fs::path(dir) / name).string(); }
+std::string configFile(std::string const& dir, std::string const& name) {
+    return (fs::path(dir) / name).string();
+}
 
 std::optional<std::string> ensureConfigDir(std::string const& dir) {
     std::error_code ec;

@@ -47,7 +47,9 @@ void applySessionValues(Session const& session, EditorState& state) {
     state.lightsPanel.message.clear();
 }
 
-UndoSnapshot undoSnapshot(EditorState const& state) { return {state.lights, state.pipeline}; }
+UndoSnapshot undoSnapshot(EditorState const& state) {
+    return {state.lights, state.pipeline};
+}
 
 void applyUndoSnapshot(UndoSnapshot const& snapshot, EditorState& state) {
     state.lights = snapshot.lights;

@@ -3,8 +3,8 @@
 #pragma once
 
 #include "model/editor_state.h"
-#include "session/session.h"
 #include "model/undo.h"
+#include "session/session.h"
 
 namespace gbl::ui {
 

@@ -17,9 +17,7 @@ namespace gbl::ui {
 namespace fs = std::filesystem;
 
 Clock steadyClock() {
-    return [] {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-    };
+    return [] { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); };
 }
 
 // --- autosave timing ------------------------------------------------------------------------
@@ -38,7 +36,9 @@ bool AutosaveTimer::due() const {
     return now - lastChange_ >= timing_.quietSeconds || now - *firstChange_ >= timing_.maxSeconds;
 }
 
-void AutosaveTimer::saved() { firstChange_.reset(); }
+void AutosaveTimer::saved() {
+    firstChange_.reset();
+}
 
 void AutosaveTimer::failed() {
     // Keep the change pending; wait a whole quiet period (and a fresh max window) before the
@@ -57,7 +57,9 @@ bool processAlive(long pid) {
 
 RecoveryDir::RecoveryDir(std::string dir) : dir_(std::move(dir)) {}
 
-std::string RecoveryDir::markerPath(long pid) const { return (fs::path(dir_) / ("running-" + std::to_string(pid))).string(); }
+std::string RecoveryDir::markerPath(long pid) const {
+    return (fs::path(dir_) / ("running-" + std::to_string(pid))).string();
+}
 
 std::string RecoveryDir::sessionPath(long pid) const {
     return (fs::path(dir_) / ("recovery-" + std::to_string(pid) + ".json")).string();

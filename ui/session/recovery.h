@@ -43,7 +43,7 @@ private:
 struct UncleanExit {
     long pid = 0;
     std::string markerPath;
-    std::string sessionPath;  // its recovery session; empty when it never autosaved
+    std::string sessionPath;       // its recovery session; empty when it never autosaved
     double modifiedSeconds = 0.0;  // recovery file age key (seconds since epoch), newest first
 };
 

@@ -1,15 +1,15 @@
 // Session JSON: writing, and reading with a full validation that names the offending field.
 #include "session/session.h"
 
-#include "session/atomic_file.h"
 #include "core/light_math.h"
+#include "session/atomic_file.h"
 
 #include <nlohmann/json.hpp>
 
-#include <cmath>
-#include <limits>
 #include <algorithm>
+#include <cmath>
 #include <initializer_list>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -26,8 +26,12 @@ constexpr std::array<std::string_view, 2> kNormalDisplayNames{"biased", "absolut
 // Written in a fixed, readable order (format and version first); reading does not care.
 using ojson = nlohmann::ordered_json;
 
-ojson vec(glm::vec3 v) { return {v.x, v.y, v.z}; }
-ojson vec(glm::vec2 v) { return {v.x, v.y}; }
+ojson vec(glm::vec3 v) {
+    return {v.x, v.y, v.z};
+}
+ojson vec(glm::vec2 v) {
+    return {v.x, v.y};
+}
 
 template <std::size_t N>
 std::string joinNames(std::array<std::string_view, N> const& names) {
@@ -56,8 +60,13 @@ ojson viewerJson(ViewerState const& v) {
 ojson sessionJson(Session const& s) {
     ojson lights = ojson::array();
     for (auto const& l : s.lights)
-        lights.push_back({{"name", l.name}, {"position", vec(l.position)}, {"color", vec(l.color)},
-                          {"intensity", l.intensity}, {"kc", l.kc}, {"kl", l.kl}, {"kq", l.kq},
+        lights.push_back({{"name", l.name},
+                          {"position", vec(l.position)},
+                          {"color", vec(l.color)},
+                          {"intensity", l.intensity},
+                          {"kc", l.kc},
+                          {"kl", l.kl},
+                          {"kq", l.kq},
                           {"threshold", l.threshold}});
     PipelineSettings const& p = s.pipeline;
     ojson viewers = ojson::object();
@@ -67,16 +76,25 @@ ojson sessionJson(Session const& s) {
         {"version", kSessionVersion},
         {"scene", {{"source", s.scene}, {"default_scene_lights", s.defaultSceneLights}}},
         {"camera",
-         {{"position", vec(s.camera.position)}, {"yaw_degrees", s.camera.yawDegrees},
-          {"pitch_degrees", s.camera.pitchDegrees}, {"fov_y_degrees", s.camera.fovYDegrees},
-          {"near", s.camera.nearPlane}, {"far", s.camera.farPlane}}},
+         {{"position", vec(s.camera.position)},
+          {"yaw_degrees", s.camera.yawDegrees},
+          {"pitch_degrees", s.camera.pitchDegrees},
+          {"fov_y_degrees", s.camera.fovYDegrees},
+          {"near", s.camera.nearPlane},
+          {"far", s.camera.farPlane}}},
         {"lights", lights},
         {"pipeline",
-         {{"mode", enumName(kLightingModeNames, p.mode)}, {"cull", enumName(kCullModeNames, p.cull)},
-          {"blit", enumName(kDepthCopyNames, p.depthCopy)}, {"tonemap", enumName(kTonemapNames, p.tonemap)},
-          {"view", enumName(kDebugViewNames, p.view)}, {"light_cubes", p.lightCubes},
-          {"volume_wireframes", p.volumeWireframes}, {"normal_maps", p.normalMaps}, {"ambient", vec(p.ambient)},
-          {"exposure", p.exposure}, {"shininess", p.shininess}}},
+         {{"mode", enumName(kLightingModeNames, p.mode)},
+          {"cull", enumName(kCullModeNames, p.cull)},
+          {"blit", enumName(kDepthCopyNames, p.depthCopy)},
+          {"tonemap", enumName(kTonemapNames, p.tonemap)},
+          {"view", enumName(kDebugViewNames, p.view)},
+          {"light_cubes", p.lightCubes},
+          {"volume_wireframes", p.volumeWireframes},
+          {"normal_maps", p.normalMaps},
+          {"ambient", vec(p.ambient)},
+          {"exposure", p.exposure},
+          {"shininess", p.shininess}}},
         {"viewers", viewers},
         {"animation", {{"enabled", s.animation.enabled}, {"speed", s.animation.speed}, {"time", s.animation.time}}},
     };
@@ -89,7 +107,9 @@ struct FieldError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-[[noreturn]] void fail(std::string const& field, std::string const& what) { throw FieldError(field + " " + what); }
+[[noreturn]] void fail(std::string const& field, std::string const& what) {
+    throw FieldError(field + " " + what);
+}
 
 std::string typeName(json const& j) {
     if (j.is_number()) return "a number";
@@ -104,13 +124,16 @@ std::string typeName(json const& j) {
 // reported as the unknown field it is, before the "missing" message it would also cause.
 class Object {
 public:
-    Object(json const& j, std::string path, std::initializer_list<std::string_view> known) : j_(j), path_(std::move(path)) {
+    Object(json const& j, std::string path, std::initializer_list<std::string_view> known)
+        : j_(j), path_(std::move(path)) {
         if (!j_.is_object()) fail(path_, "must be an object (got " + typeName(j_) + ")");
         for (auto it = j_.begin(); it != j_.end(); ++it)
             if (std::find(known.begin(), known.end(), std::string_view(it.key())) == known.end())
                 fail(field(it.key()), "is not a known field");
     }
-    std::string field(std::string_view key) const { return path_.empty() ? std::string(key) : path_ + "." + std::string(key); }
+    std::string field(std::string_view key) const {
+        return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+    }
     json const& required(std::string_view key) const {
         auto it = j_.find(key);
         if (it == j_.end()) fail(field(key), "is missing");
@@ -230,8 +253,9 @@ std::vector<PointLight> readLights(json const& j) {
 }
 
 PipelineSettings readPipeline(json const& j) {
-    Object o(j, "pipeline", {"mode", "cull", "blit", "tonemap", "view", "light_cubes", "volume_wireframes", "normal_maps",
-                             "ambient", "exposure", "shininess"});
+    Object o(j, "pipeline",
+             {"mode", "cull", "blit", "tonemap", "view", "light_cubes", "volume_wireframes", "normal_maps", "ambient",
+              "exposure", "shininess"});
     PipelineSettings p;
     p.mode = enumeration<LightingMode>(o.required("mode"), o.field("mode"), kLightingModeNames);
     p.cull = enumeration<CullMode>(o.required("cull"), o.field("cull"), kCullModeNames);
@@ -248,14 +272,16 @@ PipelineSettings readPipeline(json const& j) {
 }
 
 ViewerState readViewer(json const& j, std::string const& path, ViewerState v) {
-    Object o(j, path, {"channel_mask", "range_min", "range_max", "auto_fit", "normal_display", "linear_depth",
-                       "camera_clip_planes", "near", "far", "zoom", "center"});
+    Object o(j, path,
+             {"channel_mask", "range_min", "range_max", "auto_fit", "normal_display", "linear_depth",
+              "camera_clip_planes", "near", "far", "zoom", "center"});
     v.channelMask = unsigned(integer(o.required("channel_mask"), o.field("channel_mask"), 0, 15));
     v.rangeMin = number(o.required("range_min"), o.field("range_min"));
     v.rangeMax = number(o.required("range_max"), o.field("range_max"));
     if (v.rangeMax <= v.rangeMin) fail(o.field("range_max"), "must be greater than " + o.field("range_min"));
     v.autoFit = boolean(o.required("auto_fit"), o.field("auto_fit"));
-    v.normalDisplay = enumeration<NormalDisplay>(o.required("normal_display"), o.field("normal_display"), kNormalDisplayNames);
+    v.normalDisplay =
+        enumeration<NormalDisplay>(o.required("normal_display"), o.field("normal_display"), kNormalDisplayNames);
     v.linearDepth = boolean(o.required("linear_depth"), o.field("linear_depth"));
     v.cameraClipPlanes = boolean(o.required("camera_clip_planes"), o.field("camera_clip_planes"));
     v.nearPlane = number(o.required("near"), o.field("near"), Bound::Positive);
@@ -267,7 +293,8 @@ ViewerState readViewer(json const& j, std::string const& path, ViewerState v) {
     v.center = vector<2>(center, o.field("center"));
     for (int i = 0; i < 2; ++i)
         if (v.center[i] < 0.0f || v.center[i] > 1.0f)
-            fail(o.field("center") + "[" + std::to_string(i) + "]", "must be between 0 and 1 (got " + center[std::size_t(i)].dump() + ")");
+            fail(o.field("center") + "[" + std::to_string(i) + "]",
+                 "must be between 0 and 1 (got " + center[std::size_t(i)].dump() + ")");
     return v;
 }
 
@@ -278,15 +305,17 @@ Session readSession(json const& j) {
     if (formatIt == j.end()) fail("format", "is missing");
     json const& format = *formatIt;
     if (!format.is_string() || format.get<std::string>() != kSessionFormat)
-        fail("format", "must be \"" + std::string(kSessionFormat) + "\" (got " + format.dump() + "); this is not a gbuffer-lab session");
+        fail("format", "must be \"" + std::string(kSessionFormat) + "\" (got " + format.dump() +
+                           "); this is not a gbuffer-lab session");
     auto const versionIt = j.find("version");
     if (versionIt == j.end()) fail("version", "is missing");
     json const& version = *versionIt;
     if (!version.is_number_integer()) fail("version", "must be a whole number (got " + version.dump() + ")");
     if (version.get<long long>() != kSessionVersion)
-        fail("version", std::to_string(version.get<long long>()) + " is not supported; this program reads version " +
-                            std::to_string(kSessionVersion) +
-                            (version.get<long long>() > kSessionVersion ? " (the file comes from a newer gbuffer-lab)" : ""));
+        fail("version",
+             std::to_string(version.get<long long>()) + " is not supported; this program reads version " +
+                 std::to_string(kSessionVersion) +
+                 (version.get<long long>() > kSessionVersion ? " (the file comes from a newer gbuffer-lab)" : ""));
 
     Object const root(j, "", {"format", "version", "scene", "camera", "lights", "pipeline", "viewers", "animation"});
     Session s;
@@ -294,7 +323,8 @@ Session readSession(json const& j) {
         Object scene(root.required("scene"), "scene", {"source", "default_scene_lights"});
         s.scene = string(scene.required("source"), scene.field("source"));
         if (s.scene.empty()) fail(scene.field("source"), "must be \"default\" or the path of a glTF file (got \"\")");
-        s.defaultSceneLights = integer(scene.required("default_scene_lights"), scene.field("default_scene_lights"), 0, kMaxLights);
+        s.defaultSceneLights =
+            integer(scene.required("default_scene_lights"), scene.field("default_scene_lights"), 0, kMaxLights);
     }
     s.camera = readCamera(root.required("camera"));
     s.lights = readLights(root.required("lights"));
@@ -317,7 +347,9 @@ Session readSession(json const& j) {
 
 }  // namespace
 
-std::string sessionToJson(Session const& session) { return sessionJson(session).dump(2) + "\n"; }
+std::string sessionToJson(Session const& session) {
+    return sessionJson(session).dump(2) + "\n";
+}
 
 SessionLoad parseSession(std::string_view text, std::string const& fileLabel) {
     SessionLoad out;

@@ -3,10 +3,10 @@
 #pragma once
 
 #include "core/camera.h"
-#include "model/viewer_state.h"
-#include "model/lights_state.h"
 #include "core/pipeline_settings.h"
 #include "core/point_light.h"
+#include "model/lights_state.h"
+#include "model/viewer_state.h"
 
 #include <array>
 #include <optional>
