@@ -40,24 +40,32 @@ void channelToggles(ViewerState& v) {
 }
 
 void viewerControls(ViewerState& v) {
+    // Cells are narrow at 1280x720: what does not fit beside the channel toggles or the range
+    // goes on a row of its own instead of being cut off at the cell's edge.
+    float const font = ImGui::GetFontSize();
+    float const cellWidth = ImGui::GetContentRegionAvail().x;
     channelToggles(v);
     if (v.kind == ViewerKind::Normal) {
-        ImGui::SameLine();
+        if (cellWidth >= font * 12.0f) ImGui::SameLine();
         int mode = int(v.normalDisplay);
         ImGui::SetNextItemWidth(-1);
-        char const* items[] = {"n*0.5+0.5", "|n|"};
+        char const* items[] = {"biased", "|n|"};
         if (ImGui::Combo("##normals", &mode, items, 2)) v.normalDisplay = NormalDisplay(mode);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("biased: n*0.5+0.5 as colour; |n|: absolute values");
         return;
     }
     if (v.kind == ViewerKind::Depth) {
-        ImGui::SameLine();
+        if (cellWidth >= font * 12.0f) ImGui::SameLine();
         ImGui::Checkbox("linear", &v.linearDepth);
     }
-    ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 5.5f);
+    // Fit, auto and (depth) the clip-plane button need about this much beside the range field.
+    float const buttons = font * (v.kind == ViewerKind::Depth && v.linearDepth ? 7.0f : 5.5f);
+    bool const oneRow = cellWidth >= buttons + font * 6.0f;
+    ImGui::SetNextItemWidth(oneRow ? -buttons : -1.0f);
     float const speed = std::max((v.rangeMax - v.rangeMin) * 0.005f, 1e-5f);
     ImGui::DragFloatRange2("##range", &v.rangeMin, &v.rangeMax, speed, 0.0f, 0.0f, "%.3g", "%.3g");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("shown value = (v - min) / (max - min)");
-    ImGui::SameLine(0, 2);
+    if (oneRow) ImGui::SameLine(0, 2);
     if (ImGui::SmallButton("Fit")) v.fitRequested = true;
     ImGui::SameLine(0, 2);
     ImGui::Checkbox("##auto", &v.autoFit);
