@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
 using namespace gbl;
@@ -101,4 +102,12 @@ TEST(ViewerTools, SyncCopiesZoomAndPanToEveryViewer) {
         EXPECT_EQ(v.zoom, 4.0f);
         EXPECT_EQ(v.center, glm::vec2(0.25f, 0.75f));
     }
+}
+
+TEST(ViewerTools, StoredFloatTextShowsTheValueAndItsBits) {
+    EXPECT_EQ(storedFloatText(0.5f), "0.5 (bits 0x3f000000)");
+    EXPECT_EQ(storedFloatText(1.0f), "1 (bits 0x3f800000)");
+    // A depth near the far plane: 9 digits tell neighbouring floats apart, the bits show the step.
+    EXPECT_EQ(storedFloatText(std::nextafter(1.0f, 0.0f)), "0.99999994 (bits 0x3f7fffff)");
+    EXPECT_EQ(storedFloatText(-0.0f), "-0 (bits 0x80000000)");
 }

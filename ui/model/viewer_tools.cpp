@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 
 namespace gbl::ui {
 
@@ -108,6 +110,14 @@ void syncViewers(GBufferPanelState& panel, std::size_t from) {
         v.zoom = panel.viewers[from].zoom;
         v.center = panel.viewers[from].center;
     }
+}
+
+std::string storedFloatText(float value) {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.9g (bits 0x%08x)", double(value), unsigned(bits));
+    return buf;
 }
 
 }  // namespace gbl::ui

@@ -5,6 +5,7 @@
 #include "model/viewer_state.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace gbl::ui {
@@ -25,6 +26,10 @@ void setViewerValues(ViewerState& viewer, ViewerData& data, FloatImage values, l
 // Recomputes statistics, histogram, clipping and diff when their inputs changed; services the
 // fit requests that need no new read-back. Returns true when the diff changed (re-upload it).
 bool updateViewerStats(ViewerState& viewer, ViewerData& data);
+
+// A stored float as the magnifier and the pixel inspector show it: its value to 9 significant
+// digits (enough to round-trip) and its IEEE-754 bits, e.g. "0.5 (bits 0x3f000000)".
+std::string storedFloatText(float value);
 
 // RGBA8 rows top to bottom: the diff through turbo from 0 to `scale`, NaN/Inf pixels magenta.
 std::vector<std::uint8_t> diffHeatmap(DiffStats const& diff, float scale);
