@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <utility>
 
 namespace gbl::ui {
 
@@ -110,6 +111,25 @@ void syncViewers(GBufferPanelState& panel, std::size_t from) {
         v.zoom = panel.viewers[from].zoom;
         v.center = panel.viewers[from].center;
     }
+}
+
+bool litPinDue(LitPin const& pin, long frame) {
+    if (pin.pinRequested) return true;
+    return pin.showDiff && (pin.frame < 0 || frame - pin.frame >= kViewerDataInterval);
+}
+
+void setLitValues(LitPin& pin, FloatImage lighting, long frame) {
+    pin.values = std::move(lighting);
+    pin.frame = frame;
+    if (pin.pinRequested) {
+        pin.pinRequested = false;
+        pin.pinned = pin.values;
+        pin.pinnedFrame = frame;
+    }
+    unsigned const rgb = 0x7;
+    pin.stats = imageStats(pin.values, rgb, {}, RangeSkip::None);
+    pin.diff = pin.pinned && pin.showDiff ? diffImages(pin.values, *pin.pinned, rgb, pin.diffThreshold, pin.diffMode)
+                                          : DiffStats{};
 }
 
 std::string storedFloatText(float value) {
