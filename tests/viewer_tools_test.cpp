@@ -129,9 +129,13 @@ TEST(ViewerTools, LitPinHoldsTheFrameAndDiffsTheNextOne) {
     EXPECT_EQ(pin.stats.shown.max, 2.0f);
     EXPECT_FALSE(pin.diff.comparable);  // the diff is not shown yet
     pin.showDiff = true;
-    EXPECT_FALSE(litPinDue(pin, 3 + kViewerDataInterval - 1));
-    ASSERT_TRUE(litPinDue(pin, 3 + kViewerDataInterval));
-    setLitValues(pin, b, 3 + kViewerDataInterval);
+    ASSERT_TRUE(litPinDue(pin, 4));  // turning the diff on computes it at once
+    setLitValues(pin, a, 4);
+    ASSERT_TRUE(pin.diff.comparable);
+    EXPECT_EQ(pin.diff.max, 0.0f);
+    EXPECT_FALSE(litPinDue(pin, 4 + kViewerDataInterval - 1));
+    ASSERT_TRUE(litPinDue(pin, 4 + kViewerDataInterval));
+    setLitValues(pin, b, 4 + kViewerDataInterval);
     ASSERT_TRUE(pin.diff.comparable);
     EXPECT_EQ(pin.diff.max, 0.25f);
     EXPECT_EQ(pin.diff.maxAt, glm::ivec2(2, 1));

@@ -115,7 +115,12 @@ void syncViewers(GBufferPanelState& panel, std::size_t from) {
 
 bool litPinDue(LitPin const& pin, long frame) {
     if (pin.pinRequested) return true;
-    return pin.showDiff && (pin.frame < 0 || frame - pin.frame >= kViewerDataInterval);
+    if (!pin.showDiff) return false;
+    // Diff just turned on: at once, unless the frame size changed since the pin (then it waits).
+    bool const sameSize =
+        pin.pinned && pin.values.width == pin.pinned->width && pin.values.height == pin.pinned->height;
+    if (pin.pinned && !pin.diff.comparable && sameSize) return true;
+    return pin.frame < 0 || frame - pin.frame >= kViewerDataInterval;
 }
 
 void setLitValues(LitPin& pin, FloatImage lighting, long frame) {

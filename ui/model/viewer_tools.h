@@ -47,8 +47,8 @@ struct LitPin {
     DiffStats diff;    // against the pinned frame while showDiff
 };
 
-// Whether the lit frame must be read back this frame: a pin waits for it, a shown diff refreshes
-// every kViewerDataInterval frames.
+// Whether the lit frame must be read back this frame: a pin waits for it, a diff just turned on
+// is computed at once and then refreshes every kViewerDataInterval frames.
 bool litPinDue(LitPin const& pin, long frame);
 // Takes a fresh read-back of the lit frame: pins it when asked, recomputes statistics and diff.
 void setLitValues(LitPin& pin, FloatImage lighting, long frame);
