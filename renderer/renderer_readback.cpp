@@ -2,6 +2,8 @@
 #include "renderer_impl.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <vector>
 
 namespace gbl {
 
@@ -15,6 +17,7 @@ unsigned Renderer::texture(Attachment a) const {
         case Attachment::AlbedoSpec:
             return t.gbuffer.albedoSpec.id();
         case Attachment::Depth:
+        case Attachment::Stencil:  // one texture holds both; sampling stencil needs its texture mode
             return t.gbuffer.depth.id();
         case Attachment::Lighting:
             return t.lighting.id();
@@ -50,6 +53,26 @@ FloatImage readFramebuffer(GLuint fbo, GLenum attachment, int width, int height,
                          img.pixels.begin() + std::ptrdiff_t((height - 1 - y) * row));
     return img;
 }
+
+// Reads the stencil bits of a framebuffer's depth-stencil attachment as one float channel holding
+// the integer values, flipped like readFramebuffer.
+FloatImage readStencil(GLuint fbo, int width, int height) {
+    std::vector<std::uint8_t> bytes(std::size_t(width) * height);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, bytes.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    FloatImage img;
+    img.width = width;
+    img.height = height;
+    img.channels = 1;
+    img.pixels.resize(bytes.size());
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            img.pixels[std::size_t(y) * width + x] = float(bytes[std::size_t(height - 1 - y) * width + x]);
+    return img;
+}
 }  // namespace
 
 FloatImage Renderer::readAttachment(Attachment a) const {
@@ -64,6 +87,8 @@ FloatImage Renderer::readAttachment(Attachment a) const {
             return readFramebuffer(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT2, t.width, t.height, 4);
         case Attachment::Depth:
             return readFramebuffer(t.gbuffer.fbo.id(), GL_NONE, t.width, t.height, 1);
+        case Attachment::Stencil:
+            return readStencil(t.gbuffer.fbo.id(), t.width, t.height);
         case Attachment::Lighting:
             return readFramebuffer(t.litFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
         case Attachment::Coverage:

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
 using namespace gbl;
@@ -101,4 +102,48 @@ TEST(ViewerTools, SyncCopiesZoomAndPanToEveryViewer) {
         EXPECT_EQ(v.zoom, 4.0f);
         EXPECT_EQ(v.center, glm::vec2(0.25f, 0.75f));
     }
+}
+
+TEST(ViewerTools, StoredFloatTextShowsTheValueAndItsBits) {
+    EXPECT_EQ(storedFloatText(0.5f), "0.5 (bits 0x3f000000)");
+    EXPECT_EQ(storedFloatText(1.0f), "1 (bits 0x3f800000)");
+    // A depth near the far plane: 9 digits tell neighbouring floats apart, the bits show the step.
+    EXPECT_EQ(storedFloatText(std::nextafter(1.0f, 0.0f)), "0.99999994 (bits 0x3f7fffff)");
+    EXPECT_EQ(storedFloatText(-0.0f), "-0 (bits 0x80000000)");
+}
+
+TEST(ViewerTools, LitPinHoldsTheFrameAndDiffsTheNextOne) {
+    // 4x2 RGBA lit frames; the second changes one pixel's green by 0.25 and leaves alpha alone.
+    FloatImage a{4, 2, 4, {}};
+    for (int i = 0; i < 8; ++i) a.pixels.insert(a.pixels.end(), {0.5f, 1.0f, 2.0f, 1.0f});
+    FloatImage b = a;
+    b.pixels[(1 * 4 + 2) * 4 + 1] = 1.25f;  // texel (2, 1), green
+    LitPin pin;
+    EXPECT_FALSE(litPinDue(pin, 0));  // nothing asked for: no read-back
+    pin.pinRequested = true;
+    ASSERT_TRUE(litPinDue(pin, 0));
+    setLitValues(pin, a, 3);
+    EXPECT_FALSE(pin.pinRequested);
+    ASSERT_TRUE(pin.pinned);
+    EXPECT_EQ(pin.pinnedFrame, 3);
+    EXPECT_EQ(pin.stats.shown.max, 2.0f);
+    EXPECT_FALSE(pin.diff.comparable);  // the diff is not shown yet
+    pin.showDiff = true;
+    ASSERT_TRUE(litPinDue(pin, 4));  // turning the diff on computes it at once
+    setLitValues(pin, a, 4);
+    ASSERT_TRUE(pin.diff.comparable);
+    EXPECT_EQ(pin.diff.max, 0.0f);
+    EXPECT_FALSE(litPinDue(pin, 4 + kViewerDataInterval - 1));
+    ASSERT_TRUE(litPinDue(pin, 4 + kViewerDataInterval));
+    setLitValues(pin, b, 4 + kViewerDataInterval);
+    ASSERT_TRUE(pin.diff.comparable);
+    EXPECT_EQ(pin.diff.max, 0.25f);
+    EXPECT_EQ(pin.diff.maxAt, glm::ivec2(2, 1));
+    EXPECT_EQ(pin.diff.pixels, 8);
+    EXPECT_EQ(pin.diff.overThreshold, 1);  // threshold 0: only the changed pixel is over
+    EXPECT_EQ(pin.stats.channel[1].max, 1.25f);
+    // The heat map of the lit diff is the viewers' one: black where equal, turbo's top at the max.
+    std::vector<std::uint8_t> const rgba = diffHeatmap(pin.diff, pin.diff.max);
+    EXPECT_EQ(rgba[0], 0);
+    EXPECT_EQ(rgba[(1 * 4 + 2) * 4], 144);
 }

@@ -227,6 +227,7 @@ void renderScene(Editor& editor, FrameTimes& times) {
     t0 = EditorClock::now();
     editor.gpu.timer.begin("viewers");
     if (renderer.width() > 0 && renderer.height() > 0 && state.gbuffer.visible) drawViewers(editor, times);
+    times.litDiffTexture = ui::serviceLitPin(state.litPin, renderer, editor.frame, editor.gpu.viewerTools);
     editor.gpu.timer.end();
     samplePixel(editor, times.rendered);
     finishIfMeasuring(times);

@@ -122,7 +122,8 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     ui::drawLightsPanel(state.lightsPanel, state.lights, state.animation, state.sceneBounds);
     ui::drawPipelinePanel(state.pipeline,
                           ui::modeReasons([&](LightingMode m) { return editor.renderer->modeUnavailable(m); }));
-    ui::drawViewportPanel(state.viewport, state.pipeline, renderer.texture(Attachment::Final),
+    unsigned const viewportTexture = times.litDiffTexture ? times.litDiffTexture : renderer.texture(Attachment::Final);
+    ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, viewportTexture,
                           {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer));
     ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()});
     ui::drawPixelInspectorPanel(state.inspector);

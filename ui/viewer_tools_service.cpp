@@ -7,6 +7,28 @@
 
 namespace gbl::ui {
 
+namespace {
+// Uploads the diff's heat map into tex, (re)making it at the diff's size; a new texture is always
+// filled. Scale: the threshold when one is set (so "over" reads as the top of the ramp), else the max.
+void uploadDiff(gl::Texture& tex, DiffStats const& diff, float threshold, bool changed) {
+    int const w = diff.diff.width, h = diff.diff.height;
+    if (!tex || tex.width() != w || tex.height() != h) {
+        tex = gl::Texture::create2D(GL_RGBA8, w, h, "viewer diff");
+        tex.setFilter(GL_NEAREST, GL_NEAREST);
+        changed = true;
+    }
+    if (!changed) return;
+    std::vector<std::uint8_t> const rgba = diffHeatmap(diff, threshold > 0.0f ? threshold : diff.max);
+    // Rows top to bottom in memory; the views draw textures with v flipped (GL's bottom-up rows).
+    glBindTexture(GL_TEXTURE_2D, tex.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    for (int y = 0; y < h; ++y)
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, h - 1 - y, w, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                        rgba.data() + std::size_t(y) * std::size_t(w) * 4);
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+}  // namespace
+
 void serviceViewerTools(EditorState& state, Renderer& renderer, long frame, std::array<unsigned, 5>& textures,
                         ViewerToolsGpu& gpu) {
     GBufferPanelState& panel = state.gbuffer;
@@ -27,27 +49,18 @@ void serviceViewerTools(EditorState& state, Renderer& renderer, long frame, std:
             diffChanged = updateViewerStats(v, d);
         }
         if (!v.showDiff || !d.diff.comparable) continue;
-        gl::Texture& tex = gpu.diff[i];
-        int const w = d.diff.diff.width, h = d.diff.diff.height;
-        if (!tex || tex.width() != w || tex.height() != h) {
-            tex = gl::Texture::create2D(GL_RGBA8, w, h, "viewer diff");
-            tex.setFilter(GL_NEAREST, GL_NEAREST);
-            diffChanged = true;
-        }
-        if (diffChanged) {
-            // Scale: the threshold when one is set (so "over" reads as the top of the ramp), else the max.
-            float const scale = v.diffThreshold > 0.0f ? v.diffThreshold : d.diff.max;
-            std::vector<std::uint8_t> const rgba = diffHeatmap(d.diff, scale);
-            // Rows top to bottom in memory; the viewers draw textures with v flipped (GL's bottom-up rows).
-            glBindTexture(GL_TEXTURE_2D, tex.id());
-            glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-            for (int y = 0; y < h; ++y)
-                glTexSubImage2D(GL_TEXTURE_2D, 0, 0, h - 1 - y, w, 1, GL_RGBA, GL_UNSIGNED_BYTE,
-                                rgba.data() + std::size_t(y) * std::size_t(w) * 4);
-            glBindTexture(GL_TEXTURE_2D, 0);
-        }
-        textures[i] = tex.id();
+        uploadDiff(gpu.diff[i], d.diff, v.diffThreshold, diffChanged);
+        textures[i] = gpu.diff[i].id();
     }
+}
+
+unsigned serviceLitPin(LitPin& pin, Renderer& renderer, long frame, ViewerToolsGpu& gpu) {
+    if (renderer.width() <= 0 || renderer.height() <= 0) return 0;
+    bool const due = litPinDue(pin, frame);
+    if (due) setLitValues(pin, renderer.readAttachment(Attachment::Lighting), frame);
+    if (!pin.showDiff || !pin.diff.comparable) return 0;
+    uploadDiff(gpu.litDiff, pin.diff, pin.diffThreshold, due);
+    return gpu.litDiff.id();
 }
 
 }  // namespace gbl::ui

@@ -13,11 +13,15 @@ namespace gbl::ui {
 // One heat-map texture per viewer, made on first use.
 struct ViewerToolsGpu {
     std::array<gl::Texture, 5> diff;
+    gl::Texture litDiff;  // the viewport's lit-frame diff
 };
 
 // Call after the viewers' views are drawn; replaces textures[i] with the diff heat map where a
 // viewer shows its difference to the pinned image.
 void serviceViewerTools(EditorState& state, Renderer& renderer, long frame, std::array<unsigned, 5>& textures,
                         ViewerToolsGpu& gpu);
+// The same for the viewport's lit frame: returns the heat map to show instead of the frame while
+// the lit diff is on, else 0.
+unsigned serviceLitPin(LitPin& pin, Renderer& renderer, long frame, ViewerToolsGpu& gpu);
 
 }  // namespace gbl::ui

@@ -20,7 +20,11 @@ enum class Attachment {
     Normal,      // RGBA16F world-space unit normal, w = 1 where drawn
     AlbedoSpec,  // RGBA8 linear albedo, alpha = specular intensity
     Depth,       // DEPTH32F_STENCIL8 window-space depth of the geometry pass
-    Lighting,    // RGBA16F HDR lit image (lighting + forward passes, before tonemap)
+    // The stencil bits of that same depth-stencil texture, read back as 1 channel of the integer
+    // values 0..255. Only the stencil cull of the volumes mode writes it, and every shade visit
+    // resets its marks to 0, so after a whole frame it reads 0 wherever the frame cleared it.
+    Stencil,
+    Lighting,  // RGBA16F HDR lit image (lighting + forward passes, before tonemap)
     // RG32F: x = lights evaluated at the pixel, y = lights that lit it. Read back with 2 channels;
     // filled only by a frame (or view) showing the heat map or the lights-per-tile view.
     Coverage,

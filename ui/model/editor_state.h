@@ -12,6 +12,7 @@
 #include "model/pixel_inspector_state.h"
 #include "model/stats_state.h"
 #include "model/viewer_state.h"
+#include "model/viewer_tools.h"
 #include "model/viewport_state.h"
 #include "scene/scene_data.h"
 
@@ -48,6 +49,7 @@ struct EditorState {
     LayoutState layout;
     LightsPanelState lightsPanel;
     ViewportState viewport;
+    LitPin litPin;  // the viewport's pinned lit frame and its diff
     GBufferPanelState gbuffer;
     PixelInspectorState inspector;
     StatsState stats;

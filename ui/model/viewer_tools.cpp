@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <utility>
 
 namespace gbl::ui {
 
@@ -108,6 +111,38 @@ void syncViewers(GBufferPanelState& panel, std::size_t from) {
         v.zoom = panel.viewers[from].zoom;
         v.center = panel.viewers[from].center;
     }
+}
+
+bool litPinDue(LitPin const& pin, long frame) {
+    if (pin.pinRequested) return true;
+    if (!pin.showDiff) return false;
+    // Diff just turned on: at once, unless the frame size changed since the pin (then it waits).
+    bool const sameSize =
+        pin.pinned && pin.values.width == pin.pinned->width && pin.values.height == pin.pinned->height;
+    if (pin.pinned && !pin.diff.comparable && sameSize) return true;
+    return pin.frame < 0 || frame - pin.frame >= kViewerDataInterval;
+}
+
+void setLitValues(LitPin& pin, FloatImage lighting, long frame) {
+    pin.values = std::move(lighting);
+    pin.frame = frame;
+    if (pin.pinRequested) {
+        pin.pinRequested = false;
+        pin.pinned = pin.values;
+        pin.pinnedFrame = frame;
+    }
+    unsigned const rgb = 0x7;
+    pin.stats = imageStats(pin.values, rgb, {}, RangeSkip::None);
+    pin.diff = pin.pinned && pin.showDiff ? diffImages(pin.values, *pin.pinned, rgb, pin.diffThreshold, pin.diffMode)
+                                          : DiffStats{};
+}
+
+std::string storedFloatText(float value) {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.9g (bits 0x%08x)", double(value), unsigned(bits));
+    return buf;
 }
 
 }  // namespace gbl::ui

@@ -5,6 +5,8 @@
 #include "model/viewer_state.h"
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace gbl::ui {
@@ -25,6 +27,31 @@ void setViewerValues(ViewerState& viewer, ViewerData& data, FloatImage values, l
 // Recomputes statistics, histogram, clipping and diff when their inputs changed; services the
 // fit requests that need no new read-back. Returns true when the diff changed (re-upload it).
 bool updateViewerStats(ViewerState& viewer, ViewerData& data);
+
+// A stored float as the magnifier and the pixel inspector show it: its value to 9 significant
+// digits (enough to round-trip) and its IEEE-754 bits, e.g. "0.5 (bits 0x3f000000)".
+std::string storedFloatText(float value);
+
+// The viewport's lit HDR frame (Attachment::Lighting) held and compared like a viewer's image:
+// the same diffImages over RGB and the same heat map. Not saved in sessions.
+struct LitPin {
+    bool pinRequested = false;  // "Pin lit": the loop stores the next read-back as the pinned frame
+    bool showDiff = false;      // the viewport shows |current - pinned| instead of the frame
+    DiffMode diffMode = DiffMode::Absolute;
+    float diffThreshold = 0.0f;
+    FloatImage values;  // the last read-back of the lit frame
+    long frame = -1;    // editor frame of that read-back; -1 = none yet
+    std::optional<FloatImage> pinned;
+    long pinnedFrame = -1;
+    ImageStats stats;  // of the current lit frame, RGB
+    DiffStats diff;    // against the pinned frame while showDiff
+};
+
+// Whether the lit frame must be read back this frame: a pin waits for it, a diff just turned on
+// is computed at once and then refreshes every kViewerDataInterval frames.
+bool litPinDue(LitPin const& pin, long frame);
+// Takes a fresh read-back of the lit frame: pins it when asked, recomputes statistics and diff.
+void setLitValues(LitPin& pin, FloatImage lighting, long frame);
 
 // RGBA8 rows top to bottom: the diff through turbo from 0 to `scale`, NaN/Inf pixels magenta.
 std::vector<std::uint8_t> diffHeatmap(DiffStats const& diff, float scale);

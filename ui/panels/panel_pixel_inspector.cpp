@@ -1,6 +1,7 @@
 // Pixel inspector window.
 #include "panels/panel_pixel_inspector.h"
 
+#include "model/viewer_tools.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
 
@@ -54,6 +55,8 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
                 row("lighting", s.lighting);
                 ImGui::EndTable();
             }
+            // The depth as stored (DEPTH32F) with its raw bits, as the magnifier shows them.
+            ImGui::Text("depth stored %s", storedFloatText(s.depth).c_str());
             if (s.covered) {
                 float const err = glm::length(glm::vec3(s.position) - s.reconstructedPosition);
                 ImGui::Text("rebuilt from depth is %.3g units off", err);

@@ -46,10 +46,33 @@ void labelHeatLegend(ImVec2 imageMin, ImVec2 imageMax, glm::ivec2 textureSize, D
     dl->AddText(p, IM_COL32(235, 235, 235, 255), text);
 }
 
+// "Pin lit" holds the lit HDR frame; "Diff" shows |now - pinned| over RGB as the viewers' heat
+// map, with the statistics of both on the row (a row of its own: the toolbar above is full).
+void litPinRow(LitPin& pin) {
+    ImGui::SetCursorPosX(ImGui::GetCursorPosX() + 6);
+    if (ImGui::Button("Pin lit")) pin.pinRequested = true;
+    ImGui::SameLine();
+    if (!pin.pinned) {
+        ImGui::TextDisabled("pin the lit frame to compare later frames with it");
+        return;
+    }
+    ImGui::Checkbox("Diff", &pin.showDiff);
+    ImGui::SameLine();
+    ChannelStats const& s = pin.stats.shown;
+    if (!pin.showDiff || !pin.diff.comparable) {
+        ImGui::Text("pinned frame %ld; lit RGB %.4g .. %.4g, mean %.4g, NaN px %ld", pin.pinnedFrame, s.min, s.max,
+                    s.mean, pin.stats.nanPixels);
+        return;
+    }
+    DiffStats const& d = pin.diff;
+    ImGui::Text("vs frame %ld: max %.4g at %d,%d  mean %.4g  changed %ld of %ld px  NaN px %ld", pin.pinnedFrame, d.max,
+                d.maxAt.x, d.maxAt.y, d.mean, d.overThreshold, d.pixels, d.nanPixels);
+}
+
 }  // namespace
 
-void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigned texture, glm::ivec2 textureSize,
-                       std::optional<glm::vec2> selectedLight) {
+void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin& litPin, unsigned texture,
+                       glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight) {
     state.hovered = false;
     state.hoverPixel.reset();
     state.clickPixel.reset();
@@ -88,6 +111,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigne
             "W A S D / Q E: fly (shift: faster)    F: frame the selection    Home: the scene's view\n"
             "click a light cube: select it    double-click: select and frame it\n"
             "L: lock the pixel inspector    F1: every shortcut");
+    litPinRow(litPin);
 
     ImVec2 const avail = ImGui::GetContentRegionAvail();
     ImVec2 const scale = ImGui::GetIO().DisplayFramebufferScale;

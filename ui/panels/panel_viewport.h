@@ -3,6 +3,7 @@
 
 #include <glm/glm.hpp>
 #include <optional>
+#include "model/viewer_tools.h"
 #include "model/viewport_state.h"
 
 namespace gbl::ui {
@@ -10,7 +11,9 @@ namespace gbl::ui {
 // texture: the renderer's final image (0 while the targets are 0x0); textureSize its size.
 // selectedLight: where the selected light's centre falls in the image (0..1, top-left origin),
 // when it is in front of the camera; a ring marks it so a click on a cube visibly selects it.
-void drawViewportPanel(ViewportState& state, PipelineSettings& settings, unsigned texture, glm::ivec2 textureSize,
-                       std::optional<glm::vec2> selectedLight = std::nullopt);
+// litPin: the "Pin lit" / "Diff" controls; the caller passes the diff heat map as texture while
+// litPin.showDiff has one.
+void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin& litPin, unsigned texture,
+                       glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight = std::nullopt);
 
 }  // namespace gbl::ui

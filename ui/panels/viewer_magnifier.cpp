@@ -3,10 +3,10 @@
 #include "panels/viewer_tools.h"
 
 #include "model/colormap.h"
+#include "model/viewer_tools.h"
 
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
 
 namespace gbl::ui {
 
@@ -41,11 +41,8 @@ ImU32 shownColour(ViewerState const& v, ViewerData const& d, int x, int y) {
 void texelValues(ViewerState const& v, ViewerData const& d, glm::ivec2 t) {
     ImGui::Text("texel %d, %d", t.x, t.y);
     if (v.kind == ViewerKind::Depth) {
-        float const raw = d.values.at(t.x, t.y, 1);
-        std::uint32_t bits = 0;
-        std::memcpy(&bits, &raw, sizeof bits);
         ImGui::Text("%s %.6g", v.linearDepth ? "eye depth" : "depth", d.values.at(t.x, t.y, 0));
-        ImGui::Text("stored %.9g (bits 0x%08x)", raw, bits);
+        ImGui::Text("stored %s", storedFloatText(d.values.at(t.x, t.y, 1)).c_str());
         return;
     }
     static constexpr char const* kChannel[4] = {"R", "G", "B", "A"};
