@@ -4,19 +4,18 @@
 #include "bindings.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
+#include "gbuffer_read.glsl"
 
-uniform sampler2D uPosition;
-uniform sampler2D uNormal;
 uniform int uLightCount;
 out vec4 fragColor;
 
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
-    vec4 pos = texelFetch(uPosition, px, 0);
-    if (pos.w == 0.0) { fragColor = vec4(0.0); return; }
-    vec3 n = normalize(texelFetch(uNormal, px, 0).xyz);
+    vec3 pos;
+    if (!gbufferPosition(px, pos)) { fragColor = vec4(0.0); return; }
+    vec3 n = gbufferNormal(px);
     float lit = 0.0;
     for (int i = 0; i < uLightCount; ++i)
-        if (any(greaterThan(shadeLight(fetchLight(i), pos.xyz, n, vec3(1.0), 1.0), vec3(0.0)))) lit += 1.0;
+        if (any(greaterThan(shadeLight(fetchLight(i), pos, n, vec3(1.0), 1.0), vec3(0.0)))) lit += 1.0;
     fragColor = vec4(float(uLightCount), lit, 0.0, 0.0);
 }

@@ -5,22 +5,20 @@
 #include "bindings.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
-
-uniform sampler2D uPosition;
-uniform sampler2D uNormal;
-uniform sampler2D uAlbedoSpec;
+#include "gbuffer_read.glsl"
 
 flat in int vLight;
 out vec4 fragColor;
 
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
-    vec4 pos = texelFetch(uPosition, px, 0);
+    vec3 pos;
+    bool drawn = gbufferPosition(px, pos);
     // The mesh is a little larger than the light's sphere: surfaces between the two, and the
     // background, get nothing (the same zero the other modes compute past the radius). The
     // test needs only the first texel of the light, so most rejected fragments stop here.
     vec4 positionRadius = texelFetch(uLights, vLight * 4);
-    bool inside = pos.w != 0.0 && distance(positionRadius.xyz, pos.xyz) < positionRadius.w;
+    bool inside = drawn && distance(positionRadius.xyz, pos) < positionRadius.w;
 #ifndef COVERAGE
     // Adding zero instead of discarding: a shader that may discard makes llvmpipe (and many
     // GPUs) run it before the depth test, and in the stencil cull mode a discarded fragment
@@ -32,11 +30,10 @@ void main() {
 #endif
     Light l = fetchLight(vLight);
 #ifdef COVERAGE
-    vec3 lit = inside ? shadeLight(l, pos.xyz, normalize(texelFetch(uNormal, px, 0).xyz), vec3(1.0), 1.0) : vec3(0.0);
+    vec3 lit = inside ? shadeLight(l, pos, gbufferNormal(px), vec3(1.0), 1.0) : vec3(0.0);
     fragColor = vec4(1.0, any(greaterThan(lit, vec3(0.0))) ? 1.0 : 0.0, 0.0, 0.0);
 #else
-    vec4 as = texelFetch(uAlbedoSpec, px, 0);
-    vec3 n = normalize(texelFetch(uNormal, px, 0).xyz);
-    fragColor = vec4(shadeLight(l, pos.xyz, n, as.rgb, as.a), 0.0);
+    vec4 as = gbufferAlbedoSpec(px);
+    fragColor = vec4(shadeLight(l, pos, gbufferNormal(px), as.rgb, as.a), 0.0);
 #endif
 }

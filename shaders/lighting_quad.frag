@@ -3,10 +3,8 @@
 #include "bindings.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
+#include "gbuffer_read.glsl"
 
-uniform sampler2D uPosition;
-uniform sampler2D uNormal;
-uniform sampler2D uAlbedoSpec;
 uniform vec3 uAmbient;
 uniform int uLightCount;
 
@@ -14,16 +12,16 @@ out vec4 fragColor;
 
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
-    vec4 pos = texelFetch(uPosition, px, 0);
-    if (pos.w == 0.0) { fragColor = vec4(0.0); return; }  // background: nothing was drawn
-    vec3 n = normalize(texelFetch(uNormal, px, 0).xyz);
-    vec4 as = texelFetch(uAlbedoSpec, px, 0);
+    vec3 pos;
+    if (!gbufferPosition(px, pos)) { fragColor = vec4(0.0); return; }  // background: nothing was drawn
+    vec3 n = gbufferNormal(px);
+    vec4 as = gbufferAlbedoSpec(px);
     vec3 color = uAmbient * as.rgb;
     for (int i = 0; i < uLightCount; ++i) {
         // Distance test on the first texel alone: most lights are out of reach of most pixels.
         vec4 pr = texelFetch(uLights, i * 4);
-        if (distance(pr.xyz, pos.xyz) >= pr.w) continue;
-        color += shadeLight(fetchLight(i), pos.xyz, n, as.rgb, as.a);
+        if (distance(pr.xyz, pos) >= pr.w) continue;
+        color += shadeLight(fetchLight(i), pos, n, as.rgb, as.a);
     }
     fragColor = vec4(color, 1.0);
 }

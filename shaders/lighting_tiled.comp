@@ -5,12 +5,10 @@
 #include "bindings.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
+#include "gbuffer_read.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
-uniform sampler2D uPosition;
-uniform sampler2D uNormal;
-uniform sampler2D uAlbedoSpec;
 uniform sampler2D uDepth;
 layout(rgba16f, binding = BIND_IMAGE_LIGHTING) uniform writeonly image2D uLightingImage;
 layout(rg32f, binding = BIND_IMAGE_COVERAGE) uniform writeonly image2D uCoverageImage;
@@ -61,8 +59,8 @@ void main() {
 
     // --- depth bounds of the tile's geometry (view depth; positive floats order like uints) ---
     bool onScreen = px.x < uScreenSize.x && px.y < uScreenSize.y;
-    vec4 pos = onScreen ? texelFetch(uPosition, px, 0) : vec4(0.0);
-    bool geometry = pos.w != 0.0;
+    vec3 pos = vec3(0.0);
+    bool geometry = onScreen && gbufferPosition(px, pos);
     if (geometry) {
         float d = texelFetch(uDepth, px, 0).r;
         float viewDepth = linearDepth(d, uNear, uFar);
@@ -110,8 +108,8 @@ void main() {
     vec3 color = vec3(0.0);
     float lit = 0.0;
     if (geometry) {
-        vec3 n = normalize(texelFetch(uNormal, px, 0).xyz);
-        vec4 as = texelFetch(uAlbedoSpec, px, 0);
+        vec3 n = gbufferNormal(px);
+        vec4 as = gbufferAlbedoSpec(px);
         color = uAmbient * as.rgb;
         for (uint k = 0u; k < sWordCount; ++k) {
             int w = int(sWords[k]);
@@ -122,11 +120,11 @@ void main() {
                 // Position and radius first: lights in the tile's list that miss this pixel's
                 // surface cost one fetch (they would add exactly zero).
                 vec4 positionRadius = texelFetch(uLights, (w * 32 + b) * 4);
-                if (!(distance(positionRadius.xyz, pos.xyz) < positionRadius.w)) continue;
+                if (!(distance(positionRadius.xyz, pos) < positionRadius.w)) continue;
                 Light l = fetchLight(w * 32 + b);
-                color += shadeLight(l, pos.xyz, n, as.rgb, as.a);
+                color += shadeLight(l, pos, n, as.rgb, as.a);
                 // "Lit" as in light_volume.frag: the light reaches a surface that faces it.
-                if (uWriteCoverage && any(greaterThan(shadeLight(l, pos.xyz, n, vec3(1.0), 1.0), vec3(0.0)))) lit += 1.0;
+                if (uWriteCoverage && any(greaterThan(shadeLight(l, pos, n, vec3(1.0), 1.0), vec3(0.0)))) lit += 1.0;
             }
         }
     }
