@@ -46,6 +46,8 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
         ->capture_default_str();
     sub.add_option("--view", o.views, "Extra debug view(s) to write as view_NAME.png");
     sub.add_option("--scene", o.scene, "A glTF 2.0 scene instead of the default scene");
+    sub.add_option("--camera", o.camera,
+                   "View from the glTF file's camera N (0, 1, ... as the editor's View menu lists them)");
     sub.add_flag("--allow-outside-uris", o.allowOutsideUris, "Let the glTF file read files outside its folder");
     sub.add_option("--gl", o.glLimit, "Pretend the context is at most this OpenGL version, e.g. 3.3");
     sub.add_option("--session", o.sessionPath,
@@ -116,6 +118,15 @@ int runRender(RenderOptions const& o) {
     } else {
         prepared = prepareScene(request, &error);
         if (!prepared) return badArgument(error);
+    }
+
+    if (o.camera) {
+        std::size_t const count = prepared->scene.cameras.size();
+        if (*o.camera < 0 || std::size_t(*o.camera) >= count)
+            return badArgument("--camera " + std::to_string(*o.camera) + " does not exist: the scene has " +
+                               std::to_string(count) + (count == 1 ? " camera" : " cameras") +
+                               (count ? " (0 to " + std::to_string(count - 1) + ")" : std::string()));
+        prepared->camera = prepared->scene.cameras[std::size_t(*o.camera)].camera;
     }
 
     auto headless = createHeadlessRenderer(size->width, size->height, o.glLimit, &error);

@@ -23,6 +23,7 @@ struct RenderOptions {
     std::string cull = "front";
     std::vector<std::string> views;  // extra debug views written as view_<name>.png
     std::optional<std::string> scene;
+    std::optional<int> camera;  // view from the scene file's camera N (SceneData::cameras)
     bool allowOutsideUris = false;
     std::string glLimit;
     std::optional<std::string> sessionPath;      // render the frame a session file describes

@@ -12,15 +12,34 @@ uniform bool uAlphaMask;
 uniform float uAlphaCutoff;
 uniform bool uUseNormalMaps;
 
+// Per texture: which coordinate set it reads (0 = TEXCOORD_0, 1 = TEXCOORD_1) and its
+// KHR_texture_transform matrix (renderer/scene/texture_transform.h; identity without one).
+uniform int uBaseColorTexCoord;
+uniform mat3 uBaseColorUvTransform;
+uniform int uNormalTexCoord;
+uniform mat3 uNormalUvTransform;
+uniform int uSpecularTexCoord;
+uniform mat3 uSpecularUvTransform;
+
+// TEXCOORD_1 from mesh.vert. The passes hand the functions below TEXCOORD_0 (vUV) and each
+// texture picks its own set here, so a second set changes no pass's shader.
+in vec2 vUV1;
+
+vec2 materialTexCoord(int set, mat3 transform, vec2 uv0) {
+    vec2 uv = set == 1 ? vUV1 : uv0;
+    return (transform * vec3(uv, 1.0)).xy;
+}
+
 vec4 materialBaseColor(vec2 uv) {
     vec4 c = uBaseColorFactor;
-    if (uHasBaseColorTex) c *= texture(uBaseColorTex, uv);  // sRGB texture: sampled as linear
+    if (uHasBaseColorTex)  // sRGB texture: sampled as linear
+        c *= texture(uBaseColorTex, materialTexCoord(uBaseColorTexCoord, uBaseColorUvTransform, uv));
     return c;
 }
 
 float materialSpecular(vec2 uv) {
     float s = uSpecularFactor;
-    if (uHasSpecularTex) s *= texture(uSpecularTex, uv).r;
+    if (uHasSpecularTex) s *= texture(uSpecularTex, materialTexCoord(uSpecularTexCoord, uSpecularUvTransform, uv)).r;
     return s;
 }
 
@@ -31,7 +50,7 @@ vec3 materialNormal(vec3 normal, vec4 tangent, vec2 uv, bool frontFacing) {
     if (!uHasNormalTex || !uUseNormalMaps) return n;
     vec3 t = normalize(tangent.xyz - n * dot(n, tangent.xyz));  // Gram-Schmidt
     vec3 b = cross(n, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
-    vec3 m = texture(uNormalTex, uv).xyz * 2.0 - 1.0;
+    vec3 m = texture(uNormalTex, materialTexCoord(uNormalTexCoord, uNormalUvTransform, uv)).xyz * 2.0 - 1.0;
     m.xy *= uNormalScale;
     return normalize(mat3(t, b, n) * m);
 }

@@ -1,4 +1,4 @@
-// Home view and F: a light is framed at the centre of the view, an enclosing scene from inside.
+// Home view, the file's cameras and F: a light is framed at the centre of the view, an enclosing scene from inside.
 #include "model/camera_views.h"
 
 #include <gtest/gtest.h>
@@ -62,4 +62,30 @@ TEST(CameraViews, NothingSelectedShowsAnEnclosingSceneFromInside) {
     frameNothingSelected(rig, camera, outside, duck);
     EXPECT_EQ(rig.target, duck.center());
     expectAhead(camera, duck.center());
+}
+
+TEST(CameraViews, TheFilesCamerasAreOfferedWhereTheFilePutsThem) {
+    Camera overview;
+    overview.position = {20, 10, 0};
+    overview.lookAt({0, 4, 0});
+    overview.fovYDegrees = 40.0f;
+    Camera inside;
+    inside.position = kCourtyard.center();
+    CameraRig rig;
+    rig.moveSpeed = 2.5f;  // the user's rig settings carry over
+    std::vector<NamedView> const views =
+        sceneCameraViews({{"overview", overview, 1.5f}, {"camera 1", inside, 0.0f}}, kCourtyard, rig);
+    ASSERT_EQ(views.size(), 2u);
+    EXPECT_EQ(views[0].name, "overview");
+    EXPECT_EQ(views[0].view.camera.position, overview.position);
+    EXPECT_FLOAT_EQ(views[0].view.camera.fovYDegrees, 40.0f);
+    EXPECT_FLOAT_EQ(views[0].view.rig.moveSpeed, 2.5f);
+    // The orbit target is straight ahead, as far as the scene's centre.
+    expectAhead(views[0].view.camera, views[0].view.rig.target);
+    EXPECT_NEAR(glm::length(views[0].view.rig.target - overview.position),
+                glm::length(kCourtyard.center() - overview.position), 1e-4f);
+    // A camera at the centre itself still orbits a point ahead of it.
+    EXPECT_GT(glm::length(views[1].view.rig.target - inside.position), 0.0f);
+    expectAhead(views[1].view.camera, views[1].view.rig.target);
+    EXPECT_TRUE(sceneCameraViews({}, kCourtyard, rig).empty());
 }

@@ -72,6 +72,17 @@ EditRequest drawMainMenu(Editor& editor) {
         if (ImGui::MenuItem("Frame selection", keysFor(ui::EditorAction::FrameSelection))) edit.frameSelection = true;
         if (ImGui::MenuItem("Home view", keysFor(ui::EditorAction::HomeView))) edit.homeView = true;
         if (ImGui::MenuItem("Frame the whole scene")) ui::frameBounds(state.rig, state.camera, state.sceneBounds);
+        std::vector<ui::NamedView> const fileViews =
+            ui::sceneCameraViews(state.sceneCameras, state.sceneBounds, state.rig);
+        if (!fileViews.empty()) ui::separatorText("The file's cameras");
+        for (std::size_t i = 0; i < fileViews.size(); ++i) {
+            ImGui::PushID(int(i));
+            if (ImGui::MenuItem(fileViews[i].name.c_str())) {
+                state.camera = fileViews[i].view.camera;
+                state.rig = fileViews[i].view.rig;
+            }
+            ImGui::PopID();
+        }
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Help")) {

@@ -22,6 +22,27 @@ bool finiteVec(glm::vec3 v) {
 
 }  // namespace
 
+std::vector<std::uint32_t> triangleList(TriangleMode mode, std::vector<std::uint32_t> const& v) {
+    std::vector<std::uint32_t> out;
+    if (mode == TriangleMode::List) {
+        out.assign(v.begin(), v.begin() + std::ptrdiff_t(v.size() - v.size() % 3));
+        return out;
+    }
+    if (v.size() < 3) return out;
+    out.reserve((v.size() - 2) * 3);
+    for (std::size_t i = 0; i + 2 < v.size(); ++i) {
+        std::uint32_t a, b, c;
+        if (mode == TriangleMode::Strip) {
+            a = v[i], b = v[i + 1 + i % 2], c = v[i + 2 - i % 2];
+        } else {
+            a = v[i + 1], b = v[i + 2], c = v[0];
+        }
+        if (a == b || b == c || a == c) continue;
+        out.insert(out.end(), {a, b, c});
+    }
+    return out;
+}
+
 void generateFlatNormals(MeshData& mesh) {
     std::vector<Vertex> flat;
     flat.reserve(mesh.indices.size());
@@ -42,14 +63,15 @@ void generateFlatNormals(MeshData& mesh) {
     for (std::size_t i = 0; i < mesh.indices.size(); ++i) mesh.indices[i] = std::uint32_t(i);
 }
 
-void generateTangents(MeshData& mesh) {
+void generateTangents(MeshData& mesh, int texCoord) {
+    auto uvOf = [texCoord](Vertex const& v) { return texCoord == 1 ? v.uv1 : v.uv; };
     std::vector<glm::vec3> tan(mesh.vertices.size(), glm::vec3(0.0f));
     std::vector<glm::vec3> bit(mesh.vertices.size(), glm::vec3(0.0f));
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
         std::uint32_t const i0 = mesh.indices[t], i1 = mesh.indices[t + 1], i2 = mesh.indices[t + 2];
         Vertex const &a = mesh.vertices[i0], &b = mesh.vertices[i1], &c = mesh.vertices[i2];
         glm::vec3 const e1 = b.position - a.position, e2 = c.position - a.position;
-        glm::vec2 const d1 = b.uv - a.uv, d2 = c.uv - a.uv;
+        glm::vec2 const d1 = uvOf(b) - uvOf(a), d2 = uvOf(c) - uvOf(a);
         float const det = d1.x * d2.y - d2.x * d1.y;
         if (det == 0.0f || !std::isfinite(det)) continue;
         float const r = 1.0f / det;

@@ -91,6 +91,28 @@ bool stashImage(tinygltf::Image* image, int index, std::string*, std::string*, i
     return true;
 }
 
+// A binary glTF with another JSON chunk and the same BIN chunk.
+std::vector<std::uint8_t> rebuildGlb(std::string const& json, Glb const& glb) {
+    auto u32 = [](std::vector<std::uint8_t>& out, std::uint32_t v) {
+        for (int i = 0; i < 4; ++i) out.push_back(std::uint8_t(v >> (8 * i)));
+    };
+    std::size_t const jsonLength = (json.size() + 3) / 4 * 4, binLength = (glb.bin.size() + 3) / 4 * 4;
+    std::vector<std::uint8_t> out = {'g', 'l', 'T', 'F'};
+    u32(out, 2);
+    u32(out, std::uint32_t(12 + 8 + jsonLength + (glb.hasBin ? 8 + binLength : 0)));
+    u32(out, std::uint32_t(jsonLength));
+    u32(out, 0x4E4F534Au);
+    out.insert(out.end(), json.begin(), json.end());
+    out.resize(20 + jsonLength, ' ');  // JSON chunks are padded with spaces
+    if (glb.hasBin) {
+        u32(out, std::uint32_t(binLength));
+        u32(out, 0x004E4942u);
+        out.insert(out.end(), glb.bin.begin(), glb.bin.end());
+        out.resize(out.size() + (binLength - glb.bin.size()), 0);
+    }
+    return out;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Reading, parsing and the one-sentence error
 
@@ -127,6 +149,19 @@ SceneData loadFromBytes(std::span<std::uint8_t const> data, fs::path const& file
     progress.report(0.02f, "parsing");
     Json const doc = parseJson(jsonText, options.maxJsonDepth);
     precheck(doc, glb ? &*glb : nullptr, fsState.folder, options);
+
+    // Draco primitives keep their indices in the Draco data; tinygltf must not see their empty accessors.
+    std::string patchedJson;
+    std::vector<std::uint8_t> patchedGlb;
+    if (std::optional<Json> const patched = withoutDracoIndices(doc)) {
+        patchedJson = patched->dump();
+        if (glb) {
+            patchedGlb = rebuildGlb(patchedJson, *glb);
+            data = patchedGlb;
+        } else {
+            jsonText = std::span(reinterpret_cast<std::uint8_t const*>(patchedJson.data()), patchedJson.size());
+        }
+    }
 
     tinygltf::TinyGLTF loader;
     ImageStash stash;

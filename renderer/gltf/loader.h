@@ -45,4 +45,7 @@ GltfLoadResult loadGltf(std::filesystem::path const& file, GltfLoadOptions const
 GltfLoadResult loadGltfFromMemory(std::span<std::uint8_t const> bytes, std::filesystem::path const& file,
                                   GltfLoadOptions const& options = {});
 
+// Whether this build decodes KHR_draco_mesh_compression (configured with the Draco library).
+bool gltfDecodesDraco();
+
 }  // namespace gbl

@@ -112,4 +112,19 @@ Camera frameBounds(Bounds const& bounds, float fovYDegrees) {
     return cam;
 }
 
+Camera cameraFromGltf(glm::mat4 const& world, float yfovRadians, float znear, float zfar, float fallbackFar) {
+    Camera cam;
+    cam.position = glm::vec3(world[3]);
+    glm::vec3 const axis = glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f);
+    float const len = glm::length(axis);
+    glm::vec3 const forward = (len > 0.0f && std::isfinite(len)) ? axis / len : glm::vec3(0.0f, 0.0f, -1.0f);
+    cam.yawDegrees = glm::degrees(std::atan2(forward.z, forward.x));
+    // Straight up or down leaves no horizon to orient the view by; the editor's rig stops at 89 too.
+    cam.pitchDegrees = std::clamp(glm::degrees(std::asin(std::clamp(forward.y, -1.0f, 1.0f))), -89.0f, 89.0f);
+    cam.fovYDegrees = glm::degrees(yfovRadians);
+    cam.nearPlane = znear;
+    cam.farPlane = zfar > znear ? zfar : std::max(fallbackFar, znear * 2000.0f);
+    return cam;
+}
+
 }  // namespace gbl

@@ -36,6 +36,12 @@ std::optional<PointLight> pointLightFromGltf(glm::vec3 position, glm::vec3 color
 // the bounds that reach the whole scene, and twelve small coloured lights spread through it.
 std::vector<PointLight> generateLightsForBounds(Bounds const& bounds);
 
+// A glTF perspective camera placed by its node's world matrix: at the matrix's origin, looking
+// down its -Z axis (glTF's camera convention), with yfov in radians. Our camera has no roll, so
+// a node that rolls the camera about its view axis is shown upright. zfar <= 0 means glTF's
+// infinite projection; `fallbackFar` (a distance that holds the scene) is used then.
+Camera cameraFromGltf(glm::mat4 const& world, float yfovRadians, float znear, float zfar, float fallbackFar);
+
 // A camera looking at the bounds' centre from the front (+Z) and a little above, far enough
 // for the bounding sphere to fit the vertical field of view, with near/far planes scaled to it.
 Camera frameBounds(Bounds const& bounds, float fovYDegrees = 60.0f);

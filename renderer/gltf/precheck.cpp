@@ -1,6 +1,7 @@
 // The glTF loader's JSON pre-check: types, URIs and limits, before tinygltf reads anything else.
 #include "gltf/precheck.h"
 
+#include "gltf/draco.h"
 #include "gltf/failure.h"
 
 #include <tiny_gltf.h>
@@ -64,6 +65,9 @@ constexpr FieldRule kFieldRules[] = {
     {"accessors", "normalized", Kind::Bool},
     {"accessors", "sparse", Kind::Object},
     {"buffers", "byteLength", Kind::Index},
+    {"cameras", "type", Kind::String},
+    {"cameras", "perspective", Kind::Object},
+    {"cameras", "orthographic", Kind::Object},
     {"buffers", "uri", Kind::String},
     {"bufferViews", "buffer", Kind::Index},
     {"bufferViews", "byteOffset", Kind::Index},
@@ -78,8 +82,10 @@ constexpr FieldRule kFieldRules[] = {
     {"materials", "alphaCutoff", Kind::Number},
     {"materials", "doubleSided", Kind::Bool},
     {"materials", "extensions", Kind::Object},
+
     {"meshes", "primitives", Kind::Array},
     {"nodes", "mesh", Kind::Index},
+    {"nodes", "camera", Kind::Index},
     {"nodes", "children", Kind::IndexArray},
     {"nodes", "matrix", Kind::NumberArray},
     {"nodes", "translation", Kind::NumberArray},
@@ -96,8 +102,9 @@ constexpr char const* kCollections[] = {"accessors", "animations", "buffers", "b
                                         "scenes",    "skins",      "textures"};
 
 // Extensions whose absence changes what the file means; anything else required is refused.
-constexpr char const* kSupportedRequired[] = {"KHR_lights_punctual", "KHR_materials_specular", "KHR_mesh_quantization",
-                                              "KHR_materials_emissive_strength"};
+constexpr char const* kSupportedRequired[] = {"KHR_lights_punctual",   "KHR_materials_specular",
+                                              "KHR_mesh_quantization", "KHR_materials_emissive_strength",
+                                              "KHR_texture_transform", "KHR_draco_mesh_compression"};
 
 std::size_t base64DecodedSize(std::string const& uri) {
     auto const comma = uri.find(',');
@@ -217,6 +224,28 @@ Json const* member(Json const& object, char const* key) {
     return it == object.end() ? nullptr : &*it;
 }
 
+std::optional<Json> withoutDracoIndices(Json const& doc) {
+    Json const* meshes = member(doc, "meshes");
+    Json const* accessors = member(doc, "accessors");
+    if (!meshes) return std::nullopt;
+    std::optional<Json> out;
+    for (std::size_t m = 0; m < meshes->size(); ++m) {
+        Json const* prims = member((*meshes)[m], "primitives");
+        for (std::size_t p = 0; prims && p < prims->size(); ++p) {
+            Json const& prim = (*prims)[p];
+            Json const* ext = member(prim, "extensions");
+            Json const* indices = member(prim, "indices");
+            if (!ext || !member(*ext, "KHR_draco_mesh_compression") || !indices) continue;
+            std::uint64_t const a = indices->get<std::uint64_t>();
+            bool const hasData = accessors && a < accessors->size() && member((*accessors)[a], "bufferView");
+            if (hasData) continue;
+            if (!out) out = doc;
+            (*out)["meshes"][m]["primitives"][p].erase("indices");
+        }
+    }
+    return out;
+}
+
 void precheck(Json const& doc, Glb const* glb, fs::path const& folder, GltfLoadOptions const& options) {
     if (!doc.is_object()) fail("the JSON root is " + std::string(typeName(doc)) + ", not an object, so it is not glTF");
     Json const* asset = member(doc, "asset");
@@ -230,6 +259,8 @@ void precheck(Json const& doc, Glb const* glb, fs::path const& folder, GltfLoadO
         for (auto const& e : *req) {
             requireKind(e, Kind::String, "extensionsRequired[]");
             std::string const name = e.get<std::string>();
+            if (name == "KHR_draco_mesh_compression" && !gltfDecodesDraco())
+                fail("it requires the extension KHR_draco_mesh_compression, but " + std::string(kNoDracoReason));
             if (std::find(std::begin(kSupportedRequired), std::end(kSupportedRequired), name) ==
                 std::end(kSupportedRequired))
                 fail("it requires the extension " + printable(name, 60) + ", which this loader does not support");
@@ -266,6 +297,7 @@ void precheck(Json const& doc, Glb const* glb, fs::path const& folder, GltfLoadO
                     requireKind(*it, Kind::Index, where + ".attributes." + printable(it.key(), 40));
                 for (char const* key : {"indices", "material", "mode"})
                     if (Json const* f = member(prim, key)) requireKind(*f, Kind::Index, where + "." + key);
+                if (Json const* f = member(prim, "extensions")) requireKind(*f, Kind::Object, where + ".extensions");
             }
         }
     }

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -38,6 +39,11 @@ Json const* member(Json const& object, char const* key);
 
 // True when p (made canonical) lies in the canonical `folder` or below it.
 bool isInside(std::filesystem::path const& folder, std::filesystem::path const& p);
+
+// The document without the "indices" of Draco-compressed primitives whose index accessor has no
+// buffer view (their indices are in the Draco data), or nullopt when there are none: tinygltf 2.7
+// refuses such accessors as indices. Call after precheck().
+std::optional<Json> withoutDracoIndices(Json const& doc);
 
 // Checks the document before tinygltf sees it: asset version, required extensions, the types
 // of the properties tinygltf would silently misread, node count, buffer sizes, and that no

@@ -100,6 +100,7 @@ SceneData SceneBuilder::build() {
     if (scene_.instances.empty()) scene_.warnings.push_back("the scene has no triangles to draw");
     if (scene_.lights.empty()) scene_.lights = generateLightsForBounds(bounds);
     scene_.camera = frameBounds(bounds);
+    addCameras(placed, bounds);
     return std::move(scene_);
 }
 

@@ -1,8 +1,10 @@
 // The glTF scene builder's state and steps, shared by scene_builder.cpp (the sequence and the node
-// graph), scene_materials.cpp (images and materials), scene_meshes.cpp (primitives) and scene_lights.cpp.
+// graph), scene_materials.cpp (images and materials), scene_meshes.cpp (primitives), scene_lights.cpp and
+// scene_cameras.cpp.
 #pragma once
 
 #include "gltf/accessors.h"
+#include "gltf/draco.h"
 #include "gltf/scene_builder.h"
 
 #include <cstddef>
@@ -38,11 +40,22 @@ private:
     int sceneImage(int image, bool srgb);
     int material(int index);
 
+    // The coordinate set and KHR_texture_transform of one textureInfo object of material
+    // `index`: materials[index].<parent>.<slot> (parent may be null). texCoord is tinygltf's.
+    TextureTransform textureTransform(int index, char const* parent, char const* slot, int texCoord,
+                                      std::string const& who);
+    TextureTransform readTransform(Json const* textureInfo, int texCoord, std::string const& who);
+
     // --- meshes (scene_meshes.cpp) ----------------------------------------------------------
     std::vector<int> buildMesh(int meshIndex);
+    Json const* dracoExtension(int meshIndex, std::size_t primitive, std::string const& who);
+    // Null when the build cannot decode and the file has an uncompressed copy to use instead.
+    std::optional<DracoPrimitive> decodeDraco(Json const& ext, tinygltf::Primitive const& prim, std::string const& who);
 
     // --- lights (scene_lights.cpp) ----------------------------------------------------------
     void addLights(std::vector<std::pair<int, glm::mat4>> const& placed);
+    // The placed nodes' perspective cameras, into scene_.cameras (scene_cameras.cpp).
+    void addCameras(std::vector<std::pair<int, glm::mat4>> const& placed, Bounds const& bounds);
 
     tinygltf::Model const& model_;
     Json const& doc_;

@@ -85,6 +85,57 @@ int SceneBuilder::sceneImage(int image, bool srgb) {
     return index;
 }
 
+TextureTransform SceneBuilder::textureTransform(int index, char const* parent, char const* slot, int texCoord,
+                                                std::string const& who) {
+    Json const* info = nullptr;
+    if (Json const* mats = member(doc_, "materials"); mats && std::size_t(index) < mats->size()) {
+        Json const* holder = &(*mats)[std::size_t(index)];
+        if (parent) holder = member(*holder, parent);
+        info = holder ? member(*holder, slot) : nullptr;
+    }
+    return readTransform(info, texCoord, who + "'s " + slot);
+}
+
+// KHR_texture_transform's texCoord overrides the textureInfo's; sets past TEXCOORD_1 fall back to 0.
+TextureTransform SceneBuilder::readTransform(Json const* info, int texCoord, std::string const& who) {
+    TextureTransform t;
+    Json const* exts = info ? member(*info, "extensions") : nullptr;
+    Json const* ext = exts ? member(*exts, "KHR_texture_transform") : nullptr;
+    if (ext) {
+        requireKind(*ext, Kind::Object, who + "'s KHR_texture_transform");
+        auto vec2 = [&](char const* key, glm::vec2& out) {
+            Json const* v = member(*ext, key);
+            if (!v) return;
+            requireKind(*v, Kind::NumberArray, who + "'s KHR_texture_transform." + key);
+            if (v->size() != 2)
+                fail(who + "'s KHR_texture_transform." + key + " has " + num(v->size()) + " numbers; expected 2");
+            out = glm::vec2((*v)[0].get<float>(), (*v)[1].get<float>());
+        };
+        vec2("offset", t.offset);
+        vec2("scale", t.scale);
+        if (Json const* r = member(*ext, "rotation")) {
+            requireKind(*r, Kind::Number, who + "'s KHR_texture_transform.rotation");
+            t.rotation = r->get<float>();
+        }
+        if (Json const* c = member(*ext, "texCoord")) {
+            requireKind(*c, Kind::Index, who + "'s KHR_texture_transform.texCoord");
+            texCoord = int(std::min<std::uint64_t>(c->get<std::uint64_t>(), INT_MAX));
+        }
+        if (!std::isfinite(t.offset.x) || !std::isfinite(t.offset.y) || !std::isfinite(t.scale.x) ||
+            !std::isfinite(t.scale.y) || !std::isfinite(t.rotation)) {
+            scene_.warnings.push_back(who + " has a non-finite KHR_texture_transform; it is ignored");
+            t = TextureTransform{};
+        }
+    }
+    if (texCoord == 0 || texCoord == 1) {
+        t.texCoord = texCoord;
+    } else {
+        scene_.warnings.push_back(who + " uses TEXCOORD_" + std::to_string(texCoord) +
+                                  "; only TEXCOORD_0 and TEXCOORD_1 are loaded, so TEXCOORD_0 is used");
+    }
+    return t;
+}
+
 int SceneBuilder::material(int index) {
     if (auto it = materials_.find(index); it != materials_.end()) return it->second;
     auto const& src = model_.materials[std::size_t(index)];
@@ -98,24 +149,21 @@ int SceneBuilder::material(int index) {
                                          0.0f, 1.0f);
     else if (!pbr.baseColorFactor.empty())
         scene_.warnings.push_back(who + "'s baseColorFactor does not have 4 numbers; white is used");
-    auto noteTexCoord = [&](int texCoord, char const* what) {
-        if (texCoord != 0)
-            scene_.warnings.push_back(who + "'s " + what + " uses TEXCOORD_" + std::to_string(texCoord) +
-                                      "; only TEXCOORD_0 is loaded");
-    };
     if (int s = textureSource(pbr.baseColorTexture.index, who); s >= 0) {
         mat.baseColorTexture = sceneImage(s, true);
-        noteTexCoord(pbr.baseColorTexture.texCoord, "base colour texture");
+        mat.baseColorTransform =
+            textureTransform(index, "pbrMetallicRoughness", "baseColorTexture", pbr.baseColorTexture.texCoord, who);
     }
     if (int s = textureSource(src.normalTexture.index, who); s >= 0) {
         mat.normalTexture = sceneImage(s, false);
         mat.normalScale = std::isfinite(src.normalTexture.scale) ? float(src.normalTexture.scale) : 1.0f;
-        noteTexCoord(src.normalTexture.texCoord, "normal texture");
+        mat.normalTransform = textureTransform(index, nullptr, "normalTexture", src.normalTexture.texCoord, who);
     }
 
     // Specular intensity: docs/gltf.md, "glTF materials and lights".
     float weight = 1.0f;
     int specularImage = -1;
+    TextureTransform specularTransform;
     Json const* specExt = nullptr;
     if (Json const* mats = member(doc_, "materials"); mats && std::size_t(index) < mats->size())
         if (Json const* ext = member((*mats)[std::size_t(index)], "extensions"))
@@ -138,6 +186,12 @@ int SceneBuilder::material(int index) {
                 requireKind(*i, Kind::Index, who + "'s specularTexture.index");
                 specularImage = textureSource(int(std::min<std::uint64_t>(i->get<std::uint64_t>(), INT_MAX)), who);
             }
+            int texCoord = 0;
+            if (Json const* c = member(*t, "texCoord")) {
+                requireKind(*c, Kind::Index, who + "'s specularTexture.texCoord");
+                texCoord = int(std::min<std::uint64_t>(c->get<std::uint64_t>(), INT_MAX));
+            }
+            specularTransform = readTransform(t, texCoord, who + "'s specularTexture");
         }
     }
     float const metallic = float(pbr.metallicFactor), roughness = float(pbr.roughnessFactor);
@@ -157,6 +211,15 @@ int SceneBuilder::material(int index) {
         }
         mat.specularTexture = it->second;
         mat.specularFactor = 1.0f;
+        // The bake reads both inputs texel by texel, so they share one mapping: the
+        // metallic-roughness texture's when there is one.
+        TextureTransform const mrTransform = textureTransform(index, "pbrMetallicRoughness", "metallicRoughnessTexture",
+                                                              pbr.metallicRoughnessTexture.texCoord, who);
+        mat.specularTransform = mr ? mrTransform : specularTransform;
+        if (mr && sp && !(mrTransform == specularTransform))
+            scene_.warnings.push_back(who +
+                                      "'s specular and metallic-roughness textures use different texture "
+                                      "coordinates or transforms; the metallic-roughness one is used for both");
     } else {
         mat.specularFactor = specularFromMetallicRoughness(metallic, roughness, weight);
     }

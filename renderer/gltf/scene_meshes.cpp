@@ -1,12 +1,64 @@
-// The glTF scene builder's meshes: one MeshData per triangle primitive, with checked attributes and indices.
+// The glTF scene builder's meshes: one MeshData per triangle primitive (lists, strips and fans, plain or
+// Draco-compressed), with checked attributes and indices.
 #include "gltf/scene_builder_parts.h"
 
+#include "gltf/draco.h"
 #include "gltf/geometry.h"
 #include "gltf/mapping.h"
 
+#include <climits>
 #include <cmath>
 
 namespace gbl::gltf {
+
+namespace {
+
+// The attributes the loader reads, with their components per element.
+std::map<std::string, int> const kAttributeComponents = {
+    {"POSITION", 3}, {"NORMAL", 3}, {"TEXCOORD_0", 2}, {"TEXCOORD_1", 2}, {"TANGENT", 4}};
+
+}  // namespace
+
+// The primitive's KHR_draco_mesh_compression object, or null.
+Json const* SceneBuilder::dracoExtension(int meshIndex, std::size_t primitive, std::string const& who) {
+    Json const* meshes = member(doc_, "meshes");
+    if (!meshes || std::size_t(meshIndex) >= meshes->size()) return nullptr;
+    Json const* prims = member((*meshes)[std::size_t(meshIndex)], "primitives");
+    if (!prims || primitive >= prims->size()) return nullptr;
+    Json const* ext = member((*prims)[primitive], "extensions");
+    Json const* draco = ext ? member(*ext, "KHR_draco_mesh_compression") : nullptr;
+    if (draco) requireKind(*draco, Kind::Object, who + "'s KHR_draco_mesh_compression");
+    return draco;
+}
+
+std::optional<DracoPrimitive> SceneBuilder::decodeDraco(Json const& ext, tinygltf::Primitive const& prim,
+                                                        std::string const& who) {
+    Json const* view = member(ext, "bufferView");
+    Json const* attrs = member(ext, "attributes");
+    if (!view || !attrs) fail(who + "'s KHR_draco_mesh_compression needs a bufferView and attributes");
+    requireKind(*view, Kind::Index, who + "'s KHR_draco_mesh_compression.bufferView");
+    requireKind(*attrs, Kind::Object, who + "'s KHR_draco_mesh_compression.attributes");
+    std::map<std::string, int> ids;
+    for (auto it = attrs->begin(); it != attrs->end(); ++it) {
+        requireKind(*it, Kind::Index, who + "'s Draco attribute " + printable(it.key(), 40));
+        ids[it.key()] = int(std::min<std::uint64_t>(it->get<std::uint64_t>(), INT_MAX));
+    }
+    if (!gltfDecodesDraco()) {
+        // Not required by the file: its accessors may carry uncompressed data as well.
+        auto const pos = prim.attributes.find("POSITION");
+        bool const fallback = pos != prim.attributes.end() && pos->second >= 0 &&
+                              std::size_t(pos->second) < model_.accessors.size() &&
+                              model_.accessors[std::size_t(pos->second)].bufferView >= 0;
+        if (fallback) {
+            scene_.warnings.push_back(who + " is Draco-compressed and " + kNoDracoReason +
+                                      "; its uncompressed copy is loaded");
+            return std::nullopt;
+        }
+    }
+    int const bv = int(std::min<std::uint64_t>(view->get<std::uint64_t>(), INT_MAX));
+    return decodeDracoPrimitive(reader_.bufferView(bv, who + "'s Draco data"), ids, kAttributeComponents, who,
+                                options_);
+}
 
 std::vector<int> SceneBuilder::buildMesh(int meshIndex) {
     auto const& mesh = model_.meshes[std::size_t(meshIndex)];
@@ -14,16 +66,29 @@ std::vector<int> SceneBuilder::buildMesh(int meshIndex) {
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
         auto const& prim = mesh.primitives[p];
         std::string const who = "mesh " + std::to_string(meshIndex) + " primitive " + num(p);
-        if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1) {
-            static constexpr char const* kModes[] = {"points",    "lines",           "line loops",   "line strips",
-                                                     "triangles", "triangle strips", "triangle fans"};
-            std::string const mode = prim.mode >= 0 && prim.mode <= 6 ? kModes[prim.mode] : "an unknown mode";
-            scene_.warnings.push_back(who + " draws " + mode + "; only triangle lists are loaded, so it is skipped");
+        TriangleMode mode = TriangleMode::List;
+        if (prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP)
+            mode = TriangleMode::Strip;
+        else if (prim.mode == TINYGLTF_MODE_TRIANGLE_FAN)
+            mode = TriangleMode::Fan;
+        else if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1) {
+            static constexpr char const* kModes[] = {"points", "lines", "line loops", "line strips"};
+            std::string const what = prim.mode >= 0 && prim.mode <= 3 ? kModes[prim.mode] : "an unknown mode";
+            scene_.warnings.push_back(who + " draws " + what +
+                                      "; only triangles (lists, strips and fans) are loaded, so it is skipped");
             continue;
         }
+        std::optional<DracoPrimitive> draco;
+        if (Json const* ext = dracoExtension(meshIndex, p, who)) draco = decodeDraco(*ext, prim, who);
         auto attr = [&](char const* name) {
             auto it = prim.attributes.find(name);
             return it == prim.attributes.end() ? -1 : it->second;
+        };
+        // An attribute's values: decoded from Draco when the extension holds it, else its accessor.
+        auto read = [&](char const* name, int accessor) {
+            if (draco)
+                if (auto it = draco->attributes.find(name); it != draco->attributes.end()) return it->second;
+            return reader_.read(accessor, who + " " + name, kAttributeComponents.at(name));
         };
         int const posAccessor = attr("POSITION");
         if (posAccessor < 0) {
@@ -35,7 +100,7 @@ std::vector<int> SceneBuilder::buildMesh(int meshIndex) {
                    (mesh.primitives.size() > 1 ? " #" + num(p) : "");
         out.material = prim.material >= 0 ? material(prim.material) : -1;
 
-        std::vector<double> const pos = reader_.read(posAccessor, who + " POSITION", 3);
+        std::vector<double> const pos = read("POSITION", posAccessor);
         std::size_t const n = pos.size() / 3;
         for (std::size_t i = 0; i < pos.size(); ++i)
             if (!std::isfinite(float(pos[i]))) fail(who + " has a NaN or infinite position at vertex " + num(i / 3));
@@ -50,7 +115,7 @@ std::vector<int> SceneBuilder::buildMesh(int meshIndex) {
         };
         bool haveNormals = false;
         if (int a = attr("NORMAL"); a >= 0) {
-            std::vector<double> const v = reader_.read(a, who + " NORMAL", 3);
+            std::vector<double> const v = read("NORMAL", a);
             sameCount(v, 3, "NORMAL");
             haveNormals = true;
             for (std::size_t i = 0; i < n && haveNormals; ++i) {
@@ -63,20 +128,33 @@ std::vector<int> SceneBuilder::buildMesh(int meshIndex) {
             }
             if (!haveNormals) scene_.warnings.push_back(who + " has zero or non-finite normals; flat normals are used");
         }
-        if (int a = attr("TEXCOORD_0"); a >= 0) {
-            std::vector<double> const v = reader_.read(a, who + " TEXCOORD_0", 2);
-            sameCount(v, 2, "TEXCOORD_0");
+        for (int set : {0, 1}) {
+            std::string const name = "TEXCOORD_" + std::to_string(set);
+            int const a = attr(name.c_str());
+            if (a < 0) continue;
+            std::vector<double> const v = read(name.c_str(), a);
+            sameCount(v, 2, name.c_str());
             bool bad = false;
             for (std::size_t i = 0; i < n; ++i) {
                 glm::vec2 uv = glm::vec2(float(v[2 * i]), float(v[2 * i + 1]));
                 if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = glm::vec2(0.0f), bad = true;
-                out.vertices[i].uv = uv;
+                (set == 0 ? out.vertices[i].uv : out.vertices[i].uv1) = uv;
             }
-            if (bad) scene_.warnings.push_back(who + " has non-finite texture coordinates; they are set to 0");
+            if (bad) scene_.warnings.push_back(who + " has non-finite " + name + " values; they are set to 0");
+        }
+        if (attr("TEXCOORD_1") < 0 && out.material >= 0) {
+            Material const& m = scene_.materials[std::size_t(out.material)];
+            if (m.baseColorTransform.texCoord == 1 || m.normalTransform.texCoord == 1 ||
+                m.specularTransform.texCoord == 1) {
+                scene_.warnings.push_back(who +
+                                          "'s material reads TEXCOORD_1, which the primitive lacks; "
+                                          "TEXCOORD_0 is used");
+                for (auto& v : out.vertices) v.uv1 = v.uv;
+            }
         }
         bool haveTangents = false;
         if (int a = attr("TANGENT"); a >= 0 && haveNormals) {
-            std::vector<double> const v = reader_.read(a, who + " TANGENT", 4);
+            std::vector<double> const v = read("TANGENT", a);
             sameCount(v, 4, "TANGENT");
             haveTangents = true;
             for (std::size_t i = 0; i < n && haveTangents; ++i) {
@@ -90,29 +168,33 @@ std::vector<int> SceneBuilder::buildMesh(int meshIndex) {
             if (!haveTangents) scene_.warnings.push_back(who + " has zero or non-finite tangents; they are generated");
         }
 
-        if (prim.indices >= 0) {
+        std::vector<std::uint32_t> sequence;
+        if (draco) {
+            // Draco stores triangles; the primitive's mode and indices describe the same list.
+            sequence = std::move(draco->indices);
+            mode = TriangleMode::List;
+        } else if (prim.indices >= 0) {
             auto const& acc = model_.accessors.at(std::size_t(prim.indices));  // range checked by tinygltf
             if (acc.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
                 acc.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
                 acc.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
                 fail(who + "'s indices are not unsigned 8, 16 or 32-bit integers");
             std::vector<double> const idx = reader_.read(prim.indices, who + " indices", 1);
-            out.indices.resize(idx.size());
+            sequence.resize(idx.size());
             for (std::size_t i = 0; i < idx.size(); ++i) {
                 if (idx[i] >= double(n))
                     fail(who + " has index " + std::to_string(std::uint64_t(idx[i])) + " at position " + num(i) +
                          ", but only " + num(n) + " vertices");
-                out.indices[i] = std::uint32_t(idx[i]);
+                sequence[i] = std::uint32_t(idx[i]);
             }
         } else {
-            out.indices.resize(n);
-            for (std::size_t i = 0; i < n; ++i) out.indices[i] = std::uint32_t(i);
+            sequence.resize(n);
+            for (std::size_t i = 0; i < n; ++i) sequence[i] = std::uint32_t(i);
         }
-        if (out.indices.size() % 3 != 0) {
-            scene_.warnings.push_back(who + " has " + num(out.indices.size()) +
+        if (mode == TriangleMode::List && sequence.size() % 3 != 0)
+            scene_.warnings.push_back(who + " has " + num(sequence.size()) +
                                       " indices, not a multiple of 3; the incomplete triangle is dropped");
-            out.indices.resize(out.indices.size() - out.indices.size() % 3);
-        }
+        out.indices = triangleList(mode, sequence);
         uniqueTriangles_ += out.indices.size() / 3;
         if (uniqueTriangles_ > options_.maxTriangles)
             fail("it has more than the limit of " + num(options_.maxTriangles) + " triangles");
@@ -122,7 +204,8 @@ std::vector<int> SceneBuilder::buildMesh(int meshIndex) {
         }
         if (!haveNormals) generateFlatNormals(out);
         bool const normalMapped = prim.material >= 0 && scene_.materials[std::size_t(out.material)].normalTexture >= 0;
-        if (normalMapped && !haveTangents) generateTangents(out);
+        if (normalMapped && !haveTangents)
+            generateTangents(out, scene_.materials[std::size_t(out.material)].normalTransform.texCoord);
         scene_.meshes.push_back(std::move(out));
         parts.push_back(int(scene_.meshes.size() - 1));
     }

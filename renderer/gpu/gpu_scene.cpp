@@ -91,6 +91,7 @@ GpuMesh uploadMesh(MeshData const& mesh) {
     attrib(1, 3, offsetof(Vertex, normal));
     attrib(2, 2, offsetof(Vertex, uv));
     attrib(3, 4, offsetof(Vertex, tangent));
+    attrib(4, 2, offsetof(Vertex, uv1));
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     return g;
@@ -115,11 +116,19 @@ std::optional<std::string> uploadScene(SceneData const& scene, GpuScene& out) {
 void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter filter, bool useNormalMaps) {
     static Material const kDefaultMaterial{};
     program.set("uUseNormalMaps", useNormalMaps ? 1 : 0);
-    auto bindTexture = [&](int unit, int index, char const* flag) {
+    // The flag, coordinate set and UV matrix uniforms of one texture (shaders/material.glsl).
+    struct TextureUniforms {
+        char const* has;
+        char const* texCoord;
+        char const* transform;
+    };
+    auto bindTexture = [&](int unit, int index, TextureTransform const& t, TextureUniforms const& u) {
         glActiveTexture(GLenum(GL_TEXTURE0 + unit));
         bool const has = index >= 0;
         glBindTexture(GL_TEXTURE_2D, has ? scene.textures[std::size_t(index)].id() : scene.white.id());
-        program.set(flag, has ? 1 : 0);
+        program.set(u.has, has ? 1 : 0);
+        program.set(u.texCoord, t.texCoord);
+        program.set(u.transform, textureTransformMatrix(t));
     };
     for (auto const& inst : scene.instances) {
         GpuMesh const& mesh = scene.meshes[std::size_t(inst.mesh)];
@@ -133,9 +142,12 @@ void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter
         program.set("uSpecularFactor", m.specularFactor);
         program.set("uAlphaMask", m.alphaMode == AlphaMode::Mask ? 1 : 0);
         program.set("uAlphaCutoff", m.alphaCutoff);
-        bindTexture(slot::BIND_MATERIAL_BASE_COLOR, m.baseColorTexture, "uHasBaseColorTex");
-        bindTexture(slot::BIND_MATERIAL_NORMAL, m.normalTexture, "uHasNormalTex");
-        bindTexture(slot::BIND_MATERIAL_SPECULAR, m.specularTexture, "uHasSpecularTex");
+        bindTexture(slot::BIND_MATERIAL_BASE_COLOR, m.baseColorTexture, m.baseColorTransform,
+                    {"uHasBaseColorTex", "uBaseColorTexCoord", "uBaseColorUvTransform"});
+        bindTexture(slot::BIND_MATERIAL_NORMAL, m.normalTexture, m.normalTransform,
+                    {"uHasNormalTex", "uNormalTexCoord", "uNormalUvTransform"});
+        bindTexture(slot::BIND_MATERIAL_SPECULAR, m.specularTexture, m.specularTransform,
+                    {"uHasSpecularTex", "uSpecularTexCoord", "uSpecularUvTransform"});
         if (m.doubleSided)
             glDisable(GL_CULL_FACE);
         else

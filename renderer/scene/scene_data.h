@@ -4,6 +4,7 @@
 
 #include "core/camera.h"
 #include "core/point_light.h"
+#include "scene/texture_transform.h"
 
 #include <glm/glm.hpp>
 
@@ -19,6 +20,7 @@ struct Vertex {
     glm::vec3 normal{0.0f, 1.0f, 0.0f};
     glm::vec2 uv{0.0f};
     glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};  // xyz tangent, w = bitangent sign
+    glm::vec2 uv1{0.0f};                        // TEXCOORD_1 (zero where a mesh has none)
 };
 
 // 8-bit image, rows top to bottom. channels is 1..4.
@@ -41,6 +43,10 @@ struct Material {
     float normalScale = 1.0f;
     float specularFactor = 0.5f;  // specular intensity stored in the G-buffer's albedo alpha
     int specularTexture = -1;     // multiplies specularFactor; its red channel is used
+    // Coordinate set and KHR_texture_transform of each texture above.
+    TextureTransform baseColorTransform;
+    TextureTransform normalTransform;
+    TextureTransform specularTransform;
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;
@@ -58,6 +64,14 @@ struct MeshInstance {
     glm::mat4 model{1.0f};
 };
 
+// A camera the file defines (glTF cameras), offered as a view. The renderer draws with the
+// viewport's aspect; the file's aspect ratio is kept for information (0 = not given).
+struct SceneCamera {
+    std::string name;
+    Camera camera;
+    float aspectRatio = 0.0f;
+};
+
 struct Bounds {
     glm::vec3 min{0.0f};
     glm::vec3 max{0.0f};
@@ -72,7 +86,8 @@ struct SceneData {
     std::vector<MeshData> meshes;
     std::vector<MeshInstance> instances;
     std::vector<PointLight> lights;
-    std::optional<Camera> camera;  // a suggested camera framing the scene
+    std::optional<Camera> camera;      // a suggested camera framing the scene
+    std::vector<SceneCamera> cameras;  // the file's own cameras, in file order of the nodes using them
     std::vector<std::string> warnings;
 
     std::size_t triangleCount() const;

@@ -1,4 +1,4 @@
-// Home view and framing the selection.
+// Home view, the file's cameras and framing the selection.
 #include "model/camera_views.h"
 
 #include <algorithm>
@@ -15,6 +15,19 @@ CameraView homeView(std::optional<Camera> const& suggested, Bounds const& bounds
         frameBounds(v.rig, v.camera, bounds);
     }
     return v;
+}
+
+std::vector<NamedView> sceneCameraViews(std::vector<SceneCamera> const& cameras, Bounds const& bounds,
+                                        CameraRig const& rig) {
+    std::vector<NamedView> views;
+    for (auto const& c : cameras) {
+        NamedView v{c.name, {c.camera, rig}};
+        // At least the near plane ahead: a camera inside the scene's centre still orbits something in view.
+        float const distance = std::max(glm::length(c.camera.position - bounds.center()), c.camera.nearPlane);
+        resetTargetAhead(v.view.rig, v.view.camera, distance);
+        views.push_back(std::move(v));
+    }
+    return views;
 }
 
 bool insideBounds(glm::vec3 p, Bounds const& b) {

@@ -1,4 +1,5 @@
-// Named camera views of the editor: the scene's home view (Home) and framing the selection (F).
+// Named camera views of the editor: the scene's home view (Home), the file's own cameras and framing
+// the selection (F).
 // Pure math over the rig and camera, no GL.
 #pragma once
 
@@ -7,6 +8,8 @@
 #include "scene/scene_data.h"
 
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace gbl::ui {
 
@@ -19,6 +22,18 @@ struct CameraView {
 // The view a scene starts in: its suggested camera, or, without one, the whole scene framed
 // from the default direction. Captured when a scene is installed; Home returns to it.
 CameraView homeView(std::optional<Camera> const& suggested, Bounds const& bounds, CameraRig const& rig);
+
+// A view the View menu offers by name.
+struct NamedView {
+    std::string name;
+    CameraView view;
+};
+
+// The scene file's cameras (SceneData::cameras) as views, in file order: each camera as the file
+// places it, its rig orbiting a point ahead of it at the distance of the scene's centre, so that
+// orbiting after choosing one turns about the scene rather than the camera.
+std::vector<NamedView> sceneCameraViews(std::vector<SceneCamera> const& cameras, Bounds const& bounds,
+                                        CameraRig const& rig);
 
 bool insideBounds(glm::vec3 point, Bounds const& bounds);
 

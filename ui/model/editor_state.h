@@ -37,6 +37,7 @@ struct EditorState {
     // --- the scene being looked at ------------------------------------------------------
     std::string sceneSource;  // "default" or the glTF path
     Bounds sceneBounds;
+    std::vector<SceneCamera> sceneCameras;  // the file's own cameras, offered as views
     std::size_t sceneTriangles = 0;
     glm::vec3 orbitCenter{0.0f};     // lights orbit around this point when animated
     std::vector<PointLight> lights;  // as edited; animation moves a copy, never these

@@ -119,6 +119,7 @@ std::optional<std::string> installScene(SceneData const& scene, bool fromFile, i
     state.lights = std::move(lights);
     state.sceneSource = scene.source;
     state.sceneBounds = scene.bounds();
+    state.sceneCameras = scene.cameras;
     state.sceneTriangles = scene.triangleCount();
     state.orbitCenter = fromFile ? state.sceneBounds.center() : defaultSceneCenter();
     state.animation.time = 0.0f;
