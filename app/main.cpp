@@ -2,6 +2,7 @@
 #include "bench_command.h"
 #include "cli_values.h"
 #include "editor.h"
+#include "lesson_command.h"
 #include "render_command.h"
 
 #include <CLI/CLI.hpp>
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
     app.add_option("--frame-sleep-ms", editor.frameSleepMs,
                    "Sleep this long every frame, still taking input (tests of slow machines)")
         ->check(CLI::Range(0, 10000));
+    app.add_option("--lesson", editor.lesson, "Open a lesson at start: ID or ID:STEP (see `gbuffer-lab lessons`)");
     app.add_flag("--continuous", editor.continuousRender,
                  "Run the renderer every frame even when nothing changed (for timing)");
 
@@ -44,6 +46,10 @@ int main(int argc, char** argv) {
     CLI::App* bench = app.add_subcommand("bench", "Measure GPU time per pass for lighting modes and light counts");
     gbl::addBenchOptions(*bench, benchOptions);
 
+    gbl::LessonsOptions lessonsOptions;
+    CLI::App* lessons = app.add_subcommand("lessons", "List the guided lessons and their steps");
+    gbl::addLessonsOptions(*lessons, lessonsOptions);
+
     try {
         app.parse(argc, argv);
     } catch (CLI::ParseError const& e) {
@@ -53,6 +59,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     if (render->parsed()) return gbl::runRender(renderOptions);
+    if (lessons->parsed()) return gbl::runLessons(lessonsOptions);
     if (bench->parsed()) {
         benchOptions.lightsGiven = bench->count("--lights") > 0;
         return gbl::runBench(benchOptions);

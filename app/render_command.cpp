@@ -3,6 +3,7 @@
 
 #include "cli_values.h"
 #include "frame_export.h"
+#include "lesson_command.h"
 #include "session_cli.h"
 
 #include <cstdio>
@@ -53,13 +54,16 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
     sub.add_option("--session", o.sessionPath,
                    "Render the frame a session file describes (--mode, --cull, --blit, --time override it)");
     sub.add_option("--save-session", o.saveSessionPath, "Also write the session that reproduces this frame");
+    sub.add_option("--lesson", o.lesson, "Render step STEP (from 1) of lesson ID, as ID or ID:STEP (see `lessons`)");
+    sub.add_option("--lessons-dir", o.lessonsDir, "Read lessons from this folder instead of the shipped ones");
     sub.parse_complete_callback([&sub, &o] {
-        for (char const* name : {"--scene", "--lights", "--time", "--blit", "--mode", "--cull"})
+        for (char const* name : {"--scene", "--lights", "--time", "--blit", "--mode", "--cull", "--size"})
             if (sub.count(name) > 0) o.given.insert(name);
     });
 }
 
 int runRender(RenderOptions const& o) {
+    if (o.lesson) return runRenderLesson(o);
     std::string error;
     auto const size = parseSize(o.size, &error);
     if (!size) return badArgument(error);

@@ -29,6 +29,8 @@ struct RenderOptions {
     std::optional<std::string> sessionPath;      // render the frame a session file describes
     std::optional<std::string> saveSessionPath;  // write the session that reproduces this frame
     std::set<std::string> given;                 // options given explicitly (they override a session)
+    std::optional<std::string> lesson;           // render a lesson step instead (app/lesson_command.cpp)
+    std::optional<std::string> lessonsDir;
 };
 
 void addRenderOptions(CLI::App& sub, RenderOptions& options);

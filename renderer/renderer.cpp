@@ -223,6 +223,7 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     ShadingUniforms const shading{f.camera.position, s.shininess, s.ambient};
 
     lights.upload(input.lights);
+    volumes.enclosingScale = volumes.meshEnclosingScale * s.volumeScale;  // < 1 only to show what it cuts off
     for (auto const& l : input.lights) stats.lightsShaded += lightRadius(l).radius > 0.0f ? 1 : 0;
     bool const volumeInstances = s.mode == LightingMode::Volumes || (s.volumeWireframes && volumesReady());
     if (volumeInstances) prepareVolumeInstances(volumes, {f.camera, f.aspect, f.lights});

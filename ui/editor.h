@@ -21,6 +21,7 @@ struct EditorOptions {
     std::optional<std::string> logFramesPath;  // one JSON line per frame (ui/model/frame_log.h)
     int frameSleepMs = 0;                      // a sleep per frame that still takes input: slow-machine tests
     bool continuousRender = false;             // render every frame, changed or not (timing)
+    std::optional<std::string> lesson;         // "ID" or "ID:STEP": open this lesson step at start
 };
 
 // Opens the window and runs until it is closed, the frame count is reached or the test script

@@ -54,6 +54,7 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.actions = editor.actionLog;
     line.clipped = ui::clippedItems();
     line.sessionPath = editor.sessions->panel.currentPath;
+    lessonLogFields(editor, line);  // ui/editor_lessons.cpp
     editor.frameLog.write(line);
 }
 

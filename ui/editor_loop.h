@@ -9,11 +9,14 @@
 #include "model/camera_views.h"
 #include "model/discard_guard.h"
 #include "model/editor_state.h"
+#include "model/file_browser.h"
 #include "model/frame_log.h"
+#include "model/lesson_state.h"
 #include "model/render_inputs.h"
 #include "model/scene_loading.h"
 #include "renderer.h"
 #include "script/ui_script.h"
+#include "session/lesson_file.h"
 #include "session_controller.h"
 #include "viewer_tools_service.h"
 
@@ -120,6 +123,11 @@ struct Editor {
     bool releaseHeld = false;       // the answer was Discard: let the held requests through
     ui::FrameLog frameLog;          // --log-frames
     std::vector<PointLight> drawn;  // this frame's lights (animated)
+    // --- lessons (ui/editor_lessons.cpp) ---
+    ui::LessonState lessons;
+    ui::LessonLibrary lessonLibrary;  // read from assets/lessons on the first frame
+    bool lessonsLoaded = false;
+    ui::FileBrowserState lessonBrowser;
     long frame = 0;
     int exitCode = 0;
     EditorClock::time_point lastFrame = EditorClock::now();
@@ -170,6 +178,10 @@ void rememberHomeView(Editor& editor);
 EditRequest drawPanels(Editor& editor, FrameTimes const& times);
 // What the panels asked for and the shortcuts: picking, inspector, camera, sessions, undo.
 void handleRequests(Editor& editor, FrameTimes const& times, EditRequest const& edit);
+// The Lessons window and what it asked for (ui/editor_lessons.cpp).
+void drawLessons(Editor& editor);
+// The lesson shown and the Lessons window's buttons, for --log-frames.
+void lessonLogFields(Editor const& editor, ui::FrameLogLine& line);
 // Where an editor window falls short of usable; empty when it is visible (for UI test checks).
 std::string windowProblem(ui::EditorWindow which);
 

@@ -140,6 +140,7 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     ui::drawPixelInspectorPanel(state.inspector);
     ui::drawStatsPanel(state.stats, editor.caps, int(state.lights.size()), &editor.render, editor.renderReason);
     ui::drawLogPanel(state.log);
+    drawLessons(editor);  // the Lessons window; applies the step it asks for (editor_lessons.cpp)
     ui::drawSceneLoadingUi(editor.loading);
     ui::drawShortcutsWindow(editor.showShortcuts);
     ui::drawDiscardConfirmation(editor.discard);

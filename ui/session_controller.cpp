@@ -81,6 +81,10 @@ void SessionController::undo(EditorState& state) {
     if (auto s = undo_.undo(undoSnapshot(state), clock_())) applyUndoSnapshot(*s, state);
 }
 
+void SessionController::commitLessonStep(EditorState const& state) {
+    undo_.commit(undoSnapshot(state), clock_());
+}
+
 void SessionController::redo(EditorState& state) {
     if (auto s = undo_.redo(undoSnapshot(state), clock_())) applyUndoSnapshot(*s, state);
 }

@@ -34,6 +34,8 @@ public:
     void afterFrame(EditorState& state, bool editing);
 
     void undo(EditorState& state);
+    // A lesson step (or leaving a lesson) was applied: one undo entry of its own (UndoStack::commit).
+    void commitLessonStep(EditorState const& state);
     void redo(EditorState& state);
     // A new scene replaced the lights: the old scene's edits must not be undone into it.
     void sceneChanged(EditorState const& state);

@@ -43,6 +43,9 @@ struct PipelineSettings {
     glm::vec3 ambient{0.03f};
     float exposure = 1.0f;
     float shininess = 32.0f;
+    // Multiplies the scale that makes a light volume enclose its radius (1 = just enclosing).
+    // Below 1 the sphere's faces cut the light off: the volumes lesson shows it.
+    float volumeScale = 1.0f;
 
     // Every member, floats compared with ==: what undo's change detection wants.
     bool operator==(PipelineSettings const&) const = default;

@@ -12,7 +12,7 @@ namespace gbl {
 LightVolumeGpu createLightVolumeGpu() {
     LightVolumeGpu v;
     SphereMesh const mesh = makeLightVolumeSphere();
-    v.enclosingScale = enclosingScale(mesh);
+    v.meshEnclosingScale = v.enclosingScale = enclosingScale(mesh);
     v.vertices = gl::Buffer::create(GL_ARRAY_BUFFER, mesh.positions.size() * sizeof(glm::vec3), mesh.positions.data(),
                                     GL_STATIC_DRAW, "light volume.vertices");
     v.triangles = gl::Buffer::create(GL_ELEMENT_ARRAY_BUFFER, mesh.triangles.size() * sizeof(std::uint32_t),

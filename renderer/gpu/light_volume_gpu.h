@@ -16,7 +16,9 @@ struct LightVolumeGpu {
     gl::Buffer lines;
     GLsizei triangleIndexCount = 0;
     GLsizei lineIndexCount = 0;
-    float enclosingScale = 1.0f;  // enclosingScale() of the mesh
+    float meshEnclosingScale = 1.0f;  // enclosingScale() of the mesh
+    // What the volumes are drawn at this frame: meshEnclosingScale * PipelineSettings::volumeScale.
+    float enclosingScale = 1.0f;
 
     // Light indices to draw this frame (radius > 0 only), as an R32I buffer texture: first the
     // lights whose volume cannot contain the camera, then the ones that may.

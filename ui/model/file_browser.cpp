@@ -35,6 +35,7 @@ std::vector<std::string> extensionsFor(FileBrowserPurpose purpose) {
             return {".gltf", ".glb"};
         case FileBrowserPurpose::OpenSession:
         case FileBrowserPurpose::SaveSession:
+        case FileBrowserPurpose::OpenLesson:
             return {".json"};
     }
     return {};
@@ -48,6 +49,8 @@ char const* browserTitle(FileBrowserPurpose purpose) {
             return "Open session";
         case FileBrowserPurpose::SaveSession:
             return "Save session as";
+        case FileBrowserPurpose::OpenLesson:
+            return "Open lesson";
     }
     return "";
 }

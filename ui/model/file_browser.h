@@ -11,7 +11,7 @@
 
 namespace gbl::ui {
 
-enum class FileBrowserPurpose { OpenScene, OpenSession, SaveSession };
+enum class FileBrowserPurpose { OpenScene, OpenSession, SaveSession, OpenLesson };
 
 struct FileEntry {
     std::string name;

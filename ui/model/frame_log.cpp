@@ -61,6 +61,10 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"actions\":" + strings(l.actions);
     out += ",\"clipped\":" + strings(l.clipped);
     if (l.sessionPath) out += ",\"session\":" + quoted(*l.sessionPath);
+    out += ",\"lesson\":" + quoted(l.lesson) + ",\"lessonButtons\":[";
+    for (std::size_t i = 0; i < l.lessonButtons.size(); ++i)
+        out += (i ? "," : "") + number(l.lessonButtons[i].x) + "," + number(l.lessonButtons[i].y);
+    out += "],\"view\":" + quoted(l.view);
     return out + "}";
 }
 

@@ -34,6 +34,11 @@ struct FrameLogLine {
     std::vector<std::string> actions;        // editor actions carried out this frame
     std::vector<std::string> clipped;        // UI content cut off this frame, where ImGui can tell
     std::optional<std::string> sessionPath;  // the session file of the editor ("" = untitled)
+    // Lessons (ui/editor_lessons.cpp): "ID:STEP" shown ("" = none), the window centres of the
+    // Lessons window's Start, Back, Next and Leave buttons (0, 0 when not drawn), the debug view.
+    std::string lesson;
+    std::vector<glm::vec2> lessonButtons;
+    std::string view;
 };
 
 std::string frameLogJson(FrameLogLine const& line);

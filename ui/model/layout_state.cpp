@@ -15,6 +15,7 @@ TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize) {
     float const leftTopH = std::floor(h * kLightsShare);
     float const rightTopH = std::floor(h * kInspectorShare);
     float const statsH = std::floor(h * kStatsShare);
+    float const lessonsW = std::floor(centreW * kLessonsShare);
     glm::vec2 const p = workPos;
     switch (window) {
         case EditorWindow::Lights:
@@ -24,7 +25,9 @@ TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize) {
         case EditorWindow::Viewport:
             return {p + glm::vec2(leftW, 0), {centreW, h - stripH}};
         case EditorWindow::GBuffer:
-            return {p + glm::vec2(leftW, h - stripH), {centreW, stripH}};
+            return {p + glm::vec2(leftW, h - stripH), {centreW - lessonsW, stripH}};
+        case EditorWindow::Lessons:
+            return {p + glm::vec2(leftW + centreW - lessonsW, h - stripH), {lessonsW, stripH}};
         case EditorWindow::PixelInspector:
             return {p + glm::vec2(leftW + centreW, 0), {rightW, rightTopH}};
         case EditorWindow::Stats:

@@ -10,9 +10,9 @@ namespace gbl::ui {
 
 // Every editor window, in the order they are drawn. Names are ImGui window names, so they
 // are also the keys imgui.ini stores the docked layout under.
-enum class EditorWindow { Viewport, GBuffer, PixelInspector, Lights, Pipeline, Stats, Log };
-inline constexpr std::array<std::string_view, 7> kEditorWindowNames{
-    "Viewport", "G-buffer", "Pixel inspector", "Lights", "Pipeline", "Stats", "Log"};
+enum class EditorWindow { Viewport, GBuffer, PixelInspector, Lights, Pipeline, Stats, Log, Lessons };
+inline constexpr std::array<std::string_view, 8> kEditorWindowNames{
+    "Viewport", "G-buffer", "Pixel inspector", "Lights", "Pipeline", "Stats", "Log", "Lessons"};
 
 inline char const* windowName(EditorWindow w) {
     return kEditorWindowNames[std::size_t(w)].data();
@@ -39,6 +39,9 @@ inline constexpr float kViewerStrip = 0.30f;  // share of the centre column belo
 inline constexpr float kLightsShare = 0.50f;
 inline constexpr float kInspectorShare = 0.46f;
 inline constexpr float kStatsShare = 0.34f;
+// The Lessons window (its text beside the frame) takes this share of the strip below the
+// viewport, on the right of the G-buffer viewers.
+inline constexpr float kLessonsShare = 0.42f;
 
 // Where a window sits in the tiled arrangement (no docking): lights over pipeline on the
 // left, viewport over the G-buffer strip in the centre, pixel inspector over stats over log on

@@ -71,6 +71,13 @@ bool UndoStack::observe(std::vector<PointLight> const& lights, PipelineSettings 
     return true;
 }
 
+bool UndoStack::commit(UndoSnapshot const& current, double now) {
+    lastTarget_.clear();  // nothing before merges into this step
+    bool const recorded = observe(current, false, now);
+    lastTarget_ = "lights";  // "lights" never merges: nothing after merges into it either
+    return recorded;
+}
+
 std::optional<UndoSnapshot> UndoStack::undo(UndoSnapshot const& current, double now) {
     observe(current, false, now);
     if (undo_.empty()) return std::nullopt;

@@ -53,6 +53,11 @@ public:
     // The same without building a snapshot: the lights are only copied when they changed.
     bool observe(std::vector<PointLight> const& lights, PipelineSettings const& pipeline, bool editing, double now);
 
+    // Lessons (ui/model/lesson_state.h): records `current` as a step of its own at once, never
+    // merged with the step before or after it, so each lesson step is one undo entry. False
+    // when nothing changed.
+    bool commit(UndoSnapshot const& current, double now);
+
     // Steps back/forward. `current` is the live state: an edit not recorded yet is recorded
     // first, so undo always undoes what the user sees last. nullopt when there is nothing.
     std::optional<UndoSnapshot> undo(UndoSnapshot const& current, double now);

@@ -27,7 +27,8 @@ void buildDefaultDockLayout(ImGuiID dockspace, ImGuiViewport const* viewport) {
     // The right column is a share of what is left after the left column was taken.
     ImGuiID const right =
         ImGui::DockBuilderSplitNode(centre, ImGuiDir_Right, kRightColumn / (1.0f - kLeftColumn), nullptr, &centre);
-    ImGuiID const strip = ImGui::DockBuilderSplitNode(centre, ImGuiDir_Down, kViewerStrip, nullptr, &centre);
+    ImGuiID strip = ImGui::DockBuilderSplitNode(centre, ImGuiDir_Down, kViewerStrip, nullptr, &centre);
+    ImGuiID const lessons = ImGui::DockBuilderSplitNode(strip, ImGuiDir_Right, kLessonsShare, nullptr, &strip);
     ImGuiID leftTop = left;
     ImGuiID const leftBottom =
         ImGui::DockBuilderSplitNode(leftTop, ImGuiDir_Down, 1.0f - kLightsShare, nullptr, &leftTop);
@@ -40,6 +41,7 @@ void buildDefaultDockLayout(ImGuiID dockspace, ImGuiViewport const* viewport) {
 
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::Viewport), centre);
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::GBuffer), strip);
+    ImGui::DockBuilderDockWindow(windowName(EditorWindow::Lessons), lessons);
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::Lights), leftTop);
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::Pipeline), leftBottom);
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::PixelInspector), rightTop);

@@ -94,7 +94,8 @@ ojson sessionJson(Session const& s) {
           {"normal_maps", p.normalMaps},
           {"ambient", vec(p.ambient)},
           {"exposure", p.exposure},
-          {"shininess", p.shininess}}},
+          {"shininess", p.shininess},
+          {"volume_scale", p.volumeScale}}},
         {"viewers", viewers},
         {"animation", {{"enabled", s.animation.enabled}, {"speed", s.animation.speed}, {"time", s.animation.time}}},
     };
@@ -255,7 +256,7 @@ std::vector<PointLight> readLights(json const& j) {
 PipelineSettings readPipeline(json const& j) {
     Object o(j, "pipeline",
              {"mode", "cull", "blit", "tonemap", "view", "light_cubes", "volume_wireframes", "normal_maps", "ambient",
-              "exposure", "shininess"});
+              "exposure", "shininess", "volume_scale"});
     PipelineSettings p;
     p.mode = enumeration<LightingMode>(o.required("mode"), o.field("mode"), kLightingModeNames);
     p.cull = enumeration<CullMode>(o.required("cull"), o.field("cull"), kCullModeNames);
@@ -268,6 +269,9 @@ PipelineSettings readPipeline(json const& j) {
     p.ambient = vector<3>(o.required("ambient"), o.field("ambient"), Bound::NonNegative);
     p.exposure = number(o.required("exposure"), o.field("exposure"), Bound::Positive);
     p.shininess = number(o.required("shininess"), o.field("shininess"), Bound::Positive);
+    // Optional: sessions written before it existed read as 1, the enclosing scale.
+    if (json const* scale = o.optional("volume_scale"))
+        p.volumeScale = numberIn(*scale, o.field("volume_scale"), 0.1f, 4.0f);
     return p;
 }
 

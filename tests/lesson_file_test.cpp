@@ -1,0 +1,247 @@
+// Lesson files on the CPU: a valid lesson reads with the session code's rules, broken ones give
+// one message naming the field; placeholders, step references, saving a step, applying and
+// leaving a lesson, and undo's one entry per step.
+#include "session/lesson_file.h"
+#include "core/light_math.h"
+#include "model/lesson_state.h"
+#include "model/lesson_text.h"
+#include "model/undo.h"
+#include "run_command.h"
+#include "scene/default_scene.h"
+#include "test_paths.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+using namespace gbl;
+using namespace gbl::ui;
+using nlohmann::json;
+
+namespace {
+
+json minimal() {
+    return json::parse(R"({
+      "format": "gbuffer-lab-lesson", "version": 1, "id": "demo", "title": "Demo",
+      "setup": {"pipeline": {"mode": "volumes"}},
+      "steps": [{"title": "One", "look": "look here", "equation": "r = {light.radius}", "question": "why?",
+                 "scene": {"lights": 4}, "selected_light": 2, "viewer": "depth", "pixel": [0.25, 0.75],
+                 "pipeline": {"cull": "back", "volume_scale": 0.5},
+                 "camera": {"position": [0, 4, 8], "look_at": [0, 0, 0]},
+                 "claim": {"kind": "loses_light", "light": 1, "reference": {"cull": "front"}}}]
+    })");
+}
+
+std::string errorOf(json const& j) {
+    LessonLoad const l = parseLesson(j.dump(), "demo.json");
+    EXPECT_FALSE(l.lesson) << "parsed although broken";
+    return l.error;
+}
+
+TEST(LessonFile, AValidLessonReadsEveryField) {
+    LessonLoad const l = parseLesson(minimal().dump(), "demo.json");
+    ASSERT_TRUE(l.lesson) << l.error;
+    ASSERT_EQ(l.lesson->steps.size(), 1u);
+    LessonStep const& s = l.lesson->steps[0];
+    EXPECT_EQ(s.state.pipeline.mode, LightingMode::Volumes);  // from the setup
+    EXPECT_EQ(s.state.pipeline.cull, CullMode::Back);         // from the step
+    EXPECT_EQ(s.state.pipeline.volumeScale, 0.5f);
+    EXPECT_EQ(s.state.lights, makeDefaultLights(4));
+    EXPECT_EQ(s.defaultSceneLights, 4);
+    EXPECT_EQ(s.state.selectedLight, 2);
+    EXPECT_EQ(s.state.activeViewer, int(ViewerKind::Depth));
+    ASSERT_TRUE(s.state.pixel);
+    EXPECT_EQ(*s.state.pixel, glm::vec2(0.25f, 0.75f));
+    // look_at: the camera faces the origin from (0, 4, 8).
+    glm::vec3 const want = glm::normalize(glm::vec3(0, -4, -8));
+    EXPECT_NEAR(glm::dot(s.state.camera.forward(), want), 1.0f, 1e-5f);
+    ASSERT_TRUE(s.claim);
+    EXPECT_EQ(s.claim->kind, ClaimKind::LosesLight);
+    EXPECT_EQ(s.claim->light, 1);
+    ASSERT_TRUE(s.claim->reference);
+    EXPECT_EQ(s.claim->reference->cull, CullMode::Front);
+    EXPECT_EQ(s.claim->reference->mode, LightingMode::Volumes);  // the step's pipeline, one setting changed
+    EXPECT_EQ(s.claim->reference->volumeScale, 0.5f);
+}
+
+TEST(LessonFile, BrokenFilesNameTheField) {
+    EXPECT_NE(parseLesson("{\"format\": ", "bad.json").error.find("bad.json: not valid JSON"), std::string::npos);
+    struct Case {
+        std::function<void(json&)> breakIt;
+        std::string expect;
+    };
+    std::vector<Case> const cases{
+        {[](json& j) { j["version"] = 2; }, "demo.json: version 2 is not supported"},
+        {[](json& j) { j["format"] = "gbuffer-lab-session"; }, "demo.json: format must be \"gbuffer-lab-lesson\""},
+        {[](json& j) { j["steps"][0]["pipeline"]["cull"] = "sideways"; },
+         "demo.json: steps[0].pipeline.cull must be one of back, front, none, flip or stencil (got \"sideways\")"},
+        {[](json& j) { j["setup"]["pipeline"]["mode"] = "magic"; }, "demo.json: setup.pipeline.mode must be one of"},
+        {[](json& j) { j["steps"][0].erase("question"); }, "demo.json: steps[0].question is missing"},
+        {[](json& j) { j["steps"][0]["look"] = "  "; }, "demo.json: steps[0].look must not be empty"},
+        {[](json& j) { j.erase("title"); }, "demo.json: title is missing"},
+        {[](json& j) { j["steps"][0]["equation"] = "{light.colour}"; },
+         "demo.json: steps[0].equation uses the unknown placeholder {light.colour}"},
+        {[](json& j) { j["steps"][0]["colour"] = 1; }, "demo.json: steps[0].colour is not a known field"},
+        {[](json& j) { j["steps"][0]["claim"]["kind"] = "looks_nice"; },
+         "demo.json: steps[0].claim.kind must be one of"},
+        {[](json& j) { j["steps"][0]["claim"]["reference"]["cull"] = 3; },
+         "demo.json: steps[0].claim.reference.cull must be one of"},
+        {[](json& j) { j["steps"][0]["claim"]["light"] = 9; },
+         "demo.json: steps[0].claim.light must be a whole number from 0 to 3"},
+        {[](json& j) { j["steps"][0].erase("pixel"); },
+         "demo.json: steps[0].claim.kind is a claim about the step's pixel"},
+        {[](json& j) { j["steps"][0]["selected_light"] = 4; },
+         "demo.json: steps[0].selected_light must be a whole number from -1 to 3"},
+        {[](json& j) { j["steps"][0]["camera"]["fov_y_degrees"] = 0; },
+         "demo.json: steps[0].camera.fov_y_degrees must be between 1 and 179"},
+        {[](json& j) {
+             j["steps"][0]["lights"] = json::array({{{"position", {0, 1, 0}}}});
+         },
+         "demo.json: steps[0].lights[0].color is missing"},
+        {[](json& j) { j["steps"][0]["viewer"] = "stencil"; }, "demo.json: steps[0].viewer must be one of"},
+        {[](json& j) { j["steps"] = json::array(); }, "demo.json: steps must be an array of at least one step"},
+        {[](json& j) { j["id"] = "Has Space"; }, "demo.json: id must be lower-case letters"},
+        {[](json& j) { j["steps"][0]["pipeline"]["volume_scale"] = 0.0; },
+         "demo.json: steps[0].pipeline.volume_scale must be between"},
+    };
+    for (auto const& c : cases) {
+        json j = minimal();
+        c.breakIt(j);
+        std::string const e = errorOf(j);
+        EXPECT_EQ(e.rfind(c.expect, 0), 0u) << "got: " << e << "\nwant: " << c.expect;
+    }
+}
+
+TEST(LessonFile, PlaceholdersAreSubstitutedWithLiveValues) {
+    LessonValues v;
+    PointLight l;
+    l.kq = 0.44f;
+    v.light = l;
+    v.lightIndex = 3;
+    v.lightCount = 7;
+    EXPECT_EQ(substituteLessonText("light {light.index} Kq {light.kq} of {lights.count}", v), "light 3 Kq 0.44 of 7");
+    EXPECT_EQ(
+        substituteLessonText("r = {light.radius}", v), "r = " + [&] {
+            char b[32];
+            std::snprintf(b, sizeof b, "%.4g", double(lightRadius(l).radius));
+            return std::string(b);
+        }());
+    EXPECT_EQ(substituteLessonText("{pixel.lit}", v), "n/a");  // no sample yet
+    PixelSample s;
+    s.covered = true;
+    s.lighting = {0.017f, 0.5f, 1.0f, 1.0f};
+    s.position = {1.0f, 0.0f, 2.0f, 1.0f};
+    s.reconstructedPosition = {1.0f, 0.0f, 2.5f};
+    v.sample = s;
+    EXPECT_EQ(substituteLessonText("{pixel.lit} {pixel.error}", v), "(0.017, 0.5, 1) 0.5");
+    EXPECT_EQ(unknownPlaceholder("a {light.kq} b {nope} c"), std::optional<std::string>("{nope}"));
+    EXPECT_EQ(unknownPlaceholder("open {light.kq"), std::optional<std::string>("{light.kq"));
+    EXPECT_FALSE(unknownPlaceholder("plain text"));
+}
+
+TEST(LessonFile, StepReferences) {
+    LessonLibrary lib;
+    lib.lessons.push_back(*parseLesson(minimal().dump(), "demo.json").lesson);
+    EXPECT_EQ(findLessonStep(lib, "demo").step, 0);
+    EXPECT_EQ(findLessonStep(lib, "demo:1").lesson, 0);
+    EXPECT_NE(findLessonStep(lib, "demo:2").error.find("has steps 1 to 1"), std::string::npos);
+    EXPECT_NE(findLessonStep(lib, "demo:x").error.find("not \"x\""), std::string::npos);
+    EXPECT_NE(findLessonStep(lib, "other").error.find("(lessons: demo)"), std::string::npos);
+}
+
+TEST(LessonFile, ASavedStepReadsBackAsTheSameState) {
+    std::string const dir = test::freshTempDir("lesson_save");
+    std::string const path = dir + "/My Lesson.json";
+    LessonStep step = parseLesson(minimal().dump(), "demo.json").lesson->steps[0];
+    step.claim.reset();  // saved steps carry no claim: a teacher writes that by hand
+    step.state.lights[1].kq = 0.123f;
+    step.state.pipeline.shininess = 12.5f;
+    ASSERT_FALSE(appendLessonStep(path, step));
+    ASSERT_FALSE(appendLessonStep(path, step));  // appends to the file now present
+    LessonLoad const back = loadLesson(path);
+    ASSERT_TRUE(back.lesson) << back.error;
+    EXPECT_EQ(back.lesson->id, "my_lesson");
+    ASSERT_EQ(back.lesson->steps.size(), 2u);
+    LessonStep const& s = back.lesson->steps[1];
+    EXPECT_EQ(s.state.lights, step.state.lights);
+    EXPECT_EQ(s.state.pipeline, step.state.pipeline);
+    EXPECT_EQ(s.state.camera.position, step.state.camera.position);
+    EXPECT_EQ(s.state.camera.yawDegrees, step.state.camera.yawDegrees);
+    EXPECT_EQ(s.state.selectedLight, 2);
+    EXPECT_EQ(s.state.activeViewer, int(ViewerKind::Depth));
+    EXPECT_EQ(s.text.equation, "r = {light.radius}");
+    // A file that is not a lesson is not overwritten.
+    std::ofstream(dir + "/notes.json") << "{}";
+    auto const err = appendLessonStep(dir + "/notes.json", step);
+    ASSERT_TRUE(err);
+    EXPECT_NE(err->find("notes.json: format is missing"), std::string::npos) << *err;
+}
+
+TEST(LessonFile, ABrokenFileInTheFolderIsReportedAndTheOthersLoad) {
+    std::string const dir = test::freshTempDir("lesson_dir");
+    std::ofstream(dir + "/a.json") << minimal().dump();
+    json bad = minimal();
+    bad["steps"][0]["pipeline"]["blit"] = "copy";
+    std::ofstream(dir + "/b.json") << bad.dump();
+    std::ofstream(dir + "/c.json") << minimal().dump();  // the same id again
+    LessonLibrary const lib = loadLessonDir(dir);
+    ASSERT_EQ(lib.lessons.size(), 1u);
+    ASSERT_EQ(lib.errors.size(), 2u);
+    EXPECT_NE(lib.errors[0].find("b.json: steps[0].pipeline.blit must be one of blit, shader or off"),
+              std::string::npos)
+        << lib.errors[0];
+    EXPECT_NE(lib.errors[1].find("c.json: id \"demo\" is already used"), std::string::npos) << lib.errors[1];
+}
+
+TEST(LessonModel, ApplyingAStepAndLeavingRestoresTheEditor) {
+    EditorState state;
+    state.lights = makeDefaultLights(3);
+    state.pipeline.shininess = 50.0f;
+    state.lightsPanel.selected = 1;
+    state.inspector.pixel = glm::ivec2(7, 9);
+    LessonSnapshot const before = captureLessonSnapshot(state);
+    LessonStep const step = parseLesson(minimal().dump(), "demo.json").lesson->steps[0];
+    applyLessonSnapshot(step.state, state, {640, 360});
+    EXPECT_EQ(state.lights, step.state.lights);
+    EXPECT_EQ(state.pipeline.cull, CullMode::Back);
+    EXPECT_EQ(state.lightsPanel.selected, 2);
+    EXPECT_EQ(state.gbuffer.activeViewer, int(ViewerKind::Depth));
+    EXPECT_TRUE(state.inspector.locked);
+    EXPECT_EQ(state.inspector.pixel, std::optional<glm::ivec2>(glm::ivec2(160, 270)));  // 0.25 x 640, 0.75 x 360
+    applyLessonSnapshot(before, state, {640, 360});
+    EXPECT_EQ(state.lights, before.lights);
+    EXPECT_EQ(state.pipeline, before.pipeline);
+    EXPECT_EQ(state.lightsPanel.selected, 1);
+    EXPECT_FALSE(state.inspector.locked);
+    EXPECT_EQ(state.inspector.pixel, std::optional<glm::ivec2>(glm::ivec2(7, 9)));
+    EXPECT_EQ(lessonPixel({1.0f, 1.0f}, {640, 360}), glm::ivec2(639, 359));  // clamped into the frame
+}
+
+TEST(LessonModel, UndoKnowsEachLessonStepAsOneEntry) {
+    UndoStack undo;
+    UndoSnapshot a{makeDefaultLights(2), {}};
+    undo.reset(a);
+    UndoSnapshot b = a, c = a;
+    b.pipeline.cull = CullMode::Back;
+    c.pipeline.cull = CullMode::None;
+    // Two pipeline edits within the merge window would be one step; committed steps are not.
+    EXPECT_TRUE(undo.commit(b, 0.0));
+    EXPECT_TRUE(undo.commit(c, 0.1));
+    EXPECT_EQ(undo.undoSteps(), 2u);
+    // An ordinary edit right after a committed step is a step of its own too.
+    UndoSnapshot d = c;
+    d.pipeline.cull = CullMode::Flip;
+    EXPECT_TRUE(undo.observe(d, false, 0.2));
+    EXPECT_EQ(undo.undoSteps(), 3u);
+    EXPECT_FALSE(undo.commit(d, 0.3));  // nothing changed: no entry
+    auto const back = undo.undo(d, 0.4);
+    ASSERT_TRUE(back);
+    EXPECT_EQ(back->pipeline.cull, CullMode::None);
+    EXPECT_EQ(undo.undo(*back, 0.5)->pipeline.cull, CullMode::Back);
+}
+
+}  // namespace

@@ -1,0 +1,182 @@
+// Every step of every shipped lesson rendered headlessly, its claim checked on real read-back
+// values; and each claim kind shown to fail when what it says is false.
+#include "gl_fixture.h"
+#include "lesson_render.h"
+#include "scene/default_scene.h"
+#include "session/lesson_file.h"
+#include "test_paths.h"
+
+#include <epoxy/gl.h>
+
+#include <map>
+
+using namespace gbl;
+using gbl::test::GlTest;
+
+namespace {
+
+std::string shippedDir() {
+    return std::string(GBL_SOURCE_DIR) + "/assets/lessons";
+}
+
+class LessonsGlTest : public GlTest {
+protected:
+    static ui::LessonLibrary const& library() {
+        static ui::LessonLibrary const lib = ui::loadLessonDir(shippedDir());
+        return lib;
+    }
+    static ui::Lesson const& lesson(std::string const& id) {
+        for (auto const& l : library().lessons)
+            if (l.id == id) return l;
+        throw std::runtime_error("no shipped lesson " + id);
+    }
+    // Renders one step on a renderer of the lesson's size with the step's default scene.
+    LessonStepFrame render(ui::Lesson const& l, ui::LessonStep const& step) {
+        auto& r = renderers_[{l.width, l.height}];
+        if (!r) r = makeRenderer(l.width, l.height);
+        if (sceneLights_[r.get()] != step.defaultSceneLights + 1) {
+            EXPECT_FALSE(r->setScene(makeDefaultScene({step.defaultSceneLights})));
+            sceneLights_[r.get()] = step.defaultSceneLights + 1;
+        }
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        LessonStepFrame f = renderLessonStep(*r, step);
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        EXPECT_EQ(f.stats.glErrors, 0u);
+        return f;
+    }
+    void TearDown() override {
+        renderers_.clear();
+        GlTest::TearDown();
+    }
+    std::map<std::pair<int, int>, std::unique_ptr<Renderer>> renderers_;
+    std::map<Renderer*, int> sceneLights_;
+};
+
+TEST_F(LessonsGlTest, TheShippedLessonsLoadAndFollowTheIssue) {
+    EXPECT_TRUE(library().errors.empty()) << (library().errors.empty() ? "" : library().errors.front());
+    ASSERT_GE(library().lessons.size(), 10u);
+    for (auto const& l : library().lessons) {
+        EXPECT_GE(l.steps.size(), 3u) << l.id;
+        EXPECT_LE(l.steps.size(), 6u) << l.id;
+        for (std::size_t i = 0; i < l.steps.size(); ++i) EXPECT_TRUE(l.steps[i].claim) << l.id << ":" << i + 1;
+    }
+}
+
+TEST_F(LessonsGlTest, EveryStepsClaimHoldsOnTheRealFrame) {
+    int checked = 0;
+    for (auto const& l : library().lessons) {
+        for (std::size_t i = 0; i < l.steps.size(); ++i) {
+            ui::LessonStep const& step = l.steps[i];
+            if (step.state.pipeline.mode == LightingMode::Tiled && !caps().computeShaders) continue;
+            LessonStepFrame const f = render(l, step);
+            EXPECT_EQ(f.stats.modeUsed, step.state.pipeline.mode)
+                << l.id << ":" << i + 1 << " " << f.stats.fallbackReason;
+            ASSERT_TRUE(f.claim) << l.id << ":" << i + 1;
+            EXPECT_TRUE(f.claim->holds) << l.id << ":" << i + 1 << " (" << step.text.title << "): " << f.claim->detail;
+            ++checked;
+        }
+    }
+    EXPECT_GE(checked, 30);
+}
+
+// --- each claim kind fails when its statement is false ------------------------------------------
+
+ui::LessonStep withClaim(ui::LessonStep step, std::function<void(ui::LessonClaim&)> const& change) {
+    change(*step.claim);
+    return step;
+}
+
+TEST_F(LessonsGlTest, LosesLightFailsWhenTheReferenceLosesItToo) {
+    ui::Lesson const& l = lesson("camera_inside");
+    ui::LessonStep const back = l.steps[1];
+    ASSERT_EQ(back.claim->kind, ui::ClaimKind::LosesLight);
+    auto const f = render(l, withClaim(back, [&](ui::LessonClaim& c) { c.reference = back.state.pipeline; }));
+    EXPECT_FALSE(f.claim->holds) << f.claim->detail;
+}
+
+TEST_F(LessonsGlTest, MatchesCpuFailsWhereALightIsLost) {
+    ui::Lesson const& l = lesson("camera_inside");
+    ui::LessonStep step = l.steps[1];  // cull back from inside
+    step.claim = ui::LessonClaim{};
+    step.claim->kind = ui::ClaimKind::MatchesCpu;
+    step.claim->tolerance = 0.02f;
+    auto const f = render(l, step);
+    EXPECT_FALSE(f.claim->holds) << f.claim->detail;
+}
+
+TEST_F(LessonsGlTest, SameImageAndDiffersFromAreOpposites) {
+    ui::Lesson const& l = lesson("camera_inside");
+    ui::LessonStep const front = l.steps[0];
+    ui::LessonStep step = front;
+    PipelineSettings back = front.state.pipeline;
+    back.cull = CullMode::Back;
+    step.claim = ui::LessonClaim{};
+    step.claim->kind = ui::ClaimKind::SameImage;
+    step.claim->reference = back;
+    step.claim->bound = 0.01f;
+    EXPECT_FALSE(render(l, step).claim->holds);
+    step.claim->kind = ui::ClaimKind::DiffersFrom;
+    step.claim->minFraction = 0.05f;
+    EXPECT_TRUE(render(l, step).claim->holds);
+    step.claim->reference = front.state.pipeline;
+    EXPECT_FALSE(render(l, step).claim->holds);
+}
+
+TEST_F(LessonsGlTest, FewerLitPixelsFailsAgainstItself) {
+    ui::Lesson const& l = lesson("light_volumes");
+    ui::LessonStep const small = l.steps[1];
+    ASSERT_EQ(small.claim->kind, ui::ClaimKind::FewerLitPixels);
+    auto const f = render(l, withClaim(small, [&](ui::LessonClaim& c) { c.reference = small.state.pipeline; }));
+    EXPECT_FALSE(f.claim->holds) << f.claim->detail;
+}
+
+TEST_F(LessonsGlTest, PositionErrorFailsBelowTheFloatPrecision) {
+    ui::Lesson const& l = lesson("position_from_depth");
+    // 1e-6 units is far below what a 16-bit float position holds at metres from the origin.
+    auto const f = render(l, withClaim(l.steps[1], [](ui::LessonClaim& c) { c.bound = 1e-6f; }));
+    EXPECT_FALSE(f.claim->holds) << f.claim->detail;
+}
+
+TEST_F(LessonsGlTest, AttachmentEqualsFailsForAnotherNormal) {
+    ui::Lesson const& l = lesson("gbuffer");
+    auto const f = render(l, withClaim(l.steps[2], [](ui::LessonClaim& c) { c.value = {1.0f, 0.0f, 0.0f, 0.0f}; }));
+    EXPECT_FALSE(f.claim->holds) << f.claim->detail;
+}
+
+TEST_F(LessonsGlTest, TileCountFailsWhenTheCpuSeesOtherLights) {
+    if (!caps().computeShaders) GTEST_SKIP() << caps().tiledUnavailableReason();
+    ui::Lesson const& l = lesson("tiled");
+    ui::LessonStep step = l.steps[1];
+    ASSERT_EQ(step.claim->kind, ui::ClaimKind::TileCountMatchesCpu);
+    LessonStepFrame const good = render(l, step);
+    ASSERT_TRUE(good.claim->holds) << good.claim->detail;
+    // The claim checks the frame's own lights; a frame rendered without some of them lists fewer.
+    step.state.lights.resize(step.state.lights.size() / 2);
+    auto& r = renderers_[{l.width, l.height}];
+    ui::LessonStep full = l.steps[1];
+    r->render({step.state.camera, step.state.lights, step.state.pipeline, true});
+    ui::ClaimImages im;
+    im.position = r->readAttachment(Attachment::Position);
+    im.depth = r->readAttachment(Attachment::Depth);
+    im.coverage = r->readAttachment(Attachment::Coverage);
+    auto const bad =
+        ui::checkClaim(*full.claim, {full.state.camera, full.state.lights, full.state.pipeline, good.pixel}, im);
+    EXPECT_FALSE(bad.holds) << bad.detail;
+}
+
+TEST_F(LessonsGlTest, ExecutedExceedsLitFailsWithOneLightThatReachesThePixel) {
+    ui::Lesson const& l = lesson("executed_vs_lit");
+    ui::LessonStep step = l.steps[0];  // quad heat map
+    // One light over the pixel's surface, large enough to reach it: evaluated 1, lit 1.
+    auto const floor = render(l, step);
+    ASSERT_TRUE(floor.claim->holds) << floor.claim->detail;
+    PointLight big;
+    big.position = {0.0f, 2.0f, 4.0f};
+    big.kl = 0.0f;
+    big.kq = 0.01f;
+    step.state.lights = {big};
+    auto const f = render(l, step);
+    EXPECT_FALSE(f.claim->holds) << f.claim->detail;
+}
+
+}  // namespace

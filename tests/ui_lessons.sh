@@ -1,0 +1,105 @@
+#!/bin/sh
+# The Lessons window driven by real X clicks (xdotool): Start opens the first lesson at step 1,
+# Next and Back step through it (each step sets its pipeline view and one undo entry), Leave
+# returns the editor to the camera and view it had before. Every check reads --log-frames; the
+# screenshots at 1280x720 and 1600x900 with a lesson open are kept in WORK_DIR to look at.
+# usage: ui_lessons.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
+set -eu
+bin="$1"
+work="$2"
+
+if ! command -v xdotool >/dev/null 2>&1; then
+    echo "ui_lessons skipped: xdotool not found (scripts/install-deps.sh installs it)"
+    exit 0
+fi
+rm -rf "$work"
+mkdir -p "$work"
+log="$work/frames.jsonl"
+export GBL_RECOVERY_DIR="$work/recovery" XDG_CONFIG_HOME="$work/config"
+mkdir -p "$GBL_RECOVERY_DIR" "$XDG_CONFIG_HOME"
+pid=""
+
+fail() {
+    echo "ui_lessons: FAIL: $*"
+    [ -f "$log" ] && tail -n 2 "$log"
+    [ -n "$pid" ] && kill "$pid" 2>/dev/null
+    exit 1
+}
+lines() { [ -f "$log" ] && wc -l < "$log" || echo 0; }
+last() { tail -n 1 "$log"; }
+field() {
+    line="${2:-$(last)}"
+    printf '%s\n' "$line" | sed -n "s/.*\"$1\":\(\[[^]]*\]\|\"[^\"]*\"\|[^,}]*\).*/\1/p"
+}
+wait_frames() {
+    target=$(( $(lines) + $1 ))
+    i=0
+    while [ "$(lines)" -lt "$target" ]; do
+        kill -0 "$pid" 2>/dev/null || fail "the editor exited (see $work/editor.log)"
+        i=$((i + 1))
+        [ "$i" -le 600 ] || fail "no frame logged for 60 s"
+        sleep 0.1
+    done
+}
+# button N: window coordinates of Lessons button N (1 Start, 2 Back, 3 Next, 4 Leave).
+button() {
+    field lessonButtons | tr -d '[]' | awk -F, -v n="$1" '{ printf "%d %d", $(2 * n - 1), $(2 * n) }'
+}
+click() {
+    set -- $(button "$1")
+    [ "$1" -gt 0 ] || fail "button not drawn: $(field lessonButtons)"
+    xdotool mousemove --window "$wid" "$1" "$2" mousedown 1 sleep 0.05 mouseup 1
+    wait_frames 4
+}
+
+"$bin" --size 1280x720 --no-vsync --log-frames "$log" > "$work/editor.log" 2>&1 &
+pid=$!
+wait_frames 4
+wid=$(xdotool search --sync --onlyvisible --name '^gbuffer-lab$' | head -n 1)
+[ -n "$wid" ] || fail "no gbuffer-lab window"
+xdotool windowactivate --sync "$wid" 2>/dev/null || xdotool windowfocus --sync "$wid"
+wait_frames 2
+
+camera0=$(field camera)
+view0=$(field view)
+[ "$(field lesson)" = '""' ] || fail "a lesson is shown before Start: $(field lesson)"
+
+click 1
+[ "$(field lesson)" = '"gbuffer:1"' ] || fail "Start did not open gbuffer:1 (lesson $(field lesson))"
+[ "$(field view)" = '"final"' ] || fail "step 1 shows view $(field view), want final"
+echo "Start: $(field lesson), view $(field view)"
+
+click 3
+[ "$(field lesson)" = '"gbuffer:2"' ] || fail "Next did not go to step 2 (lesson $(field lesson))"
+[ "$(field view)" = '"position"' ] || fail "step 2 shows view $(field view), want position"
+click 3
+[ "$(field lesson)" = '"gbuffer:3"' ] || fail "Next did not go to step 3 (lesson $(field lesson))"
+[ "$(field view)" = '"normal"' ] || fail "step 3 shows view $(field view), want normal"
+echo "Next, Next: $(field lesson), view $(field view)"
+
+click 2
+[ "$(field lesson)" = '"gbuffer:2"' ] || fail "Back did not return to step 2 (lesson $(field lesson))"
+[ "$(field view)" = '"position"' ] || fail "Back shows view $(field view), want position"
+echo "Back: $(field lesson), view $(field view)"
+
+click 4
+[ "$(field lesson)" = '""' ] || fail "Leave did not close the lesson ($(field lesson))"
+[ "$(field camera)" = "$camera0" ] || fail "Leave did not restore the camera: $camera0 -> $(field camera)"
+[ "$(field view)" = "$view0" ] || fail "Leave did not restore the view: $view0 -> $(field view)"
+echo "Leave: camera $(field camera), view $(field view)"
+kill "$pid" 2>/dev/null || true
+wait "$pid" 2>/dev/null || true
+pid=""
+
+# Screenshots with a lesson step open, for a person to look at (no clipped text).
+for size in 1280x720 1600x900; do
+    "$bin" --size "$size" --no-vsync --lesson camera_inside:2 --frames 12 --log-frames "$work/shot-$size.jsonl" \
+        --screenshot "$work/lesson-$size.png" > "$work/shot-$size.log" 2>&1 ||
+        { cat "$work/shot-$size.log"; fail "screenshot at $size failed"; }
+    [ "$(field lesson "$(tail -n 1 "$work/shot-$size.jsonl")")" = '"camera_inside:2"' ] ||
+        fail "--lesson camera_inside:2 did not open that step at $size"
+    clipped=$(tail -n 1 "$work/shot-$size.jsonl" | sed -n 's/.*"clipped":\[\([^]]*\)\].*/\1/p' | tr ',' '\n' | grep Lessons || true)
+    [ -z "$clipped" ] || fail "the Lessons window cuts off content at $size: $clipped"
+    echo "screenshot $work/lesson-$size.png"
+done
+echo "ui_lessons: PASS"

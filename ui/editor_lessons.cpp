@@ -1,0 +1,172 @@
+// The Lessons window in the editor: the lesson files, the text's live values, and carrying out
+// what the window asked for (start, step, leave, save a step, open a file) with one undo entry
+// per step.
+#include "editor_loop.h"
+
+#include "model/lesson_text.h"
+#include "panels/panel_lessons.h"
+
+#include <filesystem>
+
+namespace gbl {
+
+namespace {
+
+using ui::LessonState;
+
+void report(Editor& editor, std::string message, bool error) {
+    LessonState& l = editor.lessons;
+    l.message = message;
+    l.messageIsError = error;
+    ui::logMessage(editor.state.log, "lessons: " + message, error);
+}
+
+glm::ivec2 frameSize(Editor const& editor) {
+    return {editor.renderer->width(), editor.renderer->height()};
+}
+
+void showStep(Editor& editor, int step) {
+    LessonState& l = editor.lessons;
+    ui::Lesson const& lesson = editor.lessonLibrary.lessons[std::size_t(l.lesson)];
+    l.step = std::clamp(step, 0, int(lesson.steps.size()) - 1);
+    ui::applyLessonSnapshot(lesson.steps[std::size_t(l.step)].state, editor.state, frameSize(editor));
+    editor.sessions->commitLessonStep(editor.state);
+    editor.actionLog.push_back("lesson " + lesson.id + " step " + std::to_string(l.step + 1));
+    l.message.clear();
+    l.pixelFrameSize = frameSize(editor);
+}
+
+// The step's pixel is a fraction of the frame: when the viewport (and so the frame) changes
+// size, the inspector follows it to the same surface point, as long as it is still locked.
+void keepStepPixel(Editor& editor) {
+    LessonState& l = editor.lessons;
+    if (l.lesson < 0 || frameSize(editor) == l.pixelFrameSize || !editor.state.inspector.locked) return;
+    auto const& pixel = editor.lessonLibrary.lessons[std::size_t(l.lesson)].steps[std::size_t(l.step)].state.pixel;
+    if (pixel) editor.state.inspector.pixel = ui::lessonPixel(*pixel, frameSize(editor));
+    l.pixelFrameSize = frameSize(editor);
+}
+
+void start(Editor& editor, int index) {
+    LessonState& l = editor.lessons;
+    if (index < 0 || index >= int(editor.lessonLibrary.lessons.size())) return;
+    if (!editor.state.sceneSource.empty() && editor.state.sceneSource != "default") {
+        report(editor, "lessons use the default scene: open it first (File > New session)", true);
+        return;
+    }
+    if (l.lesson < 0) l.before = ui::captureLessonSnapshot(editor.state);
+    l.lesson = index;
+    showStep(editor, 0);
+}
+
+void leave(Editor& editor) {
+    LessonState& l = editor.lessons;
+    if (l.lesson < 0) return;
+    if (l.before) ui::applyLessonSnapshot(*l.before, editor.state, frameSize(editor));
+    editor.sessions->commitLessonStep(editor.state);
+    editor.actionLog.push_back("lesson left");
+    l.before.reset();
+    l.lesson = -1;
+    l.step = 0;
+    report(editor, "left the lesson; the editor is as it was before", false);
+}
+
+void saveStep(Editor& editor) {
+    LessonState& l = editor.lessons;
+    ui::LessonStep step;
+    step.text = l.draft;
+    for (auto const* field : {&step.text.title, &step.text.look, &step.text.equation, &step.text.question})
+        if (field->find_first_not_of(" \t\n") == std::string::npos) {
+            report(editor, "type a title, what to look at, an equation and a question first", true);
+            return;
+        }
+    step.state = ui::captureLessonSnapshot(editor.state);
+    step.state.animation = {};
+    if (editor.state.inspector.pixel) {
+        glm::ivec2 const size = frameSize(editor);
+        step.state.pixel = (glm::vec2(*editor.state.inspector.pixel) + 0.5f) / glm::vec2(glm::max(size, glm::ivec2(1)));
+    }
+    step.defaultSceneLights = editor.defaultLightCount;
+    if (auto err = ui::appendLessonStep(l.savePath, step)) {
+        report(editor, *err, true);
+        return;
+    }
+    // Read it back: what was written must be a lesson this editor opens.
+    ui::LessonLoad const load = ui::loadLesson(l.savePath);
+    if (!load.lesson) {
+        report(editor, load.error, true);
+        return;
+    }
+    report(editor, "saved step " + std::to_string(load.lesson->steps.size()) + " to " + l.savePath, false);
+}
+
+void open(Editor& editor, std::string const& path) {
+    ui::LessonLoad load = ui::loadLesson(path);
+    if (!load.lesson) {
+        report(editor, load.error, true);
+        return;
+    }
+    auto& lessons = editor.lessonLibrary.lessons;
+    auto it =
+        std::find_if(lessons.begin(), lessons.end(), [&](ui::Lesson const& l) { return l.id == load.lesson->id; });
+    if (it != lessons.end() && editor.lessons.lesson == int(it - lessons.begin())) leave(editor);
+    if (it == lessons.end())
+        it = lessons.insert(lessons.end(), std::move(*load.lesson));
+    else
+        *it = std::move(*load.lesson);
+    editor.lessons.picked = int(it - lessons.begin());
+    report(editor, "opened " + path, false);
+}
+
+}  // namespace
+
+void lessonLogFields(Editor const& editor, ui::FrameLogLine& line) {
+    LessonState const& l = editor.lessons;
+    if (l.lesson >= 0 && l.lesson < int(editor.lessonLibrary.lessons.size()))
+        line.lesson = editor.lessonLibrary.lessons[std::size_t(l.lesson)].id + ":" + std::to_string(l.step + 1);
+    line.lessonButtons.assign(l.buttonCentres.begin(), l.buttonCentres.end());
+    line.view = std::string(enumName(kDebugViewNames, editor.state.pipeline.view));
+}
+
+void drawLessons(Editor& editor) {
+    if (!editor.lessonsLoaded) {
+        editor.lessonLibrary = ui::loadLessonDir(ui::defaultLessonDir());
+        editor.lessonsLoaded = true;
+        for (auto const& e : editor.lessonLibrary.errors) ui::logMessage(editor.state.log, e, true);
+        if (editor.options.lesson) {
+            ui::LessonRef const ref = ui::findLessonStep(editor.lessonLibrary, *editor.options.lesson);
+            if (ref.lesson < 0) {
+                report(editor, "--lesson: " + ref.error, true);
+            } else {
+                editor.lessons.picked = ref.lesson;
+                start(editor, ref.lesson);
+                if (editor.lessons.lesson == ref.lesson) showStep(editor, ref.step);
+            }
+        }
+    }
+    ui::EditorState const& state = editor.state;
+    ui::LessonValues values;
+    int const sel = state.lightsPanel.selected;
+    if (sel >= 0 && sel < int(state.lights.size())) {
+        values.light = state.lights[std::size_t(sel)];
+        values.lightIndex = sel;
+    }
+    values.pixel = state.inspector.pixel;
+    values.sample = state.inspector.sample;
+    values.pipeline = state.pipeline;
+    values.lightCount = int(state.lights.size());
+    ui::drawLessonsPanel(editor.lessons, editor.lessonLibrary.lessons, editor.lessonLibrary.errors, values,
+                         editor.lessonBrowser);
+
+    LessonState& l = editor.lessons;
+    if (l.startRequest >= 0) start(editor, std::exchange(l.startRequest, -1));
+    if (l.stepRequest >= 0) {
+        int const to = std::exchange(l.stepRequest, -1);
+        if (l.lesson >= 0) showStep(editor, to);
+    }
+    if (std::exchange(l.leaveRequested, false)) leave(editor);
+    if (std::exchange(l.saveStepRequested, false)) saveStep(editor);
+    if (std::exchange(l.openRequested, false)) open(editor, l.openPath);
+    keepStepPixel(editor);
+}
+
+}  // namespace gbl

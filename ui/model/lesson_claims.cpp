@@ -1,0 +1,258 @@
+// The lesson claim kinds, each checked once over read-back images (see lesson_claims.h).
+#include "model/lesson_claims.h"
+
+#include "core/depth.h"
+#include "core/light_math.h"
+#include "core/tile_math.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace gbl::ui {
+
+namespace {
+
+std::string num(float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", double(v));
+    return buf;
+}
+
+std::string vecText(glm::vec3 v) {
+    return "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")";
+}
+
+glm::vec4 texel(FloatImage const& img, glm::ivec2 p) {
+    glm::vec4 v(0.0f);
+    for (int c = 0; c < std::min(img.channels, 4); ++c) v[c] = img.at(p.x, p.y, c);
+    return v;
+}
+
+bool inside(FloatImage const& img, glm::ivec2 p) {
+    return p.x >= 0 && p.y >= 0 && p.x < img.width && p.y < img.height;
+}
+
+// Per channel: |a - b| <= tolerance * |b| + absolute. The lit target is RGBA16F: 11 bits of
+// mantissa give a relative rounding of 2^-11 (~5e-4) per stored value, which `tolerance` covers.
+bool close(glm::vec3 a, glm::vec3 b, float tolerance, float absolute) {
+    for (int c = 0; c < 3; ++c)
+        if (std::abs(a[c] - b[c]) > tolerance * std::abs(b[c]) + absolute) return false;
+    return true;
+}
+
+// The absolute slack of every lit-value comparison: a few fp16 steps at the values the lessons
+// measure (0.01..2, where one step is at most 2^-10).
+constexpr float kLitAbsolute = 2e-3f;
+
+ClaimResult matchesCpu(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
+    auto const s = surfaceAt(im, f, f.pixel);
+    if (!s) return {false, "no geometry at the lesson pixel"};
+    glm::vec3 const cpu = shadePointCpu(f.lights, *s, f.pipeline.ambient);
+    glm::vec3 const lit = glm::vec3(texel(im.lighting, f.pixel));
+    bool const ok = close(lit, cpu, c.tolerance, kLitAbsolute);
+    return {ok, "lit " + vecText(lit) + " vs CPU " + vecText(cpu)};
+}
+
+ClaimResult losesLight(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
+    if (!im.referenceLighting) return {false, "no reference frame"};
+    if (c.light < 0 || c.light >= int(f.lights.size()))
+        return {false, "light " + std::to_string(c.light) + " does not exist"};
+    auto const s = surfaceAt(im, f, f.pixel);
+    if (!s) return {false, "no geometry at the lesson pixel"};
+    glm::vec3 const own = shadeLightCpu(f.lights[std::size_t(c.light)], *s).total();
+    glm::vec3 const drop = glm::vec3(texel(*im.referenceLighting, f.pixel) - texel(im.lighting, f.pixel));
+    // The light must matter here, or "the drop equals it" says nothing.
+    bool const visible = std::max({own.r, own.g, own.b}) > 10.0f * kLitAbsolute;
+    bool const ok = visible && close(drop, own, c.tolerance, kLitAbsolute);
+    return {ok, "lit drops by " + vecText(drop) + "; light " + std::to_string(c.light) + " adds " + vecText(own) +
+                    " on the CPU" + (visible ? "" : " (too faint to show)")};
+}
+
+ClaimResult sameImage(LessonClaim const& c, ClaimImages const& im) {
+    if (!im.referenceLighting) return {false, "no reference frame"};
+    FloatImage const& a = im.lighting;
+    FloatImage const& b = *im.referenceLighting;
+    if (a.width != b.width || a.height != b.height) return {false, "the frames differ in size"};
+    float maxAbs = 0.0f;
+    glm::ivec2 where{0};
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x)
+            for (int ch = 0; ch < 3; ++ch) {
+                float const d = std::abs(a.at(x, y, ch) - b.at(x, y, ch));
+                if (!(d <= maxAbs)) {  // NaN counts as a difference
+                    maxAbs = std::isnan(d) ? INFINITY : d;
+                    where = {x, y};
+                }
+            }
+    return {maxAbs <= c.bound, "largest difference " + num(maxAbs) + " at (" + std::to_string(where.x) + ", " +
+                                   std::to_string(where.y) + "), bound " + num(c.bound)};
+}
+
+ClaimResult differsFrom(LessonClaim const& c, ClaimImages const& im) {
+    if (!im.referenceLighting) return {false, "no reference frame"};
+    FloatImage const& a = im.lighting;
+    FloatImage const& b = *im.referenceLighting;
+    if (a.width != b.width || a.height != b.height) return {false, "the frames differ in size"};
+    int covered = 0, differing = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            if (im.position.at(x, y, 3) == 0.0f) continue;
+            ++covered;
+            bool d = false;
+            for (int ch = 0; ch < 3; ++ch) d = d || !(std::abs(a.at(x, y, ch) - b.at(x, y, ch)) <= c.bound);
+            differing += d ? 1 : 0;
+        }
+    float const share = covered > 0 ? float(differing) / float(covered) : 0.0f;
+    return {covered > 0 && share >= c.minFraction, std::to_string(differing) + " of " + std::to_string(covered) +
+                                                       " pixels differ by more than " + num(c.bound) + " (" +
+                                                       num(100.0f * share) + " %)"};
+}
+
+ClaimResult fewerLitPixels(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
+    if (!im.referenceLighting) return {false, "no reference frame"};
+    // An epsilon of a few fp16 steps: a pixel that a light reaches gets at least that much.
+    constexpr float kEpsilon = 4e-3f;
+    int const step = litPixelCount(im.lighting, im, f.pipeline.ambient, kEpsilon);
+    int const ref =
+        litPixelCount(*im.referenceLighting, im, c.reference ? c.reference->ambient : f.pipeline.ambient, kEpsilon);
+    float const lost = ref > 0 ? float(ref - step) / float(ref) : 0.0f;
+    return {ref > 0 && lost >= c.minFraction, std::to_string(step) + " lit pixels against " + std::to_string(ref) +
+                                                  " in the reference: " + num(100.0f * lost) + " % lost"};
+}
+
+ClaimResult positionError(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
+    int const w = im.depth.width, h = im.depth.height;
+    glm::mat4 const inv = glm::inverse(f.camera.projection(float(w) / float(h)) * f.camera.view());
+    float worst = 0.0f;
+    int covered = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            if (im.position.at(x, y, 3) == 0.0f) continue;
+            ++covered;
+            float const gy = float(h - 1 - y);  // window y has its origin at the bottom
+            glm::vec4 const ndc(2.0f * (float(x) + 0.5f) / float(w) - 1.0f, 2.0f * (gy + 0.5f) / float(h) - 1.0f,
+                                2.0f * im.depth.at(x, y, 0) - 1.0f, 1.0f);
+            glm::vec4 const world = inv * ndc;
+            glm::vec3 const stored = glm::vec3(texel(im.position, {x, y}));
+            worst = std::max(worst, glm::length(glm::vec3(world) / world.w - stored));
+        }
+    return {covered > 0 && worst < c.bound, "largest |stored - rebuilt| " + num(worst) + " over " +
+                                                std::to_string(covered) + " pixels, bound " + num(c.bound)};
+}
+
+ClaimResult tileCount(ClaimFrame const& f, ClaimImages const& im) {
+    if (im.coverage.channels < 1 || !inside(im.coverage, f.pixel))
+        return {false, "no coverage image (show tile_lights)"};
+    int const gpu = int(im.coverage.at(f.pixel.x, f.pixel.y, 0));
+    int const cpu = cpuTileLightCount(im, f, f.pixel);
+    return {gpu == cpu && cpu > 0,
+            "the tile lists " + std::to_string(gpu) + " lights; the CPU tile test " + std::to_string(cpu)};
+}
+
+ClaimResult executedExceedsLit(ClaimFrame const& f, ClaimImages const& im) {
+    if (im.coverage.channels < 2 || !inside(im.coverage, f.pixel)) return {false, "no coverage image (show heatmap)"};
+    float const executed = im.coverage.at(f.pixel.x, f.pixel.y, 0), lit = im.coverage.at(f.pixel.x, f.pixel.y, 1);
+    return {executed > lit, num(executed) + " lights evaluated, " + num(lit) + " lit the pixel"};
+}
+
+ClaimResult attachmentEquals(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
+    FloatImage const* img = c.attachment == Attachment::Position     ? &im.position
+                            : c.attachment == Attachment::Normal     ? &im.normal
+                            : c.attachment == Attachment::AlbedoSpec ? &im.albedoSpec
+                            : c.attachment == Attachment::Depth      ? &im.depth
+                                                                     : &im.lighting;
+    if (!inside(*img, f.pixel)) return {false, "the pixel is outside the frame"};
+    glm::vec4 const v = texel(*img, f.pixel);
+    bool ok = true;
+    std::string got;
+    for (int i = 0; i < 4; ++i) {
+        if (!(c.compare & (1u << i))) continue;
+        ok = ok && std::abs(v[i] - c.value[i]) <= c.tolerance;
+        got += std::string(got.empty() ? "" : ", ") + "xyzw"[i] + " " + num(v[i]) + " (want " + num(c.value[i]) + ")";
+    }
+    return {ok, "stored (" + got + "), expected within " + num(c.tolerance)};
+}
+
+}  // namespace
+
+bool claimNeedsReference(LessonClaim const& claim) {
+    return claim.kind == ClaimKind::LosesLight || claim.kind == ClaimKind::SameImage ||
+           claim.kind == ClaimKind::FewerLitPixels || claim.kind == ClaimKind::DiffersFrom;
+}
+
+std::optional<ShadingInputs> surfaceAt(ClaimImages const& im, ClaimFrame const& f, glm::ivec2 p) {
+    if (!inside(im.position, p) || im.position.at(p.x, p.y, 3) == 0.0f) return std::nullopt;
+    ShadingInputs s;
+    s.position = glm::vec3(texel(im.position, p));
+    s.normal = glm::normalize(glm::vec3(texel(im.normal, p)));
+    glm::vec4 const as = texel(im.albedoSpec, p);
+    s.albedo = glm::vec3(as);
+    s.specular = as.a;
+    s.viewPosition = f.camera.position;
+    s.shininess = f.pipeline.shininess;
+    return s;
+}
+
+int litPixelCount(FloatImage const& lighting, ClaimImages const& im, glm::vec3 ambient, float epsilon) {
+    int n = 0;
+    for (int y = 0; y < lighting.height; ++y)
+        for (int x = 0; x < lighting.width; ++x) {
+            if (im.position.at(x, y, 3) == 0.0f) continue;
+            glm::vec3 const base = ambient * glm::vec3(texel(im.albedoSpec, {x, y}));
+            glm::vec3 const lit = glm::vec3(texel(lighting, {x, y}));
+            n += (lit.r - base.r > epsilon || lit.g - base.g > epsilon || lit.b - base.b > epsilon) ? 1 : 0;
+        }
+    return n;
+}
+
+int cpuTileLightCount(ClaimImages const& im, ClaimFrame const& f, glm::ivec2 pixel) {
+    int const w = im.depth.width, h = im.depth.height;
+    TileGrid const grid = tileGrid(w, h);
+    int const gy = h - 1 - pixel.y;  // tiles count from the bottom
+    gbl::PixelRect const rect = tilePixelRect(grid, w, h, pixel.x / grid.tileSize, gy / grid.tileSize);
+    float minD = 1e30f, maxD = 0.0f;
+    for (int y = rect.y0; y < rect.y1; ++y)
+        for (int x = rect.x0; x < rect.x1; ++x) {
+            int const row = h - 1 - y;
+            if (im.position.at(x, row, 3) == 0.0f) continue;
+            float const d = linearDepth(im.depth.at(x, row, 0), f.camera.nearPlane, f.camera.farPlane);
+            minD = std::min(minD, d);
+            maxD = std::max(maxD, d);
+        }
+    if (maxD <= 0.0f) return 0;
+    glm::mat4 const proj = f.camera.projection(float(w) / float(h)), view = f.camera.view();
+    TileFrustum const fr = tileFrustum(glm::inverse(proj), w, h, rect);
+    int n = 0;
+    for (PointLight const& l : f.lights) {
+        float const r = lightRadius(l).radius;
+        if (r > 0.0f && sphereTouchesTile(fr, minD, maxD, glm::vec3(view * glm::vec4(l.position, 1.0f)), r)) ++n;
+    }
+    return n;
+}
+
+ClaimResult checkClaim(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
+    switch (c.kind) {
+        case ClaimKind::MatchesCpu:
+            return matchesCpu(c, f, im);
+        case ClaimKind::LosesLight:
+            return losesLight(c, f, im);
+        case ClaimKind::SameImage:
+            return sameImage(c, im);
+        case ClaimKind::FewerLitPixels:
+            return fewerLitPixels(c, f, im);
+        case ClaimKind::PositionError:
+            return positionError(c, f, im);
+        case ClaimKind::TileCountMatchesCpu:
+            return tileCount(f, im);
+        case ClaimKind::ExecutedExceedsLit:
+            return executedExceedsLit(f, im);
+        case ClaimKind::AttachmentEquals:
+            return attachmentEquals(c, f, im);
+        case ClaimKind::DiffersFrom:
+            return differsFrom(c, im);
+    }
+    return {false, "unknown claim kind"};
+}
+
+}  // namespace gbl::ui

@@ -1,0 +1,58 @@
+// Checking a lesson step's claim on real read-back images: one function per claim kind, shared by
+// the GL test of every shipped lesson and `gbuffer-lab render --lesson` (claim.json).
+#pragma once
+
+#include "core/camera.h"
+#include "core/frame_types.h"
+#include "core/pipeline_settings.h"
+#include "core/point_light.h"
+#include "core/shading_cpu.h"
+#include "model/lesson_state.h"
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <span>
+#include <string>
+
+namespace gbl::ui {
+
+// The images of the step's frame (rows top to bottom, as Renderer::readAttachment returns
+// them) and, for claims with a reference, the reference frame's lit image.
+struct ClaimImages {
+    FloatImage lighting;
+    FloatImage position;
+    FloatImage normal;
+    FloatImage albedoSpec;
+    FloatImage depth;
+    FloatImage coverage;  // filled only when the step shows the heat map or the tile view
+    std::optional<FloatImage> referenceLighting;
+};
+
+struct ClaimFrame {
+    Camera camera;
+    std::span<PointLight const> lights;
+    PipelineSettings pipeline;
+    glm::ivec2 pixel{0};  // top-left origin
+};
+
+struct ClaimResult {
+    bool holds = false;
+    std::string detail;  // what was measured, in one sentence ("lit 0.0170 vs CPU 0.0532 ...")
+};
+
+// Whether the frame's images need the coverage attachment (a heat-map or tile view) and a
+// reference frame for this claim.
+bool claimNeedsReference(LessonClaim const& claim);
+
+ClaimResult checkClaim(LessonClaim const& claim, ClaimFrame const& frame, ClaimImages const& images);
+
+// Pieces the claims use, exposed for their tests.
+// The surface at a pixel as the shading sees it (position, normal, albedo, specular, camera).
+std::optional<ShadingInputs> surfaceAt(ClaimImages const& images, ClaimFrame const& frame, glm::ivec2 pixel);
+// Pixels whose lit value exceeds ambient * albedo by more than `epsilon` in any channel.
+int litPixelCount(FloatImage const& lighting, ClaimImages const& images, glm::vec3 ambient, float epsilon);
+// Lights the CPU tile test lists for the tile holding `pixel` (depth bounds from the depth image).
+int cpuTileLightCount(ClaimImages const& images, ClaimFrame const& frame, glm::ivec2 pixel);
+
+}  // namespace gbl::ui

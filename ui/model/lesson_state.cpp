@@ -1,0 +1,54 @@
+// Capturing the editor for a lesson and applying a lesson step to it.
+#include "model/lesson_state.h"
+
+#include "model/camera_rig.h"
+
+#include <algorithm>
+
+namespace gbl::ui {
+
+LessonSnapshot captureLessonSnapshot(EditorState const& state) {
+    LessonSnapshot s;
+    s.camera = state.camera;
+    s.lights = state.lights;
+    s.pipeline = state.pipeline;
+    s.viewers = state.gbuffer.viewers;
+    s.animation = state.animation;
+    s.selectedLight = state.lightsPanel.selected;
+    s.activeViewer = state.gbuffer.activeViewer;
+    s.inspectorLocked = state.inspector.locked;
+    s.inspectorPixel = state.inspector.pixel;
+    return s;
+}
+
+glm::ivec2 lessonPixel(glm::vec2 fraction, glm::ivec2 frameSize) {
+    glm::ivec2 const p(glm::floor(fraction * glm::vec2(frameSize)));
+    return glm::clamp(p, glm::ivec2(0), glm::max(frameSize - 1, glm::ivec2(0)));
+}
+
+void applyLessonSnapshot(LessonSnapshot const& s, EditorState& state, glm::ivec2 frameSize) {
+    state.camera = s.camera;
+    resetTargetAhead(state.rig, state.camera, glm::length(state.camera.position - state.sceneBounds.center()));
+    state.lights = s.lights;
+    state.pipeline = s.pipeline;
+    for (std::size_t i = 0; i < s.viewers.size(); ++i) {
+        // Run-time facts of the viewer (image size, last fit) stay; the settings come from the step.
+        ViewerState v = s.viewers[i];
+        v.imageSize = state.gbuffer.viewers[i].imageSize;
+        state.gbuffer.viewers[i] = v;
+    }
+    state.animation = s.animation;
+    state.lightsPanel.selected = s.selectedLight < int(s.lights.size()) ? s.selectedLight : -1;
+    state.lightsPanel.message.clear();
+    state.gbuffer.activeViewer = std::clamp(s.activeViewer, 0, int(state.gbuffer.viewers.size()) - 1);
+    if (s.pixel) {
+        state.inspector.pixel = lessonPixel(*s.pixel, frameSize);
+        state.inspector.locked = true;
+        state.inspector.source = "viewport";
+    } else {
+        state.inspector.pixel = s.inspectorPixel;
+        state.inspector.locked = s.inspectorLocked;
+    }
+}
+
+}  // namespace gbl::ui

@@ -1,0 +1,112 @@
+// Lessons as the editor plays them: the state a step sets up, the claim it makes, its text, and
+// which lesson and step are shown with the editor state to return to. Plain values, no ImGui.
+#pragma once
+
+#include "core/camera.h"
+#include "core/frame_types.h"
+#include "core/pipeline_settings.h"
+#include "core/point_light.h"
+#include "model/editor_state.h"
+#include "model/lights_state.h"
+#include "model/viewer_state.h"
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gbl::ui {
+
+// Everything a lesson step sets, and everything leaving a lesson puts back.
+struct LessonSnapshot {
+    Camera camera;
+    std::vector<PointLight> lights;
+    PipelineSettings pipeline;
+    std::array<ViewerState, 5> viewers = GBufferPanelState::defaultViewers();
+    LightAnimation animation;
+    int selectedLight = -1;
+    int activeViewer = 0;
+    // The pixel the step is about, as fractions of the frame (0..1, top-left origin), so that it
+    // names the same surface point at any viewport size; the inspector is locked on it.
+    std::optional<glm::vec2> pixel;
+    // Only for returning from a lesson: the inspector as it was.
+    bool inspectorLocked = false;
+    std::optional<glm::ivec2> inspectorPixel;
+};
+
+// The snapshot of the editor now (pixel left empty: the inspector's pixel is kept as is).
+LessonSnapshot captureLessonSnapshot(EditorState const& state);
+// Applies every field; `frameSize` turns the step's pixel into an inspector pixel.
+void applyLessonSnapshot(LessonSnapshot const& snapshot, EditorState& state, glm::ivec2 frameSize);
+// The renderer pixel (top-left origin) of a pixel given as fractions, clamped into the frame.
+glm::ivec2 lessonPixel(glm::vec2 fraction, glm::ivec2 frameSize);
+
+// --- claims --------------------------------------------------------------------------------
+// A small fixed vocabulary: each kind is checked by one function (model/lesson_claims.h) over
+// real read-back images, and every shipped step's claim is asserted by a GL test.
+enum class ClaimKind {
+    MatchesCpu,           // lit value at the pixel = ambient + every light, on the CPU (shading_cpu.h)
+    LosesLight,           // reference lit - step lit at the pixel = the CPU contribution of `light`
+    SameImage,            // the lit image equals the reference's within max_abs everywhere
+    FewerLitPixels,       // at least min_fraction of the reference's lit pixels are dark in the step
+    PositionError,        // |stored position - position rebuilt from depth| < bound on every pixel
+    TileCountMatchesCpu,  // lights listed for the pixel's tile = the CPU tile test (tile_math.h)
+    ExecutedExceedsLit,   // at the pixel, more lights were evaluated than lit it (coverage x > y)
+    AttachmentEquals,     // an attachment's value at the pixel equals `value` within tolerance
+    DiffersFrom,          // at least min_fraction of the covered pixels differ from the reference by > bound
+};
+inline constexpr std::array<std::string_view, 9> kClaimKindNames{
+    "matches_cpu",          "loses_light",          "same_image",
+    "fewer_lit_pixels",     "position_error_below", "tile_count_matches_cpu",
+    "executed_exceeds_lit", "attachment_equals",    "differs_from"};
+
+struct LessonClaim {
+    ClaimKind kind = ClaimKind::MatchesCpu;
+    int light = -1;                              // loses_light
+    std::optional<PipelineSettings> reference;   // loses_light, same_image, fewer_lit_pixels, differs_from
+    float tolerance = 0.0f;                      // matches_cpu, loses_light, attachment_equals (relative + absolute)
+    float bound = 0.0f;                          // position_error_below, same_image and differs_from (abs difference)
+    float minFraction = 0.0f;                    // fewer_lit_pixels, differs_from
+    Attachment attachment = Attachment::Normal;  // attachment_equals
+    glm::vec4 value{0.0f};                       // attachment_equals
+    unsigned compare = 0x7;                      // attachment_equals: bit i = component i is compared
+};
+
+// --- text ------------------------------------------------------------------------------------
+
+struct LessonText {
+    std::string title;
+    std::string look;      // what to look at
+    std::string equation;  // with {placeholders} for live values
+    std::string question;  // what to answer with the tool
+};
+
+// --- what the Lessons window shows and asks for -------------------------------------------------
+
+struct LessonState {
+    int lesson = -1;  // index into the editor's lesson list; -1 = no lesson running
+    int step = 0;
+    std::optional<LessonSnapshot> before;  // the editor before the lesson started
+
+    // Requests from the window, carried out by the editor loop (it knows the frame size and undo).
+    int startRequest = -1;  // a lesson was picked
+    int stepRequest = -1;   // go to this step of the running lesson
+    bool leaveRequested = false;
+    bool saveStepRequested = false;  // "Save the current state as a lesson step"
+    bool openRequested = false;      // open a lesson file (openPath)
+    std::string openPath;
+    std::string savePath = "my_lesson.json";  // where saved steps go
+    LessonText draft;                         // text typed for the step being saved
+    std::string message;                      // the last request's outcome (or why it was refused)
+    bool messageIsError = false;
+    int picked = 0;                // the lesson the list shows selected
+    glm::ivec2 pixelFrameSize{0};  // the frame size the step's pixel was placed for; a resize re-places it
+    // Window centres of the Start, Back, Next and Leave buttons as last drawn (0, 0 = not drawn),
+    // for UI tests that click them.
+    std::array<glm::vec2, 4> buttonCentres{};
+};
+
+}  // namespace gbl::ui

@@ -1,0 +1,140 @@
+// Lessons window.
+#include "panels/panel_lessons.h"
+
+#include "panels/layout.h"
+#include "panels/panel_file_browser.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+namespace gbl::ui {
+
+namespace {
+
+// std::string through ImGui's resize callback, so typed text has no fixed length.
+int resizeCallback(ImGuiInputTextCallbackData* data) {
+    if (data->EventFlag == ImGuiInputTextFlags_CallbackResize) {
+        auto* s = static_cast<std::string*>(data->UserData);
+        s->resize(std::size_t(data->BufTextLen));
+        data->Buf = s->data();
+    }
+    return 0;
+}
+
+bool inputText(char const* label, std::string& s, bool multiline) {
+    ImGuiInputTextFlags const flags = ImGuiInputTextFlags_CallbackResize;
+    if (multiline)
+        return ImGui::InputTextMultiline(label, s.data(), s.capacity() + 1,
+                                         ImVec2(-1.0f, ImGui::GetTextLineHeight() * 2.6f), flags, resizeCallback, &s);
+    ImGui::SetNextItemWidth(-1.0f);
+    return ImGui::InputText(label, s.data(), s.capacity() + 1, flags, resizeCallback, &s);
+}
+
+glm::vec2 itemCentre() {
+    ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    return {(a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f};
+}
+
+void drawPicker(LessonState& state, std::span<Lesson const> lessons) {
+    if (lessons.empty()) {
+        ImGui::TextWrapped("No lessons were found.");
+        return;
+    }
+    state.picked = std::clamp(state.picked, 0, int(lessons.size()) - 1);
+    Lesson const& picked = lessons[std::size_t(state.picked)];
+    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Start").x - ImGui::GetStyle().FramePadding.x * 2.0f -
+                            ImGui::GetStyle().ItemSpacing.x);
+    if (ImGui::BeginCombo("##lesson", picked.title.c_str())) {
+        for (std::size_t i = 0; i < lessons.size(); ++i) {
+            bool const sel = int(i) == state.picked;
+            std::string const label = std::to_string(i + 1) + ". " + lessons[i].title;
+            if (ImGui::Selectable(label.c_str(), sel)) state.picked = int(i);
+            if (sel) ImGui::SetItemDefaultFocus();
+        }
+        ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Start")) state.startRequest = state.picked;
+    state.buttonCentres[0] = itemCentre();
+    ImGui::TextWrapped("%s (%zu steps)", picked.summary.c_str(), picked.steps.size());
+}
+
+void drawStep(LessonState& state, Lesson const& lesson, LessonValues const& values) {
+    int const n = int(lesson.steps.size());
+    LessonStep const& step = lesson.steps[std::size_t(std::clamp(state.step, 0, n - 1))];
+    ImGui::BeginDisabled(state.step <= 0);
+    if (ImGui::Button("< Back")) state.stepRequest = state.step - 1;
+    state.buttonCentres[1] = itemCentre();
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(state.step >= n - 1);
+    if (ImGui::Button("Next >")) state.stepRequest = state.step + 1;
+    state.buttonCentres[2] = itemCentre();
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button("Leave")) state.leaveRequested = true;
+    state.buttonCentres[3] = itemCentre();
+    ImGui::SameLine();
+    ImGui::TextDisabled("%d / %d", state.step + 1, n);
+    ImGui::TextWrapped("%s: %s", lesson.title.c_str(), step.text.title.c_str());
+    ImGui::Separator();
+    ImGui::TextWrapped("%s", substituteLessonText(step.text.look, values).c_str());
+    ImGui::Spacing();
+    ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.0f, 1.0f), "Equation");
+    ImGui::TextWrapped("%s", substituteLessonText(step.text.equation, values).c_str());
+    ImGui::Spacing();
+    ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.45f, 1.0f), "Question");
+    ImGui::TextWrapped("%s", substituteLessonText(step.text.question, values).c_str());
+    if (step.claim)
+        ImGui::TextDisabled("checked claim: %s", std::string(enumName(kClaimKindNames, step.claim->kind)).c_str());
+}
+
+void drawAuthoring(LessonState& state, FileBrowserState& browser) {
+    if (!ImGui::CollapsingHeader("Save this state as a step")) return;
+    ImGui::TextUnformatted("Title");
+    inputText("##title", state.draft.title, false);
+    ImGui::TextUnformatted("What to look at");
+    inputText("##look", state.draft.look, true);
+    ImGui::TextUnformatted("Equation ({light.kq}, {pixel.lit})");
+    inputText("##equation", state.draft.equation, true);
+    ImGui::TextUnformatted("Question");
+    inputText("##question", state.draft.question, true);
+    ImGui::TextUnformatted("Lesson file (appended to)");
+    inputText("##savepath", state.savePath, false);
+    if (ImGui::Button("Save step")) state.saveStepRequested = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Open lesson file...")) openFileBrowser(browser, FileBrowserPurpose::OpenLesson, state.savePath);
+}
+
+}  // namespace
+
+void drawLessonsPanel(LessonState& state, std::span<Lesson const> lessons, std::span<std::string const> loadErrors,
+                      LessonValues const& values, FileBrowserState& browser) {
+    state.buttonCentres = {};
+    placeWindow(EditorWindow::Lessons);
+    if (ImGui::Begin(windowName(EditorWindow::Lessons), nullptr, editorWindowFlags())) {
+        if (state.lesson >= 0 && state.lesson < int(lessons.size()))
+            drawStep(state, lessons[std::size_t(state.lesson)], values);
+        else
+            drawPicker(state, lessons);
+        if (!state.message.empty()) {
+            ImVec4 const colour =
+                state.messageIsError ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.6f, 0.9f, 0.6f, 1.0f);
+            ImGui::PushStyleColor(ImGuiCol_Text, colour);
+            ImGui::TextWrapped("%s", state.message.c_str());
+            ImGui::PopStyleColor();
+        }
+        for (auto const& e : loadErrors) ImGui::TextWrapped("%s", e.c_str());
+        ImGui::Separator();
+        drawAuthoring(state, browser);
+    }
+    ImGui::End();
+    if (browser.purpose == FileBrowserPurpose::OpenLesson)
+        if (auto path = drawFileBrowser(browser)) {
+            state.openPath = *path;
+            state.openRequested = true;
+        }
+}
+
+}  // namespace gbl::ui

@@ -1,0 +1,488 @@
+// Lesson files: reading (each step's state goes through the session parser), writing and the
+// lesson folder. Every message names the file and the field.
+#include "session/lesson_file.h"
+
+#include "model/lesson_claims.h"
+#include "model/lesson_text.h"
+#include "scene/default_scene.h"
+#include "session/atomic_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <initializer_list>
+#include <stdexcept>
+
+namespace gbl::ui {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct FieldError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+[[noreturn]] void fail(std::string const& field, std::string const& what) {
+    throw FieldError(field + " " + what);
+}
+
+void knownFields(json const& j, std::string const& path, std::initializer_list<std::string_view> known) {
+    if (!j.is_object()) fail(path, "must be an object");
+    for (auto it = j.begin(); it != j.end(); ++it)
+        if (std::find(known.begin(), known.end(), std::string_view(it.key())) == known.end())
+            fail(path.empty() ? it.key() : path + "." + it.key(), "is not a known field");
+}
+
+std::string text(json const& j, std::string const& key, std::string const& path, bool required = true) {
+    auto it = j.find(key);
+    std::string const field = path + "." + key;
+    if (it == j.end()) {
+        if (required) fail(field, "is missing");
+        return {};
+    }
+    if (!it->is_string()) fail(field, "must be a string");
+    std::string s = it->get<std::string>();
+    if (required && s.find_first_not_of(" \t\n") == std::string::npos) fail(field, "must not be empty");
+    if (auto bad = unknownPlaceholder(s)) {
+        std::string list;
+        for (auto p : kLessonPlaceholders) list += (list.empty() ? "" : ", ") + std::string(p);
+        fail(field, "uses the unknown placeholder " + *bad + " (known: " + list + ")");
+    }
+    return s;
+}
+
+int integer(json const& j, std::string const& field, int lo, int hi) {
+    if (!j.is_number_integer() || j.get<long long>() < lo || j.get<long long>() > hi)
+        fail(field, "must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) + " (got " +
+                        j.dump() + ")");
+    return int(j.get<long long>());
+}
+
+float number(json const& j, std::string const& field, float lo, float hi) {
+    if (!j.is_number() || !std::isfinite(j.get<double>()) || j.get<double>() < lo || j.get<double>() > hi)
+        fail(field, "must be a number from " + json(lo).dump() + " to " + json(hi).dump() + " (got " + j.dump() + ")");
+    return j.get<float>();
+}
+
+Camera const& defaultCamera() {
+    // The default scene's own view, built once: lessons start where the editor starts.
+    static Camera const camera = makeDefaultScene({0}).camera.value_or(Camera{});
+    return camera;
+}
+
+// The session parser's messages start with the label and ": "; the field path follows.
+std::string sessionField(std::string const& error) {
+    std::string const prefix = "@: ";
+    return error.rfind(prefix, 0) == 0 ? error.substr(prefix.size()) : error;
+}
+
+// A step's whole state: the session the default scene starts with, patched by the lesson's
+// setup and the step, then read by parseSession so every session rule (and every pipeline
+// setting the session knows) applies. `path` names the step in messages.
+Session readState(json const& state, std::string const& path, glm::vec3* lookAt, bool* hasLookAt) {
+    Session base;
+    base.camera = defaultCamera();
+    int lights = 32;
+    if (auto it = state.find("scene"); it != state.end()) {
+        knownFields(*it, path + ".scene", {"lights"});
+        if (auto n = it->find("lights"); n != it->end()) lights = integer(*n, path + ".scene.lights", 0, kMaxLights);
+    }
+    base.defaultSceneLights = lights;
+    base.lights = makeDefaultLights(lights);
+    json j = json::parse(sessionToJson(base));
+    if (auto it = state.find("lights"); it != state.end()) j["lights"] = *it;
+    *hasLookAt = false;
+    if (auto it = state.find("camera"); it != state.end()) {
+        if (!it->is_object()) fail(path + ".camera", "must be an object");
+        json cam = *it;
+        if (auto la = cam.find("look_at"); la != cam.end()) {
+            if (!la->is_array() || la->size() != 3 || !(*la)[0].is_number() || !(*la)[1].is_number() ||
+                !(*la)[2].is_number())
+                fail(path + ".camera.look_at", "must be an array of 3 numbers");
+            *lookAt = {(*la)[0].get<float>(), (*la)[1].get<float>(), (*la)[2].get<float>()};
+            *hasLookAt = true;
+            cam.erase("look_at");
+        }
+        j["camera"].merge_patch(cam);
+    }
+    for (char const* key : {"pipeline", "viewers"})
+        if (auto it = state.find(key); it != state.end()) {
+            if (!it->is_object()) fail(path + "." + key, "must be an object");
+            j[key].merge_patch(*it);
+        }
+    SessionLoad load = parseSession(j.dump(), "@");
+    if (!load.session) fail(path + "." + sessionField(load.error), "");
+    return *load.session;
+}
+
+// Setup first, then the step: objects merge field by field, "lights" and "pixel" replace.
+json mergedState(json const& setup, json const& step) {
+    json out = setup.is_object() ? setup : json::object();
+    for (char const* key : {"scene", "lights", "camera", "pipeline", "viewers", "selected_light", "viewer", "pixel"}) {
+        auto it = step.find(key);
+        if (it == step.end()) continue;
+        if ((std::string_view(key) == "camera" || std::string_view(key) == "pipeline" ||
+             std::string_view(key) == "viewers" || std::string_view(key) == "scene") &&
+            it->is_object() && out.contains(key) && out[key].is_object())
+            out[key].merge_patch(*it);
+        else
+            out[key] = *it;
+    }
+    return out;
+}
+
+Attachment attachmentNamed(json const& j, std::string const& field) {
+    static constexpr std::array<std::pair<std::string_view, Attachment>, 5> names{
+        {{"position", Attachment::Position},
+         {"normal", Attachment::Normal},
+         {"albedo_spec", Attachment::AlbedoSpec},
+         {"depth", Attachment::Depth},
+         {"lighting", Attachment::Lighting}}};
+    if (j.is_string())
+        for (auto const& [name, a] : names)
+            if (j.get<std::string>() == name) return a;
+    fail(field, "must be one of position, normal, albedo_spec, depth or lighting (got " + j.dump() + ")");
+}
+
+LessonClaim readClaim(json const& c, std::string const& path, json const& state, LessonStep const& step) {
+    knownFields(c, path, {"kind", "light", "reference", "tolerance", "bound", "min_fraction", "attachment", "value"});
+    auto kindIt = c.find("kind");
+    if (kindIt == c.end()) fail(path + ".kind", "is missing");
+    std::string names;
+    for (auto n : kClaimKindNames) names += (names.empty() ? "" : ", ") + std::string(n);
+    if (!kindIt->is_string()) fail(path + ".kind", "must be one of " + names);
+    auto const kind = enumFromName<ClaimKind>(kClaimKindNames, kindIt->get<std::string>());
+    if (!kind) fail(path + ".kind", "must be one of " + names + " (got " + kindIt->dump() + ")");
+    LessonClaim claim;
+    claim.kind = *kind;
+    auto need = [&](char const* key) -> json const& {
+        auto it = c.find(key);
+        if (it == c.end()) fail(path + "." + key, "is missing (a " + kindIt->get<std::string>() + " claim needs it)");
+        return *it;
+    };
+    auto optionalNumber = [&](char const* key, float fallback, float lo, float hi) {
+        auto it = c.find(key);
+        return it == c.end() ? fallback : number(*it, path + "." + key, lo, hi);
+    };
+    bool const atPixel = *kind == ClaimKind::MatchesCpu || *kind == ClaimKind::LosesLight ||
+                         *kind == ClaimKind::TileCountMatchesCpu || *kind == ClaimKind::ExecutedExceedsLit ||
+                         *kind == ClaimKind::AttachmentEquals;
+    if (atPixel && !step.state.pixel)
+        fail(path + ".kind", "is a claim about the step's pixel, and the step has no pixel");
+    claim.tolerance = optionalNumber("tolerance", 0.02f, 0.0f, 10.0f);
+    switch (*kind) {
+        case ClaimKind::LosesLight:
+            claim.light = integer(need("light"), path + ".light", 0, int(step.state.lights.size()) - 1);
+            break;
+        case ClaimKind::SameImage:
+            claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
+            break;
+        case ClaimKind::FewerLitPixels:
+            claim.minFraction = number(need("min_fraction"), path + ".min_fraction", 0.0f, 1.0f);
+            break;
+        case ClaimKind::PositionError:
+            claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
+            break;
+        case ClaimKind::TileCountMatchesCpu:
+            if (step.state.pipeline.mode != LightingMode::Tiled || step.state.pipeline.view != DebugView::TileLights)
+                fail(path + ".kind", "needs pipeline.mode \"tiled\" and pipeline.view \"tile_lights\"");
+            break;
+        case ClaimKind::ExecutedExceedsLit:
+            if (step.state.pipeline.view != DebugView::Heatmap) fail(path + ".kind", "needs pipeline.view \"heatmap\"");
+            break;
+        case ClaimKind::AttachmentEquals: {
+            claim.attachment = attachmentNamed(need("attachment"), path + ".attachment");
+            json const& v = need("value");
+            // null skips a component: [null, 0, null] says only "y is 0".
+            if (!v.is_array() || v.empty() || v.size() > 4)
+                fail(path + ".value", "must be an array of 1 to 4 numbers (null skips a component)");
+            claim.compare = 0;
+            for (std::size_t i = 0; i < v.size(); ++i) {
+                if (v[i].is_null()) continue;
+                claim.value[int(i)] = number(v[i], path + ".value[" + std::to_string(i) + "]", -1e6f, 1e6f);
+                claim.compare |= 1u << i;
+            }
+            if (!claim.compare) fail(path + ".value", "must compare at least one component");
+            break;
+        }
+        case ClaimKind::DiffersFrom:
+            claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
+            claim.minFraction = number(need("min_fraction"), path + ".min_fraction", 0.0f, 1.0f);
+            break;
+        case ClaimKind::MatchesCpu:
+            break;
+    }
+    if (claimNeedsReference(claim)) {
+        // The reference is the step's pipeline with these settings changed, read like the step.
+        json const& ref = need("reference");
+        if (!ref.is_object()) fail(path + ".reference", "must be an object of pipeline settings");
+        json s = state;
+        if (!s.contains("pipeline") || !s["pipeline"].is_object()) s["pipeline"] = json::object();
+        s["pipeline"].merge_patch(ref);
+        glm::vec3 ignored;
+        bool has = false;
+        try {
+            claim.reference = readState(s, "@", &ignored, &has).pipeline;
+        } catch (FieldError const& e) {
+            std::string what = e.what();
+            if (what.rfind("@.pipeline.", 0) == 0) what = path + ".reference." + what.substr(11);
+            throw FieldError(what);
+        }
+    }
+    return claim;
+}
+
+LessonStep readStep(json const& j, std::string const& path, json const& setup) {
+    knownFields(j, path,
+                {"title", "look", "equation", "question", "scene", "lights", "camera", "pipeline", "viewers",
+                 "selected_light", "viewer", "pixel", "claim"});
+    LessonStep step;
+    step.text.title = text(j, "title", path);
+    step.text.look = text(j, "look", path);
+    step.text.equation = text(j, "equation", path);
+    step.text.question = text(j, "question", path);
+    json const state = mergedState(setup, j);
+    glm::vec3 lookAt{0.0f};
+    bool hasLookAt = false;
+    Session const s = readState(state, path, &lookAt, &hasLookAt);
+    step.defaultSceneLights = s.defaultSceneLights;
+    step.state.camera = s.camera;
+    if (hasLookAt) {
+        if (glm::length(lookAt - s.camera.position) < 1e-4f)
+            fail(path + ".camera.look_at", "must differ from camera.position");
+        step.state.camera.lookAt(lookAt);
+        if (std::abs(step.state.camera.pitchDegrees) > 89.0f)
+            fail(path + ".camera.look_at", "is straight above or below the camera (pitch must stay within 89 degrees)");
+    }
+    step.state.lights = s.lights;
+    step.state.pipeline = s.pipeline;
+    step.state.viewers = s.viewers;
+    step.state.animation = {};
+    if (auto it = state.find("selected_light"); it != state.end())
+        step.state.selectedLight = integer(*it, path + ".selected_light", -1, int(s.lights.size()) - 1);
+    if (auto it = state.find("viewer"); it != state.end()) {
+        auto const v = it->is_string() ? enumFromName<ViewerKind>(kViewerNames, it->get<std::string>()) : std::nullopt;
+        if (!v)
+            fail(path + ".viewer",
+                 "must be one of position, normal, albedo, specular or depth (got " + it->dump() + ")");
+        step.state.activeViewer = int(*v);
+    }
+    if (auto it = state.find("pixel"); it != state.end()) {
+        if (!it->is_array() || it->size() != 2) fail(path + ".pixel", "must be an array of 2 numbers");
+        glm::vec2 p;
+        for (int i = 0; i < 2; ++i)
+            p[i] = number((*it)[std::size_t(i)], path + ".pixel[" + std::to_string(i) + "]", 0.0f, 1.0f);
+        step.state.pixel = p;
+    }
+    if (auto it = j.find("claim"); it != j.end()) step.claim = readClaim(*it, path + ".claim", state, step);
+    return step;
+}
+
+Lesson readLesson(json const& j) {
+    if (!j.is_object()) fail("the file", "must hold a JSON object");
+    auto fmt = j.find("format");
+    if (fmt == j.end()) fail("format", "is missing");
+    if (!fmt->is_string() || fmt->get<std::string>() != kLessonFormat)
+        fail("format", "must be \"" + std::string(kLessonFormat) + "\" (got " + fmt->dump() +
+                           "); this is not a gbuffer-lab lesson");
+    auto ver = j.find("version");
+    if (ver == j.end()) fail("version", "is missing");
+    if (!ver->is_number_integer() || ver->get<long long>() != kLessonVersion)
+        fail("version",
+             ver->dump() + " is not supported; this program reads lesson version " + std::to_string(kLessonVersion));
+    knownFields(j, "", {"format", "version", "id", "title", "summary", "size", "setup", "steps"});
+    Lesson lesson;
+    auto id = j.find("id");
+    if (id == j.end()) fail("id", "is missing");
+    if (!id->is_string() || id->get<std::string>().empty() ||
+        id->get<std::string>().find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos)
+        fail("id", "must be lower-case letters, digits, '_' or '-' (got " + id->dump() + ")");
+    lesson.id = id->get<std::string>();
+    lesson.title = text(j, "title", "");
+    if (j.contains("summary")) lesson.summary = text(j, "summary", "", false);
+    if (auto size = j.find("size"); size != j.end()) {
+        if (!size->is_array() || size->size() != 2) fail("size", "must be [width, height]");
+        lesson.width = integer((*size)[0], "size[0]", 16, 8192);
+        lesson.height = integer((*size)[1], "size[1]", 16, 8192);
+    }
+    json setup = json::object();
+    if (auto s = j.find("setup"); s != j.end()) {
+        knownFields(*s, "setup",
+                    {"scene", "lights", "camera", "pipeline", "viewers", "selected_light", "viewer", "pixel"});
+        setup = *s;
+        glm::vec3 ignored;
+        bool has = false;
+        readState(setup, "setup", &ignored, &has);  // its own errors name the setup, not a step
+    }
+    auto steps = j.find("steps");
+    if (steps == j.end()) fail("steps", "is missing");
+    if (!steps->is_array() || steps->empty()) fail("steps", "must be an array of at least one step");
+    for (std::size_t i = 0; i < steps->size(); ++i)
+        lesson.steps.push_back(readStep((*steps)[i], "steps[" + std::to_string(i) + "]", setup));
+    return lesson;
+}
+
+}  // namespace
+
+LessonLoad parseLesson(std::string_view source, std::string const& fileLabel) {
+    LessonLoad out;
+    json j;
+    try {
+        j = json::parse(source.begin(), source.end());
+    } catch (json::exception const& e) {
+        std::string what = e.what();
+        if (auto const close = what.find("] "); what.rfind("[json.exception", 0) == 0 && close != std::string::npos)
+            what = what.substr(close + 2);
+        out.error = fileLabel + ": not valid JSON: " + what;
+        return out;
+    }
+    try {
+        out.lesson = readLesson(j);
+    } catch (FieldError const& e) {
+        std::string what = e.what();
+        while (!what.empty() && what.back() == ' ') what.pop_back();
+        if (what.rfind(".", 0) == 0) what = what.substr(1);
+        out.error = fileLabel + ": " + what;
+    } catch (json::exception const& e) {
+        out.error = fileLabel + ": " + e.what();
+    }
+    return out;
+}
+
+LessonLoad loadLesson(std::string const& path) {
+    std::string error;
+    auto text = readWholeFile(path, &error);
+    if (!text) return {std::nullopt, "cannot read lesson: " + error};
+    LessonLoad load = parseLesson(*text, path);
+    if (load.lesson) load.lesson->path = path;
+    return load;
+}
+
+std::string defaultLessonDir() {
+    if (char const* env = std::getenv("GBL_LESSONS_DIR"); env && *env) return env;
+    return GBL_LESSONS_DIR;
+}
+
+LessonLibrary loadLessonDir(std::string const& dir) {
+    LessonLibrary lib;
+    std::error_code ec;
+    std::vector<std::string> files;
+    for (auto const& e : fs::directory_iterator(dir, ec))
+        if (e.path().extension() == ".json") files.push_back(e.path().string());
+    if (ec) {
+        lib.errors.push_back("cannot list lessons in " + dir + ": " + ec.message());
+        return lib;
+    }
+    std::sort(files.begin(), files.end());
+    for (auto const& f : files) {
+        LessonLoad load = loadLesson(f);
+        if (!load.lesson) {
+            lib.errors.push_back(load.error);
+            continue;
+        }
+        bool const dup = std::any_of(lib.lessons.begin(), lib.lessons.end(),
+                                     [&](Lesson const& l) { return l.id == load.lesson->id; });
+        if (dup)
+            lib.errors.push_back(f + ": id \"" + load.lesson->id + "\" is already used by another lesson");
+        else
+            lib.lessons.push_back(std::move(*load.lesson));
+    }
+    return lib;
+}
+
+LessonRef findLessonStep(LessonLibrary const& library, std::string_view ref) {
+    LessonRef out;
+    std::string_view id = ref;
+    std::string_view step;
+    if (auto colon = ref.find(':'); colon != std::string_view::npos) {
+        id = ref.substr(0, colon);
+        step = ref.substr(colon + 1);
+    }
+    for (std::size_t i = 0; i < library.lessons.size(); ++i)
+        if (library.lessons[i].id == id) out.lesson = int(i);
+    if (out.lesson < 0) {
+        std::string ids;
+        for (auto const& l : library.lessons) ids += (ids.empty() ? "" : ", ") + l.id;
+        out.error = "no lesson has the id \"" + std::string(id) + "\" (lessons: " + ids + ")";
+        return out;
+    }
+    int const count = int(library.lessons[std::size_t(out.lesson)].steps.size());
+    if (!step.empty()) {
+        int n = 0;
+        bool digits = step.find_first_not_of("0123456789") == std::string_view::npos && step.size() < 6;
+        if (digits) n = std::stoi(std::string(step));
+        if (!digits || n < 1 || n > count) {
+            out.error = "lesson " + std::string(id) + " has steps 1 to " + std::to_string(count) + ", not \"" +
+                        std::string(step) + "\"";
+            out.lesson = -1;
+            return out;
+        }
+        out.step = n - 1;
+    }
+    return out;
+}
+
+namespace {
+
+nlohmann::ordered_json stepJson(LessonStep const& step) {
+    Session s;
+    s.defaultSceneLights = step.defaultSceneLights;
+    s.camera = step.state.camera;
+    s.lights = step.state.lights;
+    s.pipeline = step.state.pipeline;
+    s.viewers = step.state.viewers;
+    auto const session = nlohmann::ordered_json::parse(sessionToJson(s));
+    nlohmann::ordered_json j = {{"title", step.text.title},
+                                {"look", step.text.look},
+                                {"equation", step.text.equation},
+                                {"question", step.text.question},
+                                {"scene", {{"lights", step.defaultSceneLights}}},
+                                {"camera", session["camera"]},
+                                {"lights", session["lights"]},
+                                {"pipeline", session["pipeline"]},
+                                {"viewers", session["viewers"]},
+                                {"selected_light", step.state.selectedLight},
+                                {"viewer", kViewerNames[std::size_t(std::clamp(step.state.activeViewer, 0, 4))]}};
+    if (step.state.pixel) j["pixel"] = {step.state.pixel->x, step.state.pixel->y};
+    return j;
+}
+
+}  // namespace
+
+std::string lessonToJson(Lesson const& lesson) {
+    nlohmann::ordered_json steps = nlohmann::ordered_json::array();
+    for (auto const& s : lesson.steps) steps.push_back(stepJson(s));
+    nlohmann::ordered_json j = {
+        {"format", kLessonFormat}, {"version", kLessonVersion}, {"id", lesson.id},
+        {"title", lesson.title},   {"summary", lesson.summary}, {"size", {lesson.width, lesson.height}},
+        {"steps", steps}};
+    return j.dump(2) + "\n";
+}
+
+std::optional<std::string> appendLessonStep(std::string const& path, LessonStep const& step) {
+    Lesson lesson;
+    std::error_code ec;
+    if (fs::exists(path, ec)) {
+        LessonLoad load = loadLesson(path);
+        if (!load.lesson) return load.error;
+        lesson = std::move(*load.lesson);
+    } else {
+        std::string id;
+        for (char c : fs::path(path).stem().string()) {
+            char const l = char(std::tolower(static_cast<unsigned char>(c)));
+            id += (std::isalnum(static_cast<unsigned char>(l)) || l == '-') ? l : '_';
+        }
+        lesson.id = id.empty() ? "lesson" : id;
+        lesson.title = "Lesson " + lesson.id;
+    }
+    lesson.steps.push_back(step);
+    return writeFileAtomically(path, lessonToJson(lesson));
+}
+
+}  // namespace gbl::ui

@@ -1,0 +1,70 @@
+// Lesson files: one versioned JSON file per lesson in assets/lessons/, each step a whole editor
+// state (parsed by the session code, so every pipeline setting a session knows a lesson knows),
+// its text and an optional machine-checked claim. Messages name the file and the field.
+#pragma once
+
+#include "model/lesson_state.h"
+#include "session/session.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gbl::ui {
+
+inline constexpr std::string_view kLessonFormat = "gbuffer-lab-lesson";
+// Bump when a field changes meaning or a required field is added.
+inline constexpr int kLessonVersion = 1;
+
+struct LessonStep {
+    LessonText text;
+    LessonSnapshot state;  // camera, lights, pipeline, viewers, selection, pixel
+    int defaultSceneLights = 32;
+    std::optional<LessonClaim> claim;
+};
+
+struct Lesson {
+    std::string id;  // letters, digits, '_' and '-': what `render --lesson ID:STEP` names
+    std::string title;
+    std::string summary;
+    int width = 640;  // the frame size the lesson's pixels and claims were measured at
+    int height = 360;
+    std::vector<LessonStep> steps;
+    std::string path;  // the file it came from
+};
+
+struct LessonLoad {
+    std::optional<Lesson> lesson;
+    std::string error;  // "<file>: <field> <what is wrong>" when lesson is empty
+};
+
+LessonLoad parseLesson(std::string_view text, std::string const& fileLabel);
+LessonLoad loadLesson(std::string const& path);
+
+struct LessonLibrary {
+    std::vector<Lesson> lessons;      // sorted by file name
+    std::vector<std::string> errors;  // one sentence per file that failed
+};
+
+// Every *.json in `dir`, in file-name order. Duplicate ids are an error of the later file.
+LessonLibrary loadLessonDir(std::string const& dir);
+// assets/lessons of the source tree, or $GBL_LESSONS_DIR when set.
+std::string defaultLessonDir();
+
+// "ID" or "ID:STEP" (STEP counted from 1) to the lesson's index and the step's index; an
+// error sentence listing the lessons otherwise.
+struct LessonRef {
+    int lesson = -1;
+    int step = 0;
+    std::string error;
+};
+LessonRef findLessonStep(LessonLibrary const& library, std::string_view ref);
+
+// The lesson as JSON, every step written in full (camera, lights, pipeline, viewers).
+std::string lessonToJson(Lesson const& lesson);
+// Appends `step` to the lesson in `path` (creating it, with the id taken from the file name,
+// when the file does not exist); the error sentence on failure. The file is written atomically.
+std::optional<std::string> appendLessonStep(std::string const& path, LessonStep const& step);
+
+}  // namespace gbl::ui
