@@ -1,6 +1,7 @@
 // gbuffer-lab entry point: the editor by default, `render` and `bench` as sub-commands.
 #include "bench_command.h"
 #include "cli_values.h"
+#include "compare_command.h"
 #include "editor.h"
 #include "render_command.h"
 
@@ -44,6 +45,10 @@ int main(int argc, char** argv) {
     CLI::App* bench = app.add_subcommand("bench", "Measure GPU time per pass for lighting modes and light counts");
     gbl::addBenchOptions(*bench, benchOptions);
 
+    gbl::CompareOptions compareOptions;
+    CLI::App* compare = app.add_subcommand("compare", "Render two session files and diff their lit frames");
+    gbl::addCompareOptions(*compare, compareOptions);
+
     try {
         app.parse(argc, argv);
     } catch (CLI::ParseError const& e) {
@@ -53,6 +58,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     if (render->parsed()) return gbl::runRender(renderOptions);
+    if (compare->parsed()) return gbl::runCompare(compareOptions);
     if (bench->parsed()) {
         benchOptions.lightsGiven = bench->count("--lights") > 0;
         return gbl::runBench(benchOptions);
