@@ -100,9 +100,14 @@ int runCompare(CompareOptions const& o) {
         if (auto err = renderer.setScene(side->prepared.scene)) return badArgument(*err);
         side->stats = renderer.render({side->prepared.camera, side->prepared.lights, side->settings, true});
         side->lighting = renderer.readAttachment(Attachment::Lighting);
-        FrameExport frame{side->prepared.camera, side->prepared.lights, side->settings, side->stats,
-                          side->prepared.scene.triangleCount(), {}};
-        if (auto err = exportFrame(renderer, frame, (out / (side == &a ? "a" : "b")).string())) return badArgument(*err);
+        FrameExport frame{side->prepared.camera,
+                          side->prepared.lights,
+                          side->settings,
+                          side->stats,
+                          side->prepared.scene.triangleCount(),
+                          {}};
+        if (auto err = exportFrame(renderer, frame, (out / (side == &a ? "a" : "b")).string()))
+            return badArgument(*err);
     }
 
     // The editor's diff (model/image_stats.h): B is the reference, as a pinned frame is.

@@ -245,7 +245,8 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     // which start at input.lights[0] except for a contribution frame (light k alone).
     int outline = outlinedLight(input);
     if (outline >= 0 && input.accumulateLights && input.lightContribution) outline = 0;
-    bool const wireframes = (s.volumeWireframes || (input.accumulateLights && input.outlineAccumulated && outline >= 0)) && volumesReady();
+    bool const wireframes =
+        (s.volumeWireframes || (input.accumulateLights && input.outlineAccumulated && outline >= 0)) && volumesReady();
     bool const volumeInstances = s.mode == LightingMode::Volumes || wireframes;
     if (volumeInstances) prepareVolumeInstances(volumes, {f.camera, f.aspect, f.lights});
 

@@ -1,6 +1,6 @@
 // The A/B field table, side B and the scrubber's steps: plain values, no GL.
-#include "model/ab_accumulate.h"
 #include "model/ab_compare.h"
+#include "model/ab_accumulate.h"
 
 #include <gtest/gtest.h>
 

@@ -20,8 +20,8 @@ namespace {
 // A session saved by `render --save-session` with the given extra render options.
 std::string savedSession(std::string const& dir, std::string const& name, std::vector<std::string> extra) {
     std::string const session = dir + "/" + name + ".json";
-    std::vector<std::string> args{"render", "--out", dir + "/r_" + name, "--size", "64x36", "--lights", "8",
-                                  "--save-session", session};
+    std::vector<std::string> args{"render",   "--out", dir + "/r_" + name, "--size", "64x36",
+                                  "--lights", "8",     "--save-session",   session};
     args.insert(args.end(), extra.begin(), extra.end());
     auto const r = runGbufferLab(args);
     EXPECT_EQ(r.exitCode, 0) << r.output;
@@ -42,8 +42,8 @@ TEST(CompareCommand, SameSessionsDoNotDifferAndEveryFileIsWritten) {
     std::string const a = savedSession(dir, "a", {});
     auto const r = runGbufferLab({"compare", a, a, "--out", dir + "/out", "--size", "96x54"});
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (char const* f : {"a/final.png", "a/lighting.exr", "a/stats.json", "b/final.png", "b/lighting.exr",
-                          "diff.exr", "diff.png", "compare.json"})
+    for (char const* f : {"a/final.png", "a/lighting.exr", "a/stats.json", "b/final.png", "b/lighting.exr", "diff.exr",
+                          "diff.png", "compare.json"})
         EXPECT_TRUE(fs::exists(fs::path(dir) / "out" / f)) << f;
     auto const j = test::readJsonFile(dir + "/out/compare.json");
     EXPECT_EQ(j["width"], 96);

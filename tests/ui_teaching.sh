@@ -3,10 +3,22 @@
 # sizes: a click on the scrubber turns accumulation on at k = 0, Right/Left arrows step it, a click
 # turns A/B on, and a drag moves the divider without moving the camera. Checks read --log-frames;
 # screenshots of each step are left in WORK_DIR to look at.
-# usage: ui_teaching.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
+# usage: ui_teaching.sh GBUFFER_LAB WORK_DIR          (ctest: each size on an Xvfb of its own)
+#        ui_teaching.sh GBUFFER_LAB WORK_DIR WxH      (one size, on the current $DISPLAY)
 set -eu
 bin="$1"
 work="$2"
+if [ $# -lt 3 ]; then
+    # A second editor on the same Xvfb sees no pointer motion after the first one quit, so every
+    # size gets a fresh server.
+    rm -rf "$work"
+    for size in 1280x720 1600x900; do
+        xvfb-run -a -s "-screen 0 1920x1080x24" sh "$0" "$bin" "$work/$size" "$size" || exit 1
+    done
+    echo "ui_teaching: screenshots in $work/*/"
+    echo "ui_teaching: PASS"
+    exit 0
+fi
 
 if ! command -v xdotool >/dev/null 2>&1; then
     echo "ui_teaching skipped: xdotool not found (scripts/install-deps.sh installs it)"
@@ -51,16 +63,24 @@ run_size() {
     "$bin" --size "$size" --no-vsync --frame-sleep-ms 40 --log-frames "$log" > "$work/editor_$size.log" 2>&1 &
     pid=$!
     wait_frames 4
-    wid=$(xdotool search --sync --onlyvisible --name '^gbuffer-lab$' | head -n 1)
+    # The newest window of that name: the one this run opened.
+    wid=$(xdotool search --sync --onlyvisible --name '^gbuffer-lab$' | tail -n 1)
     [ -n "$wid" ] || fail "no gbuffer-lab window"
+    xdotool getwindowgeometry "$wid" | tr '\n' ' '
+    echo
     xdotool windowactivate --sync "$wid" 2>/dev/null || xdotool windowfocus --sync "$wid"
-    wait_frames 2
+    # The pointer over the viewport first, so the window has seen it before the first press.
+    set -- $(rect_point viewport 0.5 0.5)
+    xdotool mousemove --window "$wid" "$1" "$2"
+    wait_frames 6
     [ "$(field accumulate)" = "-1" ] || fail "accumulation is on at start"
 
     # --- a click at the scrubber's left end: accumulation on, k = 0 -------------------------
     set -- $(rect_point scrubber 0.02 0.5)
     [ "$1" -gt 0 ] || fail "the scrubber was not drawn ($(field scrubber))"
-    xdotool mousemove --window "$wid" "$1" "$2" sleep 0.1 mousedown 1 sleep 0.05 mouseup 1
+    xdotool mousemove --window "$wid" "$1" "$2"
+    wait_frames 3
+    xdotool mousedown 1 sleep 0.05 mouseup 1
     wait_frames 4
     [ "$(field accumulate)" = "0" ] || fail "clicking the scrubber's left end gave k = $(field accumulate)"
     shot "k0_$size"
@@ -77,7 +97,9 @@ run_size() {
 
     # --- the A/B toggle, then a drag of the divider from the middle to 30 % ---------------------
     set -- $(rect_point abToggle 0.5 0.5)
-    xdotool mousemove --window "$wid" "$1" "$2" sleep 0.1 mousedown 1 sleep 0.05 mouseup 1
+    xdotool mousemove --window "$wid" "$1" "$2"
+    wait_frames 3
+    xdotool mousedown 1 sleep 0.05 mouseup 1
     wait_frames 4
     awk -v d="$(field abDivider)" 'BEGIN { exit !(d == 0.5) }' ||
         fail "the A/B toggle did not open the split (divider $(field abDivider))"
@@ -106,7 +128,5 @@ run_size() {
     pid=""
 }
 
-run_size 1280x720
-run_size 1600x900
-echo "ui_teaching: screenshots in $work"
-echo "ui_teaching: PASS"
+run_size "$3"
+echo "ui_teaching: $3 passed"

@@ -11,8 +11,8 @@
 namespace gbl::ui {
 
 struct AbGpu {
-    ViewTarget b;       // side B's image as the viewport shows it
-    gl::Texture diff;   // |A - B| heat map
+    ViewTarget b;      // side B's image as the viewport shows it
+    gl::Texture diff;  // |A - B| heat map
 };
 
 // The frame the editor renders for side A: the pipeline, the scrubber and the wireframe option.

@@ -119,8 +119,7 @@ void samplePixel(Editor& editor, bool rendered) {
             inspector.settings.ambient = glm::vec3(0.0f);
         inspector.breakdown =
             ui::breakDownPixel(*inspector.sample, shadedLights(frame), editor.state.camera, inspector.settings, where);
-        inspector.breakdownNote =
-            inspector.breakdown ? "" : ui::noBreakdownNote(*inspector.sample, inspector.settings);
+        inspector.breakdownNote = inspector.breakdown ? "" : ui::noBreakdownNote(*inspector.sample, inspector.settings);
     } else {
         inspector.sample.reset();
         inspector.breakdown.reset();

@@ -2,9 +2,9 @@
 // as lines in the light's colour, depth-tested against the scene and drawn into the HDR image.
 #pragma once
 
-#include "gpu/light_volume_gpu.h"
 #include "core/camera.h"
 #include "core/point_light.h"
+#include "gpu/light_volume_gpu.h"
 #include "passes/shading_inputs.h"
 
 #include <optional>

@@ -10,8 +10,8 @@ namespace gbl::ui {
 
 struct AccumulateState {
     bool enabled = false;
-    int count = 0;              // lights accumulated, 0 (ambient alone) .. the light count
-    bool contribution = false;  // show light `count` alone, without ambient
+    int count = 0;               // lights accumulated, 0 (ambient alone) .. the light count
+    bool contribution = false;   // show light `count` alone, without ambient
     glm::vec4 sliderRect{0.0f};  // where the viewport drew the slider (window coordinates; --log-frames)
 
     bool operator==(AccumulateState const&) const = default;

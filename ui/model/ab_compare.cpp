@@ -11,8 +11,12 @@ namespace {
 
 template <auto Member>
 AbField choice(std::string_view name, auto const& names) {
-    return {name, AbFieldKind::Choice, std::span<std::string_view const>(names.data(), names.size()), 0.0f,
-            float(names.size() - 1), [](PipelineSettings const& s) { return double(int(s.*Member)); },
+    return {name,
+            AbFieldKind::Choice,
+            std::span<std::string_view const>(names.data(), names.size()),
+            0.0f,
+            float(names.size() - 1),
+            [](PipelineSettings const& s) { return double(int(s.*Member)); },
             [](PipelineSettings& s, double v) {
                 using Enum = std::remove_reference_t<decltype(s.*Member)>;
                 s.*Member = Enum(int(v));
@@ -52,7 +56,11 @@ std::array<AbField, 10> const kFields{
     toggle<&PipelineSettings::volumeWireframes>("volume_wireframes"),
     number<&PipelineSettings::shininess>("shininess", 1.0f, 256.0f),
     number<&PipelineSettings::exposure>("exposure", 0.05f, 8.0f),
-    AbField{"ambient", AbFieldKind::Number, {}, 0.0f, 0.3f,
+    AbField{"ambient",
+            AbFieldKind::Number,
+            {},
+            0.0f,
+            0.3f,
             [](PipelineSettings const& s) { return double(s.ambient.x); },
             [](PipelineSettings& s, double v) { s.ambient = glm::vec3(float(v)); }},
 };

@@ -35,15 +35,15 @@ enum class AbView { Split, Diff };
 struct AbState {
     bool enabled = false;
     AbView view = AbView::Split;
-    float divider = 0.5f;   // where A ends, as a share of the image width (A left, B right)
+    float divider = 0.5f;        // where A ends, as a share of the image width (A left, B right)
     glm::vec4 toggleRect{0.0f};  // where the viewport drew the A/B checkbox (window coordinates; --log-frames)
-    PipelineSettings b;     // B's values of the fields it overrides
+    PipelineSettings b;          // B's values of the fields it overrides
     std::vector<bool> overrides = std::vector<bool>(abFields().size(), false);
     DiffMode diffMode = DiffMode::Absolute;  // relative: |A - B| / |B|
     // A pixel differs when its largest RGB difference exceeds this: the fp16 bound of the GL tests.
     float threshold = 2e-3f;
-    bool heatToThreshold = false;  // heat map from 0 to the threshold (else to the largest difference)
-    LitPin pin;  // B's lit frame pinned, A's diffed against it (the lit pin's code)
+    bool heatToThreshold = false;              // heat map from 0 to the threshold (else to the largest difference)
+    LitPin pin;                                // B's lit frame pinned, A's diffed against it (the lit pin's code)
     std::vector<PassTiming> passesA, passesB;  // GPU ms per pass of each side's last frame
     double gpuMsA = 0.0, gpuMsB = 0.0;
 };

@@ -51,7 +51,7 @@ struct EditorState {
     LayoutState layout;
     LightsPanelState lightsPanel;
     ViewportState viewport;
-    LitPin litPin;  // the viewport's pinned lit frame and its diff
+    LitPin litPin;               // the viewport's pinned lit frame and its diff
     AccumulateState accumulate;  // the light-by-light scrubber
     AbState ab;                  // the viewport's A/B split and diff
     GBufferPanelState gbuffer;

@@ -29,7 +29,7 @@ struct RenderInputs {
     std::uint64_t sceneGeneration = 0;   // counts scenes handed to Renderer::setScene
     std::uint64_t shaderGeneration = 0;  // counts hot reloads that replaced a program
     float animationTime = 0.0f;
-    bool measuring = false;  // a cost measurement times real frames, so each of its frames renders
+    bool measuring = false;   // a cost measurement times real frames, so each of its frames renders
     TeachingInputs teaching;  // the scrubber, the wireframe option and A/B's side B
 
     bool operator==(RenderInputs const&) const = default;

@@ -2,8 +2,8 @@
 #include "panels/panel_viewport.h"
 
 #include "gpu/view_target.h"
-#include "panels/gui_compat.h"
 #include "model/colormap.h"
+#include "panels/gui_compat.h"
 #include "panels/layout.h"
 
 #include <imgui.h>
@@ -107,10 +107,10 @@ std::string passLine(char const* side, std::vector<PassTiming> const& passes, do
     std::string out = std::string(side) + " GPU ms:";
     char buf[64];
     for (PassTiming const& p : passes) {
-        std::snprintf(buf, sizeof buf, " %s %.2f", p.name.c_str(), p.gpuMs);
+        std::snprintf(buf, sizeof buf, " %s %.1f", p.name.c_str(), p.gpuMs);
         out += buf;
     }
-    std::snprintf(buf, sizeof buf, " = %.2f", total);
+    std::snprintf(buf, sizeof buf, ", total %.1f", total);
     return out + buf;
 }
 
@@ -127,8 +127,7 @@ void abDivider(AbState& ab, ImVec2 origin, ImVec2 avail) {
     ImGui::SetCursorScreenPos(ImVec2(x - grab * 0.5f, origin.y));
     ImGui::InvisibleButton("ab-divider", ImVec2(grab, avail.y));
     if (ImGui::IsItemHovered() || ImGui::IsItemActive()) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
-    if (ImGui::IsItemActive())
-        ab.divider = std::clamp((ImGui::GetIO().MousePos.x - origin.x) / avail.x, 0.02f, 0.98f);
+    if (ImGui::IsItemActive()) ab.divider = std::clamp((ImGui::GetIO().MousePos.x - origin.x) / avail.x, 0.02f, 0.98f);
     ImGui::SetCursorScreenPos(origin);
 }
 
@@ -195,15 +194,16 @@ void teachingRow(ViewportTeaching& t, PipelineSettings const& settings) {
     ImGui::SetCursorPosX(ImGui::GetCursorPosX() + 6);
     ImGui::Checkbox("Light by light", &a.enabled);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("the frame shows the first k lights only (ambient alone at 0), light k's volume outlined;\n"
-                          "Left/Right arrows step k");
+        ImGui::SetTooltip(
+            "the frame shows the first k lights only (ambient alone at 0), light k's volume outlined;\n"
+            "Left/Right arrows step k");
     ImGui::SameLine();
     a.count = std::clamp(a.count, 0, t.lightCount);
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 10.0f);
     // Touching the scrubber turns accumulation on: that is what it is for.
-    if (ImGui::SliderInt("##k", &a.count, 0, t.lightCount, a.enabled ? "k = %d" : "k = %d (off)",
-                         ImGuiSliderFlags_AlwaysClamp))
-        a.enabled = true;
+    ImGui::SliderInt("##k", &a.count, 0, t.lightCount, a.enabled ? "k = %d" : "k = %d (off)",
+                     ImGuiSliderFlags_AlwaysClamp);
+    if (ImGui::IsItemActivated()) a.enabled = true;
     a.sliderRect = lastItemRect();
     ImGui::SameLine();
     ImGui::BeginDisabled(!a.enabled);
@@ -211,8 +211,7 @@ void teachingRow(ViewportTeaching& t, PipelineSettings const& settings) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("light k alone, without ambient: what step k added to the frame");
     ImGui::EndDisabled();
     ImGui::SameLine();
-    if (a.enabled)
-        ImGui::TextDisabled(a.count == 0 ? "ambient only" : "%s", t.kthLightName.c_str());
+    if (a.enabled) ImGui::TextDisabled(a.count == 0 ? "ambient only" : "%s", t.kthLightName.c_str());
     ImGui::SameLine();
     if (ImGui::Checkbox("A/B", &t.ab.enabled) && t.ab.enabled) startAb(t.ab, settings);
     t.ab.toggleRect = lastItemRect();
