@@ -1,6 +1,7 @@
 // gbuffer-lab entry point: the editor by default, `render` and `bench` as sub-commands.
 #include "bench_command.h"
 #include "cli_values.h"
+#include "compare_command.h"
 #include "editor.h"
 #include "lesson_command.h"
 #include "render_command.h"
@@ -49,6 +50,9 @@ int main(int argc, char** argv) {
     gbl::LessonsOptions lessonsOptions;
     CLI::App* lessons = app.add_subcommand("lessons", "List the guided lessons and their steps");
     gbl::addLessonsOptions(*lessons, lessonsOptions);
+    gbl::CompareOptions compareOptions;
+    CLI::App* compare = app.add_subcommand("compare", "Render two session files and diff their lit frames");
+    gbl::addCompareOptions(*compare, compareOptions);
 
     try {
         app.parse(argc, argv);
@@ -60,6 +64,7 @@ int main(int argc, char** argv) {
     }
     if (render->parsed()) return gbl::runRender(renderOptions);
     if (lessons->parsed()) return gbl::runLessons(lessonsOptions);
+    if (compare->parsed()) return gbl::runCompare(compareOptions);
     if (bench->parsed()) {
         benchOptions.lightsGiven = bench->count("--lights") > 0;
         return gbl::runBench(benchOptions);

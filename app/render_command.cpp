@@ -56,6 +56,9 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
     sub.add_option("--save-session", o.saveSessionPath, "Also write the session that reproduces this frame");
     sub.add_option("--lesson", o.lesson, "Render step STEP (from 1) of lesson ID, as ID or ID:STEP (see `lessons`)");
     sub.add_option("--lessons-dir", o.lessonsDir, "Read lessons from this folder instead of the shipped ones");
+    sub.add_option("--accumulate", o.accumulate,
+                   "Shade with the first K lights only (0 = ambient alone) and outline light K's volume");
+    sub.add_flag("--contribution", o.contribution, "With --accumulate K: light K alone, without ambient");
     sub.parse_complete_callback([&sub, &o] {
         for (char const* name : {"--scene", "--lights", "--time", "--blit", "--mode", "--cull", "--size"})
             if (sub.count(name) > 0) o.given.insert(name);
@@ -68,6 +71,10 @@ int runRender(RenderOptions const& o) {
     auto const size = parseSize(o.size, &error);
     if (!size) return badArgument(error);
     if (o.lights && *o.lights < 0) return badArgument("--lights must be 0 or more, got " + std::to_string(*o.lights));
+    if (o.contribution && !o.accumulate) return badArgument("--contribution needs --accumulate K");
+    if (o.accumulate && (*o.accumulate < 0 || (o.contribution && *o.accumulate < 1)))
+        return badArgument(std::string("--accumulate must be ") + (o.contribution ? "1" : "0") + " or more, got " +
+                           std::to_string(*o.accumulate));
     if (o.lights && *o.lights > kMaxLights)
         return badArgument("--lights is limited to " + std::to_string(kMaxLights) + ", got " +
                            std::to_string(*o.lights));
@@ -142,7 +149,13 @@ int runRender(RenderOptions const& o) {
     if (auto const why = renderer.modeUnavailable(settings.mode)) return badArgument(*why);
     if (auto err = renderer.setScene(prepared->scene)) return badArgument(*err);
 
-    FrameStats const stats = renderer.render({prepared->camera, prepared->lights, settings, true});
+    if (o.accumulate && *o.accumulate > int(prepared->lights.size()))
+        return badArgument("--accumulate " + std::to_string(*o.accumulate) + " is more than the scene's " +
+                           std::to_string(prepared->lights.size()) + " lights");
+    FrameInput input{prepared->camera, prepared->lights, settings, true};
+    input.accumulateLights = o.accumulate;
+    input.lightContribution = o.contribution;
+    FrameStats const stats = renderer.render(input);
 
     FrameExport frame{prepared->camera, prepared->lights, settings, stats, prepared->scene.triangleCount(), views};
     if (auto err = exportFrame(renderer, frame, o.outDir)) return badArgument(*err);
@@ -150,8 +163,13 @@ int runRender(RenderOptions const& o) {
         ui::Session const toSave = session ? *session : sessionFromCommandLine(request, *prepared, settings);
         if (auto e = ui::saveSession(*o.saveSessionPath, toSave)) return badArgument(*e);
     }
-    std::printf("wrote %s (%dx%d, %d lights, %.2f GPU ms, %llu GL errors)\n", o.outDir.c_str(), size->width,
-                size->height, stats.lightsSubmitted, stats.gpuFrameMs, (unsigned long long)renderer.glErrorCount());
+    std::string accumulated;
+    if (o.accumulate)
+        accumulated = o.contribution ? ", light " + std::to_string(*o.accumulate) + " alone"
+                                     : ", first " + std::to_string(*o.accumulate) + " accumulated";
+    std::printf("wrote %s (%dx%d, %d lights%s, %.2f GPU ms, %llu GL errors)\n", o.outDir.c_str(), size->width,
+                size->height, stats.lightsSubmitted, accumulated.c_str(), stats.gpuFrameMs,
+                (unsigned long long)renderer.glErrorCount());
     return 0;
 }
 

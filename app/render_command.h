@@ -28,6 +28,8 @@ struct RenderOptions {
     std::string glLimit;
     std::optional<std::string> sessionPath;      // render the frame a session file describes
     std::optional<std::string> saveSessionPath;  // write the session that reproduces this frame
+    std::optional<int> accumulate;               // shade with the first K lights only
+    bool contribution = false;                   // with --accumulate K: light K alone, no ambient
     std::set<std::string> given;                 // options given explicitly (they override a session)
     std::optional<std::string> lesson;           // render a lesson step instead (app/lesson_command.cpp)
     std::optional<std::string> lessonsDir;

@@ -149,6 +149,21 @@ std::optional<std::string> RendererImpl::modeUnavailable(LightingMode mode) {
 
 // --- the frame -----------------------------------------------------------------------------------
 
+std::span<PointLight const> shadedLights(FrameInput const& input) {
+    if (!input.accumulateLights) return input.lights;
+    std::size_t const k = std::size_t(std::clamp(*input.accumulateLights, 0, int(input.lights.size())));
+    if (input.lightContribution && k >= 1) return input.lights.subspan(k - 1, 1);
+    return input.lights.first(k);
+}
+
+int outlinedLight(FrameInput const& input) {
+    if (input.accumulateLights) {
+        int const k = std::clamp(*input.accumulateLights, 0, int(input.lights.size()));
+        return k - 1;  // -1 at k = 0: nothing to outline
+    }
+    return std::max(input.wireframeLight, -1);  // past the list: no volume outlined at all
+}
+
 FrameContext RendererImpl::frameContext(FrameInput const& input) const {
     FrameContext f;
     f.camera = input.camera;
@@ -156,8 +171,10 @@ FrameContext RendererImpl::frameContext(FrameInput const& input) const {
     f.view = input.camera.view();
     f.projection = input.camera.projection(f.aspect);
     f.viewProj = f.projection * f.view;
-    f.lights = input.lights;
+    f.lights = shadedLights(input);
     f.settings = input.settings;
+    // A light's own contribution: nothing else, not even the ambient term.
+    if (input.accumulateLights && input.lightContribution && !f.lights.empty()) f.settings.ambient = glm::vec3(0.0f);
     return f;
 }
 
@@ -222,10 +239,16 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     PipelineSettings const& s = f.settings;
     ShadingUniforms const shading{f.camera.position, s.shininess, s.ambient};
 
-    lights.upload(input.lights);
+    lights.upload(f.lights);
     volumes.enclosingScale = volumes.meshEnclosingScale * s.volumeScale;  // < 1 only to show what it cuts off
-    for (auto const& l : input.lights) stats.lightsShaded += lightRadius(l).radius > 0.0f ? 1 : 0;
-    bool const volumeInstances = s.mode == LightingMode::Volumes || (s.volumeWireframes && volumesReady());
+    for (auto const& l : f.lights) stats.lightsShaded += lightRadius(l).radius > 0.0f ? 1 : 0;
+    // One light outlined (the accumulated k-th, or the selected one): its index among f.lights,
+    // which start at input.lights[0] except for a contribution frame (light k alone).
+    int outline = outlinedLight(input);
+    if (outline >= 0 && input.accumulateLights && input.lightContribution) outline = 0;
+    bool const wireframes =
+        (s.volumeWireframes || (input.accumulateLights && input.outlineAccumulated && outline >= 0)) && volumesReady();
+    bool const volumeInstances = s.mode == LightingMode::Volumes || wireframes;
     if (volumeInstances) prepareVolumeInstances(volumes, {f.camera, f.aspect, f.lights});
 
     glViewport(0, 0, targets.width, targets.height);
@@ -263,12 +286,18 @@ FrameStats RendererImpl::render(FrameInput const& input) {
         lightCubesPass({lights, shaders.get(ProgramId::LightCube), cubeVao, litTarget()},
                        {f.viewProj, lightCubeHalfSize()});
     timer.end();
-    if (s.volumeWireframes && volumesReady()) {
+    if (wireframes) {
         timer.begin("wireframes");
         // Forward mode leaves the G-buffer empty, so its own depth (in litFbo) is the scene's.
         LitTarget const target =
             s.mode == LightingMode::Forward ? litTarget() : LitTarget{targets.volumeFbo, targets.lighting};
-        wireframesPass({lights, volumes, shaders.get(ProgramId::LightVolumeWire), target}, {f.viewProj});
+        WireframesConfig wire{f.viewProj};
+        if (outline >= 0) {
+            auto const slot = volumeInstanceSlot(f.lights, outline, f.camera, f.aspect, volumes.enclosingScale);
+            wire.firstInstance = slot.value_or(0);
+            wire.count = slot ? 1 : 0;
+        }
+        wireframesPass({lights, volumes, shaders.get(ProgramId::LightVolumeWire), target}, wire);
         timer.end();
     }
     // Debug counts for the heat map and tile views, only when one of them is shown.
@@ -309,7 +338,7 @@ void RendererImpl::drawView(ViewParams const& params, FrameInput const& frame, V
     if (modeUnavailable(f.settings.mode)) f.settings.mode = LightingMode::Quad;  // as render() ran it
     if (viewNeedsCoverage(params.view)) {
         f.settings.view = params.view;
-        lights.upload(frame.lights);
+        lights.upload(f.lights);
         runCoverage(f);
     }
     viewPass({targets.gbuffer, targets.lighting, targets.coverage, shaders.get(ProgramId::View), triangle, target.fbo},

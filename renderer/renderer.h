@@ -28,7 +28,21 @@ struct FrameInput {
     // true: block until this frame's GPU timings exist (render, bench, tests); false: report
     // the previous frame's timings so an interactive frame never waits on the GPU.
     bool waitForGpuTimings = true;
+    // Light-by-light accumulation: only lights [0, k) shade the frame (in list order, in every
+    // mode), and the k-th light's volume is outlined. Clamped to 0..lights.size().
+    std::optional<int> accumulateLights = std::nullopt;
+    // With accumulateLights = k >= 1: light k alone, without ambient -- its own contribution.
+    bool lightContribution = false;
+    // Draws the k-th light's volume into the lit image (off: the lit values stay pure lighting).
+    bool outlineAccumulated = true;
+    // >= 0: the volume wireframes outline this light only (an index into `lights`; past its end: none).
+    int wireframeLight = -1;
 };
+
+// The lights a frame shades: all of them, or the accumulated prefix, or light k alone.
+std::span<PointLight const> shadedLights(FrameInput const& input);
+// The light (an index into input.lights) whose volume alone is outlined; -1: every volume.
+int outlinedLight(FrameInput const& input);
 
 class RendererImpl;
 

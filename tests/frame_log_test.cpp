@@ -17,6 +17,9 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     l.camera = {1.5f, -2.0f, 3.0f};
     l.selectedLight = 7;
     l.viewport = {10, 20, 640, 360};
+    l.accumulate = 3;
+    l.scrubber = {100, 30, 160, 18};
+    l.abDivider = 0.25f;
     l.pickable = {{3, {100.5f, 200.0f}}};
     l.events = {"key 70 press mods 0 -> frame-selection", "quote \" and \\ and \n"};
     l.sessionPath = "/tmp/s.json";
@@ -28,6 +31,10 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     EXPECT_DOUBLE_EQ(j["camera"][1].get<double>(), -2.0);
     EXPECT_EQ(j["selectedLight"], 7);
     EXPECT_DOUBLE_EQ(j["viewport"][2].get<double>(), 640.0);
+    EXPECT_EQ(j["accumulate"], 3);
+    EXPECT_DOUBLE_EQ(j["scrubber"][2].get<double>(), 160.0);
+    EXPECT_DOUBLE_EQ(j["abToggle"][0].get<double>(), 0.0);
+    EXPECT_DOUBLE_EQ(j["abDivider"].get<double>(), 0.25);
     EXPECT_EQ(j["pickable"][0][0], 3);
     EXPECT_EQ(j["events"][1], "quote \" and \\ and \n");
     EXPECT_EQ(j["session"], "/tmp/s.json");

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 using namespace gbl;
@@ -188,4 +189,55 @@ TEST(WhyValue, BreakdownCarriesVerdictsWhoseSumIsTheTotal) {
     EXPECT_EQ(int(b->lights.size()), 2);  // the far light reaches nothing
     // Without the frame, no verdicts (the old call stays as it was).
     EXPECT_TRUE(breakDownPixel(f.sample, lights, f.camera, settings)->verdicts.empty());
+}
+
+// --- the inspector's stored-vs-sum flag -------------------------------------------------------
+
+TEST(StoredValueCheck, AgreesWithinTheFp16BoundAndNamesTheCameraInsideWithBack) {
+    Frame const f;
+    PointLight const big = light({0.0f, 0.0f, -2.0f}, 0.0f, 0.2f);  // holds the camera and the surface
+    PointLight const lights[] = {big};
+    PipelineSettings s;
+    s.mode = LightingMode::Volumes;
+    s.cull = CullMode::Back;
+    auto const b = breakDownPixel(f.sample, lights, f.camera, s, PixelInFrame{f.pixel, f.size, std::nullopt});
+    ASSERT_TRUE(b);
+    // Stored = the sum, off by less than the bound: agrees.
+    glm::vec3 const nearly = b->total * (1.0f + 1e-3f);
+    EXPECT_TRUE(checkStoredValue(nearly, *b, s).agrees);
+    // Stored = ambient alone (what `back` leaves with the camera inside): flagged, cause named.
+    ValueCheck const c = checkStoredValue(b->ambient, *b, s);
+    EXPECT_FALSE(c.agrees);
+    EXPECT_NEAR(c.error, std::max({b->total.r - b->ambient.r, b->total.g - b->ambient.g, b->total.b - b->ambient.b}),
+                1e-6f);
+    EXPECT_NE(c.cause.find("camera inside light 0's volume with cull `back`"), std::string::npos) << c.cause;
+}
+
+TEST(StoredValueCheck, NamesTooSmallVolumesOverlaysAndForward) {
+    Frame const f;
+    PointLight const near = light({0.0f, 1.0f, -9.0f});  // the camera is outside its small volume
+    PointLight const lights[] = {near};
+    PipelineSettings s;
+    s.mode = LightingMode::Volumes;
+    s.cull = CullMode::Front;
+    auto const b = breakDownPixel(f.sample, lights, f.camera, s, PixelInFrame{f.pixel, f.size, std::nullopt});
+    ASSERT_TRUE(b);
+    ASSERT_GT(b->total.r - b->ambient.r, 0.05f) << "the light must reach the wall";
+    // The mode evaluated the light, yet less is stored: the volume cut it off.
+    ValueCheck const small = checkStoredValue(b->ambient, *b, s);
+    EXPECT_FALSE(small.agrees);
+    EXPECT_NE(small.cause.find("too small"), std::string::npos) << small.cause;
+    ValueCheck const over = checkStoredValue(b->total + glm::vec3(0.5f), *b, s);
+    EXPECT_FALSE(over.agrees);
+    EXPECT_NE(over.cause.find("light cubes"), std::string::npos) << over.cause;
+    // Forward mode: the G-buffer is cleared, so the sample has no surface; the note says why.
+    PixelSample none;
+    none.covered = false;
+    none.lighting = glm::vec4(0.25f, 0.5f, 0.125f, 1.0f);
+    s.mode = LightingMode::Forward;
+    std::string const note = noBreakdownNote(none, s);
+    EXPECT_NE(note.find("forward mode has no G-buffer"), std::string::npos) << note;
+    EXPECT_NE(note.find("0.2500 0.5000 0.1250"), std::string::npos) << note;
+    s.mode = LightingMode::Quad;
+    EXPECT_EQ(noBreakdownNote(none, s), "background: no surface, no lights");
 }

@@ -2,6 +2,8 @@
 // range fits, the inspector's sample, shader reloads, presenting, scripts, screenshots and timings.
 #include "editor_loop.h"
 
+#include "ab_frame.h"
+
 #include "core/light_math.h"
 #include "model/image_range.h"
 #include "model/light_pick.h"
@@ -110,9 +112,14 @@ void samplePixel(Editor& editor, bool rendered) {
         if (editor.state.pipeline.mode == LightingMode::Tiled)
             where.tileBounds = ui::tileDepthBounds(renderer.readAttachment(Attachment::Depth), *inspector.pixel,
                                                    editor.state.camera.nearPlane, editor.state.camera.farPlane);
+        // The lights and settings the frame was shaded with (the scrubber may hold back lights).
+        FrameInput const frame = ui::editorFrameInput(editor.state, editor.drawn, false);
+        inspector.settings = frame.settings;
+        if (frame.accumulateLights && frame.lightContribution && *frame.accumulateLights > 0)
+            inspector.settings.ambient = glm::vec3(0.0f);
         inspector.breakdown =
-            ui::breakDownPixel(*inspector.sample, editor.drawn, editor.state.camera, editor.state.pipeline, where);
-        inspector.breakdownNote = inspector.breakdown ? "" : "background: no surface, no lights";
+            ui::breakDownPixel(*inspector.sample, shadedLights(frame), editor.state.camera, inspector.settings, where);
+        inspector.breakdownNote = inspector.breakdown ? "" : ui::noBreakdownNote(*inspector.sample, inspector.settings);
     } else {
         inspector.sample.reset();
         inspector.breakdown.reset();
@@ -208,16 +215,17 @@ void renderScene(Editor& editor, FrameTimes& times) {
     // Render on change: the frame is rendered again only when something it depends on changed;
     // otherwise the last image, viewers and statistics stay on screen.
     glm::ivec2 const size(renderer.width(), renderer.height());
-    ui::RenderInputs const inputs =
-        ui::renderInputs(state.camera, editor.drawn, state.pipeline, size, editor.sceneGeneration,
-                         editor.shaderGeneration, state.animation.time, times.measuring);
+    ui::RenderInputs inputs = ui::renderInputs(state.camera, editor.drawn, state.pipeline, size, editor.sceneGeneration,
+                                               editor.shaderGeneration, state.animation.time, times.measuring);
+    FrameInput const frameInput = ui::editorFrameInput(state, editor.drawn, times.measuring);
+    inputs.teaching = ui::teachingInputs(frameInput, state.ab);
     std::optional<ui::RenderInputs> const before = editor.render.last;
     times.rendered = size.x > 0 && size.y > 0 && ui::needsRender(editor.render, inputs);
     editor.renderReason = times.rendered ? ui::describeChange(before, inputs) : std::string("nothing");
     if (times.rendered)
         // Interactive frames take the previous frame's GPU timings instead of waiting for
         // this one's; a measurement waits anyway (glFinish), so it can have exact ones.
-        times.frameStats = renderer.render(FrameInput{state.camera, editor.drawn, state.pipeline, times.measuring});
+        times.frameStats = ui::renderEditorFrame(state, renderer, frameInput, editor.frame, editor.gpu.ab);
     else
         times.frameStats = state.stats.last;
     finishIfMeasuring(times);

@@ -47,6 +47,10 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.textInput = ImGui::GetIO().WantTextInput;
     line.viewportHovered = state.viewport.hovered;
     line.viewport = state.viewport.imageRect;
+    line.accumulate = state.accumulate.enabled ? state.accumulate.count : -1;
+    line.scrubber = state.accumulate.sliderRect;
+    line.abToggle = state.ab.toggleRect;
+    line.abDivider = state.ab.enabled && state.ab.view == ui::AbView::Split ? state.ab.divider : -1.0f;
     line.pickable = pickableLights(editor);
     line.events = editor.actions.applied;
     for (ui::InputEvent const& e : editor.input.imguiFrame.events)

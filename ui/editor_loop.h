@@ -1,6 +1,7 @@
 // What the editor's main-loop steps share, and the steps themselves (runEditor in editor.cpp calls them in order).
 #pragma once
 
+#include "ab_frame.h"
 #include "editor.h"
 #include "editor_input.h"
 #include "gl/caps.h"
@@ -44,6 +45,7 @@ struct EditorGpu {
     ui::ViewerToolsGpu viewerTools;                        // diff heat maps of the viewer tools
     std::array<std::optional<ViewParams>, 5> drawnParams;  // what each target last showed
     GpuTimer timer;                                        // the editor's own GPU work, for the Stats window
+    ui::AbGpu ab;                                          // side B and the A/B diff (ab_frame.h)
 };
 
 // The GLFW library and the editor's window; terminates GLFW when it goes.

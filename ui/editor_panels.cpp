@@ -2,6 +2,8 @@
 // check that an editor window is usable.
 #include "editor_loop.h"
 
+#include <algorithm>
+
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
 #include "panels/panel_confirm.h"
@@ -132,10 +134,20 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     ui::beginLayout(state.layout);
     ui::drawLightsPanel(state.lightsPanel, state.lights, state.animation, state.sceneBounds);
     ui::drawPipelinePanel(state.pipeline,
-                          ui::modeReasons([&](LightingMode m) { return editor.renderer->modeUnavailable(m); }));
+                          ui::modeReasons([&](LightingMode m) { return editor.renderer->modeUnavailable(m); }),
+                          &state.ab);
     unsigned const viewportTexture = times.litDiffTexture ? times.litDiffTexture : renderer.texture(Attachment::Final);
+    int const k = std::clamp(state.accumulate.count, 0, int(state.lights.size()));
+    ui::ViewportTeaching ab{state.ab,
+                            state.accumulate,
+                            int(state.lights.size()),
+                            k > 0 ? state.lights[std::size_t(k - 1)].name : std::string(),
+                            ui::sideB(state.ab, state.pipeline),
+                            editor.gpu.ab.b.texture.id(),
+                            editor.gpu.ab.diff.id()};
     ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, viewportTexture,
-                          {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer));
+                          {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer),
+                          &ab);
     ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()});
     ui::drawPixelInspectorPanel(state.inspector);
     ui::drawStatsPanel(state.stats, editor.caps, int(state.lights.size()), &editor.render, editor.renderReason);

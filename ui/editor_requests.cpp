@@ -181,6 +181,12 @@ void carryOut(Editor& editor, EditorAction action) {
         case EditorAction::ShowShortcuts:
             editor.showShortcuts = !editor.showShortcuts;
             break;
+        case EditorAction::AccumulatePrevious:
+        case EditorAction::AccumulateNext:
+            if (state.accumulate.enabled)
+                ui::stepAccumulation(state.accumulate, action == EditorAction::AccumulateNext ? 1 : -1,
+                                     int(state.lights.size()));
+            break;
         default:
             break;  // fly keys act through CameraInput::move
     }

@@ -7,9 +7,7 @@
 
 namespace gbl::ui {
 
-namespace {
-// Uploads the diff's heat map into tex, (re)making it at the diff's size; a new texture is always
-// filled. Scale: the threshold when one is set (so "over" reads as the top of the ramp), else the max.
+// Scale: the threshold when one is set (so "over" reads as the top of the ramp), else the max.
 void uploadDiff(gl::Texture& tex, DiffStats const& diff, float threshold, bool changed) {
     int const w = diff.diff.width, h = diff.diff.height;
     if (!tex || tex.width() != w || tex.height() != h) {
@@ -27,7 +25,6 @@ void uploadDiff(gl::Texture& tex, DiffStats const& diff, float threshold, bool c
                         rgba.data() + std::size_t(y) * std::size_t(w) * 4);
     glBindTexture(GL_TEXTURE_2D, 0);
 }
-}  // namespace
 
 void serviceViewerTools(EditorState& state, Renderer& renderer, long frame, std::array<unsigned, 5>& textures,
                         ViewerToolsGpu& gpu) {

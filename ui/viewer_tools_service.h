@@ -16,6 +16,10 @@ struct ViewerToolsGpu {
     gl::Texture litDiff;  // the viewport's lit-frame diff
 };
 
+// Uploads a diff's heat map into tex, (re)making it at the diff's size; a new texture is always
+// filled, an existing one when `changed`. Scale: the threshold when one is set, else the max.
+void uploadDiff(gl::Texture& tex, DiffStats const& diff, float threshold, bool changed);
+
 // Call after the viewers' views are drawn; replaces textures[i] with the diff heat map where a
 // viewer shows its difference to the pinned image.
 void serviceViewerTools(EditorState& state, Renderer& renderer, long frame, std::array<unsigned, 5>& textures,

@@ -39,6 +39,7 @@ struct PipelineSettings {
     DebugView view = DebugView::Final;
     bool lightCubes = true;
     bool volumeWireframes = false;
+    bool wireframesSelectedOnly = false;  // the wireframes outline the selected light's volume only
     bool normalMaps = true;
     glm::vec3 ambient{0.03f};
     float exposure = 1.0f;

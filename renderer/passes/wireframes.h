@@ -2,8 +2,13 @@
 // as lines in the light's colour, depth-tested against the scene and drawn into the HDR image.
 #pragma once
 
+#include "core/camera.h"
+#include "core/point_light.h"
 #include "gpu/light_volume_gpu.h"
 #include "passes/shading_inputs.h"
+
+#include <optional>
+#include <span>
 
 namespace gbl {
 
@@ -17,7 +22,14 @@ struct WireframesInput {
 struct WireframesConfig {
     glm::mat4 viewProj{1.0f};
     float intensity = 2.0f;  // HDR brightness, so the lines survive tonemapping
+    int firstInstance = 0;   // a range of the prepared instances; count -1 = all of them
+    int count = -1;
 };
+
+// Where light `light` sits in the instance list prepareVolumeInstances builds from the same
+// camera and lights (outside-the-camera volumes first), or nullopt when it has no volume.
+std::optional<int> volumeInstanceSlot(std::span<PointLight const> lights, int light, Camera const& camera, float aspect,
+                                      float enclosingScale);
 
 void wireframesPass(WireframesInput const& in, WireframesConfig const& config);
 

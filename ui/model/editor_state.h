@@ -5,6 +5,8 @@
 #include "core/camera.h"
 #include "core/pipeline_settings.h"
 #include "core/point_light.h"
+#include "model/ab_accumulate.h"
+#include "model/ab_compare.h"
 #include "model/camera_rig.h"
 #include "model/layout_state.h"
 #include "model/lights_state.h"
@@ -50,7 +52,9 @@ struct EditorState {
     LayoutState layout;
     LightsPanelState lightsPanel;
     ViewportState viewport;
-    LitPin litPin;  // the viewport's pinned lit frame and its diff
+    LitPin litPin;               // the viewport's pinned lit frame and its diff
+    AccumulateState accumulate;  // the light-by-light scrubber
+    AbState ab;                  // the viewport's A/B split and diff
     GBufferPanelState gbuffer;
     PixelInspectorState inspector;
     StatsState stats;

@@ -52,6 +52,13 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"viewportHovered\":" + std::string(l.viewportHovered ? "true" : "false");
     out += ",\"viewport\":[" + number(l.viewport.x) + "," + number(l.viewport.y) + "," + number(l.viewport.z) + "," +
            number(l.viewport.w) + "]";
+    auto rect = [&](glm::vec4 r) {
+        return "[" + number(r.x) + "," + number(r.y) + "," + number(r.z) + "," + number(r.w) + "]";
+    };
+    out += ",\"accumulate\":" + std::to_string(l.accumulate);
+    out += ",\"scrubber\":" + rect(l.scrubber);
+    out += ",\"abToggle\":" + rect(l.abToggle);
+    out += ",\"abDivider\":" + number(l.abDivider);
     out += ",\"pickable\":[";
     for (std::size_t i = 0; i < l.pickable.size(); ++i)
         out += (i ? ",[" : "[") + std::to_string(l.pickable[i].index) + "," + number(l.pickable[i].window.x) + "," +

@@ -30,6 +30,10 @@ struct FrameLogLine {
     bool viewportHovered = false;
     glm::vec4 viewport{0.0f};  // the viewport image in window coordinates: x, y, width, height
     std::vector<PickableLight> pickable;
+    int accumulate = -1;                     // lights the scrubber accumulates; -1 = off
+    glm::vec4 scrubber{0.0f};                // the scrubber's slider in window coordinates
+    glm::vec4 abToggle{0.0f};                // the viewport's A/B checkbox
+    float abDivider = -1.0f;                 // A/B split: where A ends (share of the image width); -1 = off
     std::vector<std::string> events;         // input events applied this frame, and what they did
     std::vector<std::string> actions;        // editor actions carried out this frame
     std::vector<std::string> clipped;        // UI content cut off this frame, where ImGui can tell

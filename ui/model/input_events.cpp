@@ -145,6 +145,10 @@ std::string_view actionName(EditorAction action) {
             return "toggle-inspector-lock";
         case EditorAction::ShowShortcuts:
             return "show-shortcuts";
+        case EditorAction::AccumulatePrevious:
+            return "accumulate-previous";
+        case EditorAction::AccumulateNext:
+            return "accumulate-next";
         case EditorAction::FlyForward:
             return "fly-forward";
         case EditorAction::FlyBack:

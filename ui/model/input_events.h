@@ -83,6 +83,8 @@ enum class EditorAction {
     HomeView,
     ToggleInspectorLock,
     ShowShortcuts,
+    AccumulatePrevious,
+    AccumulateNext,
     FlyForward,
     FlyBack,
     FlyLeft,
@@ -107,7 +109,7 @@ struct Shortcut {
 };
 
 // One list: the key handling, the menus' shortcut hints and the Help > Shortcuts window read it.
-inline constexpr std::array<Shortcut, 17> kShortcuts{{
+inline constexpr std::array<Shortcut, 19> kShortcuts{{
     {keys::Z, kModControl, EditorAction::Undo, ShortcutScope::Editor, false, "Ctrl+Z", "undo the last edit"},
     {keys::Y, kModControl, EditorAction::Redo, ShortcutScope::Editor, false, "Ctrl+Y", "redo"},
     {keys::S, kModControl, EditorAction::SaveSession, ShortcutScope::Editor, false, "Ctrl+S", "save the session"},
@@ -123,6 +125,10 @@ inline constexpr std::array<Shortcut, 17> kShortcuts{{
     {keys::L, 0, EditorAction::ToggleInspectorLock, ShortcutScope::Editor, false, "L",
      "lock or unlock the pixel inspector on its pixel"},
     {keys::F1, 0, EditorAction::ShowShortcuts, ShortcutScope::Editor, false, "F1", "show this list"},
+    {keys::Left, 0, EditorAction::AccumulatePrevious, ShortcutScope::Editor, false, "Left",
+     "light by light: one light fewer (while accumulating)"},
+    {keys::Right, 0, EditorAction::AccumulateNext, ShortcutScope::Editor, false, "Right",
+     "light by light: one light more (while accumulating)"},
     {keys::W, 0, EditorAction::FlyForward, ShortcutScope::Viewport, true, "W", "fly forward (Shift: faster)"},
     {keys::S, 0, EditorAction::FlyBack, ShortcutScope::Viewport, true, "S", "fly back"},
     {keys::A, 0, EditorAction::FlyLeft, ShortcutScope::Viewport, true, "A", "fly left"},

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/frame_types.h"
+#include "core/pipeline_settings.h"
 #include "core/shading_cpu.h"
 #include "model/why_value.h"
 
@@ -31,6 +32,7 @@ struct PixelInspectorState {
     std::optional<PixelSample> sample;  // read by Renderer::samplePixel after the frame
     std::optional<PixelBreakdown> breakdown;
     std::string breakdownNote;  // why there is no breakdown, when there is none
+    PipelineSettings settings;  // the sampled frame's (its ambient is 0 for a light's contribution)
     int selectLight = -1;       // a light row was clicked: the loop selects it
     bool everyLight = false;    // list every light, not only those within reach
 };

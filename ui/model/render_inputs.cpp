@@ -50,6 +50,7 @@ std::string describeChange(std::optional<RenderInputs> const& before, RenderInpu
     add(before->sceneGeneration != now.sceneGeneration, "scene");
     add(before->shaderGeneration != now.shaderGeneration, "shaders");
     add(before->animationTime != now.animationTime, "animation");
+    add(!(before->teaching == now.teaching), "accumulation or A/B");
     add(now.measuring, "measuring");
     return out.empty() ? std::string("nothing") : out;
 }

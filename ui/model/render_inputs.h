@@ -5,6 +5,7 @@
 #include "core/camera.h"
 #include "core/pipeline_settings.h"
 #include "core/point_light.h"
+#include "model/ab_compare.h"
 
 #include <glm/glm.hpp>
 
@@ -28,7 +29,8 @@ struct RenderInputs {
     std::uint64_t sceneGeneration = 0;   // counts scenes handed to Renderer::setScene
     std::uint64_t shaderGeneration = 0;  // counts hot reloads that replaced a program
     float animationTime = 0.0f;
-    bool measuring = false;  // a cost measurement times real frames, so each of its frames renders
+    bool measuring = false;   // a cost measurement times real frames, so each of its frames renders
+    TeachingInputs teaching;  // the scrubber, the wireframe option and A/B's side B
 
     bool operator==(RenderInputs const&) const = default;
 };

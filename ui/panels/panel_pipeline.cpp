@@ -6,6 +6,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 namespace gbl::ui {
 
 namespace {
@@ -49,9 +51,70 @@ void radioRow(char const* id, Enum& value, std::array<std::string_view, N> const
     }
     ImGui::PopID();
 }
+
+// B's value of one table field, greyed out while B follows A.
+void abFieldRow(AbField const& f, std::size_t i, AbState& ab) {
+    ImGui::PushID(int(i));
+    bool on = ab.overrides[i];
+    if (ImGui::Checkbox(f.name.data(), &on)) ab.overrides[i] = on;
+    helpTooltip("B changes this setting; unticked, B follows A");
+    ImGui::SameLine(ImGui::GetFontSize() * 9.0f);
+    ImGui::BeginDisabled(!on);
+    ImGui::SetNextItemWidth(-1.0f);
+    double const v = f.get(ab.b);
+    switch (f.kind) {
+        case AbFieldKind::Choice: {
+            int index = int(v);
+            if (ImGui::BeginCombo("##b", fieldText(f, ab.b).c_str())) {
+                for (std::size_t c = 0; c < f.choices.size(); ++c)
+                    if (ImGui::Selectable(f.choices[c].data(), index == int(c))) f.set(ab.b, double(c));
+                ImGui::EndCombo();
+            }
+            break;
+        }
+        case AbFieldKind::Toggle: {
+            bool b = v != 0.0;
+            if (ImGui::Checkbox("##b", &b)) f.set(ab.b, b ? 1.0 : 0.0);
+            break;
+        }
+        case AbFieldKind::Number: {
+            float x = float(v);
+            if (ImGui::SliderFloat("##b", &x, f.min, f.max, "%.3g", ImGuiSliderFlags_AlwaysClamp)) f.set(ab.b, x);
+            break;
+        }
+    }
+    ImGui::EndDisabled();
+    ImGui::PopID();
+}
+
+void abSection(AbState& ab, PipelineSettings const& a) {
+    if (ImGui::Checkbox("A/B compare in the viewport", &ab.enabled) && ab.enabled) startAb(ab, a);
+    helpTooltip("A is the settings above, B the same with the ticked fields changed; the frame renders twice");
+    if (!ab.enabled) return;
+    int view = int(ab.view);
+    ImGui::RadioButton("split", &view, int(AbView::Split));
+    ImGui::SameLine();
+    ImGui::RadioButton("diff", &view, int(AbView::Diff));
+    ab.view = AbView(view);
+    if (ab.view == AbView::Diff) {
+        ImGui::SameLine();
+        int mode = int(ab.diffMode);
+        ImGui::RadioButton("abs", &mode, int(DiffMode::Absolute));
+        ImGui::SameLine();
+        ImGui::RadioButton("rel", &mode, int(DiffMode::Relative));
+        ab.diffMode = DiffMode(mode);
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
+        ImGui::InputFloat("threshold", &ab.threshold, 0.0f, 0.0f, "%.2g");
+        ab.threshold = std::max(ab.threshold, 0.0f);
+        ImGui::SameLine();
+        ImGui::Checkbox("heat to threshold", &ab.heatToThreshold);
+    }
+    std::span<AbField const> const fields = abFields();
+    for (std::size_t i = 0; i < fields.size(); ++i) abFieldRow(fields[i], i, ab);
+}
 }  // namespace
 
-void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailable) {
+void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailable, AbState* ab) {
     placeWindow(EditorWindow::Pipeline);
     if (ImGui::Begin(windowName(EditorWindow::Pipeline), nullptr, editorWindowFlags())) {
         float const right = rowRightEdge();
@@ -90,6 +153,10 @@ void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailabl
             ImGui::Checkbox("Light cubes", &settings.lightCubes);
             sameLineIfFits(checkItemWidth("Volume wireframes"), false, right);
             ImGui::Checkbox("Volume wireframes", &settings.volumeWireframes);
+            ImGui::BeginDisabled(!settings.volumeWireframes);
+            ImGui::Checkbox("Selected light's volume only", &settings.wireframesSelectedOnly);
+            ImGui::EndDisabled();
+            helpTooltip("32 volumes at once are a tangle: outline only the light selected in the Lights window");
             bool heatmap = settings.view == DebugView::Heatmap;
             if (ImGui::Checkbox("Coverage heatmap", &heatmap))
                 settings.view = heatmap ? DebugView::Heatmap : DebugView::Final;
@@ -111,6 +178,7 @@ void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailabl
                                ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
             ImGui::PopItemWidth();
         }
+        if (ab && section("A/B compare")) abSection(*ab, settings);
     }
     ImGui::End();
 }

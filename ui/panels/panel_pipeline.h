@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/pipeline_settings.h"
+#include "model/ab_compare.h"
 
 #include <array>
 #include <optional>
@@ -21,6 +22,7 @@ ModeReasons modeReasons(Ask ask) {
 
 // Edits `settings` in place; the renderer reads them on the next frame. Unavailable modes are
 // greyed out with their reason.
-void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailable);
+// `ab` (optional) adds the A/B comparison's table: which settings side B changes, and to what.
+void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailable, AbState* ab = nullptr);
 
 }  // namespace gbl::ui

@@ -1,6 +1,7 @@
 // Pixel inspector window.
 #include "panels/panel_pixel_inspector.h"
 
+#include "model/pixel_breakdown.h"
 #include "model/viewer_tools.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
@@ -83,6 +84,16 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
                 glm::vec3 evaluated = b.ambient;
                 for (LightVerdict const& v : b.verdicts) evaluated += v.added;
                 ImGui::Text("by mode %.4f %.4f %.4f", evaluated.r, evaluated.g, evaluated.b);
+            }
+            if (state.sample) {
+                // The flag: stored and summed differ by more than fp16 storage explains.
+                ValueCheck const check = checkStoredValue(stored, b, state.settings);
+                if (!check.agrees) {
+                    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.35f, 1.0f));
+                    ImGui::TextWrapped("stored != sum of the lights: off by %.4f (fp16 allows %.4f). Likely: %s",
+                                       check.error, check.allowed, check.cause.c_str());
+                    ImGui::PopStyleColor();
+                }
             }
             // Rows: the verdicts (every light, why it was or was not evaluated) when present,
             // brightest first; otherwise the lights that reach the pixel.

@@ -2,6 +2,7 @@
 #include "panels/panel_viewport.h"
 
 #include "gpu/view_target.h"
+#include "model/colormap.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
 
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace gbl::ui {
 
@@ -69,10 +71,166 @@ void litPinRow(LitPin& pin) {
                 d.maxAt.x, d.maxAt.y, d.mean, d.overThreshold, d.pixels, d.nanPixels);
 }
 
+// A G-buffer view in forward mode would show the cleared (black) G-buffer: say why instead.
+bool gbufferView(DebugView v) {
+    switch (v) {
+        case DebugView::Position:
+        case DebugView::Normal:
+        case DebugView::Albedo:
+        case DebugView::Specular:
+        case DebugView::Depth:
+        case DebugView::DepthLinear:
+            return true;
+        default:
+            return false;
+    }
+}
+
+void centredMessage(ImVec2 min, ImVec2 max, char const* text) {
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddRectFilled(min, max, IM_COL32(24, 24, 28, 255));
+    float const wrap = std::max(100.0f, (max.x - min.x) * 0.8f);
+    ImVec2 const size = ImGui::CalcTextSize(text, nullptr, false, wrap);
+    ImVec2 const p((min.x + max.x - size.x) * 0.5f, (min.y + max.y - size.y) * 0.5f);
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), p, IM_COL32(235, 235, 235, 255), text, nullptr, wrap);
+}
+
+// Text with a dark box behind it, so it reads over any frame.
+void boxedText(ImVec2 p, std::string const& text) {
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    ImVec2 const size = ImGui::CalcTextSize(text.c_str());
+    dl->AddRectFilled(ImVec2(p.x - 3, p.y - 1), ImVec2(p.x + size.x + 3, p.y + size.y + 1), IM_COL32(0, 0, 0, 180));
+    dl->AddText(p, IM_COL32(240, 240, 240, 255), text.c_str());
+}
+
+std::string passLine(char const* side, std::vector<PassTiming> const& passes, double total) {
+    std::string out = std::string(side) + " GPU ms:";
+    char buf[64];
+    for (PassTiming const& p : passes) {
+        std::snprintf(buf, sizeof buf, " %s %.1f", p.name.c_str(), p.gpuMs);
+        out += buf;
+    }
+    std::snprintf(buf, sizeof buf, ", total %.1f", total);
+    return out + buf;
+}
+
+std::string sideLabel(char const* side, PipelineSettings const& s) {
+    return std::string(side) + ": " + std::string(enumName(kLightingModeNames, s.mode)) +
+           (s.mode == LightingMode::Volumes ? "/" + std::string(enumName(kCullModeNames, s.cull)) : std::string());
+}
+
+// The divider between A (left) and B (right), dragged with the left button. Submitted before the
+// image's own button so that it, not the camera drag, takes the press.
+void abDivider(AbState& ab, ImVec2 origin, ImVec2 avail) {
+    float const x = origin.x + ab.divider * avail.x;
+    float const grab = 10.0f;
+    ImGui::SetCursorScreenPos(ImVec2(x - grab * 0.5f, origin.y));
+    ImGui::InvisibleButton("ab-divider", ImVec2(grab, avail.y));
+    if (ImGui::IsItemHovered() || ImGui::IsItemActive()) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+    if (ImGui::IsItemActive()) ab.divider = std::clamp((ImGui::GetIO().MousePos.x - origin.x) / avail.x, 0.02f, 0.98f);
+    ImGui::SetCursorScreenPos(origin);
+}
+
+// B over the right of the divider, the line, the two labels and each side's pass times.
+void drawAbSplit(ViewportTeaching const& v, PipelineSettings const& a, ImVec2 origin, ImVec2 avail) {
+    AbState const& ab = v.ab;
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    float const x = origin.x + ab.divider * avail.x;
+    ImVec2 const end(origin.x + avail.x, origin.y + avail.y);
+    if (v.textureB != 0)
+        dl->AddImage(toImTexture(v.textureB), ImVec2(x, origin.y), end, ImVec2(ab.divider, 1), ImVec2(1, 0));
+    dl->AddLine(ImVec2(x, origin.y), ImVec2(x, end.y), IM_COL32(0, 0, 0, 220), 4.0f);
+    dl->AddLine(ImVec2(x, origin.y), ImVec2(x, end.y), IM_COL32(255, 230, 80, 255), 2.0f);
+    dl->AddCircleFilled(ImVec2(x, origin.y + avail.y * 0.5f), 7.0f, IM_COL32(255, 230, 80, 255));
+    float const line = ImGui::GetTextLineHeightWithSpacing();
+    boxedText(ImVec2(origin.x + 8, origin.y + 6), sideLabel("A", a));
+    std::string const b = sideLabel("B", v.settingsB);
+    boxedText(ImVec2(end.x - ImGui::CalcTextSize(b.c_str()).x - 8, origin.y + 6), b);
+    boxedText(ImVec2(origin.x + 8, origin.y + 6 + line), "B differs in: " + describeAb(a, v.settingsB));
+    boxedText(ImVec2(origin.x + 8, end.y - 2 * line - 4), passLine("A", ab.passesA, ab.gpuMsA));
+    boxedText(ImVec2(origin.x + 8, end.y - line - 4), passLine("B", ab.passesB, ab.gpuMsB));
+}
+
+// The |A - B| heat map's legend (turbo from 0 to its scale) and the diff's numbers.
+void drawAbDiff(ViewportTeaching const& v, PipelineSettings const& a, ImVec2 origin, ImVec2 avail) {
+    AbState const& ab = v.ab;
+    DiffStats const& d = ab.pin.diff;
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    float const line = ImGui::GetTextLineHeightWithSpacing();
+    float const scale = ab.heatToThreshold ? ab.threshold : d.max;
+    char const* what = ab.diffMode == DiffMode::Relative ? "|A-B|/|B|" : "|A-B|";
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%s of the lit HDR frame, largest RGB channel (magenta: NaN/Inf)", what);
+    boxedText(ImVec2(origin.x + 8, origin.y + 6), buf);
+    boxedText(ImVec2(origin.x + 8, origin.y + 6 + line), "A vs B: " + describeAb(a, v.settingsB));
+    if (!d.comparable) return;
+    std::snprintf(buf, sizeof buf, "max %.4g at %d,%d   mean %.4g   %ld of %ld px over %.3g   NaN/Inf px %ld", d.max,
+                  d.maxAt.x, d.maxAt.y, d.mean, d.overThreshold, d.pixels, ab.threshold, d.nanPixels);
+    boxedText(ImVec2(origin.x + 8, origin.y + 6 + 2 * line), buf);
+    // Legend: a turbo ramp 0 .. scale, the same ramp diffHeatmap paints.
+    float const w = std::min(256.0f, avail.x - 40.0f), h = 12.0f;
+    ImVec2 const p0(origin.x + 12, origin.y + avail.y - 3 * line - h - 10);
+    dl->AddRectFilled(ImVec2(p0.x - 4, p0.y - 4), ImVec2(p0.x + w + 4, p0.y + h + line + 2), IM_COL32(0, 0, 0, 180));
+    for (int i = 0; i < 64; ++i) {
+        glm::vec3 const c = colormap(Colormap::Turbo, (float(i) + 0.5f) / 64.0f);
+        dl->AddRectFilled(ImVec2(p0.x + w * float(i) / 64.0f, p0.y), ImVec2(p0.x + w * float(i + 1) / 64.0f, p0.y + h),
+                          IM_COL32(int(c.r * 255), int(c.g * 255), int(c.b * 255), 255));
+    }
+    dl->AddText(ImVec2(p0.x, p0.y + h + 1), IM_COL32(240, 240, 240, 255), "0");
+    std::snprintf(buf, sizeof buf, "%.3g%s", scale, ab.heatToThreshold ? " (threshold)" : " (max)");
+    dl->AddText(ImVec2(p0.x + w - ImGui::CalcTextSize(buf).x, p0.y + h + 1), IM_COL32(240, 240, 240, 255), buf);
+    boxedText(ImVec2(origin.x + 8, origin.y + avail.y - 2 * line - 4), passLine("A", ab.passesA, ab.gpuMsA));
+    boxedText(ImVec2(origin.x + 8, origin.y + avail.y - line - 4), passLine("B", ab.passesB, ab.gpuMsB));
+}
+
+glm::vec4 lastItemRect() {
+    ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    return {a.x, a.y, b.x - a.x, b.y - a.y};
+}
+
+// The third row: "Light by light" with its slider (Left/Right step it) and the A/B toggle.
+void teachingRow(ViewportTeaching& t, PipelineSettings const& settings) {
+    AccumulateState& a = t.accumulate;
+    ImGui::SetCursorPosX(ImGui::GetCursorPosX() + 6);
+    ImGui::Checkbox("Light by light", &a.enabled);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "the frame shows the first k lights only (ambient alone at 0), light k's volume outlined;\n"
+            "Left/Right arrows step k");
+    ImGui::SameLine();
+    a.count = std::clamp(a.count, 0, t.lightCount);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 10.0f);
+    // Touching the scrubber turns accumulation on: that is what it is for.
+    ImGui::SliderInt("##k", &a.count, 0, t.lightCount, a.enabled ? "k = %d" : "k = %d (off)",
+                     ImGuiSliderFlags_AlwaysClamp);
+    if (ImGui::IsItemActivated()) a.enabled = true;
+    a.sliderRect = lastItemRect();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!a.enabled);
+    ImGui::Checkbox("only k", &a.contribution);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("light k alone, without ambient: what step k added to the frame");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (a.enabled) ImGui::TextDisabled(a.count == 0 ? "ambient only" : "%s", t.kthLightName.c_str());
+    ImGui::SameLine();
+    if (ImGui::Checkbox("A/B", &t.ab.enabled) && t.ab.enabled) startAb(t.ab, settings);
+    t.ab.toggleRect = lastItemRect();
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("two pipeline settings on the same frame: pick what B changes in the Pipeline window");
+    if (t.ab.enabled) {
+        ImGui::SameLine();
+        int view = int(t.ab.view);
+        ImGui::RadioButton("split", &view, int(AbView::Split));
+        ImGui::SameLine();
+        ImGui::RadioButton("diff", &view, int(AbView::Diff));
+        t.ab.view = AbView(view);
+    }
+}
+
 }  // namespace
 
 void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin& litPin, unsigned texture,
-                       glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight) {
+                       glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight, ViewportTeaching* ab) {
     state.hovered = false;
     state.hoverPixel.reset();
     state.clickPixel.reset();
@@ -112,6 +270,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
             "click a light cube: select it    double-click: select and frame it\n"
             "L: lock the pixel inspector    F1: every shortcut");
     litPinRow(litPin);
+    if (ab) teachingRow(*ab, settings);
 
     ImVec2 const avail = ImGui::GetContentRegionAvail();
     ImVec2 const scale = ImGui::GetIO().DisplayFramebufferScale;
@@ -123,13 +282,28 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
 
     ImVec2 const origin = ImGui::GetCursorScreenPos();
     state.imageRect = glm::vec4(origin.x, origin.y, avail.x, avail.y);
+    bool const abOn = ab && ab->ab.enabled;
+    if (abOn && ab->ab.view == AbView::Split) abDivider(ab->ab, origin, avail);
     ImGui::InvisibleButton(
         "viewport-image", avail,
         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
-    if (texture != 0) {
+    ImVec2 const imageEnd(origin.x + avail.x, origin.y + avail.y);
+    bool const noGBuffer = settings.mode == LightingMode::Forward && gbufferView(settings.view);
+    if (abOn && ab->ab.view == AbView::Diff && ab->diffTexture != 0) {
+        ImGui::GetWindowDrawList()->AddImage(toImTexture(ab->diffTexture), origin, imageEnd, ImVec2(0, 1),
+                                             ImVec2(1, 0));
+        drawAbDiff(*ab, settings, origin, avail);
+    } else if (noGBuffer) {
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      "forward mode has no G-buffer: '%s' is not stored anywhere. Switch to quad, volumes or tiled "
+                      "to see it.",
+                      kDebugViewNames[std::size_t(settings.view)].data());
+        centredMessage(origin, imageEnd, text);
+    } else if (texture != 0) {
         // GL images start at the bottom row; flip v so the picture is upright.
-        ImGui::GetWindowDrawList()->AddImage(
-            toImTexture(texture), origin, ImVec2(origin.x + avail.x, origin.y + avail.y), ImVec2(0, 1), ImVec2(1, 0));
+        ImGui::GetWindowDrawList()->AddImage(toImTexture(texture), origin, imageEnd, ImVec2(0, 1), ImVec2(1, 0));
+        if (abOn && ab->ab.view == AbView::Split) drawAbSplit(*ab, settings, origin, avail);
     } else {
         ImGui::GetWindowDrawList()->AddText(ImVec2(origin.x + 10, origin.y + 10), IM_COL32(200, 200, 200, 255),
                                             "no frame yet");

@@ -3,6 +3,9 @@
 
 #include <glm/glm.hpp>
 #include <optional>
+#include <string>
+#include "model/ab_accumulate.h"
+#include "model/ab_compare.h"
 #include "model/viewer_tools.h"
 #include "model/viewport_state.h"
 
@@ -13,7 +16,19 @@ namespace gbl::ui {
 // when it is in front of the camera; a ring marks it so a click on a cube visibly selects it.
 // litPin: the "Pin lit" / "Diff" controls; the caller passes the diff heat map as texture while
 // litPin.showDiff has one.
+// The teaching row: the light-by-light scrubber and the A/B comparison, with side B's image and
+// the |A - B| heat map (ab_frame.h).
+struct ViewportTeaching {
+    AbState& ab;
+    AccumulateState& accumulate;
+    int lightCount = 0;
+    std::string kthLightName;  // the light the scrubber stops at
+    PipelineSettings settingsB;
+    unsigned textureB = 0;
+    unsigned diffTexture = 0;
+};
 void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin& litPin, unsigned texture,
-                       glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight = std::nullopt);
+                       glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight = std::nullopt,
+                       ViewportTeaching* ab = nullptr);
 
 }  // namespace gbl::ui

@@ -54,6 +54,21 @@ void setCommand(CommandCall const& c) {
         s.animation.enabled = value != "0";
     else if (key == "time")
         s.animation.time = number(value);
+    else if (key == "accumulate") {  // K lights, or -1: off
+        int const k = std::atoi(value.c_str());
+        s.accumulate.enabled = k >= 0;
+        s.accumulate.count = std::max(k, 0);
+    } else if (key == "contribution")
+        s.accumulate.contribution = value != "0";
+    else if (key == "ab") {  // off, split or diff
+        ok = value == "off" || value == "split" || value == "diff";
+        if (ok && value != "off" && !s.ab.enabled) startAb(s.ab, s.pipeline);
+        s.ab.enabled = ok && value != "off";
+        s.ab.view = value == "diff" ? AbView::Diff : AbView::Split;
+    } else if (key == "ab-divider")
+        s.ab.divider = std::clamp(number(value), 0.02f, 0.98f);
+    else if (key.rfind("b.", 0) == 0)  // side B's FIELD, as the A/B table names it
+        ok = setAbField(s.ab, key.substr(2), value);
     else if (key == "lights") {
         ok = bool(c.host.defaultLights);
         if (ok) s.lights = c.host.defaultLights(std::atoi(value.c_str()));
@@ -124,7 +139,9 @@ constexpr ScriptCommandSpec kCommands[] = {
      [](CommandCall const& c) { c.run.wait = std::max(std::atoi(c.w[1].c_str()), 1); }},
     {"set", "KEY VALUE",
      "mode|cull|blit|view|tonemap NAME, exposure F, cubes|wireframes|animate 0|1,\n"
-     "time SECONDS (light animation), lights N (default scene lights)",
+     "time SECONDS (light animation), lights N (default scene lights),\n"
+     "accumulate K (-1: off), contribution 0|1, ab off|split|diff, ab-divider X,\n"
+     "b.FIELD VALUE (side B of A/B: mode, cull, blit, shininess, ... as the Pipeline window's table)",
      setCommand},
     {"light", "I FIELD VALUE",
      "edit light I through the validated path the Lights panel uses;\n"

@@ -1,0 +1,55 @@
+// Rendering the teaching views of the editor's frame.
+#include "ab_frame.h"
+
+#include <epoxy/gl.h>
+
+namespace gbl::ui {
+
+FrameInput editorFrameInput(EditorState const& state, std::span<PointLight const> lights, bool waitForGpuTimings) {
+    FrameInput in{state.camera, lights, state.pipeline, waitForGpuTimings};
+    if (state.accumulate.enabled) {
+        in.accumulateLights = state.accumulate.count;
+        in.lightContribution = state.accumulate.contribution;
+    }
+    // Nothing selected: no volume at all, as asked ("only the selected one").
+    if (state.pipeline.wireframesSelectedOnly)
+        in.wireframeLight = state.lightsPanel.selected >= 0 ? state.lightsPanel.selected : int(lights.size());
+    return in;
+}
+
+TeachingInputs teachingInputs(FrameInput const& a, AbState const& ab) {
+    TeachingInputs t;
+    t.accumulate = a.accumulateLights;
+    t.contribution = a.lightContribution;
+    t.wireframeLight = a.wireframeLight;
+    if (ab.enabled) t.sideB = sideB(ab, a.settings);
+    return t;
+}
+
+FrameStats renderEditorFrame(EditorState& state, Renderer& renderer, FrameInput const& a, long frame, AbGpu& gpu) {
+    AbState& ab = state.ab;
+    if (!ab.enabled || renderer.width() <= 0 || renderer.height() <= 0) return renderer.render(a);
+    // B first: its lit frame is pinned and its picture kept, then A leaves the renderer's targets
+    // as every other tool expects them (the G-buffer viewers and the inspector read side A).
+    FrameInput b = a;
+    b.settings = sideB(ab, a.settings);
+    FrameStats const statsB = renderer.render(b);
+    ab.pin.showDiff = true;
+    ab.pin.diffMode = ab.diffMode;
+    ab.pin.diffThreshold = ab.threshold;
+    ab.pin.pinRequested = true;
+    setLitValues(ab.pin, renderer.readAttachment(Attachment::Lighting), frame);
+    ViewParams shown;
+    shown.view = b.settings.view;
+    renderer.drawView(shown, b, gpu.b);
+    FrameStats const statsA = renderer.render(a);
+    setLitValues(ab.pin, renderer.readAttachment(Attachment::Lighting), frame);
+    if (ab.pin.diff.comparable) uploadDiff(gpu.diff, ab.pin.diff, ab.heatToThreshold ? ab.threshold : 0.0f, true);
+    ab.passesA = statsA.passes;
+    ab.passesB = statsB.passes;
+    ab.gpuMsA = statsA.gpuFrameMs;
+    ab.gpuMsB = statsB.gpuFrameMs;
+    return statsA;
+}
+
+}  // namespace gbl::ui
