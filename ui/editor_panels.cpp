@@ -14,6 +14,7 @@
 #include "panels/panel_shortcuts.h"
 #include "panels/panel_stats.h"
 #include "panels/panel_viewport.h"
+#include "panels/viewer_tools.h"
 
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
@@ -122,10 +123,13 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     ui::drawLightsPanel(state.lightsPanel, state.lights, state.animation, state.sceneBounds);
     ui::drawPipelinePanel(state.pipeline,
                           ui::modeReasons([&](LightingMode m) { return editor.renderer->modeUnavailable(m); }));
-    unsigned const viewportTexture = times.litDiffTexture ? times.litDiffTexture : renderer.texture(Attachment::Final);
-    ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, viewportTexture,
+    unsigned const viewportTexture = times.litDiffTexture         ? times.litDiffTexture
+                                     : times.viewportToolsTexture ? times.viewportToolsTexture
+                                                                  : renderer.texture(Attachment::Final);
+    ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, state.viewportTools, viewportTexture,
                           {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer));
     ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()});
+    ui::drawViewerMagnifier(state.gbuffer, state.viewportTools);
     ui::drawPixelInspectorPanel(state.inspector);
     ui::drawStatsPanel(state.stats, editor.caps, int(state.lights.size()), &editor.render, editor.renderReason);
     ui::drawLogPanel(state.log);

@@ -49,7 +49,8 @@ struct EditorState {
     LayoutState layout;
     LightsPanelState lightsPanel;
     ViewportState viewport;
-    LitPin litPin;  // the viewport's pinned lit frame and its diff
+    LitPin litPin;                // the viewport's pinned lit frame and its diff
+    ViewportTools viewportTools;  // the viewer tools in the viewport while it shows an attachment
     GBufferPanelState gbuffer;
     PixelInspectorState inspector;
     StatsState stats;

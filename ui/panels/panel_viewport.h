@@ -12,8 +12,9 @@ namespace gbl::ui {
 // selectedLight: where the selected light's centre falls in the image (0..1, top-left origin),
 // when it is in front of the camera; a ring marks it so a click on a cube visibly selects it.
 // litPin: the "Pin lit" / "Diff" controls; the caller passes the diff heat map as texture while
-// litPin.showDiff has one.
-void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin& litPin, unsigned texture,
-                       glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight = std::nullopt);
+// litPin.showDiff has one. tools: the viewer tools while the view is a G-buffer attachment; the
+// caller passes their view (serviceViewportTools) as texture while they are open.
+void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin& litPin, ViewportTools& tools,
+                       unsigned texture, glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight = std::nullopt);
 
 }  // namespace gbl::ui
