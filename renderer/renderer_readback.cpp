@@ -121,6 +121,11 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
     readColor(t.litFbo.id(), GL_COLOR_ATTACHMENT0, s.lighting);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, t.gbuffer.fbo.id());
     glReadPixels(x, glY, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &s.depth);
+    std::uint8_t stencil = 0;
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(x, glY, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    s.stencil = stencil;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     s.covered = s.position.w > 0.0f;
     // World position rebuilt from depth: unproject the pixel centre through the inverse view-projection.

@@ -23,6 +23,18 @@ EditorState editedState() {
     s.gbuffer.viewers[0].zoom = 4.0f;
     s.gbuffer.viewers[0].center = {0.2f, 0.7f};
     s.gbuffer.viewers[0].imageSize = {640, 360};
+    s.gbuffer.viewers[1].colormap = Colormap::Viridis;
+    s.gbuffer.viewers[1].overlays = kOverlayNaN | kOverlayNegative;
+    s.gbuffer.viewers[2].showHistogram = true;
+    s.gbuffer.viewers[4].rangeMin = 0.9f;
+    s.gbuffer.viewers[4].rangeMax = 0.99f;
+    setShowStencil(s.gbuffer.viewers[4], true);  // range 0..255 now; the depth's waits
+    s.gbuffer.viewers[4].rangeMax = 16.0f;
+    s.gbuffer.syncViews = true;
+    s.viewportTools.open = true;
+    s.viewportTools.viewer.colormap = Colormap::Turbo;
+    s.viewportTools.viewer.rangeMin = -3.0f;
+    s.viewportTools.viewer.autoFit = false;
     s.animation.enabled = true;
     s.animation.time = 8.5f;
     return s;
@@ -54,6 +66,22 @@ TEST(EditorSession, CapturedSessionAppliesBackThroughJson) {
     EXPECT_EQ(fresh.gbuffer.viewers[0].kind, ViewerKind::Position);
     EXPECT_TRUE(fresh.animation.enabled);
     EXPECT_EQ(fresh.animation.time, 8.5f);
+    // Viewer tools.
+    EXPECT_EQ(fresh.gbuffer.viewers[1].colormap, Colormap::Viridis);
+    EXPECT_EQ(fresh.gbuffer.viewers[1].overlays, kOverlayNaN | kOverlayNegative);
+    EXPECT_TRUE(fresh.gbuffer.viewers[2].showHistogram);
+    EXPECT_FALSE(fresh.gbuffer.viewers[0].showHistogram);
+    EXPECT_TRUE(fresh.gbuffer.viewers[4].showStencil);
+    EXPECT_EQ(fresh.gbuffer.viewers[4].rangeMin, 0.0f);  // the stencil's range, as shown when saved
+    EXPECT_EQ(fresh.gbuffer.viewers[4].rangeMax, 16.0f);
+    // Switching back shows a depth range (the default's: the saved depth range was not shown).
+    setShowStencil(fresh.gbuffer.viewers[4], false);
+    EXPECT_EQ(fresh.gbuffer.viewers[4].rangeMax, GBufferPanelState::defaultViewers()[4].rangeMax);
+    EXPECT_TRUE(fresh.gbuffer.syncViews);
+    EXPECT_TRUE(fresh.viewportTools.open);
+    EXPECT_EQ(fresh.viewportTools.viewer.colormap, Colormap::Turbo);
+    EXPECT_EQ(fresh.viewportTools.viewer.rangeMin, -3.0f);
+    EXPECT_FALSE(fresh.viewportTools.viewer.autoFit);
     EXPECT_EQ(fresh.lightsPanel.selected, 0);  // the old selection no longer exists
     // The orbit target sits ahead of the restored camera, so orbiting does not jump.
     glm::vec3 const toTarget = glm::normalize(fresh.rig.target - fresh.camera.position);

@@ -54,6 +54,18 @@ TEST_F(LitPinGlTest, PinThenDiffOnRealFrames) {
     EXPECT_GT(pin.diff.max, 0.0f);
     EXPECT_GT(pin.diff.overThreshold, 0);
     EXPECT_LE(pin.diff.max, pin.stats.shown.max);
+
+    // A threshold applies at once, from the read-back already held (no frame is due for one).
+    long const over = pin.diff.overThreshold;
+    long const readAt = pin.frame;
+    pin.diffThreshold = pin.diff.max * 0.5f;
+    EXPECT_EQ(ui::serviceLitPin(pin, *renderer, readAt + 1, gpu), same);
+    EXPECT_EQ(pin.frame, readAt);
+    EXPECT_LT(pin.diff.overThreshold, over);
+    EXPECT_GT(pin.diff.overThreshold, 0);  // the brightest change is still over half of itself
+    pin.diffThreshold = pin.diff.max * 2.0f;
+    ui::serviceLitPin(pin, *renderer, readAt + 2, gpu);
+    EXPECT_EQ(pin.diff.overThreshold, 0);
 }
 
 }  // namespace

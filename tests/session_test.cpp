@@ -69,7 +69,19 @@ Session richSession() {
         v.farPlane = 50.0f + float(i) / 3.0f;
         v.zoom = 1.0f + float(i) * 2.5f;
         v.center = {0.25f + float(i) * 0.1f, 0.75f - float(i) * 0.1f};
+        v.colormap = Colormap(i % 3);
+        v.overlays = unsigned(i * 3) & 0xFu;  // 0, nan+inf, negative+inf, ...
+        v.showHistogram = i % 2 == 1;
     }
+    s.viewers[4].showStencil = true;  // only the depth viewer shows it
+    s.syncViews = true;
+    s.viewportToolsOpen = true;
+    s.viewportViewer.channelMask = 0x2;
+    s.viewportViewer.rangeMin = -0.125f / 3.0f;
+    s.viewportViewer.rangeMax = 7.0f / 3.0f;
+    s.viewportViewer.colormap = Colormap::Viridis;
+    s.viewportViewer.overlays = kOverlayNaN | kOverlayClip;
+    s.viewportViewer.showHistogram = true;
     s.animation.enabled = true;
     s.animation.speed = 0.35f;
     s.animation.time = 12.345678f;
@@ -134,7 +146,19 @@ void expectEqual(Session const& a, Session const& b) {
         expectSame(v.farPlane, w.farPlane, at + "far");
         expectSame(v.zoom, w.zoom, at + "zoom");
         expectSame(v.center, w.center, at + "center");
+        EXPECT_EQ(v.colormap, w.colormap) << at;
+        EXPECT_EQ(v.overlays, w.overlays) << at;
+        EXPECT_EQ(v.showHistogram, w.showHistogram) << at;
+        EXPECT_EQ(v.showStencil, w.showStencil) << at;
     }
+    EXPECT_EQ(a.syncViews, b.syncViews);
+    EXPECT_EQ(a.viewportToolsOpen, b.viewportToolsOpen);
+    EXPECT_EQ(a.viewportViewer.channelMask, b.viewportViewer.channelMask);
+    expectSame(a.viewportViewer.rangeMin, b.viewportViewer.rangeMin, "viewport range_min");
+    expectSame(a.viewportViewer.rangeMax, b.viewportViewer.rangeMax, "viewport range_max");
+    EXPECT_EQ(a.viewportViewer.colormap, b.viewportViewer.colormap);
+    EXPECT_EQ(a.viewportViewer.overlays, b.viewportViewer.overlays);
+    EXPECT_EQ(a.viewportViewer.showHistogram, b.viewportViewer.showHistogram);
     EXPECT_EQ(a.animation.enabled, b.animation.enabled);
     expectSame(a.animation.speed, b.animation.speed, "animation.speed");
     expectSame(a.animation.time, b.animation.time, "animation.time");
@@ -183,6 +207,47 @@ TEST(Session, LightNameIsOptional) {
     SessionLoad const back = parseSession(j.dump(), "s.json");
     ASSERT_TRUE(back.session) << back.error;
     EXPECT_EQ(back.session->lights[0].name, "");
+}
+
+TEST(Session, ViewerToolsAreWrittenByName) {
+    json const j = json::parse(sessionToJson(richSession()));
+    json const& depth = j["viewers"]["depth"]["tools"];
+    EXPECT_EQ(depth["stencil"], true);
+    EXPECT_EQ(depth["colormap"], "turbo");                                                // Colormap(4 % 3)
+    EXPECT_EQ(depth["overlays"], json::array({"negative", "clip"}));                      // 12 = 4 + 8
+    EXPECT_EQ(j["viewers"]["normal"]["tools"]["overlays"], json::array({"nan", "inf"}));  // 3
+    EXPECT_EQ(j["viewer_tools"]["sync"], true);
+    EXPECT_EQ(j["viewer_tools"]["viewport"]["open"], true);
+    EXPECT_EQ(j["viewer_tools"]["viewport"]["viewer"]["tools"]["colormap"], "viridis");
+}
+
+TEST(Session, FileWithoutViewerToolsLoadsWithTheirDefaults) {
+    // A version 1 file from before the viewer tools: no "tools", no "viewer_tools".
+    json j = json::parse(sessionToJson(richSession()));
+    for (auto& [name, viewer] : j["viewers"].items()) viewer.erase("tools");
+    j.erase("viewer_tools");
+    SessionLoad const back = parseSession(j.dump(), "old.json");
+    ASSERT_TRUE(back.session) << back.error;
+    ViewerState const defaults;
+    for (ViewerState const& v : back.session->viewers) {
+        EXPECT_EQ(v.colormap, defaults.colormap);
+        EXPECT_EQ(v.overlays, 0u);
+        EXPECT_FALSE(v.showHistogram);
+        EXPECT_FALSE(v.showStencil);
+    }
+    EXPECT_FALSE(back.session->syncViews);
+    EXPECT_FALSE(back.session->viewportToolsOpen);
+    // The rest is read as before.
+    expectSame(back.session->viewers[2].rangeMin, richSession().viewers[2].rangeMin, "albedo range_min");
+    // Each tool field alone is optional too.
+    json k = json::parse(sessionToJson(richSession()));
+    k["viewers"]["albedo"]["tools"].erase("colormap");
+    k["viewer_tools"].erase("viewport");
+    SessionLoad const partial = parseSession(k.dump(), "k.json");
+    ASSERT_TRUE(partial.session) << partial.error;
+    EXPECT_EQ(partial.session->viewers[2].colormap, Colormap::Grey);
+    EXPECT_EQ(partial.session->viewers[2].overlays, richSession().viewers[2].overlays);
+    EXPECT_TRUE(partial.session->syncViews);
 }
 
 // --- bad fields -----------------------------------------------------------------------------
@@ -276,6 +341,29 @@ TEST(Session, EveryKindOfBadFieldGetsOneMessageNamingIt) {
          "s.json: pipeline.cull must be one of back, front, none, flip or stencil (got a number)"},
         {"unknown normal display", [](json& j) { j["viewers"]["normal"]["normal_display"] = "signed"; },
          "s.json: viewers.normal.normal_display must be one of biased or absolute (got \"signed\")"},
+        // viewer tools
+        {"unknown colormap", [](json& j) { j["viewers"]["depth"]["tools"]["colormap"] = "jet"; },
+         "s.json: viewers.depth.tools.colormap must be one of grey, turbo or viridis (got \"jet\")"},
+        {"unknown overlay",
+         [](json& j) {
+             j["viewers"]["albedo"]["tools"]["overlays"] = {"nan", "zebra"};
+         },
+         "s.json: viewers.albedo.tools.overlays[1] must be one of nan, inf, negative or clip (got \"zebra\")"},
+        {"overlays as bits", [](json& j) { j["viewers"]["albedo"]["tools"]["overlays"] = 3; },
+         "s.json: viewers.albedo.tools.overlays must be an array of names out of nan, inf, negative or clip (got a "
+         "number)"},
+        {"histogram as text", [](json& j) { j["viewers"]["normal"]["tools"]["histogram"] = "yes"; },
+         "s.json: viewers.normal.tools.histogram must be true or false (got a string)"},
+        {"stencil on another viewer", [](json& j) { j["viewers"]["position"]["tools"]["stencil"] = true; },
+         "s.json: viewers.position.tools.stencil must be false: only the depth viewer shows the stencil"},
+        {"unknown tool", [](json& j) { j["viewers"]["depth"]["tools"]["zebra"] = true; },
+         "s.json: viewers.depth.tools.zebra is not a known field"},
+        {"sync as a number", [](json& j) { j["viewer_tools"]["sync"] = 1; },
+         "s.json: viewer_tools.sync must be true or false (got a number)"},
+        {"viewport zoom out of range", [](json& j) { j["viewer_tools"]["viewport"]["viewer"]["zoom"] = 0; },
+         "s.json: viewer_tools.viewport.viewer.zoom must be between 1 and 256 (got 0)"},
+        {"viewport stencil", [](json& j) { j["viewer_tools"]["viewport"]["viewer"]["tools"]["stencil"] = true; },
+         "s.json: viewer_tools.viewport.viewer.tools.stencil must be false: only the depth viewer shows the stencil"},
         // versions and format
         {"newer version", [](json& j) { j["version"] = 2; },
          "s.json: version 2 is not supported; this program reads version 1 (the file comes from a newer gbuffer-lab)"},

@@ -145,4 +145,52 @@ echo "double click framed light $light"
 
 kill "$pid" 2>/dev/null || true
 wait "$pid" 2>/dev/null || true
+pid=""
+
+# --- real clicks on "Pin lit" and "Diff"; the script in the same editor checks the diff --------
+# Both sit on the row right above the viewport image (the view is "final": no Tools row): "Pin
+# lit" first, 6 px in, then the "Diff" checkbox 8 px after the button. Their places follow from
+# the image rectangle and ImGui's default font (7 px per character, 4 px frame padding, 19 px rows).
+cat > "$work/lit_diff.txt" <<SCRIPT
+frames 3
+wait-lit-diff 60
+expect-lit-pinned
+expect-lit-diff max = 0
+expect-lit-diff pixels > 1000
+light 0 intensity 40
+frames 45
+expect-lit-diff max > 0
+expect-lit-diff over > 0
+lit-diff-threshold 1e9
+frames 2
+expect-lit-diff over = 0
+SCRIPT
+log="$work/lit_frames.jsonl"
+# The editor above was killed: a recovery folder of its own, or its autosave would be offered in
+# a modal dialog that takes the clicks.
+export GBL_RECOVERY_DIR="$work/recovery-lit"
+mkdir -p "$GBL_RECOVERY_DIR"
+"$bin" --size 1280x720 --no-vsync --session "$work/start.json" --frame-sleep-ms 60 --log-frames "$log" \
+    --ui-test "$work/lit_diff.txt" > "$work/lit_diff.log" 2>&1 &
+pid=$!
+wait_frames 3
+wid=$(xdotool search --sync --onlyvisible --name '^gbuffer-lab$' | head -n 1)
+[ -n "$wid" ] || fail "no gbuffer-lab window for the lit diff"
+xdotool windowactivate --sync "$wid" 2>/dev/null || xdotool windowfocus --sync "$wid"
+vp=$(field viewport | tr -d '[]')
+rowy=$(echo "$vp" | awk -F, '{ printf "%d", $2 - 13 }')
+pinx=$(echo "$vp" | awk -F, '{ printf "%d", $1 + 20 }')
+diffx=$(echo "$vp" | awk -F, '{ printf "%d", $1 + 6 + 57 + 8 + 9 }')
+xdotool mousemove --window "$wid" "$pinx" "$rowy" sleep 0.1 mousedown 1 sleep 0.05 mouseup 1
+wait_frames 4
+xdotool mousemove --window "$wid" "$diffx" "$rowy" sleep 0.1 mousedown 1 sleep 0.05 mouseup 1
+echo "clicked Pin lit at $pinx,$rowy and Diff at $diffx,$rowy"
+status=0
+wait "$pid" || status=$?
+pid=""
+grep "ui-test" "$work/lit_diff.log" || true
+[ "$status" -eq 0 ] || fail "the lit diff script failed (exit $status, see $work/lit_diff.log)"
+grep -q "ui-test PASS .*expect-lit-diff" "$work/lit_diff.log" || fail "no lit diff check passed"
+echo "Pin lit and Diff clicked for real; the diff statistics checked"
+
 echo "ui_real_input: PASS"

@@ -2,6 +2,7 @@
 #include "model/viewer_tools.h"
 
 #include "core/depth.h"
+#include "model/colormap.h"
 
 #include <gtest/gtest.h>
 
@@ -146,4 +147,117 @@ TEST(ViewerTools, LitPinHoldsTheFrameAndDiffsTheNextOne) {
     std::vector<std::uint8_t> const rgba = diffHeatmap(pin.diff, pin.diff.max);
     EXPECT_EQ(rgba[0], 0);
     EXPECT_EQ(rgba[(1 * 4 + 2) * 4], 144);
+}
+
+TEST(ViewerTools, LitDiffThresholdAndModeApplyWithoutANewReadBack) {
+    // Pinned: one pixel of 1.0 and one of 4.0; now: +0.5 on both (0.5 relative, 0.125 relative).
+    FloatImage pinned{2, 1, 4, {1.0f, 1.0f, 1.0f, 1.0f, 4.0f, 4.0f, 4.0f, 1.0f}};
+    FloatImage now{2, 1, 4, {1.5f, 1.5f, 1.5f, 1.0f, 4.5f, 4.5f, 4.5f, 1.0f}};
+    LitPin pin;
+    pin.pinRequested = true;
+    setLitValues(pin, pinned, 1);
+    pin.showDiff = true;
+    setLitValues(pin, now, 2);
+    ASSERT_TRUE(pin.diff.comparable);
+    EXPECT_EQ(pin.diff.overThreshold, 2);
+    EXPECT_FALSE(updateLitDiff(pin));  // nothing changed: nothing recomputed
+    pin.diffThreshold = 0.25f;
+    EXPECT_FALSE(litPinDue(pin, 3));       // no read-back is due ...
+    ASSERT_TRUE(updateLitDiff(pin));       // ... yet the new threshold counts at once
+    EXPECT_EQ(pin.diff.overThreshold, 2);  // both differ by 0.5 > 0.25
+    pin.diffMode = DiffMode::Relative;
+    ASSERT_TRUE(updateLitDiff(pin));
+    EXPECT_EQ(pin.diff.overThreshold, 1);  // 0.5 / 1 = 0.5 is over, 0.5 / 4 = 0.125 is not
+    EXPECT_FLOAT_EQ(pin.diff.max, 0.5f);
+    EXPECT_EQ(pin.frame, 2);  // the values are the read-back's of frame 2
+}
+
+TEST(ViewerTools, StencilValuesAreIntegersEveryPixelCounts) {
+    ViewerState v = GBufferPanelState::defaultViewers()[4];
+    v.rangeMin = 0.2f;
+    v.rangeMax = 0.9f;
+    setShowStencil(v, true);
+    EXPECT_EQ(viewerAttachment(v), Attachment::Stencil);
+    EXPECT_EQ(v.rangeMin, 0.0f);  // the stencil's own range
+    EXPECT_EQ(v.rangeMax, 255.0f);
+    FloatImage const stencil{3, 1, 1, {0.0f, 7.0f, 255.0f}};
+    FloatImage const values = viewerValues(v, stencil, 0.1f, 100.0f);
+    ASSERT_EQ(values.channels, 4);
+    EXPECT_EQ(values.at(1, 0, 0), 7.0f);
+    EXPECT_EQ(values.at(0, 0, 3), 1.0f);  // no background: a 0 is a value
+    ImageStats const s = imageStats(values, viewerStatsMask(v), {}, viewerSkip(v.kind));
+    EXPECT_EQ(s.pixels, 3);
+    EXPECT_EQ(s.shown.max, 255.0f);
+    // Another key than the depth's, so switching rereads.
+    ViewerState depth = v;
+    setShowStencil(depth, false);
+    EXPECT_NE(viewerValuesKey(depth), viewerValuesKey(v));
+    EXPECT_EQ(depth.rangeMin, 0.2f);  // the depth's range came back
+    EXPECT_EQ(depth.rangeMax, 0.9f);
+    EXPECT_EQ(viewerAttachment(depth), Attachment::Depth);
+}
+
+TEST(ViewerTools, StencilPictureIsTheColormapOfTheRemappedIntegers) {
+    ViewerState v = GBufferPanelState::defaultViewers()[4];
+    setShowStencil(v, true);
+    FloatImage const values = viewerValues(v, FloatImage{4, 1, 1, {0.0f, 51.0f, 255.0f, 200.0f}}, 0.1f, 100.0f);
+    // Grey over 0..255: the byte is the integer itself.
+    std::vector<std::uint8_t> grey = viewerPicture(v, values);
+    ASSERT_EQ(grey.size(), 16u);
+    EXPECT_EQ(grey[0], 0);
+    EXPECT_EQ(grey[4], 51);
+    EXPECT_EQ(grey[5], 51);
+    EXPECT_EQ(grey[8], 255);
+    EXPECT_EQ(grey[11], 255);  // opaque
+    // Turbo over 0..100, clipping on: 51 is turbo(0.51), 255 and 200 are above white (red).
+    v.colormap = Colormap::Turbo;
+    v.rangeMax = 100.0f;
+    v.overlays = kOverlayClip;
+    std::vector<std::uint8_t> const turbo = viewerPicture(v, values);
+    glm::vec3 const expected = colormap(Colormap::Turbo, 0.51f);
+    EXPECT_EQ(turbo[4], std::uint8_t(std::lround(expected.r * 255.0f)));
+    EXPECT_EQ(turbo[5], std::uint8_t(std::lround(expected.g * 255.0f)));
+    EXPECT_EQ(turbo[8], 255);
+    EXPECT_EQ(turbo[9], 0);
+    EXPECT_EQ(turbo[10], 0);
+    EXPECT_EQ(turbo[12], 255);
+    EXPECT_EQ(turbo[13], 0);
+}
+
+TEST(ViewerTools, ShownTexelColourMarksNaNAndInfAsTheShaderDoes) {
+    ViewerState v;
+    v.kind = ViewerKind::Position;
+    v.channelMask = 0x7;
+    v.rangeMin = 0.0f;
+    v.rangeMax = 2.0f;
+    float const nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    FloatImage const img{3, 1, 4, {1.0f, 0.5f, 2.0f, 1.0f, nan, 0.0f, 0.0f, 1.0f, 0.0f, inf, 0.0f, 1.0f}};
+    EXPECT_EQ(shownTexelColour(v, img, 0, 0), glm::vec3(0.5f, 0.25f, 1.0f));  // remapped, per channel
+    v.overlays = kOverlayNaN | kOverlayInf;
+    EXPECT_EQ(shownTexelColour(v, img, 1, 0), glm::vec3(1.0f, 0.0f, 1.0f));   // magenta
+    EXPECT_EQ(shownTexelColour(v, img, 2, 0), glm::vec3(0.0f, 1.0f, 0.0f));   // green
+    EXPECT_EQ(shownTexelColour(v, img, 0, 0), glm::vec3(0.5f, 0.25f, 1.0f));  // finite: unchanged
+}
+
+TEST(ViewerTools, ViewportToolsFollowTheViewportsView) {
+    ViewportTools tools;
+    EXPECT_FALSE(followViewportView(tools, DebugView::Final));
+    EXPECT_FALSE(followViewportView(tools, DebugView::Lighting));
+    EXPECT_FALSE(followViewportView(tools, DebugView::Heatmap));
+    ASSERT_TRUE(followViewportView(tools, DebugView::Albedo));
+    EXPECT_EQ(tools.viewer.kind, ViewerKind::Albedo);
+    EXPECT_EQ(tools.viewer.channelMask, 0x7u);
+    tools.viewer.region = PixelRect{{0, 0}, {2, 2}};
+    tools.viewer.colormap = Colormap::Viridis;
+    tools.data.frame = 5;
+    ASSERT_TRUE(followViewportView(tools, DebugView::DepthLinear));
+    EXPECT_EQ(tools.viewer.kind, ViewerKind::Depth);
+    EXPECT_TRUE(tools.viewer.linearDepth);
+    EXPECT_EQ(tools.viewer.channelMask, 0x1u);
+    EXPECT_FALSE(tools.viewer.region);                    // another attachment: the region was the albedo's
+    EXPECT_EQ(tools.data.frame, -1);                      // and so were the values
+    EXPECT_EQ(tools.viewer.colormap, Colormap::Viridis);  // settings stay
+    ASSERT_TRUE(followViewportView(tools, DebugView::Depth));
+    EXPECT_FALSE(tools.viewer.linearDepth);
+    EXPECT_EQ(tools.viewer.lastFitFrame, -1);
 }

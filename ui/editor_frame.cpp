@@ -45,6 +45,12 @@ void fitViewerRanges(EditorState& state, Renderer& renderer, long frame, bool re
                                  ui::RangeSkip::ZeroAlpha);
                 break;
             case ui::ViewerKind::Depth:
+                if (v.showStencil) {
+                    // Integers 0..255, every pixel (no background); one value alone widens to a step.
+                    r = ui::fitRange(renderer.readAttachment(Attachment::Stencil), 0x1, ui::RangeSkip::None);
+                    r.max = std::max(r.max, r.min + 1.0f);
+                    break;
+                }
                 r = ui::fitRange(renderer.readAttachment(Attachment::Depth), 0x1, ui::RangeSkip::FarDepth,
                                  v.linearDepth, v.cameraClipPlanes ? state.camera.nearPlane : v.nearPlane,
                                  v.cameraClipPlanes ? state.camera.farPlane : v.farPlane);
@@ -236,6 +242,9 @@ void renderScene(Editor& editor, FrameTimes& times) {
     editor.gpu.timer.begin("viewers");
     if (renderer.width() > 0 && renderer.height() > 0 && state.gbuffer.visible) drawViewers(editor, times);
     times.litDiffTexture = ui::serviceLitPin(state.litPin, renderer, editor.frame, editor.gpu.viewerTools);
+    times.viewportToolsTexture =
+        ui::serviceViewportTools(state, renderer, FrameInput{state.camera, editor.drawn, state.pipeline}, editor.frame,
+                                 times.rendered, editor.gpu.viewerTools);
     editor.gpu.timer.end();
     samplePixel(editor, times.rendered);
     finishIfMeasuring(times);

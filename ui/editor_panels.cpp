@@ -16,6 +16,7 @@
 #include "panels/panel_shortcuts.h"
 #include "panels/panel_stats.h"
 #include "panels/panel_viewport.h"
+#include "panels/viewer_tools.h"
 
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
@@ -136,7 +137,9 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     ui::drawPipelinePanel(state.pipeline,
                           ui::modeReasons([&](LightingMode m) { return editor.renderer->modeUnavailable(m); }),
                           &state.ab);
-    unsigned const viewportTexture = times.litDiffTexture ? times.litDiffTexture : renderer.texture(Attachment::Final);
+    unsigned const viewportTexture = times.litDiffTexture         ? times.litDiffTexture
+                                     : times.viewportToolsTexture ? times.viewportToolsTexture
+                                                                  : renderer.texture(Attachment::Final);
     int const k = std::clamp(state.accumulate.count, 0, int(state.lights.size()));
     ui::ViewportTeaching ab{state.ab,
                             state.accumulate,
@@ -145,10 +148,11 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
                             ui::sideB(state.ab, state.pipeline),
                             editor.gpu.ab.b.texture.id(),
                             editor.gpu.ab.diff.id()};
-    ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, viewportTexture,
+    ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, state.viewportTools, viewportTexture,
                           {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer),
                           &ab);
     ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()});
+    ui::drawViewerMagnifier(state.gbuffer, state.viewportTools);
     ui::drawPixelInspectorPanel(state.inspector);
     ui::drawStatsPanel(state.stats, editor.caps, int(state.lights.size()), &editor.render, editor.renderReason);
     ui::drawLogPanel(state.log);

@@ -1,22 +1,25 @@
 // Read-backs, requests and heat-map uploads of the viewer tools.
 #include "viewer_tools_service.h"
 
+#include "model/image_range.h"
 #include "model/viewer_tools.h"
 
 #include <epoxy/gl.h>
 
 namespace gbl::ui {
 
-// Scale: the threshold when one is set (so "over" reads as the top of the ramp), else the max.
-void uploadDiff(gl::Texture& tex, DiffStats const& diff, float threshold, bool changed) {
-    int const w = diff.diff.width, h = diff.diff.height;
+namespace {
+// Uploads the RGBA8 rows (top to bottom) that make() returns into tex, (re)making it at that
+// size; a new texture is always filled, an unchanged one is left as it is.
+template <class Make>
+void uploadRgba(gl::Texture& tex, int w, int h, bool changed, char const* label, Make make) {
     if (!tex || tex.width() != w || tex.height() != h) {
-        tex = gl::Texture::create2D(GL_RGBA8, w, h, "viewer diff");
+        tex = gl::Texture::create2D(GL_RGBA8, w, h, label);
         tex.setFilter(GL_NEAREST, GL_NEAREST);
         changed = true;
     }
     if (!changed) return;
-    std::vector<std::uint8_t> const rgba = diffHeatmap(diff, threshold > 0.0f ? threshold : diff.max);
+    std::vector<std::uint8_t> const rgba = make();
     // Rows top to bottom in memory; the views draw textures with v flipped (GL's bottom-up rows).
     glBindTexture(GL_TEXTURE_2D, tex.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
@@ -25,6 +28,27 @@ void uploadDiff(gl::Texture& tex, DiffStats const& diff, float threshold, bool c
                         rgba.data() + std::size_t(y) * std::size_t(w) * 4);
     glBindTexture(GL_TEXTURE_2D, 0);
 }
+}  // namespace
+
+// Scale: the threshold when one is set (so "over" reads as the top of the ramp), else the max.
+void uploadDiff(gl::Texture& tex, DiffStats const& diff, float threshold, bool changed) {
+    float const scale = threshold > 0.0f ? threshold : diff.max;
+    uploadRgba(tex, diff.diff.width, diff.diff.height, changed, "viewer diff",
+               [&] { return diffHeatmap(diff, scale); });
+}
+
+// Reads back what one viewer's tools need and services its requests. Returns whether the diff
+// changed (re-upload its heat map).
+bool serviceViewerData(ViewerState& v, ViewerData& d, Renderer& renderer, Camera const& camera, long frame,
+                       bool forceRead) {
+    if (!forceRead && !viewerDataDue(v, d, frame)) return updateViewerStats(v, d);
+    bool const ownPlanes = v.kind == ViewerKind::Depth && !v.cameraClipPlanes;
+    float const nearPlane = ownPlanes ? v.nearPlane : camera.nearPlane;
+    float const farPlane = ownPlanes ? v.farPlane : camera.farPlane;
+    setViewerValues(v, d, viewerValues(v, renderer.readAttachment(viewerAttachment(v)), nearPlane, farPlane), frame);
+    return v.showDiff && d.pinned;
+}
+}  // namespace
 
 void serviceViewerTools(EditorState& state, Renderer& renderer, long frame, std::array<unsigned, 5>& textures,
                         ViewerToolsGpu& gpu) {
@@ -34,20 +58,20 @@ void serviceViewerTools(EditorState& state, Renderer& renderer, long frame, std:
         ViewerState& v = panel.viewers[i];
         ViewerData& d = panel.data[i];
         if (!viewerNeedsData(panel, i)) continue;
-        bool diffChanged = false;
-        if (viewerDataDue(v, d, frame)) {
-            bool const ownPlanes = v.kind == ViewerKind::Depth && !v.cameraClipPlanes;
-            float const nearPlane = ownPlanes ? v.nearPlane : state.camera.nearPlane;
-            float const farPlane = ownPlanes ? v.farPlane : state.camera.farPlane;
-            setViewerValues(
-                v, d, viewerValues(v, renderer.readAttachment(viewerAttachment(v.kind)), nearPlane, farPlane), frame);
-            diffChanged = v.showDiff && d.pinned;
-        } else {
-            diffChanged = updateViewerStats(v, d);
+        bool const diffChanged = serviceViewerData(v, d, renderer, state.camera, frame, false);
+        if (v.showDiff && d.diff.comparable) {
+            uploadDiff(gpu.diff[i], d.diff, v.diffThreshold, diffChanged);
+            textures[i] = gpu.diff[i].id();
+        } else if (v.kind == ViewerKind::Depth && v.showStencil && d.values.width > 0) {
+            // No view pass reads the stencil: its picture is coloured on the CPU from the read-back.
+            ViewParams const params = viewerParams(v);
+            bool const changed = gpu.pictureParams[i] != params || gpu.pictureFrame[i] != d.frame;
+            uploadRgba(gpu.picture[i], d.values.width, d.values.height, changed, "viewer picture",
+                       [&] { return viewerPicture(v, d.values); });
+            gpu.pictureParams[i] = params;
+            gpu.pictureFrame[i] = d.frame;
+            textures[i] = gpu.picture[i].id();
         }
-        if (!v.showDiff || !d.diff.comparable) continue;
-        uploadDiff(gpu.diff[i], d.diff, v.diffThreshold, diffChanged);
-        textures[i] = gpu.diff[i].id();
     }
 }
 
@@ -55,9 +79,58 @@ unsigned serviceLitPin(LitPin& pin, Renderer& renderer, long frame, ViewerToolsG
     if (renderer.width() <= 0 || renderer.height() <= 0) return 0;
     bool const due = litPinDue(pin, frame);
     if (due) setLitValues(pin, renderer.readAttachment(Attachment::Lighting), frame);
+    // A new threshold or mode applies at once, from the values already read back.
+    bool const changed = due || updateLitDiff(pin);
     if (!pin.showDiff || !pin.diff.comparable) return 0;
-    uploadDiff(gpu.litDiff, pin.diff, pin.diffThreshold, due);
+    uploadDiff(gpu.litDiff, pin.diff, pin.diffThreshold, changed);
     return gpu.litDiff.id();
+}
+
+unsigned serviceViewportTools(EditorState& state, Renderer& renderer, FrameInput const& frameInput, long frame,
+                              bool rendered, ViewerToolsGpu& gpu) {
+    ViewportTools& tools = state.viewportTools;
+    if (!tools.open || renderer.width() <= 0 || renderer.height() <= 0) return 0;
+    if (!followViewportView(tools, state.pipeline.view)) return 0;
+    ViewerState& v = tools.viewer;
+    ViewerData& d = tools.data;
+    v.imageSize = glm::ivec2(renderer.width(), renderer.height());
+
+    // Fits as the G-buffer viewers' (editor_frame.cpp), from this viewer's own read-back.
+    bool const autoDue = v.autoFit && (v.lastFitFrame < 0 || (rendered && frame - v.lastFitFrame >= 60));
+    bool const fit = (v.fitRequested || autoDue) && viewerRemaps(v.kind);
+    v.fitRequested = false;
+    bool diffChanged = false;
+    bool const magnifier = state.gbuffer.showMagnifier && state.gbuffer.activeViewer == kViewportViewer;
+    if (fit || viewerToolsNeedData(v) || magnifier)
+        diffChanged = serviceViewerData(v, d, renderer, state.camera, frame, fit);
+    if (fit) {
+        ValueRange const r = fitRange(d.values, viewerStatsMask(v), viewerSkip(v.kind));
+        if (r.samples > 0) {
+            v.rangeMin = r.min;
+            v.rangeMax = r.max > r.min ? r.max : r.min + 1e-6f;
+            v.lastFitFrame = frame;
+            updateViewerStats(v, d);
+        }
+    }
+    if (v.showDiff && d.diff.comparable) {
+        uploadDiff(gpu.viewportDiff, d.diff, v.diffThreshold, diffChanged);
+        return gpu.viewportDiff.id();
+    }
+    ViewParams const params = viewerParams(v);
+    ViewTarget& target = gpu.viewport;
+    bool const stale = !target.texture || target.texture.width() != renderer.width() ||
+                       target.texture.height() != renderer.height() || gpu.viewportParams != params;
+    if (rendered || stale) {
+        FrameInput input = frameInput;
+        if (v.kind == ViewerKind::Depth && !v.cameraClipPlanes) {
+            input.camera.nearPlane = v.nearPlane;
+            input.camera.farPlane = v.farPlane;
+        }
+        renderer.drawView(params, input, target);
+        target.texture.setFilter(GL_NEAREST, GL_NEAREST);
+        gpu.viewportParams = params;
+    }
+    return target.texture.id();
 }
 
 }  // namespace gbl::ui

@@ -1,19 +1,28 @@
 // The editor loop's side of the viewer tools: reads back the attachments the open tools need,
-// services the viewers' fit/pin requests and uploads the diff heat maps.
+// services the viewers' fit/pin requests and uploads the diff heat maps and stencil pictures.
 #pragma once
 
 #include "gl/texture.h"
+#include "gpu/view_target.h"
 #include "model/editor_state.h"
 #include "renderer.h"
 
 #include <array>
+#include <optional>
 
 namespace gbl::ui {
 
-// One heat-map texture per viewer, made on first use.
+// Textures of the viewer tools, made on first use.
 struct ViewerToolsGpu {
     std::array<gl::Texture, 5> diff;
-    gl::Texture litDiff;  // the viewport's lit-frame diff
+    std::array<gl::Texture, 5> picture;                      // views made on the CPU (the depth viewer's stencil)
+    std::array<std::optional<ViewParams>, 5> pictureParams;  // what each picture was coloured with
+    std::array<long, 5> pictureFrame{-1, -1, -1, -1, -1};    // ... and from which read-back
+    gl::Texture litDiff;                                     // the viewport's lit-frame diff
+    // The viewport's attachment view with the viewer tools' range, colormap and overlays.
+    ViewTarget viewport;
+    std::optional<ViewParams> viewportParams;
+    gl::Texture viewportDiff;
 };
 
 // Uploads a diff's heat map into tex, (re)making it at the diff's size; a new texture is always
@@ -21,11 +30,18 @@ struct ViewerToolsGpu {
 void uploadDiff(gl::Texture& tex, DiffStats const& diff, float threshold, bool changed);
 
 // Call after the viewers' views are drawn; replaces textures[i] with the diff heat map where a
-// viewer shows its difference to the pinned image.
+// viewer shows its difference to the pinned image, and with the stencil picture where the depth
+// viewer shows the stencil.
 void serviceViewerTools(EditorState& state, Renderer& renderer, long frame, std::array<unsigned, 5>& textures,
                         ViewerToolsGpu& gpu);
 // The same for the viewport's lit frame: returns the heat map to show instead of the frame while
 // the lit diff is on, else 0.
 unsigned serviceLitPin(LitPin& pin, Renderer& renderer, long frame, ViewerToolsGpu& gpu);
+// The viewport's viewer tools while it shows a G-buffer attachment with its Tools on: draws the
+// view with the tools' settings, reads back and fits as the G-buffer viewers do. Returns the
+// texture to show instead of the renderer's final image, else 0. `frameInput` is the frame
+// last rendered; `rendered`: a new frame was rendered this iteration.
+unsigned serviceViewportTools(EditorState& state, Renderer& renderer, FrameInput const& frameInput, long frame,
+                              bool rendered, ViewerToolsGpu& gpu);
 
 }  // namespace gbl::ui

@@ -58,6 +58,7 @@ struct PixelSample {
     glm::vec4 normal{0.0f};
     glm::vec4 albedoSpec{0.0f};
     float depth = 1.0f;                     // window-space depth 0..1
+    unsigned stencil = 0;                   // the G-buffer's stencil bits 0..255
     glm::vec3 reconstructedPosition{0.0f};  // world position rebuilt from depth and the camera
     glm::vec4 lighting{0.0f};
 };

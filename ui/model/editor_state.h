@@ -52,9 +52,10 @@ struct EditorState {
     LayoutState layout;
     LightsPanelState lightsPanel;
     ViewportState viewport;
-    LitPin litPin;               // the viewport's pinned lit frame and its diff
-    AccumulateState accumulate;  // the light-by-light scrubber
-    AbState ab;                  // the viewport's A/B split and diff
+    LitPin litPin;                // the viewport's pinned lit frame and its diff
+    AccumulateState accumulate;   // the light-by-light scrubber
+    AbState ab;                   // the viewport's A/B split and diff
+    ViewportTools viewportTools;  // the viewer tools in the viewport while it shows an attachment
     GBufferPanelState gbuffer;
     PixelInspectorState inspector;
     StatsState stats;

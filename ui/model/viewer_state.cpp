@@ -19,6 +19,59 @@ std::array<ViewerState, 5> GBufferPanelState::defaultViewers() {
     return v;
 }
 
+ViewerState ViewportTools::defaultViewer() {
+    ViewerState v;
+    v.autoFit = true;  // the viewport switches between attachments of very different ranges
+    return v;
+}
+
+std::optional<ViewerKind> viewerKindOfView(DebugView view) {
+    switch (view) {
+        case DebugView::Position:
+            return ViewerKind::Position;
+        case DebugView::Normal:
+            return ViewerKind::Normal;
+        case DebugView::Albedo:
+            return ViewerKind::Albedo;
+        case DebugView::Specular:
+            return ViewerKind::Specular;
+        case DebugView::Depth:
+        case DebugView::DepthLinear:
+            return ViewerKind::Depth;
+        default:
+            return std::nullopt;
+    }
+}
+
+bool followViewportView(ViewportTools& tools, DebugView view) {
+    std::optional<ViewerKind> const kind = viewerKindOfView(view);
+    if (!kind) return false;
+    ViewerState& v = tools.viewer;
+    if (v.kind != *kind) {
+        // Another attachment: its own channels and a fresh fit, not the last one's range.
+        v.kind = *kind;
+        v.channelMask = *kind == ViewerKind::Specular || *kind == ViewerKind::Depth ? 0x1u : 0x7u;
+        v.lastFitFrame = -1;
+        v.region.reset();
+        v.picked.reset();
+        v.showDiff = false;
+        tools.data = ViewerData{};
+    }
+    if (*kind == ViewerKind::Depth) v.linearDepth = view == DebugView::DepthLinear;
+    v.showStencil = false;  // the viewport's depth views are depths; the stencil is in the G-buffer window
+    return true;
+}
+
+void setShowStencil(ViewerState& viewer, bool on) {
+    if (viewer.showStencil == on) return;
+    viewer.showStencil = on;
+    glm::vec2 const shown(viewer.rangeMin, viewer.rangeMax);
+    viewer.rangeMin = viewer.otherRange.x;
+    viewer.rangeMax = viewer.otherRange.y;
+    viewer.otherRange = shown;
+    viewer.lastFitFrame = -1;  // auto-fit refits the new values at once
+}
+
 DebugView viewerDebugView(ViewerState const& viewer) {
     switch (viewer.kind) {
         case ViewerKind::Position:
@@ -62,7 +115,17 @@ Attachment viewerAttachment(ViewerKind kind) {
     return Attachment::Position;
 }
 
+Attachment viewerAttachment(ViewerState const& viewer) {
+    return viewer.kind == ViewerKind::Depth && viewer.showStencil ? Attachment::Stencil : viewerAttachment(viewer.kind);
+}
+
 FloatImage viewerValues(ViewerState const& viewer, FloatImage const& attachment, float nearPlane, float farPlane) {
+    if (viewer.kind == ViewerKind::Depth && viewer.showStencil && attachment.channels == 1) {
+        FloatImage out{attachment.width, attachment.height, 4, {}};
+        out.pixels.reserve(attachment.pixels.size() * 4);
+        for (float const s : attachment.pixels) out.pixels.insert(out.pixels.end(), {s, s, 0.0f, 1.0f});
+        return out;
+    }
     if (viewer.kind != ViewerKind::Depth || attachment.channels != 1) return attachment;
     FloatImage out{attachment.width, attachment.height, 4, {}};
     out.pixels.reserve(attachment.pixels.size() * 4);

@@ -33,8 +33,12 @@ struct ViewerState {
     glm::vec2 center{0.5f};   // image point (0..1, top-left origin) at the cell centre
     glm::ivec2 imageSize{0};  // texel size of the image last shown
 
-    // --- viewer tools (issue 15); not saved in sessions ----------------------------------------
+    // --- viewer tools (issue 15); colormap, overlays, histogram and stencil are saved in sessions
     bool showHistogram = false;
+    // Depth viewer: show the stencil bits (0..255, read back on the CPU) instead of the depth.
+    // The range of the view not shown waits in otherRange, so switching keeps both.
+    bool showStencil = false;
+    glm::vec2 otherRange{0.0f, 255.0f};
     Colormap colormap = Colormap::Grey;         // when one channel is shown
     unsigned overlays = 0;                      // kOverlay* bits (core/view_params.h)
     std::optional<glm::ivec2> picked;           // magnifier centre: right-click, arrow keys, Ctrl+G
@@ -96,15 +100,42 @@ struct GBufferPanelState {
     static std::array<ViewerState, 5> defaultViewers();
 };
 
+// The viewer tools in the viewport, while it shows a G-buffer attachment: one ViewerState whose
+// kind follows the viewport's view, and its data. Drawn into its own view target by the loop.
+// GBufferPanelState::activeViewer of the viewport's tools (the magnifier shows their texel).
+inline constexpr int kViewportViewer = 5;
+
+struct ViewportTools {
+    bool open = false;  // the viewport's "Tools" toggle
+    ViewerState viewer = defaultViewer();
+    ViewerData data;
+    // Magnifier and region input of the viewport image (the G-buffer viewers keep theirs).
+    std::optional<glm::ivec2> hoverTexel;
+    bool pickedThisFrame = false;  // Shift+right-click picked a texel: the magnifier switches to it
+
+    static ViewerState defaultViewer();
+};
+
+// The viewer kind a viewport view shows, or nothing (final, lighting, heat map, tile lights).
+std::optional<ViewerKind> viewerKindOfView(DebugView view);
+// Makes the viewport's viewer follow the view: kind and linear depth. False when the view is no
+// G-buffer attachment (the tools then stay hidden).
+bool followViewportView(ViewportTools& tools, DebugView view);
+// Switches the depth viewer between depth and stencil, swapping in the other view's range.
+void setShowStencil(ViewerState& viewer, bool on);
+
 DebugView viewerDebugView(ViewerState const& viewer);
 // The view-pass parameters a viewer asks for (the loop passes them to Renderer::drawView).
 ViewParams viewerParams(ViewerState const& viewer);
 
 // The attachment a viewer shows and how its values are taken from it, for the tools.
 Attachment viewerAttachment(ViewerKind kind);
+// ... with the depth viewer's stencil switch: Attachment::Stencil while it shows the stencil.
+Attachment viewerAttachment(ViewerState const& viewer);
 // The viewer's values as 4 channels in data units: position/normal/albedo as stored (alpha = drawn),
 // specular in channel 3, depth as (shown depth: linear when the viewer linearises, raw window depth,
-// 0, 1 where geometry was drawn). Statistics use viewerStatsMask and RangeSkip::ZeroAlpha
+// 0, 1 where geometry was drawn), the stencil (depth viewer with showStencil) as (value, value,
+// 0, 1) with every pixel counted. Statistics use viewerStatsMask and RangeSkip::ZeroAlpha
 // (albedo and specular: RangeSkip::None).
 FloatImage viewerValues(ViewerState const& viewer, FloatImage const& attachment, float nearPlane, float farPlane);
 unsigned viewerStatsMask(ViewerState const& viewer);

@@ -4,6 +4,7 @@
 #include "model/colormap.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -14,12 +15,19 @@ namespace gbl::ui {
 bool viewerNeedsData(GBufferPanelState const& panel, std::size_t i) {
     ViewerState const& v = panel.viewers[i];
     bool const magnifier = panel.showMagnifier && panel.activeViewer == int(i);
+    return viewerToolsNeedData(v) || magnifier;
+}
+
+bool viewerToolsNeedData(ViewerState const& v) {
+    // The stencil has no view pass: its picture is made from the values.
+    bool const stencil = v.kind == ViewerKind::Depth && v.showStencil;
     return v.showHistogram || v.overlays != 0 || v.region || v.showDiff || v.percentileFitRequested ||
-           v.regionFitRequested || v.pinRequested || magnifier;
+           v.regionFitRequested || v.pinRequested || stencil;
 }
 
 unsigned viewerValuesKey(ViewerState const& viewer) {
-    return unsigned(viewer.kind) | (viewer.linearDepth ? 8u : 0u) | (viewer.cameraClipPlanes ? 16u : 0u);
+    return unsigned(viewer.kind) | (viewer.linearDepth ? 8u : 0u) | (viewer.cameraClipPlanes ? 16u : 0u) |
+           (viewer.kind == ViewerKind::Depth && viewer.showStencil ? 32u : 0u);
 }
 
 bool viewerDataDue(ViewerState const& viewer, ViewerData const& data, long frame) {
@@ -106,6 +114,57 @@ std::vector<std::uint8_t> diffHeatmap(DiffStats const& diff, float scale) {
     return rgba;
 }
 
+glm::vec3 shownTexelColour(ViewerState const& v, FloatImage const& values, int x, int y) {
+    auto remap = [&](float value) {
+        if (!viewerRemaps(v.kind)) return value;
+        return (value - v.rangeMin) / std::max(v.rangeMax - v.rangeMin, 1e-20f);
+    };
+    // Normals are shown as directions (biased or absolute), as the view pass does.
+    auto shown = [&](float value) {
+        if (v.kind != ViewerKind::Normal) return remap(value);
+        return v.normalDisplay == NormalDisplay::Absolute ? std::abs(value) : value * 0.5f + 0.5f;
+    };
+    unsigned const mask = viewerStatsMask(v);
+    glm::vec3 c{0.0f};
+    bool nan = false, inf = false, negative = false, below = false, above = false;
+    for (int ch = 0; ch < 4; ++ch) {
+        if (!(mask & (1u << ch))) continue;
+        float const raw = values.at(x, y, ch);
+        nan = nan || std::isnan(raw);
+        inf = inf || std::isinf(raw);
+        if (std::isnan(raw)) continue;
+        negative = negative || raw < 0.0f;
+        float const t = shown(raw);
+        below = below || t < 0.0f;
+        above = above || t > 1.0f;
+    }
+    if (std::popcount(mask) == 1) {
+        c = colormap(v.colormap, shown(values.at(x, y, std::countr_zero(mask))));
+    } else {
+        for (int ch = 0; ch < 3; ++ch)
+            if (mask & (1u << ch)) c[ch] = std::clamp(shown(values.at(x, y, ch)), 0.0f, 1.0f);
+    }
+    // Overlays win, in the shader's order (shaders/view_tools.glsl, viewTools).
+    if ((v.overlays & kOverlayNaN) && nan) return {1.0f, 0.0f, 1.0f};
+    if ((v.overlays & kOverlayInf) && inf) return {0.0f, 1.0f, 0.0f};
+    if ((v.overlays & kOverlayNegative) && negative) return {0.0f, 1.0f, 1.0f};
+    if ((v.overlays & kOverlayClip) && below && viewerRemaps(v.kind)) return {0.0f, 0.0f, 1.0f};
+    if ((v.overlays & kOverlayClip) && above && viewerRemaps(v.kind)) return {1.0f, 0.0f, 0.0f};
+    return glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f));
+}
+
+std::vector<std::uint8_t> viewerPicture(ViewerState const& viewer, FloatImage const& values) {
+    std::vector<std::uint8_t> rgba;
+    rgba.reserve(std::size_t(values.width) * std::size_t(values.height) * 4);
+    auto byte = [](float v) { return std::uint8_t(std::lround(v * 255.0f)); };
+    for (int y = 0; y < values.height; ++y)
+        for (int x = 0; x < values.width; ++x) {
+            glm::vec3 const c = shownTexelColour(viewer, values, x, y);
+            rgba.insert(rgba.end(), {byte(c.r), byte(c.g), byte(c.b), 255});
+        }
+    return rgba;
+}
+
 void syncViewers(GBufferPanelState& panel, std::size_t from) {
     for (auto& v : panel.viewers) {
         v.zoom = panel.viewers[from].zoom;
@@ -135,6 +194,15 @@ void setLitValues(LitPin& pin, FloatImage lighting, long frame) {
     pin.stats = imageStats(pin.values, rgb, {}, RangeSkip::None);
     pin.diff = pin.pinned && pin.showDiff ? diffImages(pin.values, *pin.pinned, rgb, pin.diffThreshold, pin.diffMode)
                                           : DiffStats{};
+    pin.diffFor = std::pair(pin.diffThreshold, pin.diffMode);
+}
+
+bool updateLitDiff(LitPin& pin) {
+    if (!pin.pinned || !pin.showDiff || pin.frame < 0) return false;
+    if (pin.diffFor == std::pair(pin.diffThreshold, pin.diffMode)) return false;
+    pin.diff = diffImages(pin.values, *pin.pinned, 0x7, pin.diffThreshold, pin.diffMode);
+    pin.diffFor = std::pair(pin.diffThreshold, pin.diffMode);
+    return true;
 }
 
 std::string storedFloatText(float value) {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gbl::ui {
@@ -17,6 +18,8 @@ inline constexpr long kViewerDataInterval = 30;
 
 // Whether viewer i has a tool open that needs its values on the CPU, or a request pending.
 bool viewerNeedsData(GBufferPanelState const& panel, std::size_t i);
+// The same for a viewer outside the G-buffer window (the viewport's), magnifier aside.
+bool viewerToolsNeedData(ViewerState const& viewer);
 // Whether the values are missing, stale, or were taken for another kind or depth mode.
 bool viewerDataDue(ViewerState const& viewer, ViewerData const& data, long frame);
 // What identifies the values of a viewer (kind, depth linearisation, clip planes in use).
@@ -27,6 +30,14 @@ void setViewerValues(ViewerState& viewer, ViewerData& data, FloatImage values, l
 // Recomputes statistics, histogram, clipping and diff when their inputs changed; services the
 // fit requests that need no new read-back. Returns true when the diff changed (re-upload it).
 bool updateViewerStats(ViewerState& viewer, ViewerData& data);
+
+// The colour a texel is shown in, from the viewer's CPU values as the view pass would draw it:
+// range remap, channel isolation, colormap for one channel, then the overlays (NaN magenta, Inf
+// green, negative cyan, clipping blue/red). Linear 0..1.
+glm::vec3 shownTexelColour(ViewerState const& viewer, FloatImage const& values, int x, int y);
+// RGBA8 rows top to bottom of the whole image in those colours: how the stencil is drawn (it has
+// no view pass; see docs/viewers.md).
+std::vector<std::uint8_t> viewerPicture(ViewerState const& viewer, FloatImage const& values);
 
 // A stored float as the magnifier and the pixel inspector show it: its value to 9 significant
 // digits (enough to round-trip) and its IEEE-754 bits, e.g. "0.5 (bits 0x3f000000)".
@@ -45,6 +56,8 @@ struct LitPin {
     long pinnedFrame = -1;
     ImageStats stats;  // of the current lit frame, RGB
     DiffStats diff;    // against the pinned frame while showDiff
+    // Threshold and mode the diff was computed with; a change recomputes it at once.
+    std::optional<std::pair<float, DiffMode>> diffFor;
 };
 
 // Whether the lit frame must be read back this frame: a pin waits for it, a diff just turned on
@@ -52,6 +65,10 @@ struct LitPin {
 bool litPinDue(LitPin const& pin, long frame);
 // Takes a fresh read-back of the lit frame: pins it when asked, recomputes statistics and diff.
 void setLitValues(LitPin& pin, FloatImage lighting, long frame);
+
+// Recomputes the lit diff from the values already read back when the threshold or the mode
+// changed since (no new read-back). Returns true when it did (the heat map must be re-uploaded).
+bool updateLitDiff(LitPin& pin);
 
 // RGBA8 rows top to bottom: the diff through turbo from 0 to `scale`, NaN/Inf pixels magenta.
 std::vector<std::uint8_t> diffHeatmap(DiffStats const& diff, float scale);

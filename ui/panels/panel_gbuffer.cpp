@@ -16,84 +16,6 @@ namespace gbl::ui {
 
 namespace {
 
-constexpr char const* kChannelLabels[4] = {"R", "G", "B", "A"};
-constexpr ImU32 kChannelColours[4] = {IM_COL32(200, 60, 60, 255), IM_COL32(60, 170, 60, 255),
-                                      IM_COL32(70, 100, 220, 255), IM_COL32(150, 150, 150, 255)};
-
-// Four small toggles; a single channel alone is shown as grey by the view pass.
-void channelToggles(ViewerState& v) {
-    for (int c = 0; c < 4; ++c) {
-        if (c > 0) ImGui::SameLine(0, 2);
-        bool const on = v.channelMask & (1u << c);
-        ImGui::PushStyleColor(ImGuiCol_Button, on ? kChannelColours[c] : IM_COL32(50, 50, 55, 255));
-        if (ImGui::SmallButton(kChannelLabels[c])) {
-            // Ctrl+click adds or removes a channel; a plain click isolates it (or restores RGB).
-            if (ImGui::GetIO().KeyCtrl)
-                v.channelMask ^= 1u << c;
-            else
-                v.channelMask = (v.channelMask == (1u << c)) ? 0x7u : (1u << c);
-        }
-        ImGui::PopStyleColor();
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("click: show %s alone (grey); Ctrl+click: add/remove", kChannelLabels[c]);
-    }
-}
-
-void viewerControls(ViewerState& v) {
-    // Cells are narrow at 1280x720: what does not fit beside the channel toggles or the range
-    // goes on a row of its own instead of being cut off at the cell's edge.
-    float const font = ImGui::GetFontSize();
-    float const cellWidth = ImGui::GetContentRegionAvail().x;
-    channelToggles(v);
-    if (v.kind == ViewerKind::Normal) {
-        if (cellWidth >= font * 12.0f) ImGui::SameLine();
-        int mode = int(v.normalDisplay);
-        ImGui::SetNextItemWidth(-1);
-        char const* items[] = {"biased", "|n|"};
-        if (ImGui::Combo("##normals", &mode, items, 2)) v.normalDisplay = NormalDisplay(mode);
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("biased: n*0.5+0.5 as colour; |n|: absolute values");
-        return;
-    }
-    if (v.kind == ViewerKind::Depth) {
-        if (cellWidth >= font * 12.0f) ImGui::SameLine();
-        ImGui::Checkbox("linear", &v.linearDepth);
-    }
-    // Fit, auto and (depth) the clip-plane button need about this much beside the range field.
-    float const buttons = font * (v.kind == ViewerKind::Depth && v.linearDepth ? 7.0f : 5.5f);
-    bool const oneRow = cellWidth >= buttons + font * 6.0f;
-    ImGui::SetNextItemWidth(oneRow ? -buttons : -1.0f);
-    float const speed = std::max((v.rangeMax - v.rangeMin) * 0.005f, 1e-5f);
-    ImGui::DragFloatRange2("##range", &v.rangeMin, &v.rangeMax, speed, 0.0f, 0.0f, "%.3g", "%.3g");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("shown value = (v - min) / (max - min)");
-    if (oneRow) ImGui::SameLine(0, 2);
-    if (ImGui::SmallButton("Fit")) v.fitRequested = true;
-    ImGui::SameLine(0, 2);
-    ImGui::Checkbox("##auto", &v.autoFit);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("auto: refit the range to the data about once a second");
-    if (v.kind == ViewerKind::Depth && v.linearDepth) {
-        ImGui::SameLine(0, 2);
-        if (ImGui::SmallButton("...")) ImGui::OpenPopup("clip-planes");
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("near and far planes used to linearise depth");
-        if (ImGui::BeginPopup("clip-planes")) {
-            ImGui::Checkbox("camera's near/far", &v.cameraClipPlanes);
-            ImGui::BeginDisabled(v.cameraClipPlanes);
-            ImGui::DragFloat("near", &v.nearPlane, 0.01f, 0.001f, v.farPlane, "%.3f", ImGuiSliderFlags_AlwaysClamp);
-            ImGui::DragFloat("far", &v.farPlane, 0.5f, v.nearPlane + 0.001f, 1e6f, "%.1f",
-                             ImGuiSliderFlags_AlwaysClamp);
-            ImGui::EndDisabled();
-            ImGui::EndPopup();
-        }
-    }
-}
-
-// Outline of a texel rectangle on the drawn image.
-void outlineTexels(ImDrawList* dl, ImVec2 p0, ImVec2 full, glm::ivec2 imageSize, glm::ivec2 a, glm::ivec2 b,
-                   ImU32 colour) {
-    float const tw = full.x / float(imageSize.x), th = full.y / float(imageSize.y);
-    dl->AddRect(ImVec2(p0.x + float(a.x) * tw, p0.y + float(a.y) * th),
-                ImVec2(p0.x + float(b.x) * tw, p0.y + float(b.y) * th), colour, 0.0f, 0, 1.5f);
-}
-
 // Draws the image with zoom and pan inside the remaining cell area; returns the hovered texel.
 // Shift+drag draws the statistics region, right-click picks the magnifier's texel; `marker` is a
 // texel hovered in another viewer (Sync), outlined here.
@@ -207,7 +129,8 @@ void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& t
                 ViewerState& v = state.viewers[i];
                 ImGui::TableNextColumn();
                 ImGui::PushID(int(i));
-                ImGui::TextUnformatted(kViewerNames[i].data());
+                ImGui::TextUnformatted(v.kind == ViewerKind::Depth && v.showStencil ? "stencil"
+                                                                                    : kViewerNames[i].data());
                 if (v.zoom > 1.0f) {
                     ImGui::SameLine();
                     ImGui::TextDisabled("x%.1f", v.zoom);
@@ -217,7 +140,7 @@ void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& t
                     ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.2f, 1.0f), "DIFF");
                 }
                 viewerHeaderCounts(v, state.data[i]);
-                viewerControls(v);
+                viewerControls(v, true);
                 viewerToolsRow(v, state.data[i]);
                 viewerHistogram(v, state.data[i]);
                 viewerRegionAndDiff(v, state.data[i]);
@@ -240,7 +163,6 @@ void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& t
         viewerKeys(state);
     }
     ImGui::End();
-    drawViewerMagnifier(state);
 }
 
 }  // namespace gbl::ui

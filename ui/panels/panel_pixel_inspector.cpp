@@ -16,6 +16,16 @@
 namespace gbl::ui {
 
 namespace {
+// The widest texts "%.4g" writes for a float: sign, 4 digits, point and a two-digit exponent
+// ("-1.234e-05"), or the same length in fixed notation ("-0.0001234").
+constexpr char const* kWidestValues[] = {"-8.888e-08", "-0.0008888", "-8.888e+38"};
+
+float valueColumnWidth() {
+    float w = 0.0f;
+    for (char const* text : kWidestValues) w = std::max(w, ImGui::CalcTextSize(text).x);
+    return w;
+}
+
 void row(char const* label, glm::vec4 v, int n = 4) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
@@ -41,11 +51,18 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
         if (state.sample) {
             PixelSample const& s = *state.sample;
             if (!s.covered) ImGui::TextDisabled("background: no geometry at this pixel");
-            ImGuiTableFlags const flags =
-                ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
-            if (ImGui::BeginTable("values", 5, flags)) {
-                ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFontSize() * 6.5f);
-                for (char const* c : {"x / r", "y / g", "z / b", "w / a"}) ImGui::TableSetupColumn(c);
+            // Columns as wide as the widest value the font draws, so no digit is ever cut; a narrow
+            // window scrolls the table sideways instead.
+            ImGuiTableFlags const flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                                          ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX;
+            int const rows = s.covered ? 7 : 6;  // header, values, and the rebuilt position if drawn
+            float const rowHeight = ImGui::GetTextLineHeight() + ImGui::GetStyle().CellPadding.y * 2.0f;
+            ImVec2 const size(0.0f, float(rows) * rowHeight + ImGui::GetStyle().ScrollbarSize + 2.0f);
+            if (ImGui::BeginTable("values", 5, flags, size)) {
+                ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("albedo,spec").x);
+                float const w = valueColumnWidth();
+                for (char const* c : {"x / r", "y / g", "z / b", "w / a"})
+                    ImGui::TableSetupColumn(c, ImGuiTableColumnFlags_WidthFixed, w);
                 ImGui::TableHeadersRow();
                 row("position", s.position);
                 // Background depth is the far plane: a position rebuilt from it means nothing.
@@ -57,7 +74,8 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
                 ImGui::EndTable();
             }
             // The depth as stored (DEPTH32F) with its raw bits, as the magnifier shows them.
-            ImGui::Text("depth stored %s", storedFloatText(s.depth).c_str());
+            ImGui::TextWrapped("depth stored %s", storedFloatText(s.depth).c_str());
+            ImGui::Text("stencil %u", s.stencil);
             if (s.covered) {
                 float const err = glm::length(glm::vec3(s.position) - s.reconstructedPosition);
                 ImGui::Text("rebuilt from depth is %.3g units off", err);

@@ -5,6 +5,7 @@
 #include "model/colormap.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
+#include "panels/viewer_tools.h"
 
 #include <imgui.h>
 
@@ -48,6 +49,15 @@ void labelHeatLegend(ImVec2 imageMin, ImVec2 imageMax, glm::ivec2 textureSize, D
     dl->AddText(p, IM_COL32(235, 235, 235, 255), text);
 }
 
+// The full text when the rest of the row holds it, else the compact one with the full text as
+// its tooltip: the row keeps one line, so showing statistics never resizes the frame (which
+// would make the pinned frame incomparable).
+void fittedText(char const* full, char const* compact) {
+    bool const fits = ImGui::CalcTextSize(full).x <= ImGui::GetContentRegionAvail().x;
+    ImGui::TextUnformatted(fits ? full : compact);
+    if (!fits && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", full);
+}
+
 // "Pin lit" holds the lit HDR frame; "Diff" shows |now - pinned| over RGB as the viewers' heat
 // map, with the statistics of both on the row (a row of its own: the toolbar above is full).
 void litPinRow(LitPin& pin) {
@@ -61,14 +71,37 @@ void litPinRow(LitPin& pin) {
     ImGui::Checkbox("Diff", &pin.showDiff);
     ImGui::SameLine();
     ChannelStats const& s = pin.stats.shown;
-    if (!pin.showDiff || !pin.diff.comparable) {
-        ImGui::Text("pinned frame %ld; lit RGB %.4g .. %.4g, mean %.4g, NaN px %ld", pin.pinnedFrame, s.min, s.max,
-                    s.mean, pin.stats.nanPixels);
+    if (pin.showDiff && !pin.diff.comparable && pin.frame >= 0) {
+        // The viewport (so the frame) changed size since the pin: no pixel-to-pixel comparison.
+        ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "the frame's size changed since the pin; pin again");
         return;
     }
+    if (!pin.showDiff || !pin.diff.comparable) {
+        char full[160], compact[96];
+        std::snprintf(full, sizeof full, "pinned frame %ld; lit RGB %.4g .. %.4g, mean %.4g, NaN px %ld",
+                      pin.pinnedFrame, s.min, s.max, s.mean, pin.stats.nanPixels);
+        std::snprintf(compact, sizeof compact, "pinned %ld; %.3g..%.3g NaN %ld", pin.pinnedFrame, s.min, s.max,
+                      pin.stats.nanPixels);
+        fittedText(full, compact);
+        return;
+    }
+    // Threshold and relative mode apply at once (the loop recomputes from the last read-back).
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5.0f);
+    ImGui::DragFloat("##lit-threshold", &pin.diffThreshold, 0.001f, 0.0f, 1e6f, "thr %.4g",
+                     ImGuiSliderFlags_AlwaysClamp);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("pixels whose difference is above this are counted; 0 = any change");
+    ImGui::SameLine(0, 2);
+    bool rel = pin.diffMode == DiffMode::Relative;
+    if (ImGui::Checkbox("rel", &rel)) pin.diffMode = rel ? DiffMode::Relative : DiffMode::Absolute;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("relative: |a - b| / |pinned|");
+    ImGui::SameLine();
     DiffStats const& d = pin.diff;
-    ImGui::Text("vs frame %ld: max %.4g at %d,%d  mean %.4g  changed %ld of %ld px  NaN px %ld", pin.pinnedFrame, d.max,
-                d.maxAt.x, d.maxAt.y, d.mean, d.overThreshold, d.pixels, d.nanPixels);
+    char full[192], compact[96];
+    std::snprintf(full, sizeof full, "vs frame %ld: max %.4g at %d,%d  mean %.4g  over %ld of %ld px  NaN px %ld",
+                  pin.pinnedFrame, d.max, d.maxAt.x, d.maxAt.y, d.mean, d.overThreshold, d.pixels, d.nanPixels);
+    std::snprintf(compact, sizeof compact, "max %.3g mean %.3g over %ld NaN %ld", d.max, d.mean, d.overThreshold,
+                  d.nanPixels);
+    fittedText(full, compact);
 }
 
 // A G-buffer view in forward mode would show the cleared (black) G-buffer: say why instead.
@@ -229,8 +262,9 @@ void teachingRow(ViewportTeaching& t, PipelineSettings const& settings) {
 
 }  // namespace
 
-void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin& litPin, unsigned texture,
-                       glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight, ViewportTeaching* ab) {
+void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin& litPin, ViewportTools& tools,
+                       unsigned texture, glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight,
+                       ViewportTeaching* ab) {
     state.hovered = false;
     state.hoverPixel.reset();
     state.clickPixel.reset();
@@ -271,6 +305,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
             "L: lock the pixel inspector    F1: every shortcut");
     litPinRow(litPin);
     if (ab) teachingRow(*ab, settings);
+    viewportToolsRow(tools, settings.view);
 
     ImVec2 const avail = ImGui::GetContentRegionAvail();
     ImVec2 const scale = ImGui::GetIO().DisplayFramebufferScale;
@@ -317,6 +352,8 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         dl->AddCircle(c, 11.0f, IM_COL32(255, 230, 80, 255), 24, 1.5f);
         dl->PopClipRect();
     }
+    // The tools' Shift+drag and Shift+right-click are theirs, not the camera's.
+    bool const toolsMouse = viewportToolsImage(tools, origin, avail, textureSize);
     if (settings.view == DebugView::Heatmap || settings.view == DebugView::TileLights)
         labelHeatLegend(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), textureSize, settings.view);
 
@@ -329,7 +366,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
             state.hoverPixel = glm::ivec2(int(u * float(textureSize.x)), int(v * float(textureSize.y)));
         state.wheel = io.MouseWheel;
     }
-    if (ImGui::IsItemActive()) {
+    if (ImGui::IsItemActive() && !toolsMouse) {
         glm::vec2 const delta(io.MouseDelta.x, io.MouseDelta.y);
         if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) state.orbitDrag = delta;
         if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) state.lookDrag = delta;

@@ -27,8 +27,10 @@ struct ViewportTeaching {
     unsigned textureB = 0;
     unsigned diffTexture = 0;
 };
-void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin& litPin, unsigned texture,
-                       glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight = std::nullopt,
+// tools: the viewer tools while the view is a G-buffer attachment; the caller passes their view
+// (serviceViewportTools) as texture while they are open.
+void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin& litPin, ViewportTools& tools,
+                       unsigned texture, glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight = std::nullopt,
                        ViewportTeaching* ab = nullptr);
 
 }  // namespace gbl::ui

@@ -53,8 +53,11 @@ void viewerHistogram(ViewerState& v, ViewerData const& d) {
     if (!v.showHistogram) return;
     bool const remaps = viewerRemaps(v.kind);
     if (remaps) {
+        float const right = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;
         if (ImGui::SmallButton("Fit min/max")) v.fitRequested = true;
-        ImGui::SameLine(0, 2);
+        // Beside it when the cell has room, else below: never cut at the cell's edge.
+        float const w = ImGui::CalcTextSize("Fit 1-99 %").x + ImGui::GetStyle().FramePadding.x * 2.0f;
+        if (ImGui::GetItemRectMax().x + 2.0f + w <= right) ImGui::SameLine(0, 2);
         if (ImGui::SmallButton("Fit 1-99 %")) v.percentileFitRequested = true;
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(

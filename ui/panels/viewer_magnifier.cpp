@@ -14,32 +14,18 @@ namespace {
 
 constexpr int kRadius = 4;  // 9x9 texels
 
-// The texel's colour as the viewer shows it, from the CPU values (remap, channels, colormap).
+// The texel's colour as the viewer shows it, from the CPU values (the model's shownTexelColour).
 ImU32 shownColour(ViewerState const& v, ViewerData const& d, int x, int y) {
-    auto remap = [&](float value) {
-        if (!viewerRemaps(v.kind)) return value;
-        return (value - v.rangeMin) / std::max(v.rangeMax - v.rangeMin, 1e-20f);
-    };
-    unsigned const mask = viewerStatsMask(v);
-    glm::vec3 c{0.0f};
-    int const shown = __builtin_popcount(mask);
-    if (shown == 1) {
-        int const ch = __builtin_ctz(mask);
-        float const value = d.values.at(x, y, ch);
-        c = colormap(v.colormap, remap(v.kind == ViewerKind::Normal ? value * 0.5f + 0.5f : value));
-    } else {
-        for (int ch = 0; ch < 3; ++ch) {
-            if (!(mask & (1u << ch))) continue;
-            float const value = d.values.at(x, y, ch);
-            c[ch] = std::clamp(remap(v.kind == ViewerKind::Normal ? value * 0.5f + 0.5f : value), 0.0f, 1.0f);
-        }
-    }
-    c = glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f));
+    glm::vec3 const c = shownTexelColour(v, d.values, x, y);
     return IM_COL32(int(c.r * 255.0f + 0.5f), int(c.g * 255.0f + 0.5f), int(c.b * 255.0f + 0.5f), 255);
 }
 
 void texelValues(ViewerState const& v, ViewerData const& d, glm::ivec2 t) {
     ImGui::Text("texel %d, %d", t.x, t.y);
+    if (v.kind == ViewerKind::Depth && v.showStencil) {
+        ImGui::Text("stencil %d", int(d.values.at(t.x, t.y, 0)));
+        return;
+    }
     if (v.kind == ViewerKind::Depth) {
         ImGui::Text("%s %.6g", v.linearDepth ? "eye depth" : "depth", d.values.at(t.x, t.y, 0));
         ImGui::Text("stored %s", storedFloatText(d.values.at(t.x, t.y, 1)).c_str());
@@ -71,20 +57,33 @@ void goToPixelPopup(GBufferPanelState& panel, ViewerState& v) {
 
 }  // namespace
 
-void drawViewerMagnifier(GBufferPanelState& panel) {
-    ViewerState& v = panel.viewers[std::size_t(std::clamp(panel.activeViewer, 0, 4))];
+void drawViewerMagnifier(GBufferPanelState& panel, ViewportTools& viewport) {
+    if (viewport.pickedThisFrame) {
+        // Shift+right-click in the viewport: the magnifier follows the viewport's texel.
+        viewport.pickedThisFrame = false;
+        panel.activeViewer = kViewportViewer;
+        panel.showMagnifier = true;
+    }
+    bool const onViewport = panel.activeViewer == kViewportViewer && viewport.open;
+    std::size_t const i = std::size_t(std::clamp(panel.activeViewer, 0, 4));
+    ViewerState& v = onViewport ? viewport.viewer : panel.viewers[i];
     goToPixelPopup(panel, v);
     if (!panel.showMagnifier) return;
-    ViewerData const& d = panel.data[std::size_t(std::clamp(panel.activeViewer, 0, 4))];
+    ViewerData const& d = onViewport ? viewport.data : panel.data[i];
     float const cell = ImGui::GetFontSize() * 1.4f;
     ImGui::SetNextWindowSize(ImVec2(cell * 9 + 40.0f, cell * 9 + ImGui::GetFontSize() * 9), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Magnifier", &panel.showMagnifier)) {
         ImGui::End();
         return;
     }
-    ImGui::Text("%s viewer", kViewerNames[std::size_t(v.kind)].data());
+    ImGui::Text("%s %s", kViewerNames[std::size_t(v.kind)].data(),
+                onViewport      ? "in the viewport"
+                : v.showStencil ? "viewer (stencil)"
+                                : "viewer");
     if (!v.picked) {
-        ImGui::TextWrapped("Right-click a texel in a viewer to pick it; arrow keys step it; Ctrl+G goes to one.");
+        ImGui::TextWrapped(onViewport
+                               ? "Shift+right-click a texel in the viewport to pick it; Ctrl+G goes to one."
+                               : "Right-click a texel in a viewer to pick it; arrow keys step it; Ctrl+G goes to one.");
     } else if (d.frame < 0 || d.values.width <= 0) {
         ImGui::TextDisabled("reading values...");
     } else {

@@ -11,7 +11,8 @@ namespace gbl::ui {
 
 void viewerHeaderCounts(ViewerState const& v, ViewerData const& d) {
     if (d.frame < 0 || v.overlays == 0) return;
-    float const right = ImGui::GetItemRectMax().x + ImGui::GetContentRegionAvail().x;
+    // The cell's right edge: the cursor is at the start of the line after the viewer's name.
+    float const right = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;
     auto count = [&](ImU32 colour, char const* label, long n) {
         char text[40];
         std::snprintf(text, sizeof text, "%s %ld", label, n);
@@ -43,9 +44,12 @@ void viewerToolsRow(ViewerState& v, ViewerData const& d) {
     };
     if (toggle("Hist", v.showHistogram)) v.showHistogram = !v.showHistogram;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("histogram of the shown channels with the black/white points");
-    ImGui::SameLine(0, 2);
+    // Wide enough for the longest map name beside the combo's arrow.
+    float const mapWidth =
+        ImGui::CalcTextSize("viridis").x + ImGui::GetFrameHeight() + ImGui::GetStyle().FramePadding.x * 2.0f;
+    if (ImGui::GetItemRectMax().x + 2.0f + mapWidth <= right) ImGui::SameLine(0, 2);
     int map = int(v.colormap);
-    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 4.2f);
+    ImGui::SetNextItemWidth(mapWidth);
     char const* maps[] = {kColormapNames[0].data(), kColormapNames[1].data(), kColormapNames[2].data()};
     if (ImGui::Combo("##map", &map, maps, 3)) v.colormap = Colormap(map);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("colormap, used when one channel is shown");
@@ -112,6 +116,7 @@ void viewerRegionAndDiff(ViewerState& v, ViewerData const& d) {
 
 void viewerKeys(GBufferPanelState& panel) {
     if (!ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows) || ImGui::GetIO().WantTextInput) return;
+    if (panel.activeViewer < 0 || panel.activeViewer > 4) return;  // the viewport's texel: Shift+right-click only
     ViewerState& v = panel.viewers[std::size_t(std::clamp(panel.activeViewer, 0, 4))];
     if (ImGui::GetIO().KeyCtrl && letterPressed('G')) {
         panel.goToOpen = true;

@@ -13,6 +13,12 @@ inline constexpr ImU32 kNaNColour = IM_COL32(255, 0, 255, 255);
 inline constexpr ImU32 kInfColour = IM_COL32(0, 255, 0, 255);
 inline constexpr ImU32 kNegativeColour = IM_COL32(0, 255, 255, 255);
 
+// Channel toggles, range with Fit and auto, and the kind's own options (normals, depth; the
+// depth viewer's stencil switch when stencilChoice).
+void viewerControls(ViewerState& v, bool stencilChoice);
+// Outline of the texels a (inclusive) .. b (exclusive) on an image drawn at p0 with size full.
+void outlineTexels(ImDrawList* dl, ImVec2 p0, ImVec2 full, glm::ivec2 imageSize, glm::ivec2 a, glm::ivec2 b,
+                   ImU32 colour);
 // Header counts ("NaN 3  Inf 0  neg 12") once the tools have statistics.
 void viewerHeaderCounts(ViewerState const& v, ViewerData const& d);
 // The row of tool toggles: histogram, colormap, overlays, pin, diff.
@@ -21,8 +27,17 @@ void viewerToolsRow(ViewerState& v, ViewerData const& d);
 void viewerHistogram(ViewerState& v, ViewerData const& d);
 // Region statistics and diff statistics, when a region is set / the diff is shown.
 void viewerRegionAndDiff(ViewerState& v, ViewerData const& d);
-// Magnifier window: the active viewer's texels around the picked texel.
-void drawViewerMagnifier(GBufferPanelState& panel);
+// The viewport's tools (issue 15: the viewer tools "in the viewport when it shows an
+// attachment"): a Tools toggle while the view is a G-buffer attachment, then the same rows as a
+// G-buffer cell. Call in the viewport window above its image.
+void viewportToolsRow(ViewportTools& tools, DebugView view);
+// Call right after the viewport's image item: Shift+drag sets the region, Shift+right-click the
+// magnifier's texel; draws their outlines. True when the mouse is the tools' (the camera must
+// not move with it).
+bool viewportToolsImage(ViewportTools& tools, ImVec2 origin, ImVec2 size, glm::ivec2 imageSize);
+// Magnifier window: the active viewer's texels around the picked texel (activeViewer
+// kViewportViewer: the viewport's tools).
+void drawViewerMagnifier(GBufferPanelState& panel, ViewportTools& viewport);
 // Arrow keys step the picked texel; Ctrl+G opens go-to-pixel. Call inside the G-buffer window.
 void viewerKeys(GBufferPanelState& panel);
 

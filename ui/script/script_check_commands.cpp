@@ -109,61 +109,6 @@ void soakStableCommand(CommandCall const& c) {
     c.check(ok, detail);
 }
 
-// The G-buffer viewer named by word 1, or -1 after a failed check.
-int viewerIndex(CommandCall const& c) {
-    for (std::size_t i = 0; i < kViewerNames.size(); ++i)
-        if (kViewerNames[i] == c.w[1]) return int(i);
-    c.check(false, "no viewer " + c.w[1] + " (position normal albedo specular depth)");
-    return -1;
-}
-
-void viewerToolCommand(CommandCall const& c) {
-    int const i = viewerIndex(c);
-    if (i < 0) return;
-    if (c.w[3] != "on" && c.w[3] != "off") return c.check(false, "expected on or off");
-    bool const on = c.w[3] == "on";
-    GBufferPanelState& panel = c.host.state.gbuffer;
-    ViewerState& v = panel.viewers[std::size_t(i)];
-    auto overlay = [&](unsigned bit) { v.overlays = on ? v.overlays | bit : v.overlays & ~bit; };
-    std::string const& tool = c.w[2];
-    if (tool == "histogram")
-        v.showHistogram = on;
-    else if (tool == "nan")
-        overlay(kOverlayNaN);
-    else if (tool == "inf")
-        overlay(kOverlayInf);
-    else if (tool == "negative")
-        overlay(kOverlayNegative);
-    else if (tool == "clip")
-        overlay(kOverlayClip);
-    else if (tool == "magnifier") {
-        panel.showMagnifier = on;
-        panel.activeViewer = i;
-        if (on && !v.picked) v.picked = glm::ivec2(c.host.renderer.width() / 2, c.host.renderer.height() / 2);
-    } else
-        return c.check(false, "unknown tool " + tool + " (histogram nan inf negative clip magnifier)");
-}
-
-void expectViewerStatCommand(CommandCall const& c) {
-    int const i = viewerIndex(c);
-    if (i < 0) return;
-    ViewerData const& d = c.host.state.gbuffer.data[std::size_t(i)];
-    if (d.frame < 0) return c.check(false, "no statistics yet: turn a tool of this viewer on and wait a frame");
-    ImageStats const& s = d.stats;
-    std::string const& stat = c.w[2];
-    double const x = number(c.w[3]);
-    char detail[200];
-    std::snprintf(detail, sizeof detail, "min %.5g max %.5g mean %.5g, NaN %ld Inf %ld negative %ld of %ld pixels",
-                  s.shown.min, s.shown.max, s.shown.mean, s.nanPixels, s.infPixels, s.negativePixels, s.pixels);
-    if (stat == "nan") return c.check(double(s.nanPixels) == x, detail);
-    if (stat == "inf") return c.check(double(s.infPixels) == x, detail);
-    if (stat == "negative") return c.check(double(s.negativePixels) == x, detail);
-    if (stat == "min-below") return c.check(s.shown.finite > 0 && s.shown.min < x, detail);
-    if (stat == "max-above") return c.check(s.shown.finite > 0 && s.shown.max > x, detail);
-    if (stat == "pixels-above") return c.check(double(s.pixels) > x, detail);
-    c.check(false, "unknown statistic " + stat + " (nan inf negative min-below max-above pixels-above)");
-}
-
 // What the current mode evaluated at the inspected pixel (ambient plus each verdict's share)
 // against the stored lit value: the "why this value" answer checked against the GPU.
 void whySumsCommand(CommandCall const& c) {
@@ -263,12 +208,6 @@ constexpr ScriptCommandSpec kCommands[] = {
      "ambient plus what each light added by the current mode's verdict (why this value)\n"
      "equals the stored lit value within TOL + 1%",
      whySumsCommand},
-    {"viewer-tool", "VIEWER TOOL on|off", "a G-buffer viewer's tool: histogram nan inf negative clip magnifier",
-     viewerToolCommand},
-    {"expect-viewer-stat", "VIEWER STAT X",
-     "the viewer's statistics: nan|inf|negative X (pixel counts equal X),\n"
-     "min-below X, max-above X, pixels-above X (needs a tool on and a frame)",
-     expectViewerStatCommand},
     {"expect-log", "TEXT...", "some log line contains TEXT",
      [](CommandCall const& c) {
          std::string const text = joinWords(c.w, 1);

@@ -71,6 +71,7 @@ std::span<ScriptCommandSpec const> editCommands();     // script_edit_commands.c
 std::span<ScriptCommandSpec const> checkCommands();    // script_check_commands.cpp
 std::span<ScriptCommandSpec const> sessionCommands();  // script_session_commands.cpp
 std::span<ScriptCommandSpec const> sceneCommands();    // ui_script_scene.cpp
+std::span<ScriptCommandSpec const> viewerCommands();   // script_viewer_commands.cpp
 
 // The pipeline's named switches, for `set` and `expect-setting` (script_edit_commands.cpp).
 struct EnumSetting {

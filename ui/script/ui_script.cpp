@@ -20,9 +20,10 @@ struct CommandGroup {
     std::span<ScriptCommandSpec const> (*commands)();
 };
 // The whole command table, in the order the help lists it.
-constexpr std::array<CommandGroup, 4> kCommandGroups{{
+constexpr std::array<CommandGroup, 5> kCommandGroups{{
     {"Editing and waiting", editCommands},
     {"Captures and checks", checkCommands},
+    {"Viewer tools, pin and diff (docs/viewers.md)", viewerCommands},
     {"Sessions, undo, recovery and export", sessionCommands},
     {"Scene loading (ui/model/scene_loading.h)", sceneCommands},
 }};

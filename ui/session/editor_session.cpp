@@ -14,8 +14,26 @@ Session captureSession(EditorState const& state, int defaultSceneLights) {
     s.pipeline = state.pipeline;
     s.viewers = state.gbuffer.viewers;
     s.animation = state.animation;
+    s.syncViews = state.gbuffer.syncViews;
+    s.viewportToolsOpen = state.viewportTools.open;
+    s.viewportViewer = state.viewportTools.viewer;
     return s;
 }
+
+namespace {
+// The viewer-tool settings a session holds (colormap, overlays, histogram, stencil).
+void copyToolSettings(ViewerState const& from, ViewerState& to) {
+    to.colormap = from.colormap;
+    to.overlays = from.overlays;
+    to.showHistogram = from.showHistogram;
+    if (from.showStencil && to.kind == ViewerKind::Depth) {
+        // The range read is the stencil's; the depth's comes back as the defaults.
+        ViewerState const depth = GBufferPanelState::defaultViewers()[std::size_t(ViewerKind::Depth)];
+        to.otherRange = glm::vec2(depth.rangeMin, depth.rangeMax);
+        to.showStencil = true;
+    }
+}
+}  // namespace
 
 void applySessionValues(Session const& session, EditorState& state) {
     state.camera = session.camera;
@@ -38,8 +56,23 @@ void applySessionValues(Session const& session, EditorState& state) {
         v.farPlane = from.farPlane;
         v.zoom = from.zoom;
         v.center = from.center;
+        copyToolSettings(from, v);
         state.gbuffer.viewers[i] = v;
     }
+    state.gbuffer.syncViews = session.syncViews;
+    state.viewportTools = ViewportTools{};
+    state.viewportTools.open = session.viewportToolsOpen;
+    ViewerState& viewport = state.viewportTools.viewer;
+    ViewerState const& from = session.viewportViewer;
+    viewport.channelMask = from.channelMask;
+    viewport.rangeMin = from.rangeMin;
+    viewport.rangeMax = from.rangeMax;
+    viewport.autoFit = from.autoFit;
+    viewport.normalDisplay = from.normalDisplay;
+    viewport.cameraClipPlanes = from.cameraClipPlanes;
+    viewport.nearPlane = from.nearPlane;
+    viewport.farPlane = from.farPlane;
+    copyToolSettings(from, viewport);
     state.animation = session.animation;
     int& selected = state.lightsPanel.selected;
     if (selected >= int(state.lights.size())) selected = state.lights.empty() ? -1 : 0;

@@ -20,6 +20,10 @@ using nlohmann::json;
 namespace {
 
 constexpr std::array<std::string_view, 2> kNormalDisplayNames{"biased", "absolute"};
+// The overlay bits by name, in bit order (kOverlayNaN = 1 ... kOverlayClip = 8).
+constexpr std::array<std::string_view, 4> kOverlayNames{"nan", "inf", "negative", "clip"};
+static_assert(kOverlayNaN == 1 && kOverlayInf == 2 && kOverlayNegative == 4 && kOverlayClip == 8,
+              "kOverlayNames lists the overlay bits in order");
 
 // --- writing ------------------------------------------------------------------------------
 
@@ -43,6 +47,16 @@ std::string joinNames(std::array<std::string_view, N> const& names) {
     return s;
 }
 
+ojson toolsJson(ViewerState const& v) {
+    ojson overlays = ojson::array();
+    for (std::size_t i = 0; i < kOverlayNames.size(); ++i)
+        if (v.overlays & (1u << i)) overlays.push_back(kOverlayNames[i]);
+    return {{"colormap", enumName(kColormapNames, v.colormap)},
+            {"overlays", overlays},
+            {"histogram", v.showHistogram},
+            {"stencil", v.showStencil}};
+}
+
 ojson viewerJson(ViewerState const& v) {
     return {{"channel_mask", v.channelMask},
             {"range_min", v.rangeMin},
@@ -54,7 +68,8 @@ ojson viewerJson(ViewerState const& v) {
             {"near", v.nearPlane},
             {"far", v.farPlane},
             {"zoom", v.zoom},
-            {"center", vec(v.center)}};
+            {"center", vec(v.center)},
+            {"tools", toolsJson(v)}};
 }
 
 ojson sessionJson(Session const& s) {
@@ -98,6 +113,9 @@ ojson sessionJson(Session const& s) {
           {"volume_scale", p.volumeScale}}},
         {"viewers", viewers},
         {"animation", {{"enabled", s.animation.enabled}, {"speed", s.animation.speed}, {"time", s.animation.time}}},
+        {"viewer_tools",
+         {{"sync", s.syncViews},
+          {"viewport", {{"open", s.viewportToolsOpen}, {"viewer", viewerJson(s.viewportViewer)}}}}},
     };
 }
 
@@ -275,10 +293,34 @@ PipelineSettings readPipeline(json const& j) {
     return p;
 }
 
+// The viewer's tool settings; every field optional (files from before the tools lack them).
+void readTools(json const& j, std::string const& path, ViewerState& v) {
+    Object o(j, path, {"colormap", "overlays", "histogram", "stencil"});
+    if (json const* map = o.optional("colormap"))
+        v.colormap = enumeration<Colormap>(*map, o.field("colormap"), kColormapNames);
+    if (json const* overlays = o.optional("overlays")) {
+        if (!overlays->is_array())
+            fail(o.field("overlays"),
+                 "must be an array of names out of " + joinNames(kOverlayNames) + " (got " + typeName(*overlays) + ")");
+        v.overlays = 0;
+        for (std::size_t i = 0; i < overlays->size(); ++i) {
+            auto const bit =
+                enumeration<int>((*overlays)[i], o.field("overlays") + "[" + std::to_string(i) + "]", kOverlayNames);
+            v.overlays |= 1u << unsigned(bit);
+        }
+    }
+    if (json const* hist = o.optional("histogram")) v.showHistogram = boolean(*hist, o.field("histogram"));
+    if (json const* stencil = o.optional("stencil")) {
+        v.showStencil = boolean(*stencil, o.field("stencil"));
+        if (v.showStencil && v.kind != ViewerKind::Depth)
+            fail(o.field("stencil"), "must be false: only the depth viewer shows the stencil");
+    }
+}
+
 ViewerState readViewer(json const& j, std::string const& path, ViewerState v) {
     Object o(j, path,
              {"channel_mask", "range_min", "range_max", "auto_fit", "normal_display", "linear_depth",
-              "camera_clip_planes", "near", "far", "zoom", "center"});
+              "camera_clip_planes", "near", "far", "zoom", "center", "tools"});
     v.channelMask = unsigned(integer(o.required("channel_mask"), o.field("channel_mask"), 0, 15));
     v.rangeMin = number(o.required("range_min"), o.field("range_min"));
     v.rangeMax = number(o.required("range_max"), o.field("range_max"));
@@ -299,6 +341,7 @@ ViewerState readViewer(json const& j, std::string const& path, ViewerState v) {
         if (v.center[i] < 0.0f || v.center[i] > 1.0f)
             fail(o.field("center") + "[" + std::to_string(i) + "]",
                  "must be between 0 and 1 (got " + center[std::size_t(i)].dump() + ")");
+    if (json const* tools = o.optional("tools")) readTools(*tools, o.field("tools"), v);
     return v;
 }
 
@@ -321,7 +364,8 @@ Session readSession(json const& j) {
                  std::to_string(kSessionVersion) +
                  (version.get<long long>() > kSessionVersion ? " (the file comes from a newer gbuffer-lab)" : ""));
 
-    Object const root(j, "", {"format", "version", "scene", "camera", "lights", "pipeline", "viewers", "animation"});
+    Object const root(
+        j, "", {"format", "version", "scene", "camera", "lights", "pipeline", "viewers", "animation", "viewer_tools"});
     Session s;
     {
         Object scene(root.required("scene"), "scene", {"source", "default_scene_lights"});
@@ -345,6 +389,17 @@ Session readSession(json const& j) {
         s.animation.enabled = boolean(anim.required("enabled"), anim.field("enabled"));
         s.animation.speed = number(anim.required("speed"), anim.field("speed"));
         s.animation.time = number(anim.required("time"), anim.field("time"));
+    }
+    if (json const* toolsJ = root.optional("viewer_tools")) {
+        Object tools(*toolsJ, "viewer_tools", {"sync", "viewport"});
+        if (json const* sync = tools.optional("sync")) s.syncViews = boolean(*sync, tools.field("sync"));
+        if (json const* viewportJ = tools.optional("viewport")) {
+            Object viewport(*viewportJ, tools.field("viewport"), {"open", "viewer"});
+            if (json const* open = viewport.optional("open"))
+                s.viewportToolsOpen = boolean(*open, viewport.field("open"));
+            if (json const* viewer = viewport.optional("viewer"))
+                s.viewportViewer = readViewer(*viewer, viewport.field("viewer"), s.viewportViewer);
+        }
     }
     return s;
 }

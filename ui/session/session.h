@@ -18,7 +18,8 @@ namespace gbl::ui {
 
 inline constexpr std::string_view kSessionFormat = "gbuffer-lab-session";
 // Bump when a field changes meaning or a required field is added; older files then get a
-// message instead of being read wrongly.
+// message instead of being read wrongly. Optional fields (the viewer tools) need no bump: files
+// without them load with the defaults.
 inline constexpr int kSessionVersion = 1;
 
 struct Session {
@@ -33,6 +34,10 @@ struct Session {
     PipelineSettings pipeline;
     std::array<ViewerState, 5> viewers = GBufferPanelState::defaultViewers();
     LightAnimation animation;
+    // Viewer tools (optional in the file: a session without them gets these defaults).
+    bool syncViews = false;          // "Sync zoom/pan" of the G-buffer viewers
+    bool viewportToolsOpen = false;  // the viewport's Tools toggle
+    ViewerState viewportViewer = ViewportTools::defaultViewer();
 };
 
 // The session as JSON text (2-space indent). Floats are written with enough digits to read
