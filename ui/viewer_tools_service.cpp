@@ -37,6 +37,7 @@ void uploadDiff(gl::Texture& tex, DiffStats const& diff, float threshold, bool c
                [&] { return diffHeatmap(diff, scale); });
 }
 
+namespace {
 // Reads back what one viewer's tools need and services its requests. Returns whether the diff
 // changed (re-upload its heat map).
 bool serviceViewerData(ViewerState& v, ViewerData& d, Renderer& renderer, Camera const& camera, long frame,
