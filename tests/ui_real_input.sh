@@ -148,9 +148,7 @@ wait "$pid" 2>/dev/null || true
 pid=""
 
 # --- real clicks on "Pin lit" and "Diff"; the script in the same editor checks the diff --------
-# Both sit on the row right above the viewport image (the view is "final": no Tools row): "Pin
-# lit" first, 6 px in, then the "Diff" checkbox 8 px after the button. Their places follow from
-# the image rectangle and ImGui's default font (7 px per character, 4 px frame padding, 19 px rows).
+# The frame log says where the editor drew both (window pixels); "Diff" appears once pinned.
 cat > "$work/lit_diff.txt" <<SCRIPT
 frames 3
 wait-lit-diff 60
@@ -177,14 +175,17 @@ wait_frames 3
 wid=$(xdotool search --sync --onlyvisible --name '^gbuffer-lab$' | head -n 1)
 [ -n "$wid" ] || fail "no gbuffer-lab window for the lit diff"
 xdotool windowactivate --sync "$wid" 2>/dev/null || xdotool windowfocus --sync "$wid"
-vp=$(field viewport | tr -d '[]')
-rowy=$(echo "$vp" | awk -F, '{ printf "%d", $2 - 13 }')
-pinx=$(echo "$vp" | awk -F, '{ printf "%d", $1 + 20 }')
-diffx=$(echo "$vp" | awk -F, '{ printf "%d", $1 + 6 + 57 + 8 + 9 }')
-xdotool mousemove --window "$wid" "$pinx" "$rowy" sleep 0.1 mousedown 1 sleep 0.05 mouseup 1
+centre() { field "$1" | tr -d '[]' | awk -F, '{ printf "%d %d", $1 + $3 / 2, $2 + $4 / 2 }'; }
+set -- $(centre pinLit)
+pinx=$1 piny=$2
+[ "$pinx" -gt 0 ] || fail "the Pin lit button was not drawn ($(field pinLit))"
+xdotool mousemove --window "$wid" "$pinx" "$piny" sleep 0.1 mousedown 1 sleep 0.05 mouseup 1
 wait_frames 4
-xdotool mousemove --window "$wid" "$diffx" "$rowy" sleep 0.1 mousedown 1 sleep 0.05 mouseup 1
-echo "clicked Pin lit at $pinx,$rowy and Diff at $diffx,$rowy"
+set -- $(centre litDiff)
+diffx=$1 diffy=$2
+[ "$diffx" -gt 0 ] || fail "no Diff checkbox after the Pin lit click ($(field litDiff))"
+xdotool mousemove --window "$wid" "$diffx" "$diffy" sleep 0.1 mousedown 1 sleep 0.05 mouseup 1
+echo "clicked Pin lit at $pinx,$piny and Diff at $diffx,$diffy"
 status=0
 wait "$pid" || status=$?
 pid=""

@@ -50,6 +50,8 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.accumulate = state.accumulate.enabled ? state.accumulate.count : -1;
     line.scrubber = state.accumulate.sliderRect;
     line.abToggle = state.ab.toggleRect;
+    line.pinLit = state.litPin.pinRect;
+    line.litDiff = state.litPin.diffRect;
     line.abDivider = state.ab.enabled && state.ab.view == ui::AbView::Split ? state.ab.divider : -1.0f;
     line.pickable = pickableLights(editor);
     line.events = editor.actions.applied;

@@ -58,6 +58,8 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"accumulate\":" + std::to_string(l.accumulate);
     out += ",\"scrubber\":" + rect(l.scrubber);
     out += ",\"abToggle\":" + rect(l.abToggle);
+    out += ",\"pinLit\":" + rect(l.pinLit);
+    out += ",\"litDiff\":" + rect(l.litDiff);
     out += ",\"abDivider\":" + number(l.abDivider);
     out += ",\"pickable\":[";
     for (std::size_t i = 0; i < l.pickable.size(); ++i)

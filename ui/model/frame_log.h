@@ -33,6 +33,8 @@ struct FrameLogLine {
     int accumulate = -1;                     // lights the scrubber accumulates; -1 = off
     glm::vec4 scrubber{0.0f};                // the scrubber's slider in window coordinates
     glm::vec4 abToggle{0.0f};                // the viewport's A/B checkbox
+    glm::vec4 pinLit{0.0f};                  // the viewport's "Pin lit" button
+    glm::vec4 litDiff{0.0f};                 // ... and its "Diff" checkbox (0 until pinned)
     float abDivider = -1.0f;                 // A/B split: where A ends (share of the image width); -1 = off
     std::vector<std::string> events;         // input events applied this frame, and what they did
     std::vector<std::string> actions;        // editor actions carried out this frame

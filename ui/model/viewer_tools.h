@@ -48,6 +48,10 @@ std::string storedFloatText(float value);
 struct LitPin {
     bool pinRequested = false;  // "Pin lit": the loop stores the next read-back as the pinned frame
     bool showDiff = false;      // the viewport shows |current - pinned| instead of the frame
+    // Where "Pin lit" and "Diff" were drawn (x, y, w, h in window pixels; 0 while not drawn), for
+    // the frame log that real-input tests click by.
+    glm::vec4 pinRect{0.0f};
+    glm::vec4 diffRect{0.0f};
     DiffMode diffMode = DiffMode::Absolute;
     float diffThreshold = 0.0f;
     FloatImage values;  // the last read-back of the lit frame

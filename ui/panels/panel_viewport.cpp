@@ -58,17 +58,25 @@ void fittedText(char const* full, char const* compact) {
     if (!fits && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", full);
 }
 
+glm::vec4 itemRect() {
+    ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    return {a.x, a.y, b.x - a.x, b.y - a.y};
+}
+
 // "Pin lit" holds the lit HDR frame; "Diff" shows |now - pinned| over RGB as the viewers' heat
 // map, with the statistics of both on the row (a row of its own: the toolbar above is full).
 void litPinRow(LitPin& pin) {
     ImGui::SetCursorPosX(ImGui::GetCursorPosX() + 6);
     if (ImGui::Button("Pin lit")) pin.pinRequested = true;
+    pin.pinRect = itemRect();
+    pin.diffRect = glm::vec4(0.0f);
     ImGui::SameLine();
     if (!pin.pinned) {
         ImGui::TextDisabled("pin the lit frame to compare later frames with it");
         return;
     }
     ImGui::Checkbox("Diff", &pin.showDiff);
+    pin.diffRect = itemRect();
     ImGui::SameLine();
     ChannelStats const& s = pin.stats.shown;
     if (pin.showDiff && !pin.diff.comparable && pin.frame >= 0) {
@@ -216,11 +224,6 @@ void drawAbDiff(ViewportTeaching const& v, PipelineSettings const& a, ImVec2 ori
     boxedText(ImVec2(origin.x + 8, origin.y + avail.y - line - 4), passLine("B", ab.passesB, ab.gpuMsB));
 }
 
-glm::vec4 lastItemRect() {
-    ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    return {a.x, a.y, b.x - a.x, b.y - a.y};
-}
-
 // The third row: "Light by light" with its slider (Left/Right step it) and the A/B toggle.
 void teachingRow(ViewportTeaching& t, PipelineSettings const& settings) {
     AccumulateState& a = t.accumulate;
@@ -237,7 +240,7 @@ void teachingRow(ViewportTeaching& t, PipelineSettings const& settings) {
     ImGui::SliderInt("##k", &a.count, 0, t.lightCount, a.enabled ? "k = %d" : "k = %d (off)",
                      ImGuiSliderFlags_AlwaysClamp);
     if (ImGui::IsItemActivated()) a.enabled = true;
-    a.sliderRect = lastItemRect();
+    a.sliderRect = itemRect();
     ImGui::SameLine();
     ImGui::BeginDisabled(!a.enabled);
     ImGui::Checkbox("only k", &a.contribution);
@@ -247,7 +250,7 @@ void teachingRow(ViewportTeaching& t, PipelineSettings const& settings) {
     if (a.enabled) ImGui::TextDisabled(a.count == 0 ? "ambient only" : "%s", t.kthLightName.c_str());
     ImGui::SameLine();
     if (ImGui::Checkbox("A/B", &t.ab.enabled) && t.ab.enabled) startAb(t.ab, settings);
-    t.ab.toggleRect = lastItemRect();
+    t.ab.toggleRect = itemRect();
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("two pipeline settings on the same frame: pick what B changes in the Pipeline window");
     if (t.ab.enabled) {
