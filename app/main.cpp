@@ -1,5 +1,6 @@
 // gbuffer-lab entry point: the editor by default, `render` and `bench` as sub-commands.
 #include "bench_command.h"
+#include "bench_layouts.h"
 #include "cli_values.h"
 #include "editor.h"
 #include "render_command.h"
@@ -55,7 +56,7 @@ int main(int argc, char** argv) {
     if (render->parsed()) return gbl::runRender(renderOptions);
     if (bench->parsed()) {
         benchOptions.lightsGiven = bench->count("--lights") > 0;
-        return gbl::runBench(benchOptions);
+        return gbl::runBenchLayouts(benchOptions);
     }
 
     editor.scenePath = scene;
