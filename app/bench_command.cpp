@@ -299,6 +299,8 @@ void addBenchOptions(CLI::App& sub, BenchOptions& o) {
     sub.add_option("--session", o.sessionPath, "Measure the scene, camera, lights and settings of a session file");
     sub.add_option("--scene", o.scenePath, "Measure a glTF 2.0 scene (its own lights) instead of the default scene");
     sub.add_option("--gl", o.glLimit, "Pretend the context is at most this OpenGL version, e.g. 3.3");
+    sub.add_option("--layouts", o.layouts, "G-buffer layouts, comma-separated: classic, packed, naive8, rgb10a2")
+        ->delimiter(',');
 }
 
 int runBench(BenchOptions const& o) {
@@ -370,6 +372,8 @@ int runBench(BenchOptions const& o) {
                 return badArgument("--lights " + std::to_string(n) + " is more than the " + std::to_string(available) +
                                    " lights of the scene");
     }
+    if (!o.layouts.empty())
+        if (auto layout = enumFromName<GBufferLayout>(kGBufferLayoutNames, o.layouts.front())) base.layout = *layout;
     auto headless = createHeadlessRenderer(size->width, size->height, o.glLimit, &error);
     if (!headless) {
         std::fprintf(stderr, "gbuffer-lab bench: %s\n", error.c_str());

@@ -33,6 +33,9 @@ struct BenchOptions {
     std::optional<std::string> scenePath;  // a glTF scene instead of the default one
     bool lightsGiven = false;              // --lights was on the command line
     std::string glLimit;                   // "3.3" pretends the context is at most that version
+    // G-buffer layouts (bench_layouts.cpp loops over them); runBench measures the first, or the
+    // session's / classic when empty.
+    std::vector<std::string> layouts;
 };
 
 void addBenchOptions(CLI::App& sub, BenchOptions& options);

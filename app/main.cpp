@@ -1,5 +1,6 @@
 // gbuffer-lab entry point: the editor by default, `render` and `bench` as sub-commands.
 #include "bench_command.h"
+#include "bench_layouts.h"
 #include "cli_values.h"
 #include "compare_command.h"
 #include "editor.h"
@@ -67,7 +68,7 @@ int main(int argc, char** argv) {
     if (compare->parsed()) return gbl::runCompare(compareOptions);
     if (bench->parsed()) {
         benchOptions.lightsGiven = bench->count("--lights") > 0;
-        return gbl::runBench(benchOptions);
+        return gbl::runBenchLayouts(benchOptions);
     }
 
     editor.scenePath = scene;

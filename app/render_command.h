@@ -20,6 +20,7 @@ struct RenderOptions {
     float time = 0.0f;
     std::string blit = "blit";
     std::string mode = "quad";
+    std::string layout = "classic";  // G-buffer layout (core/gbuffer_layout.h)
     std::string cull = "front";
     std::vector<std::string> views;  // extra debug views written as view_<name>.png
     std::optional<std::string> scene;

@@ -2,6 +2,7 @@
 #include "frame_export.h"
 
 #include "core/depth.h"
+#include "core/gbuffer_layout.h"
 #include "core/light_math.h"
 #include "image_io.h"
 
@@ -80,6 +81,14 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
     check(writePng(path("specular.png"), specularImage(albedo)));
     check(writeExr(path("depth.exr"), depth));
     check(writeExr(path("depth_linear.exr"), linearDepthImage(depth, frame.camera)));
+    // Every attachment of the layout as stored: 8-bit ones as PNG (exact), the others as EXR.
+    GBufferLayoutDesc const& layout = layoutDesc(renderer.layout());
+    for (int i = 0; i < layout.attachmentCount; ++i) {
+        GBufferAttachmentDesc const& a = layout.attachments()[std::size_t(i)];
+        FloatImage const raw = renderer.readRawAttachment(i);
+        std::string const base = "raw_" + std::string(a.name);
+        check(a.format == TexelFormat::RGBA8 ? writePng(path(base + ".png"), raw) : writeExr(path(base + ".exr"), raw));
+    }
     for (DebugView v : frame.extraViews) {
         ViewTarget target;
         ViewParams params;
@@ -131,6 +140,8 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
                       {"mode", enumName(kLightingModeNames, s.mode)},
                       {"cull", enumName(kCullModeNames, s.cull)},
                       {"blit", enumName(kDepthCopyNames, s.depthCopy)},
+                      {"layout", layout.name},
+                      {"gbuffer_bytes_per_pixel", layoutBytesPerPixel(layout)},
                       {"gpu_ms", passes},
                       {"gpu_frame_ms", frame.stats.gpuFrameMs},
                       {"triangles", frame.triangles},

@@ -24,8 +24,10 @@ struct FrameExport {
     std::vector<DebugView> extraViews;  // also written as view_<name>.png
 };
 
-// Writes into `dir` (which must exist): final.png, lighting.exr, position.exr, normal.exr,
-// albedo.png, specular.png, depth.exr, depth_linear.exr, view_<name>.png per extra view,
+// Writes into `dir` (which must exist): final.png, lighting.exr, position.exr and normal.exr (decoded:
+// what the lighting read),
+// albedo.png, specular.png, depth.exr, depth_linear.exr, raw_<name>.exr/.png per attachment of the
+// G-buffer layout as stored, view_<name>.png per extra view,
 // lights.json, camera.json and stats.json, from the renderer's current frame. Returns the
 // first error as one sentence naming the file; files before it stay written.
 std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& frame, std::string const& dir);

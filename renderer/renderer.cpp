@@ -97,8 +97,19 @@ RendererImpl::RendererImpl(GlCaps capsIn, int width, int height) : caps(std::mov
 void RendererImpl::resizeTargets(int width, int height) {
     width = std::max(width, 0);
     height = std::max(height, 0);
-    if (auto err = createRenderTargets(width, height, targets))
+    if (auto err = createRenderTargets(width, height, targets.gbuffer.layout, targets))
         throw std::runtime_error("Renderer::resizeTargets(): " + *err);
+}
+
+void RendererImpl::applyLayout(GBufferLayout layout) {
+    if (layout == targets.gbuffer.layout) return;
+    std::string log;
+    // The built-in shaders compile for every layout; a failure here is a bug in them.
+    if (!shaders.setGlobalDefines(layoutShaderDefines(layoutDesc(layout)), &log))
+        throw std::runtime_error("Renderer: the shaders failed to build for G-buffer layout " +
+                                 std::string(layoutDesc(layout).name) + ":\n" + log);
+    if (auto err = createRenderTargets(targets.width, targets.height, layout, targets))
+        throw std::runtime_error("Renderer::applyLayout(): " + *err);
 }
 
 // --- optional modes ------------------------------------------------------------------------------
@@ -179,7 +190,9 @@ FrameContext RendererImpl::frameContext(FrameInput const& input) const {
 }
 
 DeferredInputs RendererImpl::deferredInputs(FrameContext const& f) const {
-    return {targets.gbuffer, lights, {f.camera.position, f.settings.shininess, f.settings.ambient}};
+    return {targets.gbuffer,
+            lights,
+            {f.camera.position, f.settings.shininess, f.settings.ambient, glm::inverse(f.viewProj)}};
 }
 
 void RendererImpl::runLighting(FrameContext const& f) {
@@ -228,6 +241,8 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     stats.width = targets.width;
     stats.height = targets.height;
     stats.lightsSubmitted = int(input.lights.size());
+    applyLayout(input.settings.layout);
+    stats.layout = input.settings.layout;
     if (targets.empty()) return stats;  // minimised: nothing to draw into
 
     FrameContext f = frameContext(input);
@@ -237,7 +252,8 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     }
     stats.modeUsed = f.settings.mode;
     PipelineSettings const& s = f.settings;
-    ShadingUniforms const shading{f.camera.position, s.shininess, s.ambient};
+    ShadingUniforms const shading{f.camera.position, s.shininess, s.ambient, glm::inverse(f.viewProj)};
+    frameInverseViewProj = shading.inverseViewProj;
 
     lights.upload(f.lights);
     volumes.enclosingScale = volumes.meshEnclosingScale * s.volumeScale;  // < 1 only to show what it cuts off
@@ -311,7 +327,8 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     display.view = s.view;
     viewPass({targets.gbuffer, targets.lighting, targets.coverage, shaders.get(ProgramId::View), triangle,
               targets.displayFbo},
-             {display, s.tonemap, s.exposure, f.camera.nearPlane, f.camera.farPlane, targets.width, targets.height});
+             {display, s.tonemap, s.exposure, f.camera.nearPlane, f.camera.farPlane, targets.width, targets.height,
+              shading.inverseViewProj});
     timer.end();
 
     for (auto& [name, ms] : timer.finishFrame(input.waitForGpuTimings)) {
@@ -343,7 +360,7 @@ void RendererImpl::drawView(ViewParams const& params, FrameInput const& frame, V
     }
     viewPass({targets.gbuffer, targets.lighting, targets.coverage, shaders.get(ProgramId::View), triangle, target.fbo},
              {params, f.settings.tonemap, f.settings.exposure, f.camera.nearPlane, f.camera.farPlane, targets.width,
-              targets.height});
+              targets.height, glm::inverse(f.viewProj)});
 }
 
 float RendererImpl::lightCubeHalfSize() const {

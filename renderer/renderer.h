@@ -80,6 +80,11 @@ public:
     // GL texture name of an attachment (for viewers); 0 when the targets are 0x0.
     unsigned texture(Attachment a) const;
     FloatImage readAttachment(Attachment a) const;
+    // The G-buffer layout of the last frame (the one its targets hold).
+    GBufferLayout layout() const;
+    // Attachment `index` of that layout (core/gbuffer_layout.h order) exactly as stored: 2
+    // channels for RG16, 1 for the depth, else 4. Empty past the last one.
+    FloatImage readRawAttachment(int index) const;
     // x, y in pixels with the origin at the top-left, as a mouse reports them.
     PixelSample samplePixel(int x, int y, Camera const& camera) const;
 

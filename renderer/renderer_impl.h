@@ -43,6 +43,8 @@ public:
 
     FrameStats render(FrameInput const& input);
     void resizeTargets(int width, int height);
+    // Switches the G-buffer layout: the programs get its defines, the targets are recreated.
+    void applyLayout(GBufferLayout layout);
     void drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target);
     std::optional<std::string> modeUnavailable(LightingMode mode);
     float lightCubeHalfSize() const;
@@ -61,6 +63,7 @@ public:
     GpuTimer timer;
     gl::Query fragmentQuery;  // GL_FRAGMENT_SHADER_INVOCATIONS_ARB when available
     std::uint64_t glErrorsAtStart = 0;
+    glm::mat4 frameInverseViewProj{1.0f};  // of the last frame rendered: decodes its G-buffer
     OptionalFeature volumesFeature;
     OptionalFeature tiledFeature;
     std::function<void()> frameTestHook;  // renderer_test_access.h

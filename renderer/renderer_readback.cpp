@@ -1,6 +1,8 @@
 // Reading the frame's images back: attachments as floats, one pixel for the inspector, views.
 #include "renderer_impl.h"
 
+#include "passes/gbuffer_decode.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -75,16 +77,48 @@ FloatImage readStencil(GLuint fbo, int width, int height) {
 }
 }  // namespace
 
+namespace {
+// Runs the decode pass over width x height G-buffer pixels from `offset` (GL's bottom-left origin).
+DecodedGBuffer decodeGBuffer(RendererImpl& r, glm::ivec2 offset, int width, int height, glm::mat4 const& invViewProj) {
+    DecodedGBuffer d = createDecodedGBuffer(width, height);
+    gbufferDecodePass({r.targets.gbuffer, r.shaders.get(ProgramId::GBufferDecode), r.triangle, d},
+                      {invViewProj, offset});
+    return d;
+}
+
+int texelChannels(TexelFormat f) {
+    return f == TexelFormat::RG16 ? 2 : f == TexelFormat::Depth24Stencil8 || f == TexelFormat::Depth32FStencil8 ? 1 : 4;
+}
+}  // namespace
+
+GBufferLayout Renderer::layout() const {
+    return impl_->targets.gbuffer.layout;
+}
+
+FloatImage Renderer::readRawAttachment(int index) const {
+    RenderTargets const& t = impl_->targets;
+    GBufferLayoutDesc const& desc = layoutDesc(t.gbuffer.layout);
+    if (t.empty() || index < 0 || index >= desc.attachmentCount) return {};
+    TexelFormat const f = desc.attachments()[std::size_t(index)].format;
+    bool const depth = index == desc.attachmentCount - 1;
+    return readFramebuffer(t.gbuffer.fbo.id(), depth ? GL_NONE : GLenum(GL_COLOR_ATTACHMENT0 + index), t.width,
+                           t.height, texelChannels(f));
+}
+
 FloatImage Renderer::readAttachment(Attachment a) const {
     RenderTargets const& t = impl_->targets;
     if (t.empty()) return {};
+    int const albedoIndex = colorAttachmentIndex(layoutDesc(t.gbuffer.layout), GBufferSlot::AlbedoSpec);
     switch (a) {
         case Attachment::Position:
-            return readFramebuffer(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
-        case Attachment::Normal:
-            return readFramebuffer(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT1, t.width, t.height, 4);
+        case Attachment::Normal: {
+            DecodedGBuffer const d = decodeGBuffer(*impl_, {0, 0}, t.width, t.height, impl_->frameInverseViewProj);
+            return readFramebuffer(d.fbo.id(), a == Attachment::Position ? GL_COLOR_ATTACHMENT0 : GL_COLOR_ATTACHMENT1,
+                                   t.width, t.height, 4);
+        }
         case Attachment::AlbedoSpec:
-            return readFramebuffer(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT2, t.width, t.height, 4);
+            return readFramebuffer(t.gbuffer.fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + albedoIndex), t.width, t.height,
+                                   4);
         case Attachment::Depth:
             return readFramebuffer(t.gbuffer.fbo.id(), GL_NONE, t.width, t.height, 1);
         case Attachment::Stencil:
@@ -115,9 +149,21 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
         glReadPixels(x, glY, 1, 1, GL_RGBA, GL_FLOAT, &out[0]);
         glReadBuffer(GL_COLOR_ATTACHMENT0);
     };
-    readColor(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT0, s.position);
-    readColor(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT1, s.normal);
-    readColor(t.gbuffer.fbo.id(), GL_COLOR_ATTACHMENT2, s.albedoSpec);
+    GBufferLayoutDesc const& desc = layoutDesc(t.gbuffer.layout);
+    float const aspect = float(t.width) / float(t.height);
+    glm::mat4 const invViewProj = glm::inverse(camera.projection(aspect) * camera.view());
+    // Position and normal as the lighting decoded them, through a one-pixel decode pass.
+    DecodedGBuffer const d = decodeGBuffer(*impl_, {x, glY}, 1, 1, invViewProj);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, d.fbo.id());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, &s.position[0]);
+    glReadBuffer(GL_COLOR_ATTACHMENT1);
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, &s.normal[0]);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    readColor(t.gbuffer.fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + colorAttachmentIndex(desc, GBufferSlot::Normal)),
+              s.rawNormal);
+    readColor(t.gbuffer.fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + colorAttachmentIndex(desc, GBufferSlot::AlbedoSpec)),
+              s.albedoSpec);
     readColor(t.litFbo.id(), GL_COLOR_ATTACHMENT0, s.lighting);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, t.gbuffer.fbo.id());
     glReadPixels(x, glY, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &s.depth);
@@ -129,8 +175,6 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     s.covered = s.position.w > 0.0f;
     // World position rebuilt from depth: unproject the pixel centre through the inverse view-projection.
-    float const aspect = float(t.width) / float(t.height);
-    glm::mat4 const invViewProj = glm::inverse(camera.projection(aspect) * camera.view());
     glm::vec4 const ndc((float(x) + 0.5f) / float(t.width) * 2.0f - 1.0f,
                         (float(glY) + 0.5f) / float(t.height) * 2.0f - 1.0f, s.depth * 2.0f - 1.0f, 1.0f);
     glm::vec4 const world = invViewProj * ndc;

@@ -9,7 +9,6 @@
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
-uniform sampler2D uDepth;
 layout(rgba16f, binding = BIND_IMAGE_LIGHTING) uniform writeonly image2D uLightingImage;
 layout(rg32f, binding = BIND_IMAGE_COVERAGE) uniform writeonly image2D uCoverageImage;
 

@@ -4,11 +4,8 @@
 #include "bindings.glsl"
 
 #include "view_constants.glsl"
+#include "gbuffer_read.glsl"
 
-uniform sampler2D uPosition;
-uniform sampler2D uNormal;
-uniform sampler2D uAlbedoSpec;
-uniform sampler2D uDepth;
 uniform sampler2D uLighting;
 uniform sampler2D uCoverage;
 
@@ -77,13 +74,23 @@ void main() {
     switch (uView) {
     case VIEW_FINAL: v = vec4(tonemap(texelFetch(uLighting, px, 0).rgb), 1.0); data = false; break;
     case VIEW_LIGHTING: v = texelFetch(uLighting, px, 0); break;
-    case VIEW_POSITION: v = texelFetch(uPosition, px, 0); break;
+    // Position and normal decoded as the lighting reads them, so every layout shows the same quantity.
+    case VIEW_POSITION: {
+        vec3 p;
+        bool drawn = gbufferPosition(px, p);
+        v = drawn ? vec4(p, 1.0) : vec4(0.0);
+        break;
+    }
     case VIEW_NORMAL: {
-        vec4 n = texelFetch(uNormal, px, 0);
+        vec3 p;
+        vec4 n = gbufferPosition(px, p) ? vec4(gbufferNormal(px), 1.0) : vec4(0.0);
         v = vec4(uNormalDisplay == NORMALS_ABSOLUTE ? abs(n.xyz) : n.xyz * 0.5 + 0.5, n.w);
         data = false;
         break;
     }
+    case VIEW_RAW0: v = gbufferRawAttachment(px, 0); break;
+    case VIEW_RAW1: v = gbufferRawAttachment(px, 1); break;
+    case VIEW_RAW2: v = gbufferRawAttachment(px, 2); break;
     case VIEW_ALBEDO: v = texelFetch(uAlbedoSpec, px, 0); break;
     case VIEW_SPECULAR: v = vec4(texelFetch(uAlbedoSpec, px, 0).aaa, 1.0); break;
     case VIEW_DEPTH: v = vec4(vec3(texelFetch(uDepth, px, 0).r), 1.0); break;

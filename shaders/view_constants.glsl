@@ -13,6 +13,9 @@
 #define VIEW_DEPTH_LINEAR 7
 #define VIEW_HEATMAP 8
 #define VIEW_TILE_LIGHTS 9
+#define VIEW_RAW0 10
+#define VIEW_RAW1 11
+#define VIEW_RAW2 12
 
 // gbl::Tonemap, TONEMAP_ + the upper-cased kTonemapNames entry.
 #define TONEMAP_EXPOSURE 0

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -109,6 +110,7 @@ TEST(RenderCommand, BadArgumentsExitWithCodeTwoAndOneSentence) {
         {{"render", "--out", out, "--lights", "100000"}, "16384"},
         {{"render", "--out", out, "--blit", "sideways"}, "--blit"},
         {{"render", "--out", out, "--mode", "raytraced"}, "--mode"},
+        {{"render", "--out", out, "--layout", "zip"}, "--layout"},
         {{"render", "--out", out, "--view", "xray"}, "--view"},
         {{"render", "--out", "/proc/gbuffer-lab-cannot-write-here"}, "/proc/gbuffer-lab-cannot-write-here"},
         {{"render"}, "--out"},
@@ -118,6 +120,32 @@ TEST(RenderCommand, BadArgumentsExitWithCodeTwoAndOneSentence) {
         // One sentence: a single line of output, no stack trace or usage dump.
         EXPECT_LE(std::count(r.output.begin(), r.output.end(), '\n'), 1) << c.args.back() << "\n" << r.output;
     }
+}
+
+TEST(RenderCommand, LayoutWritesItsRawAttachmentsAndTheDecodedInputs) {
+    std::string const out = test::freshTempDir("render_layout_packed");
+    auto const r = runGbufferLab({"render", "--out", out, "--size", "64x36", "--layout", "packed"});
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (char const* f : {"raw_normal_oct.exr", "raw_albedo_spec.png", "raw_depth.exr", "position.exr", "normal.exr"})
+        EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
+    EXPECT_FALSE(fs::exists(out + "/raw_position.exr"));
+    std::ifstream statsFile(out + "/stats.json");
+    auto const stats = nlohmann::json::parse(statsFile);
+    EXPECT_EQ(stats["layout"], "packed");
+    EXPECT_EQ(stats["gbuffer_bytes_per_pixel"], 12);
+    // normal.exr is decoded: unit length wherever geometry was drawn (w = 1).
+    auto const normal = readImage(out + "/normal.exr");
+    ASSERT_TRUE(normal);
+    int drawn = 0;
+    for (std::size_t i = 0; i + 3 < normal->pixels.size(); i += 4) {
+        if (normal->pixels[i + 3] == 0.0f) continue;
+        ++drawn;
+        float const len =
+            std::sqrt(normal->pixels[i] * normal->pixels[i] + normal->pixels[i + 1] * normal->pixels[i + 1] +
+                      normal->pixels[i + 2] * normal->pixels[i + 2]);
+        EXPECT_NEAR(len, 1.0f, 1e-3f);
+    }
+    EXPECT_GT(drawn, 64 * 36 / 2);
 }
 
 TEST(RenderCommand, NormalMapsBendTheStoredNormals) {

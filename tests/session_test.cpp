@@ -201,6 +201,25 @@ TEST(Session, FileCarriesFormatAndVersion) {
     EXPECT_EQ(j["pipeline"]["cull"], "front");
 }
 
+TEST(Session, GBufferLayoutIsSavedAndOldFilesLoadAsClassic) {
+    Session s;
+    s.pipeline.layout = GBufferLayout::Packed;
+    json j = json::parse(sessionToJson(s));
+    EXPECT_EQ(j["pipeline"]["layout"], "packed");
+    SessionLoad const back = parseSession(j.dump(), "s.json");
+    ASSERT_TRUE(back.session) << back.error;
+    EXPECT_EQ(back.session->pipeline.layout, GBufferLayout::Packed);
+    // A file written before layouts existed has no pipeline.layout.
+    j["pipeline"].erase("layout");
+    SessionLoad const old = parseSession(j.dump(), "s.json");
+    ASSERT_TRUE(old.session) << old.error;
+    EXPECT_EQ(old.session->pipeline.layout, GBufferLayout::Classic);
+    j["pipeline"]["layout"] = "tiny";
+    SessionLoad const bad = parseSession(j.dump(), "s.json");
+    EXPECT_FALSE(bad.session);
+    EXPECT_NE(bad.error.find("pipeline.layout"), std::string::npos) << bad.error;
+}
+
 TEST(Session, LightNameIsOptional) {
     json j = json::parse(sessionToJson(richSession()));
     j["lights"][0].erase("name");

@@ -16,8 +16,10 @@ namespace gbl {
 
 // Images the renderer keeps per frame. Values are what the pass wrote, exactly as stored.
 enum class Attachment {
-    Position,    // RGBA16F world-space position, w = 1 where geometry was drawn
-    Normal,      // RGBA16F world-space unit normal, w = 1 where drawn
+    // Position and Normal are decoded as the lighting reads them (stored or rebuilt from depth,
+    // whatever the layout's encoding), as float RGBA; Renderer::readRawAttachment gives the bits.
+    Position,    // world-space position, w = 1 where geometry was drawn
+    Normal,      // world-space unit normal, w = 1 where drawn
     AlbedoSpec,  // RGBA8 linear albedo, alpha = specular intensity
     Depth,       // DEPTH32F_STENCIL8 window-space depth of the geometry pass
     // The stencil bits of that same depth-stencil texture, read back as 1 channel of the integer
@@ -48,14 +50,16 @@ struct FrameStats {
     // The lighting mode that actually ran; differs from the requested one only after a fallback
     // (a mode unavailable on this context runs quad), and then fallbackReason says why.
     LightingMode modeUsed = LightingMode::Quad;
+    GBufferLayout layout = GBufferLayout::Classic;  // the G-buffer layout the frame used
     std::string fallbackReason;
 };
 
 // Everything stored at one pixel, read back as floats (for the pixel inspector and tests).
 struct PixelSample {
-    bool covered = false;  // geometry was drawn here
-    glm::vec4 position{0.0f};
-    glm::vec4 normal{0.0f};
+    bool covered = false;       // geometry was drawn here
+    glm::vec4 position{0.0f};   // decoded, as the lighting read it
+    glm::vec4 normal{0.0f};     // decoded unit normal
+    glm::vec4 rawNormal{0.0f};  // the normal attachment as stored (the layout's encoding)
     glm::vec4 albedoSpec{0.0f};
     float depth = 1.0f;                     // window-space depth 0..1
     unsigned stencil = 0;                   // the G-buffer's stencil bits 0..255

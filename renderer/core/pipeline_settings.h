@@ -15,6 +15,8 @@ enum class CullMode { Back, Front, None, Flip, Stencil };
 enum class DepthCopy { Blit, Shader, Off };
 // Values match TONEMAP_* in shaders/view_constants.glsl.
 enum class Tonemap { Exposure, Reinhard, Clamp };
+// How the G-buffer stores a surface; each value has one description in core/gbuffer_layout.h.
+enum class GBufferLayout { Classic, Packed, Naive8, Rgb10a2 };
 
 // What the final image shows. Values match the VIEW_* constants in shaders/view_constants.glsl
 // (shader_constants_test checks them).
@@ -29,6 +31,11 @@ enum class DebugView {
     DepthLinear = 7,
     Heatmap = 8,
     TileLights = 9,
+    // The current layout's colour attachments 0, 1, 2 exactly as stored (core/gbuffer_layout.h
+    // lists them); Position and Normal above show the decoded values for every layout.
+    Raw0 = 10,
+    Raw1 = 11,
+    Raw2 = 12,
 };
 
 struct PipelineSettings {
@@ -37,6 +44,7 @@ struct PipelineSettings {
     DepthCopy depthCopy = DepthCopy::Blit;
     Tonemap tonemap = Tonemap::Exposure;
     DebugView view = DebugView::Final;
+    GBufferLayout layout = GBufferLayout::Classic;
     bool lightCubes = true;
     bool volumeWireframes = false;
     bool wireframesSelectedOnly = false;  // the wireframes outline the selected light's volume only
@@ -57,8 +65,10 @@ inline constexpr std::array<std::string_view, 4> kLightingModeNames{"quad", "vol
 inline constexpr std::array<std::string_view, 5> kCullModeNames{"back", "front", "none", "flip", "stencil"};
 inline constexpr std::array<std::string_view, 3> kDepthCopyNames{"blit", "shader", "off"};
 inline constexpr std::array<std::string_view, 3> kTonemapNames{"exposure", "reinhard", "clamp"};
-inline constexpr std::array<std::string_view, 10> kDebugViewNames{
-    "final", "lighting", "position", "normal", "albedo", "specular", "depth", "depth_linear", "heatmap", "tile_lights"};
+inline constexpr std::array<std::string_view, 4> kGBufferLayoutNames{"classic", "packed", "naive8", "rgb10a2"};
+inline constexpr std::array<std::string_view, 13> kDebugViewNames{
+    "final",        "lighting", "position",    "normal", "albedo", "specular", "depth",
+    "depth_linear", "heatmap",  "tile_lights", "raw0",   "raw1",   "raw2"};
 
 template <class Enum, std::size_t N>
 std::optional<Enum> enumFromName(std::array<std::string_view, N> const& names, std::string_view name) {

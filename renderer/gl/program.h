@@ -40,6 +40,7 @@ public:
     void set(std::string_view name, int v) const { glUniform1i(uniform(name), v); }
     void set(std::string_view name, float v) const { glUniform1f(uniform(name), v); }
     void set(std::string_view name, glm::vec2 v) const { glUniform2f(uniform(name), v.x, v.y); }
+    void set(std::string_view name, glm::ivec2 v) const { glUniform2i(uniform(name), v.x, v.y); }
     void set(std::string_view name, glm::vec3 v) const { glUniform3f(uniform(name), v.x, v.y, v.z); }
     void set(std::string_view name, glm::vec4 v) const { glUniform4f(uniform(name), v.x, v.y, v.z, v.w); }
     void set(std::string_view name, glm::mat3 const& m) const {

@@ -21,6 +21,7 @@ enum class ProgramId {
     LightCube,
     View,
     CoverageAllLights,
+    GBufferDecode,
     // volumes mode
     LightVolume,
     LightVolumeCoverage,

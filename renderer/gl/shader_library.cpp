@@ -69,13 +69,14 @@ std::optional<gl::Program> ShaderLibrary::build(ProgramDesc const& desc, std::st
             if (log) *log = "program " + desc.name + ": " + err;
             return std::nullopt;
         }
-        if (!desc.defines.empty()) {
+        if (!desc.defines.empty() || !globalDefines_.empty()) {
             // Defines go right after the #version line, which must stay the first directive
             // (the one-line file header comment may come before it).
             auto const version = text->find("#version");
             auto const eol = text->find('\n', version == std::string::npos ? 0 : version);
             std::string defs;
             for (auto const& d : desc.defines) defs += "#define " + d + "\n";
+            for (auto const& d : globalDefines_) defs += "#define " + d + "\n";
             text->insert(eol == std::string::npos ? text->size() : eol + 1, defs);
         }
         stages.push_back({stage, file, std::move(*text)});
@@ -105,6 +106,20 @@ bool ShaderLibrary::add(ProgramId id, std::string* log) {
     programs_[std::size_t(id)] = std::move(*program);
     failures_[std::size_t(id)].clear();
     return true;
+}
+
+bool ShaderLibrary::setGlobalDefines(std::vector<std::string> defines, std::string* log) {
+    if (defines == globalDefines_) return true;
+    globalDefines_ = std::move(defines);
+    bool ok = true;
+    for (ProgramInfo const& info : programTable()) {
+        if (!programs_[std::size_t(info.id)]) continue;  // never built: built with the new defines on first use
+        std::string buildLog;
+        if (add(info.id, &buildLog) || !ok) continue;
+        ok = false;
+        if (log) *log = buildLog;
+    }
+    return ok;
 }
 
 std::vector<std::string> ShaderLibrary::reloadChanged() {

@@ -36,6 +36,11 @@ public:
     // (the whole info log with stage and file name).
     std::vector<std::string> reloadChanged();
 
+    // Defines every program gets after its own (the G-buffer layout's, core/gbuffer_layout.h).
+    // Rebuilds every program built so far; returns false and fills *log with the first failure
+    // (that program keeps its previous build).
+    bool setGlobalDefines(std::vector<std::string> defines, std::string* log);
+
     // Text of a shader file with #include lines expanded: from disk when reloading has seen a
     // change to it, otherwise the embedded copy. nullopt when unknown.
     std::optional<std::string> source(std::string const& file, std::string* error = nullptr) const;
@@ -45,6 +50,7 @@ private:
     std::optional<std::string> rawSource(std::string const& file) const;
 
     std::filesystem::path sourceDir_;
+    std::vector<std::string> globalDefines_;
     std::array<gl::Program, kProgramCount> programs_;
     std::array<std::string, kProgramCount> failures_;
     std::map<std::string, std::filesystem::file_time_type> seenTimes_;  // per file on disk

@@ -1,24 +1,51 @@
 // Allocation of the G-buffer, the HDR target and the display target.
 #include "gpu/render_targets.h"
 
+#include <string>
+
 namespace gbl {
 
-std::optional<std::string> createRenderTargets(int width, int height, RenderTargets& out) {
+GLenum glInternalFormat(TexelFormat f) {
+    switch (f) {
+        case TexelFormat::RGBA16F:
+            return GL_RGBA16F;
+        case TexelFormat::RG16:
+            return GL_RG16;
+        case TexelFormat::RGBA8:
+            return GL_RGBA8;
+        case TexelFormat::RGB10A2:
+            return GL_RGB10_A2;
+        case TexelFormat::Depth32FStencil8:
+            return GL_DEPTH32F_STENCIL8;
+        case TexelFormat::Depth24Stencil8:
+            return GL_DEPTH24_STENCIL8;
+    }
+    return GL_RGBA8;
+}
+
+std::optional<std::string> createRenderTargets(int width, int height, GBufferLayout layout, RenderTargets& out) {
     out = RenderTargets{};
+    out.gbuffer.layout = layout;
     out.width = width;
     out.height = height;
     if (out.empty()) return std::nullopt;
     using gl::Framebuffer;
     using gl::Texture;
     GBuffer& g = out.gbuffer;
-    g.position = Texture::create2D(GL_RGBA16F, width, height, "gbuffer.position");
-    g.normal = Texture::create2D(GL_RGBA16F, width, height, "gbuffer.normal");
-    g.albedoSpec = Texture::create2D(GL_RGBA8, width, height, "gbuffer.albedo_spec");
-    g.depth = Texture::create2D(GL_DEPTH32F_STENCIL8, width, height, "gbuffer.depth");
-    g.fbo = Framebuffer::create({&g.position, &g.normal, &g.albedoSpec}, &g.depth, "gbuffer");
+    GBufferLayoutDesc const& desc = layoutDesc(layout);
+    for (GBufferAttachmentDesc const& a : desc.attachments()) {
+        Texture& t = a.slot == GBufferSlot::Position     ? g.position
+                     : a.slot == GBufferSlot::Normal     ? g.normal
+                     : a.slot == GBufferSlot::AlbedoSpec ? g.albedoSpec
+                                                         : g.depth;
+        t = Texture::create2D(glInternalFormat(a.format), width, height, "gbuffer." + std::string(a.name));
+    }
+    // The colour attachments in the layout's order: geometry.frag writes them at locations 0, 1, ...
+    g.fbo = desc.storesPosition ? Framebuffer::create({&g.position, &g.normal, &g.albedoSpec}, &g.depth, "gbuffer")
+                                : Framebuffer::create({&g.normal, &g.albedoSpec}, &g.depth, "gbuffer");
 
     out.lighting = Texture::create2D(GL_RGBA16F, width, height, "lighting.hdr");
-    out.litDepth = Texture::create2D(GL_DEPTH32F_STENCIL8, width, height, "lighting.depth");
+    out.litDepth = Texture::create2D(glInternalFormat(desc.depthFormat()), width, height, "lighting.depth");
     out.litFbo = Framebuffer::create({&out.lighting}, &out.litDepth, "lighting");
     out.volumeFbo = Framebuffer::create({&out.lighting}, &g.depth, "lighting.volumes");
     out.coverage = Texture::create2D(GL_RG32F, width, height, "coverage");

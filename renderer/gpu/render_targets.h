@@ -1,6 +1,7 @@
 // Every screen-sized target of the frame, rebuilt together by resizeTargets().
 #pragma once
 
+#include "core/gbuffer_layout.h"
 #include "gl/framebuffer.h"
 #include "gl/texture.h"
 
@@ -9,20 +10,39 @@
 
 namespace gbl {
 
+// The textures of one G-buffer layout (core/gbuffer_layout.h says which exist and their formats).
 struct GBuffer {
-    gl::Texture position;    // RGBA16F world position, w = 1 where drawn
-    gl::Texture normal;      // RGBA16F world normal, w = 1 where drawn
+    GBufferLayout layout = GBufferLayout::Classic;
+    gl::Texture position;    // world position, w = 1 where drawn; empty when rebuilt from depth
+    gl::Texture normal;      // the encoded world normal
     gl::Texture albedoSpec;  // RGBA8 albedo rgb + specular a
-    gl::Texture depth;       // DEPTH32F_STENCIL8, sampled by the depth views and the shader copy
-    gl::Framebuffer fbo;
+    gl::Texture depth;       // depth-stencil, sampled by position rebuilding, depth views and the shader copy
+    gl::Framebuffer fbo;     // colour attachments in the layout's order
+
+    gl::Texture const& texture(GBufferSlot slot) const {
+        switch (slot) {
+            case GBufferSlot::Position:
+                return position;
+            case GBufferSlot::Normal:
+                return normal;
+            case GBufferSlot::AlbedoSpec:
+                return albedoSpec;
+            case GBufferSlot::Depth:
+                break;
+        }
+        return depth;
+    }
 };
+
+// The GL internal format of a layout's texel format.
+GLenum glInternalFormat(TexelFormat f);
 
 struct RenderTargets {
     int width = 0;
     int height = 0;
     GBuffer gbuffer;
     gl::Texture lighting;    // RGBA16F HDR
-    gl::Texture litDepth;    // DEPTH32F_STENCIL8: same format as the G-buffer depth so blits work
+    gl::Texture litDepth;    // the G-buffer depth's format, so blits work
     gl::Framebuffer litFbo;  // lighting + litDepth: lighting passes and the forward pass
     // lighting + the G-buffer's depth-stencil: light volumes test against the scene depth (and
     // use its stencil) without needing the blit step.
@@ -35,8 +55,8 @@ struct RenderTargets {
     bool empty() const { return width == 0 || height == 0; }
 };
 
-// Creates all targets at w x h (0 x 0 gives empty targets). Returns the first incomplete
-// framebuffer's error, if any.
-std::optional<std::string> createRenderTargets(int width, int height, RenderTargets& out);
+// Creates all targets at w x h (0 x 0 gives empty targets) with the G-buffer in `layout`. Returns
+// the first incomplete framebuffer's error, if any.
+std::optional<std::string> createRenderTargets(int width, int height, GBufferLayout layout, RenderTargets& out);
 
 }  // namespace gbl

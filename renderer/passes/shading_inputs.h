@@ -16,12 +16,14 @@ struct ShadingUniforms {
     glm::vec3 viewPosition{0.0f};
     float shininess = 32.0f;
     glm::vec3 ambient{0.0f};
+    // Rebuilds world position from depth in layouts that do not store it (gbuffer_read.glsl).
+    glm::mat4 inverseViewProj{1.0f};
 };
 
 // Binds `texture` to texture unit `unit` (a BIND_* slot) and leaves unit 0 active.
 void bindTextureUnit(int unit, GLenum target, GLuint texture);
 
-// The G-buffer attachments on their BIND_GBUFFER_* units.
+// The G-buffer attachments on their BIND_GBUFFER_* units and its depth on BIND_DEPTH.
 void bindGBuffer(GBuffer const& gbuffer);
 // The light buffer on BIND_LIGHTS, and uLightCount.
 void bindLights(gl::Program const& program, LightBuffer const& lights);

@@ -30,6 +30,7 @@ void viewPass(ViewInput const& in, ViewConfig const& c) {
     p.set("uNear", c.nearPlane);
     p.set("uFar", c.farPlane);
     p.set("uHeatMax", v.heatMax);
+    p.set("uInverseViewProj", c.inverseViewProj);
     p.set("uColormap", int(v.colormap));  // viewer tools (shaders/view_tools.glsl)
     p.set("uOverlays", int(v.overlays));
     in.triangle.draw();

@@ -27,6 +27,7 @@ struct ViewConfig {
     float farPlane = 100.0f;
     int width = 0;
     int height = 0;
+    glm::mat4 inverseViewProj{1.0f};  // decodes position in layouts that rebuild it from depth
 };
 
 void viewPass(ViewInput const& in, ViewConfig const& config);

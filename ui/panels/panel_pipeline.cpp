@@ -176,6 +176,11 @@ void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailabl
             if (ImGui::Combo("Tonemap", &tonemap, tonemapItems, 3)) settings.tonemap = Tonemap(tonemap);
             ImGui::SliderFloat("Exposure", &settings.exposure, 0.05f, 16.0f, "%.2f",
                                ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+            // The G-buffer layout (core/gbuffer_layout.h); the renderer rebuilds its targets on change.
+            int layout = int(settings.layout);
+            char const* layoutItems[] = {kGBufferLayoutNames[0].data(), kGBufferLayoutNames[1].data(),
+                                         kGBufferLayoutNames[2].data(), kGBufferLayoutNames[3].data()};
+            if (ImGui::Combo("G-buffer", &layout, layoutItems, 4)) settings.layout = GBufferLayout(layout);
             ImGui::PopItemWidth();
         }
         if (ab && section("A/B compare")) abSection(*ab, settings);

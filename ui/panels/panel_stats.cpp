@@ -1,6 +1,7 @@
 // Stats window.
 #include "panels/panel_stats.h"
 
+#include "core/gbuffer_layout.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
 
@@ -88,6 +89,16 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
             ImGui::PopStyleColor();
         }
         ImGui::Text("GL errors this frame: %llu", (unsigned long long)f.glErrors);
+
+        // The G-buffer's cost from its description (core/gbuffer_layout.h): what packing saves.
+        GBufferLayoutDesc const& layout = layoutDesc(f.layout);
+        separatorText("G-buffer memory");
+        ImGui::Text("Layout %s: %d bytes a pixel", layout.name.data(), layoutBytesPerPixel(layout));
+        for (GBufferAttachmentDesc const& a : layout.attachments())
+            ImGui::TextDisabled("  %s %s: %d B", a.name.data(), texelFormatName(a.format).data(), texelBytes(a.format));
+        ImGui::TextWrapped("%.1f MB at %dx%d, %.1f MB at 1080p, %.1f MB at 4K",
+                           layoutMegabytes(layout, f.width, f.height), f.width, f.height,
+                           layoutMegabytes(layout, 1920, 1080), layoutMegabytes(layout, 3840, 2160));
 
         separatorText("Editor cost");
         EditorCost const& c = stats.costAverage;

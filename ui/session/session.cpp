@@ -103,6 +103,7 @@ ojson sessionJson(Session const& s) {
           {"cull", enumName(kCullModeNames, p.cull)},
           {"blit", enumName(kDepthCopyNames, p.depthCopy)},
           {"tonemap", enumName(kTonemapNames, p.tonemap)},
+          {"layout", enumName(kGBufferLayoutNames, p.layout)},
           {"view", enumName(kDebugViewNames, p.view)},
           {"light_cubes", p.lightCubes},
           {"volume_wireframes", p.volumeWireframes},
@@ -274,13 +275,16 @@ std::vector<PointLight> readLights(json const& j) {
 PipelineSettings readPipeline(json const& j) {
     Object o(j, "pipeline",
              {"mode", "cull", "blit", "tonemap", "view", "light_cubes", "volume_wireframes", "normal_maps", "ambient",
-              "exposure", "shininess", "volume_scale"});
+              "exposure", "shininess", "volume_scale", "layout"});
     PipelineSettings p;
     p.mode = enumeration<LightingMode>(o.required("mode"), o.field("mode"), kLightingModeNames);
     p.cull = enumeration<CullMode>(o.required("cull"), o.field("cull"), kCullModeNames);
     p.depthCopy = enumeration<DepthCopy>(o.required("blit"), o.field("blit"), kDepthCopyNames);
     p.tonemap = enumeration<Tonemap>(o.required("tonemap"), o.field("tonemap"), kTonemapNames);
     p.view = enumeration<DebugView>(o.required("view"), o.field("view"), kDebugViewNames);
+    // Optional: sessions written before layouts existed load with today's classic G-buffer.
+    if (json const* layout = o.optional("layout"))
+        p.layout = enumeration<GBufferLayout>(*layout, o.field("layout"), kGBufferLayoutNames);
     p.lightCubes = boolean(o.required("light_cubes"), o.field("light_cubes"));
     p.volumeWireframes = boolean(o.required("volume_wireframes"), o.field("volume_wireframes"));
     p.normalMaps = boolean(o.required("normal_maps"), o.field("normal_maps"));

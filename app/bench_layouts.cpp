@@ -1,0 +1,49 @@
+// The outer loop of bench over G-buffer layouts.
+#include "bench_layouts.h"
+
+#include "core/gbuffer_layout.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+namespace gbl {
+
+namespace {
+int badArgument(std::string const& message) {
+    std::fprintf(stderr, "gbuffer-lab bench: %s\n", message.c_str());
+    return 2;
+}
+}  // namespace
+
+int runBenchLayouts(BenchOptions const& o) {
+    if (o.layouts.size() <= 1) {
+        if (!o.layouts.empty() && !enumFromName<GBufferLayout>(kGBufferLayoutNames, o.layouts.front()))
+            return badArgument("--layouts must list classic, packed, naive8 or rgb10a2, got '" + o.layouts.front() +
+                               "'");
+        return runBench(o);
+    }
+    for (auto const& name : o.layouts)
+        if (!enumFromName<GBufferLayout>(kGBufferLayoutNames, name))
+            return badArgument("--layouts must list classic, packed, naive8 or rgb10a2, got '" + name + "'");
+    for (auto const& name : o.layouts) {
+        GBufferLayoutDesc const& d = layoutDesc(*enumFromName<GBufferLayout>(kGBufferLayoutNames, name));
+        std::printf("\n== G-buffer layout %s: %d bytes per pixel (", d.name.data(), layoutBytesPerPixel(d));
+        for (std::size_t i = 0; i < d.attachments().size(); ++i)
+            std::printf("%s%s %s %d", i ? ", " : "", d.attachments()[i].name.data(),
+                        texelFormatName(d.attachments()[i].format).data(), texelBytes(d.attachments()[i].format));
+        std::printf(") ==\n");
+        std::fflush(stdout);
+        BenchOptions one = o;
+        one.layouts = {name};
+        if (o.jsonPath) {
+            // One file per layout next to the one asked for: results_packed.json, ...
+            std::filesystem::path p(*o.jsonPath);
+            one.jsonPath = (p.parent_path() / (p.stem().string() + "_" + name + p.extension().string())).string();
+        }
+        if (int const rc = runBench(one); rc != 0) return rc;
+    }
+    return 0;
+}
+
+}  // namespace gbl

@@ -1,0 +1,150 @@
+// The G-buffer layouts: one description per layout (attachments, formats, bytes, how position and
+// normal are stored), read by the render targets, the shader library's defines, read-back and export.
+#pragma once
+
+#include "core/pipeline_settings.h"
+
+#include <array>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gbl {
+
+// Texel formats the layouts use. gpu/render_targets.cpp maps them to GL internal formats.
+enum class TexelFormat { RGBA16F, RG16, RGBA8, RGB10A2, Depth32FStencil8, Depth24Stencil8 };
+
+// Bytes one texel of `f` occupies. DEPTH32F_STENCIL8 is a 64-bit texel (GL's packed type
+// FLOAT_32_UNSIGNED_INT_24_8_REV: 24 bits of padding), so it counts 8, not 5.
+constexpr int texelBytes(TexelFormat f) {
+    switch (f) {
+        case TexelFormat::RGBA16F:
+        case TexelFormat::Depth32FStencil8:
+            return 8;
+        case TexelFormat::RG16:
+        case TexelFormat::RGBA8:
+        case TexelFormat::RGB10A2:
+        case TexelFormat::Depth24Stencil8:
+            return 4;
+    }
+    return 0;
+}
+
+constexpr std::string_view texelFormatName(TexelFormat f) {
+    constexpr std::array<std::string_view, 6> names{"RGBA16F",         "RG16", "RGBA8", "RGB10_A2", "DEPTH32F_STENCIL8",
+                                                    "DEPTH24_STENCIL8"};
+    return names[std::size_t(f)];
+}
+
+// How the normal attachment holds the unit normal n (shaders/gbuffer_encoding.glsl encodes and
+// decodes, core/octahedral.h is the C++ twin of the octahedral one).
+enum class NormalEncoding {
+    Float,       // xyz = n, w = 1
+    Biased,      // xyz = n * 0.5 + 0.5 in a unorm target, w = 1
+    Octahedral,  // xy = oct(n) * 0.5 + 0.5 in RG16 unorm
+};
+
+// Which texture of the G-buffer an attachment is.
+enum class GBufferSlot { Position, Normal, AlbedoSpec, Depth };
+
+struct GBufferAttachmentDesc {
+    GBufferSlot slot;
+    std::string_view name;  // raw_<name>.exr / .png on export
+    TexelFormat format;
+};
+
+struct GBufferLayoutDesc {
+    std::string_view name;  // as in kGBufferLayoutNames
+    bool storesPosition;    // false: rebuilt from depth and the inverse view-projection
+    NormalEncoding normalEncoding;
+    // Colour attachments in draw-buffer order (location 0, 1, ...), then the depth-stencil.
+    std::array<GBufferAttachmentDesc, 4> attachmentArray;
+    int attachmentCount;
+
+    std::span<GBufferAttachmentDesc const> attachments() const {
+        return {attachmentArray.data(), std::size_t(attachmentCount)};
+    }
+    std::span<GBufferAttachmentDesc const> colorAttachments() const {
+        return {attachmentArray.data(), std::size_t(attachmentCount - 1)};
+    }
+    TexelFormat depthFormat() const { return attachmentArray[std::size_t(attachmentCount - 1)].format; }
+};
+
+// The one table of layouts, in GBufferLayout order. Layouts that rebuild position use a 24-bit
+// depth so the whole G-buffer stays at 12 bytes a pixel; classic keeps today's 32-bit float depth.
+inline constexpr std::array<GBufferLayoutDesc, 4> kGBufferLayouts{{
+    {"classic",
+     true,
+     NormalEncoding::Float,
+     {{{GBufferSlot::Position, "position", TexelFormat::RGBA16F},
+       {GBufferSlot::Normal, "normal", TexelFormat::RGBA16F},
+       {GBufferSlot::AlbedoSpec, "albedo_spec", TexelFormat::RGBA8},
+       {GBufferSlot::Depth, "depth", TexelFormat::Depth32FStencil8}}},
+     4},
+    {"packed",
+     false,
+     NormalEncoding::Octahedral,
+     {{{GBufferSlot::Normal, "normal_oct", TexelFormat::RG16},
+       {GBufferSlot::AlbedoSpec, "albedo_spec", TexelFormat::RGBA8},
+       {GBufferSlot::Depth, "depth", TexelFormat::Depth24Stencil8}}},
+     3},
+    {"naive8",
+     false,
+     NormalEncoding::Biased,
+     {{{GBufferSlot::Normal, "normal8", TexelFormat::RGBA8},
+       {GBufferSlot::AlbedoSpec, "albedo_spec", TexelFormat::RGBA8},
+       {GBufferSlot::Depth, "depth", TexelFormat::Depth24Stencil8}}},
+     3},
+    {"rgb10a2",
+     false,
+     NormalEncoding::Biased,
+     {{{GBufferSlot::Normal, "normal10", TexelFormat::RGB10A2},
+       {GBufferSlot::AlbedoSpec, "albedo_spec", TexelFormat::RGBA8},
+       {GBufferSlot::Depth, "depth", TexelFormat::Depth24Stencil8}}},
+     3},
+}};
+
+constexpr GBufferLayoutDesc const& layoutDesc(GBufferLayout l) {
+    return kGBufferLayouts[std::size_t(l)];
+}
+
+// The colour-attachment index (draw buffer) of `slot`, or -1 when the layout does not store it.
+constexpr int colorAttachmentIndex(GBufferLayoutDesc const& d, GBufferSlot slot) {
+    for (int i = 0; i + 1 < d.attachmentCount; ++i)
+        if (d.attachmentArray[std::size_t(i)].slot == slot) return i;
+    return -1;
+}
+
+// The #defines that select this layout's encode (geometry.frag) and decode (gbuffer_read.glsl).
+inline std::vector<std::string> layoutShaderDefines(GBufferLayoutDesc const& d) {
+    std::vector<std::string> out;
+    if (!d.storesPosition) out.push_back("GBUFFER_POSITION_FROM_DEPTH");
+    switch (d.normalEncoding) {
+        case NormalEncoding::Float:
+            break;
+        case NormalEncoding::Biased:
+            out.push_back("GBUFFER_NORMAL_BIASED");
+            break;
+        case NormalEncoding::Octahedral:
+            out.push_back("GBUFFER_NORMAL_OCTAHEDRAL");
+            break;
+    }
+    return out;
+}
+
+// --- memory --------------------------------------------------------------------------------------
+
+constexpr int layoutBytesPerPixel(GBufferLayoutDesc const& d) {
+    int sum = 0;
+    for (int i = 0; i < d.attachmentCount; ++i) sum += texelBytes(d.attachmentArray[std::size_t(i)].format);
+    return sum;
+}
+
+// Megabytes (10^6 bytes) the layout's attachments take at width x height.
+constexpr double layoutMegabytes(GBufferLayoutDesc const& d, int width, int height) {
+    return double(layoutBytesPerPixel(d)) * double(width) * double(height) / 1.0e6;
+}
+
+}  // namespace gbl

@@ -1,0 +1,33 @@
+// G-buffer decode pass.
+#include "passes/gbuffer_decode.h"
+
+#include "passes/shading_inputs.h"
+
+namespace gbl {
+
+DecodedGBuffer createDecodedGBuffer(int width, int height) {
+    DecodedGBuffer d;
+    d.width = width;
+    d.height = height;
+    d.position = gl::Texture::create2D(GL_RGBA32F, width, height, "gbuffer.decoded_position");
+    d.normal = gl::Texture::create2D(GL_RGBA32F, width, height, "gbuffer.decoded_normal");
+    d.fbo = gl::Framebuffer::create({&d.position, &d.normal}, nullptr, "gbuffer.decoded");
+    return d;
+}
+
+void gbufferDecodePass(GBufferDecodeInput const& in, GBufferDecodeConfig const& c) {
+    glBindFramebuffer(GL_FRAMEBUFFER, in.target.fbo.id());
+    glViewport(0, 0, in.target.width, in.target.height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    in.program.use();
+    bindGBuffer(in.gbuffer);
+    in.program.set("uInverseViewProj", c.inverseViewProj);
+    in.program.set("uPixelOffset", c.pixelOffset);
+    in.triangle.draw();
+    glEnable(GL_CULL_FACE);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace gbl
