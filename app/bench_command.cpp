@@ -162,8 +162,9 @@ Result runCombination(Renderer& renderer, Camera const& camera, std::span<PointL
     }
     r.framesMeasured = int(frame.size());
     // One more frame, untimed, with the heat map: its coverage counts give the lit pixels and
-    // the (light, pixel) pairs (renderer/passes/coverage.h). Skipped when over budget.
-    if (r.framesMeasured > 0 && frameFitsBudget(elapsed(), 2.0 * slowest, o.budgetSeconds)) {
+    // the (light, pixel) pairs (renderer/passes/coverage.h). It runs even past the budget, which
+    // bounds the measured frames: without it no per-pair cost can be given.
+    if (r.framesMeasured > 0) {
         FrameInput counted = input;
         counted.settings.view = DebugView::Heatmap;
         r.glErrors += renderer.render(counted).glErrors;

@@ -21,7 +21,7 @@ struct BenchOptions {
     std::vector<std::string> culls{"front"};
     int frames = 20;            // measured frames per combination
     int warmup = 3;             // frames rendered and thrown away first (shader and cache warm-up)
-    double budgetSeconds = 60;  // wall-clock budget per combination, warm-up included
+    double budgetSeconds = 60;  // wall-clock budget per combination's warm-up and measured frames
     // Stretches every light's falloff (Kl / s, Kq / s^2) so radii scale by s: a number, or
     // "auto" for s = sqrt(32 / lights) when lights > 32, which keeps the lit area per light
     // count, and so the lights reaching each pixel, as in the 32-light default scene. 1 = the

@@ -16,7 +16,6 @@ layout(rg32f, binding = BIND_IMAGE_COVERAGE) uniform writeonly image2D uCoverage
 uniform int uLightCount;
 uniform vec3 uAmbient;
 uniform mat4 uView;
-uniform mat4 uInverseProjection;
 uniform ivec2 uScreenSize;
 uniform float uNear;
 uniform float uFar;
@@ -36,17 +35,8 @@ shared uint sMinDepthBits;
 shared uint sMaxDepthBits;
 
 #include "depth.glsl"
+#include "tile_frustum.glsl"
 
-vec3 unprojectFar(vec2 ndc) {
-    vec4 v = uInverseProjection * vec4(ndc, 1.0, 1.0);
-    return v.xyz / v.w;
-}
-
-vec4 sidePlane(vec3 a, vec3 b, vec3 inside) {
-    vec3 n = normalize(cross(a, b));
-    if (dot(n, inside) < 0.0) n = -n;
-    return vec4(n, 0.0);
-}
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);

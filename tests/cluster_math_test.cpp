@@ -81,3 +81,13 @@ TEST(ClusterMath, SphereTouchesBoxByDistanceToTheBox) {
     EXPECT_FALSE(sphereTouchesBox({1.5f, 1.5f, -1.5f}, 0.86f, b));
     EXPECT_FALSE(sphereTouchesBox({0.0f, 0.0f, -2.5f}, 0.0f, b));  // radius 0 lights shade nothing
 }
+
+TEST(ClusterMath, ListCapFitsOneStorageBlock) {
+    int const clusters = clusterGrid(1280, 720).count();                  // 86,400
+    EXPECT_EQ(clusterListCap(clusters, 128LL << 20), kClusterMaxLights);  // 134,217,728 / 345,600 = 388
+    int const big = clusterGrid(3840, 2160).count();                      // 240 x 135 x 24 = 777,600
+    EXPECT_EQ(clusterListCap(big, 128LL << 20), 43);                      // 134,217,728 / 3,110,400
+    EXPECT_EQ(clusterListCap(big, 16LL << 20), 5);
+    EXPECT_EQ(clusterListCap(clusters, 100), 0);  // too small for one entry: every pixel loops over all
+    EXPECT_EQ(clusterListCap(0, 100), kClusterMaxLights);
+}

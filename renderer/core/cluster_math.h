@@ -15,9 +15,19 @@ namespace gbl {
 
 inline constexpr int kClusterTileSize = 16;  // pixels, as tiled mode's tiles
 inline constexpr int kClusterSlices = 24;    // exponential depth slices between near and far
-// Lights stored per cluster. A cluster reached by more keeps its true count, and its pixels loop
-// over every light (exact, slower) instead of the list: the cap costs time, never correctness.
-inline constexpr int kClusterMaxLights = 128;
+// Lights stored per cluster, at most. A cluster reached by more keeps its true count, and its
+// pixels loop over every light (exact, slower) instead of the list: the cap costs time, never
+// correctness. 256 holds the default scene's 512 lights at their full radii.
+inline constexpr int kClusterMaxLights = 256;
+
+// The list length that fits one storage block (GL_MAX_SHADER_STORAGE_BLOCK_SIZE: 16 MiB is all GL
+// 4.3 guarantees, llvmpipe gives 128 MiB) for `clusters` clusters of 4-byte indices: 256 at
+// 1280x720 on llvmpipe, fewer at larger sizes; 0 makes every pixel loop over every light.
+inline int clusterListCap(int clusters, long long maxBlockBytes) {
+    if (clusters <= 0) return kClusterMaxLights;
+    long long const fits = maxBlockBytes / (4LL * clusters);
+    return int(std::clamp<long long>(fits, 0, kClusterMaxLights));
+}
 
 struct ClusterGrid {
     int tilesX = 0;

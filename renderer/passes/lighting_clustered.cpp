@@ -3,17 +3,20 @@
 
 #include "gl/shader_bindings.h"
 
+#include <algorithm>
+
 namespace gbl {
 
 namespace {
 
 void setGridUniforms(gl::Program const& p, LightingClusteredInput const& in, LightingClusteredConfig const& c,
                      ClusterGrid const& g) {
+    // Both programs must agree on the list length, and it is only known once the lists exist.
     p.set("uView", c.view);
     glUniform2i(p.uniform("uScreenSize"), c.width, c.height);
     glUniform3i(p.uniform("uGrid"), g.tilesX, g.tilesY, g.slices);
     p.set("uTileSize", kClusterTileSize);
-    p.set("uMaxLights", kClusterMaxLights);
+    p.set("uMaxLights", in.lists.cap);
     p.set("uNear", c.nearPlane);
     p.set("uFar", c.farPlane);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_CLUSTER_COUNTS, in.lists.counts.id());
@@ -25,12 +28,15 @@ void setGridUniforms(gl::Program const& p, LightingClusteredInput const& in, Lig
 void clusterListsPass(LightingClusteredInput const& in, LightingClusteredConfig const& c) {
     ClusterGrid const g = clusterGrid(c.width, c.height);
     ClusterLists& l = in.lists;
-    if (l.clusters < g.count() || !l.counts) {
+    if (l.clusters != g.count() || !l.counts) {
+        GLint64 maxBlock = 0;
+        glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+        l.cap = clusterListCap(g.count(), maxBlock);
         l.counts = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER, std::size_t(g.count()) * sizeof(GLuint), nullptr,
                                       GL_DYNAMIC_COPY, "cluster counts");
-        l.lights =
-            gl::Buffer::create(GL_SHADER_STORAGE_BUFFER, std::size_t(g.count()) * kClusterMaxLights * sizeof(GLuint),
-                               nullptr, GL_DYNAMIC_COPY, "cluster lights");
+        l.lights = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER,
+                                      std::size_t(g.count()) * std::size_t(std::max(l.cap, 1)) * sizeof(GLuint),
+                                      nullptr, GL_DYNAMIC_COPY, "cluster lights");
         l.clusters = g.count();
     }
     gl::Program const& p = in.build;
@@ -38,7 +44,7 @@ void clusterListsPass(LightingClusteredInput const& in, LightingClusteredConfig 
     bindLights(p, in.deferred.lights);
     p.set("uInverseProjection", glm::inverse(c.projection));
     setGridUniforms(p, in, c, g);
-    glDispatchCompute(GLuint((g.count() + 63) / 64), 1, 1);
+    glDispatchCompute(GLuint(g.tilesX), GLuint(g.tilesY), 1);  // one work group per tile, a slice per invocation
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

@@ -11,8 +11,9 @@ namespace gbl {
 // The per-cluster light lists, kept between frames and regrown when the grid grows.
 struct ClusterLists {
     gl::Buffer counts;  // uint per cluster: lights reaching it (also past the cap)
-    gl::Buffer lights;  // kClusterMaxLights uint light indices per cluster, ascending
+    gl::Buffer lights;  // `cap` uint light indices per cluster, ascending
     int clusters = 0;
+    int cap = 0;  // clusterListCap() for this grid and context
 };
 
 struct LightingClusteredInput {

@@ -171,7 +171,11 @@ std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointL
                                    in.pixel.x / kClusterTileSize, glY / kClusterTileSize, slice, in.camera.nearPlane,
                                    in.camera.farPlane);
                 // The shader's margin (cluster_build.comp): a hair over the radius.
-                bool const listed = radius > 0.0f && sphereTouchesBox(centreView, radius * 1.0001f + 1e-4f, box);
+                // As cluster_build.comp: the tile's frustum (near to far) first, then the slice's box.
+                bool const listed =
+                    radius > 0.0f &&
+                    sphereTouchesTile(tile, in.camera.nearPlane, in.camera.farPlane, centreView, radius) &&
+                    sphereTouchesBox(centreView, radius * 1.0001f + 1e-4f, box);
                 v.evaluations = listed ? 1 : 0;
                 v.why = listed ? "in the cluster's light list" : "not evaluated: not in the cluster's light list";
                 break;
