@@ -24,7 +24,6 @@ uniform float uNear;
 uniform float uFar;
 uniform bool uShade;          // write the lit image
 uniform bool uWriteCoverage;  // write x = lights in the cluster's list, y = lights that lit the pixel
-uniform bool uSliceView;      // coverage x = the pixel's depth slice instead (the depth-slice view)
 
 void addLight(int i, vec3 pos, vec3 n, vec4 as, inout vec3 color, inout float lit) {
     vec4 pr = texelFetch(uLights, i * 4);
@@ -60,5 +59,5 @@ void main() {
         for (int i = 0; i < uLightCount; ++i) addLight(i, pos, n, as, color, lit);
     }
     if (uShade) imageStore(uLightingImage, px, vec4(color, 1.0));
-    if (uWriteCoverage) imageStore(uCoverageImage, px, vec4(uSliceView ? float(slice) : float(count), lit, 0.0, 0.0));
+    if (uWriteCoverage) imageStore(uCoverageImage, px, vec4(float(count), lit, 0.0, 0.0));
 }

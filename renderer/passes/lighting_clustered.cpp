@@ -56,7 +56,6 @@ LightingOutput clusterShadePass(LightingClusteredInput const& in, LightingCluste
     setGridUniforms(p, in, c, g);
     p.set("uShade", c.shade ? 1 : 0);
     p.set("uWriteCoverage", c.coverage ? 1 : 0);
-    p.set("uSliceView", c.sliceView ? 1 : 0);
     // Both image units are bound whatever the flags, so the program's declared images are valid.
     glBindImageTexture(slot::BIND_IMAGE_LIGHTING, in.hdr.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glBindImageTexture(slot::BIND_IMAGE_COVERAGE, in.coverage.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);

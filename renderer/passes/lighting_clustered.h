@@ -31,9 +31,8 @@ struct LightingClusteredConfig {
     int height = 0;
     float nearPlane = 0.1f;
     float farPlane = 100.0f;
-    bool shade = true;       // write the lit image
-    bool coverage = false;   // write x = lights in the pixel's cluster, y = lights that lit the pixel
-    bool sliceView = false;  // with coverage: x = the pixel's depth slice instead
+    bool shade = true;      // write the lit image
+    bool coverage = false;  // write x = lights in the pixel's cluster, y = lights that lit the pixel
 };
 
 // Builds the lists (first dispatch) and shades from them (second); the two are one pass for
