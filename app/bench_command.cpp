@@ -57,6 +57,10 @@ struct Result {
     std::optional<std::uint64_t> evaluatedPairs;
     int lightsShaded = 0;
     std::uint64_t glErrors = 0;
+    std::string timing;  // how pass times were measured (FrameStats::timingSource)
+    std::string timingReason;
+    PairCost pairs;               // filled once every combination ran (quad's cost is the reference)
+    int quadReferenceLights = 0;  // light count of the quad figure used, 0 for none
 };
 
 struct Coverage {
@@ -108,6 +112,13 @@ Result runCombination(Renderer& renderer, Camera const& camera, std::span<PointL
         r.note = *why;
         return r;
     }
+    if ((c.mode == LightingMode::Quad || c.mode == LightingMode::Forward) && c.lights > kEveryLightModesMaxLights) {
+        r.status = "unavailable";
+        r.note = std::string(enumName(kLightingModeNames, c.mode)) +
+                 " shades every light at every pixel; bench runs it up to " +
+                 std::to_string(kEveryLightModesMaxLights) + " lights";
+        return r;
+    }
     if (auto const predicted = predictedFrameSeconds(done, c); predicted && *predicted > o.budgetSeconds) {
         char buf[160];
         std::snprintf(buf, sizeof buf,
@@ -138,6 +149,8 @@ Result runCombination(Renderer& renderer, Camera const& camera, std::span<PointL
         slowest = std::max(slowest, std::chrono::duration<double>(Clock::now() - t0).count());
         r.glErrors += s.glErrors;
         r.lightsShaded = s.lightsShaded;
+        r.timing = s.timingSource;
+        r.timingReason = s.timingReason;
         if (i < o.warmup) continue;
         frame.push_back(s.gpuFrameMs);
         if (s.fragmentInvocations) fragments.push_back(double(*s.fragmentInvocations));
@@ -149,8 +162,9 @@ Result runCombination(Renderer& renderer, Camera const& camera, std::span<PointL
     }
     r.framesMeasured = int(frame.size());
     // One more frame, untimed, with the heat map: its coverage counts give the lit pixels and
-    // the (light, pixel) pairs (renderer/passes/coverage.h). Skipped when over budget.
-    if (r.framesMeasured > 0 && frameFitsBudget(elapsed(), 2.0 * slowest, o.budgetSeconds)) {
+    // the (light, pixel) pairs (renderer/passes/coverage.h). It runs even past the budget, which
+    // bounds the measured frames: without it no per-pair cost can be given.
+    if (r.framesMeasured > 0) {
         FrameInput counted = input;
         counted.settings.view = DebugView::Heatmap;
         r.glErrors += renderer.render(counted).glErrors;
@@ -191,6 +205,38 @@ std::optional<double> asDouble(std::optional<std::uint64_t> v) {
     return v ? std::optional<double>(double(*v)) : std::nullopt;
 }
 
+// The lighting work of a frame: the deferred lighting pass (tiled and clustered build their light
+// lists inside it or in light_lists, counted here too) or forward's single shading pass.
+double lightingMs(Result const& r) {
+    double ms = 0.0;
+    for (auto const& [name, s] : r.passMs)
+        if (name == "lighting" || name == "light_lists" || name == "forward_shading") ms += s.median;
+    return ms;
+}
+
+// Per-pair costs for every result, against quad at the same light count or, where quad was not
+// measured there (it refuses or runs over budget at large counts), the nearest count that has
+// one: quad's cost per pair hardly depends on the count.
+void fillPairCosts(std::vector<Result>& results) {
+    for (auto& r : results) {
+        if (r.framesMeasured == 0 || !r.evaluatedPairs || !r.lightPixelPairs) continue;
+        Result const* quad = nullptr;
+        for (auto const& q : results) {
+            if (q.combo.mode != LightingMode::Quad || q.framesMeasured == 0 || !q.evaluatedPairs ||
+                *q.evaluatedPairs == 0)
+                continue;
+            if (!quad || std::abs(q.combo.lights - r.combo.lights) < std::abs(quad->combo.lights - r.combo.lights))
+                quad = &q;
+        }
+        double quadNs = std::nan("");
+        if (quad) {
+            quadNs = lightingMs(*quad) * 1e6 / double(*quad->evaluatedPairs);
+            r.quadReferenceLights = quad->combo.lights;
+        }
+        r.pairs = pairCost({lightingMs(r), *r.evaluatedPairs, *r.lightPixelPairs}, quadNs);
+    }
+}
+
 // The quad result with the same light count, for the speed-up column.
 Result const* quadFor(std::vector<Result> const& results, int lights) {
     for (auto const& r : results)
@@ -201,8 +247,11 @@ Result const* quadFor(std::vector<Result> const& results, int lights) {
 void printTable(std::vector<Result> const& results, GlCaps const& caps, Size2 size, BenchOptions const& o) {
     std::printf("gbuffer-lab bench: %dx%d, %s | %s | %s\n", size.width, size.height, caps.vendor.c_str(),
                 caps.renderer.c_str(), caps.version.c_str());
-    std::printf("%d warm-up + %d measured frames per combination, budget %.0f s each; GPU times from timer queries\n\n",
-                o.warmup, o.frames, o.budgetSeconds);
+    std::string timing;
+    for (auto const& r : results)
+        if (timing.empty()) timing = r.timingReason;
+    std::printf("%d warm-up + %d measured frames per combination, budget %.0f s each\npass times: %s\n\n", o.warmup,
+                o.frames, o.budgetSeconds, timing.c_str());
     std::printf("%-16s %6s %6s %7s %11s %11s %9s %10s %10s %8s %9s %9s  %s\n", "mode", "lights", "radius", "frames",
                 "frame med", "frame p95", "vs quad", "frag.inv", "lit px", "shaded", "lit pairs", "evaluated",
                 "status");
@@ -241,9 +290,36 @@ void printTable(std::vector<Result> const& results, GlCaps const& caps, Size2 si
         "lit pairs: (light, pixel) pairs where the light reached the surface; evaluated: (light, pixel) pairs the\n"
         "mode ran its shading for (volume fragments, tile-list entries, every light for quad). lit pairs /\n"
         "lit px is the least work per pixel any exact method needs; evaluated / lit pairs is the waste.\n");
+    std::printf(
+        "\nper-pair cost: lighting ms per evaluated light\u00b7pixel pair; work floor = lit pairs \u00d7 quad's ns "
+        "per pair.\n");
+    std::printf("%-16s %6s %9s %10s %10s %11s %9s\n", "mode", "lights", "ns/pair", "eval/lit", "vs quad", "floor ms",
+                "vs floor");
+    for (auto const& r : results) {
+        if (!std::isfinite(r.pairs.nsPerEvaluated)) continue;
+        std::printf("%-16s %6d %9.2f %10.2f %10.2f %11.1f %9.2f\n", comboName(r.combo).c_str(), r.combo.lights,
+                    r.pairs.nsPerEvaluated, r.pairs.evaluatedPerLit, r.pairs.perPairVsQuad, r.pairs.floorMs,
+                    r.pairs.vsFloor);
+    }
+    for (auto const& r : results) {
+        if (!std::isfinite(r.pairs.nsPerEvaluated)) continue;
+        std::string const ref = r.quadReferenceLights && r.quadReferenceLights != r.combo.lights
+                                    ? " [quad cost from " + std::to_string(r.quadReferenceLights) + " lights]"
+                                    : "";
+        std::printf("%6d lights, %s%s\n", r.combo.lights, pairVerdict(comboName(r.combo), r.pairs).c_str(),
+                    ref.c_str());
+    }
+}
+
+// NaN is not JSON: absent figures are null.
+json number(double v) {
+    return std::isfinite(v) ? json(v) : json(nullptr);
 }
 
 json toJson(std::vector<Result> const& results, GlCaps const& caps, Size2 size, BenchOptions const& o) {
+    std::string timing, timingReason;
+    for (auto const& r : results)
+        if (timing.empty()) timing = r.timing, timingReason = r.timingReason;
     json combos = json::array();
     for (auto const& r : results) {
         json passes = json::object();
@@ -264,6 +340,15 @@ json toJson(std::vector<Result> const& results, GlCaps const& caps, Size2 size, 
         if (r.litPixels) j["lit_pixels"] = *r.litPixels;
         if (r.lightPixelPairs) j["light_pixel_pairs"] = *r.lightPixelPairs;
         if (r.evaluatedPairs) j["evaluated_light_pixel_pairs"] = *r.evaluatedPairs;
+        if (std::isfinite(r.pairs.nsPerEvaluated))
+            j["pair_cost"] = {{"lighting_ms", lightingMs(r)},
+                              {"ns_per_evaluated_pair", number(r.pairs.nsPerEvaluated)},
+                              {"evaluated_per_lit_pair", number(r.pairs.evaluatedPerLit)},
+                              {"per_pair_vs_quad", number(r.pairs.perPairVsQuad)},
+                              {"work_floor_ms", number(r.pairs.floorMs)},
+                              {"vs_work_floor", number(r.pairs.vsFloor)},
+                              {"quad_reference_lights", r.quadReferenceLights},
+                              {"verdict", pairVerdict(comboName(r.combo), r.pairs)}};
         combos.push_back(j);
     }
     return {{"gl_vendor", caps.vendor},
@@ -275,6 +360,8 @@ json toJson(std::vector<Result> const& results, GlCaps const& caps, Size2 size, 
             {"frames", o.frames},
             {"budget_seconds", o.budgetSeconds},
             {"pipeline_statistics", caps.pipelineStatistics},
+            {"timing", timing},
+            {"timing_reason", timingReason},
             {"combinations", combos}};
 }
 
@@ -283,7 +370,7 @@ json toJson(std::vector<Result> const& results, GlCaps const& caps, Size2 size, 
 void addBenchOptions(CLI::App& sub, BenchOptions& o) {
     sub.add_option("--size", o.size, "Frame size WxH")->capture_default_str();
     sub.add_option("--lights", o.lights, "Light counts, comma-separated")->delimiter(',')->capture_default_str();
-    sub.add_option("--modes", o.modes, "Lighting modes, comma-separated: quad, volumes, tiled, forward")
+    sub.add_option("--modes", o.modes, "Lighting modes, comma-separated: quad, volumes, tiled, forward, clustered")
         ->delimiter(',')
         ->capture_default_str();
     sub.add_option("--cull", o.culls,
@@ -315,7 +402,7 @@ int runBench(BenchOptions const& o) {
     std::vector<LightingMode> modes;
     for (auto const& name : o.modes) {
         auto m = enumFromName<LightingMode>(kLightingModeNames, name);
-        if (!m) return badArgument("--modes must list quad, volumes, tiled or forward, got '" + name + "'");
+        if (!m) return badArgument("--modes must list quad, volumes, tiled, forward or clustered, got '" + name + "'");
         modes.push_back(*m);
     }
     std::vector<CullMode> culls;
@@ -400,6 +487,7 @@ int runBench(BenchOptions const& o) {
         }
     }
 
+    fillPairCosts(results);
     printTable(results, renderer.caps(), *size, o);
     if (o.jsonPath) {
         std::ofstream f(*o.jsonPath, std::ios::trunc);

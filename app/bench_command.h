@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,12 +16,12 @@ namespace gbl {
 struct BenchOptions {
     std::string size = "1280x720";
     std::vector<int> lights{32, 256, 1024, 4096};
-    std::vector<std::string> modes{"quad", "volumes", "tiled", "forward"};
+    std::vector<std::string> modes{"quad", "volumes", "tiled", "clustered", "forward"};
     // Cull modes measured for `volumes` (each one is its own combination); other modes ignore it.
     std::vector<std::string> culls{"front"};
     int frames = 20;            // measured frames per combination
     int warmup = 3;             // frames rendered and thrown away first (shader and cache warm-up)
-    double budgetSeconds = 60;  // wall-clock budget per combination, warm-up included
+    double budgetSeconds = 60;  // wall-clock budget per combination's warm-up and measured frames
     // Stretches every light's falloff (Kl / s, Kq / s^2) so radii scale by s: a number, or
     // "auto" for s = sqrt(32 / lights) when lights > 32, which keeps the lit area per light
     // count, and so the lights reaching each pixel, as in the 32-light default scene. 1 = the
@@ -45,6 +47,11 @@ void addBenchOptions(CLI::App& sub, BenchOptions& options);
 // an unwritable JSON file, 1 when no GL context can be had.
 int runBench(BenchOptions const& options);
 
+// quad and forward shade every light at every pixel, so their frame grows with lights x pixels:
+// above this many lights (the old light limit) bench refuses them rather than spend minutes on
+// one frame. volumes, tiled and clustered cull, and run up to kMaxLights.
+inline constexpr int kEveryLightModesMaxLights = 16384;
+
 // --- statistics (pure; tests/bench_stats_test.cpp) ----------------------------------------
 
 // Nearest-rank percentile: the smallest sample with at least p of the samples at or below it
@@ -60,6 +67,59 @@ inline double percentile(std::vector<double> samples, double p) {
 // slowest frame so far (frames of one combination vary little; the slowest keeps the guess safe).
 inline bool frameFitsBudget(double elapsedSeconds, double slowestFrameSeconds, double budgetSeconds) {
     return elapsedSeconds + slowestFrameSeconds <= budgetSeconds;
+}
+
+// --- per-pair cost (pure; tests/bench_stats_test.cpp) ---------------------------------------
+//
+// A mode's lighting pass does work per evaluated (light, pixel) pair: the coverage target's x,
+// summed. The pairs that actually receive light (its y, summed) are what any exact method must
+// evaluate; at the cheapest per-pair cost (quad's, which does nothing but shade) they are the
+// work floor. A mode's distance from the floor splits into evaluating too many pairs
+// (evaluated / lit) and paying more per pair (its ns per pair / quad's).
+
+struct PairCounts {
+    double lightingMs = 0.0;      // the lighting pass's median (list building included)
+    std::uint64_t evaluated = 0;  // evaluated (light, pixel) pairs
+    std::uint64_t lit = 0;        // (light, pixel) pairs where the light reached the surface
+};
+
+struct PairCost {
+    double nsPerEvaluated = std::nan("");   // lightingMs per evaluated pair; NaN for none
+    double evaluatedPerLit = std::nan("");  // 1 = ideal culling; NaN for no lit pairs
+    double perPairVsQuad = std::nan("");    // nsPerEvaluated / quad's; NaN without quad
+    double floorMs = std::nan("");          // lit pairs x quad's ns per pair
+    double vsFloor = std::nan("");          // lightingMs / floorMs
+};
+
+// `quadNsPerPair`: quad's ns per evaluated pair (NaN when quad was not measured).
+inline PairCost pairCost(PairCounts const& m, double quadNsPerPair) {
+    PairCost c;
+    if (m.evaluated > 0) c.nsPerEvaluated = m.lightingMs * 1e6 / double(m.evaluated);
+    if (m.lit > 0) c.evaluatedPerLit = double(m.evaluated) / double(m.lit);
+    if (quadNsPerPair > 0.0) {
+        c.perPairVsQuad = c.nsPerEvaluated / quadNsPerPair;
+        c.floorMs = double(m.lit) * quadNsPerPair * 1e-6;
+        if (c.floorMs > 0.0) c.vsFloor = m.lightingMs / c.floorMs;
+    }
+    return c;
+}
+
+// The one line bench prints per mode, e.g. "volumes/front: 1.29x the ideal number of light.pixel
+// evaluations, 3.1x the per-pair cost of quad, 4.0x the work floor (550 ms)".
+inline std::string pairVerdict(std::string const& mode, PairCost const& c) {
+    auto x = [](double v) {
+        if (!std::isfinite(v)) return std::string("?");
+        char buf[32];
+        std::snprintf(buf, sizeof buf, v < 10 ? "%.2f" : "%.1f", v);
+        return std::string(buf);
+    };
+    std::string s = mode + ": ";
+    if (!std::isfinite(c.evaluatedPerLit)) return s + "no light reached a surface, nothing to compare";
+    s += x(c.evaluatedPerLit) + "\u00d7 the ideal number of light\u00b7pixel evaluations, ";
+    if (!std::isfinite(c.perPairVsQuad)) return s + x(c.nsPerEvaluated) + " ns per pair (no quad figure to compare)";
+    s += x(c.perPairVsQuad) + "\u00d7 the per-pair cost of quad, " + x(c.vsFloor) + "\u00d7 the work floor (" +
+         x(c.floorMs) + " ms)";
+    return s;
 }
 
 }  // namespace gbl

@@ -42,7 +42,8 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
     sub.add_option("--lights", o.lights, "Number of lights (default scene: 32)");
     sub.add_option("--time", o.time, "Seconds of light animation")->capture_default_str();
     sub.add_option("--blit", o.blit, "Depth copy before the forward pass: blit, shader or off")->capture_default_str();
-    sub.add_option("--mode", o.mode, "Lighting mode: quad, volumes, tiled or forward")->capture_default_str();
+    sub.add_option("--mode", o.mode, "Lighting mode: quad, volumes, tiled, forward or clustered")
+        ->capture_default_str();
     sub.add_option("--layout", o.layout, "G-buffer layout: classic, packed, naive8 or rgb10a2")->capture_default_str();
     sub.add_option("--cull", o.cull, "Light volume cull mode: back, front, none, flip or stencil")
         ->capture_default_str();
@@ -83,7 +84,7 @@ int runRender(RenderOptions const& o) {
     auto const mode = enumFromName<LightingMode>(kLightingModeNames, o.mode);
     auto const cull = enumFromName<CullMode>(kCullModeNames, o.cull);
     auto const blit = enumFromName<DepthCopy>(kDepthCopyNames, o.blit);
-    if (!mode) return badArgument("--mode must be quad, volumes, tiled or forward, got '" + o.mode + "'");
+    if (!mode) return badArgument("--mode must be quad, volumes, tiled, forward or clustered, got '" + o.mode + "'");
     if (!cull) return badArgument("--cull must be back, front, none, flip or stencil, got '" + o.cull + "'");
     if (!blit) return badArgument("--blit must be blit, shader or off, got '" + o.blit + "'");
     auto const layout = enumFromName<GBufferLayout>(kGBufferLayoutNames, o.layout);

@@ -144,6 +144,8 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
                       {"gbuffer_bytes_per_pixel", layoutBytesPerPixel(layout)},
                       {"gpu_ms", passes},
                       {"gpu_frame_ms", frame.stats.gpuFrameMs},
+                      {"timing", frame.stats.timingSource},
+                      {"timing_reason", frame.stats.timingReason},
                       {"triangles", frame.triangles},
                       {"gl_errors", renderer.glErrorCount()}};
     if (frame.stats.fragmentInvocations) statsJson["fragment_invocations"] = *frame.stats.fragmentInvocations;

@@ -145,12 +145,44 @@ bool RendererImpl::tiledReady() {
     return !f.unavailable;
 }
 
+bool RendererImpl::clusteredReady() {
+    OptionalFeature& f = clusteredFeature;
+    if (f.tried) return !f.unavailable;
+    f.tried = true;
+    if (!caps.computeShaders) {
+        f.unavailable = "compute shaders need OpenGL 4.3; this context is " + std::to_string(caps.major) + "." +
+                        std::to_string(caps.minor) + ", so clustered mode is unavailable";
+        return false;
+    }
+    for (ProgramId id : {ProgramId::ClusterBuild, ProgramId::ClusterShade})
+        if (!shaders.add(id, nullptr)) {
+            f.unavailable = programFailure("clustered", shaders, id);
+            return false;
+        }
+    return true;
+}
+
+LightingClusteredInput RendererImpl::clusteredInput(FrameContext const& f) {
+    return {deferredInputs(f),
+            shaders.get(ProgramId::ClusterBuild),
+            shaders.get(ProgramId::ClusterShade),
+            clusters,
+            targets.lighting,
+            targets.coverage};
+}
+
+LightingClusteredConfig RendererImpl::clusteredConfig(FrameContext const& f, bool shade) const {
+    return {f.view, f.projection, targets.width, targets.height, f.camera.nearPlane, f.camera.farPlane, shade, !shade};
+}
+
 std::optional<std::string> RendererImpl::modeUnavailable(LightingMode mode) {
     switch (mode) {
         case LightingMode::Volumes:
             return volumesReady() ? std::nullopt : volumesFeature.unavailable;
         case LightingMode::Tiled:
             return tiledReady() ? std::nullopt : tiledFeature.unavailable;
+        case LightingMode::Clustered:
+            return clusteredReady() ? std::nullopt : clusteredFeature.unavailable;
         case LightingMode::Quad:
         case LightingMode::Forward:
             break;  // core programs only
@@ -213,6 +245,9 @@ void RendererImpl::runLighting(FrameContext const& f) {
                               {f.view, f.projection, targets.width, targets.height, f.camera.nearPlane,
                                f.camera.farPlane, true, false});
             break;
+        case LightingMode::Clustered:  // the lists were built in the frame's light_lists pass
+            clusterShadePass(clusteredInput(f), clusteredConfig(f, true));
+            break;
         default:
             lightingQuadPass({deferred, shaders.get(ProgramId::LightingQuad), triangle, litTarget()});
             break;
@@ -220,6 +255,16 @@ void RendererImpl::runLighting(FrameContext const& f) {
 }
 
 void RendererImpl::runCoverage(FrameContext const& f) {
+    if (f.settings.mode == LightingMode::Clustered && f.settings.view != DebugView::TileLights) {
+        // x = the pixel's cluster list, y = lights that lit it: the heat map's scale, as tiles.
+        glBindFramebuffer(GL_FRAMEBUFFER, targets.coverageFbo.id());
+        glClearColor(0, 0, 0, 0);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        clusterListsPass(clusteredInput(f), clusteredConfig(f, false));
+        clusterShadePass(clusteredInput(f), clusteredConfig(f, false));
+        return;
+    }
     bool const tiles = f.settings.view == DebugView::TileLights || f.settings.mode == LightingMode::Tiled;
     bool const volumeCounts = !tiles && f.settings.mode == LightingMode::Volumes && volumesReady();
     if (volumeCounts) prepareVolumeInstances(volumes, {f.camera, f.aspect, f.lights});
@@ -255,7 +300,8 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     ShadingUniforms const shading{f.camera.position, s.shininess, s.ambient, glm::inverse(f.viewProj)};
     frameInverseViewProj = shading.inverseViewProj;
 
-    lights.upload(f.lights);
+    if (auto why = lights.upload(f.lights))
+        stats.fallbackReason += (stats.fallbackReason.empty() ? "" : "; ") + *why;
     volumes.enclosingScale = volumes.meshEnclosingScale * s.volumeScale;  // < 1 only to show what it cuts off
     for (auto const& l : f.lights) stats.lightsShaded += lightRadius(l).radius > 0.0f ? 1 : 0;
     // One light outlined (the accumulated k-th, or the selected one): its index among f.lights,
@@ -285,6 +331,11 @@ FrameStats RendererImpl::render(FrameInput const& input) {
         geometryPass({scene, shaders.get(ProgramId::Geometry), targets.gbuffer}, {f.viewProj, s.normalMaps});
         timer.end();
         if (frameTestHook) frameTestHook();
+        if (s.mode == LightingMode::Clustered) {
+            timer.begin("light_lists");
+            clusterListsPass(clusteredInput(f), clusteredConfig(f, true));
+            timer.end();
+        }
         timer.begin("lighting");
         if (fragmentQuery) fragmentQuery.begin();
         runLighting(f);
@@ -331,6 +382,8 @@ FrameStats RendererImpl::render(FrameInput const& input) {
               shading.inverseViewProj});
     timer.end();
 
+    stats.timingSource = timingSourceName(timer.method().source);
+    stats.timingReason = timer.method().reason;
     for (auto& [name, ms] : timer.finishFrame(input.waitForGpuTimings)) {
         stats.passes.push_back({name, ms});
         stats.gpuFrameMs += ms;

@@ -12,6 +12,7 @@
 #include "gpu/light_volume_gpu.h"
 #include "gpu/render_targets.h"
 #include "gpu/view_target.h"
+#include "passes/lighting_clustered.h"
 #include "passes/shading_inputs.h"
 #include "renderer.h"
 
@@ -66,14 +67,19 @@ public:
     glm::mat4 frameInverseViewProj{1.0f};  // of the last frame rendered: decodes its G-buffer
     OptionalFeature volumesFeature;
     OptionalFeature tiledFeature;
+    OptionalFeature clusteredFeature;
+    ClusterLists clusters;
     std::function<void()> frameTestHook;  // renderer_test_access.h
 
 private:
     FrameContext frameContext(FrameInput const& input) const;
     DeferredInputs deferredInputs(FrameContext const& f) const;
     LitTarget litTarget() const { return {targets.litFbo, targets.lighting}; }
-    bool volumesReady();  // builds the volume programs and mesh on first use
-    bool tiledReady();    // builds the tiled program on first use
+    bool volumesReady();    // builds the volume programs and mesh on first use
+    bool tiledReady();      // builds the tiled program on first use
+    bool clusteredReady();  // builds the two clustered programs on first use
+    LightingClusteredInput clusteredInput(FrameContext const& f);
+    LightingClusteredConfig clusteredConfig(FrameContext const& f, bool shade) const;
     void runLighting(FrameContext const& f);
     void runCoverage(FrameContext const& f);
 };

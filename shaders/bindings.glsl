@@ -18,4 +18,7 @@
 // Image units of the tiled compute pass (declared with layout(binding = ...) in the shader).
 #define BIND_IMAGE_LIGHTING 0
 #define BIND_IMAGE_COVERAGE 1
+// Storage buffers of the clustered passes (cluster_build.comp writes, cluster_shade.comp reads).
+#define BIND_SSBO_CLUSTER_COUNTS 0
+#define BIND_SSBO_CLUSTER_LIGHTS 1
 #endif

@@ -15,16 +15,18 @@ layout(rg32f, binding = BIND_IMAGE_COVERAGE) uniform writeonly image2D uCoverage
 uniform int uLightCount;
 uniform vec3 uAmbient;
 uniform mat4 uView;
-uniform mat4 uInverseProjection;
 uniform ivec2 uScreenSize;
 uniform float uNear;
 uniform float uFar;
 uniform bool uShade;          // write the lit image
 uniform bool uWriteCoverage;  // write x = lights in the tile, y = lights that lit the pixel
 
-// A bit per light (kMaxLights = 16384): shading walks the set bits in index order, so each
-// pixel adds its lights in the same order as the full-screen pass.
+// A bit per light of one chunk of 16,384 lights: shading walks the set bits in index order, so
+// each pixel adds its lights in the same order as the full-screen pass. More lights (up to
+// kMaxLights = 262,144) run as consecutive chunks, each culled and shaded in turn: no light is
+// ever dropped, so the list has no cap, and the order stays the full-screen pass's.
 #define MAX_LIGHT_WORDS 512
+#define CHUNK_LIGHTS (MAX_LIGHT_WORDS * 32)
 shared uint sLightMask[MAX_LIGHT_WORDS];
 shared uint sWords[MAX_LIGHT_WORDS];  // indices of the non-empty words of sLightMask, ascending
 shared uint sWordCount;
@@ -32,27 +34,16 @@ shared uint sMinDepthBits;
 shared uint sMaxDepthBits;
 
 #include "depth.glsl"
+#include "tile_frustum.glsl"
 
-vec3 unprojectFar(vec2 ndc) {
-    vec4 v = uInverseProjection * vec4(ndc, 1.0, 1.0);
-    return v.xyz / v.w;
-}
-
-vec4 sidePlane(vec3 a, vec3 b, vec3 inside) {
-    vec3 n = normalize(cross(a, b));
-    if (dot(n, inside) < 0.0) n = -n;
-    return vec4(n, 0.0);
-}
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
     uint local = gl_LocalInvocationIndex;
-    int words = min((uLightCount + 31) / 32, MAX_LIGHT_WORDS);
     if (local == 0u) {
         sMinDepthBits = floatBitsToUint(3.0e38);
         sMaxDepthBits = 0u;
     }
-    for (int w = int(local); w < words; w += 256) sLightMask[w] = 0u;
     memoryBarrierShared();
     barrier();
 
@@ -69,19 +60,37 @@ void main() {
     memoryBarrierShared();
     barrier();
 
-    // --- light list: every invocation tests every 256th light ---
-    if (sMaxDepthBits != 0u) {
-        float minDepth = uintBitsToFloat(sMinDepthBits), maxDepth = uintBitsToFloat(sMaxDepthBits);
-        ivec2 lo = ivec2(gl_WorkGroupID.xy) * 16, hi = min(lo + 16, uScreenSize);
-        vec2 ndcLo = vec2(lo) / vec2(uScreenSize) * 2.0 - 1.0, ndcHi = vec2(hi) / vec2(uScreenSize) * 2.0 - 1.0;
-        vec3 bl = unprojectFar(ndcLo), br = unprojectFar(vec2(ndcHi.x, ndcLo.y));
-        vec3 tl = unprojectFar(vec2(ndcLo.x, ndcHi.y)), tr = unprojectFar(ndcHi);
-        vec3 centre = (bl + br + tl + tr) * 0.25;
-        // Four named planes rather than an array: llvmpipe spills indexed arrays to memory.
-        vec3 left = sidePlane(bl, tl, centre).xyz, right = sidePlane(br, tr, centre).xyz;
-        vec3 bottom = sidePlane(bl, br, centre).xyz, top = sidePlane(tl, tr, centre).xyz;
-        for (int i = int(local); i < words * 32 && i < uLightCount; i += 256) {
-            vec4 positionRadius = texelFetch(uLights, i * 4);
+    // The tile's frustum side planes, once for every chunk.
+    float minDepth = uintBitsToFloat(sMinDepthBits), maxDepth = uintBitsToFloat(sMaxDepthBits);
+    bool anyGeometry = sMaxDepthBits != 0u;  // the same in every invocation: uniform flow below
+    ivec2 lo = ivec2(gl_WorkGroupID.xy) * 16, hi = min(lo + 16, uScreenSize);
+    vec2 ndcLo = vec2(lo) / vec2(uScreenSize) * 2.0 - 1.0, ndcHi = vec2(hi) / vec2(uScreenSize) * 2.0 - 1.0;
+    vec3 bl = unprojectFar(ndcLo), br = unprojectFar(vec2(ndcHi.x, ndcLo.y));
+    vec3 tl = unprojectFar(vec2(ndcLo.x, ndcHi.y)), tr = unprojectFar(ndcHi);
+    vec3 centre = (bl + br + tl + tr) * 0.25;
+    // Four named planes rather than an array: llvmpipe spills indexed arrays to memory.
+    vec3 left = sidePlane(bl, tl, centre).xyz, right = sidePlane(br, tr, centre).xyz;
+    vec3 bottom = sidePlane(bl, br, centre).xyz, top = sidePlane(tl, tr, centre).xyz;
+
+    vec3 n = vec3(0.0);
+    vec4 as = vec4(0.0);
+    if (geometry) {
+        n = gbufferNormal(px);
+        as = gbufferAlbedoSpec(px);
+    }
+    vec3 color = uAmbient * as.rgb;
+    float lit = 0.0;
+    uint tileCount = 0u;
+    for (int base = 0; anyGeometry && base < uLightCount; base += CHUNK_LIGHTS) {
+        int chunk = min(uLightCount - base, CHUNK_LIGHTS);
+        int words = (chunk + 31) / 32;
+        for (int w = int(local); w < words; w += 256) sLightMask[w] = 0u;
+        memoryBarrierShared();
+        barrier();
+
+        // --- light list: every invocation tests every 256th light of the chunk ---
+        for (int i = int(local); i < chunk; i += 256) {
+            vec4 positionRadius = texelFetch(uLights, (base + i) * 4);
             float r = positionRadius.w;
             vec3 c = (uView * vec4(positionRadius.xyz, 1.0)).xyz;
             float depth = -c.z;
@@ -89,48 +98,45 @@ void main() {
                            dot(right, c) >= -r && dot(bottom, c) >= -r && dot(top, c) >= -r;
             if (touches) atomicOr(sLightMask[i >> 5], 1u << uint(i & 31));
         }
-    }
-    memoryBarrierShared();
-    barrier();
-    // The non-empty words, in order, so pixels skip the empty ones (most, for small lights).
-    if (local == 0u) {
-        uint n = 0u;
-        for (int w = 0; w < words; ++w)
-            if (sLightMask[w] != 0u) sWords[n++] = uint(w);
-        sWordCount = n;
-    }
-    memoryBarrierShared();
-    barrier();
-    if (!onScreen) return;
+        memoryBarrierShared();
+        barrier();
+        // The non-empty words, in order, so pixels skip the empty ones (most, for small lights).
+        if (local == 0u) {
+            uint count = 0u;
+            for (int w = 0; w < words; ++w)
+                if (sLightMask[w] != 0u) sWords[count++] = uint(w);
+            sWordCount = count;
+        }
+        memoryBarrierShared();
+        barrier();
 
-    // --- shading: ambient plus the tile's lights in index order ---
-    vec3 color = vec3(0.0);
-    float lit = 0.0;
-    if (geometry) {
-        vec3 n = gbufferNormal(px);
-        vec4 as = gbufferAlbedoSpec(px);
-        color = uAmbient * as.rgb;
-        for (uint k = 0u; k < sWordCount; ++k) {
-            int w = int(sWords[k]);
-            uint bits = sLightMask[w];
-            while (bits != 0u) {
-                int b = findLSB(bits);
-                bits &= bits - 1u;
-                // Position and radius first: lights in the tile's list that miss this pixel's
-                // surface cost one fetch (they would add exactly zero).
-                vec4 positionRadius = texelFetch(uLights, (w * 32 + b) * 4);
-                if (!(distance(positionRadius.xyz, pos) < positionRadius.w)) continue;
-                Light l = fetchLight(w * 32 + b);
-                color += shadeLight(l, pos, n, as.rgb, as.a);
-                // "Lit" as in light_volume.frag: the light reaches a surface that faces it.
-                if (uWriteCoverage && any(greaterThan(shadeLight(l, pos, n, vec3(1.0), 1.0), vec3(0.0)))) lit += 1.0;
+        // --- shading: the chunk's lights of this tile in index order ---
+        if (geometry) {
+            for (uint k = 0u; k < sWordCount; ++k) {
+                int w = int(sWords[k]);
+                uint bits = sLightMask[w];
+                while (bits != 0u) {
+                    int b = findLSB(bits);
+                    bits &= bits - 1u;
+                    int index = base + w * 32 + b;
+                    // Position and radius first: lights in the tile's list that miss this pixel's
+                    // surface cost one fetch (they would add exactly zero).
+                    vec4 positionRadius = texelFetch(uLights, index * 4);
+                    if (!(distance(positionRadius.xyz, pos) < positionRadius.w)) continue;
+                    Light l = fetchLight(index);
+                    color += shadeLight(l, pos, n, as.rgb, as.a);
+                    // "Lit" as in light_volume.frag: the light reaches a surface that faces it.
+                    if (uWriteCoverage && any(greaterThan(shadeLight(l, pos, n, vec3(1.0), 1.0), vec3(0.0))))
+                        lit += 1.0;
+                }
             }
         }
+        if (uWriteCoverage)
+            for (uint k = 0u; k < sWordCount; ++k) tileCount += uint(bitCount(sLightMask[sWords[k]]));
+        // Every invocation is done with this chunk's list before the next one overwrites it.
+        barrier();
     }
+    if (!onScreen) return;
     if (uShade) imageStore(uLightingImage, px, geometry ? vec4(color, 1.0) : vec4(0.0));
-    if (uWriteCoverage) {
-        uint count = 0u;
-        for (uint k = 0u; k < sWordCount; ++k) count += uint(bitCount(sLightMask[sWords[k]]));
-        imageStore(uCoverageImage, px, vec4(float(count), lit, 0.0, 0.0));
-    }
+    if (uWriteCoverage) imageStore(uCoverageImage, px, vec4(float(tileCount), lit, 0.0, 0.0));
 }

@@ -32,7 +32,7 @@ TEST(BenchCommand, TinyRunReportsEveryCombination) {
 TEST(BenchCommand, BadArgumentsExitWithCodeTwo) {
     std::vector<std::vector<std::string>> const cases{
         {"bench", "--modes", "raytraced"},
-        {"bench", "--lights", "100000"},
+        {"bench", "--lights", "300000"},  // over kMaxLights (262,144)
         {"bench", "--size", "0x0"},
         {"bench", "--frames", "0"},
         {"bench", "--radius-scale", "-1"},

@@ -118,6 +118,10 @@ protected:
             Diff const d = compare(lighting(settingsFor(LightingMode::Tiled), cam, lights_), quad,
                                    [](double v) { return 4 * kHalfUlp * v + 1e-5; });
             EXPECT_EQ(d.pixelsOver, 0) << "tiled: " << describe(d);
+            // Clustered adds the same lights in the same order as tiled: the same bound.
+            Diff const c = compare(lighting(settingsFor(LightingMode::Clustered), cam, lights_), quad,
+                                   [](double v) { return 4 * kHalfUlp * v + 1e-5; });
+            EXPECT_EQ(c.pixelsOver, 0) << "clustered: " << describe(c);
         }
         Diff const f = compare(lighting(settingsFor(LightingMode::Forward), cam, lights_), quad,
                                [](double v) { return 0.03 * v + 2e-3; });
@@ -315,6 +319,31 @@ TEST_F(LightModesGlTest, TileListsMatchTheCpuTileMath) {
     }
     EXPECT_GE(exact, tiles * 98 / 100);
     EXPECT_GT(nonEmpty, tiles / 2);
+}
+
+TEST_F(LightModesGlTest, LightsPastTheFirstTiledChunkAreShaded) {
+    // 16,384 dark lights (intensity 0: radius 0) fill tiled's first chunk of the shared mask, so
+    // the scene's real lights are all in the second: a mode that drops lights past 16,384 shows
+    // ambient alone. Every mode must still equal quad.
+    std::vector<PointLight> many(16384, lights_.front());
+    for (auto& l : many) l.intensity = 0.0f;
+    many.insert(many.end(), lights_.begin(), lights_.end());
+    ASSERT_LE(int(many.size()), kMaxLights);
+    // quad and forward visit all 16,416 lights at every pixel: a small frame keeps that short.
+    renderer_ = makeRenderer(80, 45);
+    ASSERT_FALSE(renderer_->setScene(scene_));
+    FloatImage const quad = lighting(settingsFor(LightingMode::Quad), camera_, many);
+    FloatImage const dark = lighting(settingsFor(LightingMode::Quad), camera_, std::span(many).first(16384));
+    Diff const lit = compare(quad, dark, [](double) { return 1e-3; });
+    ASSERT_GT(lit.pixelsOver, 80 * 45 / 10) << "the second chunk's lights must light the scene: " << describe(lit);
+    Diff const v = compare(lighting(settingsFor(LightingMode::Volumes), camera_, many), quad, volumeBound);
+    EXPECT_EQ(v.pixelsOver, 0) << "volumes: " << describe(v);
+    if (!caps().computeShaders) GTEST_SKIP() << caps().tiledUnavailableReason();
+    for (LightingMode m : {LightingMode::Tiled, LightingMode::Clustered}) {
+        Diff const d =
+            compare(lighting(settingsFor(m), camera_, many), quad, [](double v) { return 4 * kHalfUlp * v + 1e-5; });
+        EXPECT_EQ(d.pixelsOver, 0) << enumName(kLightingModeNames, m) << ": " << describe(d);
+    }
 }
 
 TEST_F(LightModesGlTest, TiledFallsBackToQuadWithoutComputeShaders) {

@@ -107,7 +107,7 @@ TEST(RenderCommand, BadArgumentsExitWithCodeTwoAndOneSentence) {
         {{"render", "--out", out, "--size", "wide"}, "--size"},
         {{"render", "--out", out, "--size", "20000x20000"}, "16384"},
         {{"render", "--out", out, "--lights", "-3"}, "--lights"},
-        {{"render", "--out", out, "--lights", "100000"}, "16384"},
+        {{"render", "--out", out, "--lights", "300000"}, "262144"},
         {{"render", "--out", out, "--blit", "sideways"}, "--blit"},
         {{"render", "--out", out, "--mode", "raytraced"}, "--mode"},
         {{"render", "--out", out, "--layout", "zip"}, "--layout"},

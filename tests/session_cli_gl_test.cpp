@@ -140,7 +140,7 @@ TEST(SessionCli, SessionWithMoreLightsThanTheLimitIsRefused) {
     ASSERT_EQ(ui::saveSession(path, s), std::nullopt);
     auto const r = runGbufferLab({"render", "--out", dir + "/o", "--size", "64x36", "--session", path});
     EXPECT_EQ(r.exitCode, 2) << r.output;
-    EXPECT_NE(r.output.find("the limit is 16384"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("the limit is 262144"), std::string::npos) << r.output;
 }
 
 TEST(Limits, RequestsPastTheLimitsExitTwoStatingTheLimit) {
@@ -153,10 +153,10 @@ TEST(Limits, RequestsPastTheLimitsExitTwoStatingTheLimit) {
     };
     std::vector<Case> const cases{
         {{"bench", "--size", "20000x20000"}, "16384"},
-        {{"bench", "--lights", "100000"}, "16384"},
-        {{"bench", "--lights", "32,100000"}, "16384"},
+        {{"bench", "--lights", "300000"}, "262144"},
+        {{"bench", "--lights", "32,300000"}, "262144"},
         {{"--size", "20000x20000"}, "16384"},
-        {{"--lights", "100000"}, "16384"},
+        {{"--lights", "300000"}, "262144"},
         {{"render", "--out", dir, "--size", "16385x10"}, "16384"},
     };
     for (auto const& c : cases) test::expectRefused(c.args, c.expect);

@@ -349,11 +349,11 @@ TEST(Session, EveryKindOfBadFieldGetsOneMessageNamingIt) {
         {"empty remap range",
          [](json& j) { j["viewers"]["position"]["range_max"] = j["viewers"]["position"]["range_min"]; },
          "s.json: viewers.position.range_max must be greater than viewers.position.range_min"},
-        {"light count", [](json& j) { j["scene"]["default_scene_lights"] = 16385; },
-         "s.json: scene.default_scene_lights must be a whole number from 0 to 16384 (got 16385)"},
+        {"light count", [](json& j) { j["scene"]["default_scene_lights"] = 262145; },
+         "s.json: scene.default_scene_lights must be a whole number from 0 to 262144 (got 262145)"},
         // enums
         {"unknown mode", [](json& j) { j["pipeline"]["mode"] = "raytraced"; },
-         "s.json: pipeline.mode must be one of quad, volumes, tiled or forward (got \"raytraced\")"},
+         "s.json: pipeline.mode must be one of quad, volumes, tiled, forward or clustered (got \"raytraced\")"},
         {"unknown blit", [](json& j) { j["pipeline"]["blit"] = "copy"; },
          "s.json: pipeline.blit must be one of blit, shader or off (got \"copy\")"},
         {"enum by number", [](json& j) { j["pipeline"]["cull"] = 1; },
@@ -418,7 +418,7 @@ TEST(Session, TooManyLightsAreRefusedWithTheLimit) {
     s.lights.assign(std::size_t(kMaxLights) + 1, PointLight{});
     SessionLoad const r = parseSession(sessionToJson(s), "big.json");
     EXPECT_FALSE(r.session);
-    EXPECT_EQ(r.error, "big.json: lights holds 16385 lights; the limit is 16384");
+    EXPECT_EQ(r.error, "big.json: lights holds 262145 lights; the limit is 262144");
     s.lights.resize(std::size_t(kMaxLights));
     SessionLoad const ok = parseSession(sessionToJson(s), "big.json");
     ASSERT_TRUE(ok.session) << ok.error;

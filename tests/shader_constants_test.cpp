@@ -101,7 +101,9 @@ TEST(ShaderConstants, GeneratedBindingsHeaderMatchesBindingsGlsl) {
                                          {"BIND_MATERIAL_NORMAL", slot::BIND_MATERIAL_NORMAL},
                                          {"BIND_MATERIAL_SPECULAR", slot::BIND_MATERIAL_SPECULAR},
                                          {"BIND_IMAGE_LIGHTING", slot::BIND_IMAGE_LIGHTING},
-                                         {"BIND_IMAGE_COVERAGE", slot::BIND_IMAGE_COVERAGE}};
+                                         {"BIND_IMAGE_COVERAGE", slot::BIND_IMAGE_COVERAGE},
+                                         {"BIND_SSBO_CLUSTER_COUNTS", slot::BIND_SSBO_CLUSTER_COUNTS},
+                                         {"BIND_SSBO_CLUSTER_LIGHTS", slot::BIND_SSBO_CLUSTER_LIGHTS}};
     EXPECT_EQ(all, cpp);
     // Each sampler uniform has exactly one unit, and the three G-buffer samplers, the lights and
     // every texture the view pass reads are distinct (they are bound together).

@@ -43,6 +43,9 @@ struct FrameStats {
     int height = 0;
     std::vector<PassTiming> passes;  // in frame order
     double gpuFrameMs = 0.0;         // sum of the passes
+    // How the pass times were measured (gpu_timestamps | cpu_finish, gl/gpu_timer.h) and why.
+    std::string timingSource;
+    std::string timingReason;
     int lightsSubmitted = 0;
     int lightsShaded = 0;                              // lights with a radius > 0
     std::optional<std::uint64_t> fragmentInvocations;  // lighting pass, when pipeline statistics exist

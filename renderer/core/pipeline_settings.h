@@ -9,7 +9,7 @@
 
 namespace gbl {
 
-enum class LightingMode { Quad, Volumes, Tiled, Forward };
+enum class LightingMode { Quad, Volumes, Tiled, Forward, Clustered };
 enum class CullMode { Back, Front, None, Flip, Stencil };
 // How the G-buffer depth reaches the lit target before the forward pass (the "blit step").
 enum class DepthCopy { Blit, Shader, Off };
@@ -61,7 +61,7 @@ struct PipelineSettings {
 };
 
 // Names used on the command line and in session files, in enum order.
-inline constexpr std::array<std::string_view, 4> kLightingModeNames{"quad", "volumes", "tiled", "forward"};
+inline constexpr std::array<std::string_view, 5> kLightingModeNames{"quad", "volumes", "tiled", "forward", "clustered"};
 inline constexpr std::array<std::string_view, 5> kCullModeNames{"back", "front", "none", "flip", "stencil"};
 inline constexpr std::array<std::string_view, 3> kDepthCopyNames{"blit", "shader", "off"};
 inline constexpr std::array<std::string_view, 3> kTonemapNames{"exposure", "reinhard", "clamp"};

@@ -13,7 +13,7 @@ namespace gbl {
 inline constexpr float kDefaultLightThreshold = 5.0f / 256.0f;
 
 // Most lights any scene, session or command accepts; more are refused with this number.
-inline constexpr int kMaxLights = 16384;
+inline constexpr int kMaxLights = 262144;
 
 struct PointLight {
     glm::vec3 position{0.0f};

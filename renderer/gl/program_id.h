@@ -29,11 +29,14 @@ enum class ProgramId {
     LightVolumeWire,
     // tiled mode
     LightingTiled,
+    // clustered mode
+    ClusterBuild,
+    ClusterShade,
 };
-inline constexpr std::size_t kProgramCount = std::size_t(ProgramId::LightingTiled) + 1;
+inline constexpr std::size_t kProgramCount = std::size_t(ProgramId::ClusterShade) + 1;
 
 // What needs the program: every frame (core), or one optional group that is built on first use.
-enum class ProgramGroup { Core, Volumes, Tiled };
+enum class ProgramGroup { Core, Volumes, Tiled, Clustered };
 
 struct ProgramDesc {
     std::string name;                                    // e.g. "geometry", for logs and labels

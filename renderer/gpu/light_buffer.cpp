@@ -19,7 +19,17 @@ std::vector<glm::vec4> packLights(std::span<PointLight const> lights) {
     return texels;
 }
 
-void LightBuffer::upload(std::span<PointLight const> lights) {
+std::optional<std::string> LightBuffer::upload(std::span<PointLight const> lights) {
+    GLint maxTexels = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    int const fits = lightsInTexels(maxTexels);
+    std::optional<std::string> why;
+    if (int(lights.size()) > fits) {
+        why = "this context's buffer textures hold " + std::to_string(maxTexels) + " texels (" + std::to_string(fits) +
+              " lights); only the first " + std::to_string(fits) + " of " + std::to_string(lights.size()) +
+              " lights are shaded";
+        lights = lights.first(std::size_t(fits));
+    }
     std::vector<glm::vec4> texels = packLights(lights);
     // A buffer texture over an empty buffer is invalid, so keep at least one light's worth.
     if (texels.empty()) texels.resize(kTexelsPerLight, glm::vec4(0.0f));
@@ -31,6 +41,7 @@ void LightBuffer::upload(std::span<PointLight const> lights) {
         buffer.upload(bytes, texels.data());
     }
     count = int(lights.size());
+    return why;
 }
 
 }  // namespace gbl

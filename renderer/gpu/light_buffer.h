@@ -11,7 +11,11 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
+
+#include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace gbl {
@@ -27,7 +31,16 @@ struct LightBuffer {
     gl::Texture texture;  // GL_TEXTURE_BUFFER over `buffer`, RGBA32F
     int count = 0;
 
-    void upload(std::span<PointLight const> lights);
+    // Uploads every light the context's buffer textures can address (GL_MAX_TEXTURE_BUFFER_SIZE
+    // texels, kTexelsPerLight per light; 65,536 texels = 16,384 lights is all GL guarantees,
+    // drivers give millions). Beyond that, the first lights that fit are kept and the reason is
+    // returned, so the frame says why lights are missing rather than reading past the buffer.
+    std::optional<std::string> upload(std::span<PointLight const> lights);
 };
+
+// How many lights fit in a buffer texture of `maxTexels` texels.
+inline int lightsInTexels(long long maxTexels) {
+    return int(std::min<long long>(maxTexels / kTexelsPerLight, kMaxLights));
+}
 
 }  // namespace gbl

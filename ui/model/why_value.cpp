@@ -1,6 +1,7 @@
 // "Why this value": each mode's light test replayed on the CPU for one pixel.
 #include "model/why_value.h"
 
+#include "core/cluster_math.h"
 #include "core/depth.h"
 #include "core/light_math.h"
 #include "core/light_volume_mesh.h"
@@ -159,6 +160,24 @@ std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointL
                     radius > 0.0f && sphereTouchesTile(tile, bounds.minDepth, bounds.maxDepth, centreView, radius);
                 v.evaluations = listed ? 1 : 0;
                 v.why = listed ? "in the tile's light list" : "not evaluated: not in the tile's light list";
+                break;
+            }
+            case LightingMode::Clustered: {
+                glm::vec3 const centreView = glm::vec3(view * glm::vec4(light.position, 1.0f));
+                ClusterGrid const cg = clusterGrid(in.frameSize.x, in.frameSize.y);
+                int const slice = clusterSlice(ownDepth, in.camera.nearPlane, in.camera.farPlane);
+                ViewBox const box =
+                    clusterViewBox(glm::inverse(in.camera.projection(aspect)), in.frameSize.x, in.frameSize.y, cg,
+                                   in.pixel.x / kClusterTileSize, glY / kClusterTileSize, slice, in.camera.nearPlane,
+                                   in.camera.farPlane);
+                // The shader's margin (cluster_build.comp): a hair over the radius.
+                // As cluster_build.comp: the tile's frustum (near to far) first, then the slice's box.
+                bool const listed =
+                    radius > 0.0f &&
+                    sphereTouchesTile(tile, in.camera.nearPlane, in.camera.farPlane, centreView, radius) &&
+                    sphereTouchesBox(centreView, radius * 1.0001f + 1e-4f, box);
+                v.evaluations = listed ? 1 : 0;
+                v.why = listed ? "in the cluster's light list" : "not evaluated: not in the cluster's light list";
                 break;
             }
             case LightingMode::Volumes: {

@@ -17,6 +17,8 @@ constexpr char const* kModeHelp[] = {
     "volumes: one sphere per light, scaled to its radius; only covered pixels are shaded",
     "tiled: a compute pass builds a light list per 16x16 tile, then shades each pixel with its tile's lights",
     "forward: no G-buffer; every object is shaded with every light while it is drawn",
+    "clustered: the GPU lists the lights of each 16x16 tile's exponential depth slices; each pixel shades with its "
+    "slice's list",
 };
 constexpr char const* kCullHelp[] = {
     "back: cull back faces; the volume vanishes when the camera is inside it",

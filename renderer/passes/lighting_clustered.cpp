@@ -1,0 +1,72 @@
+// Clustered lighting passes: list building and shading.
+#include "passes/lighting_clustered.h"
+
+#include "gl/shader_bindings.h"
+
+#include <algorithm>
+
+namespace gbl {
+
+namespace {
+
+void setGridUniforms(gl::Program const& p, LightingClusteredInput const& in, LightingClusteredConfig const& c,
+                     ClusterGrid const& g) {
+    // Both programs must agree on the list length, and it is only known once the lists exist.
+    p.set("uView", c.view);
+    glUniform2i(p.uniform("uScreenSize"), c.width, c.height);
+    glUniform3i(p.uniform("uGrid"), g.tilesX, g.tilesY, g.slices);
+    p.set("uTileSize", kClusterTileSize);
+    p.set("uMaxLights", in.lists.cap);
+    p.set("uNear", c.nearPlane);
+    p.set("uFar", c.farPlane);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_CLUSTER_COUNTS, in.lists.counts.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_CLUSTER_LIGHTS, in.lists.lights.id());
+}
+
+}  // namespace
+
+void clusterListsPass(LightingClusteredInput const& in, LightingClusteredConfig const& c) {
+    ClusterGrid const g = clusterGrid(c.width, c.height);
+    ClusterLists& l = in.lists;
+    if (l.clusters != g.count() || !l.counts) {
+        GLint64 maxBlock = 0;
+        glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+        l.cap = clusterListCap(g.count(), maxBlock);
+        l.counts = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER, std::size_t(g.count()) * sizeof(GLuint), nullptr,
+                                      GL_DYNAMIC_COPY, "cluster counts");
+        l.lights = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER,
+                                      std::size_t(g.count()) * std::size_t(std::max(l.cap, 1)) * sizeof(GLuint),
+                                      nullptr, GL_DYNAMIC_COPY, "cluster lights");
+        l.clusters = g.count();
+    }
+    gl::Program const& p = in.build;
+    p.use();
+    bindLights(p, in.deferred.lights);
+    p.set("uInverseProjection", glm::inverse(c.projection));
+    setGridUniforms(p, in, c, g);
+    glDispatchCompute(GLuint(g.tilesX), GLuint(g.tilesY), 1);  // one work group per tile, a slice per invocation
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+LightingOutput clusterShadePass(LightingClusteredInput const& in, LightingClusteredConfig const& c) {
+    ClusterGrid const g = clusterGrid(c.width, c.height);
+    gl::Program const& p = in.shade;
+    p.use();
+    bindDeferredInputs(p, in.deferred);
+    setGridUniforms(p, in, c, g);
+    p.set("uShade", c.shade ? 1 : 0);
+    p.set("uWriteCoverage", c.coverage ? 1 : 0);
+    // Both image units are bound whatever the flags, so the program's declared images are valid.
+    glBindImageTexture(slot::BIND_IMAGE_LIGHTING, in.hdr.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(slot::BIND_IMAGE_COVERAGE, in.coverage.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    glDispatchCompute(GLuint((c.width + 15) / 16), GLuint((c.height + 15) / 16), 1);
+    // Later passes read the images as textures and framebuffer attachments.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glBindImageTexture(slot::BIND_IMAGE_LIGHTING, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(slot::BIND_IMAGE_COVERAGE, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_CLUSTER_COUNTS, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_CLUSTER_LIGHTS, 0);
+    return {in.hdr};
+}
+
+}  // namespace gbl

@@ -1,0 +1,63 @@
+// Clustered lighting, step 2 (OpenGL 4.3): each pixel finds its cluster (tile and exponential
+// depth slice) and shades with that cluster's light list, in index order like the full-screen pass.
+#version 430 core
+#include "bindings.glsl"
+#include "lighting.glsl"
+#include "light_fetch.glsl"
+#include "gbuffer_read.glsl"
+
+layout(local_size_x = 16, local_size_y = 16) in;
+
+layout(rgba16f, binding = BIND_IMAGE_LIGHTING) uniform writeonly image2D uLightingImage;
+layout(rg32f, binding = BIND_IMAGE_COVERAGE) uniform writeonly image2D uCoverageImage;
+layout(std430, binding = BIND_SSBO_CLUSTER_COUNTS) readonly buffer ClusterCounts { uint clusterCount[]; };
+layout(std430, binding = BIND_SSBO_CLUSTER_LIGHTS) readonly buffer ClusterLights { uint clusterLight[]; };
+
+uniform int uLightCount;
+uniform vec3 uAmbient;
+uniform mat4 uView;
+uniform ivec2 uScreenSize;
+uniform ivec3 uGrid;
+uniform int uTileSize;
+uniform int uMaxLights;
+uniform float uNear;
+uniform float uFar;
+uniform bool uShade;          // write the lit image
+uniform bool uWriteCoverage;  // write x = lights in the cluster's list, y = lights that lit the pixel
+
+void addLight(int i, vec3 pos, vec3 n, vec4 as, inout vec3 color, inout float lit) {
+    vec4 pr = texelFetch(uLights, i * 4);
+    if (!(distance(pr.xyz, pos) < pr.w)) return;
+    Light l = fetchLight(i);
+    color += shadeLight(l, pos, n, as.rgb, as.a);
+    // "Lit" as in light_volume.frag: the light reaches a surface that faces it.
+    if (uWriteCoverage && any(greaterThan(shadeLight(l, pos, n, vec3(1.0), 1.0), vec3(0.0)))) lit += 1.0;
+}
+
+void main() {
+    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    if (px.x >= uScreenSize.x || px.y >= uScreenSize.y) return;
+    vec3 pos;
+    if (!gbufferPosition(px, pos)) {
+        if (uShade) imageStore(uLightingImage, px, vec4(0.0));
+        if (uWriteCoverage) imageStore(uCoverageImage, px, vec4(0.0));
+        return;
+    }
+    vec3 n = gbufferNormal(px);
+    vec4 as = gbufferAlbedoSpec(px);
+    vec3 color = uAmbient * as.rgb;
+    float lit = 0.0;
+    float depth = -(uView * vec4(pos, 1.0)).z;
+    int slice = clamp(int(floor(log(depth / uNear) / log(uFar / uNear) * float(uGrid.z))), 0, uGrid.z - 1);
+    int cluster = (slice * uGrid.y + px.y / uTileSize) * uGrid.x + px.x / uTileSize;
+    uint count = clusterCount[cluster];
+    if (count <= uint(uMaxLights)) {
+        uint base = uint(cluster) * uint(uMaxLights);
+        for (uint k = 0u; k < count; ++k) addLight(int(clusterLight[base + k]), pos, n, as, color, lit);
+    } else {
+        // Over the cap: the list is incomplete, so every light is tried (exact, slower).
+        for (int i = 0; i < uLightCount; ++i) addLight(i, pos, n, as, color, lit);
+    }
+    if (uShade) imageStore(uLightingImage, px, vec4(color, 1.0));
+    if (uWriteCoverage) imageStore(uCoverageImage, px, vec4(float(count), lit, 0.0, 0.0));
+}
