@@ -300,8 +300,7 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     ShadingUniforms const shading{f.camera.position, s.shininess, s.ambient, glm::inverse(f.viewProj)};
     frameInverseViewProj = shading.inverseViewProj;
 
-    if (auto why = lights.upload(f.lights))
-        stats.fallbackReason += (stats.fallbackReason.empty() ? "" : "; ") + *why;
+    if (auto why = lights.upload(f.lights)) stats.fallbackReason += (stats.fallbackReason.empty() ? "" : "; ") + *why;
     volumes.enclosingScale = volumes.meshEnclosingScale * s.volumeScale;  // < 1 only to show what it cuts off
     for (auto const& l : f.lights) stats.lightsShaded += lightRadius(l).radius > 0.0f ? 1 : 0;
     // One light outlined (the accumulated k-th, or the selected one): its index among f.lights,

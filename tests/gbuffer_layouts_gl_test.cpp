@@ -95,7 +95,8 @@ protected:
 
 TEST_F(GBufferLayoutsGlTest, EveryDeferredModeMatchesTheCpuOnTheLayoutsOwnInputs) {
     std::vector<LightingMode> modes{LightingMode::Quad, LightingMode::Volumes};
-    if (caps().computeShaders) modes.push_back(LightingMode::Tiled);
+    // Tiled and clustered (GL 4.3 compute) read the G-buffer through the same decode.
+    if (caps().computeShaders) modes.insert(modes.end(), {LightingMode::Tiled, LightingMode::Clustered});
     for (GBufferLayout layout : kAllLayouts) {
         for (LightingMode mode : modes) {
             PipelineSettings const s = settings(layout, mode);
