@@ -245,3 +245,51 @@ TEST(LessonModel, UndoKnowsEachLessonStepAsOneEntry) {
 }
 
 }  // namespace
+
+TEST(LessonFile, AStepOpensTheAbSplitAndLeavingClosesIt) {
+    json j = minimal();
+    j["steps"][0]["ab"] = {{"view", "diff"}, {"b", {{"cull", "front"}, {"shininess", 64}, {"light_cubes", false}}}};
+    LessonLoad const l = parseLesson(j.dump(), "demo.json");
+    ASSERT_TRUE(l.lesson) << l.error;
+    auto const& ab = l.lesson->steps[0].state.ab;
+    ASSERT_TRUE(ab);
+    EXPECT_EQ(ab->view, AbView::Diff);
+    EXPECT_EQ(ab->b.cull, CullMode::Front);
+    EXPECT_EQ(ab->b.shininess, 64.0f);
+    EXPECT_FALSE(ab->b.lightCubes);
+    EXPECT_EQ(std::count(ab->overrides.begin(), ab->overrides.end(), true), 3);
+
+    // Applied, the editor's A/B is on with B = the step's pipeline with those three changed.
+    EditorState state;
+    LessonSnapshot const before = captureLessonSnapshot(state);
+    EXPECT_FALSE(before.ab);
+    applyLessonSnapshot(l.lesson->steps[0].state, state, {640, 360});
+    ASSERT_TRUE(state.ab.enabled);
+    PipelineSettings const b = sideB(state.ab, state.pipeline);
+    EXPECT_EQ(b.cull, CullMode::Front);
+    EXPECT_EQ(b.mode, LightingMode::Volumes);
+    EXPECT_EQ(state.pipeline.cull, CullMode::Back);
+    EXPECT_EQ(describeAb(state.pipeline, b).find("cull"), 0u);
+    // Leaving (the snapshot from before) turns it off again.
+    applyLessonSnapshot(before, state, {640, 360});
+    EXPECT_FALSE(state.ab.enabled);
+
+    // Saved and read back, the step keeps its comparison.
+    LessonLoad const again = parseLesson(lessonToJson(*l.lesson), "again.json");
+    ASSERT_TRUE(again.lesson) << again.error;
+    ASSERT_TRUE(again.lesson->steps[0].state.ab);
+    EXPECT_EQ(again.lesson->steps[0].state.ab->b.cull, CullMode::Front);
+    EXPECT_EQ(again.lesson->steps[0].state.ab->overrides, ab->overrides);
+}
+
+TEST(LessonFile, ABadAbFieldIsNamed) {
+    json j = minimal();
+    j["steps"][0]["ab"] = {{"b", {{"zebra", 1}}}};
+    EXPECT_NE(errorOf(j).find("steps[0].ab.b.zebra"), std::string::npos) << errorOf(j);
+    j["steps"][0]["ab"] = {{"b", {{"cull", "sideways"}}}};
+    EXPECT_NE(errorOf(j).find("steps[0].ab.b.cull"), std::string::npos) << errorOf(j);
+    j["steps"][0]["ab"] = {{"view", "both"}, {"b", {{"cull", "front"}}}};
+    EXPECT_NE(errorOf(j).find("steps[0].ab.view"), std::string::npos) << errorOf(j);
+    j["steps"][0]["ab"] = {{"b", json::object()}};
+    EXPECT_NE(errorOf(j).find("steps[0].ab.b"), std::string::npos) << errorOf(j);
+}

@@ -56,6 +56,7 @@ Session richSession() {
     s.pipeline.ambient = {0.01f, 0.02f, 0.0333f};
     s.pipeline.exposure = 1.7f;
     s.pipeline.shininess = 64.5f;
+    s.pipeline.wireframesSelectedOnly = true;
     for (std::size_t i = 0; i < s.viewers.size(); ++i) {
         ViewerState& v = s.viewers[i];
         v.channelMask = unsigned(i + 1);
@@ -128,6 +129,9 @@ void expectEqual(Session const& a, Session const& b) {
     EXPECT_EQ(p.lightCubes, q.lightCubes);
     EXPECT_EQ(p.volumeWireframes, q.volumeWireframes);
     EXPECT_EQ(p.normalMaps, q.normalMaps);
+    EXPECT_EQ(p.wireframesSelectedOnly, q.wireframesSelectedOnly);
+    EXPECT_EQ(p.layout, q.layout);
+    expectSame(p.volumeScale, q.volumeScale, "volume_scale");
     expectSame(p.ambient, q.ambient, "ambient");
     expectSame(p.exposure, q.exposure, "exposure");
     expectSame(p.shininess, q.shininess, "shininess");

@@ -18,6 +18,7 @@ LessonSnapshot captureLessonSnapshot(EditorState const& state) {
     s.activeViewer = state.gbuffer.activeViewer;
     s.inspectorLocked = state.inspector.locked;
     s.inspectorPixel = state.inspector.pixel;
+    if (state.ab.enabled) s.ab = LessonAb{state.ab.view, state.ab.b, state.ab.overrides};
     return s;
 }
 
@@ -38,6 +39,15 @@ void applyLessonSnapshot(LessonSnapshot const& s, EditorState& state, glm::ivec2
         state.gbuffer.viewers[i] = v;
     }
     state.animation = s.animation;
+    if (s.ab) {
+        state.ab.enabled = true;
+        state.ab.view = s.ab->view;
+        state.ab.b = s.ab->b;
+        state.ab.overrides = s.ab->overrides;
+        state.ab.overrides.resize(abFields().size(), false);
+    } else {
+        state.ab.enabled = false;
+    }
     state.lightsPanel.selected = s.selectedLight < int(s.lights.size()) ? s.selectedLight : -1;
     state.lightsPanel.message.clear();
     state.gbuffer.activeViewer = std::clamp(s.activeViewer, 0, int(state.gbuffer.viewers.size()) - 1);

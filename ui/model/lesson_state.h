@@ -2,6 +2,8 @@
 // which lesson and step are shown with the editor state to return to. Plain values, no ImGui.
 #pragma once
 
+#include "model/ab_compare.h"
+
 #include "core/camera.h"
 #include "core/frame_types.h"
 #include "core/pipeline_settings.h"
@@ -21,6 +23,13 @@
 namespace gbl::ui {
 
 // Everything a lesson step sets, and everything leaving a lesson puts back.
+// The viewport's A/B comparison a step opens: side B's overridden fields and the view.
+struct LessonAb {
+    AbView view = AbView::Split;
+    PipelineSettings b;           // B's values of the overridden fields
+    std::vector<bool> overrides;  // one per abFields() row
+};
+
 struct LessonSnapshot {
     Camera camera;
     std::vector<PointLight> lights;
@@ -32,6 +41,8 @@ struct LessonSnapshot {
     // The pixel the step is about, as fractions of the frame (0..1, top-left origin), so that it
     // names the same surface point at any viewport size; the inspector is locked on it.
     std::optional<glm::vec2> pixel;
+    // The A/B split or diff the step opens; nullopt turns A/B off.
+    std::optional<LessonAb> ab;
     // Only for returning from a lesson: the inspector as it was.
     bool inspectorLocked = false;
     std::optional<glm::ivec2> inspectorPixel;

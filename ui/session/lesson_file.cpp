@@ -238,10 +238,39 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
     return claim;
 }
 
+// "ab": {"view": "split" | "diff", "b": {FIELD: VALUE, ...}}: the A/B comparison the step opens,
+// B being the step's pipeline with the named fields of the A/B table (abFields) changed.
+LessonAb readAb(json const& j, std::string const& path, PipelineSettings const& a) {
+    knownFields(j, path, {"view", "b"});
+    LessonAb ab;
+    if (auto it = j.find("view"); it != j.end()) {
+        std::string const v = it->is_string() ? it->get<std::string>() : "";
+        if (v != "split" && v != "diff") fail(path + ".view", "must be split or diff (got " + it->dump() + ")");
+        ab.view = v == "diff" ? AbView::Diff : AbView::Split;
+    }
+    auto b = j.find("b");
+    if (b == j.end() || !b->is_object() || b->empty())
+        fail(path + ".b", "must be an object naming at least one field side B changes");
+    AbState scratch;
+    scratch.b = a;
+    for (auto it = b->begin(); it != b->end(); ++it) {
+        json const& v = it.value();
+        std::string const value = v.is_string()    ? v.get<std::string>()
+                                  : v.is_boolean() ? (v.get<bool>() ? "1" : "0")
+                                                   : v.dump();
+        if (!setAbField(scratch, it.key(), value))
+            fail(path + ".b." + it.key(),
+                 "is not a field of the A/B table, or " + v.dump() + " is not one of its values");
+    }
+    ab.b = scratch.b;
+    ab.overrides = scratch.overrides;
+    return ab;
+}
+
 LessonStep readStep(json const& j, std::string const& path, json const& setup) {
     knownFields(j, path,
                 {"title", "look", "equation", "question", "scene", "lights", "camera", "pipeline", "viewers",
-                 "selected_light", "viewer", "pixel", "claim"});
+                 "selected_light", "viewer", "pixel", "claim", "ab"});
     LessonStep step;
     step.text.title = text(j, "title", path);
     step.text.look = text(j, "look", path);
@@ -280,6 +309,7 @@ LessonStep readStep(json const& j, std::string const& path, json const& setup) {
             p[i] = number((*it)[std::size_t(i)], path + ".pixel[" + std::to_string(i) + "]", 0.0f, 1.0f);
         step.state.pixel = p;
     }
+    if (auto it = j.find("ab"); it != j.end()) step.state.ab = readAb(*it, path + ".ab", step.state.pipeline);
     if (auto it = j.find("claim"); it != j.end()) step.claim = readClaim(*it, path + ".claim", state, step);
     return step;
 }
@@ -450,6 +480,22 @@ nlohmann::ordered_json stepJson(LessonStep const& step) {
                                 {"selected_light", step.state.selectedLight},
                                 {"viewer", kViewerNames[std::size_t(std::clamp(step.state.activeViewer, 0, 4))]}};
     if (step.state.pixel) j["pixel"] = {step.state.pixel->x, step.state.pixel->y};
+    if (step.state.ab) {
+        nlohmann::ordered_json b = nlohmann::ordered_json::object();
+        auto const fields = abFields();
+        for (std::size_t i = 0; i < fields.size() && i < step.state.ab->overrides.size(); ++i) {
+            if (!step.state.ab->overrides[i]) continue;
+            AbField const& f = fields[i];
+            double const v = f.get(step.state.ab->b);
+            if (f.kind == AbFieldKind::Choice)
+                b[std::string(f.name)] = std::string(f.choices[std::size_t(v)]);
+            else if (f.kind == AbFieldKind::Toggle)
+                b[std::string(f.name)] = v != 0.0;
+            else
+                b[std::string(f.name)] = v;
+        }
+        j["ab"] = {{"view", step.state.ab->view == AbView::Diff ? "diff" : "split"}, {"b", b}};
+    }
     return j;
 }
 

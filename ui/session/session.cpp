@@ -111,7 +111,8 @@ ojson sessionJson(Session const& s) {
           {"ambient", vec(p.ambient)},
           {"exposure", p.exposure},
           {"shininess", p.shininess},
-          {"volume_scale", p.volumeScale}}},
+          {"volume_scale", p.volumeScale},
+          {"wireframes_selected_only", p.wireframesSelectedOnly}}},
         {"viewers", viewers},
         {"animation", {{"enabled", s.animation.enabled}, {"speed", s.animation.speed}, {"time", s.animation.time}}},
         {"viewer_tools",
@@ -275,7 +276,7 @@ std::vector<PointLight> readLights(json const& j) {
 PipelineSettings readPipeline(json const& j) {
     Object o(j, "pipeline",
              {"mode", "cull", "blit", "tonemap", "view", "light_cubes", "volume_wireframes", "normal_maps", "ambient",
-              "exposure", "shininess", "volume_scale", "layout"});
+              "exposure", "shininess", "volume_scale", "layout", "wireframes_selected_only"});
     PipelineSettings p;
     p.mode = enumeration<LightingMode>(o.required("mode"), o.field("mode"), kLightingModeNames);
     p.cull = enumeration<CullMode>(o.required("cull"), o.field("cull"), kCullModeNames);
@@ -287,6 +288,9 @@ PipelineSettings readPipeline(json const& j) {
         p.layout = enumeration<GBufferLayout>(*layout, o.field("layout"), kGBufferLayoutNames);
     p.lightCubes = boolean(o.required("light_cubes"), o.field("light_cubes"));
     p.volumeWireframes = boolean(o.required("volume_wireframes"), o.field("volume_wireframes"));
+    // Optional: files from before the option draw every volume.
+    if (json const* only = o.optional("wireframes_selected_only"))
+        p.wireframesSelectedOnly = boolean(*only, o.field("wireframes_selected_only"));
     p.normalMaps = boolean(o.required("normal_maps"), o.field("normal_maps"));
     p.ambient = vector<3>(o.required("ambient"), o.field("ambient"), Bound::NonNegative);
     p.exposure = number(o.required("exposure"), o.field("exposure"), Bound::Positive);
