@@ -473,4 +473,8 @@ void RendererTestAccess::setFrameHook(Renderer& renderer, std::function<void()> 
     renderer.impl().frameTestHook = std::move(hook);
 }
 
+std::size_t RendererTestAccess::shaderBuilds(Renderer& renderer) {
+    return renderer.impl().shaders.buildCount();
+}
+
 }  // namespace gbl

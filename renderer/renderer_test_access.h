@@ -4,6 +4,7 @@
 
 #include "renderer.h"
 
+#include <cstddef>
 #include <functional>
 
 namespace gbl {
@@ -12,6 +13,8 @@ struct RendererTestAccess {
     // Runs `hook` inside every later render() call, between the geometry and lighting passes
     // (an empty function removes it). The GL error tests raise an error there.
     static void setFrameHook(Renderer& renderer, std::function<void()> hook);
+    // Shader programs the renderer has built so far.
+    static std::size_t shaderBuilds(Renderer& renderer);
 };
 
 }  // namespace gbl

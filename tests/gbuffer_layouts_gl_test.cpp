@@ -6,6 +6,7 @@
 #include "frame_export.h"
 #include "gl_fixture.h"
 #include "image_io.h"
+#include "renderer_test_access.h"
 #include "run_command.h"
 #include "scene/default_scene.h"
 #include "test_scenes.h"
@@ -219,6 +220,13 @@ TEST_F(GBufferLayoutsGlTest, SwitchingLayoutsLiveAndBackGivesTheSameFrame) {
     EXPECT_EQ(renderer_->layout(), GBufferLayout::Packed);
     FloatImage const again = lighting(settings(GBufferLayout::Classic));
     EXPECT_EQ(first.pixels, again.pixels);
+    // Both layouts' programs are kept: switching back and forth (what the A/B split does every
+    // frame when its sides differ in layout) builds nothing more and gives the same frames.
+    std::size_t const builds = RendererTestAccess::shaderBuilds(*renderer_);
+    EXPECT_EQ(lighting(settings(GBufferLayout::Packed)).pixels, packed.pixels);
+    EXPECT_EQ(lighting(settings(GBufferLayout::Classic)).pixels, first.pixels);
+    EXPECT_EQ(RendererTestAccess::shaderBuilds(*renderer_), builds);
+    EXPECT_GT(builds, 0u);
 }
 
 TEST_F(GBufferLayoutsGlTest, InspectorAndViewersShowDecodedValues) {

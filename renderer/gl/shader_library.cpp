@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace gbl {
 
@@ -104,21 +105,33 @@ bool ShaderLibrary::add(ProgramId id, std::string* log) {
     }
     bindSamplerSlots(*program);
     programs_[std::size_t(id)] = std::move(*program);
+    ++builds_;
     failures_[std::size_t(id)].clear();
     return true;
 }
 
 bool ShaderLibrary::setGlobalDefines(std::vector<std::string> defines, std::string* log) {
     if (defines == globalDefines_) return true;
-    globalDefines_ = std::move(defines);
+    std::array<gl::Program, kProgramCount> previous = std::move(programs_);
+    programs_ = {};
+    if (auto kept = otherDefines_.find(defines); kept != otherDefines_.end()) {
+        programs_ = std::move(kept->second);
+        otherDefines_.erase(kept);
+    }
+    std::vector<std::string> left = std::exchange(globalDefines_, std::move(defines));
     bool ok = true;
     for (ProgramInfo const& info : programTable()) {
-        if (!programs_[std::size_t(info.id)]) continue;  // never built: built with the new defines on first use
+        std::size_t const i = std::size_t(info.id);
+        // Never built under the old defines: built with the new ones on first use; kept from an
+        // earlier switch: nothing to build.
+        if (!previous[i] || programs_[i]) continue;
         std::string buildLog;
-        if (add(info.id, &buildLog) || !ok) continue;
+        if (add(info.id, &buildLog)) continue;
+        programs_[i] = std::move(previous[i]);  // the failed one keeps its previous build
+        if (ok && log) *log = buildLog;
         ok = false;
-        if (log) *log = buildLog;
     }
+    otherDefines_[std::move(left)] = std::move(previous);
     return ok;
 }
 
@@ -138,6 +151,7 @@ std::vector<std::string> ShaderLibrary::reloadChanged() {
         changed.insert(file);
     }
     if (changed.empty()) return messages;
+    otherDefines_.clear();  // built from the old sources
     for (ProgramInfo const& info : programTable()) {
         gl::Program& current = programs_[std::size_t(info.id)];
         if (!current) continue;  // never built: its group builds it on first use

@@ -23,6 +23,8 @@ public:
     // shaders/bindings.glsl. Returns false and fills *log on failure; the log is also kept
     // (failureLog) until a later build succeeds.
     bool add(ProgramId id, std::string* log);
+    // Programs compiled and linked so far (successful builds), for tests of what a switch costs.
+    std::size_t buildCount() const { return builds_; }
     bool has(ProgramId id) const { return bool(programs_[std::size_t(id)]); }
     // The last program of `id` that built successfully; an empty program (which draws nothing
     // and raises a GL error the tests catch) when it never built. Callers build optional
@@ -37,8 +39,9 @@ public:
     std::vector<std::string> reloadChanged();
 
     // Defines every program gets after its own (the G-buffer layout's, core/gbuffer_layout.h).
-    // Rebuilds every program built so far; returns false and fills *log with the first failure
-    // (that program keeps its previous build).
+    // Switches every program built so far to the new defines; returns false and fills *log with
+    // the first failure (that program keeps its previous build). The programs of the defines left
+    // are kept, so switching back costs no build (the A/B split renders two layouts a frame).
     bool setGlobalDefines(std::vector<std::string> defines, std::string* log);
 
     // Text of a shader file with #include lines expanded: from disk when reloading has seen a
@@ -52,6 +55,9 @@ private:
     std::filesystem::path sourceDir_;
     std::vector<std::string> globalDefines_;
     std::array<gl::Program, kProgramCount> programs_;
+    std::size_t builds_ = 0;
+    // Programs built for other global defines; dropped when a shader file changes on disk.
+    std::map<std::vector<std::string>, std::array<gl::Program, kProgramCount>> otherDefines_;
     std::array<std::string, kProgramCount> failures_;
     std::map<std::string, std::filesystem::file_time_type> seenTimes_;  // per file on disk
     std::map<std::string, std::string> diskOverrides_;                  // files read from disk

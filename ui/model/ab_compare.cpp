@@ -46,11 +46,12 @@ AbField number(std::string_view name, float min, float max) {
 }
 
 // The one list of what B can change. `view` is left out: both sides show the same view.
-std::array<AbField, 10> const kFields{
+std::array<AbField, 11> const kFields{
     choice<&PipelineSettings::mode>("mode", kLightingModeNames),
     choice<&PipelineSettings::cull>("cull", kCullModeNames),
     choice<&PipelineSettings::depthCopy>("blit", kDepthCopyNames),
     choice<&PipelineSettings::tonemap>("tonemap", kTonemapNames),
+    choice<&PipelineSettings::layout>("layout", kGBufferLayoutNames),
     toggle<&PipelineSettings::normalMaps>("normal_maps"),
     toggle<&PipelineSettings::lightCubes>("light_cubes"),
     toggle<&PipelineSettings::volumeWireframes>("volume_wireframes"),

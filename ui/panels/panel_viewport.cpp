@@ -144,15 +144,25 @@ void boxedText(ImVec2 p, std::string const& text) {
     dl->AddText(p, IM_COL32(240, 240, 240, 255), text.c_str());
 }
 
-std::string passLine(char const* side, std::vector<PassTiming> const& passes, double total) {
-    std::string out = std::string(side) + " GPU ms:";
+// One side's GPU ms per pass, as much as fits in `width` pixels: every pass, else the passes of
+// 1 ms or more, else the total alone (the Stats window lists every pass).
+std::string passLine(char const* side, std::vector<PassTiming> const& passes, double total, float width) {
     char buf[64];
-    for (PassTiming const& p : passes) {
-        std::snprintf(buf, sizeof buf, " %s %.1f", p.name.c_str(), p.gpuMs);
-        out += buf;
-    }
     std::snprintf(buf, sizeof buf, ", total %.1f", total);
-    return out + buf;
+    std::string const tail = buf;
+    std::string out;
+    for (double const least : {0.0, 1.0}) {
+        out = std::string(side) + " GPU ms:";
+        for (PassTiming const& p : passes) {
+            if (p.gpuMs < least) continue;
+            std::snprintf(buf, sizeof buf, " %s %.1f", p.name.c_str(), p.gpuMs);
+            out += buf;
+        }
+        out += tail;
+        if (ImGui::CalcTextSize(out.c_str()).x <= width) return out;
+    }
+    std::snprintf(buf, sizeof buf, "%s GPU ms: total %.1f", side, total);
+    return buf;
 }
 
 std::string sideLabel(char const* side, PipelineSettings const& s) {
@@ -188,8 +198,8 @@ void drawAbSplit(ViewportTeaching const& v, PipelineSettings const& a, ImVec2 or
     std::string const b = sideLabel("B", v.settingsB);
     boxedText(ImVec2(end.x - ImGui::CalcTextSize(b.c_str()).x - 8, origin.y + 6), b);
     boxedText(ImVec2(origin.x + 8, origin.y + 6 + line), "B differs in: " + describeAb(a, v.settingsB));
-    boxedText(ImVec2(origin.x + 8, end.y - 2 * line - 4), passLine("A", ab.passesA, ab.gpuMsA));
-    boxedText(ImVec2(origin.x + 8, end.y - line - 4), passLine("B", ab.passesB, ab.gpuMsB));
+    boxedText(ImVec2(origin.x + 8, end.y - 2 * line - 4), passLine("A", ab.passesA, ab.gpuMsA, avail.x - 16));
+    boxedText(ImVec2(origin.x + 8, end.y - line - 4), passLine("B", ab.passesB, ab.gpuMsB, avail.x - 16));
 }
 
 // The |A - B| heat map's legend (turbo from 0 to its scale) and the diff's numbers.
@@ -220,8 +230,9 @@ void drawAbDiff(ViewportTeaching const& v, PipelineSettings const& a, ImVec2 ori
     dl->AddText(ImVec2(p0.x, p0.y + h + 1), IM_COL32(240, 240, 240, 255), "0");
     std::snprintf(buf, sizeof buf, "%.3g%s", scale, ab.heatToThreshold ? " (threshold)" : " (max)");
     dl->AddText(ImVec2(p0.x + w - ImGui::CalcTextSize(buf).x, p0.y + h + 1), IM_COL32(240, 240, 240, 255), buf);
-    boxedText(ImVec2(origin.x + 8, origin.y + avail.y - 2 * line - 4), passLine("A", ab.passesA, ab.gpuMsA));
-    boxedText(ImVec2(origin.x + 8, origin.y + avail.y - line - 4), passLine("B", ab.passesB, ab.gpuMsB));
+    boxedText(ImVec2(origin.x + 8, origin.y + avail.y - 2 * line - 4),
+              passLine("A", ab.passesA, ab.gpuMsA, avail.x - 16));
+    boxedText(ImVec2(origin.x + 8, origin.y + avail.y - line - 4), passLine("B", ab.passesB, ab.gpuMsB, avail.x - 16));
 }
 
 // The third row: "Light by light" with its slider (Left/Right step it) and the A/B toggle.
