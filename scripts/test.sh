@@ -14,6 +14,8 @@ ctest --test-dir build --output-on-failure -j2 --timeout 600
 tested=$SECONDS
 # The context macOS and Windows get (no EGL there): a hidden GLFW window, here on Xvfb. The HeadlessContext
 # tests fail unless GLFW really made the context; the others show the renderer and the CLI work on it.
-GBL_HEADLESS=glfw xvfb-run -a ctest --test-dir build --output-on-failure -j2 --timeout 300 \
+# -noreset: by default Xvfb resets when its last client leaves, and a test connecting during that
+# reset (two run at once) fails with "Failed to open display".
+GBL_HEADLESS=glfw xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" ctest --test-dir build --output-on-failure -j2 --timeout 300 \
     -R '^(HeadlessContext|RendererGlTest|RenderCommand)\.'
 echo "test.sh: build $((built - start)) s, ctest $((tested - built)) s, GLFW-context tests $((SECONDS - tested)) s"
