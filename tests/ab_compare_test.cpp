@@ -77,6 +77,16 @@ TEST(AbCompare, ScriptValuesSetAndTickAField) {
     EXPECT_EQ(sideB(fresh, PipelineSettings{}).mode, LightingMode::Volumes);
 }
 
+TEST(AbCompare, NormalAngleNeedsTheLayoutTicked) {
+    AbState ab;
+    EXPECT_FALSE(abComparesLayout(ab));
+    EXPECT_TRUE(setAbField(ab, "cull", "stencil"));
+    EXPECT_FALSE(abComparesLayout(ab));  // another field ticked: still no layout to compare
+    EXPECT_TRUE(setAbField(ab, "layout", "classic"));
+    EXPECT_TRUE(abComparesLayout(ab));
+    EXPECT_EQ(sideB(ab, PipelineSettings{}).layout, GBufferLayout::Classic);
+}
+
 TEST(Accumulate, ArrowStepsStayWithinTheLightList) {
     AccumulateState a;
     stepAccumulation(a, -1, 32);

@@ -24,6 +24,10 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     l.events = {"key 70 press mods 0 -> frame-selection", "quote \" and \\ and \n"};
     l.sessionPath = "/tmp/s.json";
     l.clipped = {"Stats: content 330 px wide in 302 px"};
+    l.layout = "packed";
+    l.pipelineWindow = {0, 370, 300, 350};
+    l.layoutCombo = {900, 400, 200, 19};
+    l.layoutItems = {{1000.0f, 430.5f}, {1000.0f, 450.5f}};
     nlohmann::json const j = nlohmann::json::parse(frameLogJson(l));
     EXPECT_EQ(j["frame"], 41);
     EXPECT_EQ(j["rendered"], true);
@@ -40,6 +44,11 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     EXPECT_EQ(j["session"], "/tmp/s.json");
     EXPECT_EQ(j["actions"].size(), 0u);
     EXPECT_EQ(j["clipped"][0], "Stats: content 330 px wide in 302 px");
+    EXPECT_EQ(j["layout"], "packed");
+    EXPECT_DOUBLE_EQ(j["pipelineWindow"][1].get<double>(), 370.0);
+    EXPECT_DOUBLE_EQ(j["layoutCombo"][3].get<double>(), 19.0);
+    ASSERT_EQ(j["layoutItems"].size(), 4u);  // x, y of each entry, flat
+    EXPECT_DOUBLE_EQ(j["layoutItems"][3].get<double>(), 450.5);
 }
 
 TEST(FrameLog, WritesOneLinePerFrame) {

@@ -8,39 +8,12 @@ set -eu
 bin="$1"
 work="$2"
 
-if ! command -v xdotool >/dev/null 2>&1; then
-    echo "ui_lessons skipped: xdotool not found (scripts/install-deps.sh installs it)"
-    exit 0
-fi
-rm -rf "$work"
-mkdir -p "$work"
+ui_name=ui_lessons
 log="$work/frames.jsonl"
-export GBL_RECOVERY_DIR="$work/recovery" XDG_CONFIG_HOME="$work/config"
-mkdir -p "$GBL_RECOVERY_DIR" "$XDG_CONFIG_HOME"
-pid=""
+. "$(dirname "$0")/support/ui_common.sh"
+ui_require_xdotool
+ui_fresh_work
 
-fail() {
-    echo "ui_lessons: FAIL: $*"
-    [ -f "$log" ] && tail -n 2 "$log"
-    [ -n "$pid" ] && kill "$pid" 2>/dev/null
-    exit 1
-}
-lines() { [ -f "$log" ] && wc -l < "$log" || echo 0; }
-last() { tail -n 1 "$log"; }
-field() {
-    line="${2:-$(last)}"
-    printf '%s\n' "$line" | sed -n "s/.*\"$1\":\(\[[^]]*\]\|\"[^\"]*\"\|[^,}]*\).*/\1/p"
-}
-wait_frames() {
-    target=$(( $(lines) + $1 ))
-    i=0
-    while [ "$(lines)" -lt "$target" ]; do
-        kill -0 "$pid" 2>/dev/null || fail "the editor exited (see $work/editor.log)"
-        i=$((i + 1))
-        [ "$i" -le 600 ] || fail "no frame logged for 60 s"
-        sleep 0.1
-    done
-}
 # button N: window coordinates of Lessons button N (1 Start, 2 Back, 3 Next, 4 Leave).
 button() {
     field lessonButtons | tr -d '[]' | awk -F, -v n="$1" '{ printf "%d %d", $(2 * n - 1), $(2 * n) }'
@@ -55,9 +28,7 @@ click() {
 "$bin" --size 1280x720 --no-vsync --log-frames "$log" > "$work/editor.log" 2>&1 &
 pid=$!
 wait_frames 4
-wid=$(xdotool search --sync --onlyvisible --name '^gbuffer-lab$' | head -n 1)
-[ -n "$wid" ] || fail "no gbuffer-lab window"
-xdotool windowactivate --sync "$wid" 2>/dev/null || xdotool windowfocus --sync "$wid"
+ui_window
 wait_frames 2
 
 camera0=$(field camera)
@@ -87,9 +58,7 @@ click 4
 [ "$(field camera)" = "$camera0" ] || fail "Leave did not restore the camera: $camera0 -> $(field camera)"
 [ "$(field view)" = "$view0" ] || fail "Leave did not restore the view: $view0 -> $(field view)"
 echo "Leave: camera $(field camera), view $(field view)"
-kill "$pid" 2>/dev/null || true
-wait "$pid" 2>/dev/null || true
-pid=""
+ui_stop
 
 # Screenshots with a lesson step open, for a person to look at (no clipped text).
 for size in 1280x720 1600x900; do
@@ -98,7 +67,7 @@ for size in 1280x720 1600x900; do
         { cat "$work/shot-$size.log"; fail "screenshot at $size failed"; }
     [ "$(field lesson "$(tail -n 1 "$work/shot-$size.jsonl")")" = '"camera_inside:2"' ] ||
         fail "--lesson camera_inside:2 did not open that step at $size"
-    clipped=$(tail -n 1 "$work/shot-$size.jsonl" | sed -n 's/.*"clipped":\[\([^]]*\)\].*/\1/p' | tr ',' '\n' | grep Lessons || true)
+    clipped=$(clipped_list "$(tail -n 1 "$work/shot-$size.jsonl")" | grep Lessons || true)
     [ -z "$clipped" ] || fail "the Lessons window cuts off content at $size: $clipped"
     echo "screenshot $work/lesson-$size.png"
 done

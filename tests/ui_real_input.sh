@@ -8,46 +8,11 @@ set -eu
 bin="$1"
 work="$2"
 
-if ! command -v xdotool >/dev/null 2>&1; then
-    echo "ui_real_input skipped: xdotool not found (scripts/install-deps.sh installs it)"
-    exit 0
-fi
-rm -rf "$work"
-mkdir -p "$work"
+ui_name=ui_real_input
 log="$work/frames.jsonl"
-# Crash recovery files and the layout file stay inside the test's folder.
-export GBL_RECOVERY_DIR="$work/recovery" XDG_CONFIG_HOME="$work/config"
-mkdir -p "$GBL_RECOVERY_DIR" "$XDG_CONFIG_HOME"
-pid=""
-
-fail() {
-    echo "ui_real_input: FAIL: $*"
-    [ -f "$log" ] && tail -n 3 "$log"
-    [ -n "$pid" ] && kill "$pid" 2>/dev/null
-    exit 1
-}
-
-# --- reading the frame log (flat JSON lines written by ui/model/frame_log.cpp) ---------------
-lines() { [ -f "$log" ] && wc -l < "$log" || echo 0; }
-last() { tail -n 1 "$log"; }
-# field NAME [LINE]: the raw value of a number, boolean or [..] array field.
-field() {
-    line="${2:-$(last)}"
-    printf '%s\n' "$line" | sed -n "s/.*\"$1\":\(\[[^]]*\]\|[^,}]*\).*/\1/p"
-}
-# wait_frames N: until N more frames are logged (at most 60 s).
-wait_frames() {
-    target=$(( $(lines) + $1 ))
-    i=0
-    while [ "$(lines)" -lt "$target" ]; do
-        kill -0 "$pid" 2>/dev/null || fail "the editor exited (see $work/editor.log)"
-        i=$((i + 1))
-        [ "$i" -le 600 ] || fail "no frame logged for 60 s"
-        sleep 0.1
-    done
-}
-# events_since N: the events and actions logged after line N.
-events_since() { tail -n +"$(( $1 + 1 ))" "$log" | sed -n 's/.*"events":\(\[[^]]*\]\).*"actions":\(\[[^]]*\]\).*/\1 \2/p'; }
+. "$(dirname "$0")/support/ui_common.sh"
+ui_require_xdotool
+ui_fresh_work
 
 # --- a session file to start from, written by the editor's own save --------------------------
 cat > "$work/make_session.txt" <<SCRIPT
@@ -62,9 +27,7 @@ cp "$work/session.json" "$work/start.json"
     > "$work/editor.log" 2>&1 &
 pid=$!
 wait_frames 4
-wid=$(xdotool search --sync --onlyvisible --name '^gbuffer-lab$' | head -n 1)
-[ -n "$wid" ] || fail "no gbuffer-lab window"
-xdotool windowactivate --sync "$wid" 2>/dev/null || xdotool windowfocus --sync "$wid"
+ui_window
 
 # The pointer over the middle of the viewport image.
 vp=$(field viewport | tr -d '[]')
@@ -143,9 +106,7 @@ events_since "$mark" | grep -q "double-click-frame" || fail "no double click see
 [ "$(field camera)" != "$home" ] || fail "the double click on light $light did not frame it"
 echo "double click framed light $light"
 
-kill "$pid" 2>/dev/null || true
-wait "$pid" 2>/dev/null || true
-pid=""
+ui_stop
 
 # --- real clicks on "Pin lit" and "Diff"; the script in the same editor checks the diff --------
 # The frame log says where the editor drew both (window pixels); "Diff" appears once pinned.
@@ -172,10 +133,7 @@ mkdir -p "$GBL_RECOVERY_DIR"
     --ui-test "$work/lit_diff.txt" > "$work/lit_diff.log" 2>&1 &
 pid=$!
 wait_frames 3
-wid=$(xdotool search --sync --onlyvisible --name '^gbuffer-lab$' | head -n 1)
-[ -n "$wid" ] || fail "no gbuffer-lab window for the lit diff"
-xdotool windowactivate --sync "$wid" 2>/dev/null || xdotool windowfocus --sync "$wid"
-centre() { field "$1" | tr -d '[]' | awk -F, '{ printf "%d %d", $1 + $3 / 2, $2 + $4 / 2 }'; }
+ui_window
 set -- $(centre pinLit)
 pinx=$1 piny=$2
 [ "$pinx" -gt 0 ] || fail "the Pin lit button was not drawn ($(field pinLit))"

@@ -20,42 +20,11 @@ if [ $# -lt 3 ]; then
     exit 0
 fi
 
-if ! command -v xdotool >/dev/null 2>&1; then
-    echo "ui_teaching skipped: xdotool not found (scripts/install-deps.sh installs it)"
-    exit 0
-fi
-rm -rf "$work"
-mkdir -p "$work"
-export GBL_RECOVERY_DIR="$work/recovery" XDG_CONFIG_HOME="$work/config"
-mkdir -p "$GBL_RECOVERY_DIR" "$XDG_CONFIG_HOME"
-pid=""
+ui_name=ui_teaching
 log=""
-
-fail() {
-    echo "ui_teaching: FAIL: $*"
-    [ -n "$log" ] && [ -f "$log" ] && tail -n 2 "$log"
-    [ -n "$pid" ] && kill "$pid" 2>/dev/null
-    exit 1
-}
-lines() { [ -f "$log" ] && wc -l < "$log" || echo 0; }
-last() { tail -n 1 "$log"; }
-field() {
-    line="${2:-$(last)}"
-    printf '%s\n' "$line" | sed -n "s/.*\"$1\":\(\[[^]]*\]\|[^,}]*\).*/\1/p"
-}
-wait_frames() {
-    target=$(( $(lines) + $1 ))
-    i=0
-    while [ "$(lines)" -lt "$target" ]; do
-        kill -0 "$pid" 2>/dev/null || fail "the editor exited (see $work/editor.log)"
-        i=$((i + 1))
-        [ "$i" -le 600 ] || fail "no frame logged for 60 s"
-        sleep 0.1
-    done
-}
-# rect_x/rect_y NAME FX FY: a point inside a logged rectangle, at fractions of its size.
-rect_point() { field "$1" | tr -d '[]' | awk -F, -v fx="$2" -v fy="$3" '{ printf "%d %d", $1 + $3 * fx, $2 + $4 * fy }'; }
-shot() { import -window "$wid" "$work/$1.png" 2>/dev/null || xwd -id "$wid" -out "$work/$1.xwd"; }
+. "$(dirname "$0")/support/ui_common.sh"
+ui_require_xdotool
+ui_fresh_work
 
 run_size() {
     size="$1"
@@ -63,12 +32,9 @@ run_size() {
     "$bin" --size "$size" --no-vsync --frame-sleep-ms 40 --log-frames "$log" > "$work/editor_$size.log" 2>&1 &
     pid=$!
     wait_frames 4
-    # The newest window of that name: the one this run opened.
-    wid=$(xdotool search --sync --onlyvisible --name '^gbuffer-lab$' | tail -n 1)
-    [ -n "$wid" ] || fail "no gbuffer-lab window"
+    ui_window  # the newest window of that name: the one this run opened
     xdotool getwindowgeometry "$wid" | tr '\n' ' '
     echo
-    xdotool windowactivate --sync "$wid" 2>/dev/null || xdotool windowfocus --sync "$wid"
     # The pointer over the viewport first, so the window has seen it before the first press.
     set -- $(rect_point viewport 0.5 0.5)
     xdotool mousemove --window "$wid" "$1" "$2"
@@ -123,9 +89,7 @@ run_size() {
     echo "$size: divider dragged to $divider; camera stayed"
     wait_frames 3
     shot "split_$size"
-    kill "$pid" 2>/dev/null || true
-    wait "$pid" 2>/dev/null || true
-    pid=""
+    ui_stop
 }
 
 run_size "$3"

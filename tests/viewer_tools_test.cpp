@@ -242,8 +242,16 @@ TEST(ViewerTools, ShownTexelColourMarksNaNAndInfAsTheShaderDoes) {
 TEST(ViewerTools, ViewportToolsFollowTheViewportsView) {
     ViewportTools tools;
     EXPECT_FALSE(followViewportView(tools, DebugView::Final));
-    EXPECT_FALSE(followViewportView(tools, DebugView::Lighting));
     EXPECT_FALSE(followViewportView(tools, DebugView::Heatmap));
+    // The lit frame: its HDR values before the tonemap, RGB, every pixel counted.
+    ASSERT_TRUE(followViewportView(tools, DebugView::Lighting));
+    EXPECT_EQ(tools.viewer.kind, ViewerKind::Lighting);
+    EXPECT_EQ(tools.viewer.channelMask, 0x7u);
+    EXPECT_EQ(viewerAttachment(tools.viewer), Attachment::Lighting);
+    EXPECT_EQ(viewerDebugView(tools.viewer), DebugView::Lighting);
+    EXPECT_EQ(viewerSkip(ViewerKind::Lighting), RangeSkip::None);
+    EXPECT_EQ(viewerKindName(ViewerKind::Lighting), "lighting");
+    EXPECT_EQ(viewerKindName(ViewerKind::Depth), "depth");
     ASSERT_TRUE(followViewportView(tools, DebugView::Albedo));
     EXPECT_EQ(tools.viewer.kind, ViewerKind::Albedo);
     EXPECT_EQ(tools.viewer.channelMask, 0x7u);

@@ -157,4 +157,46 @@ TEST_F(ViewportToolsGlTest, ViewportToolsDrawTheAttachmentWithTheirRange) {
     EXPECT_GT(red, kW * kH / 4);  // most of the drawn frame is beyond the narrowed white point
 }
 
+TEST_F(ViewportToolsGlTest, LightingViewToolsWorkOnTheHdrValues) {
+    state_.pipeline.view = DebugView::Lighting;
+    state_.pipeline.exposure = 4.0f;  // the tonemap's exposure must not reach the tools' values
+    render();
+    FrameInput const frame{state_.camera, scene_.lights, state_.pipeline, true};
+    state_.viewportTools.open = true;
+    state_.viewportTools.viewer.showHistogram = true;
+    unsigned const tex = ui::serviceViewportTools(state_, *renderer_, frame, 1, true, gpu_);
+    ASSERT_NE(tex, 0u);
+    ui::ViewerState const& v = state_.viewportTools.viewer;
+    ui::ViewerData const& d = state_.viewportTools.data;
+    EXPECT_EQ(v.kind, ui::ViewerKind::Lighting);
+    // The tools' values are the lit attachment as stored (HDR, before exposure and tonemap).
+    FloatImage const lit = renderer_->readAttachment(Attachment::Lighting);
+    ASSERT_EQ(d.values.width, kW);
+    ASSERT_EQ(d.values.pixels, lit.pixels);
+    float lo = INFINITY, hi = -INFINITY;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x)
+            for (int c = 0; c < 3; ++c) {
+                lo = std::min(lo, lit.at(x, y, c));
+                hi = std::max(hi, lit.at(x, y, c));
+            }
+    ASSERT_GT(hi, lo);
+    // Auto-fit took the RGB min and max of every pixel (the lit frame has no background mask).
+    EXPECT_EQ(v.rangeMin, lo);
+    EXPECT_EQ(v.rangeMax, hi);
+    EXPECT_EQ(d.stats.shown.min, lo);
+    EXPECT_EQ(d.stats.shown.max, hi);
+    EXPECT_EQ(d.stats.pixels, long(kW) * kH);
+    // The drawn picture is each channel remapped over that range: within one 8-bit step of
+    // (value - min) / (max - min), the rounding of the RGBA8 target.
+    int worst = 0;
+    for (int y = 0; y < kH; y += 3)
+        for (int x = 0; x < kW; x += 3)
+            for (int c = 0; c < 3; ++c) {
+                float const t = (lit.at(x, y, c) - lo) / (hi - lo);
+                worst = std::max(worst, std::abs(texel(tex, x, y)[std::size_t(c)] - int(std::lround(t * 255.0f))));
+            }
+    EXPECT_LE(worst, 1);
+}
+
 }  // namespace

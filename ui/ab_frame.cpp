@@ -1,6 +1,8 @@
 // Rendering the teaching views of the editor's frame.
 #include "ab_frame.h"
 
+#include "model/normal_angle.h"
+
 #include <epoxy/gl.h>
 
 namespace gbl::ui {
@@ -23,6 +25,10 @@ TeachingInputs teachingInputs(FrameInput const& a, AbState const& ab) {
     t.contribution = a.lightContribution;
     t.wireframeLight = a.wireframeLight;
     if (ab.enabled) t.sideB = sideB(ab, a.settings);
+    if (ab.enabled && ab.view == AbView::Diff && ab.metric == AbMetric::NormalAngle) {
+        t.normalAngle = true;
+        t.angleThreshold = ab.angleThreshold;
+    }
     return t;
 }
 
@@ -42,9 +48,18 @@ FrameStats renderEditorFrame(EditorState& state, Renderer& renderer, FrameInput 
     ViewParams shown;
     shown.view = b.settings.view;
     renderer.drawView(shown, b, gpu.b);
+    // The normal angle needs B's decoded normals: read before A's frame replaces the G-buffer.
+    bool const angle = ab.view == AbView::Diff && ab.metric == AbMetric::NormalAngle;
+    FloatImage const normalsB = angle ? renderer.readAttachment(Attachment::Normal) : FloatImage{};
     FrameStats const statsA = renderer.render(a);
     setLitValues(ab.pin, renderer.readAttachment(Attachment::Lighting), frame);
-    if (ab.pin.diff.comparable) uploadDiff(gpu.diff, ab.pin.diff, ab.heatToThreshold ? ab.threshold : 0.0f, true);
+    if (angle) {
+        ab.normalDiff = normalAngleDiff(renderer.readAttachment(Attachment::Normal), normalsB, ab.angleThreshold);
+        if (ab.normalDiff.comparable)
+            uploadDiff(gpu.diff, ab.normalDiff, ab.heatToThreshold ? ab.angleThreshold : 0.0f, true);
+    } else if (ab.pin.diff.comparable) {
+        uploadDiff(gpu.diff, ab.pin.diff, ab.heatToThreshold ? ab.threshold : 0.0f, true);
+    }
     ab.passesA = statsA.passes;
     ab.passesB = statsB.passes;
     ab.gpuMsA = statsA.gpuFrameMs;

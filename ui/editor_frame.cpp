@@ -62,7 +62,8 @@ void fitViewerRanges(EditorState& state, Renderer& renderer, long frame, bool re
                 break;
             }
             case ui::ViewerKind::Normal:
-                continue;  // normals are shown as directions, not remapped
+            case ui::ViewerKind::Lighting:  // the viewport's tools only; they fit their own values
+                continue;                   // normals are shown as directions, not remapped
         }
         if (r.samples > 0) {
             v.rangeMin = r.min;

@@ -61,6 +61,10 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.clipped = ui::clippedItems();
     line.sessionPath = editor.sessions->panel.currentPath;
     lessonLogFields(editor, line);  // ui/editor_lessons.cpp
+    line.layout = std::string(enumName(kGBufferLayoutNames, state.pipeline.layout));
+    line.pipelineWindow = editor.pipelineRects.window;
+    line.layoutCombo = editor.pipelineRects.layoutCombo;
+    line.layoutItems = editor.pipelineRects.layoutItems;
     editor.frameLog.write(line);
 }
 

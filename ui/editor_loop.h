@@ -15,6 +15,7 @@
 #include "model/lesson_state.h"
 #include "model/render_inputs.h"
 #include "model/scene_loading.h"
+#include "panels/panel_pipeline.h"
 #include "renderer.h"
 #include "script/ui_script.h"
 #include "session/lesson_file.h"
@@ -123,9 +124,10 @@ struct Editor {
     ui::DiscardGuard discard;                // Quit / New / Open over unsaved edits
     std::vector<std::string> heldScenes;     // scene opens waiting for that answer
     std::optional<ui::SessionRequest> heldSession;
-    bool releaseHeld = false;       // the answer was Discard: let the held requests through
-    ui::FrameLog frameLog;          // --log-frames
-    std::vector<PointLight> drawn;  // this frame's lights (animated)
+    bool releaseHeld = false;              // the answer was Discard: let the held requests through
+    ui::FrameLog frameLog;                 // --log-frames
+    ui::PipelinePanelRects pipelineRects;  // where the Pipeline window drew its layout combo (--log-frames)
+    std::vector<PointLight> drawn;         // this frame's lights (animated)
     // --- lessons (ui/editor_lessons.cpp) ---
     ui::LessonState lessons;
     ui::LessonLibrary lessonLibrary;  // read from assets/lessons on the first frame

@@ -136,7 +136,7 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     ui::drawLightsPanel(state.lightsPanel, state.lights, state.animation, state.sceneBounds);
     ui::drawPipelinePanel(state.pipeline,
                           ui::modeReasons([&](LightingMode m) { return editor.renderer->modeUnavailable(m); }),
-                          &state.ab);
+                          &state.ab, &editor.pipelineRects);
     unsigned const viewportTexture = times.litDiffTexture         ? times.litDiffTexture
                                      : times.viewportToolsTexture ? times.viewportToolsTexture
                                                                   : renderer.texture(Attachment::Final);

@@ -38,15 +38,17 @@ std::optional<std::string> exportViewerExr(Renderer& renderer, ViewerKind kind, 
             return writeExr(path, renderer.readAttachment(Attachment::AlbedoSpec), 3, 1);
         case ViewerKind::Depth:
             return writeExr(path, renderer.readAttachment(Attachment::Depth));
+        case ViewerKind::Lighting:
+            return writeExr(path, renderer.readAttachment(Attachment::Lighting));
     }
     return "cannot write " + path + ": unknown viewer";
 }
 
 std::string viewerPngName(ViewerKind kind) {
-    return std::string(kViewerNames[std::size_t(kind)]) + "_view.png";
+    return std::string(viewerKindName(kind)) + "_view.png";
 }
 std::string viewerExrName(ViewerKind kind) {
-    return std::string(kViewerNames[std::size_t(kind)]) + ".exr";
+    return std::string(viewerKindName(kind)) + ".exr";
 }
 
 }  // namespace gbl::ui

@@ -151,4 +151,11 @@ std::string describeAb(PipelineSettings const& a, PipelineSettings const& b) {
     return out.empty() ? std::string("A and B are the same settings") : out;
 }
 
+bool abComparesLayout(AbState const& state) {
+    std::span<AbField const> const fields = abFields();
+    for (std::size_t i = 0; i < fields.size() && i < state.overrides.size(); ++i)
+        if (fields[i].name == "layout") return state.overrides[i];
+    return false;
+}
+
 }  // namespace gbl::ui

@@ -31,6 +31,9 @@ struct AbField {
 std::span<AbField const> abFields();
 
 enum class AbView { Split, Diff };
+// What the diff view compares: the lit HDR frame, or (issue 12) the angle in degrees between A's
+// and B's decoded normals, for comparing G-buffer layouts (B's layout ticked, e.g. classic).
+enum class AbMetric { Lit, NormalAngle };
 
 struct AbState {
     bool enabled = false;
@@ -42,8 +45,11 @@ struct AbState {
     DiffMode diffMode = DiffMode::Absolute;  // relative: |A - B| / |B|
     // A pixel differs when its largest RGB difference exceeds this: the fp16 bound of the GL tests.
     float threshold = 2e-3f;
-    bool heatToThreshold = false;              // heat map from 0 to the threshold (else to the largest difference)
-    LitPin pin;                                // B's lit frame pinned, A's diffed against it (the lit pin's code)
+    bool heatToThreshold = false;  // heat map from 0 to the threshold (else to the largest difference)
+    LitPin pin;                    // B's lit frame pinned, A's diffed against it (the lit pin's code)
+    AbMetric metric = AbMetric::Lit;
+    float angleThreshold = 1.0f;               // normal angle: pixels turned by more than this many degrees are counted
+    DiffStats normalDiff;                      // normal angle: per pixel, degrees between A's and B's decoded normals
     std::vector<PassTiming> passesA, passesB;  // GPU ms per pass of each side's last frame
     double gpuMsA = 0.0, gpuMsB = 0.0;
 };
@@ -54,6 +60,8 @@ struct TeachingInputs {
     bool contribution = false;
     int wireframeLight = -1;
     std::optional<PipelineSettings> sideB;  // while A/B is on
+    bool normalAngle = false;               // the diff shows the normal angle: the frame must read both sides' normals
+    float angleThreshold = 0.0f;            // ... counted over this many degrees
     bool operator==(TeachingInputs const&) const = default;
 };
 
@@ -67,6 +75,8 @@ bool setAbField(AbState& state, std::string_view field, std::string const& value
 
 // Side B: A with the overridden fields taken from state.b.
 PipelineSettings sideB(AbState const& state, PipelineSettings const& a);
+// Whether side B overrides the G-buffer layout (the "normal angle" metric compares layouts).
+bool abComparesLayout(AbState const& state);
 // The names of the fields where two settings differ, in table order.
 std::vector<std::string_view> differingFields(PipelineSettings const& a, PipelineSettings const& b);
 // "mode quad | volumes, cull front | back": what the split compares, for its label.

@@ -74,7 +74,11 @@ std::string frameLogJson(FrameLogLine const& l) {
     for (std::size_t i = 0; i < l.lessonButtons.size(); ++i)
         out += (i ? "," : "") + number(l.lessonButtons[i].x) + "," + number(l.lessonButtons[i].y);
     out += "],\"view\":" + quoted(l.view);
-    return out + "}";
+    out += ",\"layout\":" + quoted(l.layout) + ",\"pipelineWindow\":" + rect(l.pipelineWindow) +
+           ",\"layoutCombo\":" + rect(l.layoutCombo) + ",\"layoutItems\":[";
+    for (std::size_t i = 0; i < l.layoutItems.size(); ++i)
+        out += (i ? "," : "") + number(l.layoutItems[i].x) + "," + number(l.layoutItems[i].y);
+    return out + "]}";
 }
 
 std::optional<std::string> FrameLog::open(std::string const& path) {

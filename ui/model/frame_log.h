@@ -45,6 +45,12 @@ struct FrameLogLine {
     std::string lesson;
     std::vector<glm::vec2> lessonButtons;
     std::string view;
+    // The G-buffer layout in use, the Pipeline window, its layout combo (0 while not visible) and,
+    // while its list is open, the centre of each entry (kGBufferLayoutNames order).
+    std::string layout;
+    glm::vec4 pipelineWindow{0.0f};
+    glm::vec4 layoutCombo{0.0f};
+    std::vector<glm::vec2> layoutItems;
 };
 
 std::string frameLogJson(FrameLogLine const& line);

@@ -38,6 +38,8 @@ std::optional<ViewerKind> viewerKindOfView(DebugView view) {
         case DebugView::Depth:
         case DebugView::DepthLinear:
             return ViewerKind::Depth;
+        case DebugView::Lighting:
+            return ViewerKind::Lighting;
         default:
             return std::nullopt;
     }
@@ -84,6 +86,8 @@ DebugView viewerDebugView(ViewerState const& viewer) {
             return DebugView::Specular;
         case ViewerKind::Depth:
             return viewer.linearDepth ? DebugView::DepthLinear : DebugView::Depth;
+        case ViewerKind::Lighting:
+            return DebugView::Lighting;
     }
     return DebugView::Final;
 }
@@ -111,6 +115,8 @@ Attachment viewerAttachment(ViewerKind kind) {
             return Attachment::AlbedoSpec;
         case ViewerKind::Depth:
             return Attachment::Depth;
+        case ViewerKind::Lighting:
+            return Attachment::Lighting;
     }
     return Attachment::Position;
 }
@@ -150,7 +156,10 @@ unsigned viewerStatsMask(ViewerState const& viewer) {
 }
 
 RangeSkip viewerSkip(ViewerKind kind) {
-    return kind == ViewerKind::Albedo || kind == ViewerKind::Specular ? RangeSkip::None : RangeSkip::ZeroAlpha;
+    // The lit frame's alpha is no coverage mark: every pixel counts (the background is lit black).
+    return kind == ViewerKind::Albedo || kind == ViewerKind::Specular || kind == ViewerKind::Lighting
+               ? RangeSkip::None
+               : RangeSkip::ZeroAlpha;
 }
 
 }  // namespace gbl::ui

@@ -13,8 +13,14 @@
 
 namespace gbl::ui {
 
-enum class ViewerKind { Position, Normal, Albedo, Specular, Depth };
+// The five G-buffer viewers, then the lit HDR frame (Attachment::Lighting), which only the
+// viewport's tools show (it has no viewer in the G-buffer window, so kViewerNames stops at depth).
+enum class ViewerKind { Position, Normal, Albedo, Specular, Depth, Lighting };
 inline constexpr std::array<std::string_view, 5> kViewerNames{"position", "normal", "albedo", "specular", "depth"};
+// kViewerNames' name of a G-buffer viewer's kind, "lighting" for the lit frame.
+inline std::string_view viewerKindName(ViewerKind kind) {
+    return kind == ViewerKind::Lighting ? std::string_view("lighting") : kViewerNames[std::size_t(kind)];
+}
 
 struct ViewerState {
     ViewerKind kind = ViewerKind::Position;
@@ -100,7 +106,8 @@ struct GBufferPanelState {
     static std::array<ViewerState, 5> defaultViewers();
 };
 
-// The viewer tools in the viewport, while it shows a G-buffer attachment: one ViewerState whose
+// The viewer tools in the viewport, while it shows a G-buffer attachment or the lit HDR frame (the
+// lighting view, in data units before the tonemap): one ViewerState whose
 // kind follows the viewport's view, and its data. Drawn into its own view target by the loop.
 // GBufferPanelState::activeViewer of the viewport's tools (the magnifier shows their texel).
 inline constexpr int kViewportViewer = 5;
@@ -116,10 +123,10 @@ struct ViewportTools {
     static ViewerState defaultViewer();
 };
 
-// The viewer kind a viewport view shows, or nothing (final, lighting, heat map, tile lights).
+// The viewer kind a viewport view shows, or nothing (final, heat map, tile lights).
 std::optional<ViewerKind> viewerKindOfView(DebugView view);
-// Makes the viewport's viewer follow the view: kind and linear depth. False when the view is no
-// G-buffer attachment (the tools then stay hidden).
+// Makes the viewport's viewer follow the view: kind and linear depth. False when the view is
+// neither a G-buffer attachment nor the lit frame (the tools then stay hidden).
 bool followViewportView(ViewportTools& tools, DebugView view);
 // Switches the depth viewer between depth and stencil, swapping in the other view's range.
 void setShowStencil(ViewerState& viewer, bool on);

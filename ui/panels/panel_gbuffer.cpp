@@ -101,28 +101,37 @@ void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& t
     state.hoverPixel.reset();
     state.showInViewport.reset();
     placeWindow(EditorWindow::GBuffer);
-    state.visible = ImGui::Begin(windowName(EditorWindow::GBuffer), nullptr, editorWindowFlags());
+    // Five cells narrower than viewerCellMinWidth would cut their controls off: the strip then
+    // scrolls sideways instead (1280x720 with the Lessons window beside it).
+    state.visible = ImGui::Begin(windowName(EditorWindow::GBuffer), nullptr,
+                                 editorWindowFlags() | ImGuiWindowFlags_HorizontalScrollbar);
     if (state.visible) {
-        ImGui::Checkbox("Redraw all every frame", &state.refreshEveryFrame);
+        float const right = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;
+        auto checkWidth = [](char const* label) {
+            return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
+        };
+        ImGui::Checkbox("Redraw all", &state.refreshEveryFrame);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
-                "off: one viewer is redrawn per frame in turn (cheaper on slow GL); a viewer whose\n"
-                "settings change is redrawn at once");
-        ImGui::SameLine();
+                "redraw every viewer every frame; off: one viewer is redrawn per frame in turn (cheaper\n"
+                "on slow GL), and a viewer whose settings change is redrawn at once");
+        sameLineIfRoom(checkWidth("Sync zoom/pan"), right);
         ImGui::Checkbox("Sync zoom/pan", &state.syncViews);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("link zoom and pan of all viewers: the same texel under the cursor in each");
-        ImGui::SameLine();
+        sameLineIfRoom(checkWidth("Magnifier"), right);
         ImGui::Checkbox("Magnifier", &state.showMagnifier);
-        ImGui::SameLine();
+        sameLineIfRoom(ImGui::CalcTextSize("(?)").x, right);
         ImGui::TextDisabled("(?)");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
                 "click: show in viewport  drag: pan  wheel: zoom  double-click: reset\n"
                 "Shift+drag: statistics region  right-click: pick texel (magnifier)\n"
                 "arrow keys: step the picked texel  Ctrl+G: go to pixel");
+        ImVec2 const avail = ImGui::GetContentRegionAvail();
+        float const width = std::max(avail.x, viewerCellMinWidth() * float(state.viewers.size()));
         if (ImGui::BeginTable("viewers", 5, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame,
-                              ImGui::GetContentRegionAvail())) {
+                              ImVec2(width, avail.y))) {
             for (std::size_t i = 0; i < state.viewers.size(); ++i) ImGui::TableSetupColumn(kViewerNames[i].data());
             ImGui::TableNextRow(ImGuiTableRowFlags_None, ImGui::GetContentRegionAvail().y);
             for (std::size_t i = 0; i < state.viewers.size(); ++i) {

@@ -89,6 +89,28 @@ void abFieldRow(AbField const& f, std::size_t i, AbState& ab) {
     ImGui::PopID();
 }
 
+// The G-buffer layout (core/gbuffer_layout.h); the renderer rebuilds its targets on change.
+// Where the box and its entries are goes to `rects` for the frame log.
+void layoutCombo(PipelineSettings& settings, PipelinePanelRects* rects) {
+    auto centre = [] {
+        ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+        return glm::vec2((a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f);
+    };
+    bool const open = ImGui::BeginCombo("G-buffer", enumName(kGBufferLayoutNames, settings.layout).data());
+    if (ImGui::IsItemVisible()) {
+        ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+        rects->layoutCombo = {a.x, a.y, b.x - a.x, b.y - a.y};
+    }
+    helpTooltip("how the G-buffer stores its quantities; the Pipeline's A/B compare can set side B to classic");
+    if (!open) return;
+    for (std::size_t i = 0; i < kGBufferLayoutNames.size(); ++i) {
+        auto const layout = GBufferLayout(i);
+        if (ImGui::Selectable(kGBufferLayoutNames[i].data(), settings.layout == layout)) settings.layout = layout;
+        rects->layoutItems.push_back(centre());
+    }
+    ImGui::EndCombo();
+}
+
 void abSection(AbState& ab, PipelineSettings const& a) {
     if (ImGui::Checkbox("A/B compare in the viewport", &ab.enabled) && ab.enabled) startAb(ab, a);
     helpTooltip("A is the settings above, B the same with the ticked fields changed; the frame renders twice");
@@ -99,15 +121,33 @@ void abSection(AbState& ab, PipelineSettings const& a) {
     ImGui::RadioButton("diff", &view, int(AbView::Diff));
     ab.view = AbView(view);
     if (ab.view == AbView::Diff) {
+        // The normal angle compares G-buffer layouts: offered while B changes the layout.
+        if (!abComparesLayout(ab)) ab.metric = AbMetric::Lit;
+        int metric = int(ab.metric);
+        ImGui::RadioButton("lit", &metric, int(AbMetric::Lit));
+        helpTooltip("|A - B| of the lit HDR frame");
         ImGui::SameLine();
-        int mode = int(ab.diffMode);
-        ImGui::RadioButton("abs", &mode, int(DiffMode::Absolute));
-        ImGui::SameLine();
-        ImGui::RadioButton("rel", &mode, int(DiffMode::Relative));
-        ab.diffMode = DiffMode(mode);
+        ImGui::BeginDisabled(!abComparesLayout(ab));
+        ImGui::RadioButton("normal angle", &metric, int(AbMetric::NormalAngle));
+        ImGui::EndDisabled();
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip(
+                "degrees between A's and B's decoded normals per pixel (tick layout below and set B to\n"
+                "classic to see what the current layout's normal encoding loses)");
+        ab.metric = AbMetric(metric);
+        bool const angle = ab.metric == AbMetric::NormalAngle;
+        if (!angle) {
+            ImGui::SameLine();
+            int mode = int(ab.diffMode);
+            ImGui::RadioButton("abs", &mode, int(DiffMode::Absolute));
+            ImGui::SameLine();
+            ImGui::RadioButton("rel", &mode, int(DiffMode::Relative));
+            ab.diffMode = DiffMode(mode);
+        }
+        float& threshold = angle ? ab.angleThreshold : ab.threshold;
         ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
-        ImGui::InputFloat("threshold", &ab.threshold, 0.0f, 0.0f, "%.2g");
-        ab.threshold = std::max(ab.threshold, 0.0f);
+        ImGui::InputFloat(angle ? "deg" : "threshold", &threshold, 0.0f, 0.0f, "%.2g");
+        threshold = std::max(threshold, 0.0f);
         ImGui::SameLine();
         ImGui::Checkbox("heat to threshold", &ab.heatToThreshold);
     }
@@ -116,9 +156,15 @@ void abSection(AbState& ab, PipelineSettings const& a) {
 }
 }  // namespace
 
-void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailable, AbState* ab) {
+void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailable, AbState* ab,
+                       PipelinePanelRects* rects) {
+    PipelinePanelRects unused;
+    if (!rects) rects = &unused;
+    *rects = {};
     placeWindow(EditorWindow::Pipeline);
     if (ImGui::Begin(windowName(EditorWindow::Pipeline), nullptr, editorWindowFlags())) {
+        ImVec2 const pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+        rects->window = {pos.x, pos.y, size.x, size.y};
         float const right = rowRightEdge();
         if (section("Lighting mode")) {
             for (std::size_t i = 0; i < kLightingModeNames.size(); ++i) {
@@ -178,11 +224,7 @@ void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailabl
             if (ImGui::Combo("Tonemap", &tonemap, tonemapItems, 3)) settings.tonemap = Tonemap(tonemap);
             ImGui::SliderFloat("Exposure", &settings.exposure, 0.05f, 16.0f, "%.2f",
                                ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-            // The G-buffer layout (core/gbuffer_layout.h); the renderer rebuilds its targets on change.
-            int layout = int(settings.layout);
-            char const* layoutItems[] = {kGBufferLayoutNames[0].data(), kGBufferLayoutNames[1].data(),
-                                         kGBufferLayoutNames[2].data(), kGBufferLayoutNames[3].data()};
-            if (ImGui::Combo("G-buffer", &layout, layoutItems, 4)) settings.layout = GBufferLayout(layout);
+            layoutCombo(settings, rects);
             ImGui::PopItemWidth();
         }
         if (ab && section("A/B compare")) abSection(*ab, settings);

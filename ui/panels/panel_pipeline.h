@@ -4,9 +4,12 @@
 #include "core/pipeline_settings.h"
 #include "model/ab_compare.h"
 
+#include <glm/glm.hpp>
+
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace gbl::ui {
 
@@ -20,9 +23,19 @@ ModeReasons modeReasons(Ask ask) {
     return r;
 }
 
+// Where the window and its G-buffer layout combo are, in window coordinates, for --log-frames
+// (tests click there with real X input): the combo's box (0 while scrolled out of view) and, while its list is
+// open, the centre of each layout's entry in kGBufferLayoutNames order (empty while closed).
+struct PipelinePanelRects {
+    glm::vec4 window{0.0f};  // the Pipeline window (x, y, w, h): where a test scrolls it
+    glm::vec4 layoutCombo{0.0f};
+    std::vector<glm::vec2> layoutItems;
+};
+
 // Edits `settings` in place; the renderer reads them on the next frame. Unavailable modes are
 // greyed out with their reason.
 // `ab` (optional) adds the A/B comparison's table: which settings side B changes, and to what.
-void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailable, AbState* ab = nullptr);
+void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailable, AbState* ab = nullptr,
+                       PipelinePanelRects* rects = nullptr);
 
 }  // namespace gbl::ui

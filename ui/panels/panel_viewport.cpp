@@ -205,18 +205,24 @@ void drawAbSplit(ViewportTeaching const& v, PipelineSettings const& a, ImVec2 or
 // The |A - B| heat map's legend (turbo from 0 to its scale) and the diff's numbers.
 void drawAbDiff(ViewportTeaching const& v, PipelineSettings const& a, ImVec2 origin, ImVec2 avail) {
     AbState const& ab = v.ab;
-    DiffStats const& d = ab.pin.diff;
+    bool const angle = ab.metric == AbMetric::NormalAngle;
+    DiffStats const& d = angle ? ab.normalDiff : ab.pin.diff;
+    float const threshold = angle ? ab.angleThreshold : ab.threshold;
+    char const* unit = angle ? " deg" : "";
     ImDrawList* dl = ImGui::GetWindowDrawList();
     float const line = ImGui::GetTextLineHeightWithSpacing();
-    float const scale = ab.heatToThreshold ? ab.threshold : d.max;
+    float const scale = ab.heatToThreshold ? threshold : d.max;
     char const* what = ab.diffMode == DiffMode::Relative ? "|A-B|/|B|" : "|A-B|";
     char buf[256];
-    std::snprintf(buf, sizeof buf, "%s of the lit HDR frame, largest RGB channel (magenta: NaN/Inf)", what);
+    if (angle)
+        std::snprintf(buf, sizeof buf, "angle between A's and B's decoded normals, degrees (magenta: one side only)");
+    else
+        std::snprintf(buf, sizeof buf, "%s of the lit HDR frame, largest RGB channel (magenta: NaN/Inf)", what);
     boxedText(ImVec2(origin.x + 8, origin.y + 6), buf);
     boxedText(ImVec2(origin.x + 8, origin.y + 6 + line), "A vs B: " + describeAb(a, v.settingsB));
     if (!d.comparable) return;
-    std::snprintf(buf, sizeof buf, "max %.4g at %d,%d   mean %.4g   %ld of %ld px over %.3g   NaN/Inf px %ld", d.max,
-                  d.maxAt.x, d.maxAt.y, d.mean, d.overThreshold, d.pixels, ab.threshold, d.nanPixels);
+    std::snprintf(buf, sizeof buf, "max %.4g%s at %d,%d   mean %.4g   %ld of %ld px over %.3g   NaN/Inf px %ld", d.max,
+                  unit, d.maxAt.x, d.maxAt.y, d.mean, d.overThreshold, d.pixels, threshold, d.nanPixels);
     boxedText(ImVec2(origin.x + 8, origin.y + 6 + 2 * line), buf);
     // Legend: a turbo ramp 0 .. scale, the same ramp diffHeatmap paints.
     float const w = std::min(256.0f, avail.x - 40.0f), h = 12.0f;
@@ -228,7 +234,7 @@ void drawAbDiff(ViewportTeaching const& v, PipelineSettings const& a, ImVec2 ori
                           IM_COL32(int(c.r * 255), int(c.g * 255), int(c.b * 255), 255));
     }
     dl->AddText(ImVec2(p0.x, p0.y + h + 1), IM_COL32(240, 240, 240, 255), "0");
-    std::snprintf(buf, sizeof buf, "%.3g%s", scale, ab.heatToThreshold ? " (threshold)" : " (max)");
+    std::snprintf(buf, sizeof buf, "%.3g%s%s", scale, unit, ab.heatToThreshold ? " (threshold)" : " (max)");
     dl->AddText(ImVec2(p0.x + w - ImGui::CalcTextSize(buf).x, p0.y + h + 1), IM_COL32(240, 240, 240, 255), buf);
     boxedText(ImVec2(origin.x + 8, origin.y + avail.y - 2 * line - 4),
               passLine("A", ab.passesA, ab.gpuMsA, avail.x - 16));

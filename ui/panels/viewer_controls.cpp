@@ -109,7 +109,7 @@ void outlineTexels(ImDrawList* dl, ImVec2 p0, ImVec2 full, glm::ivec2 imageSize,
 void viewportToolsRow(ViewportTools& tools, DebugView view) {
     if (!viewerKindOfView(view)) {
         tools.hoverTexel.reset();
-        return;  // final, lighting and the heat views: no G-buffer attachment to read
+        return;  // the final image and the heat views: no attachment values to read
     }
     ImGui::SetCursorPosX(ImGui::GetCursorPosX() + 6);
     ImGui::PushStyleColor(ImGuiCol_Button, tools.open ? IM_COL32(70, 110, 170, 255) : IM_COL32(50, 50, 55, 255));
@@ -117,13 +117,14 @@ void viewportToolsRow(ViewportTools& tools, DebugView view) {
     ImGui::PopStyleColor();
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
-            "the G-buffer viewers' tools on this attachment: range, colormap, histogram, overlays,\n"
-            "pin/diff; Shift+drag in the image: region statistics, Shift+right-click: magnifier texel");
+            "the G-buffer viewers' tools on this attachment (lighting: the HDR values before the\n"
+            "tonemap): range, colormap, histogram, overlays, pin/diff; Shift+drag in the image:\n"
+            "region statistics, Shift+right-click: magnifier texel");
     if (!tools.open) return;
     ViewerState& v = tools.viewer;
     ViewerData const& d = tools.data;
     ImGui::SameLine();
-    ImGui::TextUnformatted(kViewerNames[std::size_t(v.kind)].data());
+    ImGui::TextUnformatted(viewerKindName(v.kind).data());
     viewerHeaderCounts(v, d);
     // The rows get the window's padding the image does not have; the controls take a column of
     // a G-buffer cell's width (they lay themselves out for that), the tool toggles the rest.

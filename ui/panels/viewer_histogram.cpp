@@ -114,7 +114,10 @@ void viewerHistogram(ViewerState& v, ViewerData const& d) {
     } else if (hovered) {
         ImGui::SetTooltip("%.4g", double(valueAt(ImGui::GetIO().MousePos.x)));
     }
-    ImGui::TextDisabled("%.4g .. %.4g   mean %.4g", d.stats.shown.min, d.stats.shown.max, d.stats.shown.mean);
+    // Wrapped: a narrow cell breaks the line instead of cutting it at its edge.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%.4g .. %.4g   mean %.4g", d.stats.shown.min, d.stats.shown.max, d.stats.shown.mean);
+    ImGui::PopStyleColor();
     if (remaps) legend(v, ImGui::GetCursorScreenPos(), width, lo, hi);
 }
 

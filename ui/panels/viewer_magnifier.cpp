@@ -76,7 +76,7 @@ void drawViewerMagnifier(GBufferPanelState& panel, ViewportTools& viewport) {
         ImGui::End();
         return;
     }
-    ImGui::Text("%s %s", kViewerNames[std::size_t(v.kind)].data(),
+    ImGui::Text("%s %s", viewerKindName(v.kind).data(),
                 onViewport      ? "in the viewport"
                 : v.showStencil ? "viewer (stencil)"
                                 : "viewer");

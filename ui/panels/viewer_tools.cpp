@@ -9,6 +9,22 @@
 
 namespace gbl::ui {
 
+namespace {
+// The colormap combo: wide enough for the longest map name beside the combo's arrow.
+float mapComboWidth() {
+    return ImGui::CalcTextSize("viridis").x + ImGui::GetFrameHeight() + ImGui::GetStyle().FramePadding.x * 2.0f;
+}
+}  // namespace
+
+float viewerCellMinWidth() {
+    // The histogram's "Fit min/max" button is about as wide; 4 px more keeps both inside.
+    return mapComboWidth() + ImGui::GetStyle().CellPadding.x * 2.0f + 4.0f;
+}
+
+void sameLineIfRoom(float w, float right) {
+    if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + w <= right) ImGui::SameLine();
+}
+
 void viewerHeaderCounts(ViewerState const& v, ViewerData const& d) {
     if (d.frame < 0 || v.overlays == 0) return;
     // The cell's right edge: the cursor is at the start of the line after the viewer's name.
@@ -44,9 +60,7 @@ void viewerToolsRow(ViewerState& v, ViewerData const& d) {
     };
     if (toggle("Hist", v.showHistogram)) v.showHistogram = !v.showHistogram;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("histogram of the shown channels with the black/white points");
-    // Wide enough for the longest map name beside the combo's arrow.
-    float const mapWidth =
-        ImGui::CalcTextSize("viridis").x + ImGui::GetFrameHeight() + ImGui::GetStyle().FramePadding.x * 2.0f;
+    float const mapWidth = mapComboWidth();
     if (ImGui::GetItemRectMax().x + 2.0f + mapWidth <= right) ImGui::SameLine(0, 2);
     int map = int(v.colormap);
     ImGui::SetNextItemWidth(mapWidth);
@@ -79,38 +93,46 @@ void viewerToolsRow(ViewerState& v, ViewerData const& d) {
 
 void viewerRegionAndDiff(ViewerState& v, ViewerData const& d) {
     static constexpr char const* kChannel[4] = {"R", "G", "B", "A"};
+    // Narrow cells: buttons go below what does not leave them room, statistics wrap.
+    float const right = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;
+    auto buttonWidth = [](char const* label) {
+        return ImGui::CalcTextSize(label, nullptr, true).x + ImGui::GetStyle().FramePadding.x * 2.0f;
+    };
     if (v.region) {
         PixelRect const r = *v.region;
         ImGui::TextDisabled("region %d,%d %dx%d", r.min.x, r.min.y, r.max.x - r.min.x, r.max.y - r.min.y);
-        ImGui::SameLine();
+        sameLineIfRoom(buttonWidth("Fit to region"), right);
         if (ImGui::SmallButton("Fit to region")) v.regionFitRequested = true;
-        ImGui::SameLine(0, 2);
+        sameLineIfRoom(buttonWidth("x##region"), right);
         if (ImGui::SmallButton("x##region")) v.region.reset();
         if (d.frame >= 0 && v.region) {
             unsigned const mask = viewerStatsMask(v);
             for (int c = 0; c < 4; ++c) {
                 if (!(mask & (1u << c))) continue;
                 ChannelStats const& s = d.regionStats.channel[std::size_t(c)];
-                ImGui::Text("%s min %.4g max %.4g mean %.4g NaN %ld", v.kind == ViewerKind::Depth ? "d" : kChannel[c],
-                            s.min, s.max, s.mean, s.nan);
+                ImGui::TextWrapped("%s min %.4g max %.4g mean %.4g NaN %ld",
+                                   v.kind == ViewerKind::Depth ? "d" : kChannel[c], s.min, s.max, s.mean, s.nan);
             }
         }
     }
     if (v.showDiff && d.pinned) {
         if (!d.diff.comparable) {
-            ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "pinned image has another size; pin again");
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.6f, 0.3f, 1));
+            ImGui::TextWrapped("pinned image has another size; pin again");
+            ImGui::PopStyleColor();
             return;
         }
-        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5.0f);
+        ImGui::SetNextItemWidth(std::min(ImGui::GetFontSize() * 5.0f, ImGui::GetContentRegionAvail().x));
         ImGui::DragFloat("##threshold", &v.diffThreshold, 0.001f, 0.0f, 1e6f, "thr %.4g", ImGuiSliderFlags_AlwaysClamp);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("pixels whose difference is above this are counted; 0 = any change");
-        ImGui::SameLine(0, 2);
+        sameLineIfRoom(ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("rel").x,
+                       right);
         bool rel = v.diffMode == DiffMode::Relative;
         if (ImGui::Checkbox("rel", &rel)) v.diffMode = rel ? DiffMode::Relative : DiffMode::Absolute;
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("relative: |a - b| / |pinned|");
-        ImGui::Text("max %.4g at %d,%d  mean %.3g", d.diff.max, d.diff.maxAt.x, d.diff.maxAt.y, d.diff.mean);
-        ImGui::Text("over %ld of %ld  NaN/Inf %ld", d.diff.overThreshold, d.diff.pixels, d.diff.nanPixels);
+        ImGui::TextWrapped("max %.4g at %d,%d  mean %.3g", d.diff.max, d.diff.maxAt.x, d.diff.maxAt.y, d.diff.mean);
+        ImGui::TextWrapped("over %ld of %ld  NaN/Inf %ld", d.diff.overThreshold, d.diff.pixels, d.diff.nanPixels);
     }
 }
 

@@ -13,6 +13,13 @@ inline constexpr ImU32 kNaNColour = IM_COL32(255, 0, 255, 255);
 inline constexpr ImU32 kInfColour = IM_COL32(0, 255, 0, 255);
 inline constexpr ImU32 kNegativeColour = IM_COL32(0, 255, 255, 255);
 
+// The narrowest a G-buffer viewer cell may be: its widest control that cannot wrap (the colormap
+// combo, wide enough for "viridis") plus the cell's padding. The strip scrolls sideways below
+// five of these rather than cut a control off.
+float viewerCellMinWidth();
+// Puts the next item of width w on the current line when it ends before `right`, else on a new one.
+void sameLineIfRoom(float w, float right);
+
 // Channel toggles, range with Fit and auto, and the kind's own options (normals, depth; the
 // depth viewer's stencil switch when stencilChoice).
 void viewerControls(ViewerState& v, bool stencilChoice);

@@ -188,7 +188,18 @@ constexpr ScriptCommandSpec kCommands[] = {
          c.check(int(n) == std::atoi(c.w[1].c_str()), "there are " + std::to_string(n));
      }},
     {"expect-light", "I FIELD VALUE", "light I's FIELD (as for `light`) equals VALUE", expectLightCommand},
-    {"expect-setting", "KEY NAME", "mode|cull|blit|view|tonemap is NAME", expectSettingCommand},
+    {"expect-setting", "KEY NAME", "mode|cull|blit|view|tonemap|layout is NAME", expectSettingCommand},
+    {"wait-setting", "KEY NAME SECONDS",
+     "run frames until the setting (as for expect-setting) is NAME: a real click may change it",
+     [](CommandCall const& c) {
+         EnumSetting const* setting = nullptr;
+         for (EnumSetting const& e : enumSettings())
+             if (e.key == c.w[1]) setting = &e;
+         if (!setting) return c.check(false, "unknown setting");
+         PipelineSettings const& p = c.host.state.pipeline;
+         std::string const want = c.w[2];
+         c.waitUntil([setting, &p, want] { return setting->get(p) == want; }, number(c.w[3]));
+     }},
     {"expect-no-gl-errors", "", "the renderer counted no GL errors so far",
      [](CommandCall const& c) {
          auto const n = c.host.renderer.glErrorCount();

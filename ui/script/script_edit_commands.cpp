@@ -33,6 +33,8 @@ constexpr EnumSetting kEnumSettings[] = {
      [](PipelineSettings const& p) { return enumName(kDebugViewNames, p.view); }},
     {"tonemap", [](PipelineSettings& p, std::string const& v) { return setEnum(p.tonemap, kTonemapNames, v); },
      [](PipelineSettings const& p) { return enumName(kTonemapNames, p.tonemap); }},
+    {"layout", [](PipelineSettings& p, std::string const& v) { return setEnum(p.layout, kGBufferLayoutNames, v); },
+     [](PipelineSettings const& p) { return enumName(kGBufferLayoutNames, p.layout); }},
 };
 
 void setCommand(CommandCall const& c) {
@@ -65,7 +67,14 @@ void setCommand(CommandCall const& c) {
         if (ok && value != "off" && !s.ab.enabled) startAb(s.ab, s.pipeline);
         s.ab.enabled = ok && value != "off";
         s.ab.view = value == "diff" ? AbView::Diff : AbView::Split;
-    } else if (key == "ab-divider")
+    } else if (key == "ab-metric") {  // lit or normal-angle (the latter needs B's layout ticked)
+        ok = value == "lit" || (value == "normal-angle" && abComparesLayout(s.ab));
+        if (ok) s.ab.metric = value == "lit" ? AbMetric::Lit : AbMetric::NormalAngle;
+    } else if (key == "ab-threshold")
+        s.ab.threshold = std::max(number(value), 0.0f);
+    else if (key == "ab-angle-threshold")
+        s.ab.angleThreshold = std::max(number(value), 0.0f);
+    else if (key == "ab-divider")
         s.ab.divider = std::clamp(number(value), 0.02f, 0.98f);
     else if (key.rfind("b.", 0) == 0)  // side B's FIELD, as the A/B table names it
         ok = setAbField(s.ab, key.substr(2), value);
@@ -138,9 +147,10 @@ constexpr ScriptCommandSpec kCommands[] = {
     {"frames", "N", "run N frames before the next command",
      [](CommandCall const& c) { c.run.wait = std::max(std::atoi(c.w[1].c_str()), 1); }},
     {"set", "KEY VALUE",
-     "mode|cull|blit|view|tonemap NAME, exposure F, cubes|wireframes|animate 0|1,\n"
+     "mode|cull|blit|view|tonemap|layout NAME, exposure F, cubes|wireframes|animate 0|1,\n"
      "time SECONDS (light animation), lights N (default scene lights),\n"
      "accumulate K (-1: off), contribution 0|1, ab off|split|diff, ab-divider X,\n"
+     "ab-metric lit|normal-angle, ab-threshold X, ab-angle-threshold DEGREES,\n"
      "b.FIELD VALUE (side B of A/B: mode, cull, blit, shininess, ... as the Pipeline window's table)",
      setCommand},
     {"light", "I FIELD VALUE",

@@ -212,6 +212,13 @@ constexpr ScriptCommandSpec kCommands[] = {
          LitPin const& pin = c.host.state.litPin;
          expectDiff(c, pin.diff, pin.showDiff && pin.pinned.has_value());
      }},
+    {"expect-ab-diff", "STAT CMP X",
+     "the A/B diff's statistics as the viewport shows them (lit, or degrees with ab-metric normal-angle)",
+     [](CommandCall const& c) {
+         AbState const& ab = c.host.state.ab;
+         bool const angle = ab.metric == AbMetric::NormalAngle;
+         expectDiff(c, angle ? ab.normalDiff : ab.pin.diff, ab.enabled && ab.view == AbView::Diff);
+     }},
 };
 
 }  // namespace

@@ -1,0 +1,83 @@
+# Shared set-up of the UI test scripts (tests/ui_*.sh): the work folder, failing, reading the
+# editor's --log-frames lines (flat JSON written by ui/model/frame_log.cpp), waiting for frames,
+# finding the editor's X window and placing real clicks (xdotool) on what the log says was drawn.
+# Source it after setting ui_name (the test's name, for messages), work (the test's folder) and
+# log (the frame log being read; may change later). POSIX sh.
+
+pid=""
+
+# ui_require_xdotool: the test is skipped (exit 0) where xdotool is missing.
+ui_require_xdotool() {
+    if ! command -v xdotool >/dev/null 2>&1; then
+        echo "$ui_name skipped: xdotool not found (scripts/install-deps.sh installs it)"
+        exit 0
+    fi
+}
+
+# ui_fresh_work: an empty $work, with the editor's crash recovery files and layout file inside it.
+ui_fresh_work() {
+    rm -rf "$work"
+    mkdir -p "$work"
+    export GBL_RECOVERY_DIR="$work/recovery" XDG_CONFIG_HOME="$work/config"
+    mkdir -p "$GBL_RECOVERY_DIR" "$XDG_CONFIG_HOME"
+}
+
+fail() {
+    echo "$ui_name: FAIL: $*"
+    [ -n "$log" ] && [ -f "$log" ] && tail -n 3 "$log"
+    [ -n "$pid" ] && kill "$pid" 2>/dev/null
+    exit 1
+}
+
+# --- reading the frame log --------------------------------------------------------------------
+lines() { [ -f "$log" ] && wc -l < "$log" || echo 0; }
+last() { tail -n 1 "$log"; }
+# field NAME [LINE]: the raw value of a number, boolean, "string" or [..] array field.
+field() {
+    line="${2:-$(last)}"
+    printf '%s\n' "$line" | sed -n "s/.*\"$1\":\(\[[^]]*\]\|\"[^\"]*\"\|[^,}]*\).*/\1/p"
+}
+# wait_frames N: until N more frames are logged (at most 60 s); fails when the editor ($pid) exits.
+wait_frames() {
+    target=$(( $(lines) + $1 ))
+    i=0
+    while [ "$(lines)" -lt "$target" ]; do
+        kill -0 "$pid" 2>/dev/null || fail "the editor exited (see $work/editor.log)"
+        i=$((i + 1))
+        [ "$i" -le 600 ] || fail "no frame logged for 60 s"
+        sleep 0.1
+    done
+}
+# events_since N: the events and actions logged after line N.
+events_since() { tail -n +"$(( $1 + 1 ))" "$log" | sed -n 's/.*"events":\(\[[^]]*\]\).*"actions":\(\[[^]]*\]\).*/\1 \2/p'; }
+# rect_point NAME FX FY: "x y" of a point inside a logged [x, y, w, h] rectangle, at fractions of its size.
+rect_point() { field "$1" | tr -d '[]' | awk -F, -v fx="$2" -v fy="$3" '{ printf "%d %d", $1 + $3 * fx, $2 + $4 * fy }'; }
+# centre NAME: "x y" of the centre of a logged rectangle.
+centre() { rect_point "$1" 0.5 0.5; }
+# clipped_list [LINE]: the "clipped" entries of a frame log line, one a line.
+clipped_list() {
+    line="${1:-$(last)}"
+    printf '%s\n' "$line" | sed -n 's/.*"clipped":\[\([^]]*\)\].*/\1/p' | sed 's/","/"\n"/g' | grep -v '^$' || true
+}
+
+# --- the editor's window ----------------------------------------------------------------------
+# ui_window: sets wid to the newest visible gbuffer-lab window and focuses it.
+ui_window() {
+    wid=$(xdotool search --sync --onlyvisible --name '^gbuffer-lab$' | tail -n 1)
+    [ -n "$wid" ] || fail "no gbuffer-lab window"
+    xdotool windowactivate --sync "$wid" 2>/dev/null || xdotool windowfocus --sync "$wid"
+}
+# click_at X Y: move there, wait 0.1 s, press and release with a 50 ms dwell.
+click_at() { xdotool mousemove --window "$wid" "$1" "$2" sleep 0.1 mousedown 1 sleep 0.05 mouseup 1; }
+# shot NAME: a screenshot of the window into $work/NAME.png (ImageMagick) or .xwd; where neither
+# tool is installed it says so and the test goes on (a screenshot is for a person, not a check).
+shot() {
+    import -window "$wid" "$work/$1.png" 2>/dev/null || xwd -id "$wid" -out "$work/$1.xwd" 2>/dev/null ||
+        echo "$ui_name: no screenshot of $1: neither import (ImageMagick) nor xwd works here"
+}
+# ui_stop: ends the editor this script started, if it still runs.
+ui_stop() {
+    [ -n "$pid" ] && kill "$pid" 2>/dev/null || true
+    [ -n "$pid" ] && wait "$pid" 2>/dev/null || true
+    pid=""
+}

@@ -1,0 +1,86 @@
+#!/bin/sh
+# The G-buffer layout changed through the Pipeline window's combo with real X clicks (xdotool):
+# a click opens the combo where the frame log says it is drawn, a click on "packed" picks it; the
+# frame log then names the new layout and a frame is rendered with it, and a UI script in the same
+# editor checks that the setting changed, no GL error happened and the lit HDR frame (the lighting
+# view's tools) holds light. A screenshot of the lit frame is left in WORK_DIR to look at.
+# usage: ui_layout_combo.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
+set -eu
+bin="$1"
+work="$2"
+
+ui_name=ui_layout_combo
+log="$work/frames.jsonl"
+. "$(dirname "$0")/support/ui_common.sh"
+ui_require_xdotool
+ui_fresh_work
+
+# The script waits for the real clicks to change the layout, then checks the frame.
+cat > "$work/layout.txt" <<SCRIPT
+frames 3
+expect-setting layout classic
+wait-setting layout packed 120
+frames 4
+expect-setting layout packed
+expect-no-gl-errors
+# Without the light cubes (drawn unlit at 1.5) the values are the lit surfaces alone.
+set cubes 0
+set view lighting
+viewport-tools on
+viewer-tool viewport histogram on
+frames 6
+expect-viewer-stat viewport nan 0
+expect-viewer-stat viewport max-above 0.05
+screenshot $work/layout_packed_lighting.png
+SCRIPT
+"$bin" --size 1280x720 --no-vsync --frame-sleep-ms 60 --log-frames "$log" --ui-test "$work/layout.txt" \
+    > "$work/editor.log" 2>&1 &
+pid=$!
+wait_frames 4
+ui_window
+[ "$(field layout)" = '"classic"' ] || fail "the editor starts with layout $(field layout), not classic"
+
+# --- the wheel over the Pipeline window scrolls the combo into view (below the fold at 1280x720) --
+set -- $(centre pipelineWindow)
+[ "$1" -gt 0 ] || fail "the Pipeline window was not drawn ($(field pipelineWindow))"
+xdotool mousemove --window "$wid" "$1" "$2"
+wait_frames 2
+n=0
+# in_view: the combo drawn and its whole box above the window's bottom edge.
+in_view() {
+    printf '%s %s\n' "$(field layoutCombo | tr -d '[]')" "$(field pipelineWindow | tr -d '[]')" | tr ',' ' ' |
+        awk '{ exit !($3 > 0 && $2 + $4 < $6 + $8 - 4) }'
+}
+until in_view; do
+    n=$((n + 1))
+    [ "$n" -le 30 ] || fail "30 wheel steps did not bring the layout combo into view"
+    xdotool click 5
+    wait_frames 2
+done
+echo "the combo is in view after $n wheel step(s): $(field layoutCombo)"
+
+# --- a click on the combo opens its list; a click on the second entry ("packed") picks it ------
+set -- $(centre layoutCombo)
+[ "$1" -gt 0 ] || fail "the layout combo was not drawn ($(field layoutCombo))"
+click_at "$1" "$2"
+wait_frames 4
+items=$(field layoutItems)
+[ "$items" != "[]" ] || fail "clicking the combo at $1,$2 did not open its list"
+set -- $(echo "$items" | tr -d '[]' | awk -F, '{ printf "%d %d", $3, $4 }')
+mark=$(lines)
+click_at "$1" "$2"
+wait_frames 6
+[ "$(field layout)" = '"packed"' ] || fail "clicking packed at $1,$2 left layout $(field layout)"
+[ "$(field layoutItems)" = "[]" ] || fail "the combo's list stayed open"
+tail -n +"$(( mark + 1 ))" "$log" | grep '"layout":"packed"' | grep -q '"rendered":true' ||
+    fail "no frame was rendered with the packed layout"
+echo "clicked the combo and packed at $1,$2: layout $(field layout)"
+
+status=0
+wait "$pid" || status=$?
+pid=""
+grep "ui-test" "$work/editor.log" || true
+[ "$status" -eq 0 ] || fail "the layout script failed (exit $status, see $work/editor.log)"
+grep -q "ui-test PASS .*expect-viewer-stat viewport max-above" "$work/editor.log" ||
+    fail "the lit frame was not checked"
+echo "ui_layout_combo: PASS"
