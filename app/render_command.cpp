@@ -95,7 +95,7 @@ int runRender(RenderOptions const& o) {
         if (!v)
             return badArgument("--view '" + name +
                                "' is not one of final, lighting, position, normal, albedo, "
-                               "specular, depth, depth_linear, heatmap, tile_lights, raw0, raw1, raw2");
+                               "specular, depth, depth_linear, heatmap, tile_lights, raw0, raw1, raw2, cluster_slices");
         views.push_back(*v);
     }
     settings.mode = *mode;

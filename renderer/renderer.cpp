@@ -140,8 +140,9 @@ bool RendererImpl::tiledReady() {
     f.tried = true;
     if (!caps.computeShaders)
         f.unavailable = caps.tiledUnavailableReason();
-    else if (!shaders.add(ProgramId::LightingTiled, nullptr))
-        f.unavailable = programFailure("tiled", shaders, ProgramId::LightingTiled);
+    else
+        for (ProgramId id : {ProgramId::LightingTiled, ProgramId::TileBin})
+            if (!f.unavailable && !shaders.add(id, nullptr)) f.unavailable = programFailure("tiled", shaders, id);
     return !f.unavailable;
 }
 
@@ -154,7 +155,7 @@ bool RendererImpl::clusteredReady() {
                         std::to_string(caps.minor) + ", so clustered mode is unavailable";
         return false;
     }
-    for (ProgramId id : {ProgramId::ClusterBuild, ProgramId::ClusterShade})
+    for (ProgramId id : {ProgramId::ClusterBuild, ProgramId::ClusterBin, ProgramId::ClusterShade})
         if (!shaders.add(id, nullptr)) {
             f.unavailable = programFailure("clustered", shaders, id);
             return false;
@@ -165,6 +166,8 @@ bool RendererImpl::clusteredReady() {
 LightingClusteredInput RendererImpl::clusteredInput(FrameContext const& f) {
     return {deferredInputs(f),
             shaders.get(ProgramId::ClusterBuild),
+            shaders.get(ProgramId::ClusterBin),
+            tileBins,
             shaders.get(ProgramId::ClusterShade),
             clusters,
             targets.lighting,
@@ -241,7 +244,8 @@ void RendererImpl::runLighting(FrameContext const& f) {
                                 {f.viewProj, f.settings.cull});
             break;
         case LightingMode::Tiled:
-            lightingTiledPass({deferred, shaders.get(ProgramId::LightingTiled), targets.lighting, targets.coverage},
+            lightingTiledPass({deferred, shaders.get(ProgramId::LightingTiled), shaders.get(ProgramId::TileBin),
+                               tileBins, targets.lighting, targets.coverage},
                               {f.view, f.projection, targets.width, targets.height, f.camera.nearPlane,
                                f.camera.farPlane, true, false});
             break;
@@ -275,8 +279,8 @@ void RendererImpl::runCoverage(FrameContext const& f) {
         {deferredInputs(f), triangle, shaders.get(ProgramId::CoverageAllLights), volumeCounts ? &volumes : nullptr,
          volumeCounts ? &shaders.get(ProgramId::LightVolumeCoverage) : nullptr,
          volumeCounts ? &shaders.get(ProgramId::LightVolumeStencil) : nullptr,
-         tiled ? &shaders.get(ProgramId::LightingTiled) : nullptr, targets.coverageFbo, targets.coverage,
-         targets.lighting},
+         tiled ? &shaders.get(ProgramId::LightingTiled) : nullptr, tiled ? &shaders.get(ProgramId::TileBin) : nullptr,
+         tiled ? &tileBins : nullptr, targets.coverageFbo, targets.coverage, targets.lighting},
         {f.settings.mode, f.settings.cull, f.settings.view, t, f.viewProj});
 }
 

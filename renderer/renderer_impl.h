@@ -69,6 +69,7 @@ public:
     OptionalFeature tiledFeature;
     OptionalFeature clusteredFeature;
     ClusterLists clusters;
+    TileBins tileBins;                    // the tiled and clustered list passes' candidates, rebuilt by each
     std::function<void()> frameTestHook;  // renderer_test_access.h
 
 private:

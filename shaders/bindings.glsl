@@ -21,4 +21,8 @@
 // Storage buffers of the clustered passes (cluster_build.comp writes, cluster_shade.comp reads).
 #define BIND_SSBO_CLUSTER_COUNTS 0
 #define BIND_SSBO_CLUSTER_LIGHTS 1
+// Storage buffers of the light binning pass (tile_bin.comp writes, lighting_tiled.comp and
+// cluster_build.comp read): each 16x16 tile's candidate lights.
+#define BIND_SSBO_TILE_BIN_COUNTS 2
+#define BIND_SSBO_TILE_BIN_LIGHTS 3
 #endif

@@ -1,13 +1,15 @@
 // Clustered lighting, step 1 (OpenGL 4.3): one work group per 16x16-pixel tile first culls the
-// lights against the tile's frustum (as lighting_tiled.comp does), then one invocation per
-// exponential depth slice lists, in index order, the tile's lights whose sphere reaches that
-// slice's view-space box (renderer/core/cluster_math.h does the same on the CPU). The tile pass
-// tests every light once per tile, not once per cluster: 24x fewer tests.
+// tile's candidate lights from the binning pass (tile_bin.comp) against the tile's frustum (as
+// lighting_tiled.comp does), then one invocation per exponential depth slice lists, in index
+// order, the tile's lights whose sphere reaches that slice's view-space box
+// (renderer/core/cluster_math.h does the same on the CPU). A tile with more candidates than the
+// bins hold tests every light instead.
 #version 430 core
 #include "bindings.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 #include "tile_frustum.glsl"
+#include "tile_bin_read.glsl"
 
 layout(local_size_x = 256) in;
 
@@ -31,6 +33,28 @@ shared uint sWords[MAX_LIGHT_WORDS];
 shared uint sWordCount;
 
 float sliceNear(int slice) { return uNear * pow(uFar / uNear, float(slice) / float(uGrid.z)); }
+
+// Whether light `index` may reach the tile between the near and far planes: its sphere lies on the
+// inner side of (or crosses) the four side planes (the tile test of lighting_tiled.comp).
+bool lightTouchesTile(int index, vec3 left, vec3 right, vec3 bottom, vec3 top) {
+    vec4 pr = texelFetch(uLights, index * 4);
+    float r = pr.w;
+    vec3 c = (uView * vec4(pr.xyz, 1.0)).xyz;
+    float depth = -c.z;
+    return r > 0.0 && depth + r >= uNear && depth - r <= uFar && dot(left, c) >= -r && dot(right, c) >= -r &&
+           dot(bottom, c) >= -r && dot(top, c) >= -r;
+}
+
+// Whether light `index` (already in the tile's list) reaches the cluster's view-space box.
+bool lightTouchesCluster(int index, vec3 boxLo, vec3 boxHi) {
+    vec4 pr = texelFetch(uLights, index * 4);
+    vec3 c = (uView * vec4(pr.xyz, 1.0)).xyz;
+    // A hair larger than the radius: a pixel on a slice boundary, put in the neighbouring slice by
+    // rounding, still finds every light that reaches it.
+    float r = pr.w * 1.0001 + 1e-4;
+    vec3 d = c - clamp(c, boxLo, boxHi);
+    return dot(d, d) <= r * r;
+}
 
 void main() {
     int local = int(gl_LocalInvocationIndex);
@@ -62,22 +86,34 @@ void main() {
     uint base = uint(cluster) * uint(uMaxLights);
     uint count = 0u;
 
-    for (int start = 0; start < uLightCount; start += CHUNK_LIGHTS) {
+    int tileIndex = tile.y * uGrid.x + tile.x;
+    int binned = tileBinCandidates(tileIndex);
+    if (binned >= 0) {
+        // --- the tile's lights: its candidates, each invocation testing every 256th ---
+        for (int k = local; k < binned; k += 256) {
+            int index = binnedLight(tileIndex, k);
+            if (lightTouchesTile(index, left, right, bottom, top)) keepLight(index);
+        }
+        int kept = sortKeptLights();
+        // --- each slice keeps the tile's lights that reach its box, in index order ---
+        for (int k = 0; owner && k < kept; ++k) {
+            int index = int(sSorted[k]);
+            if (lightTouchesCluster(index, boxLo, boxHi)) {
+                if (count < uint(uMaxLights)) clusterLight[base + count] = uint(index);
+                ++count;  // the true count, also past the cap (cluster_shade.comp then loops over all)
+            }
+        }
+    }
+    // Over the bins' cap: every light, in chunks (the same tests, the same order).
+    for (int start = 0; binned < 0 && start < uLightCount; start += CHUNK_LIGHTS) {
         int chunk = min(uLightCount - start, CHUNK_LIGHTS);
         int words = (chunk + 31) / 32;
         for (int w = local; w < words; w += 256) sLightMask[w] = 0u;
         memoryBarrierShared();
         barrier();
         // --- the tile's lights: every invocation tests every 256th light of the chunk ---
-        for (int i = local; i < chunk; i += 256) {
-            vec4 pr = texelFetch(uLights, (start + i) * 4);
-            float r = pr.w;
-            vec3 c = (uView * vec4(pr.xyz, 1.0)).xyz;
-            float depth = -c.z;
-            bool touches = r > 0.0 && depth + r >= uNear && depth - r <= uFar && dot(left, c) >= -r &&
-                           dot(right, c) >= -r && dot(bottom, c) >= -r && dot(top, c) >= -r;
-            if (touches) atomicOr(sLightMask[i >> 5], 1u << uint(i & 31));
-        }
+        for (int i = local; i < chunk; i += 256)
+            if (lightTouchesTile(start + i, left, right, bottom, top)) atomicOr(sLightMask[i >> 5], 1u << uint(i & 31));
         memoryBarrierShared();
         barrier();
         if (local == 0) {
@@ -97,13 +133,7 @@ void main() {
                     int b = findLSB(bits);
                     bits &= bits - 1u;
                     int index = start + w * 32 + b;
-                    vec4 pr = texelFetch(uLights, index * 4);
-                    vec3 c = (uView * vec4(pr.xyz, 1.0)).xyz;
-                    // A hair larger than the radius: a pixel on a slice boundary, put in the
-                    // neighbouring slice by rounding, still finds every light that reaches it.
-                    float r = pr.w * 1.0001 + 1e-4;
-                    vec3 d = c - clamp(c, boxLo, boxHi);
-                    if (dot(d, d) <= r * r) {
+                    if (lightTouchesCluster(index, boxLo, boxHi)) {
                         if (count < uint(uMaxLights)) clusterLight[base + count] = uint(index);
                         ++count;  // the true count, also past the cap (cluster_shade.comp then loops over all)
                     }

@@ -1,11 +1,14 @@
 // Tiled lighting (OpenGL 4.3): one work group per 16x16-pixel tile finds the depth bounds of
 // its pixels, keeps the lights whose sphere touches the tile's frustum between those bounds
-// (renderer/tile_math.h does the same on the CPU), then shades its pixels with only those.
+// (renderer/tile_math.h does the same on the CPU), then shades its pixels with only those. The
+// lights tested are the tile's candidates from the binning pass (tile_bin.comp); a tile with
+// more candidates than the bins hold tests every light instead.
 #version 430 core
 #include "bindings.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 #include "gbuffer_read.glsl"
+#include "tile_bin_read.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
@@ -35,6 +38,29 @@ shared uint sMaxDepthBits;
 
 #include "depth.glsl"
 #include "tile_frustum.glsl"
+
+// Whether light `index` may reach a surface of the tile: its sphere reaches the tile's depth range
+// and lies on the inner side of (or crosses) the four side planes. The one culling test of this
+// pass (the binned and the every-light paths both call it).
+bool lightTouchesTile(int index, float minDepth, float maxDepth, vec3 left, vec3 right, vec3 bottom, vec3 top) {
+    vec4 positionRadius = texelFetch(uLights, index * 4);
+    float r = positionRadius.w;
+    vec3 c = (uView * vec4(positionRadius.xyz, 1.0)).xyz;
+    float depth = -c.z;
+    return r > 0.0 && depth + r >= minDepth && depth - r <= maxDepth && dot(left, c) >= -r && dot(right, c) >= -r &&
+           dot(bottom, c) >= -r && dot(top, c) >= -r;
+}
+
+// Adds light `index` at the pixel: lights in the tile's list that miss this pixel's surface cost
+// one fetch (they would add exactly zero).
+void addLight(int index, vec3 pos, vec3 n, vec4 as, inout vec3 color, inout float lit) {
+    vec4 positionRadius = texelFetch(uLights, index * 4);
+    if (!(distance(positionRadius.xyz, pos) < positionRadius.w)) return;
+    Light l = fetchLight(index);
+    color += shadeLight(l, pos, n, as.rgb, as.a);
+    // "Lit" as in light_volume.frag: the light reaches a surface that faces it.
+    if (uWriteCoverage && any(greaterThan(shadeLight(l, pos, n, vec3(1.0), 1.0), vec3(0.0)))) lit += 1.0;
+}
 
 
 void main() {
@@ -81,7 +107,21 @@ void main() {
     vec3 color = uAmbient * as.rgb;
     float lit = 0.0;
     uint tileCount = 0u;
-    for (int base = 0; anyGeometry && base < uLightCount; base += CHUNK_LIGHTS) {
+    int tile = int(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x);
+    int binned = anyGeometry ? tileBinCandidates(tile) : 0;
+    if (binned >= 0) {
+        // --- light list: the tile's candidates, each invocation testing every 256th ---
+        for (int k = int(local); k < binned; k += 256) {
+            int index = binnedLight(tile, k);
+            if (lightTouchesTile(index, minDepth, maxDepth, left, right, bottom, top)) keepLight(index);
+        }
+        int kept = sortKeptLights();
+        tileCount = uint(kept);
+        // --- shading: the tile's lights in ascending index order ---
+        for (int k = 0; geometry && k < kept; ++k) addLight(int(sSorted[k]), pos, n, as, color, lit);
+    }
+    // Over the bins' cap: every light, in chunks (the same test, the same order).
+    for (int base = 0; binned < 0 && base < uLightCount; base += CHUNK_LIGHTS) {
         int chunk = min(uLightCount - base, CHUNK_LIGHTS);
         int words = (chunk + 31) / 32;
         for (int w = int(local); w < words; w += 256) sLightMask[w] = 0u;
@@ -89,15 +129,9 @@ void main() {
         barrier();
 
         // --- light list: every invocation tests every 256th light of the chunk ---
-        for (int i = int(local); i < chunk; i += 256) {
-            vec4 positionRadius = texelFetch(uLights, (base + i) * 4);
-            float r = positionRadius.w;
-            vec3 c = (uView * vec4(positionRadius.xyz, 1.0)).xyz;
-            float depth = -c.z;
-            bool touches = r > 0.0 && depth + r >= minDepth && depth - r <= maxDepth && dot(left, c) >= -r &&
-                           dot(right, c) >= -r && dot(bottom, c) >= -r && dot(top, c) >= -r;
-            if (touches) atomicOr(sLightMask[i >> 5], 1u << uint(i & 31));
-        }
+        for (int i = int(local); i < chunk; i += 256)
+            if (lightTouchesTile(base + i, minDepth, maxDepth, left, right, bottom, top))
+                atomicOr(sLightMask[i >> 5], 1u << uint(i & 31));
         memoryBarrierShared();
         barrier();
         // The non-empty words, in order, so pixels skip the empty ones (most, for small lights).
@@ -118,16 +152,7 @@ void main() {
                 while (bits != 0u) {
                     int b = findLSB(bits);
                     bits &= bits - 1u;
-                    int index = base + w * 32 + b;
-                    // Position and radius first: lights in the tile's list that miss this pixel's
-                    // surface cost one fetch (they would add exactly zero).
-                    vec4 positionRadius = texelFetch(uLights, index * 4);
-                    if (!(distance(positionRadius.xyz, pos) < positionRadius.w)) continue;
-                    Light l = fetchLight(index);
-                    color += shadeLight(l, pos, n, as.rgb, as.a);
-                    // "Lit" as in light_volume.frag: the light reaches a surface that faces it.
-                    if (uWriteCoverage && any(greaterThan(shadeLight(l, pos, n, vec3(1.0), 1.0), vec3(0.0))))
-                        lit += 1.0;
+                    addLight(base + w * 32 + b, pos, n, as, color, lit);
                 }
             }
         }

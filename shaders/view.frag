@@ -19,6 +19,7 @@ uniform int uNormalDisplay;
 uniform float uNear;
 uniform float uFar;
 uniform float uHeatMax;      // count shown at the top of the heat ramp
+uniform int uClusterSlices;  // kClusterSlices: the clustered grid's exponential depth slices
 
 in vec2 vUV;
 out vec4 fragColor;
@@ -67,6 +68,33 @@ vec3 heatLegend(ivec2 px, vec3 color) {
     return ramp;
 }
 
+// The depth-slice view's colour of slice k (core/cluster_math.h, clusterSliceColor, is the twin):
+// hues a golden-ratio turn apart, every other slice darker, so neighbouring slices always differ.
+vec3 sliceColor(int slice) {
+    float h = fract(float(slice) * 0.618034);
+    vec3 k = clamp(abs(fract(vec3(h) + vec3(1.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0, 0.0, 1.0);
+    return ((slice % 2) == 0 ? 1.0 : 0.6) * mix(vec3(1.0), k, 0.75);
+}
+
+// The slice of view depth z, as cluster_shade.comp files a pixel (clusterSlice on the CPU).
+int depthSlice(float z) {
+    if (!(z > uNear)) return 0;
+    return clamp(int(floor(log(z / uNear) / log(uFar / uNear) * float(uClusterSlices))), 0, uClusterSlices - 1);
+}
+
+// Slice legend along the bottom edge (frames of at least 64x64): one swatch per slice, slice 0
+// (nearest) on the left, SLICE_SWATCH texels each (fewer on narrow frames). The viewport labels
+// the swatches with their view-depth ranges.
+vec3 sliceLegend(ivec2 px, vec3 color) {
+    ivec2 size = textureSize(uDepth, 0);
+    if (size.x < 64 || size.y < 64) return color;
+    int w = max(min(size.x - 16, SLICE_SWATCH * uClusterSlices) / uClusterSlices, 1);
+    int x0 = 8, x1 = x0 + w * uClusterSlices, y0 = 6, y1 = 22;
+    if (px.x < x0 - 1 || px.x > x1 || px.y < y0 - 1 || px.y > y1) return color;
+    if (px.x == x0 - 1 || px.x == x1 || px.y == y0 - 1 || px.y == y1) return vec3(1.0);  // frame
+    return sliceColor((px.x - x0) / w);
+}
+
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 v;
@@ -107,6 +135,14 @@ void main() {
         // Lights in each 16x16 tile's list, with the tile grid drawn dark.
         v = vec4(heatRamp(texelFetch(uCoverage, px, 0).x / uHeatMax), 1.0);
         if (px.x % 16 == 0 || px.y % 16 == 0) v.rgb *= 0.5;
+        data = false;
+        break;
+    }
+    case VIEW_CLUSTER_SLICES: {
+        // Each surface's exponential depth slice (background black), from the depth buffer's view depth.
+        float d = texelFetch(uDepth, px, 0).r;
+        v = d < 1.0 ? vec4(sliceColor(depthSlice(linearDepth(d, uNear, uFar))), 1.0) : vec4(0.0, 0.0, 0.0, 1.0);
+        v.rgb = sliceLegend(px, v.rgb);
         data = false;
         break;
     }

@@ -16,6 +16,9 @@
 #define VIEW_RAW0 10
 #define VIEW_RAW1 11
 #define VIEW_RAW2 12
+#define VIEW_CLUSTER_SLICES 13
+// Width in texels of each slice's swatch in the depth-slice legend (kSliceSwatchTexels).
+#define SLICE_SWATCH 12
 
 // gbl::Tonemap, TONEMAP_ + the upper-cased kTonemapNames entry.
 #define TONEMAP_EXPOSURE 0

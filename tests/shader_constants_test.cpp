@@ -1,5 +1,6 @@
 // The constants C++ and GLSL share: the enum values view.frag switches on, the binding slots of
 // shaders/bindings.glsl, and the program table's order.
+#include "core/cluster_math.h"
 #include "core/pipeline_settings.h"
 #include "core/view_params.h"
 #include "gl/program_id.h"
@@ -73,6 +74,8 @@ TEST(ShaderConstants, ViewConstantsMatchTheEnums) {
                                          {"OVERLAY_NEGATIVE", int(kOverlayNegative)},
                                          {"OVERLAY_CLIP", int(kOverlayClip)}};
     EXPECT_EQ(overlays, cpp);
+    ASSERT_EQ(all.count("SLICE_SWATCH"), 1u);
+    EXPECT_EQ(all.at("SLICE_SWATCH"), kSliceSwatchTexels);
 }
 
 TEST(ShaderConstants, ViewShaderTakesItsConstantsFromTheSharedFile) {
@@ -103,7 +106,9 @@ TEST(ShaderConstants, GeneratedBindingsHeaderMatchesBindingsGlsl) {
                                          {"BIND_IMAGE_LIGHTING", slot::BIND_IMAGE_LIGHTING},
                                          {"BIND_IMAGE_COVERAGE", slot::BIND_IMAGE_COVERAGE},
                                          {"BIND_SSBO_CLUSTER_COUNTS", slot::BIND_SSBO_CLUSTER_COUNTS},
-                                         {"BIND_SSBO_CLUSTER_LIGHTS", slot::BIND_SSBO_CLUSTER_LIGHTS}};
+                                         {"BIND_SSBO_CLUSTER_LIGHTS", slot::BIND_SSBO_CLUSTER_LIGHTS},
+                                         {"BIND_SSBO_TILE_BIN_COUNTS", slot::BIND_SSBO_TILE_BIN_COUNTS},
+                                         {"BIND_SSBO_TILE_BIN_LIGHTS", slot::BIND_SSBO_TILE_BIN_LIGHTS}};
     EXPECT_EQ(all, cpp);
     // Each sampler uniform has exactly one unit, and the three G-buffer samplers, the lights and
     // every texture the view pass reads are distinct (they are bound together).

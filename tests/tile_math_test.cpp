@@ -129,3 +129,68 @@ TEST(TileFrustum, NeverMissesASphereOverItsPixelsAndRejectsFarTiles) {
     EXPECT_EQ(accepted, 500);
     EXPECT_GT(rejected, 500 * 100);
 }
+
+TEST(TileBins, SphereTileRangeHoldsEveryTileThePlaneTestAccepts) {
+    // The binning pass stores a light only in the tiles of sphereTileRange(); the tiled and
+    // clustered lists then keep those that pass sphereTouchesTile(). The lists equal the plane
+    // test's alone (and so stay exact) only if no accepted tile lies outside the range: checked
+    // for spheres of every size, near the eye, crossing the near plane and past the screen edges.
+    int const w = 320, h = 180;
+    float const nearP = 0.1f, farP = 200.0f;
+    glm::mat4 const proj = glm::perspective(glm::radians(60.0f), float(w) / h, nearP, farP);
+    glm::mat4 const inv = glm::inverse(proj);
+    TileGrid const g = tileGrid(w, h);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-1.3f, 1.3f), depthDist(-2.0f, 60.0f), radiusDist(0.0f, 1.0f);
+    int accepted = 0, outsideRange = 0;
+    long long rangeTiles = 0, allTiles = 0;
+    for (int i = 0; i < 400; ++i) {
+        float const d = depthDist(rng);
+        glm::vec3 const p(u(rng) * std::abs(d) * 0.7f, u(rng) * std::abs(d) * 0.4f, -d);
+        float const radius = std::pow(radiusDist(rng), 3.0f) * 8.0f + 1e-3f;
+        TileRange const range = sphereTileRange(proj, w, h, g, p, radius, nearP, farP);
+        for (int ty = 0; ty < g.tilesY; ++ty)
+            for (int tx = 0; tx < g.tilesX; ++tx) {
+                bool const hit =
+                    sphereTouchesTile(tileFrustum(inv, w, h, tilePixelRect(g, w, h, tx, ty)), nearP, farP, p, radius);
+                accepted += hit;
+                outsideRange += hit && !range.contains(tx, ty);
+                rangeTiles += range.contains(tx, ty);
+                ++allTiles;
+            }
+    }
+    EXPECT_EQ(outsideRange, 0);
+    EXPECT_GT(accepted, 1000);
+    // ...and the ranges are what makes binning pay: far fewer tiles than all of them.
+    EXPECT_LT(rangeTiles * 4, allTiles);
+}
+
+TEST(TileBins, RangeOfASmallSphereIsItsTileAndEmptyPastTheFarPlane) {
+    int const w = 320, h = 180;
+    glm::mat4 const proj = glm::perspective(glm::radians(90.0f), float(w) / h, 0.1f, 100.0f);
+    TileGrid const g = tileGrid(w, h);  // 20 x 12 tiles
+    // On the view axis: the centre pixel (160, 90) is the corner of tiles 9..10 and 5 (90 / 16 = 5.6).
+    TileRange const r = sphereTileRange(proj, w, h, g, {0.0f, 0.0f, -10.0f}, 0.01f, 0.1f, 100.0f);
+    EXPECT_EQ(r.x0, 9);
+    EXPECT_EQ(r.x1, 10);
+    EXPECT_EQ(r.y0, 5);
+    EXPECT_EQ(r.y1, 5);
+    EXPECT_TRUE(sphereTileRange(proj, w, h, g, {0.0f, 0.0f, -120.0f}, 1.0f, 0.1f, 100.0f).empty());
+    EXPECT_TRUE(sphereTileRange(proj, w, h, g, {0.0f, 0.0f, 5.0f}, 1.0f, 0.1f, 100.0f).empty());   // behind the eye
+    EXPECT_TRUE(sphereTileRange(proj, w, h, g, {0.0f, 0.0f, -5.0f}, 0.0f, 0.1f, 100.0f).empty());  // radius 0
+    // Crossing the near plane: every tile.
+    TileRange const all = sphereTileRange(proj, w, h, g, {0.0f, 0.0f, -0.5f}, 1.0f, 0.1f, 100.0f);
+    EXPECT_EQ(all.x0, 0);
+    EXPECT_EQ(all.y0, 0);
+    EXPECT_EQ(all.x1, 19);
+    EXPECT_EQ(all.y1, 11);
+}
+
+TEST(TileBins, CapFitsOneStorageBlock) {
+    int const tiles = tileGrid(1280, 720).count();  // 3600
+    EXPECT_EQ(tileBinCap(tiles, 128LL << 20), kTileBinMaxLights);
+    EXPECT_EQ(tileBinCap(tiles, 16LL << 20), kTileBinMaxLights);           // 16,777,216 / 14,400 = 1165
+    EXPECT_EQ(tileBinCap(tileGrid(3840, 2160).count(), 16LL << 20), 129);  // 16,777,216 / (4 * 32,400)
+    EXPECT_EQ(tileBinCap(tiles, 100), 0);
+    EXPECT_EQ(tileBinCap(0, 100), kTileBinMaxLights);
+}

@@ -148,6 +148,7 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
                             ui::sideB(state.ab, state.pipeline),
                             editor.gpu.ab.b.texture.id(),
                             editor.gpu.ab.diff.id()};
+    state.viewport.clipPlanes = {state.camera.nearPlane, state.camera.farPlane};
     ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, state.viewportTools, viewportTexture,
                           {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer),
                           &ab);

@@ -56,6 +56,18 @@ inline int clusterSlice(float depth, float nearPlane, float farPlane, int slices
     return std::clamp(int(std::floor(s)), 0, slices - 1);
 }
 
+// The depth-slice view (DebugView::ClusterSlices, shaders/view.frag sliceColor is the twin): slice
+// k's colour, hues a golden-ratio turn apart, every other slice darker, so neighbours always differ.
+inline glm::vec3 clusterSliceColor(int slice) {
+    float const h = glm::fract(float(slice) * 0.618034f);
+    glm::vec3 const k =
+        glm::clamp(glm::abs(glm::fract(glm::vec3(h) + glm::vec3(1.0f, 2.0f / 3.0f, 1.0f / 3.0f)) * 6.0f - 3.0f) - 1.0f,
+                   0.0f, 1.0f);
+    return (slice % 2 == 0 ? 1.0f : 0.6f) * glm::mix(glm::vec3(1.0f), k, 0.75f);
+}
+// Width in texels of a slice's swatch in that view's legend (SLICE_SWATCH in shaders/view_constants.glsl).
+inline constexpr int kSliceSwatchTexels = 12;
+
 struct ViewBox {
     glm::vec3 lo{0.0f};
     glm::vec3 hi{0.0f};

@@ -36,6 +36,9 @@ enum class DebugView {
     Raw0 = 10,
     Raw1 = 11,
     Raw2 = 12,
+    // Each pixel's exponential depth slice of the clustered grid (core/cluster_math.h), one
+    // colour per slice (clusterSliceColor) with a swatch legend along the bottom.
+    ClusterSlices = 13,
 };
 
 struct PipelineSettings {
@@ -66,9 +69,9 @@ inline constexpr std::array<std::string_view, 5> kCullModeNames{"back", "front",
 inline constexpr std::array<std::string_view, 3> kDepthCopyNames{"blit", "shader", "off"};
 inline constexpr std::array<std::string_view, 3> kTonemapNames{"exposure", "reinhard", "clamp"};
 inline constexpr std::array<std::string_view, 4> kGBufferLayoutNames{"classic", "packed", "naive8", "rgb10a2"};
-inline constexpr std::array<std::string_view, 13> kDebugViewNames{
+inline constexpr std::array<std::string_view, 14> kDebugViewNames{
     "final",        "lighting", "position",    "normal", "albedo", "specular", "depth",
-    "depth_linear", "heatmap",  "tile_lights", "raw0",   "raw1",   "raw2"};
+    "depth_linear", "heatmap",  "tile_lights", "raw0",   "raw1",   "raw2",     "cluster_slices"};
 
 template <class Enum, std::size_t N>
 std::optional<Enum> enumFromName(std::array<std::string_view, N> const& names, std::string_view name) {

@@ -51,7 +51,9 @@ std::span<ProgramInfo const> programTable() {
           {{GL_VERTEX_SHADER, "light_volume.vert"}, {GL_FRAGMENT_SHADER, "light_volume_wire.frag"}},
           {}}},
         {ProgramId::LightingTiled, G::Tiled, {"lighting_tiled", {{GL_COMPUTE_SHADER, "lighting_tiled.comp"}}, {}}},
+        {ProgramId::TileBin, G::Tiled, {"tile_bin", {{GL_COMPUTE_SHADER, "tile_bin.comp"}}, {}}},
         {ProgramId::ClusterBuild, G::Clustered, {"cluster_build", {{GL_COMPUTE_SHADER, "cluster_build.comp"}}, {}}},
+        {ProgramId::ClusterBin, G::Clustered, {"cluster_bin", {{GL_COMPUTE_SHADER, "tile_bin.comp"}}, {}}},
         {ProgramId::ClusterShade, G::Clustered, {"cluster_shade", {{GL_COMPUTE_SHADER, "cluster_shade.comp"}}, {}}},
     };
     static_assert(std::size(table) == kProgramCount, "programTable(): one row per ProgramId, in enum order");

@@ -29,8 +29,10 @@ enum class ProgramId {
     LightVolumeWire,
     // tiled mode
     LightingTiled,
+    TileBin,  // the light binning pass before the tiled lists (shaders/tile_bin.comp)
     // clustered mode
     ClusterBuild,
+    ClusterBin,  // the same binning pass before the cluster lists
     ClusterShade,
 };
 inline constexpr std::size_t kProgramCount = std::size_t(ProgramId::ClusterShade) + 1;

@@ -10,11 +10,11 @@ CoverageOutput coveragePass(CoverageInput const& in, CoverageConfig const& c) {
     glClear(GL_COLOR_BUFFER_BIT);
     bool const tiles = c.view == DebugView::TileLights || c.mode == LightingMode::Tiled;
     if (tiles) {
-        if (in.tiled) {
+        if (in.tiled && in.tiledBin && in.bins) {
             LightingTiledConfig t = c.tiled;
             t.shade = false;
             t.coverage = true;
-            lightingTiledPass({in.deferred, *in.tiled, in.hdr, in.coverage}, t);
+            lightingTiledPass({in.deferred, *in.tiled, *in.tiledBin, *in.bins, in.hdr, in.coverage}, t);
         }
     } else if (c.mode == LightingMode::Volumes) {
         if (in.volumes && in.volumeCoverage && in.volumeStencil) {

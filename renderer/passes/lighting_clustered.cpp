@@ -39,13 +39,18 @@ void clusterListsPass(LightingClusteredInput const& in, LightingClusteredConfig 
                                       nullptr, GL_DYNAMIC_COPY, "cluster lights");
         l.clusters = g.count();
     }
+    tileBinPass({in.bin, in.deferred.lights, in.bins},
+                {c.view, c.projection, c.width, c.height, c.nearPlane, c.farPlane});
     gl::Program const& p = in.build;
     p.use();
     bindLights(p, in.deferred.lights);
+    p.set("uBinCap", in.bins.cap);
     p.set("uInverseProjection", glm::inverse(c.projection));
     setGridUniforms(p, in, c, g);
     glDispatchCompute(GLuint(g.tilesX), GLuint(g.tilesY), 1);  // one work group per tile, a slice per invocation
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS, 0);
 }
 
 LightingOutput clusterShadePass(LightingClusteredInput const& in, LightingClusteredConfig const& c) {

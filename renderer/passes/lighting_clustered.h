@@ -5,6 +5,7 @@
 #include "core/cluster_math.h"
 #include "gl/buffer.h"
 #include "passes/shading_inputs.h"
+#include "passes/tile_bins.h"
 
 namespace gbl {
 
@@ -19,6 +20,8 @@ struct ClusterLists {
 struct LightingClusteredInput {
     DeferredInputs deferred;
     gl::Program const& build;  // ProgramId::ClusterBuild
+    gl::Program const& bin;    // ProgramId::ClusterBin: fills `bins` before the build
+    TileBins& bins;
     gl::Program const& shade;  // ProgramId::ClusterShade
     ClusterLists& lists;
     gl::Texture const& hdr;       // RGBA16F image written when config.shade

@@ -7,6 +7,8 @@
 namespace gbl {
 
 LightingOutput lightingTiledPass(LightingTiledInput const& in, LightingTiledConfig const& c) {
+    tileBinPass({in.bin, in.deferred.lights, in.bins},
+                {c.view, c.projection, c.width, c.height, c.nearPlane, c.farPlane});
     gl::Program const& p = in.program;
     p.use();
     bindDeferredInputs(p, in.deferred);
@@ -18,6 +20,7 @@ LightingOutput lightingTiledPass(LightingTiledInput const& in, LightingTiledConf
     p.set("uFar", c.farPlane);
     p.set("uShade", c.shade ? 1 : 0);
     p.set("uWriteCoverage", c.coverage ? 1 : 0);
+    p.set("uBinCap", in.bins.cap);
     // Both image units are bound whatever the flags, so the program's declared images are valid.
     glBindImageTexture(slot::BIND_IMAGE_LIGHTING, in.hdr.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glBindImageTexture(slot::BIND_IMAGE_COVERAGE, in.coverage.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
@@ -27,6 +30,8 @@ LightingOutput lightingTiledPass(LightingTiledInput const& in, LightingTiledConf
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glBindImageTexture(slot::BIND_IMAGE_LIGHTING, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glBindImageTexture(slot::BIND_IMAGE_COVERAGE, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS, 0);
     return {in.hdr};
 }
 

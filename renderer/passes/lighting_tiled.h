@@ -2,12 +2,15 @@
 #pragma once
 
 #include "passes/shading_inputs.h"
+#include "passes/tile_bins.h"
 
 namespace gbl {
 
 struct LightingTiledInput {
     DeferredInputs deferred;
-    gl::Program const& program;   // ProgramId::LightingTiled
+    gl::Program const& program;  // ProgramId::LightingTiled
+    gl::Program const& bin;      // ProgramId::TileBin: fills `bins` first
+    TileBins& bins;
     gl::Texture const& hdr;       // RGBA16F image written when config.shade
     gl::Texture const& coverage;  // RG32F image written when config.coverage
 };

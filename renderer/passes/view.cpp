@@ -1,6 +1,7 @@
 // View pass.
 #include "passes/view.h"
 
+#include "core/cluster_math.h"
 #include "gl/shader_bindings.h"
 #include "passes/shading_inputs.h"
 
@@ -30,6 +31,7 @@ void viewPass(ViewInput const& in, ViewConfig const& c) {
     p.set("uNear", c.nearPlane);
     p.set("uFar", c.farPlane);
     p.set("uHeatMax", v.heatMax);
+    p.set("uClusterSlices", kClusterSlices);
     p.set("uInverseViewProj", c.inverseViewProj);
     p.set("uColormap", int(v.colormap));  // viewer tools (shaders/view_tools.glsl)
     p.set("uOverlays", int(v.overlays));

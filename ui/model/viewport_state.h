@@ -20,7 +20,8 @@ struct ViewportState {
     glm::vec2 lookDrag{0.0f};
     glm::vec2 panDrag{0.0f};
     float wheel = 0.0f;
-    bool frameRequested = false;  // the Frame button (the F key is read by the loop)
+    bool frameRequested = false;         // the Frame button (the F key is read by the loop)
+    glm::vec2 clipPlanes{0.1f, 100.0f};  // the camera's near and far: the depth-slice legend's ranges
 };
 
 }  // namespace gbl::ui

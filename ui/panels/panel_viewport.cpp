@@ -1,6 +1,7 @@
 // Viewport window.
 #include "panels/panel_viewport.h"
 
+#include "core/cluster_math.h"
 #include "gpu/view_target.h"
 #include "model/colormap.h"
 #include "panels/gui_compat.h"
@@ -47,6 +48,33 @@ void labelHeatLegend(ImVec2 imageMin, ImVec2 imageMax, glm::ivec2 textureSize, D
     dl->AddRectFilled(ImVec2(p.x - 3.0f, p.y - 1.0f), ImVec2(std::max(x1, p.x + size.x) + 3.0f, barTop),
                       IM_COL32(0, 0, 0, 170));
     dl->AddText(p, IM_COL32(235, 235, 235, 255), text);
+}
+
+// Labels for the depth-slice legend (shaders/view.frag sliceLegend: kClusterSlices swatches of
+// kSliceSwatchTexels from texel x 8, rows 6..22 from the bottom): a box above it listing each
+// slice's view-depth range beside its colour, in columns of 8.
+void labelSliceLegend(ImVec2 imageMin, ImVec2 imageMax, glm::ivec2 textureSize, glm::vec2 clip) {
+    if (textureSize.x < 64 || textureSize.y < 64) return;  // the shader draws no legend either
+    float const sy = (imageMax.y - imageMin.y) / float(textureSize.y);
+    float const barTop = imageMax.y - 23.0f * sy;
+    float const line = ImGui::GetTextLineHeight(), swatch = line * 0.8f;
+    float const column = ImGui::CalcTextSize("23: 100.00 - 100.00 ").x + swatch + 6.0f;
+    int const rows = 8, columns = (kClusterSlices + rows - 1) / rows;
+    ImVec2 const p0(imageMin.x + 8.0f, barTop - 6.0f - float(rows + 1) * line);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddRectFilled(ImVec2(p0.x - 3.0f, p0.y - 2.0f), ImVec2(p0.x + float(columns) * column, barTop - 3.0f),
+                      IM_COL32(0, 0, 0, 170));
+    dl->AddText(p0, IM_COL32(235, 235, 235, 255), "depth slice: view depth range");
+    for (int k = 0; k < kClusterSlices; ++k) {
+        ImVec2 const p(p0.x + float(k / rows) * column, p0.y + float(k % rows + 1) * line);
+        glm::vec3 const c = clusterSliceColor(k) * 255.0f;
+        dl->AddRectFilled(ImVec2(p.x, p.y + 0.1f * line), ImVec2(p.x + swatch, p.y + 0.9f * line),
+                          IM_COL32(int(c.r), int(c.g), int(c.b), 255));
+        char text[64];
+        std::snprintf(text, sizeof text, "%d: %.2f - %.2f", k, clusterSliceNear(k, clip.x, clip.y),
+                      clusterSliceNear(k + 1, clip.x, clip.y));
+        dl->AddText(ImVec2(p.x + swatch + 4.0f, p.y), IM_COL32(235, 235, 235, 255), text);
+    }
 }
 
 // The full text when the rest of the row holds it, else the compact one with the full text as
@@ -376,6 +404,8 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
     bool const toolsMouse = viewportToolsImage(tools, origin, avail, textureSize);
     if (settings.view == DebugView::Heatmap || settings.view == DebugView::TileLights)
         labelHeatLegend(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), textureSize, settings.view);
+    if (settings.view == DebugView::ClusterSlices)
+        labelSliceLegend(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), textureSize, state.clipPlanes);
 
     ImGuiIO const& io = ImGui::GetIO();
     state.hovered = ImGui::IsItemHovered();

@@ -1,0 +1,47 @@
+// Light binning pass.
+#include "passes/tile_bins.h"
+
+#include "gl/shader_bindings.h"
+#include "passes/shading_inputs.h"
+
+#include <algorithm>
+
+namespace gbl {
+
+void tileBinPass(TileBinInput const& in, TileBinConfig const& c) {
+    TileGrid const g = tileGrid(c.width, c.height);
+    TileBins& b = in.bins;
+    if (b.tiles != g.count() || !b.counts) {
+        GLint64 maxBlock = 0;
+        glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+        b.cap = tileBinCap(g.count(), maxBlock);
+        b.counts = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER, std::size_t(g.count()) * sizeof(GLuint), nullptr,
+                                      GL_DYNAMIC_COPY, "tile bin counts");
+        b.lights = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER,
+                                      std::size_t(g.count()) * std::size_t(std::max(b.cap, 1)) * sizeof(GLuint),
+                                      nullptr, GL_DYNAMIC_COPY, "tile bin lights");
+        b.tiles = g.count();
+    }
+    GLuint const zero = 0;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, b.counts.id());
+    glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS, b.counts.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS, b.lights.id());
+
+    gl::Program const& p = in.program;
+    p.use();
+    bindLights(p, in.lights);
+    p.set("uView", c.view);
+    p.set("uProjection", c.projection);
+    glUniform2i(p.uniform("uScreenSize"), c.width, c.height);
+    glUniform2i(p.uniform("uTiles"), g.tilesX, g.tilesY);
+    p.set("uTileSize", g.tileSize);
+    p.set("uBinCap", b.cap);
+    p.set("uNear", c.nearPlane);
+    p.set("uFar", c.farPlane);
+    if (in.lights.count > 0) glDispatchCompute(GLuint((in.lights.count + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+}  // namespace gbl

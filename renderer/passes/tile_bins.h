@@ -1,0 +1,39 @@
+// Light binning: each light's index appended to the candidate lists of the 16x16 tiles its
+// bounding sphere can cover (shaders/tile_bin.comp), read by the tiled and clustered list passes.
+#pragma once
+
+#include "core/tile_math.h"
+#include "gl/buffer.h"
+#include "gl/program.h"
+#include "gpu/light_buffer.h"
+
+#include <glm/glm.hpp>
+
+namespace gbl {
+
+// The per-tile candidate lists, kept between frames and regrown when the grid grows.
+struct TileBins {
+    gl::Buffer counts;  // uint per tile: candidates (also past the cap)
+    gl::Buffer lights;  // `cap` uint light indices per tile, in no particular order
+    int tiles = 0;
+    int cap = 0;  // tileBinCap() for this grid and context
+};
+
+struct TileBinInput {
+    gl::Program const& program;  // ProgramId::TileBin or ProgramId::ClusterBin
+    LightBuffer const& lights;
+    TileBins& bins;
+};
+struct TileBinConfig {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    int width = 0;
+    int height = 0;
+    float nearPlane = 0.1f;
+    float farPlane = 100.0f;
+};
+
+// Fills the bins and leaves them bound on BIND_SSBO_TILE_BIN_* for the list pass that follows.
+void tileBinPass(TileBinInput const& in, TileBinConfig const& config);
+
+}  // namespace gbl

@@ -1,0 +1,47 @@
+// Reading one tile's candidate lights from the binning pass (tile_bin.comp), for compute shaders
+// with 256 invocations per work group. The caller tests the tile's candidates (each invocation
+// every 256th, straight from the bin), keeps the ones that pass with keepLight(), and
+// sortKeptLights() then lists them in ascending index order, so each pixel adds its lights in
+// the full-screen pass's order.
+#ifndef GBL_TILE_BIN_READ_GLSL
+#define GBL_TILE_BIN_READ_GLSL
+layout(std430, binding = BIND_SSBO_TILE_BIN_COUNTS) readonly buffer TileBinCounts { uint tileBinCount[]; };
+layout(std430, binding = BIND_SSBO_TILE_BIN_LIGHTS) readonly buffer TileBinLights { uint tileBinLight[]; };
+uniform int uBinCap;  // entries per tile (TileBins::cap, at most kTileBinMaxLights)
+
+#define BIN_MAX 1024  // kTileBinMaxLights
+shared uint sKept[BIN_MAX];    // the candidates kept, in the order the invocations kept them
+shared uint sSorted[BIN_MAX];  // the same, ascending: the tile's light list
+shared uint sKeptCount;
+
+// The tile's candidate count, or -1 when the binning pass found more than the cap (the bin is
+// incomplete: the caller tests every light instead). Every invocation of the work group calls it
+// (it holds a barrier) and gets the same answer; candidate k is then binnedLight(tile, k).
+int tileBinCandidates(int tile) {
+    if (gl_LocalInvocationIndex == 0u) sKeptCount = 0u;
+    memoryBarrierShared();
+    barrier();
+    uint n = tileBinCount[tile];
+    return n > uint(uBinCap) ? -1 : int(n);
+}
+
+int binnedLight(int tile, int k) { return int(tileBinLight[uint(tile) * uint(uBinCap) + uint(k)]); }
+
+void keepLight(int index) { sKept[atomicAdd(sKeptCount, 1u)] = uint(index); }
+
+// After every invocation has kept its lights: sorts them into sSorted and returns how many.
+// Rank sort: a light's place is the number of smaller indices (each light is binned once per tile).
+int sortKeptLights() {
+    memoryBarrierShared();
+    barrier();
+    uint n = sKeptCount;
+    for (uint k = gl_LocalInvocationIndex; k < n; k += 256u) {
+        uint index = sKept[k], rank = 0u;
+        for (uint j = 0u; j < n; ++j) rank += sKept[j] < index ? 1u : 0u;
+        sSorted[rank] = index;
+    }
+    memoryBarrierShared();
+    barrier();
+    return int(n);
+}
+#endif
