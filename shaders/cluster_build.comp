@@ -103,7 +103,9 @@ void main() {
                     // neighbouring slice by rounding, still finds every light that reaches it.
                     float r = pr.w * 1.0001 + 1e-4;
                     vec3 d = c - clamp(c, boxLo, boxHi);
-                    if (dot(d, d) <= r * r) {
+                    // Spots: then the cone against a sphere around the slice's box.
+                    if (dot(d, d) <= r * r &&
+                        coneMayTouchSphere(index, mat3(uView), c, (boxLo + boxHi) * 0.5, length(boxHi - boxLo) * 0.5)) {
                         if (count < uint(uMaxLights)) clusterLight[base + count] = uint(index);
                         ++count;  // the true count, also past the cap (cluster_shade.comp then loops over all)
                     }

@@ -71,6 +71,15 @@ void main() {
     // Four named planes rather than an array: llvmpipe spills indexed arrays to memory.
     vec3 left = sidePlane(bl, tl, centre).xyz, right = sidePlane(br, tr, centre).xyz;
     vec3 bottom = sidePlane(bl, br, centre).xyz, top = sidePlane(tl, tr, centre).xyz;
+    // A sphere around the tile's frustum between its depth bounds, for the spot lights' cone test:
+    // the far corners scaled to each bound (view depth d: corner * d / the far plane's depth).
+    float farDepth = -bl.z;
+    vec3 tileCentre = (bl + br + tl + tr) * 0.25 * ((minDepth + maxDepth) * 0.5 / farDepth);
+    float tileRadius = 0.0;
+    for (int k = 0; k < 8; ++k) {
+        vec3 corner = (k & 3) == 0 ? bl : (k & 3) == 1 ? br : (k & 3) == 2 ? tl : tr;
+        tileRadius = max(tileRadius, distance(tileCentre, corner * ((k < 4 ? minDepth : maxDepth) / farDepth)));
+    }
 
     vec3 n = vec3(0.0);
     vec4 as = vec4(0.0);
@@ -79,6 +88,7 @@ void main() {
         as = gbufferAlbedoSpec(px);
     }
     vec3 color = uAmbient * as.rgb;
+    if (geometry) color += shadeGlobalLights(pos, n, as.rgb, as.a);  // directional: in no tile list
     float lit = 0.0;
     uint tileCount = 0u;
     for (int base = 0; anyGeometry && base < uLightCount; base += CHUNK_LIGHTS) {
@@ -96,6 +106,8 @@ void main() {
             float depth = -c.z;
             bool touches = r > 0.0 && depth + r >= minDepth && depth - r <= maxDepth && dot(left, c) >= -r &&
                            dot(right, c) >= -r && dot(bottom, c) >= -r && dot(top, c) >= -r;
+            // Spots: then the cone against the tile's sphere.
+            if (touches) touches = coneMayTouchSphere(base + i, mat3(uView), c, tileCentre, tileRadius);
             if (touches) atomicOr(sLightMask[i >> 5], 1u << uint(i & 31));
         }
         memoryBarrierShared();

@@ -1,6 +1,7 @@
 // The constants C++ and GLSL share: the enum values view.frag switches on, the binding slots of
 // shaders/bindings.glsl, and the program table's order.
 #include "core/pipeline_settings.h"
+#include "core/point_light.h"
 #include "core/view_params.h"
 #include "gl/program_id.h"
 #include "gl/shader_bindings.h"
@@ -73,6 +74,12 @@ TEST(ShaderConstants, ViewConstantsMatchTheEnums) {
                                          {"OVERLAY_NEGATIVE", int(kOverlayNegative)},
                                          {"OVERLAY_CLIP", int(kOverlayClip)}};
     EXPECT_EQ(overlays, cpp);
+}
+
+TEST(ShaderConstants, DirectionalLightLimitMatchesTheShader) {
+    auto const all = defines("light_fetch.glsl");
+    ASSERT_EQ(all.count("MAX_DIRECTIONAL_LIGHTS"), 1u);
+    EXPECT_EQ(all.at("MAX_DIRECTIONAL_LIGHTS"), kMaxDirectionalLights);
 }
 
 TEST(ShaderConstants, ViewShaderTakesItsConstantsFromTheSharedFile) {
