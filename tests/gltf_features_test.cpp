@@ -408,7 +408,7 @@ TEST(GltfLightKinds, SpotAndDirectionalLightsLoadAsSuchAlongTheirNodesMinusZ) {
          {"intensity", 3.14159265},
          {"range", 6},
          {"spot", {{"innerConeAngle", 0.2617993878}, {"outerConeAngle", 0.5235987756}}}},
-        {{"type", "spot"}},  // KHR defaults: inner 0, outer pi/4
+        {{"type", "spot"}, {"spot", json::object()}},  // KHR defaults: inner 0, outer pi/4
         {{"type", "directional"}, {"intensity", 2.0}, {"color", {1.0, 0.5, 0.25}}},
         {{"type", "spot"}, {"spot", {{"innerConeAngle", 0.6}, {"outerConeAngle", 0.5}}}},  // inner > outer
     };
