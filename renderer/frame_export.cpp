@@ -103,7 +103,11 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
     for (auto const& l : frame.lights) {
         LightRadius const r = lightRadius(l);
         lightsJson.push_back({{"name", l.name},
+                              {"kind", lightKindName(l.kind)},
                               {"position", toJson(l.position)},
+                              {"direction", toJson(l.direction)},
+                              {"inner_cone_deg", l.innerConeDeg},
+                              {"outer_cone_deg", l.outerConeDeg},
                               {"color", toJson(l.color)},
                               {"intensity", l.intensity},
                               {"kc", l.kc},

@@ -306,7 +306,9 @@ FrameStats RendererImpl::render(FrameInput const& input) {
 
     if (auto why = lights.upload(f.lights)) stats.fallbackReason += (stats.fallbackReason.empty() ? "" : "; ") + *why;
     volumes.enclosingScale = volumes.meshEnclosingScale * s.volumeScale;  // < 1 only to show what it cuts off
-    for (auto const& l : f.lights) stats.lightsShaded += lightRadius(l).radius > 0.0f ? 1 : 0;
+    volumes.volumeScale = s.volumeScale;
+    for (auto const& l : f.lights)
+        stats.lightsShaded += (isLocalLight(l) ? lightRadius(l).radius > 0.0f : !validateLight(l)) ? 1 : 0;
     // One light outlined (the accumulated k-th, or the selected one): its index among f.lights,
     // which start at input.lights[0] except for a contribution frame (light k alone).
     int outline = outlinedLight(input);
@@ -363,7 +365,8 @@ FrameStats RendererImpl::render(FrameInput const& input) {
             s.mode == LightingMode::Forward ? litTarget() : LitTarget{targets.volumeFbo, targets.lighting};
         WireframesConfig wire{f.viewProj};
         if (outline >= 0) {
-            auto const slot = volumeInstanceSlot(f.lights, outline, f.camera, f.aspect, volumes.enclosingScale);
+            auto const slot = volumeInstanceSlot(f.lights, outline, f.camera, f.aspect, volumes.enclosingScale,
+                                                 volumes.coneRadialScale, volumes.volumeScale);
             wire.firstInstance = slot.value_or(0);
             wire.count = slot ? 1 : 0;
         }

@@ -53,7 +53,9 @@ bool lightTouchesCluster(int index, vec3 boxLo, vec3 boxHi) {
     // rounding, still finds every light that reaches it.
     float r = pr.w * 1.0001 + 1e-4;
     vec3 d = c - clamp(c, boxLo, boxHi);
-    return dot(d, d) <= r * r;
+    if (dot(d, d) > r * r) return false;
+    // Spots: then the cone against a sphere around the cluster's box.
+    return coneMayTouchSphere(index, mat3(uView), c, (boxLo + boxHi) * 0.5, length(boxHi - boxLo) * 0.5);
 }
 
 void main() {

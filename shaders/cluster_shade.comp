@@ -46,6 +46,7 @@ void main() {
     vec3 n = gbufferNormal(px);
     vec4 as = gbufferAlbedoSpec(px);
     vec3 color = uAmbient * as.rgb;
+    color += shadeGlobalLights(pos, n, as.rgb, as.a);  // directional: in no cluster list
     float lit = 0.0;
     float depth = -(uView * vec4(pos, 1.0)).z;
     int slice = clamp(int(floor(log(depth / uNear) / log(uFar / uNear) * float(uGrid.z))), 0, uGrid.z - 1);

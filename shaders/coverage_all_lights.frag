@@ -17,5 +17,9 @@ void main() {
     float lit = 0.0;
     for (int i = 0; i < uLightCount; ++i)
         if (any(greaterThan(shadeLight(fetchLight(i), pos, n, vec3(1.0), 1.0), vec3(0.0)))) lit += 1.0;
+    // Directional lights (radius 0 above, so never counted there) light every surface facing them.
+    for (int k = 0; k < uDirectionalCount; ++k)
+        if (any(greaterThan(shadeDirectional(fetchLight(uDirectionalLights[k]), pos, n, vec3(1.0), 1.0), vec3(0.0))))
+            lit += 1.0;
     fragColor = vec4(float(uLightCount), lit, 0.0, 0.0);
 }

@@ -22,6 +22,7 @@ void main() {
     vec3 n = materialNormal(vNormal, vTangent, vUV, gl_FrontFacing);
     float spec = materialSpecular(vUV);
     vec3 color = uAmbient * base.rgb;
+    color += shadeGlobalLights(vWorldPos, n, base.rgb, spec);  // directional lights
     for (int i = 0; i < uLightCount; ++i) {
         vec4 pr = texelFetch(uLights, i * 4);
         if (distance(pr.xyz, vWorldPos) >= pr.w) continue;

@@ -9,6 +9,7 @@ flat out vec3 vColor;
 void main() {
     vec4 a = texelFetch(uLights, gl_InstanceID * 4 + 0);
     vec4 d = texelFetch(uLights, gl_InstanceID * 4 + 3);
-    vColor = d.rgb;  // the light's colour, 0..1
+    // The light's colour, 0..1: the packed wire colour of shaders/light_fetch.glsl.
+    vColor = vec3(mod(d.x, 256.0), mod(floor(d.x / 256.0), 256.0), floor(d.x / 65536.0)) / 255.0;
     gl_Position = uViewProj * vec4(a.xyz + aPosition * uCubeSize, 1.0);
 }

@@ -1,20 +1,54 @@
 // Light volumes: one instance of the unit sphere per light, scaled to the light's radius times
-// the enclosing scale (renderer/light_volume_mesh.h) so the mesh covers the whole true sphere.
+// the enclosing scale (renderer/core/light_volume_mesh.h) so the mesh covers the whole true
+// sphere; or, with uCone, one instance of the unit cone per spot light, its apex at the light,
+// along the spot's direction, as tall as the radius and as wide as the outer angle times the
+// cone's radial scale (renderer/core/light_volume_cone.h: coneVolume, the CPU twin); or, with
+// uArrow (wireframes), an arrow along each directional light's direction.
 #version 330 core
 #include "bindings.glsl"
-layout(location = 0) in vec3 aPosition;  // unit-sphere vertex
+#include "lighting.glsl"
+#include "light_fetch.glsl"
+layout(location = 0) in vec3 aPosition;  // unit-sphere or unit-cone vertex
 
 uniform mat4 uViewProj;
 uniform float uEnclosingScale;
-uniform samplerBuffer uLights;
+uniform bool uCone;
+uniform float uConeRadialScale;
+uniform float uVolumeScale;
+uniform bool uArrow;         // wireframes: instance k is the k-th directional light's arrow
+uniform float uArrowLength;
 uniform isamplerBuffer uInstances;  // light index per instance
 uniform int uFirstInstance;         // offset into uInstances (draws of one light or one group)
 
 flat out int vLight;
 
+// The two unit vectors across the axis (core/light_volume_cone.cpp's coneBasis).
+void coneBasis(vec3 axis, out vec3 x, out vec3 y) {
+    vec3 helper = abs(axis.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+    x = normalize(cross(helper, axis));
+    y = cross(axis, x);
+}
+
 void main() {
-    int light = texelFetch(uInstances, uFirstInstance + gl_InstanceID).r;
+    int light = uArrow ? uDirectionalLights[gl_InstanceID] : texelFetch(uInstances, uFirstInstance + gl_InstanceID).r;
     vec4 positionRadius = texelFetch(uLights, light * 4);
     vLight = light;
-    gl_Position = uViewProj * vec4(positionRadius.xyz + aPosition * (positionRadius.w * uEnclosingScale), 1.0);
+    vec3 world;
+    if (uArrow) {
+        Light l = fetchLight(light);
+        vec3 x, y;
+        coneBasis(l.direction, x, y);
+        world = positionRadius.xyz + (x * aPosition.x + y * aPosition.y + l.direction * aPosition.z) * uArrowLength;
+    } else if (uCone) {
+        Light l = fetchLight(light);
+        float height = positionRadius.w * uVolumeScale;
+        float sinOuter = sqrt(max(1.0 - l.cosOuter * l.cosOuter, 0.0));
+        float ring = height * sinOuter / l.cosOuter * uConeRadialScale;
+        vec3 x, y;
+        coneBasis(l.direction, x, y);
+        world = positionRadius.xyz + (x * aPosition.x + y * aPosition.y) * ring + l.direction * (aPosition.z * height);
+    } else {
+        world = positionRadius.xyz + aPosition * (positionRadius.w * uEnclosingScale);
+    }
+    gl_Position = uViewProj * vec4(world, 1.0);
 }

@@ -5,6 +5,9 @@ struct Light {
     vec3 attenuation; // Kc, Kl, Kq
     float radius;
     float cutoff;     // attenuation at the radius (threshold / Imax)
+    vec3 direction;   // unit, where a spot or directional light shines
+    float cosOuter;   // spot cone: factor = saturate((cos(angle) - cosOuter) * coneScale)^2;
+    float coneScale;  // points have cosOuter = -2, coneScale = 1: factor 1 (core/light_math.h)
 };
 
 uniform vec3 uViewPos;
@@ -18,16 +21,34 @@ float windowedAttenuation(Light l, float d) {
     return max(att - l.cutoff, 0.0);
 }
 
-// Blinn-Phong diffuse + specular of one light at a surface point.
+// The spot cone factor for the unit vector L from the surface to the light (1 for points).
+float spotConeFactor(Light l, vec3 L) {
+    float t = clamp((dot(-L, l.direction) - l.cosOuter) * l.coneScale, 0.0, 1.0);
+    return t * t;
+}
+
+// Blinn-Phong diffuse + specular of light arriving from unit direction L with `radiance`.
+vec3 blinnPhong(vec3 L, vec3 radiance, vec3 p, vec3 n, vec3 albedo, float specular) {
+    vec3 V = normalize(uViewPos - p);
+    vec3 H = normalize(L + V);
+    float diff = max(dot(n, L), 0.0);
+    float spec = diff > 0.0 ? pow(max(dot(n, H), 0.0), uShininess) : 0.0;
+    return (albedo * diff + vec3(specular * spec)) * radiance;
+}
+
+// One point or spot light at a surface point.
 vec3 shadeLight(Light l, vec3 p, vec3 n, vec3 albedo, float specular) {
     vec3 toLight = l.position - p;
     float d = length(toLight);
     float att = windowedAttenuation(l, d);
     if (att <= 0.0) return vec3(0.0);
     vec3 L = toLight / d;
-    vec3 V = normalize(uViewPos - p);
-    vec3 H = normalize(L + V);
-    float diff = max(dot(n, L), 0.0);
-    float spec = diff > 0.0 ? pow(max(dot(n, H), 0.0), uShininess) : 0.0;
-    return (albedo * diff + vec3(specular * spec)) * l.color * att;
+    float cone = spotConeFactor(l, L);
+    if (cone <= 0.0) return vec3(0.0);
+    return blinnPhong(L, l.color * (att * cone), p, n, albedo, specular);
+}
+
+// One directional light: from -direction everywhere, no attenuation.
+vec3 shadeDirectional(Light l, vec3 p, vec3 n, vec3 albedo, float specular) {
+    return blinnPhong(-l.direction, l.color, p, n, albedo, specular);
 }

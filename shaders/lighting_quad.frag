@@ -17,6 +17,7 @@ void main() {
     vec3 n = gbufferNormal(px);
     vec4 as = gbufferAlbedoSpec(px);
     vec3 color = uAmbient * as.rgb;
+    color += shadeGlobalLights(pos, n, as.rgb, as.a);  // directional lights: no volume, every pixel
     for (int i = 0; i < uLightCount; ++i) {
         // Distance test on the first texel alone: most lights are out of reach of most pixels.
         vec4 pr = texelFetch(uLights, i * 4);

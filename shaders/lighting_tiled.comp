@@ -42,13 +42,16 @@ shared uint sMaxDepthBits;
 // Whether light `index` may reach a surface of the tile: its sphere reaches the tile's depth range
 // and lies on the inner side of (or crosses) the four side planes. The one culling test of this
 // pass (the binned and the every-light paths both call it).
-bool lightTouchesTile(int index, float minDepth, float maxDepth, vec3 left, vec3 right, vec3 bottom, vec3 top) {
+bool lightTouchesTile(int index, float minDepth, float maxDepth, vec3 left, vec3 right, vec3 bottom, vec3 top,
+                      vec3 tileCentre, float tileRadius) {
     vec4 positionRadius = texelFetch(uLights, index * 4);
     float r = positionRadius.w;
     vec3 c = (uView * vec4(positionRadius.xyz, 1.0)).xyz;
     float depth = -c.z;
-    return r > 0.0 && depth + r >= minDepth && depth - r <= maxDepth && dot(left, c) >= -r && dot(right, c) >= -r &&
-           dot(bottom, c) >= -r && dot(top, c) >= -r;
+    bool touches = r > 0.0 && depth + r >= minDepth && depth - r <= maxDepth && dot(left, c) >= -r &&
+                   dot(right, c) >= -r && dot(bottom, c) >= -r && dot(top, c) >= -r;
+    // Spots: then the cone against a sphere around the tile's frustum between its depth bounds.
+    return touches && coneMayTouchSphere(index, mat3(uView), c, tileCentre, tileRadius);
 }
 
 // Adds light `index` at the pixel: lights in the tile's list that miss this pixel's surface cost
@@ -97,6 +100,15 @@ void main() {
     // Four named planes rather than an array: llvmpipe spills indexed arrays to memory.
     vec3 left = sidePlane(bl, tl, centre).xyz, right = sidePlane(br, tr, centre).xyz;
     vec3 bottom = sidePlane(bl, br, centre).xyz, top = sidePlane(tl, tr, centre).xyz;
+    // A sphere around the tile's frustum between its depth bounds, for the spot lights' cone test:
+    // the far corners scaled to each bound (view depth d: corner * d / the far plane's depth).
+    float farDepth = -bl.z;
+    vec3 tileCentre = (bl + br + tl + tr) * 0.25 * ((minDepth + maxDepth) * 0.5 / farDepth);
+    float tileRadius = 0.0;
+    for (int k = 0; k < 8; ++k) {
+        vec3 corner = (k & 3) == 0 ? bl : (k & 3) == 1 ? br : (k & 3) == 2 ? tl : tr;
+        tileRadius = max(tileRadius, distance(tileCentre, corner * ((k < 4 ? minDepth : maxDepth) / farDepth)));
+    }
 
     vec3 n = vec3(0.0);
     vec4 as = vec4(0.0);
@@ -105,6 +117,7 @@ void main() {
         as = gbufferAlbedoSpec(px);
     }
     vec3 color = uAmbient * as.rgb;
+    if (geometry) color += shadeGlobalLights(pos, n, as.rgb, as.a);  // directional: in no tile list
     float lit = 0.0;
     uint tileCount = 0u;
     int tile = int(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x);
@@ -113,7 +126,7 @@ void main() {
         // --- light list: the tile's candidates, each invocation testing every 256th ---
         for (int k = int(local); k < binned; k += 256) {
             int index = binnedLight(tile, k);
-            if (lightTouchesTile(index, minDepth, maxDepth, left, right, bottom, top)) keepLight(index);
+            if (lightTouchesTile(index, minDepth, maxDepth, left, right, bottom, top, tileCentre, tileRadius)) keepLight(index);
         }
         int kept = sortKeptLights();
         tileCount = uint(kept);
@@ -130,7 +143,7 @@ void main() {
 
         // --- light list: every invocation tests every 256th light of the chunk ---
         for (int i = int(local); i < chunk; i += 256)
-            if (lightTouchesTile(base + i, minDepth, maxDepth, left, right, bottom, top))
+            if (lightTouchesTile(base + i, minDepth, maxDepth, left, right, bottom, top, tileCentre, tileRadius))
                 atomicOr(sLightMask[i >> 5], 1u << uint(i & 31));
         memoryBarrierShared();
         barrier();

@@ -1,4 +1,5 @@
 // glTF files as they come, on the CPU: strips and fans, Draco, texture transforms, TEXCOORD_1 and cameras.
+#include "core/light_math.h"
 #include "gltf/geometry.h"
 #include "gltf/loader.h"
 #include "gltf/mapping.h"
@@ -393,4 +394,55 @@ TEST(GltfCameras, TheDuckModelsCameraIsOffered) {
     // It looks at the duck: the direction to the scene's centre is within its half field of view.
     glm::vec3 const toCentre = glm::normalize(r.scene->bounds().center() - cam.position);
     EXPECT_GT(glm::dot(toCentre, cam.forward()), std::cos(glm::radians(cam.fovYDegrees * 0.5f)));
+}
+
+// --- KHR_lights_punctual spot and directional lights ---------------------------------------------
+
+TEST(GltfLightKinds, SpotAndDirectionalLightsLoadAsSuchAlongTheirNodesMinusZ) {
+    test::HandmadeGltf g;
+    g.meshNode(json::array({{{"attributes", {{"POSITION", g.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3")}}}}}));
+    g.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    g.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
+        {{"type", "spot"},
+         {"name", "down"},
+         {"intensity", 3.14159265},
+         {"range", 6},
+         {"spot", {{"innerConeAngle", 0.2617993878}, {"outerConeAngle", 0.5235987756}}}},
+        {{"type", "spot"}, {"spot", json::object()}},  // KHR defaults: inner 0, outer pi/4
+        {{"type", "directional"}, {"intensity", 2.0}, {"color", {1.0, 0.5, 0.25}}},
+        {{"type", "spot"}, {"spot", {{"innerConeAngle", 0.6}, {"outerConeAngle", 0.5}}}},  // inner > outer
+    };
+    // -90 degrees about X turns -Z to -Y (down); +90 about Y turns -Z to -X.
+    float const h = std::sqrt(0.5f);
+    auto lightNode = [&](int light, json rotation) {
+        g.node({{"translation", {0, 4, 0}},
+                {"rotation", rotation},
+                {"extensions", {{"KHR_lights_punctual", {{"light", light}}}}}});
+    };
+    lightNode(0, {-h, 0, 0, h});
+    lightNode(1, {0, 0, 0, 1});
+    lightNode(2, {0, h, 0, h});
+    lightNode(3, {0, 0, 0, 1});
+    SceneData const s = loadOk(g.bytes(), "light_kinds.gltf");
+    ASSERT_EQ(s.lights.size(), 3u);
+    PointLight const& down = s.lights[0];
+    EXPECT_EQ(down.kind, LightKind::Spot);
+    EXPECT_EQ(down.name, "down");
+    EXPECT_NEAR(glm::distance(down.direction, glm::vec3(0, -1, 0)), 0.0f, 1e-5f);
+    EXPECT_NEAR(down.innerConeDeg, 15.0f, 1e-4f);
+    EXPECT_NEAR(down.outerConeDeg, 30.0f, 1e-4f);
+    EXPECT_NEAR(down.intensity, 1.0f, 1e-5f);            // candela / pi, as for points
+    EXPECT_NEAR(lightRadius(down).radius, 6.0f, 1e-3f);  // the range, as for points
+    PointLight const& plain = s.lights[1];
+    EXPECT_EQ(plain.kind, LightKind::Spot);
+    EXPECT_NEAR(glm::distance(plain.direction, glm::vec3(0, 0, -1)), 0.0f, 1e-6f);
+    EXPECT_EQ(plain.innerConeDeg, 0.0f);
+    EXPECT_NEAR(plain.outerConeDeg, 45.0f, 1e-4f);
+    PointLight const& sun = s.lights[2];
+    EXPECT_EQ(sun.kind, LightKind::Directional);
+    EXPECT_NEAR(glm::distance(sun.direction, glm::vec3(-1, 0, 0)), 0.0f, 1e-5f);
+    EXPECT_NEAR(sun.intensity, 2.0f / 3.14159265f, 1e-5f);  // lux / pi
+    EXPECT_EQ(sun.color, glm::vec3(1.0f, 0.5f, 0.25f));
+    EXPECT_TRUE(hasWarning(s, "light 3 is skipped because its spot cone is unusable"));
+    EXPECT_TRUE(hasWarning(s, "inner_cone_deg must not exceed outer_cone_deg"));
 }

@@ -322,8 +322,7 @@ TEST(GltfLoader, EmbeddedTexturesDecodeExactlyAndNormalMapsGetTangents) {
 
 TEST(GltfLoader, PunctualLightsMapRangeAndIntensity) {
     SceneData const s = loadOk(localFile("lights.gltf"));
-    ASSERT_EQ(s.lights.size(), 2u) << "two point lights; the directional one is skipped";
-    EXPECT_TRUE(hasWarning(s, "directional"));
+    ASSERT_EQ(s.lights.size(), 3u) << "two point lights and a directional one";
     PointLight const& ranged = s.lights[0];
     EXPECT_EQ(ranged.name, "ranged");
     EXPECT_EQ(ranged.position, glm::vec3(1, 2, 3));
@@ -337,6 +336,12 @@ TEST(GltfLoader, PunctualLightsMapRangeAndIntensity) {
     EXPECT_EQ(unranged.kq, 1.0f);
     // Inverse square: Imax / (1 + d^2) = 5/256 at d = sqrt(51.2 - 1).
     EXPECT_NEAR(lightRadius(unranged).radius, std::sqrt(51.2f - 1.0f), 1e-3f);
+    EXPECT_EQ(unranged.kind, LightKind::Point);
+    // Directional: 2 lux / pi, along its (identity) node's -Z; no radius of its own.
+    PointLight const& sun = s.lights[2];
+    EXPECT_EQ(sun.kind, LightKind::Directional);
+    EXPECT_NEAR(sun.intensity, 2.0f / 3.14159265f, 1e-5f);
+    EXPECT_NEAR(glm::distance(sun.direction, glm::vec3(0, 0, -1)), 0.0f, 1e-6f);
     // KHR_materials_specular 0.5 on a smooth dielectric halves our default 0.5.
     ASSERT_EQ(s.materials.size(), 1u);
     EXPECT_FLOAT_EQ(s.materials[0].specularFactor, 0.25f);

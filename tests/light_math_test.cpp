@@ -1,5 +1,6 @@
 // Light radius and attenuation against hand-computed values.
 #include "core/light_math.h"
+#include "core/shading_cpu.h"
 
 #include <gtest/gtest.h>
 
@@ -189,15 +190,16 @@ TEST(LightFields, TheTableCoversEveryNumberOfPointLightOnce) {
     // Fails to compile when PointLight gains or loses a member: then give a new number an entry
     // in kLightFields (core/point_light.h) and add the member here. (A sizeof check would miss a
     // float or bool that fits in the padding before `name`; a structured binding misses nothing.)
-    auto& [position, color, intensity, kc, kl, kq, threshold, name] = probe;
+    auto& [kind, position, color, intensity, kc, kl, kq, threshold, direction, innerConeDeg, outerConeDeg, name] =
+        probe;
     // Each numeric member's floats, to check that every entry edits exactly one float of one member.
     struct Member {
         float const* first;
         int floats;
         int covered = 0;
     };
-    Member members[] = {{&position.x, 3}, {&color.r, 3}, {&intensity, 1}, {&kc, 1},
-                        {&kl, 1},         {&kq, 1},      {&threshold, 1}};
+    Member members[] = {{&position.x, 3}, {&color.r, 3},   {&intensity, 1},   {&kc, 1},           {&kl, 1},
+                        {&kq, 1},         {&threshold, 1}, {&direction.x, 3}, {&innerConeDeg, 1}, {&outerConeDeg, 1}};
     for (LightField const& f : kLightFields) {
         PointLight edited = base;
         f.of(edited) += 1.0f;
@@ -214,14 +216,24 @@ TEST(LightFields, TheTableCoversEveryNumberOfPointLightOnce) {
             hit = i;
         }
         EXPECT_EQ(hits, 1) << f.name;
-        // Position (member 0) need only be finite; every other number must also be >= 0.
+        // Position (member 0) need only be finite, direction (7) finite and not all zero, the cone
+        // angles (8, 9) in degrees; every other number must be >= 0.
         EXPECT_EQ(f.range == LightFieldRange::Finite, hit == 0) << f.name;
+        EXPECT_EQ(f.range == LightFieldRange::Direction, hit == 7) << f.name;
+        EXPECT_EQ(f.range == LightFieldRange::ConeAngle, hit == 8 || hit == 9) << f.name;
     }
-    // Every float of every numeric member has exactly one entry (11 in all).
+    // Every float of every numeric member has exactly one entry (16 in all).
     for (Member const& m : members) EXPECT_EQ(m.covered, m.floats);
     EXPECT_EQ(findLightField("name"), nullptr);  // the name is text, edited in the panel only
+    EXPECT_EQ(findLightField("kind"), nullptr);  // the kind is a name: `light I kind spot`, the panel's combo
     name = "other";
     EXPECT_FALSE(probe == base);
+    probe = base;
+    kind = LightKind::Spot;
+    EXPECT_FALSE(probe == base);
+    for (std::size_t i = 0; i < kLightKindNames.size(); ++i)
+        EXPECT_EQ(findLightKind(kLightKindNames[i]), static_cast<LightKind>(i));
+    EXPECT_EQ(findLightKind("area"), std::nullopt);
 }
 
 TEST(LightFields, ValidateLightChecksEveryEntry) {
@@ -235,7 +247,9 @@ TEST(LightFields, ValidateLightChecksEveryEntry) {
         std::string const expected = f.range == LightFieldRange::Finite ? "position" : std::string(f.label);
         EXPECT_NE(msg->find(expected), std::string::npos) << *msg;
         f.of(l) = -1.0f;
-        EXPECT_EQ(validateLight(l).has_value(), f.range == LightFieldRange::NonNegative) << f.name;
+        // -1 is fine for a position or a direction component, not for the others.
+        bool const signedOk = f.range == LightFieldRange::Finite || f.range == LightFieldRange::Direction;
+        EXPECT_EQ(validateLight(l).has_value(), !signedOk) << f.name;
     }
 }
 
@@ -317,4 +331,111 @@ TEST(LightRadius, ScalingTheFalloffScalesTheRadius) {
     // Linear falloff too: (51.2 * 3 - 1) / 0.7 = 218.0 -> 54.5 at a quarter.
     PointLight const lin = scaleLightFalloff(makeLight(3.0f, 1.0f, 0.7f, 0.0f), 0.25f);
     EXPECT_NEAR(lightRadius(lin).radius, (51.2 * 3 - 1) / 0.7 * 0.25, 1e-2);
+}
+
+// --- light kinds ---------------------------------------------------------------------------------
+
+TEST(LightKinds, ValidateRefusesAZeroDirectionAndBadConesNamingTheField) {
+    PointLight l = makeLight(1.0f, 1.0f, 0.7f, 1.8f);
+    l.kind = LightKind::Spot;
+    EXPECT_FALSE(validateLight(l).has_value());
+    l.direction = glm::vec3(0.0f);
+    ASSERT_TRUE(validateLight(l).has_value());
+    EXPECT_NE(validateLight(l)->find("direction"), std::string::npos) << *validateLight(l);
+    l = makeLight(1.0f, 1.0f, 0.7f, 1.8f);
+    l.innerConeDeg = 30.0f;
+    l.outerConeDeg = 20.0f;
+    ASSERT_TRUE(validateLight(l).has_value());
+    EXPECT_NE(validateLight(l)->find("inner_cone_deg must not exceed outer_cone_deg"), std::string::npos);
+    l.innerConeDeg = 0.0f;
+    l.outerConeDeg = 0.0f;
+    ASSERT_TRUE(validateLight(l).has_value());
+    EXPECT_NE(validateLight(l)->find("outer_cone_deg"), std::string::npos);
+    l.outerConeDeg = 91.0f;
+    ASSERT_TRUE(validateLight(l).has_value());
+    EXPECT_NE(validateLight(l)->find("outer_cone_deg"), std::string::npos);
+    l.outerConeDeg = 90.0f;  // KHR_lights_punctual's widest
+    EXPECT_FALSE(validateLight(l).has_value());
+}
+
+TEST(LightKinds, ConeFactorIsOneInsideZeroOutsideAndSquaredBetween) {
+    PointLight l = makeLight(1.0f, 1.0f, 0.7f, 1.8f);
+    l.kind = LightKind::Spot;
+    l.innerConeDeg = 20.0f;
+    l.outerConeDeg = 40.0f;
+    SpotCone const c = spotCone(l);
+    float const ci = std::cos(glm::radians(20.0f)), co = std::cos(glm::radians(40.0f));
+    EXPECT_FLOAT_EQ(c.cosOuter, co);
+    EXPECT_FLOAT_EQ(c.scale, 1.0f / (ci - co));
+    EXPECT_EQ(spotConeFactor(c, 1.0f), 1.0f);
+    EXPECT_EQ(spotConeFactor(c, std::cos(glm::radians(10.0f))), 1.0f);
+    EXPECT_EQ(spotConeFactor(c, std::cos(glm::radians(41.0f))), 0.0f);
+    EXPECT_EQ(spotConeFactor(c, -1.0f), 0.0f);
+    // Halfway in cosine: t = 0.5, factor 0.25 (the square of KHR_lights_punctual's sample code).
+    EXPECT_NEAR(spotConeFactor(c, 0.5f * (ci + co)), 0.25f, 1e-5f);
+    // Point and directional lights have no cone: 1 at every angle, even straight behind.
+    l.kind = LightKind::Point;
+    EXPECT_EQ(spotConeFactor(spotCone(l), -1.0f), 1.0f);
+    // inner == outer: a hard edge, no division by zero.
+    l.kind = LightKind::Spot;
+    l.innerConeDeg = l.outerConeDeg = 30.0f;
+    SpotCone const hard = spotCone(l);
+    EXPECT_TRUE(std::isfinite(hard.scale));
+    EXPECT_EQ(spotConeFactor(hard, std::cos(glm::radians(29.0f))), 1.0f);
+    EXPECT_EQ(spotConeFactor(hard, std::cos(glm::radians(31.0f))), 0.0f);
+}
+
+TEST(LightKinds, CpuShadingOfEachKindMatchesHandComputedValues) {
+    ShadingInputs s;
+    s.position = glm::vec3(0.0f);
+    s.normal = glm::vec3(0.0f, 1.0f, 0.0f);
+    s.albedo = glm::vec3(0.5f);
+    s.specular = 0.0f;  // diffuse only: N.L is all there is to check
+    s.viewPosition = glm::vec3(0.0f, 5.0f, 5.0f);
+    // Directional, straight down at a surface facing up: N.L = 1, no attenuation, wherever it is.
+    PointLight sun = makeLight(2.0f, 1.0f, 0.7f, 1.8f);
+    sun.kind = LightKind::Directional;
+    sun.position = glm::vec3(1e4f);
+    sun.direction = glm::vec3(0.0f, -3.0f, 0.0f);  // not unit: normalised when shading
+    LightContribution c = shadeLightCpu(sun, s);
+    EXPECT_EQ(c.attenuation, 1.0f);
+    EXPECT_NEAR(c.diffuse.r, 0.5f * 2.0f, 1e-6f);
+    // At 60 degrees, N.L = 0.5.
+    sun.direction = glm::vec3(std::sin(glm::radians(60.0f)), -std::cos(glm::radians(60.0f)), 0.0f);
+    EXPECT_NEAR(shadeLightCpu(sun, s).diffuse.r, 0.5f * 2.0f * 0.5f, 1e-6f);
+    // Shining from below: nothing.
+    sun.direction = glm::vec3(0.0f, 1.0f, 0.0f);
+    EXPECT_EQ(shadeLightCpu(sun, s).total(), glm::vec3(0.0f));
+
+    // A spot one unit above, pointing down: on its axis it equals the point light.
+    PointLight spot = makeLight(1.0f, 1.0f, 0.7f, 1.8f);
+    spot.position = glm::vec3(0.0f, 1.0f, 0.0f);
+    PointLight const point = spot;
+    spot.kind = LightKind::Spot;
+    spot.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    spot.innerConeDeg = 20.0f;
+    spot.outerConeDeg = 30.0f;
+    EXPECT_EQ(shadeLightCpu(spot, s).total(), shadeLightCpu(point, s).total());
+    EXPECT_EQ(shadeLightCpu(spot, s).cone, 1.0f);
+    // A point 45 degrees off the axis is outside the 30-degree cone: dark, though the point light
+    // reaches it.
+    s.position = glm::vec3(1.0f, 0.0f, 0.0f);
+    ASSERT_GT(shadeLightCpu(point, s).total().r, 0.0f);
+    EXPECT_EQ(shadeLightCpu(spot, s).total(), glm::vec3(0.0f));
+    EXPECT_FALSE(shadeLightCpu(spot, s).reaches());
+    // 25 degrees: halfway between inner and outer in angle; the factor is the square of the
+    // cosine ratio, times the point light's value.
+    s.position = glm::vec3(std::tan(glm::radians(25.0f)), 0.0f, 0.0f);
+    float const t = (std::cos(glm::radians(25.0f)) - std::cos(glm::radians(30.0f))) /
+                    (std::cos(glm::radians(20.0f)) - std::cos(glm::radians(30.0f)));
+    LightContribution const half = shadeLightCpu(spot, s);
+    EXPECT_NEAR(half.cone, t * t, 1e-5f);
+    EXPECT_NEAR(half.total().r, shadeLightCpu(point, s).total().r * t * t, 1e-6f);
+    // shadePointCpu lists only the lights that reach the point.
+    std::vector<LightContribution> list;
+    PointLight const lights[] = {spot, point};
+    s.position = glm::vec3(1.0f, 0.0f, 0.0f);
+    shadePointCpu(lights, s, glm::vec3(0.0f), &list);
+    ASSERT_EQ(list.size(), 1u);
+    EXPECT_EQ(list[0].lightIndex, 1);
 }

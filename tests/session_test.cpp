@@ -43,6 +43,13 @@ Session richSession() {
         l.kq = i == 4 ? 0.0f : 0.017f * float(i + 1);
         l.threshold = 5.0f / 256.0f;
         l.name = i == 2 ? "lämp \"two\"\n" : "light " + std::to_string(i);
+        // One of each kind beyond points, with every kind field off its default.
+        if (i == 1 || i == 3) {
+            l.kind = i == 1 ? LightKind::Spot : LightKind::Directional;
+            l.direction = {0.1f * float(i), -1.0f / 3.0f, 0.7071068f};
+            l.innerConeDeg = 12.345f;
+            l.outerConeDeg = 33.3f;
+        }
         s.lights.push_back(l);
     }
     s.pipeline.mode = LightingMode::Volumes;
@@ -118,6 +125,10 @@ void expectEqual(Session const& a, Session const& b) {
         expectSame(x.kl, y.kl, at + "kl");
         expectSame(x.kq, y.kq, at + "kq");
         expectSame(x.threshold, y.threshold, at + "threshold");
+        EXPECT_EQ(x.kind, y.kind) << at << "kind";
+        expectSame(x.direction, y.direction, at + "direction");
+        expectSame(x.innerConeDeg, y.innerConeDeg, at + "inner_cone_deg");
+        expectSame(x.outerConeDeg, y.outerConeDeg, at + "outer_cone_deg");
         EXPECT_EQ(x.name, y.name);
     }
     PipelineSettings const &p = a.pipeline, &q = b.pipeline;
@@ -232,6 +243,23 @@ TEST(Session, LightNameIsOptional) {
     EXPECT_EQ(back.session->lights[0].name, "");
 }
 
+TEST(Session, LightKindsAreSavedAndOldFilesLoadAsPoints) {
+    json j = json::parse(sessionToJson(richSession()));
+    EXPECT_EQ(j["lights"][1]["kind"], "spot");
+    EXPECT_EQ(j["lights"][3]["kind"], "directional");
+    EXPECT_EQ(j["lights"][0]["kind"], "point");
+    // A file written before light kinds has none of the four fields.
+    for (auto& l : j["lights"])
+        for (char const* f : {"kind", "direction", "inner_cone_deg", "outer_cone_deg"}) l.erase(f);
+    SessionLoad const old = parseSession(j.dump(), "s.json");
+    ASSERT_TRUE(old.session) << old.error;
+    for (PointLight const& l : old.session->lights) {
+        EXPECT_EQ(l.kind, LightKind::Point);
+        EXPECT_EQ(l.direction, PointLight{}.direction);
+        EXPECT_EQ(l.outerConeDeg, PointLight{}.outerConeDeg);
+    }
+}
+
 TEST(Session, ViewerToolsAreWrittenByName) {
     json const j = json::parse(sessionToJson(richSession()));
     json const& depth = j["viewers"]["depth"]["tools"];
@@ -341,6 +369,23 @@ TEST(Session, EveryKindOfBadFieldGetsOneMessageNamingIt) {
              j["lights"][2]["kq"] = 0;
          },
          "s.json: lights[2]: light attenuation Kc, Kl and Kq cannot all be 0 (infinite brightness at the light)"},
+        {"unknown light kind", [](json& j) { j["lights"][0]["kind"] = "area"; },
+         "s.json: lights[0].kind must be one of point, spot or directional (got \"area\")"},
+        {"zero direction",
+         [](json& j) {
+             j["lights"][1]["direction"] = {0, 0, 0};
+         },
+         "s.json: lights[1].direction must not be the zero vector"},
+        {"non-finite direction", [](json& j) { j["lights"][1]["direction"][2] = nullptr; },
+         "s.json: lights[1].direction[2] must be a finite number (got null)"},
+        {"cone past 90 degrees", [](json& j) { j["lights"][1]["outer_cone_deg"] = 120; },
+         "s.json: lights[1].outer_cone_deg must be between 0 and 90 (got 120)"},
+        {"inner wider than outer",
+         [](json& j) {
+             j["lights"][1]["inner_cone_deg"] = 40;
+             j["lights"][1]["outer_cone_deg"] = 30;
+         },
+         "s.json: lights[1]: light parameter inner_cone_deg must not exceed outer_cone_deg (40.000000 > 30.000000)"},
         {"negative exposure", [](json& j) { j["pipeline"]["exposure"] = -1; },
          "s.json: pipeline.exposure must be a finite number > 0 (got -1)"},
         // out of range

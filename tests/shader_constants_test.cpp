@@ -2,6 +2,7 @@
 // shaders/bindings.glsl, and the program table's order.
 #include "core/cluster_math.h"
 #include "core/pipeline_settings.h"
+#include "core/point_light.h"
 #include "core/view_params.h"
 #include "gl/program_id.h"
 #include "gl/shader_bindings.h"
@@ -76,6 +77,12 @@ TEST(ShaderConstants, ViewConstantsMatchTheEnums) {
     EXPECT_EQ(overlays, cpp);
     ASSERT_EQ(all.count("SLICE_SWATCH"), 1u);
     EXPECT_EQ(all.at("SLICE_SWATCH"), kSliceSwatchTexels);
+}
+
+TEST(ShaderConstants, DirectionalLightLimitMatchesTheShader) {
+    auto const all = defines("light_fetch.glsl");
+    ASSERT_EQ(all.count("MAX_DIRECTIONAL_LIGHTS"), 1u);
+    EXPECT_EQ(all.at("MAX_DIRECTIONAL_LIGHTS"), kMaxDirectionalLights);
 }
 
 TEST(ShaderConstants, ViewShaderTakesItsConstantsFromTheSharedFile) {

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace gbl;
 using namespace gbl::ui;
 
@@ -40,4 +42,29 @@ TEST(UiAttenuationPlot, LightBelowThresholdHasAnAxisButNoRadius) {
     EXPECT_EQ(c.radius, 0.0f);
     EXPECT_GT(c.maxDistance, 0.0f);
     for (float v : c.applied) EXPECT_EQ(v, 0.0f);
+}
+
+TEST(UiAttenuationPlot, TheConePlotIsTheSpotsFactorFromOneToZero) {
+    PointLight light;
+    light.kind = LightKind::Spot;
+    light.innerConeDeg = 20.0f;
+    light.outerConeDeg = 40.0f;
+    ConeCurve const c = sampleConeCurve(light, 101);
+    ASSERT_EQ(c.degrees.size(), 101u);
+    EXPECT_FLOAT_EQ(c.maxDegrees, 50.0f);  // a quarter past the outer angle
+    for (std::size_t i = 0; i < c.degrees.size(); ++i) {
+        float const a = c.degrees[i];
+        EXPECT_EQ(c.factor[i], spotConeFactor(spotCone(light), std::cos(glm::radians(a))));
+        if (a < 20.0f) {
+            EXPECT_EQ(c.factor[i], 1.0f) << a;
+        }
+        if (a > 40.0f) {
+            EXPECT_EQ(c.factor[i], 0.0f) << a;
+        }
+        if (i > 0) {
+            EXPECT_LE(c.factor[i], c.factor[i - 1]);  // never brighter further off the axis
+        }
+    }
+    EXPECT_GT(c.factor[60], 0.0f);  // 30 degrees: between inner and outer
+    EXPECT_LT(c.factor[60], 1.0f);
 }

@@ -241,3 +241,52 @@ TEST(StoredValueCheck, NamesTooSmallVolumesOverlaysAndForward) {
     s.mode = LightingMode::Quad;
     EXPECT_EQ(noBreakdownNote(none, s), "background: no surface, no lights");
 }
+
+TEST(WhyValue, DirectionalLightsAreAddedOnceInEveryMode) {
+    Frame const f;
+    PointLight sun;
+    sun.kind = LightKind::Directional;
+    sun.direction = {0.0f, 0.0f, -1.0f};  // straight at the wall
+    sun.position = {100.0f, 0.0f, 0.0f};  // far from everything: no radius applies
+    PointLight const lights[] = {sun};
+    for (LightingMode mode : {LightingMode::Quad, LightingMode::Volumes, LightingMode::Tiled, LightingMode::Clustered,
+                              LightingMode::Forward}) {
+        auto const v = explainPixel(f.input(mode, CullMode::Back), lights);
+        ASSERT_EQ(v.size(), 1u);
+        EXPECT_TRUE(v[0].evaluated);
+        EXPECT_EQ(v[0].evaluations, 1);
+        EXPECT_TRUE(startsWith(v[0].why, "directional")) << v[0].why;
+        // N.L = 1: albedo 0.8 times intensity 1, plus the highlight.
+        EXPECT_GE(v[0].added.r, 0.8f - 1e-6f);
+        EXPECT_EQ(v[0].added, f.shaded(sun));
+    }
+}
+
+TEST(WhyValue, ASpotsConeVolumeIsWhatTheVolumesPassDraws) {
+    Frame const f;
+    // A spot 4 units in front of the wall and 1 above the pixel's ray, pointing at the wall with
+    // a 20-degree cone (the pixel is 14 degrees off its axis); radius about 5.1.
+    PointLight spot = light({0.0f, 1.0f, -6.0f});
+    spot.kind = LightKind::Spot;
+    spot.direction = {0.0f, 0.0f, -1.0f};
+    spot.innerConeDeg = 10.0f;
+    spot.outerConeDeg = 20.0f;
+    PointLight const lights[] = {spot};
+    auto v = explainPixel(f.input(LightingMode::Volumes, CullMode::Back), lights);
+    ASSERT_EQ(v.size(), 1u);
+    EXPECT_TRUE(v[0].evaluated) << v[0].why;
+    EXPECT_EQ(v[0].why, "front face in front of the surface");
+    EXPECT_NEAR(v[0].added.r, f.shaded(spot).r, 1e-6f);
+    EXPECT_GT(v[0].added.r, 0.0f);
+    EXPECT_LT(v[0].added.r, f.shaded(light({0.0f, 1.0f, -6.0f})).r);  // the cone's soft edge dims it
+    // Turned away from the wall: the pixel is inside the sphere but outside the cone's mesh.
+    spot.direction = {1.0f, 0.0f, 0.0f};
+    PointLight const aside[] = {spot};
+    v = explainPixel(f.input(LightingMode::Volumes, CullMode::Back), aside);
+    EXPECT_TRUE(v[0].withinRadius);
+    EXPECT_FALSE(v[0].evaluated);
+    EXPECT_EQ(v[0].why, "not evaluated: pixel outside the volume's footprint (it would have reached the pixel)");
+    // Tiled and clustered cull it by its cone too; it would add nothing here anyway.
+    EXPECT_FALSE(explainPixel(f.input(LightingMode::Tiled), aside)[0].evaluated);
+    EXPECT_EQ(f.shaded(spot), glm::vec3(0.0f));
+}

@@ -21,6 +21,20 @@ std::optional<std::string> validateLight(PointLight const& light) {
     }
     for (LightField const& f : kLightFields)
         if (f.range == LightFieldRange::Finite && !std::isfinite(f.of(light))) return "light position must be finite";
+    for (LightField const& f : kLightFields) {
+        float const v = f.of(light);
+        if (f.range == LightFieldRange::Direction && !std::isfinite(v))
+            return std::string("light parameter ") + std::string(f.label) + " must be finite (got " +
+                   std::to_string(v) + ")";
+        if (f.range == LightFieldRange::ConeAngle && !(v >= 0.0f && v <= kMaxSpotConeDeg))
+            return std::string("light parameter ") + std::string(f.label) + " must be a number of degrees in [0, " +
+                   std::to_string(int(kMaxSpotConeDeg)) + "] (got " + std::to_string(v) + ")";
+    }
+    if (glm::dot(light.direction, light.direction) <= 0.0f) return "light direction must not be the zero vector";
+    if (light.innerConeDeg > light.outerConeDeg)
+        return "light parameter inner_cone_deg must not exceed outer_cone_deg (" + std::to_string(light.innerConeDeg) +
+               " > " + std::to_string(light.outerConeDeg) + ")";
+    if (light.outerConeDeg <= 0.0f) return "light parameter outer_cone_deg must be greater than 0";
     if (light.threshold <= 0.0f) return "light threshold must be greater than 0";
     if (light.kc <= 0.0f && light.kl <= 0.0f && light.kq <= 0.0f)
         return "light attenuation Kc, Kl and Kq cannot all be 0 (infinite brightness at the light)";
@@ -52,6 +66,13 @@ LightRadius solveLightRadius(float imax, float kc, float kl, float kq, float thr
 LightRadius lightRadius(PointLight const& light) {
     if (validateLight(light)) return {0.0f, RadiusKind::Zero};
     return solveLightRadius(lightImax(light), light.kc, light.kl, light.kq, light.threshold);
+}
+
+SpotCone spotCone(PointLight const& light) {
+    if (light.kind != LightKind::Spot) return {};
+    float const cosOuter = std::cos(glm::radians(light.outerConeDeg));
+    float const cosInner = std::cos(glm::radians(light.innerConeDeg));
+    return {cosOuter, 1.0f / std::max(cosInner - cosOuter, kSpotMinCosDelta)};
 }
 
 float attenuationCutoff(PointLight const& light, float radius) {

@@ -37,6 +37,38 @@ inline float attenuation(float kc, float kl, float kq, float d) {
     return 1.0f / (kc + kl * d + kq * d * d);
 }
 
+// Point and spot lights are local (a radius, a volume, tile lists); directional lights are global:
+// every mode shades them in its full-screen loop (docs/lighting.md, "Light kinds").
+inline bool isLocalLight(PointLight const& light) {
+    return light.kind != LightKind::Directional;
+}
+
+// Unit vector from a surface towards a directional light, or along which a spot shines.
+inline glm::vec3 lightDirection(PointLight const& light) {
+    return glm::normalize(light.direction);
+}
+
+// Smallest cos(inner) - cos(outer) the cone factor divides by: inner == outer gives a hard edge
+// instead of a division by zero.
+inline constexpr float kSpotMinCosDelta = 1e-4f;
+
+// The cone of a spot as the shaders take it: factor = saturate((cos(angle) - cosOuter) * scale)^2,
+// scale = 1 / max(cos(inner) - cos(outer), kSpotMinCosDelta). Squared, as KHR_lights_punctual's
+// sample implementation does: the edge fades in smoothly. Other kinds get cosOuter = -2 and
+// scale = 1, which gives 1 for every angle (no cone), with no branch in the shaders.
+struct SpotCone {
+    float cosOuter = -2.0f;
+    float scale = 1.0f;
+};
+SpotCone spotCone(PointLight const& light);
+
+// Cone factor at the angle whose cosine is `cosAngle` (between the spot's axis and the
+// direction from the light to the surface).
+inline float spotConeFactor(SpotCone cone, float cosAngle) {
+    float const t = std::clamp((cosAngle - cone.cosOuter) * cone.scale, 0.0f, 1.0f);
+    return t * t;
+}
+
 // Returns an error sentence when a parameter is NaN, infinite or negative, else nullopt.
 std::optional<std::string> validateLight(PointLight const& light);
 

@@ -1,9 +1,11 @@
-// A point light as the editor, the renderer and session files see it, and the table of its numbers.
+// A light as the editor, the renderer and session files see it (point, spot or directional; the
+// type keeps its historical name), and the table of its numbers.
 #pragma once
 
 #include <glm/glm.hpp>
 
 #include <array>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -15,7 +17,30 @@ inline constexpr float kDefaultLightThreshold = 5.0f / 256.0f;
 // Most lights any scene, session or command accepts; more are refused with this number.
 inline constexpr int kMaxLights = 262144;
 
+// Most directional lights a frame shades (MAX_DIRECTIONAL_LIGHTS in shaders/light_fetch.glsl).
+inline constexpr int kMaxDirectionalLights = 8;
+
+// Widest outer cone of a spot light, in degrees (KHR_lights_punctual allows (0, 90]).
+inline constexpr float kMaxSpotConeDeg = 90.0f;
+
+// What a light is (docs/lighting.md, "Light kinds"):
+//   Point:       position, radius from the attenuation, every direction.
+//   Spot:        a point light times the cone factor of `direction`, innerConeDeg, outerConeDeg.
+//   Directional: `direction` only, no attenuation and no radius: lights every pixel, shaded by
+//                the full-screen global-lights loop of every mode (position is only where the
+//                viewport draws its arrow).
+enum class LightKind { Point, Spot, Directional };
+
+// Names in session files, lights.json, the UI script and the panel, in enum order.
+inline constexpr std::array<std::string_view, 3> kLightKindNames{"point", "spot", "directional"};
+
+inline std::string_view lightKindName(LightKind k) {
+    auto const i = static_cast<std::size_t>(k);
+    return i < kLightKindNames.size() ? kLightKindNames[i] : std::string_view("?");
+}
+
 struct PointLight {
+    LightKind kind = LightKind::Point;
     glm::vec3 position{0.0f};
     glm::vec3 color{1.0f};   // linear RGB, 0..1 per channel
     float intensity = 1.0f;  // multiplies color; Imax = intensity * max(color)
@@ -23,6 +48,12 @@ struct PointLight {
     float kl = 0.7f;         // linear attenuation term
     float kq = 1.8f;         // quadratic attenuation term
     float threshold = kDefaultLightThreshold;
+    // Where a spot or directional light shines (need not be unit length; must not be zero).
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};
+    // Spot cone half-angles in degrees from `direction`: full light inside inner, none outside
+    // outer; 0 <= inner <= outer <= kMaxSpotConeDeg, outer > 0 (KHR_lights_punctual's defaults).
+    float innerConeDeg = 0.0f;
+    float outerConeDeg = 45.0f;
     std::string name;
 
     // Every member, floats compared with ==: exactly what undo's "did this edit change anything"
@@ -35,11 +66,13 @@ struct PointLight {
 enum class LightFieldRange {
     Finite,       // any finite value (position)
     NonNegative,  // finite and >= 0 (colour, intensity, attenuation, threshold)
+    Direction,    // finite; the three together must not be the zero vector
+    ConeAngle,    // degrees in [0, kMaxSpotConeDeg]; also inner <= outer and outer > 0
 };
 
 // One editable number of a light: a float member or one component of a vec3 member.
 struct LightField {
-    std::string_view name;   // the UI script's name: x y z r g b intensity kc kl kq threshold
+    std::string_view name;   // the UI script's name: x y z r g b intensity kc kl kq threshold dx dy dz inner outer
     std::string_view label;  // the name in error sentences: "position.x", "color.r", "Kc"
     LightFieldRange range;
     float PointLight::*scalar = nullptr;
@@ -53,8 +86,9 @@ struct LightField {
 // Every number of PointLight, once: validateLight() checks these and the UI script's `light` and
 // `expect-light` commands read and write them. tests/light_math_test.cpp fails to compile when
 // PointLight gains a member (a structured binding of all members) and fails when an entry does
-// not change the light it edits.
-inline constexpr std::array<LightField, 11> kLightFields{{
+// not change the light it edits. `kind` is not a number: the script's `light N kind NAME` and the
+// panel's combo set it.
+inline constexpr std::array<LightField, 16> kLightFields{{
     {"x", "position.x", LightFieldRange::Finite, nullptr, &PointLight::position, 0},
     {"y", "position.y", LightFieldRange::Finite, nullptr, &PointLight::position, 1},
     {"z", "position.z", LightFieldRange::Finite, nullptr, &PointLight::position, 2},
@@ -66,6 +100,11 @@ inline constexpr std::array<LightField, 11> kLightFields{{
     {"kl", "Kl", LightFieldRange::NonNegative, &PointLight::kl},
     {"kq", "Kq", LightFieldRange::NonNegative, &PointLight::kq},
     {"threshold", "threshold", LightFieldRange::NonNegative, &PointLight::threshold},
+    {"dx", "direction.x", LightFieldRange::Direction, nullptr, &PointLight::direction, 0},
+    {"dy", "direction.y", LightFieldRange::Direction, nullptr, &PointLight::direction, 1},
+    {"dz", "direction.z", LightFieldRange::Direction, nullptr, &PointLight::direction, 2},
+    {"inner", "inner_cone_deg", LightFieldRange::ConeAngle, &PointLight::innerConeDeg},
+    {"outer", "outer_cone_deg", LightFieldRange::ConeAngle, &PointLight::outerConeDeg},
 }};
 
 // The entry of kLightFields called `name`, or nullptr.
@@ -73,6 +112,13 @@ inline LightField const* findLightField(std::string_view name) {
     for (LightField const& f : kLightFields)
         if (f.name == name) return &f;
     return nullptr;
+}
+
+// The kind called `name` ("point", "spot", "directional"), or nullopt.
+inline std::optional<LightKind> findLightKind(std::string_view name) {
+    for (std::size_t i = 0; i < kLightKindNames.size(); ++i)
+        if (kLightKindNames[i] == name) return static_cast<LightKind>(i);
+    return std::nullopt;
 }
 
 }  // namespace gbl

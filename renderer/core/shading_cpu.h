@@ -25,38 +25,51 @@ struct LightContribution {
     int lightIndex = -1;
     float distance = 0.0f;
     float radius = 0.0f;
-    float attenuation = 0.0f;  // windowed, as applied
-    glm::vec3 diffuse{0.0f};   // albedo * N.L * colour * intensity * attenuation
-    glm::vec3 specular{0.0f};  // specular * (N.H)^shininess * colour * intensity * attenuation
+    float attenuation = 0.0f;  // windowed, as applied (1 for directional lights)
+    float cone = 1.0f;         // spot cone factor (1 for point and directional lights)
+    glm::vec3 diffuse{0.0f};   // albedo * N.L * colour * intensity * attenuation * cone
+    glm::vec3 specular{0.0f};  // specular * (N.H)^shininess * colour * intensity * attenuation * cone
+    bool reaches() const { return attenuation > 0.0f && cone > 0.0f; }
     glm::vec3 total() const { return diffuse + specular; }
 };
 
+// Blinn-Phong of one light of any kind (docs/lighting.md): directional lights come from
+// -direction with attenuation 1; spots multiply the point light's terms by the cone factor.
 inline LightContribution shadeLightCpu(PointLight const& light, ShadingInputs const& s) {
     LightContribution c;
-    c.radius = lightRadius(light).radius;
-    glm::vec3 const toLight = light.position - s.position;
-    c.distance = glm::length(toLight);
-    c.attenuation = windowedAttenuation(light, c.radius, c.distance);
-    if (c.attenuation <= 0.0f || c.distance <= 0.0f) return c;
-    glm::vec3 const L = toLight / c.distance;
+    glm::vec3 L;
+    if (light.kind == LightKind::Directional) {
+        if (validateLight(light)) return c;  // an invalid light shades nothing, as lightRadius() says
+        c.attenuation = 1.0f;
+        L = -lightDirection(light);
+    } else {
+        c.radius = lightRadius(light).radius;
+        glm::vec3 const toLight = light.position - s.position;
+        c.distance = glm::length(toLight);
+        c.attenuation = windowedAttenuation(light, c.radius, c.distance);
+        if (c.attenuation <= 0.0f || c.distance <= 0.0f) return c;
+        L = toLight / c.distance;
+        c.cone = spotConeFactor(spotCone(light), glm::dot(-L, lightDirection(light)));
+        if (c.cone <= 0.0f) return c;
+    }
     glm::vec3 const V = glm::normalize(s.viewPosition - s.position);
     glm::vec3 const H = glm::normalize(L + V);
     float const diff = std::max(glm::dot(s.normal, L), 0.0f);
     float const spec = diff > 0.0f ? std::pow(std::max(glm::dot(s.normal, H), 0.0f), s.shininess) : 0.0f;
-    glm::vec3 const radiance = light.color * light.intensity * c.attenuation;
+    glm::vec3 const radiance = light.color * light.intensity * (c.attenuation * c.cone);
     c.diffuse = s.albedo * diff * radiance;
     c.specular = glm::vec3(s.specular * spec) * radiance;
     return c;
 }
 
 // Ambient plus every light that reaches the point; `contributions` (optional) receives the
-// lights with a non-zero attenuation, in list order.
+// lights that reach the point (non-zero attenuation and cone factor), in list order.
 inline glm::vec3 shadePointCpu(std::span<PointLight const> lights, ShadingInputs const& s, glm::vec3 ambient,
                                std::vector<LightContribution>* contributions = nullptr) {
     glm::vec3 color = ambient * s.albedo;
     for (std::size_t i = 0; i < lights.size(); ++i) {
         LightContribution c = shadeLightCpu(lights[i], s);
-        if (c.attenuation <= 0.0f) continue;
+        if (!c.reaches()) continue;
         c.lightIndex = int(i);
         color += c.total();
         if (contributions) contributions->push_back(c);

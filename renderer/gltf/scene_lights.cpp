@@ -1,8 +1,13 @@
-// The glTF scene builder's lights: KHR_lights_punctual point (and spot) lights placed by their nodes.
+// The glTF scene builder's lights: KHR_lights_punctual point, spot and directional lights placed
+// by their nodes (spots and directional lights shine along the node's -Z axis).
 #include "gltf/scene_builder_parts.h"
 
 #include "core/light_math.h"
 #include "gltf/mapping.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include <cmath>
 
 namespace gbl::gltf {
 
@@ -44,21 +49,49 @@ void SceneBuilder::addLights(std::vector<std::pair<int, glm::mat4>> const& place
             requireKind(*r, Kind::Number, lw + ".range"), range = r->get<float>();
         std::string name = "light " + std::to_string(l);
         if (Json const* nm = member(light, "name"); nm && nm->is_string()) name = nm->get<std::string>();
-        if (type == "directional") {
-            scene_.warnings.push_back(lw + " is directional; only point lights are loaded, so it is skipped");
-            continue;
-        }
-        if (type == "spot")
-            scene_.warnings.push_back(lw + " is a spot light; it is loaded as a point light without its cone");
-        else if (type != "point") {
+        if (type != "point" && type != "spot" && type != "directional") {
             scene_.warnings.push_back(lw + " has an unknown type '" + printable(type, 20) + "'; skipped");
             continue;
         }
+        // A directional light's intensity is in lux, a point's in candela; both are mapped by the
+        // same 1/pi (our Lambert term has no 1/pi), and a directional light ignores range.
         std::string why;
-        auto pl = pointLightFromGltf(glm::vec3(world[3]), color, intensity, range, name, &why);
+        auto pl =
+            pointLightFromGltf(glm::vec3(world[3]), color, intensity, type == "directional" ? 0.0f : range, name, &why);
         if (!pl) {
             scene_.warnings.push_back(lw + " is skipped because " + why);
             continue;
+        }
+        glm::vec3 const minusZ = -glm::vec3(world[2]);
+        if (type != "point") {
+            if (!(glm::dot(minusZ, minusZ) > 0.0f) || !std::isfinite(minusZ.x + minusZ.y + minusZ.z)) {
+                scene_.warnings.push_back(lw + " is skipped because its node's transform gives it no direction");
+                continue;
+            }
+            pl->direction = glm::normalize(minusZ);
+        }
+        if (type == "directional") {
+            pl->kind = LightKind::Directional;
+            scene_.lights.push_back(std::move(*pl));
+            continue;
+        }
+        if (type == "spot") {
+            // Angles in radians in the file, 0 <= inner < outer <= pi/2 (defaults 0 and pi/4).
+            float inner = 0.0f, outer = glm::quarter_pi<float>();
+            if (Json const* sp = member(light, "spot")) {
+                requireKind(*sp, Kind::Object, lw + ".spot");
+                if (Json const* a = member(*sp, "innerConeAngle"))
+                    requireKind(*a, Kind::Number, lw + ".spot.innerConeAngle"), inner = a->get<float>();
+                if (Json const* a = member(*sp, "outerConeAngle"))
+                    requireKind(*a, Kind::Number, lw + ".spot.outerConeAngle"), outer = a->get<float>();
+            }
+            pl->kind = LightKind::Spot;
+            pl->innerConeDeg = glm::degrees(inner);
+            pl->outerConeDeg = glm::degrees(outer);
+            if (auto bad = validateLight(*pl)) {
+                scene_.warnings.push_back(lw + " is skipped because its spot cone is unusable: " + *bad);
+                continue;
+            }
         }
         if (lightRadius(*pl).kind == RadiusKind::Zero)
             scene_.warnings.push_back(lw + " is too dim to reach the light threshold; it lights nothing");

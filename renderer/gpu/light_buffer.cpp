@@ -2,19 +2,32 @@
 #include "gpu/light_buffer.h"
 
 #include "core/light_math.h"
+#include "core/octahedral.h"
+
+#include <cmath>
 
 namespace gbl {
+
+float packWireColor(glm::vec3 color) {
+    glm::vec3 const c = glm::round(glm::clamp(color, 0.0f, 1.0f) * 255.0f);
+    return c.r + 256.0f * c.g + 65536.0f * c.b;
+}
 
 std::vector<glm::vec4> packLights(std::span<PointLight const> lights) {
     std::vector<glm::vec4> texels;
     texels.reserve(lights.size() * kTexelsPerLight);
     for (auto const& l : lights) {
         LightRadius const r = lightRadius(l);
-        float const cutoff = r.kind == RadiusKind::Zero ? 0.0f : attenuationCutoff(l, r.radius);
-        texels.emplace_back(l.position, r.radius);
+        bool const local = isLocalLight(l);
+        float const cutoff = r.kind == RadiusKind::Zero || !local ? 0.0f : attenuationCutoff(l, r.radius);
+        SpotCone const cone = spotCone(l);
+        bool const validDirection = glm::dot(l.direction, l.direction) > 0.0f && std::isfinite(l.direction.x) &&
+                                    std::isfinite(l.direction.y) && std::isfinite(l.direction.z);
+        glm::vec2 const dir = octEncode(validDirection ? l.direction : glm::vec3(0.0f, -1.0f, 0.0f));
+        texels.emplace_back(l.position, local ? r.radius : 0.0f);
         texels.emplace_back(l.color * l.intensity, cutoff);
-        texels.emplace_back(l.kc, l.kl, l.kq, 0.0f);
-        texels.emplace_back(l.color, 0.0f);
+        texels.emplace_back(l.kc, l.kl, l.kq, cone.cosOuter);
+        texels.emplace_back(packWireColor(l.color), dir.x, dir.y, cone.scale);
     }
     return texels;
 }
@@ -41,6 +54,18 @@ std::optional<std::string> LightBuffer::upload(std::span<PointLight const> light
         buffer.upload(bytes, texels.data());
     }
     count = int(lights.size());
+    directional.clear();
+    int skipped = 0;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        if (isLocalLight(lights[i]) || validateLight(lights[i])) continue;  // an invalid light shades nothing
+        if (int(directional.size()) < kMaxDirectionalLights)
+            directional.push_back(int(i));
+        else
+            ++skipped;
+    }
+    if (skipped > 0 && !why)
+        why = std::to_string(skipped) + " directional lights past the first " + std::to_string(kMaxDirectionalLights) +
+              " are not shaded";
     return why;
 }
 

@@ -1,8 +1,12 @@
 // Lights as the shaders read them: four RGBA32F texels per light in a buffer texture.
-//   texel 0: position.xyz, radius
+//   texel 0: position.xyz, radius (0 for directional lights: every local test rejects them)
 //   texel 1: colour * intensity, cutoff (windowed-attenuation offset = threshold / Imax)
-//   texel 2: Kc, Kl, Kq, 0
-//   texel 3: colour (0..1, for light cubes and wireframes), 0
+//   texel 2: Kc, Kl, Kq, spot cosOuter (-2 for other kinds: no cone)
+//   texel 3: wire colour (8 bits a channel as the integer r + 256 g + 65536 b, exact in a float;
+//            for light cubes and wireframes), octahedral direction (2 numbers), spot cone scale
+// Directional lights are also listed (indices, at most kMaxDirectionalLights) for the global
+// loop every mode runs (shadeGlobalLights in shaders/light_fetch.glsl); more are left unshaded and
+// upload() says so.
 #pragma once
 
 #include "core/point_light.h"
@@ -22,6 +26,9 @@ namespace gbl {
 
 inline constexpr int kTexelsPerLight = 4;
 
+// The wire colour of texel 3: each channel rounded to 8 bits, packed as r + 256 g + 65536 b.
+float packWireColor(glm::vec3 color);
+
 // Packs the lights in order; a light with radius 0 (invalid or too dim) keeps its slot with
 // radius 0 so indices match the caller's list, and shades nothing.
 std::vector<glm::vec4> packLights(std::span<PointLight const> lights);
@@ -30,6 +37,7 @@ struct LightBuffer {
     gl::Buffer buffer;
     gl::Texture texture;  // GL_TEXTURE_BUFFER over `buffer`, RGBA32F
     int count = 0;
+    std::vector<int> directional;  // indices of the directional lights shaded, in list order
 
     // Uploads every light the context's buffer textures can address (GL_MAX_TEXTURE_BUFFER_SIZE
     // texels, kTexelsPerLight per light; 65,536 texels = 16,384 lights is all GL guarantees,

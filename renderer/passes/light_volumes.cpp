@@ -2,6 +2,7 @@
 #include "passes/light_volumes.h"
 
 #include "core/light_math.h"
+#include "core/light_volume_cone.h"
 #include "core/light_volume_mesh.h"
 #include "gl/shader_bindings.h"
 
@@ -12,27 +13,42 @@
 
 namespace gbl {
 
+VolumeGroup volumeGroup(PointLight const& light, VolumeGrouping const& g) {
+    VolumeShape const shape = volumeShape(light);
+    if (shape == VolumeShape::None) return VolumeGroup::None;  // directional: the ambient pass's global loop
+    float const r = lightRadius(light).radius;
+    if (r <= 0.0f) return VolumeGroup::None;  // too dim or invalid: no volume at all
+    if (shape == VolumeShape::Cone)
+        return coneMayContainCamera(g.eye, coneVolume(light, r, g.coneRadialScale, g.volumeScale), g.nearCorner)
+                   ? VolumeGroup::ConeInside
+                   : VolumeGroup::ConeOutside;
+    return volumeMayContainCamera(g.eye, light.position, r * g.sphereScale, g.nearCorner) ? VolumeGroup::SphereInside
+                                                                                          : VolumeGroup::SphereOutside;
+}
+
 void prepareVolumeInstances(LightVolumeGpu& volumes, VolumeInstancesConfig const& c) {
-    std::vector<std::int32_t> outside, inside;
-    float const nearCorner = nearPlaneCornerDistance(glm::radians(c.camera.fovYDegrees), c.aspect, c.camera.nearPlane);
+    std::vector<std::int32_t> groups[4];  // in VolumeGroup order, None left out
+    VolumeGrouping const g{c.camera.position,
+                           nearPlaneCornerDistance(glm::radians(c.camera.fovYDegrees), c.aspect, c.camera.nearPlane),
+                           volumes.enclosingScale, volumes.coneRadialScale, volumes.volumeScale};
     for (std::size_t i = 0; i < c.lights.size(); ++i) {
-        float const r = lightRadius(c.lights[i]).radius;
-        if (r <= 0.0f) continue;  // too dim or invalid: no volume at all
-        bool const in =
-            volumeMayContainCamera(c.camera.position, c.lights[i].position, r * volumes.enclosingScale, nearCorner);
-        (in ? inside : outside).push_back(std::int32_t(i));
+        VolumeGroup const group = volumeGroup(c.lights[i], g);
+        if (group != VolumeGroup::None) groups[int(group) - 1].push_back(std::int32_t(i));
     }
-    volumes.outsideCount = int(outside.size());
-    volumes.insideCount = int(inside.size());
-    outside.insert(outside.end(), inside.begin(), inside.end());
-    if (outside.empty()) outside.push_back(0);  // a buffer texture needs storage
-    std::size_t const bytes = outside.size() * sizeof(std::int32_t);
+    volumes.outsideCount = int(groups[0].size());
+    volumes.insideCount = int(groups[1].size());
+    volumes.coneOutsideCount = int(groups[2].size());
+    volumes.coneInsideCount = int(groups[3].size());
+    std::vector<std::int32_t> all;
+    for (auto const& group : groups) all.insert(all.end(), group.begin(), group.end());
+    if (all.empty()) all.push_back(0);  // a buffer texture needs storage
+    std::size_t const bytes = all.size() * sizeof(std::int32_t);
     if (!volumes.instances || volumes.instances.size() < bytes) {
         volumes.instances =
-            gl::Buffer::create(GL_TEXTURE_BUFFER, bytes, outside.data(), GL_DYNAMIC_DRAW, "light volume.instances");
+            gl::Buffer::create(GL_TEXTURE_BUFFER, bytes, all.data(), GL_DYNAMIC_DRAW, "light volume.instances");
         volumes.instancesTbo = gl::Texture::createBuffer(GL_R32I, volumes.instances.id(), "light volume.instances.tbo");
     } else {
-        volumes.instances.upload(bytes, outside.data());
+        volumes.instances.upload(bytes, all.data());
     }
 }
 
@@ -50,8 +66,7 @@ void prepareVolumeInstances(LightVolumeGpu& volumes, VolumeInstancesConfig const
 //            volume shades only pixels marked 1 and resets every mark.
 void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, CullMode cull) {
     LightVolumeGpu const& volumes = in.volumes;
-    int const total = volumes.outsideCount + volumes.insideCount;
-    if (total == 0) return;
+    if (volumes.totalCount() == 0) return;
     gl::Program const& p = in.program;
     auto setCommon = [&](gl::Program const& prog) {
         prog.use();
@@ -59,11 +74,26 @@ void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, Cull
         bindTextureUnit(slot::BIND_VOLUME_INSTANCES, GL_TEXTURE_BUFFER, volumes.instancesTbo.id());
         prog.set("uViewProj", viewProj);
         prog.set("uEnclosingScale", volumes.enclosingScale);
+        prog.set("uConeRadialScale", volumes.coneRadialScale);
+        prog.set("uVolumeScale", volumes.volumeScale);
     };
+    // The mesh being drawn: the sphere lights' range of instances, then the cone lights'.
+    struct Mesh {
+        GLuint vao;
+        GLsizei indexCount;
+        int base, outsideCount, insideCount;
+        bool cone;
+    };
+    Mesh const meshes[] = {
+        {volumes.triangleVao.id(), volumes.triangleIndexCount, 0, volumes.outsideCount, volumes.insideCount, false},
+        {volumes.coneTriangleVao.id(), volumes.coneTriangleIndexCount, volumes.sphereCount(), volumes.coneOutsideCount,
+         volumes.coneInsideCount, true}};
+    Mesh const* mesh = &meshes[0];
     auto draw = [&](gl::Program const& prog, int first, int count) {
         if (count <= 0) return;
-        prog.set("uFirstInstance", first);
-        glDrawElementsInstanced(GL_TRIANGLES, volumes.triangleIndexCount, GL_UNSIGNED_INT, nullptr, count);
+        prog.set("uFirstInstance", mesh->base + first);
+        prog.set("uCone", mesh->cone ? 1 : 0);
+        glDrawElementsInstanced(GL_TRIANGLES, mesh->indexCount, GL_UNSIGNED_INT, nullptr, count);
     };
     auto frontFaces = [] {  // cull back faces: the front faces in front of the surface
         glEnable(GL_CULL_FACE);
@@ -82,61 +112,67 @@ void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, Cull
     };
 
     glDepthMask(GL_FALSE);
-    glBindVertexArray(volumes.triangleVao.id());
     setCommon(p);
-    switch (cull) {
-        case CullMode::Back:
-            frontFaces();
-            draw(p, 0, total);
-            break;
-        case CullMode::Front:
-            backFaces();
-            draw(p, 0, total);
-            break;
-        case CullMode::None:
-            glDisable(GL_CULL_FACE);
-            glDisable(GL_DEPTH_TEST);
-            draw(p, 0, total);
-            break;
-        case CullMode::Flip:
-            frontFaces();
-            draw(p, 0, volumes.outsideCount);
-            backFaces();
-            draw(p, volumes.outsideCount, volumes.insideCount);
-            break;
-        case CullMode::Stencil: {
-            gl::Program const& mark = in.stencilMark;
-            setCommon(mark);
-            glEnable(GL_STENCIL_TEST);
-            GLboolean blend = glIsEnabled(GL_BLEND);
-            for (int i = 0; i < total; ++i) {
-                // Mark: both faces, depth-tested, no colour; only depth failures count.
-                mark.use();
-                glDisable(GL_BLEND);
-                glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    for (Mesh const& m : meshes) {
+        mesh = &m;
+        int const total = m.outsideCount + m.insideCount;
+        if (total == 0) continue;
+        glBindVertexArray(m.vao);
+        p.use();
+        switch (cull) {
+            case CullMode::Back:
+                frontFaces();
+                draw(p, 0, total);
+                break;
+            case CullMode::Front:
+                backFaces();
+                draw(p, 0, total);
+                break;
+            case CullMode::None:
                 glDisable(GL_CULL_FACE);
-                glEnable(GL_DEPTH_TEST);
-                glDepthFunc(GL_LESS);
-                glStencilFunc(GL_ALWAYS, 0, 0xFF);
-                glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
-                glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
-                draw(mark, i, 1);
-                // Shade: both faces, no depth test, so every pixel of the footprint is visited; only
-                // a mark of exactly 1 (behind the front face, in front of the back face) passes,
-                // and every visit resets the mark to 0 for the next light, pass or fail (which is
-                // why light_volume.frag never discards).
-                p.use();
-                if (blend) glEnable(GL_BLEND);
-                glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
                 glDisable(GL_DEPTH_TEST);
-                glStencilFunc(GL_EQUAL, 1, 0xFF);
-                glStencilOp(GL_ZERO, GL_ZERO, GL_ZERO);
-                draw(p, i, 1);
+                draw(p, 0, total);
+                break;
+            case CullMode::Flip:
+                frontFaces();
+                draw(p, 0, m.outsideCount);
+                backFaces();
+                draw(p, m.outsideCount, m.insideCount);
+                break;
+            case CullMode::Stencil: {
+                gl::Program const& mark = in.stencilMark;
+                setCommon(mark);
+                glEnable(GL_STENCIL_TEST);
+                GLboolean blend = glIsEnabled(GL_BLEND);
+                for (int i = 0; i < total; ++i) {
+                    // Mark: both faces, depth-tested, no colour; only depth failures count.
+                    mark.use();
+                    glDisable(GL_BLEND);
+                    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+                    glDisable(GL_CULL_FACE);
+                    glEnable(GL_DEPTH_TEST);
+                    glDepthFunc(GL_LESS);
+                    glStencilFunc(GL_ALWAYS, 0, 0xFF);
+                    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+                    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+                    draw(mark, i, 1);
+                    // Shade: both faces, no depth test, so every pixel of the footprint is visited; only
+                    // a mark of exactly 1 (behind the front face, in front of the back face) passes,
+                    // and every visit resets the mark to 0 for the next light, pass or fail (which is
+                    // why light_volume.frag never discards).
+                    p.use();
+                    if (blend) glEnable(GL_BLEND);
+                    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+                    glDisable(GL_DEPTH_TEST);
+                    glStencilFunc(GL_EQUAL, 1, 0xFF);
+                    glStencilOp(GL_ZERO, GL_ZERO, GL_ZERO);
+                    draw(p, i, 1);
+                }
+                glDisable(GL_STENCIL_TEST);
+                glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+                glStencilFunc(GL_ALWAYS, 0, 0xFF);
+                break;
             }
-            glDisable(GL_STENCIL_TEST);
-            glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-            glStencilFunc(GL_ALWAYS, 0, 0xFF);
-            break;
         }
     }
     glBindVertexArray(0);

@@ -14,8 +14,20 @@
 
 namespace gbl {
 
-// Fills volumes.instances with this frame's lights (radius > 0), the ones whose volume may hold
-// the camera last, so `flip` draws two contiguous ranges.
+// Which list a light's volume goes in this frame: its mesh (core/light_volume_cone.h's
+// volumeShape) and whether the camera's near plane may cut into that very mesh.
+enum class VolumeGroup { None, SphereOutside, SphereInside, ConeOutside, ConeInside };
+struct VolumeGrouping {
+    glm::vec3 eye{0.0f};
+    float nearCorner = 0.0f;       // nearPlaneCornerDistance of the camera
+    float sphereScale = 1.0f;      // LightVolumeGpu::enclosingScale
+    float coneRadialScale = 1.0f;  // LightVolumeGpu::coneRadialScale
+    float volumeScale = 1.0f;      // LightVolumeGpu::volumeScale
+};
+VolumeGroup volumeGroup(PointLight const& light, VolumeGrouping const& g);
+
+// Fills volumes.instances with this frame's lights (radius > 0): sphere lights, then cone lights,
+// each with the ones whose volume may hold the camera last, so `flip` draws contiguous ranges.
 struct VolumeInstancesConfig {
     Camera camera;
     float aspect = 1.0f;

@@ -21,6 +21,9 @@ void bindGBuffer(GBuffer const& g) {
 void bindLights(gl::Program const& p, LightBuffer const& lights) {
     bindTextureUnit(slot::BIND_LIGHTS, GL_TEXTURE_BUFFER, lights.texture.id());
     p.set("uLightCount", lights.count);
+    p.set("uDirectionalCount", int(lights.directional.size()));
+    if (!lights.directional.empty())
+        glUniform1iv(p.uniform("uDirectionalLights[0]"), GLsizei(lights.directional.size()), lights.directional.data());
 }
 
 void setShadingUniforms(gl::Program const& p, ShadingUniforms const& s) {

@@ -1,4 +1,4 @@
-// Light-volume wireframes: each light's enclosing sphere (the very mesh the volumes pass draws)
+// Light-volume wireframes: each light's enclosing sphere or cone (the very mesh the volumes pass draws)
 // as lines in the light's colour, depth-tested against the scene and drawn into the HDR image.
 #pragma once
 
@@ -24,12 +24,16 @@ struct WireframesConfig {
     float intensity = 2.0f;  // HDR brightness, so the lines survive tonemapping
     int firstInstance = 0;   // a range of the prepared instances; count -1 = all of them
     int count = -1;
+    // With every instance drawn (count -1), each directional light also gets an arrow this long
+    // from its position along its direction.
+    float arrowLength = 1.5f;
 };
 
 // Where light `light` sits in the instance list prepareVolumeInstances builds from the same
-// camera and lights (outside-the-camera volumes first), or nullopt when it has no volume.
+// camera, lights and scales (sphere lights, outside-the-camera volumes first, then cone lights
+// likewise), or nullopt when it has no volume.
 std::optional<int> volumeInstanceSlot(std::span<PointLight const> lights, int light, Camera const& camera, float aspect,
-                                      float enclosingScale);
+                                      float enclosingScale, float coneRadialScale = 1.0f, float volumeScale = 1.0f);
 
 void wireframesPass(WireframesInput const& in, WireframesConfig const& config);
 

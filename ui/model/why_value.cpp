@@ -4,12 +4,15 @@
 #include "core/cluster_math.h"
 #include "core/depth.h"
 #include "core/light_math.h"
+#include "core/light_volume_cone.h"
 #include "core/light_volume_mesh.h"
 #include "core/shading_cpu.h"
+#include "core/spot_cull.h"
 #include "core/tile_math.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace gbl::ui {
 
@@ -37,6 +40,35 @@ VolumeHit hitVolume(glm::vec3 eye, glm::vec3 dir, glm::vec3 centre, float radius
     h.hits = true;
     h.t0 = -b - s;
     h.t1 = -b + s;
+    return h;
+}
+
+// A spot's cone volume: the ray clipped by every face plane of the very mesh the pass draws
+// (convex), so entry and exit are exact.
+VolumeHit hitCone(glm::vec3 eye, glm::vec3 dir, ConeVolume const& cone) {
+    static ConeMesh const mesh = makeLightVolumeCone();
+    VolumeHit h;
+    float tMin = -std::numeric_limits<float>::infinity(), tMax = std::numeric_limits<float>::infinity();
+    for (std::size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
+        glm::vec3 const a = coneVertexToWorld(cone, mesh.positions[mesh.triangles[t]]);
+        glm::vec3 const b = coneVertexToWorld(cone, mesh.positions[mesh.triangles[t + 1]]);
+        glm::vec3 const c = coneVertexToWorld(cone, mesh.positions[mesh.triangles[t + 2]]);
+        glm::vec3 const n = glm::cross(b - a, c - a);                       // outward
+        float const along = glm::dot(n, dir), room = glm::dot(n, a - eye);  // inside: t * along <= room
+        if (along == 0.0f) {
+            if (room < 0.0f) return h;
+            continue;
+        }
+        if (along > 0.0f)
+            tMax = std::min(tMax, room / along);
+        else
+            tMin = std::max(tMin, room / along);
+    }
+    if (!(tMin <= tMax)) return h;
+    h.hits = true;
+    h.t0 = tMin;
+    h.t1 = tMax;
+    h.cameraInside = tMin < 0.0f && tMax > 0.0f;
     return h;
 }
 
@@ -72,7 +104,11 @@ Faces volumePass(PointLight const& light, float radius, WhyValueInput const& in,
     static float const scale = enclosingScale(makeLightVolumeSphere());
     if (radius <= 0.0f) return {0, "not evaluated: no volume (radius 0)"};
     float const enclosing = radius * scale;
-    VolumeHit const h = hitVolume(in.camera.position, dir, light.position, enclosing);
+    bool const cone = volumeShape(light) == VolumeShape::Cone;
+    static float const radial = coneRadialScale(makeLightVolumeCone());
+    ConeVolume const cv = coneVolume(light, radius, radial, in.settings.volumeScale);
+    VolumeHit const h =
+        cone ? hitCone(in.camera.position, dir, cv) : hitVolume(in.camera.position, dir, light.position, enclosing);
     if (!h.hits) return {0, "not evaluated: pixel outside the volume's footprint"};
     switch (in.settings.cull) {
         case CullMode::Back:
@@ -89,7 +125,8 @@ Faces volumePass(PointLight const& light, float radius, WhyValueInput const& in,
             float const aspect = float(in.frameSize.x) / float(std::max(in.frameSize.y, 1));
             float const corner =
                 nearPlaneCornerDistance(glm::radians(in.camera.fovYDegrees), aspect, in.camera.nearPlane);
-            bool const inside = volumeMayContainCamera(in.camera.position, light.position, enclosing, corner);
+            bool const inside = cone ? coneMayContainCamera(in.camera.position, cv, corner)
+                                     : volumeMayContainCamera(in.camera.position, light.position, enclosing, corner);
             Faces f = inside ? backFacesPass(h, clip, tp) : frontFacesPass(h, clip, tp);
             f.why = (inside ? "flip, camera may be inside: " : "flip, camera outside: ") + f.why;
             return f;
@@ -143,6 +180,17 @@ std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointL
         PointLight const& light = lights[i];
         LightVerdict v;
         v.lightIndex = int(i);
+        if (light.kind == LightKind::Directional) {
+            // Global: every mode adds it once in its full-screen loop (no radius, volume or list).
+            v.withinRadius = !validateLight(light);
+            v.evaluated = v.withinRadius;
+            v.evaluations = v.withinRadius ? 1 : 0;
+            v.why = v.withinRadius ? "directional: the full-screen global-lights loop of every mode"
+                                   : "directional, invalid: shades nothing";
+            if (v.evaluated) v.added = shadeLightCpu(light, s).total();
+            out.push_back(std::move(v));
+            continue;
+        }
         float const radius = lightRadius(light).radius;
         v.withinRadius = glm::distance(light.position, s.position) < radius;
         switch (in.settings.mode) {
@@ -156,8 +204,13 @@ std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointL
                 break;
             case LightingMode::Tiled: {
                 glm::vec3 const centreView = glm::vec3(view * glm::vec4(light.position, 1.0f));
-                bool const listed =
-                    radius > 0.0f && sphereTouchesTile(tile, bounds.minDepth, bounds.maxDepth, centreView, radius);
+                // Spots: then the cone against the sphere around the tile's depth range.
+                glm::vec4 const tileSphere = frustumPieceSphere(
+                    tileFarCorners(glm::inverse(in.camera.projection(aspect)), in.frameSize.x, in.frameSize.y, rect),
+                    bounds.minDepth, bounds.maxDepth);
+                bool const listed = radius > 0.0f &&
+                                    sphereTouchesTile(tile, bounds.minDepth, bounds.maxDepth, centreView, radius) &&
+                                    lightConeMayTouchSphere(light, view, glm::vec3(tileSphere), tileSphere.w);
                 v.evaluations = listed ? 1 : 0;
                 v.why = listed ? "in the tile's light list" : "not evaluated: not in the tile's light list";
                 break;
@@ -175,7 +228,8 @@ std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointL
                 bool const listed =
                     radius > 0.0f &&
                     sphereTouchesTile(tile, in.camera.nearPlane, in.camera.farPlane, centreView, radius) &&
-                    sphereTouchesBox(centreView, radius * 1.0001f + 1e-4f, box);
+                    sphereTouchesBox(centreView, radius * 1.0001f + 1e-4f, box) &&
+                    lightConeMayTouchSphere(light, view, (box.lo + box.hi) * 0.5f, glm::length(box.hi - box.lo) * 0.5f);
                 v.evaluations = listed ? 1 : 0;
                 v.why = listed ? "in the cluster's light list" : "not evaluated: not in the cluster's light list";
                 break;

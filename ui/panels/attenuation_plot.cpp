@@ -103,4 +103,48 @@ void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size) {
     }
 }
 
+ConeCurve sampleConeCurve(PointLight const& light, int samples) {
+    ConeCurve c;
+    c.maxDegrees = std::min(std::max(light.outerConeDeg * 1.25f, 1.0f), 180.0f);
+    SpotCone const cone = spotCone(light);
+    samples = std::max(samples, 2);
+    for (int i = 0; i < samples; ++i) {
+        float const a = c.maxDegrees * float(i) / float(samples - 1);
+        c.degrees.push_back(a);
+        c.factor.push_back(spotConeFactor(cone, std::cos(glm::radians(a))));
+    }
+    return c;
+}
+
+void drawConePlot(PointLight const& light, ImVec2 size) {
+    ConeCurve const c = sampleConeCurve(light, 96);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    ImVec2 const p0 = ImGui::GetCursorScreenPos();
+    ImVec2 const p1(p0.x + size.x, p0.y + size.y);
+    ImGui::InvisibleButton("cone-plot", size);
+    bool const hovered = ImGui::IsItemHovered();
+    ImVec2 const lo(p0.x + 4, p0.y + 14), hi(p1.x - 4, p1.y - 14);
+    auto at = [&](float deg, float v) {
+        return ImVec2(lo.x + (hi.x - lo.x) * deg / c.maxDegrees, hi.y - (hi.y - lo.y) * std::clamp(v, 0.0f, 1.0f));
+    };
+    dl->AddRectFilled(p0, p1, IM_COL32(20, 22, 26, 255));
+    dl->AddRect(p0, p1, IM_COL32(90, 90, 100, 255));
+    for (float deg : {light.innerConeDeg, light.outerConeDeg})
+        dl->AddLine(at(deg, 1.0f), at(deg, 0.0f), IM_COL32(90, 200, 255, 200), 1.0f);
+    for (std::size_t i = 1; i < c.factor.size(); ++i)
+        dl->AddLine(at(c.degrees[i - 1], c.factor[i - 1]), at(c.degrees[i], c.factor[i]), IM_COL32(255, 255, 255, 255),
+                    2.0f);
+    dl->AddText(ImVec2(p0.x + 6, p0.y + 1), IM_COL32(255, 255, 255, 255), "cone factor");
+    char axisLabel[64];
+    std::snprintf(axisLabel, sizeof axisLabel, "0 .. %.1f deg from the axis", c.maxDegrees);
+    dl->AddText(ImVec2(p0.x + 4, p1.y - 14), IM_COL32(160, 160, 160, 255), axisLabel);
+    if (hovered) {
+        float const mx = ImGui::GetIO().MousePos.x;
+        float const deg = std::clamp((mx - lo.x) / (hi.x - lo.x), 0.0f, 1.0f) * c.maxDegrees;
+        dl->AddLine(ImVec2(mx, p0.y), ImVec2(mx, p1.y), IM_COL32(255, 255, 255, 60));
+        ImGui::SetTooltip("angle = %.2f deg\nsaturate((cos a - cos outer) / (cos inner - cos outer))^2 = %.4f", deg,
+                          spotConeFactor(spotCone(light), std::cos(glm::radians(deg))));
+    }
+}
+
 }  // namespace gbl::ui

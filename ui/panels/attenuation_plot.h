@@ -24,4 +24,14 @@ AttenuationCurve sampleAttenuationCurve(PointLight const& light, int samples);
 // Draws into a box of `size` at the cursor with ImDrawList; hovering shows the values there.
 void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size);
 
+// A spot's cone factor (gbl::spotConeFactor) against the angle from its axis, 0 to a little
+// past the outer angle, with the inner and outer angles marked.
+struct ConeCurve {
+    float maxDegrees = 1.0f;
+    std::vector<float> degrees;
+    std::vector<float> factor;
+};
+ConeCurve sampleConeCurve(PointLight const& light, int samples);
+void drawConePlot(PointLight const& light, ImVec2 size);
+
 }  // namespace gbl::ui

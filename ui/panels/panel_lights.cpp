@@ -65,8 +65,12 @@ void drawList(LightsPanelState& state, std::vector<PointLight>& lights) {
                                ImVec2(ImGui::GetTextLineHeight(), ImGui::GetTextLineHeight()));
             ImGui::SameLine();
             char label[96];
-            std::snprintf(label, sizeof label, "%3d  %s  r=%.2f", i, l.name.empty() ? "light" : l.name.c_str(),
-                          lightRadius(l).radius);
+            char const* const name = l.name.empty() ? "light" : l.name.c_str();
+            if (l.kind == LightKind::Directional)
+                std::snprintf(label, sizeof label, "%3d  %s  directional", i, name);
+            else
+                std::snprintf(label, sizeof label, "%3d  %s  %sr=%.2f", i, name,
+                              l.kind == LightKind::Spot ? "spot " : "", lightRadius(l).radius);
             if (ImGui::Selectable(label, selected)) state.selected = state.listShows = i;
             ImGui::PopID();
         }
@@ -76,6 +80,36 @@ void drawList(LightsPanelState& state, std::vector<PointLight>& lights) {
 
 void dragHelp() {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("drag: 2%% per pixel; Ctrl+click or double-click: type a value");
+}
+
+// The kind combo, then what the kind adds: a direction for spot and directional lights, the
+// cone's inner and outer half-angles (degrees) for spots.
+bool drawKindFields(PointLight& edited) {
+    bool changed = false;
+    if (ImGui::BeginCombo("Kind", std::string(lightKindName(edited.kind)).c_str())) {
+        for (std::size_t i = 0; i < kLightKindNames.size(); ++i) {
+            LightKind const k = static_cast<LightKind>(i);
+            if (ImGui::Selectable(std::string(kLightKindNames[i]).c_str(), edited.kind == k) && edited.kind != k) {
+                edited.kind = k;
+                changed = true;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    if (edited.kind == LightKind::Point) return changed;
+    changed |= ImGui::DragFloat3("Dir", &edited.direction.x, 0.01f, -1.0f, 1.0f, "%.3f");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("where the light shines (normalised when shading; not all zero)");
+    if (edited.kind != LightKind::Spot) return changed;
+    float const half = (ImGui::CalcItemWidth() - ImGui::GetStyle().ItemInnerSpacing.x) / 2.0f;
+    ImGui::PushItemWidth(half);
+    changed |= ImGui::DragFloat("##inner", &edited.innerConeDeg, 0.25f, 0.0f, edited.outerConeDeg, "in %.1f deg");
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    changed |= ImGui::DragFloat("##outer", &edited.outerConeDeg, 0.25f, std::max(edited.innerConeDeg, 0.1f),
+                                kMaxSpotConeDeg, "out %.1f deg");
+    ImGui::PopItemWidth();
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::TextUnformatted("Cone");
+    return changed;
 }
 
 void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
@@ -99,6 +133,7 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
     // Positions move by 1% of their distance from the origin per pixel, at least 0.01.
     float const reach =
         std::max({std::abs(edited.position.x), std::abs(edited.position.y), std::abs(edited.position.z)});
+    changed |= drawKindFields(edited);
     changed |= ImGui::DragFloat3("Position", &edited.position.x, proportionalDragSpeed(reach, 0.01f));
     changed |= ImGui::ColorEdit3("Colour", &edited.color.x, ImGuiColorEditFlags_Float);
     // Three attenuation terms on one row, as in the formula Kc + Kl d + Kq d^2; each keeps its
@@ -157,15 +192,24 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
     }
 
     PointLight const& light = lights[std::size_t(state.selected)];
+    if (light.kind == LightKind::Directional) {
+        ImGui::TextWrapped(
+            "Directional: no attenuation and no radius; every mode shades it in its full-screen "
+            "pass (Kc, Kl, Kq and the cut-off are kept but unused).");
+        return;
+    }
     LightRadius const r = lightRadius(light);
     ImGui::Text("Radius %.3f  (%s)", r.radius, radiusKindText(r.kind));
     ImGui::Text("Imax %.3f  Imax/cut %.1f", lightImax(light),
                 light.threshold > 0.0f ? lightImax(light) / light.threshold : 0.0f);
     ImGui::SameLine();
     ImGui::Checkbox("log", &state.plotLogScale);
-    float const plotH =
-        std::clamp(ImGui::GetContentRegionAvail().y - 4.0f, ImGui::GetFontSize() * 5.0f, ImGui::GetFontSize() * 18.0f);
+    // A spot gets a second, smaller plot: its cone factor against the angle from its axis.
+    float const coneH = light.kind == LightKind::Spot ? ImGui::GetFontSize() * 5.0f : 0.0f;
+    float const plotH = std::clamp(ImGui::GetContentRegionAvail().y - 4.0f - coneH, ImGui::GetFontSize() * 5.0f,
+                                   ImGui::GetFontSize() * 18.0f);
     drawAttenuationPlot(light, state.plotLogScale, ImVec2(ImGui::GetContentRegionAvail().x, plotH));
+    if (light.kind == LightKind::Spot) drawConePlot(light, ImVec2(ImGui::GetContentRegionAvail().x, coneH));
 }
 
 }  // namespace

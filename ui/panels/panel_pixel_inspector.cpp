@@ -169,7 +169,11 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
                         ImGui::TableNextColumn();
                         if (c) ImGui::Text("%.3f", c->distance);
                         ImGui::TableNextColumn();
-                        if (c) ImGui::Text("%.4f", c->attenuation);
+                        // Spots: distance attenuation times the cone factor; directional: 1.
+                        if (c && c->cone < 1.0f)
+                            ImGui::Text("%.4f x cone %.3f", c->attenuation, c->cone);
+                        else if (c)
+                            ImGui::Text("%.4f", c->attenuation);
                         ImGui::TableNextColumn();
                         if (c) ImGui::Text("%.3f %.3f %.3f", c->diffuse.r, c->diffuse.g, c->diffuse.b);
                         ImGui::TableNextColumn();

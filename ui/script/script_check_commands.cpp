@@ -81,6 +81,10 @@ void expectLightCommand(CommandCall const& c) {
     EditorState const& s = c.host.state;
     int const i = std::atoi(c.w[1].c_str());
     if (i < 0 || i >= int(s.lights.size())) return c.check(false, "no such light");
+    if (c.w[2] == "kind") {
+        std::string const now(lightKindName(s.lights[std::size_t(i)].kind));
+        return c.check(now == c.w[3], "it is " + now);
+    }
     LightField const* field = findLightField(c.w[2]);
     if (!field) return c.check(false, "unknown light field");
     float const v = field->of(s.lights[std::size_t(i)]);

@@ -90,10 +90,16 @@ void lightCommand(CommandCall const& c) {
     EditorState& s = c.host.state;
     int const i = std::atoi(c.w[1].c_str());
     if (i < 0 || i >= int(s.lights.size())) return c.check(false, "no such light");
-    LightField const* field = findLightField(c.w[2]);
-    if (!field) return c.check(false, "unknown light field");
     PointLight edited = s.lights[std::size_t(i)];
-    field->of(edited) = number(c.w[3]);
+    if (c.w[2] == "kind") {  // not a number: point, spot or directional
+        auto const kind = findLightKind(c.w[3]);
+        if (!kind) return c.check(false, "unknown light kind (point, spot or directional)");
+        edited.kind = *kind;
+    } else {
+        LightField const* field = findLightField(c.w[2]);
+        if (!field) return c.check(false, "unknown light field");
+        field->of(edited) = number(c.w[3]);
+    }
     auto const error = applyLightEdit(s.lights, i, edited);
     s.lightsPanel.message = error ? *error : std::string();
 }
@@ -155,7 +161,8 @@ constexpr ScriptCommandSpec kCommands[] = {
      setCommand},
     {"light", "I FIELD VALUE",
      "edit light I through the validated path the Lights panel uses;\n"
-     "FIELD = x y z r g b intensity kc kl kq threshold (kLightFields)",
+     "FIELD = x y z r g b intensity kc kl kq threshold dx dy dz inner outer (kLightFields),\n"
+     "or kind point|spot|directional",
      lightCommand},
     {"select", "I", "select light I (as a click in the list does)",
      [](CommandCall const& c) { c.host.state.lightsPanel.selected = std::atoi(c.w[1].c_str()); }},

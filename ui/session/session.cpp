@@ -82,7 +82,11 @@ ojson sessionJson(Session const& s) {
                           {"kc", l.kc},
                           {"kl", l.kl},
                           {"kq", l.kq},
-                          {"threshold", l.threshold}});
+                          {"threshold", l.threshold},
+                          {"kind", lightKindName(l.kind)},
+                          {"direction", vec(l.direction)},
+                          {"inner_cone_deg", l.innerConeDeg},
+                          {"outer_cone_deg", l.outerConeDeg}});
     PipelineSettings const& p = s.pipeline;
     ojson viewers = ojson::object();
     for (std::size_t i = 0; i < s.viewers.size(); ++i) viewers[std::string(kViewerNames[i])] = viewerJson(s.viewers[i]);
@@ -247,7 +251,9 @@ Camera readCamera(json const& j) {
 }
 
 PointLight readLight(json const& j, std::string const& path) {
-    Object o(j, path, {"name", "position", "color", "intensity", "kc", "kl", "kq", "threshold"});
+    Object o(j, path,
+             {"name", "position", "color", "intensity", "kc", "kl", "kq", "threshold", "kind", "direction",
+              "inner_cone_deg", "outer_cone_deg"});
     PointLight l;
     if (json const* name = o.optional("name")) l.name = string(*name, o.field("name"));
     l.position = vector<3>(o.required("position"), o.field("position"));
@@ -257,6 +263,16 @@ PointLight readLight(json const& j, std::string const& path) {
     l.kl = number(o.required("kl"), o.field("kl"), Bound::NonNegative);
     l.kq = number(o.required("kq"), o.field("kq"), Bound::NonNegative);
     l.threshold = number(o.required("threshold"), o.field("threshold"), Bound::Positive);
+    // Optional (sessions written before light kinds load as point lights with the defaults).
+    if (json const* kind = o.optional("kind")) l.kind = enumeration<LightKind>(*kind, o.field("kind"), kLightKindNames);
+    if (json const* d = o.optional("direction")) {
+        l.direction = vector<3>(*d, o.field("direction"));
+        if (glm::dot(l.direction, l.direction) <= 0.0f) fail(o.field("direction"), "must not be the zero vector");
+    }
+    if (json const* a = o.optional("inner_cone_deg"))
+        l.innerConeDeg = numberIn(*a, o.field("inner_cone_deg"), 0.0f, kMaxSpotConeDeg);
+    if (json const* a = o.optional("outer_cone_deg"))
+        l.outerConeDeg = numberIn(*a, o.field("outer_cone_deg"), 0.0f, kMaxSpotConeDeg);
     // The rules that involve more than one field (Kc = Kl = Kq = 0) come from the one validator
     // the editor and the renderer use too.
     if (auto err = validateLight(l)) fail(path + ":", *err);
