@@ -6,11 +6,14 @@
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 #include "gbuffer_read.glsl"
+#include "surface_terms.glsl"
+#include "light_accumulation.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(rgba16f, binding = BIND_IMAGE_LIGHTING) uniform writeonly image2D uLightingImage;
 layout(rg32f, binding = BIND_IMAGE_COVERAGE) uniform writeonly image2D uCoverageImage;
+layout(rgba16f, binding = BIND_IMAGE_SPECULAR_LIGHT) uniform writeonly image2D uSpecularImage;  // split only
 
 uniform int uLightCount;
 uniform vec3 uAmbient;
@@ -73,12 +76,14 @@ void main() {
     vec3 bottom = sidePlane(bl, br, centre).xyz, top = sidePlane(tl, tr, centre).xyz;
 
     vec3 n = vec3(0.0);
-    vec4 as = vec4(0.0);
+    vec4 as = vec4(0.0), ea = vec4(0.0);
     if (geometry) {
         n = gbufferNormal(px);
         as = gbufferAlbedoSpec(px);
+        ea = gbufferEmissiveAo(px);
     }
-    vec3 color = uAmbient * as.rgb;
+    vec3 surface = surfaceTerms(uAmbient, as.rgb, ea.a, ea.rgb);
+    LightSum sum = noLight();
     float lit = 0.0;
     uint tileCount = 0u;
     for (int base = 0; anyGeometry && base < uLightCount; base += CHUNK_LIGHTS) {
@@ -124,7 +129,7 @@ void main() {
                     vec4 positionRadius = texelFetch(uLights, index * 4);
                     if (!(distance(positionRadius.xyz, pos) < positionRadius.w)) continue;
                     Light l = fetchLight(index);
-                    color += shadeLight(l, pos, n, as.rgb, as.a);
+                    accumulateLight(sum, l, pos, n, as.a);
                     // "Lit" as in light_volume.frag: the light reaches a surface that faces it.
                     if (uWriteCoverage && any(greaterThan(shadeLight(l, pos, n, vec3(1.0), 1.0), vec3(0.0))))
                         lit += 1.0;
@@ -137,6 +142,7 @@ void main() {
         barrier();
     }
     if (!onScreen) return;
-    if (uShade) imageStore(uLightingImage, px, geometry ? vec4(color, 1.0) : vec4(0.0));
+    if (uShade) imageStore(uLightingImage, px, geometry ? accumulationTarget0(sum, surface, as.rgb) : vec4(0.0));
+    if (uShade && uSplitAccumulation) imageStore(uSpecularImage, px, geometry ? vec4(sum.specular, 1.0) : vec4(0.0));
     if (uWriteCoverage) imageStore(uCoverageImage, px, vec4(float(tileCount), lit, 0.0, 0.0));
 }

@@ -183,6 +183,15 @@ void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailabl
             char const* layoutItems[] = {kGBufferLayoutNames[0].data(), kGBufferLayoutNames[1].data(),
                                          kGBufferLayoutNames[2].data(), kGBufferLayoutNames[3].data()};
             if (ImGui::Combo("G-buffer", &layout, layoutItems, 4)) settings.layout = GBufferLayout(layout);
+            // One lit target, or diffuse and specular light in two plus a combine pass (docs/lighting.md).
+            int accumulation = int(settings.accumulation);
+            char const* accumulationItems[] = {kLightAccumulationNames[0].data(), kLightAccumulationNames[1].data()};
+            if (ImGui::Combo("Targets", &accumulation, accumulationItems, 2))
+                settings.accumulation = LightAccumulation(accumulation);
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip(
+                    "single: one lit target\nsplit: diffuse and specular light targets, then a combine "
+                    "pass (forward mode keeps one target)");
             ImGui::PopItemWidth();
         }
         if (ab && section("A/B compare")) abSection(*ab, settings);

@@ -33,6 +33,9 @@ constexpr EnumSetting kEnumSettings[] = {
      [](PipelineSettings const& p) { return enumName(kDebugViewNames, p.view); }},
     {"tonemap", [](PipelineSettings& p, std::string const& v) { return setEnum(p.tonemap, kTonemapNames, v); },
      [](PipelineSettings const& p) { return enumName(kTonemapNames, p.tonemap); }},
+    {"accumulation",
+     [](PipelineSettings& p, std::string const& v) { return setEnum(p.accumulation, kLightAccumulationNames, v); },
+     [](PipelineSettings const& p) { return enumName(kLightAccumulationNames, p.accumulation); }},
 };
 
 void setCommand(CommandCall const& c) {
