@@ -45,6 +45,9 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
     sub.add_option("--mode", o.mode, "Lighting mode: quad, volumes, tiled, forward or clustered")
         ->capture_default_str();
     sub.add_option("--layout", o.layout, "G-buffer layout: classic, packed, naive8 or rgb10a2")->capture_default_str();
+    sub.add_option("--accumulation", o.accumulation,
+                   "Lights into one lit target (single) or diffuse and specular targets plus a combine pass (split)")
+        ->capture_default_str();
     sub.add_option("--cull", o.cull, "Light volume cull mode: back, front, none, flip or stencil")
         ->capture_default_str();
     sub.add_option("--view", o.views, "Extra debug view(s) to write as view_NAME.png");
@@ -54,7 +57,8 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
     sub.add_flag("--allow-outside-uris", o.allowOutsideUris, "Let the glTF file read files outside its folder");
     sub.add_option("--gl", o.glLimit, "Pretend the context is at most this OpenGL version, e.g. 3.3");
     sub.add_option("--session", o.sessionPath,
-                   "Render the frame a session file describes (--mode, --layout, --cull, --blit, --time override it)");
+                   "Render the frame a session file describes (--mode, --layout, --accumulation, --cull, --blit, "
+                   "--time override it)");
     sub.add_option("--save-session", o.saveSessionPath, "Also write the session that reproduces this frame");
     sub.add_option("--lesson", o.lesson, "Render step STEP (from 1) of lesson ID, as ID or ID:STEP (see `lessons`)");
     sub.add_option("--lessons-dir", o.lessonsDir, "Read lessons from this folder instead of the shipped ones");
@@ -62,7 +66,8 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
                    "Shade with the first K lights only (0 = ambient alone) and outline light K's volume");
     sub.add_flag("--contribution", o.contribution, "With --accumulate K: light K alone, without ambient");
     sub.parse_complete_callback([&sub, &o] {
-        for (char const* name : {"--scene", "--lights", "--time", "--blit", "--mode", "--layout", "--cull", "--size"})
+        for (char const* name :
+             {"--scene", "--lights", "--time", "--blit", "--mode", "--layout", "--accumulation", "--cull", "--size"})
             if (sub.count(name) > 0) o.given.insert(name);
     });
 }
@@ -89,19 +94,23 @@ int runRender(RenderOptions const& o) {
     if (!blit) return badArgument("--blit must be blit, shader or off, got '" + o.blit + "'");
     auto const layout = enumFromName<GBufferLayout>(kGBufferLayoutNames, o.layout);
     if (!layout) return badArgument("--layout must be classic, packed, naive8 or rgb10a2, got '" + o.layout + "'");
+    auto const accumulation = enumFromName<LightAccumulation>(kLightAccumulationNames, o.accumulation);
+    if (!accumulation) return badArgument("--accumulation must be single or split, got '" + o.accumulation + "'");
     std::vector<DebugView> views;
     for (auto const& name : o.views) {
         auto v = enumFromName<DebugView>(kDebugViewNames, name);
-        if (!v)
-            return badArgument("--view '" + name +
-                               "' is not one of final, lighting, position, normal, albedo, "
-                               "specular, depth, depth_linear, heatmap, tile_lights, raw0, raw1, raw2, cluster_slices");
+        if (!v) {
+            std::string known;
+            for (std::string_view n : kDebugViewNames) known += (known.empty() ? "" : ", ") + std::string(n);
+            return badArgument("--view '" + name + "' is not one of " + known);
+        }
         views.push_back(*v);
     }
     settings.mode = *mode;
     settings.cull = *cull;
     settings.depthCopy = *blit;
     settings.layout = *layout;
+    settings.accumulation = *accumulation;
     if (auto err = prepareOutDir(o.outDir)) return badArgument(*err);
     if (o.saveSessionPath) {
         // Refuse before rendering rather than after a long frame (the write itself is checked too).
@@ -128,6 +137,7 @@ int runRender(RenderOptions const& o) {
         if (o.given.count("--mode")) settings.mode = fromOptions.mode;
         if (o.given.count("--cull")) settings.cull = fromOptions.cull;
         if (o.given.count("--layout")) settings.layout = fromOptions.layout;
+        if (o.given.count("--accumulation")) settings.accumulation = fromOptions.accumulation;
         if (o.given.count("--blit")) settings.depthCopy = fromOptions.depthCopy;
         session->pipeline = settings;
         prepared = prepareSessionScene(*session, *o.sessionPath, o.allowOutsideUris, &error);

@@ -20,7 +20,8 @@ struct RenderOptions {
     float time = 0.0f;
     std::string blit = "blit";
     std::string mode = "quad";
-    std::string layout = "classic";  // G-buffer layout (core/gbuffer_layout.h)
+    std::string layout = "classic";       // G-buffer layout (core/gbuffer_layout.h)
+    std::string accumulation = "single";  // light targets: single or split (docs/lighting.md)
     std::string cull = "front";
     std::vector<std::string> views;  // extra debug views written as view_<name>.png
     std::optional<std::string> scene;

@@ -79,6 +79,13 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
     check(writeExr(path("normal.exr"), renderer.readAttachment(Attachment::Normal)));
     check(writePng(path("albedo.png"), albedo, 3));
     check(writePng(path("specular.png"), specularImage(albedo)));
+    // Emitted radiance (rgb) and ambient occlusion (a), decoded: the same in every layout.
+    check(writeExr(path("emissive.exr"), renderer.readAttachment(Attachment::Emissive)));
+    // The accumulation targets, when the frame used them (docs/lighting.md, "Accumulation targets").
+    if (frame.stats.accumulationUsed == LightAccumulation::Split) {
+        check(writeExr(path("diffuse_light.exr"), renderer.readAttachment(Attachment::DiffuseLight)));
+        check(writeExr(path("specular_light.exr"), renderer.readAttachment(Attachment::SpecularLight)));
+    }
     check(writeExr(path("depth.exr"), depth));
     check(writeExr(path("depth_linear.exr"), linearDepthImage(depth, frame.camera)));
     // Every attachment of the layout as stored: 8-bit ones as PNG (exact), the others as EXR.
@@ -146,6 +153,7 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
                       {"blit", enumName(kDepthCopyNames, s.depthCopy)},
                       {"layout", layout.name},
                       {"gbuffer_bytes_per_pixel", layoutBytesPerPixel(layout)},
+                      {"accumulation", enumName(kLightAccumulationNames, frame.stats.accumulationUsed)},
                       {"gpu_ms", passes},
                       {"gpu_frame_ms", frame.stats.gpuFrameMs},
                       {"timing", frame.stats.timingSource},

@@ -170,7 +170,7 @@ LightingClusteredInput RendererImpl::clusteredInput(FrameContext const& f) {
             tileBins,
             shaders.get(ProgramId::ClusterShade),
             clusters,
-            targets.lighting,
+            lightingImage(f),
             targets.coverage};
 }
 
@@ -220,32 +220,32 @@ FrameContext RendererImpl::frameContext(FrameInput const& input) const {
     f.lights = shadedLights(input);
     f.settings = input.settings;
     // A light's own contribution: nothing else, not even the ambient term.
-    if (input.accumulateLights && input.lightContribution && !f.lights.empty()) f.settings.ambient = glm::vec3(0.0f);
+    f.lightAlone = input.accumulateLights && input.lightContribution && !f.lights.empty();
+    if (f.lightAlone) f.settings.ambient = glm::vec3(0.0f);
     return f;
 }
 
+ShadingUniforms shadingUniforms(FrameContext const& f) {
+    return {f.camera.position, f.settings.shininess, f.settings.ambient, glm::inverse(f.viewProj),
+            f.lightAlone ? 0.0f : 1.0f};
+}
+
 DeferredInputs RendererImpl::deferredInputs(FrameContext const& f) const {
-    return {targets.gbuffer,
-            lights,
-            {f.camera.position, f.settings.shininess, f.settings.ambient, glm::inverse(f.viewProj)}};
+    return {targets.gbuffer, lights, shadingUniforms(f)};
 }
 
 void RendererImpl::runLighting(FrameContext const& f) {
     DeferredInputs const deferred = deferredInputs(f);
     switch (f.settings.mode) {
         case LightingMode::Volumes:
-            lightingVolumesPass({deferred,
-                                 volumes,
-                                 shaders.get(ProgramId::LightingQuad),
-                                 shaders.get(ProgramId::LightVolume),
-                                 shaders.get(ProgramId::LightVolumeStencil),
-                                 triangle,
-                                 {targets.volumeFbo, targets.lighting}},
-                                {f.viewProj, f.settings.cull});
+            lightingVolumesPass(
+                {deferred, volumes, shaders.get(ProgramId::LightingQuad), shaders.get(ProgramId::LightVolume),
+                 shaders.get(ProgramId::LightVolumeStencil), triangle, volumeTarget(f)},
+                {f.viewProj, f.settings.cull});
             break;
         case LightingMode::Tiled:
             lightingTiledPass({deferred, shaders.get(ProgramId::LightingTiled), shaders.get(ProgramId::TileBin),
-                               tileBins, targets.lighting, targets.coverage},
+                               tileBins, lightingImage(f), targets.coverage},
                               {f.view, f.projection, targets.width, targets.height, f.camera.nearPlane,
                                f.camera.farPlane, true, false});
             break;
@@ -253,9 +253,10 @@ void RendererImpl::runLighting(FrameContext const& f) {
             clusterShadePass(clusteredInput(f), clusteredConfig(f, true));
             break;
         default:
-            lightingQuadPass({deferred, shaders.get(ProgramId::LightingQuad), triangle, litTarget()});
+            lightingQuadPass({deferred, shaders.get(ProgramId::LightingQuad), triangle, quadTarget(f)});
             break;
     }
+    if (splitAccumulation(f)) combineLights(f);
 }
 
 void RendererImpl::runCoverage(FrameContext const& f) {
@@ -300,8 +301,12 @@ FrameStats RendererImpl::render(FrameInput const& input) {
         stats.fallbackReason = *why + "; the full-screen (quad) pass ran instead";
     }
     stats.modeUsed = f.settings.mode;
+    stats.accumulationUsed = splitAccumulation(f) ? LightAccumulation::Split : LightAccumulation::Single;
+    if (f.settings.accumulation != stats.accumulationUsed)
+        stats.fallbackReason += std::string(stats.fallbackReason.empty() ? "" : "; ") + kForwardRefusesSplit;
+    prepareAccumulation(f);
     PipelineSettings const& s = f.settings;
-    ShadingUniforms const shading{f.camera.position, s.shininess, s.ambient, glm::inverse(f.viewProj)};
+    ShadingUniforms const shading = shadingUniforms(f);
     frameInverseViewProj = shading.inverseViewProj;
 
     if (auto why = lights.upload(f.lights)) stats.fallbackReason += (stats.fallbackReason.empty() ? "" : "; ") + *why;
@@ -382,8 +387,8 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     timer.begin("display");
     ViewParams display;
     display.view = s.view;
-    viewPass({targets.gbuffer, targets.lighting, targets.coverage, shaders.get(ProgramId::View), triangle,
-              targets.displayFbo},
+    viewPass({targets.gbuffer, targets.lighting, targets.coverage, targets.diffuseLight, targets.specularLight,
+              shaders.get(ProgramId::View), triangle, targets.displayFbo},
              {display, s.tonemap, s.exposure, f.camera.nearPlane, f.camera.farPlane, targets.width, targets.height,
               shading.inverseViewProj});
     timer.end();
@@ -417,7 +422,8 @@ void RendererImpl::drawView(ViewParams const& params, FrameInput const& frame, V
         lights.upload(f.lights);
         runCoverage(f);
     }
-    viewPass({targets.gbuffer, targets.lighting, targets.coverage, shaders.get(ProgramId::View), triangle, target.fbo},
+    viewPass({targets.gbuffer, targets.lighting, targets.coverage, targets.diffuseLight, targets.specularLight,
+              shaders.get(ProgramId::View), triangle, target.fbo},
              {params, f.settings.tonemap, f.settings.exposure, f.camera.nearPlane, f.camera.farPlane, targets.width,
               targets.height, glm::inverse(f.viewProj)});
 }

@@ -30,7 +30,16 @@ struct FrameContext {
     glm::mat4 viewProj{1.0f};
     std::span<PointLight const> lights;
     PipelineSettings settings;
+    bool lightAlone = false;  // one light's contribution: no ambient, no emission
 };
+
+// Why a forward frame ignores `accumulation: split` (FrameStats::fallbackReason).
+inline constexpr char const* kForwardRefusesSplit =
+    "accumulation split needs the G-buffer's albedo and emission for its combine pass, and forward shading "
+    "keeps none, so the forward frame wrote its one lit target";
+
+// The uniforms of shaders/lighting.glsl and surface_terms.glsl for frame `f`.
+ShadingUniforms shadingUniforms(FrameContext const& f);
 
 // An optional group of programs (and, for volumes, the sphere mesh), built on first use.
 struct OptionalFeature {
@@ -70,6 +79,7 @@ public:
     OptionalFeature clusteredFeature;
     ClusterLists clusters;
     TileBins tileBins;                    // the tiled and clustered list passes' candidates, rebuilt by each
+    bool splitTargetsWritten = false;     // the light targets hold an earlier split frame's sums
     std::function<void()> frameTestHook;  // renderer_test_access.h
 
 private:
@@ -83,6 +93,13 @@ private:
     LightingClusteredConfig clusteredConfig(FrameContext const& f, bool shade) const;
     void runLighting(FrameContext const& f);
     void runCoverage(FrameContext const& f);
+    // Accumulation targets (renderer_accumulation.cpp, docs/lighting.md "Accumulation targets").
+    bool splitAccumulation(FrameContext const& f) const;
+    LitTarget quadTarget(FrameContext const& f) const;              // lit image, or the two light targets
+    LitTarget volumeTarget(FrameContext const& f) const;            // the same with the G-buffer's depth
+    gl::Texture const& lightingImage(FrameContext const& f) const;  // tiled / clustered image 0
+    void prepareAccumulation(FrameContext const& f);                // uSplitAccumulation, image unit 2
+    void combineLights(FrameContext const& f);                      // split: the two targets into `lighting`
 };
 
 }  // namespace gbl

@@ -18,6 +18,12 @@ unsigned Renderer::texture(Attachment a) const {
             return t.gbuffer.normal.id();
         case Attachment::AlbedoSpec:
             return t.gbuffer.albedoSpec.id();
+        case Attachment::Emissive:
+            return t.gbuffer.emissive.id();
+        case Attachment::DiffuseLight:
+            return t.diffuseLight.id();
+        case Attachment::SpecularLight:
+            return t.specularLight.id();
         case Attachment::Depth:
         case Attachment::Stencil:  // one texture holds both; sampling stencil needs its texture mode
             return t.gbuffer.depth.id();
@@ -109,6 +115,7 @@ FloatImage Renderer::readAttachment(Attachment a) const {
     RenderTargets const& t = impl_->targets;
     if (t.empty()) return {};
     int const albedoIndex = colorAttachmentIndex(layoutDesc(t.gbuffer.layout), GBufferSlot::AlbedoSpec);
+    int const emissiveIndex = colorAttachmentIndex(layoutDesc(t.gbuffer.layout), GBufferSlot::Emissive);
     switch (a) {
         case Attachment::Position:
         case Attachment::Normal: {
@@ -119,12 +126,20 @@ FloatImage Renderer::readAttachment(Attachment a) const {
         case Attachment::AlbedoSpec:
             return readFramebuffer(t.gbuffer.fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + albedoIndex), t.width, t.height,
                                    4);
+        case Attachment::Emissive:
+            return readFramebuffer(t.gbuffer.fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + emissiveIndex), t.width, t.height,
+                                   4);
         case Attachment::Depth:
             return readFramebuffer(t.gbuffer.fbo.id(), GL_NONE, t.width, t.height, 1);
         case Attachment::Stencil:
             return readStencil(t.gbuffer.fbo.id(), t.width, t.height);
         case Attachment::Lighting:
             return readFramebuffer(t.litFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
+        case Attachment::DiffuseLight:
+        case Attachment::SpecularLight:
+            return readFramebuffer(t.splitFbo.id(),
+                                   a == Attachment::DiffuseLight ? GL_COLOR_ATTACHMENT0 : GL_COLOR_ATTACHMENT1, t.width,
+                                   t.height, 4);
         case Attachment::Coverage:
             return readFramebuffer(t.coverageFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 2);
         case Attachment::Final:
@@ -164,6 +179,8 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
               s.rawNormal);
     readColor(t.gbuffer.fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + colorAttachmentIndex(desc, GBufferSlot::AlbedoSpec)),
               s.albedoSpec);
+    readColor(t.gbuffer.fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + colorAttachmentIndex(desc, GBufferSlot::Emissive)),
+              s.emissiveAo);
     readColor(t.litFbo.id(), GL_COLOR_ATTACHMENT0, s.lighting);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, t.gbuffer.fbo.id());
     glReadPixels(x, glY, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &s.depth);

@@ -15,9 +15,15 @@
 #define BIND_MATERIAL_BASE_COLOR 0  // sampler uBaseColorTex
 #define BIND_MATERIAL_NORMAL 1      // sampler uNormalTex
 #define BIND_MATERIAL_SPECULAR 2    // sampler uSpecularTex
+#define BIND_GBUFFER_EMISSIVE 8     // sampler uEmissiveAo
+#define BIND_MATERIAL_EMISSIVE 9    // sampler uEmissiveTex
+#define BIND_MATERIAL_OCCLUSION 10  // sampler uOcclusionTex
+#define BIND_DIFFUSE_LIGHT 11       // sampler uDiffuseLight
+#define BIND_SPECULAR_LIGHT 12      // sampler uSpecularLight
 // Image units of the tiled compute pass (declared with layout(binding = ...) in the shader).
 #define BIND_IMAGE_LIGHTING 0
 #define BIND_IMAGE_COVERAGE 1
+#define BIND_IMAGE_SPECULAR_LIGHT 2  // accumulation split: the specular target (image 0 the diffuse one)
 // Storage buffers of the clustered passes (cluster_build.comp writes, cluster_shade.comp reads).
 #define BIND_SSBO_CLUSTER_COUNTS 0
 #define BIND_SSBO_CLUSTER_LIGHTS 1

@@ -5,11 +5,14 @@
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 #include "gbuffer_read.glsl"
+#include "surface_terms.glsl"
+#include "light_accumulation.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(rgba16f, binding = BIND_IMAGE_LIGHTING) uniform writeonly image2D uLightingImage;
 layout(rg32f, binding = BIND_IMAGE_COVERAGE) uniform writeonly image2D uCoverageImage;
+layout(rgba16f, binding = BIND_IMAGE_SPECULAR_LIGHT) uniform writeonly image2D uSpecularImage;  // split only
 layout(std430, binding = BIND_SSBO_CLUSTER_COUNTS) readonly buffer ClusterCounts { uint clusterCount[]; };
 layout(std430, binding = BIND_SSBO_CLUSTER_LIGHTS) readonly buffer ClusterLights { uint clusterLight[]; };
 
@@ -25,11 +28,11 @@ uniform float uFar;
 uniform bool uShade;          // write the lit image
 uniform bool uWriteCoverage;  // write x = lights in the cluster's list, y = lights that lit the pixel
 
-void addLight(int i, vec3 pos, vec3 n, vec4 as, inout vec3 color, inout float lit) {
+void addLight(int i, vec3 pos, vec3 n, vec4 as, inout LightSum color, inout float lit) {
     vec4 pr = texelFetch(uLights, i * 4);
     if (!(distance(pr.xyz, pos) < pr.w)) return;
     Light l = fetchLight(i);
-    color += shadeLight(l, pos, n, as.rgb, as.a);
+    accumulateLight(color, l, pos, n, as.a);
     // "Lit" as in light_volume.frag: the light reaches a surface that faces it.
     if (uWriteCoverage && any(greaterThan(shadeLight(l, pos, n, vec3(1.0), 1.0), vec3(0.0)))) lit += 1.0;
 }
@@ -40,13 +43,16 @@ void main() {
     vec3 pos;
     if (!gbufferPosition(px, pos)) {
         if (uShade) imageStore(uLightingImage, px, vec4(0.0));
+        if (uShade && uSplitAccumulation) imageStore(uSpecularImage, px, vec4(0.0));
         if (uWriteCoverage) imageStore(uCoverageImage, px, vec4(0.0));
         return;
     }
     vec3 n = gbufferNormal(px);
     vec4 as = gbufferAlbedoSpec(px);
-    vec3 color = uAmbient * as.rgb;
-    color += shadeGlobalLights(pos, n, as.rgb, as.a);  // directional: in no cluster list
+    vec4 ea = gbufferEmissiveAo(px);
+    vec3 surface = surfaceTerms(uAmbient, as.rgb, ea.a, ea.rgb);
+    LightSum color = noLight();  // the pixel's light sums (light_accumulation.glsl)
+    accumulateGlobalLights(color, pos, n, as.a);  // directional: in no cluster list
     float lit = 0.0;
     float depth = -(uView * vec4(pos, 1.0)).z;
     int slice = clamp(int(floor(log(depth / uNear) / log(uFar / uNear) * float(uGrid.z))), 0, uGrid.z - 1);
@@ -59,6 +65,7 @@ void main() {
         // Over the cap: the list is incomplete, so every light is tried (exact, slower).
         for (int i = 0; i < uLightCount; ++i) addLight(i, pos, n, as, color, lit);
     }
-    if (uShade) imageStore(uLightingImage, px, vec4(color, 1.0));
+    if (uShade) imageStore(uLightingImage, px, accumulationTarget0(color, surface, as.rgb));
+    if (uShade && uSplitAccumulation) imageStore(uSpecularImage, px, vec4(color.specular, 1.0));
     if (uWriteCoverage) imageStore(uCoverageImage, px, vec4(float(count), lit, 0.0, 0.0));
 }

@@ -5,6 +5,7 @@
 #include "material.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
+#include "surface_terms.glsl"
 
 in vec3 vWorldPos;
 in vec3 vNormal;
@@ -21,7 +22,7 @@ void main() {
     if (uAlphaMask && base.a < uAlphaCutoff) discard;
     vec3 n = materialNormal(vNormal, vTangent, vUV, gl_FrontFacing);
     float spec = materialSpecular(vUV);
-    vec3 color = uAmbient * base.rgb;
+    vec3 color = surfaceTerms(uAmbient, base.rgb, materialOcclusion(vUV), materialEmissive(vUV));
     color += shadeGlobalLights(vWorldPos, n, base.rgb, spec);  // directional lights
     for (int i = 0; i < uLightCount; ++i) {
         vec4 pr = texelFetch(uLights, i * 4);

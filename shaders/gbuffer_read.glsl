@@ -7,6 +7,7 @@
 uniform sampler2D uPosition;
 uniform sampler2D uNormal;
 uniform sampler2D uAlbedoSpec;
+uniform sampler2D uEmissiveAo;    // emitted radiance rgb, ambient occlusion a
 uniform sampler2D uDepth;         // the G-buffer's depth (window space, 1 = background)
 uniform mat4 uInverseViewProj;  // for layouts that rebuild position from depth
 
@@ -31,16 +32,21 @@ vec3 gbufferNormal(ivec2 px) { return decodeNormal(texelFetch(uNormal, px, 0)); 
 // Linear albedo (rgb) and specular intensity (a) at px.
 vec4 gbufferAlbedoSpec(ivec2 px) { return texelFetch(uAlbedoSpec, px, 0); }
 
+// Emitted radiance (rgb) and ambient occlusion (a) at px.
+vec4 gbufferEmissiveAo(ivec2 px) { return texelFetch(uEmissiveAo, px, 0); }
+
 // Colour attachment `index` of the layout exactly as stored (the order of core/gbuffer_layout.h);
 // zero past the layout's last one.
 vec4 gbufferRawAttachment(ivec2 px, int index) {
 #ifdef GBUFFER_POSITION_FROM_DEPTH
     if (index == 0) return texelFetch(uNormal, px, 0);
     if (index == 1) return texelFetch(uAlbedoSpec, px, 0);
+    if (index == 2) return texelFetch(uEmissiveAo, px, 0);
 #else
     if (index == 0) return texelFetch(uPosition, px, 0);
     if (index == 1) return texelFetch(uNormal, px, 0);
     if (index == 2) return texelFetch(uAlbedoSpec, px, 0);
+    if (index == 3) return texelFetch(uEmissiveAo, px, 0);
 #endif
     return vec4(0.0);
 }

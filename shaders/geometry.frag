@@ -1,5 +1,6 @@
 // Geometry pass: writes the surface into the G-buffer in the current layout's encoding
-// (core/gbuffer_layout.h: world position unless rebuilt from depth, the normal, albedo/specular).
+// (core/gbuffer_layout.h: world position unless rebuilt from depth, the normal, albedo/specular,
+// emissive/occlusion).
 #version 330 core
 #include "bindings.glsl"
 #include "material.glsl"
@@ -13,10 +14,12 @@ in vec4 vTangent;
 #ifdef GBUFFER_POSITION_FROM_DEPTH
 layout(location = 0) out vec4 gNormal;      // encodeNormal(world normal)
 layout(location = 1) out vec4 gAlbedoSpec;  // rgb linear albedo, a = specular intensity
+layout(location = 2) out vec4 gEmissiveAo;  // rgb emitted radiance, a = ambient occlusion
 #else
 layout(location = 0) out vec4 gPosition;    // xyz world position, w = 1 where geometry was drawn
 layout(location = 1) out vec4 gNormal;      // encodeNormal(world normal): xyz unit normal, w = 1
 layout(location = 2) out vec4 gAlbedoSpec;  // rgb linear albedo, a = specular intensity
+layout(location = 3) out vec4 gEmissiveAo;  // rgb emitted radiance, a = ambient occlusion
 #endif
 
 void main() {
@@ -27,4 +30,5 @@ void main() {
 #endif
     gNormal = encodeNormal(materialNormal(vNormal, vTangent, vUV, gl_FrontFacing));
     gAlbedoSpec = vec4(base.rgb, materialSpecular(vUV));
+    gEmissiveAo = vec4(materialEmissive(vUV), materialOcclusion(vUV));
 }

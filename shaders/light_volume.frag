@@ -6,9 +6,13 @@
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 #include "gbuffer_read.glsl"
+#include "light_accumulation.glsl"
 
 flat in int vLight;
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
+#ifndef COVERAGE
+layout(location = 1) out vec4 fragSpecular;  // split: specular light (no attachment in single frames)
+#endif
 
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
@@ -24,7 +28,7 @@ void main() {
     // GPUs) run it before the depth test, and in the stencil cull mode a discarded fragment
     // would skip the stencil reset and leave its mark for the next light.
     if (!inside) {
-        fragColor = vec4(0.0);
+        fragColor = fragSpecular = vec4(0.0);
         return;
     }
 #endif
@@ -34,6 +38,10 @@ void main() {
     fragColor = vec4(1.0, any(greaterThan(lit, vec3(0.0))) ? 1.0 : 0.0, 0.0, 0.0);
 #else
     vec4 as = gbufferAlbedoSpec(px);
-    fragColor = vec4(shadeLight(l, pos, gbufferNormal(px), as.rgb, as.a), 0.0);
+    LightSum sum = noLight();
+    accumulateLight(sum, l, pos, gbufferNormal(px), as.a);
+    // Blended additively: the surface terms came with the full-screen pass before the volumes.
+    fragColor = vec4(accumulationTarget0(sum, vec3(0.0), as.rgb).rgb, 0.0);
+    fragSpecular = vec4(sum.specular, 0.0);
 #endif
 }

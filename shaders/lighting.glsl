@@ -27,28 +27,47 @@ float spotConeFactor(Light l, vec3 L) {
     return t * t;
 }
 
-// Blinn-Phong diffuse + specular of light arriving from unit direction L with `radiance`.
-vec3 blinnPhong(vec3 L, vec3 radiance, vec3 p, vec3 n, vec3 albedo, float specular) {
+// Blinn-Phong of light arriving from unit direction L with `radiance`, before the material:
+// diffuse light N.L * radiance (the albedo multiplies it) and specular light
+// (N.H)^shininess * radiance (the specular intensity multiplies it). `accumulation: split` keeps
+// the two sums apart.
+void blinnPhongSplit(vec3 L, vec3 radiance, vec3 p, vec3 n, out vec3 diffuseLight, out vec3 specularLight) {
     vec3 V = normalize(uViewPos - p);
     vec3 H = normalize(L + V);
     float diff = max(dot(n, L), 0.0);
     float spec = diff > 0.0 ? pow(max(dot(n, H), 0.0), uShininess) : 0.0;
-    return (albedo * diff + vec3(specular * spec)) * radiance;
+    diffuseLight = diff * radiance;
+    specularLight = spec * radiance;
 }
 
-// One point or spot light at a surface point.
-vec3 shadeLight(Light l, vec3 p, vec3 n, vec3 albedo, float specular) {
+// One point or spot light at a surface point, as the two sums.
+void shadeLightSplit(Light l, vec3 p, vec3 n, out vec3 diffuseLight, out vec3 specularLight) {
+    diffuseLight = specularLight = vec3(0.0);
     vec3 toLight = l.position - p;
     float d = length(toLight);
     float att = windowedAttenuation(l, d);
-    if (att <= 0.0) return vec3(0.0);
+    if (att <= 0.0) return;
     vec3 L = toLight / d;
     float cone = spotConeFactor(l, L);
-    if (cone <= 0.0) return vec3(0.0);
-    return blinnPhong(L, l.color * (att * cone), p, n, albedo, specular);
+    if (cone <= 0.0) return;
+    blinnPhongSplit(L, l.color * (att * cone), p, n, diffuseLight, specularLight);
 }
 
-// One directional light: from -direction everywhere, no attenuation.
+// One directional light, as the two sums: from -direction everywhere, no attenuation.
+void shadeDirectionalSplit(Light l, vec3 p, vec3 n, out vec3 diffuseLight, out vec3 specularLight) {
+    blinnPhongSplit(-l.direction, l.color, p, n, diffuseLight, specularLight);
+}
+
+// One point or spot light at a surface point, with its material.
+vec3 shadeLight(Light l, vec3 p, vec3 n, vec3 albedo, float specular) {
+    vec3 diffuseLight, specularLight;
+    shadeLightSplit(l, p, n, diffuseLight, specularLight);
+    return albedo * diffuseLight + specular * specularLight;
+}
+
+// One directional light at a surface point, with its material.
 vec3 shadeDirectional(Light l, vec3 p, vec3 n, vec3 albedo, float specular) {
-    return blinnPhong(-l.direction, l.color, p, n, albedo, specular);
+    vec3 diffuseLight, specularLight;
+    shadeDirectionalSplit(l, p, n, diffuseLight, specularLight);
+    return albedo * diffuseLight + specular * specularLight;
 }

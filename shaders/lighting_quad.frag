@@ -4,25 +4,34 @@
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 #include "gbuffer_read.glsl"
+#include "surface_terms.glsl"
+#include "light_accumulation.glsl"
 
 uniform vec3 uAmbient;
 uniform int uLightCount;
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;     // the lit value; split: diffuse light
+layout(location = 1) out vec4 fragSpecular;  // split: specular light (no attachment in single frames)
 
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec3 pos;
-    if (!gbufferPosition(px, pos)) { fragColor = vec4(0.0); return; }  // background: nothing was drawn
+    if (!gbufferPosition(px, pos)) {  // background: nothing was drawn
+        fragColor = fragSpecular = vec4(0.0);
+        return;
+    }
     vec3 n = gbufferNormal(px);
     vec4 as = gbufferAlbedoSpec(px);
-    vec3 color = uAmbient * as.rgb;
-    color += shadeGlobalLights(pos, n, as.rgb, as.a);  // directional lights: no volume, every pixel
+    vec4 ea = gbufferEmissiveAo(px);
+    vec3 surface = surfaceTerms(uAmbient, as.rgb, ea.a, ea.rgb);
+    LightSum sum = noLight();
+    accumulateGlobalLights(sum, pos, n, as.a);  // directional lights: no volume, every pixel
     for (int i = 0; i < uLightCount; ++i) {
         // Distance test on the first texel alone: most lights are out of reach of most pixels.
         vec4 pr = texelFetch(uLights, i * 4);
         if (distance(pr.xyz, pos) >= pr.w) continue;
-        color += shadeLight(fetchLight(i), pos, n, as.rgb, as.a);
+        accumulateLight(sum, fetchLight(i), pos, n, as.a);
     }
-    fragColor = vec4(color, 1.0);
+    fragColor = accumulationTarget0(sum, surface, as.rgb);
+    fragSpecular = vec4(sum.specular, 1.0);
 }

@@ -9,11 +9,14 @@
 #include "light_fetch.glsl"
 #include "gbuffer_read.glsl"
 #include "tile_bin_read.glsl"
+#include "surface_terms.glsl"
+#include "light_accumulation.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(rgba16f, binding = BIND_IMAGE_LIGHTING) uniform writeonly image2D uLightingImage;
 layout(rg32f, binding = BIND_IMAGE_COVERAGE) uniform writeonly image2D uCoverageImage;
+layout(rgba16f, binding = BIND_IMAGE_SPECULAR_LIGHT) uniform writeonly image2D uSpecularImage;  // split only
 
 uniform int uLightCount;
 uniform vec3 uAmbient;
@@ -56,11 +59,11 @@ bool lightTouchesTile(int index, float minDepth, float maxDepth, vec3 left, vec3
 
 // Adds light `index` at the pixel: lights in the tile's list that miss this pixel's surface cost
 // one fetch (they would add exactly zero).
-void addLight(int index, vec3 pos, vec3 n, vec4 as, inout vec3 color, inout float lit) {
+void addLight(int index, vec3 pos, vec3 n, vec4 as, inout LightSum sum, inout float lit) {
     vec4 positionRadius = texelFetch(uLights, index * 4);
     if (!(distance(positionRadius.xyz, pos) < positionRadius.w)) return;
     Light l = fetchLight(index);
-    color += shadeLight(l, pos, n, as.rgb, as.a);
+    accumulateLight(sum, l, pos, n, as.a);
     // "Lit" as in light_volume.frag: the light reaches a surface that faces it.
     if (uWriteCoverage && any(greaterThan(shadeLight(l, pos, n, vec3(1.0), 1.0), vec3(0.0)))) lit += 1.0;
 }
@@ -111,13 +114,15 @@ void main() {
     }
 
     vec3 n = vec3(0.0);
-    vec4 as = vec4(0.0);
+    vec4 as = vec4(0.0), ea = vec4(0.0);
     if (geometry) {
         n = gbufferNormal(px);
         as = gbufferAlbedoSpec(px);
+        ea = gbufferEmissiveAo(px);
     }
-    vec3 color = uAmbient * as.rgb;
-    if (geometry) color += shadeGlobalLights(pos, n, as.rgb, as.a);  // directional: in no tile list
+    vec3 surface = surfaceTerms(uAmbient, as.rgb, ea.a, ea.rgb);
+    LightSum sum = noLight();
+    if (geometry) accumulateGlobalLights(sum, pos, n, as.a);  // directional: in no tile list
     float lit = 0.0;
     uint tileCount = 0u;
     int tile = int(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x);
@@ -131,7 +136,7 @@ void main() {
         int kept = sortKeptLights();
         tileCount = uint(kept);
         // --- shading: the tile's lights in ascending index order ---
-        for (int k = 0; geometry && k < kept; ++k) addLight(int(sSorted[k]), pos, n, as, color, lit);
+        for (int k = 0; geometry && k < kept; ++k) addLight(int(sSorted[k]), pos, n, as, sum, lit);
     }
     // Over the bins' cap: every light, in chunks (the same test, the same order).
     for (int base = 0; binned < 0 && base < uLightCount; base += CHUNK_LIGHTS) {
@@ -165,7 +170,7 @@ void main() {
                 while (bits != 0u) {
                     int b = findLSB(bits);
                     bits &= bits - 1u;
-                    addLight(base + w * 32 + b, pos, n, as, color, lit);
+                    addLight(base + w * 32 + b, pos, n, as, sum, lit);
                 }
             }
         }
@@ -175,6 +180,7 @@ void main() {
         barrier();
     }
     if (!onScreen) return;
-    if (uShade) imageStore(uLightingImage, px, geometry ? vec4(color, 1.0) : vec4(0.0));
+    if (uShade) imageStore(uLightingImage, px, geometry ? accumulationTarget0(sum, surface, as.rgb) : vec4(0.0));
+    if (uShade && uSplitAccumulation) imageStore(uSpecularImage, px, geometry ? vec4(sum.specular, 1.0) : vec4(0.0));
     if (uWriteCoverage) imageStore(uCoverageImage, px, vec4(float(tileCount), lit, 0.0, 0.0));
 }

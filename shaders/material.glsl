@@ -11,6 +11,12 @@ uniform float uSpecularFactor;
 uniform bool uAlphaMask;
 uniform float uAlphaCutoff;
 uniform bool uUseNormalMaps;
+uniform vec3 uEmissiveFactor;
+uniform sampler2D uEmissiveTex;  // sRGB: sampled as linear
+uniform bool uHasEmissiveTex;
+uniform sampler2D uOcclusionTex;
+uniform bool uHasOcclusionTex;
+uniform float uOcclusionStrength;
 
 // Per texture: which coordinate set it reads (0 = TEXCOORD_0, 1 = TEXCOORD_1) and its
 // KHR_texture_transform matrix (renderer/scene/texture_transform.h; identity without one).
@@ -20,6 +26,10 @@ uniform int uNormalTexCoord;
 uniform mat3 uNormalUvTransform;
 uniform int uSpecularTexCoord;
 uniform mat3 uSpecularUvTransform;
+uniform int uEmissiveTexCoord;
+uniform mat3 uEmissiveUvTransform;
+uniform int uOcclusionTexCoord;
+uniform mat3 uOcclusionUvTransform;
 
 // TEXCOORD_1 from mesh.vert. The passes hand the functions below TEXCOORD_0 (vUV) and each
 // texture picks its own set here, so a second set changes no pass's shader.
@@ -41,6 +51,20 @@ float materialSpecular(vec2 uv) {
     float s = uSpecularFactor;
     if (uHasSpecularTex) s *= texture(uSpecularTex, materialTexCoord(uSpecularTexCoord, uSpecularUvTransform, uv)).r;
     return s;
+}
+
+// Emitted radiance: emissiveFactor times the emissive texture (glTF 2.0).
+vec3 materialEmissive(vec2 uv) {
+    vec3 e = uEmissiveFactor;
+    if (uHasEmissiveTex) e *= texture(uEmissiveTex, materialTexCoord(uEmissiveTexCoord, uEmissiveUvTransform, uv)).rgb;
+    return e;
+}
+
+// Ambient occlusion: 1 + strength * (texture.r - 1) (glTF 2.0), 1 without a texture.
+float materialOcclusion(vec2 uv) {
+    if (!uHasOcclusionTex) return 1.0;
+    float ao = texture(uOcclusionTex, materialTexCoord(uOcclusionTexCoord, uOcclusionUvTransform, uv)).r;
+    return 1.0 + uOcclusionStrength * (ao - 1.0);
 }
 
 // World-space shading normal: the interpolated normal, bent by the normal map through TBN.

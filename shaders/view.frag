@@ -8,6 +8,8 @@
 
 uniform sampler2D uLighting;
 uniform sampler2D uCoverage;
+uniform sampler2D uDiffuseLight;   // accumulation split's targets
+uniform sampler2D uSpecularLight;
 
 uniform int uView;
 uniform int uTonemap;
@@ -119,6 +121,11 @@ void main() {
     case VIEW_RAW0: v = gbufferRawAttachment(px, 0); break;
     case VIEW_RAW1: v = gbufferRawAttachment(px, 1); break;
     case VIEW_RAW2: v = gbufferRawAttachment(px, 2); break;
+    case VIEW_RAW3: v = gbufferRawAttachment(px, 3); break;
+    case VIEW_EMISSIVE: v = vec4(gbufferEmissiveAo(px).rgb, 1.0); break;
+    case VIEW_OCCLUSION: v = vec4(gbufferEmissiveAo(px).aaa, 1.0); break;
+    case VIEW_DIFFUSE_LIGHT: v = texelFetch(uDiffuseLight, px, 0); break;
+    case VIEW_SPECULAR_LIGHT: v = texelFetch(uSpecularLight, px, 0); break;
     case VIEW_ALBEDO: v = texelFetch(uAlbedoSpec, px, 0); break;
     case VIEW_SPECULAR: v = vec4(texelFetch(uAlbedoSpec, px, 0).aaa, 1.0); break;
     case VIEW_DEPTH: v = vec4(vec3(texelFetch(uDepth, px, 0).r), 1.0); break;

@@ -16,7 +16,12 @@
 #define VIEW_RAW0 10
 #define VIEW_RAW1 11
 #define VIEW_RAW2 12
-#define VIEW_CLUSTER_SLICES 13
+#define VIEW_RAW3 13
+#define VIEW_EMISSIVE 14
+#define VIEW_OCCLUSION 15
+#define VIEW_DIFFUSE_LIGHT 16
+#define VIEW_SPECULAR_LIGHT 17
+#define VIEW_CLUSTER_SLICES 18
 // Width in texels of each slice's swatch in the depth-slice legend (kSliceSwatchTexels).
 #define SLICE_SWATCH 12
 

@@ -43,24 +43,28 @@ std::vector<glm::vec3> sphereDirections(int n) {
 TEST(GBufferLayoutTest, TableMatchesTheNamesAndTheIssuesByteBudgets) {
     ASSERT_EQ(kGBufferLayouts.size(), kGBufferLayoutNames.size());
     for (std::size_t i = 0; i < kGBufferLayouts.size(); ++i) EXPECT_EQ(kGBufferLayouts[i].name, kGBufferLayoutNames[i]);
-    // classic: RGBA16F position 8 + RGBA16F normal 8 + RGBA8 4 + DEPTH32F_STENCIL8 8 (a 64-bit texel).
-    EXPECT_EQ(layoutBytesPerPixel(layoutDesc(GBufferLayout::Classic)), 28);
-    // The issue's budget for packed: at most 12 bytes (RG16 4 + RGBA8 4 + DEPTH24_STENCIL8 4).
-    EXPECT_EQ(layoutBytesPerPixel(layoutDesc(GBufferLayout::Packed)), 12);
-    EXPECT_EQ(layoutBytesPerPixel(layoutDesc(GBufferLayout::Naive8)), 12);
-    EXPECT_EQ(layoutBytesPerPixel(layoutDesc(GBufferLayout::Rgb10a2)), 12);
+    // classic: RGBA16F position 8 + RGBA16F normal 8 + RGBA8 4 + RGBA16F emissive_ao 8 +
+    // DEPTH32F_STENCIL8 8 (a 64-bit texel).
+    EXPECT_EQ(layoutBytesPerPixel(layoutDesc(GBufferLayout::Classic)), 36);
+    // packed was 12 bytes (RG16 4 + RGBA8 4 + DEPTH24_STENCIL8 4) with no spare channel; emissive and
+    // occlusion take one more RGBA8 (docs/gbuffer_layouts.md).
+    EXPECT_EQ(layoutBytesPerPixel(layoutDesc(GBufferLayout::Packed)), 16);
+    EXPECT_EQ(layoutBytesPerPixel(layoutDesc(GBufferLayout::Naive8)), 16);
+    EXPECT_EQ(layoutBytesPerPixel(layoutDesc(GBufferLayout::Rgb10a2)), 16);
     EXPECT_TRUE(layoutDesc(GBufferLayout::Classic).storesPosition);
     EXPECT_FALSE(layoutDesc(GBufferLayout::Packed).storesPosition);
     EXPECT_EQ(colorAttachmentIndex(layoutDesc(GBufferLayout::Classic), GBufferSlot::AlbedoSpec), 2);
     EXPECT_EQ(colorAttachmentIndex(layoutDesc(GBufferLayout::Packed), GBufferSlot::AlbedoSpec), 1);
     EXPECT_EQ(colorAttachmentIndex(layoutDesc(GBufferLayout::Packed), GBufferSlot::Position), -1);
+    EXPECT_EQ(colorAttachmentIndex(layoutDesc(GBufferLayout::Classic), GBufferSlot::Emissive), 3);
+    EXPECT_EQ(colorAttachmentIndex(layoutDesc(GBufferLayout::Packed), GBufferSlot::Emissive), 2);
     EXPECT_EQ(layoutDesc(GBufferLayout::Packed).depthFormat(), TexelFormat::Depth24Stencil8);
 }
 
 TEST(GBufferLayoutTest, MegabytesAtCommonSizes) {
-    // 28 B x 1920 x 1080 = 58.0608 MB; 12 B x 3840 x 2160 = 99.5328 MB (10^6 bytes).
-    EXPECT_NEAR(layoutMegabytes(layoutDesc(GBufferLayout::Classic), 1920, 1080), 58.0608, 1e-9);
-    EXPECT_NEAR(layoutMegabytes(layoutDesc(GBufferLayout::Packed), 3840, 2160), 99.5328, 1e-9);
+    // 36 B x 1920 x 1080 = 74.6496 MB; 16 B x 3840 x 2160 = 132.7104 MB (10^6 bytes).
+    EXPECT_NEAR(layoutMegabytes(layoutDesc(GBufferLayout::Classic), 1920, 1080), 74.6496, 1e-9);
+    EXPECT_NEAR(layoutMegabytes(layoutDesc(GBufferLayout::Packed), 3840, 2160), 132.7104, 1e-9);
     EXPECT_EQ(layoutMegabytes(layoutDesc(GBufferLayout::Packed), 0, 0), 0.0);
 }
 

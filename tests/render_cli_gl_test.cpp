@@ -111,6 +111,7 @@ TEST(RenderCommand, BadArgumentsExitWithCodeTwoAndOneSentence) {
         {{"render", "--out", out, "--blit", "sideways"}, "--blit"},
         {{"render", "--out", out, "--mode", "raytraced"}, "--mode"},
         {{"render", "--out", out, "--layout", "zip"}, "--layout"},
+        {{"render", "--out", out, "--accumulation", "double"}, "--accumulation"},
         {{"render", "--out", out, "--view", "xray"}, "--view"},
         {{"render", "--out", "/proc/gbuffer-lab-cannot-write-here"}, "/proc/gbuffer-lab-cannot-write-here"},
         {{"render"}, "--out"},
@@ -126,13 +127,14 @@ TEST(RenderCommand, LayoutWritesItsRawAttachmentsAndTheDecodedInputs) {
     std::string const out = test::freshTempDir("render_layout_packed");
     auto const r = runGbufferLab({"render", "--out", out, "--size", "64x36", "--layout", "packed"});
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (char const* f : {"raw_normal_oct.exr", "raw_albedo_spec.png", "raw_depth.exr", "position.exr", "normal.exr"})
+    for (char const* f : {"raw_normal_oct.exr", "raw_albedo_spec.png", "raw_emissive_ao.png", "raw_depth.exr",
+                          "position.exr", "normal.exr", "emissive.exr"})
         EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
     EXPECT_FALSE(fs::exists(out + "/raw_position.exr"));
     std::ifstream statsFile(out + "/stats.json");
     auto const stats = nlohmann::json::parse(statsFile);
     EXPECT_EQ(stats["layout"], "packed");
-    EXPECT_EQ(stats["gbuffer_bytes_per_pixel"], 12);
+    EXPECT_EQ(stats["gbuffer_bytes_per_pixel"], 16);  // RG16 + RGBA8 + RGBA8 emissive_ao + DEPTH24_STENCIL8
     // normal.exr is decoded: unit length wherever geometry was drawn (w = 1).
     auto const normal = readImage(out + "/normal.exr");
     ASSERT_TRUE(normal);
@@ -146,6 +148,16 @@ TEST(RenderCommand, LayoutWritesItsRawAttachmentsAndTheDecodedInputs) {
         EXPECT_NEAR(len, 1.0f, 1e-3f);
     }
     EXPECT_GT(drawn, 64 * 36 / 2);
+}
+
+TEST(RenderCommand, AccumulationSplitWritesBothLightTargets) {
+    std::string const out = test::freshTempDir("render_accumulation_split");
+    auto const r = runGbufferLab({"render", "--out", out, "--size", "64x36", "--accumulation", "split"});
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (char const* f : {"diffuse_light.exr", "specular_light.exr", "lighting.exr"})
+        EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
+    std::ifstream statsFile(out + "/stats.json");
+    EXPECT_EQ(nlohmann::json::parse(statsFile)["accumulation"], "split");
 }
 
 TEST(RenderCommand, NormalMapsBendTheStoredNormals) {

@@ -142,6 +142,7 @@ void expectEqual(Session const& a, Session const& b) {
     EXPECT_EQ(p.normalMaps, q.normalMaps);
     EXPECT_EQ(p.wireframesSelectedOnly, q.wireframesSelectedOnly);
     EXPECT_EQ(p.layout, q.layout);
+    EXPECT_EQ(p.accumulation, q.accumulation);
     expectSame(p.volumeScale, q.volumeScale, "volume_scale");
     expectSame(p.ambient, q.ambient, "ambient");
     expectSame(p.exposure, q.exposure, "exposure");
@@ -233,6 +234,25 @@ TEST(Session, GBufferLayoutIsSavedAndOldFilesLoadAsClassic) {
     SessionLoad const bad = parseSession(j.dump(), "s.json");
     EXPECT_FALSE(bad.session);
     EXPECT_NE(bad.error.find("pipeline.layout"), std::string::npos) << bad.error;
+}
+
+TEST(Session, AccumulationIsSavedAndOldFilesLoadAsSingle) {
+    Session s;
+    s.pipeline.accumulation = LightAccumulation::Split;
+    json j = json::parse(sessionToJson(s));
+    EXPECT_EQ(j["pipeline"]["accumulation"], "split");
+    SessionLoad const back = parseSession(j.dump(), "s.json");
+    ASSERT_TRUE(back.session) << back.error;
+    EXPECT_EQ(back.session->pipeline.accumulation, LightAccumulation::Split);
+    // A file written before the split targets existed has no pipeline.accumulation.
+    j["pipeline"].erase("accumulation");
+    SessionLoad const old = parseSession(j.dump(), "s.json");
+    ASSERT_TRUE(old.session) << old.error;
+    EXPECT_EQ(old.session->pipeline.accumulation, LightAccumulation::Single);
+    j["pipeline"]["accumulation"] = "double";
+    SessionLoad const bad = parseSession(j.dump(), "s.json");
+    EXPECT_FALSE(bad.session);
+    EXPECT_NE(bad.error.find("pipeline.accumulation"), std::string::npos) << bad.error;
 }
 
 TEST(Session, LightNameIsOptional) {

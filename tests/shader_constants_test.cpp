@@ -110,6 +110,12 @@ TEST(ShaderConstants, GeneratedBindingsHeaderMatchesBindingsGlsl) {
                                          {"BIND_MATERIAL_BASE_COLOR", slot::BIND_MATERIAL_BASE_COLOR},
                                          {"BIND_MATERIAL_NORMAL", slot::BIND_MATERIAL_NORMAL},
                                          {"BIND_MATERIAL_SPECULAR", slot::BIND_MATERIAL_SPECULAR},
+                                         {"BIND_GBUFFER_EMISSIVE", slot::BIND_GBUFFER_EMISSIVE},
+                                         {"BIND_MATERIAL_EMISSIVE", slot::BIND_MATERIAL_EMISSIVE},
+                                         {"BIND_MATERIAL_OCCLUSION", slot::BIND_MATERIAL_OCCLUSION},
+                                         {"BIND_DIFFUSE_LIGHT", slot::BIND_DIFFUSE_LIGHT},
+                                         {"BIND_SPECULAR_LIGHT", slot::BIND_SPECULAR_LIGHT},
+                                         {"BIND_IMAGE_SPECULAR_LIGHT", slot::BIND_IMAGE_SPECULAR_LIGHT},
                                          {"BIND_IMAGE_LIGHTING", slot::BIND_IMAGE_LIGHTING},
                                          {"BIND_IMAGE_COVERAGE", slot::BIND_IMAGE_COVERAGE},
                                          {"BIND_SSBO_CLUSTER_COUNTS", slot::BIND_SSBO_CLUSTER_COUNTS},
@@ -117,8 +123,9 @@ TEST(ShaderConstants, GeneratedBindingsHeaderMatchesBindingsGlsl) {
                                          {"BIND_SSBO_TILE_BIN_COUNTS", slot::BIND_SSBO_TILE_BIN_COUNTS},
                                          {"BIND_SSBO_TILE_BIN_LIGHTS", slot::BIND_SSBO_TILE_BIN_LIGHTS}};
     EXPECT_EQ(all, cpp);
-    // Each sampler uniform has exactly one unit, and the three G-buffer samplers, the lights and
-    // every texture the view pass reads are distinct (they are bound together).
+    // Each sampler uniform has exactly one unit, and the G-buffer samplers, the lights, every
+    // texture the view pass reads and the combine pass's light targets are distinct (they are
+    // bound together); so are the forward pass's material textures and the lights.
     std::set<std::string> names;
     for (auto const& s : slot::kSamplerSlots) EXPECT_TRUE(names.insert(s.uniform).second) << s.uniform;
     std::ifstream f(std::string(GBL_SOURCE_DIR) + "/shaders/bindings.glsl");
@@ -129,8 +136,13 @@ TEST(ShaderConstants, GeneratedBindingsHeaderMatchesBindingsGlsl) {
     std::set<int> const together{
         slot::BIND_GBUFFER_POSITION, slot::BIND_GBUFFER_NORMAL,   slot::BIND_GBUFFER_ALBEDO_SPEC,
         slot::BIND_LIGHTS,           slot::BIND_VOLUME_INSTANCES, slot::BIND_DEPTH,
-        slot::BIND_LIGHTING,         slot::BIND_COVERAGE};
-    EXPECT_EQ(together.size(), 8u);
+        slot::BIND_LIGHTING,         slot::BIND_COVERAGE,         slot::BIND_GBUFFER_EMISSIVE,
+        slot::BIND_DIFFUSE_LIGHT,    slot::BIND_SPECULAR_LIGHT};
+    EXPECT_EQ(together.size(), 11u);
+    std::set<int> const forward{slot::BIND_MATERIAL_BASE_COLOR, slot::BIND_MATERIAL_NORMAL,
+                                slot::BIND_MATERIAL_SPECULAR,   slot::BIND_MATERIAL_EMISSIVE,
+                                slot::BIND_MATERIAL_OCCLUSION,  slot::BIND_LIGHTS};
+    EXPECT_EQ(forward.size(), 6u);
     // GL 3.3 guarantees 16 texture units per fragment stage.
     for (auto const& s : slot::kSamplerSlots) EXPECT_LT(s.unit, 16) << s.uniform;
 }

@@ -31,6 +31,13 @@ enum class Attachment {
     // filled only by a frame (or view) showing the heat map or the lights-per-tile view.
     Coverage,
     Final,  // RGBA8 display image: tonemapped, gamma-encoded, or the chosen debug view
+    // The G-buffer's emissive attachment: rgb = emitted radiance (linear), a = ambient occlusion
+    // (1 = unoccluded). RGBA16F in classic, RGBA8 in the other layouts.
+    Emissive,
+    // The accumulation targets of `accumulation: split` (RGBA16F): diffuse light (without albedo)
+    // and specular light; zero after a single-target frame.
+    DiffuseLight,
+    SpecularLight,
 };
 
 struct PassTiming {
@@ -54,6 +61,8 @@ struct FrameStats {
     // (a mode unavailable on this context runs quad), and then fallbackReason says why.
     LightingMode modeUsed = LightingMode::Quad;
     GBufferLayout layout = GBufferLayout::Classic;  // the G-buffer layout the frame used
+    // The accumulation that ran: split is refused in forward mode (fallbackReason says why).
+    LightAccumulation accumulationUsed = LightAccumulation::Single;
     std::string fallbackReason;
 };
 
@@ -64,6 +73,7 @@ struct PixelSample {
     glm::vec4 normal{0.0f};     // decoded unit normal
     glm::vec4 rawNormal{0.0f};  // the normal attachment as stored (the layout's encoding)
     glm::vec4 albedoSpec{0.0f};
+    glm::vec4 emissiveAo{0.0f};             // emitted radiance rgb, ambient occlusion a
     float depth = 1.0f;                     // window-space depth 0..1
     unsigned stencil = 0;                   // the G-buffer's stencil bits 0..255
     glm::vec3 reconstructedPosition{0.0f};  // world position rebuilt from depth and the camera

@@ -47,7 +47,8 @@ enum class NormalEncoding {
 };
 
 // Which texture of the G-buffer an attachment is.
-enum class GBufferSlot { Position, Normal, AlbedoSpec, Depth };
+// Emissive: rgb = the material's emitted radiance (linear), a = its ambient occlusion (docs/gbuffer_layouts.md).
+enum class GBufferSlot { Position, Normal, AlbedoSpec, Emissive, Depth };
 
 struct GBufferAttachmentDesc {
     GBufferSlot slot;
@@ -60,7 +61,7 @@ struct GBufferLayoutDesc {
     bool storesPosition;    // false: rebuilt from depth and the inverse view-projection
     NormalEncoding normalEncoding;
     // Colour attachments in draw-buffer order (location 0, 1, ...), then the depth-stencil.
-    std::array<GBufferAttachmentDesc, 4> attachmentArray;
+    std::array<GBufferAttachmentDesc, 5> attachmentArray;
     int attachmentCount;
 
     std::span<GBufferAttachmentDesc const> attachments() const {
@@ -73,7 +74,9 @@ struct GBufferLayoutDesc {
 };
 
 // The one table of layouts, in GBufferLayout order. Layouts that rebuild position use a 24-bit
-// depth so the whole G-buffer stays at 12 bytes a pixel; classic keeps today's 32-bit float depth.
+// depth; classic keeps a 32-bit float depth. Every layout stores emissive + occlusion in one more
+// attachment: RGBA16F in classic (4 bytes more than RGBA8, room for emission above 1), RGBA8 in the
+// three compact ones, which grow from 12 to 16 bytes a pixel (no spare channel holds three more values).
 inline constexpr std::array<GBufferLayoutDesc, 4> kGBufferLayouts{{
     {"classic",
      true,
@@ -81,29 +84,33 @@ inline constexpr std::array<GBufferLayoutDesc, 4> kGBufferLayouts{{
      {{{GBufferSlot::Position, "position", TexelFormat::RGBA16F},
        {GBufferSlot::Normal, "normal", TexelFormat::RGBA16F},
        {GBufferSlot::AlbedoSpec, "albedo_spec", TexelFormat::RGBA8},
+       {GBufferSlot::Emissive, "emissive_ao", TexelFormat::RGBA16F},
        {GBufferSlot::Depth, "depth", TexelFormat::Depth32FStencil8}}},
-     4},
+     5},
     {"packed",
      false,
      NormalEncoding::Octahedral,
      {{{GBufferSlot::Normal, "normal_oct", TexelFormat::RG16},
        {GBufferSlot::AlbedoSpec, "albedo_spec", TexelFormat::RGBA8},
+       {GBufferSlot::Emissive, "emissive_ao", TexelFormat::RGBA8},
        {GBufferSlot::Depth, "depth", TexelFormat::Depth24Stencil8}}},
-     3},
+     4},
     {"naive8",
      false,
      NormalEncoding::Biased,
      {{{GBufferSlot::Normal, "normal8", TexelFormat::RGBA8},
        {GBufferSlot::AlbedoSpec, "albedo_spec", TexelFormat::RGBA8},
+       {GBufferSlot::Emissive, "emissive_ao", TexelFormat::RGBA8},
        {GBufferSlot::Depth, "depth", TexelFormat::Depth24Stencil8}}},
-     3},
+     4},
     {"rgb10a2",
      false,
      NormalEncoding::Biased,
      {{{GBufferSlot::Normal, "normal10", TexelFormat::RGB10A2},
        {GBufferSlot::AlbedoSpec, "albedo_spec", TexelFormat::RGBA8},
+       {GBufferSlot::Emissive, "emissive_ao", TexelFormat::RGBA8},
        {GBufferSlot::Depth, "depth", TexelFormat::Depth24Stencil8}}},
-     3},
+     4},
 }};
 
 constexpr GBufferLayoutDesc const& layoutDesc(GBufferLayout l) {

@@ -17,6 +17,9 @@ enum class DepthCopy { Blit, Shader, Off };
 enum class Tonemap { Exposure, Reinhard, Clamp };
 // How the G-buffer stores a surface; each value has one description in core/gbuffer_layout.h.
 enum class GBufferLayout { Classic, Packed, Naive8, Rgb10a2 };
+// Where the lighting modes add their lights (docs/lighting.md, "Accumulation targets"): one lit
+// target, or diffuse and specular light in two targets that a combine pass finishes.
+enum class LightAccumulation { Single, Split };
 
 // What the final image shows. Values match the VIEW_* constants in shaders/view_constants.glsl
 // (shader_constants_test checks them).
@@ -36,9 +39,17 @@ enum class DebugView {
     Raw0 = 10,
     Raw1 = 11,
     Raw2 = 12,
+    Raw3 = 13,  // classic's fourth colour attachment (emissive_ao); zero in the others
+    // The emissive attachment decoded: emitted radiance (rgb), and ambient occlusion as grey.
+    Emissive = 14,
+    Occlusion = 15,
+    // The accumulation targets of `accumulation: split` (zero in single frames): sum of
+    // N.L * attenuation * colour, and of specular * (N.H)^shininess * attenuation * colour.
+    DiffuseLight = 16,
+    SpecularLight = 17,
     // Each pixel's exponential depth slice of the clustered grid (core/cluster_math.h), one
     // colour per slice (clusterSliceColor) with a swatch legend along the bottom.
-    ClusterSlices = 13,
+    ClusterSlices = 18,
 };
 
 struct PipelineSettings {
@@ -48,6 +59,7 @@ struct PipelineSettings {
     Tonemap tonemap = Tonemap::Exposure;
     DebugView view = DebugView::Final;
     GBufferLayout layout = GBufferLayout::Classic;
+    LightAccumulation accumulation = LightAccumulation::Single;
     bool lightCubes = true;
     bool volumeWireframes = false;
     bool wireframesSelectedOnly = false;  // the wireframes outline the selected light's volume only
@@ -69,9 +81,11 @@ inline constexpr std::array<std::string_view, 5> kCullModeNames{"back", "front",
 inline constexpr std::array<std::string_view, 3> kDepthCopyNames{"blit", "shader", "off"};
 inline constexpr std::array<std::string_view, 3> kTonemapNames{"exposure", "reinhard", "clamp"};
 inline constexpr std::array<std::string_view, 4> kGBufferLayoutNames{"classic", "packed", "naive8", "rgb10a2"};
-inline constexpr std::array<std::string_view, 14> kDebugViewNames{
-    "final",        "lighting", "position",    "normal", "albedo", "specular", "depth",
-    "depth_linear", "heatmap",  "tile_lights", "raw0",   "raw1",   "raw2",     "cluster_slices"};
+inline constexpr std::array<std::string_view, 2> kLightAccumulationNames{"single", "split"};
+inline constexpr std::array<std::string_view, 19> kDebugViewNames{
+    "final", "lighting",     "position", "normal",      "albedo",        "specular",       "depth",
+    "depth_linear", "heatmap",  "tile_lights", "raw0",          "raw1",  "raw2",  "raw3",
+    "emissive", "occlusion",   "diffuse_light", "specular_light", "cluster_slices"};
 
 template <class Enum, std::size_t N>
 std::optional<Enum> enumFromName(std::array<std::string_view, N> const& names, std::string_view name) {

@@ -19,6 +19,8 @@ struct ShadingInputs {
     float specular = 0.5f;
     glm::vec3 viewPosition{0.0f};
     float shininess = 32.0f;
+    glm::vec3 emissive{0.0f};  // emitted radiance, added once (not per light)
+    float occlusion = 1.0f;    // ambient occlusion: scales the ambient term only
 };
 
 struct LightContribution {
@@ -62,11 +64,16 @@ inline LightContribution shadeLightCpu(PointLight const& light, ShadingInputs co
     return c;
 }
 
-// Ambient plus every light that reaches the point; `contributions` (optional) receives the
-// lights that reach the point (non-zero attenuation and cone factor), in list order.
+// The light-independent part (shaders/surface_terms.glsl): ambient * albedo * occlusion + emissive.
+inline glm::vec3 surfaceTermsCpu(ShadingInputs const& s, glm::vec3 ambient) {
+    return ambient * s.albedo * s.occlusion + s.emissive;
+}
+
+// The surface terms plus every light that reaches the point; `contributions` (optional) receives
+// the lights that reach the point (non-zero attenuation and cone factor), in list order.
 inline glm::vec3 shadePointCpu(std::span<PointLight const> lights, ShadingInputs const& s, glm::vec3 ambient,
                                std::vector<LightContribution>* contributions = nullptr) {
-    glm::vec3 color = ambient * s.albedo;
+    glm::vec3 color = surfaceTermsCpu(s, ambient);
     for (std::size_t i = 0; i < lights.size(); ++i) {
         LightContribution c = shadeLightCpu(lights[i], s);
         if (!c.reaches()) continue;

@@ -32,6 +32,10 @@ std::string_view framebufferStatusName(GLenum status) {
 
 Framebuffer Framebuffer::create(std::initializer_list<Texture const*> colors, Texture const* depth,
                                 std::string_view label) {
+    return create(std::span<Texture const* const>(colors.begin(), colors.size()), depth, label);
+}
+
+Framebuffer Framebuffer::create(std::span<Texture const* const> colors, Texture const* depth, std::string_view label) {
     Framebuffer fb;
     GLuint id = 0;
     glGenFramebuffers(1, &id);

@@ -6,6 +6,7 @@
 
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -22,6 +23,7 @@ public:
     // texture, enables those draw buffers, and checks completeness.
     static Framebuffer create(std::initializer_list<Texture const*> colors, Texture const* depth,
                               std::string_view label);
+    static Framebuffer create(std::span<Texture const* const> colors, Texture const* depth, std::string_view label);
 
     GLuint id() const { return handle_.id(); }
     explicit operator bool() const { return bool(handle_); }

@@ -22,6 +22,7 @@ enum class ProgramId {
     View,
     CoverageAllLights,
     GBufferDecode,
+    LightCombine,  // accumulation split: the two light targets into the lit image
     // volumes mode
     LightVolume,
     LightVolumeCoverage,

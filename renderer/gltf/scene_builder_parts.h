@@ -39,6 +39,7 @@ private:
     // Index into scene_.images for a glTF image used as colour (sRGB) or as data (linear).
     int sceneImage(int image, bool srgb);
     int material(int index);
+    void emissiveAndOcclusion(int index, Material& mat);
 
     // The coordinate set and KHR_texture_transform of one textureInfo object of material
     // `index`: materials[index].<parent>.<slot> (parent may be null). texCoord is tinygltf's.

@@ -33,7 +33,8 @@ std::size_t SceneBuilder::countImages(std::set<int> const& materials) {
         auto const& mat = model_.materials[std::size_t(m)];
         std::string const who = "material " + std::to_string(m);
         for (int t : {mat.pbrMetallicRoughness.baseColorTexture.index, mat.normalTexture.index,
-                      mat.pbrMetallicRoughness.metallicRoughnessTexture.index})
+                      mat.pbrMetallicRoughness.metallicRoughnessTexture.index, mat.emissiveTexture.index,
+                      mat.occlusionTexture.index})
             if (int s = textureSource(t, who); s >= 0) images.insert(s);
     }
     return std::max<std::size_t>(images.size(), 1);
@@ -136,6 +137,36 @@ TextureTransform SceneBuilder::readTransform(Json const* info, int texCoord, std
     return t;
 }
 
+// Emission and ambient occlusion: docs/gltf.md, "glTF materials and lights".
+void SceneBuilder::emissiveAndOcclusion(int index, Material& mat) {
+    auto const& src = model_.materials[std::size_t(index)];
+    std::string const who = "material " + std::to_string(index);
+    if (src.emissiveFactor.size() == 3) {
+        glm::vec3 const e(float(src.emissiveFactor[0]), float(src.emissiveFactor[1]), float(src.emissiveFactor[2]));
+        if (std::isfinite(e.x) && std::isfinite(e.y) && std::isfinite(e.z))
+            mat.emissiveFactor = glm::clamp(e, 0.0f, 1.0f);  // glTF 2.0 limits each to [0, 1]
+        else
+            scene_.warnings.push_back(who + "'s emissiveFactor is not finite; no emission is used");
+    } else if (!src.emissiveFactor.empty()) {
+        scene_.warnings.push_back(who + "'s emissiveFactor does not have 3 numbers; no emission is used");
+    }
+    if (int s = textureSource(src.emissiveTexture.index, who); s >= 0) {
+        mat.emissiveTexture = sceneImage(s, true);
+        mat.emissiveTransform = textureTransform(index, nullptr, "emissiveTexture", src.emissiveTexture.texCoord, who);
+    }
+    if (int s = textureSource(src.occlusionTexture.index, who); s >= 0) {
+        mat.occlusionTexture = sceneImage(s, false);
+        double const strength = src.occlusionTexture.strength;
+        if (std::isfinite(strength)) {
+            mat.occlusionStrength = float(std::clamp(strength, 0.0, 1.0));  // glTF 2.0: [0, 1]
+        } else {
+            scene_.warnings.push_back(who + "'s occlusionTexture.strength is not finite; 1 is used");
+        }
+        mat.occlusionTransform =
+            textureTransform(index, nullptr, "occlusionTexture", src.occlusionTexture.texCoord, who);
+    }
+}
+
 int SceneBuilder::material(int index) {
     if (auto it = materials_.find(index); it != materials_.end()) return it->second;
     auto const& src = model_.materials[std::size_t(index)];
@@ -159,6 +190,7 @@ int SceneBuilder::material(int index) {
         mat.normalScale = std::isfinite(src.normalTexture.scale) ? float(src.normalTexture.scale) : 1.0f;
         mat.normalTransform = textureTransform(index, nullptr, "normalTexture", src.normalTexture.texCoord, who);
     }
+    emissiveAndOcclusion(index, mat);
 
     // Specular intensity: docs/gltf.md, "glTF materials and lights".
     float weight = 1.0f;

@@ -22,7 +22,8 @@ std::optional<std::string> validate(SceneData const& scene) {
     }
     auto badTexture = [&](int t) { return t < -1 || t >= int(scene.images.size()); };
     for (auto const& m : scene.materials)
-        if (badTexture(m.baseColorTexture) || badTexture(m.normalTexture) || badTexture(m.specularTexture))
+        if (badTexture(m.baseColorTexture) || badTexture(m.normalTexture) || badTexture(m.specularTexture) ||
+            badTexture(m.emissiveTexture) || badTexture(m.occlusionTexture))
             return "material " + m.name + " names a texture that does not exist";
     for (auto const& mesh : scene.meshes) {
         if (mesh.material < -1 || mesh.material >= int(scene.materials.size()))
@@ -140,6 +141,8 @@ void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter
         program.set("uBaseColorFactor", m.baseColorFactor);
         program.set("uNormalScale", m.normalScale);
         program.set("uSpecularFactor", m.specularFactor);
+        program.set("uEmissiveFactor", m.emissiveFactor);
+        program.set("uOcclusionStrength", m.occlusionStrength);
         program.set("uAlphaMask", m.alphaMode == AlphaMode::Mask ? 1 : 0);
         program.set("uAlphaCutoff", m.alphaCutoff);
         bindTexture(slot::BIND_MATERIAL_BASE_COLOR, m.baseColorTexture, m.baseColorTransform,
@@ -148,6 +151,10 @@ void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter
                     {"uHasNormalTex", "uNormalTexCoord", "uNormalUvTransform"});
         bindTexture(slot::BIND_MATERIAL_SPECULAR, m.specularTexture, m.specularTransform,
                     {"uHasSpecularTex", "uSpecularTexCoord", "uSpecularUvTransform"});
+        bindTexture(slot::BIND_MATERIAL_EMISSIVE, m.emissiveTexture, m.emissiveTransform,
+                    {"uHasEmissiveTex", "uEmissiveTexCoord", "uEmissiveUvTransform"});
+        bindTexture(slot::BIND_MATERIAL_OCCLUSION, m.occlusionTexture, m.occlusionTransform,
+                    {"uHasOcclusionTex", "uOcclusionTexCoord", "uOcclusionUvTransform"});
         if (m.doubleSided)
             glDisable(GL_CULL_FACE);
         else

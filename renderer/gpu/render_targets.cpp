@@ -2,6 +2,7 @@
 #include "gpu/render_targets.h"
 
 #include <string>
+#include <vector>
 
 namespace gbl {
 
@@ -33,27 +34,31 @@ std::optional<std::string> createRenderTargets(int width, int height, GBufferLay
     using gl::Texture;
     GBuffer& g = out.gbuffer;
     GBufferLayoutDesc const& desc = layoutDesc(layout);
+    std::vector<Texture const*> colors;
     for (GBufferAttachmentDesc const& a : desc.attachments()) {
-        Texture& t = a.slot == GBufferSlot::Position     ? g.position
-                     : a.slot == GBufferSlot::Normal     ? g.normal
-                     : a.slot == GBufferSlot::AlbedoSpec ? g.albedoSpec
-                                                         : g.depth;
+        Texture& t = const_cast<Texture&>(g.texture(a.slot));
         t = Texture::create2D(glInternalFormat(a.format), width, height, "gbuffer." + std::string(a.name));
+        if (a.slot != GBufferSlot::Depth) colors.push_back(&t);
     }
     // The colour attachments in the layout's order: geometry.frag writes them at locations 0, 1, ...
-    g.fbo = desc.storesPosition ? Framebuffer::create({&g.position, &g.normal, &g.albedoSpec}, &g.depth, "gbuffer")
-                                : Framebuffer::create({&g.normal, &g.albedoSpec}, &g.depth, "gbuffer");
+    g.fbo = Framebuffer::create(colors, &g.depth, "gbuffer");
 
     out.lighting = Texture::create2D(GL_RGBA16F, width, height, "lighting.hdr");
     out.litDepth = Texture::create2D(glInternalFormat(desc.depthFormat()), width, height, "lighting.depth");
     out.litFbo = Framebuffer::create({&out.lighting}, &out.litDepth, "lighting");
     out.volumeFbo = Framebuffer::create({&out.lighting}, &g.depth, "lighting.volumes");
+    out.diffuseLight = Texture::create2D(GL_RGBA16F, width, height, "lighting.diffuse");
+    out.specularLight = Texture::create2D(GL_RGBA16F, width, height, "lighting.specular");
+    out.splitFbo = Framebuffer::create({&out.diffuseLight, &out.specularLight}, nullptr, "lighting.split");
+    out.splitVolumeFbo =
+        Framebuffer::create({&out.diffuseLight, &out.specularLight}, &g.depth, "lighting.split.volumes");
     out.coverage = Texture::create2D(GL_RG32F, width, height, "coverage");
     out.coverageFbo = Framebuffer::create({&out.coverage}, &g.depth, "coverage");
     out.display = Texture::create2D(GL_RGBA8, width, height, "display");
     out.displayFbo = Framebuffer::create({&out.display}, nullptr, "display");
 
-    for (Framebuffer const* fb : {&g.fbo, &out.litFbo, &out.volumeFbo, &out.coverageFbo, &out.displayFbo})
+    for (Framebuffer const* fb :
+         {&g.fbo, &out.litFbo, &out.volumeFbo, &out.splitFbo, &out.splitVolumeFbo, &out.coverageFbo, &out.displayFbo})
         if (fb->error()) return fb->error();
     return std::nullopt;
 }

@@ -16,6 +16,7 @@ struct GBuffer {
     gl::Texture position;    // world position, w = 1 where drawn; empty when rebuilt from depth
     gl::Texture normal;      // the encoded world normal
     gl::Texture albedoSpec;  // RGBA8 albedo rgb + specular a
+    gl::Texture emissive;    // emitted radiance rgb + ambient occlusion a
     gl::Texture depth;       // depth-stencil, sampled by position rebuilding, depth views and the shader copy
     gl::Framebuffer fbo;     // colour attachments in the layout's order
 
@@ -27,6 +28,8 @@ struct GBuffer {
                 return normal;
             case GBufferSlot::AlbedoSpec:
                 return albedoSpec;
+            case GBufferSlot::Emissive:
+                return emissive;
             case GBufferSlot::Depth:
                 break;
         }
@@ -47,7 +50,13 @@ struct RenderTargets {
     // lighting + the G-buffer's depth-stencil: light volumes test against the scene depth (and
     // use its stencil) without needing the blit step.
     gl::Framebuffer volumeFbo;
-    gl::Texture coverage;  // RG32F: x = volumes that covered the pixel, y = lights that lit it
+    // Accumulation targets of `accumulation: split` (RGBA16F each): diffuse light (N.L * att *
+    // colour, no albedo) and specular light; the combine pass turns them into `lighting`.
+    gl::Texture diffuseLight;
+    gl::Texture specularLight;
+    gl::Framebuffer splitFbo;        // diffuseLight + specularLight: the full-screen pass
+    gl::Framebuffer splitVolumeFbo;  // the same with the G-buffer's depth-stencil: the volumes
+    gl::Texture coverage;            // RG32F: x = volumes that covered the pixel, y = lights that lit it
     gl::Framebuffer coverageFbo;
     gl::Texture display;  // RGBA8 final image
     gl::Framebuffer displayFbo;

@@ -15,6 +15,7 @@ void bindGBuffer(GBuffer const& g) {
     bindTextureUnit(slot::BIND_GBUFFER_POSITION, GL_TEXTURE_2D, g.position.id());
     bindTextureUnit(slot::BIND_GBUFFER_NORMAL, GL_TEXTURE_2D, g.normal.id());
     bindTextureUnit(slot::BIND_GBUFFER_ALBEDO_SPEC, GL_TEXTURE_2D, g.albedoSpec.id());
+    bindTextureUnit(slot::BIND_GBUFFER_EMISSIVE, GL_TEXTURE_2D, g.emissive.id());
     bindTextureUnit(slot::BIND_DEPTH, GL_TEXTURE_2D, g.depth.id());
 }
 
@@ -30,6 +31,7 @@ void setShadingUniforms(gl::Program const& p, ShadingUniforms const& s) {
     p.set("uViewPos", s.viewPosition);
     p.set("uShininess", s.shininess);
     p.set("uAmbient", s.ambient);
+    p.set("uEmissiveWeight", s.emissiveWeight);
     p.set("uInverseViewProj", s.inverseViewProj);
 }
 

@@ -18,6 +18,9 @@ struct ShadingUniforms {
     glm::vec3 ambient{0.0f};
     // Rebuilds world position from depth in layouts that do not store it (gbuffer_read.glsl).
     glm::mat4 inverseViewProj{1.0f};
+    // Multiplies the surfaces' emission (shaders/surface_terms.glsl): 0 in a frame showing one
+    // light's contribution alone, which leaves out the ambient term too.
+    float emissiveWeight = 1.0f;
 };
 
 // Binds `texture` to texture unit `unit` (a BIND_* slot) and leaves unit 0 active.

@@ -19,6 +19,8 @@ void viewPass(ViewInput const& in, ViewConfig const& c) {
     bindTextureUnit(slot::BIND_DEPTH, GL_TEXTURE_2D, in.gbuffer.depth.id());
     bindTextureUnit(slot::BIND_LIGHTING, GL_TEXTURE_2D, in.hdr.id());
     bindTextureUnit(slot::BIND_COVERAGE, GL_TEXTURE_2D, in.coverage.id());
+    bindTextureUnit(slot::BIND_DIFFUSE_LIGHT, GL_TEXTURE_2D, in.diffuseLight.id());
+    bindTextureUnit(slot::BIND_SPECULAR_LIGHT, GL_TEXTURE_2D, in.specularLight.id());
     ViewParams const& v = c.params;
     p.set("uView", int(v.view));
     p.set("uTonemap", int(c.tonemap));

@@ -14,8 +14,10 @@ namespace gbl {
 struct ViewInput {
     GBuffer const& gbuffer;
     gl::Texture const& hdr;
-    gl::Texture const& coverage;  // this frame's counts, for the heat map and tile views
-    gl::Program const& program;   // ProgramId::View
+    gl::Texture const& coverage;      // this frame's counts, for the heat map and tile views
+    gl::Texture const& diffuseLight;  // accumulation split's targets, for their views
+    gl::Texture const& specularLight;
+    gl::Program const& program;  // ProgramId::View
     gl::FullscreenTriangle const& triangle;
     gl::Framebuffer const& target;  // RGBA8, frame-sized
 };

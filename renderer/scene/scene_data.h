@@ -41,12 +41,18 @@ struct Material {
     int baseColorTexture = -1;  // index into SceneData::images
     int normalTexture = -1;     // tangent-space normal map
     float normalScale = 1.0f;
-    float specularFactor = 0.5f;  // specular intensity stored in the G-buffer's albedo alpha
-    int specularTexture = -1;     // multiplies specularFactor; its red channel is used
+    float specularFactor = 0.5f;     // specular intensity stored in the G-buffer's albedo alpha
+    int specularTexture = -1;        // multiplies specularFactor; its red channel is used
+    glm::vec3 emissiveFactor{0.0f};  // emitted radiance, linear; added after lighting (docs/lighting.md)
+    int emissiveTexture = -1;        // sRGB colour, multiplies emissiveFactor
+    int occlusionTexture = -1;       // red channel: ambient occlusion (1 = unoccluded)
+    float occlusionStrength = 1.0f;  // ao = 1 + strength * (red - 1)
     // Coordinate set and KHR_texture_transform of each texture above.
     TextureTransform baseColorTransform;
     TextureTransform normalTransform;
     TextureTransform specularTransform;
+    TextureTransform emissiveTransform;
+    TextureTransform occlusionTransform;
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;

@@ -19,11 +19,13 @@ std::optional<PixelBreakdown> breakDownPixel(PixelSample const& sample, std::spa
     in.normal = glm::vec3(sample.normal);
     in.albedo = glm::vec3(sample.albedoSpec);
     in.specular = sample.albedoSpec.a;
+    in.emissive = glm::vec3(sample.emissiveAo);
+    in.occlusion = sample.emissiveAo.a;
     in.viewPosition = camera.position;
     in.shininess = settings.shininess;
     PixelBreakdown b;
     b.lightsTested = int(lights.size());
-    b.ambient = settings.ambient * in.albedo;
+    b.ambient = surfaceTermsCpu(in, settings.ambient);  // ambient * albedo * occlusion + emissive
     b.total = shadePointCpu(lights, in, settings.ambient, &b.lights);
     std::sort(b.lights.begin(), b.lights.end(), [](auto const& x, auto const& y) {
         auto lum = [](glm::vec3 v) { return v.r + v.g + v.b; };

@@ -16,7 +16,7 @@ namespace gbl::ui {
 
 // Each light's share of the lit value at one pixel, from the CPU copy of the shader's math.
 struct PixelBreakdown {
-    glm::vec3 ambient{0.0f};                     // ambient * albedo
+    glm::vec3 ambient{0.0f};                     // ambient * albedo * occlusion + emissive
     std::vector<gbl::LightContribution> lights;  // only lights that reach the pixel, brightest first
     glm::vec3 total{0.0f};                       // ambient + sum of the lights
     int lightsTested = 0;

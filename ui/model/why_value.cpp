@@ -155,6 +155,8 @@ std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointL
     s.normal = glm::vec3(in.sample.normal);
     s.albedo = glm::vec3(in.sample.albedoSpec);
     s.specular = in.sample.albedoSpec.a;
+    s.emissive = glm::vec3(in.sample.emissiveAo);
+    s.occlusion = in.sample.emissiveAo.a;
     s.viewPosition = in.camera.position;
     s.shininess = in.settings.shininess;
 

@@ -225,6 +225,15 @@ void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailabl
             ImGui::SliderFloat("Exposure", &settings.exposure, 0.05f, 16.0f, "%.2f",
                                ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
             layoutCombo(settings, rects);
+            // One lit target, or diffuse and specular light in two plus a combine pass (docs/lighting.md).
+            int accumulation = int(settings.accumulation);
+            char const* accumulationItems[] = {kLightAccumulationNames[0].data(), kLightAccumulationNames[1].data()};
+            if (ImGui::Combo("Targets", &accumulation, accumulationItems, 2))
+                settings.accumulation = LightAccumulation(accumulation);
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip(
+                    "single: one lit target\nsplit: diffuse and specular light targets, then a combine "
+                    "pass (forward mode keeps one target)");
             ImGui::PopItemWidth();
         }
         if (ab && section("A/B compare")) abSection(*ab, settings);

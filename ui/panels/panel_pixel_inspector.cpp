@@ -69,6 +69,7 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
                 if (s.covered) row("from depth", glm::vec4(s.reconstructedPosition, 0.0f), 3);
                 row("normal", s.normal);
                 row("albedo,spec", s.albedoSpec);
+                row("emissive,ao", s.emissiveAo);
                 row("depth", glm::vec4(s.depth, 0, 0, 0), 1);
                 row("lighting", s.lighting);
                 ImGui::EndTable();

@@ -147,6 +147,8 @@ bool gbufferView(DebugView v) {
         case DebugView::Normal:
         case DebugView::Albedo:
         case DebugView::Specular:
+        case DebugView::Emissive:
+        case DebugView::Occlusion:
         case DebugView::Depth:
         case DebugView::DepthLinear:
             return true;

@@ -35,6 +35,9 @@ constexpr EnumSetting kEnumSettings[] = {
      [](PipelineSettings const& p) { return enumName(kTonemapNames, p.tonemap); }},
     {"layout", [](PipelineSettings& p, std::string const& v) { return setEnum(p.layout, kGBufferLayoutNames, v); },
      [](PipelineSettings const& p) { return enumName(kGBufferLayoutNames, p.layout); }},
+    {"accumulation",
+     [](PipelineSettings& p, std::string const& v) { return setEnum(p.accumulation, kLightAccumulationNames, v); },
+     [](PipelineSettings const& p) { return enumName(kLightAccumulationNames, p.accumulation); }},
 };
 
 void setCommand(CommandCall const& c) {

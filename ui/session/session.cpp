@@ -108,6 +108,7 @@ ojson sessionJson(Session const& s) {
           {"blit", enumName(kDepthCopyNames, p.depthCopy)},
           {"tonemap", enumName(kTonemapNames, p.tonemap)},
           {"layout", enumName(kGBufferLayoutNames, p.layout)},
+          {"accumulation", enumName(kLightAccumulationNames, p.accumulation)},
           {"view", enumName(kDebugViewNames, p.view)},
           {"light_cubes", p.lightCubes},
           {"volume_wireframes", p.volumeWireframes},
@@ -292,7 +293,7 @@ std::vector<PointLight> readLights(json const& j) {
 PipelineSettings readPipeline(json const& j) {
     Object o(j, "pipeline",
              {"mode", "cull", "blit", "tonemap", "view", "light_cubes", "volume_wireframes", "normal_maps", "ambient",
-              "exposure", "shininess", "volume_scale", "layout", "wireframes_selected_only"});
+              "exposure", "shininess", "volume_scale", "layout", "wireframes_selected_only", "accumulation"});
     PipelineSettings p;
     p.mode = enumeration<LightingMode>(o.required("mode"), o.field("mode"), kLightingModeNames);
     p.cull = enumeration<CullMode>(o.required("cull"), o.field("cull"), kCullModeNames);
@@ -302,6 +303,10 @@ PipelineSettings readPipeline(json const& j) {
     // Optional: sessions written before layouts existed load with today's classic G-buffer.
     if (json const* layout = o.optional("layout"))
         p.layout = enumeration<GBufferLayout>(*layout, o.field("layout"), kGBufferLayoutNames);
+    // Optional: sessions written before the split targets existed accumulate into one target.
+    if (json const* accumulation = o.optional("accumulation"))
+        p.accumulation =
+            enumeration<LightAccumulation>(*accumulation, o.field("accumulation"), kLightAccumulationNames);
     p.lightCubes = boolean(o.required("light_cubes"), o.field("light_cubes"));
     p.volumeWireframes = boolean(o.required("volume_wireframes"), o.field("volume_wireframes"));
     // Optional: files from before the option draw every volume.

@@ -1,0 +1,22 @@
+// The combine pass of `accumulation: split`: ambient and emission from the G-buffer plus the two
+// accumulation targets, albedo * diffuse + specular, into the HDR lit image (docs/lighting.md).
+#pragma once
+
+#include "gl/fullscreen_triangle.h"
+#include "passes/shading_inputs.h"
+
+namespace gbl {
+
+struct LightCombineInput {
+    GBuffer const& gbuffer;
+    ShadingUniforms shading;           // ambient, emissive weight, inverse view-projection
+    gl::Texture const& diffuseLight;   // RGBA16F: sum of N.L * attenuation * colour
+    gl::Texture const& specularLight;  // RGBA16F: sum of specular * (N.H)^shininess * attenuation * colour
+    gl::Program const& program;        // ProgramId::LightCombine
+    gl::FullscreenTriangle const& triangle;
+    LitTarget target;  // every pixel of the HDR image is written (0 on the background)
+};
+
+LightingOutput lightCombinePass(LightCombineInput const& in);
+
+}  // namespace gbl
