@@ -9,6 +9,7 @@
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 #include "tile_frustum.glsl"
+#define TILE_BIN_ACCESS
 #include "tile_bin_read.glsl"
 
 layout(local_size_x = 256) in;
@@ -97,6 +98,10 @@ void main() {
             if (lightTouchesTile(index, left, right, bottom, top)) keepLight(index);
         }
         int kept = sortKeptLights();
+        // The tile's sorted list replaces its bin (no invocation reads the bin any more): a cluster
+        // over its own cap shades from it in cluster_shade.comp instead of from every light.
+        for (int k = local; k < kept; k += 256) tileBinLight[uint(tileIndex) * uint(uBinCap) + uint(k)] = sSorted[k];
+        if (local == 0) tileBinCount[tileIndex] = uint(kept);
         // --- each slice keeps the tile's lights that reach its box, in index order ---
         for (int k = 0; owner && k < kept; ++k) {
             int index = int(sSorted[k]);

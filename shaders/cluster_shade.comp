@@ -15,6 +15,10 @@ layout(rg32f, binding = BIND_IMAGE_COVERAGE) uniform writeonly image2D uCoverage
 layout(rgba16f, binding = BIND_IMAGE_SPECULAR_LIGHT) uniform writeonly image2D uSpecularImage;  // split only
 layout(std430, binding = BIND_SSBO_CLUSTER_COUNTS) readonly buffer ClusterCounts { uint clusterCount[]; };
 layout(std430, binding = BIND_SSBO_CLUSTER_LIGHTS) readonly buffer ClusterLights { uint clusterLight[]; };
+// Each tile's sorted light list, as cluster_build.comp left it (a count past uBinCap: none).
+layout(std430, binding = BIND_SSBO_TILE_BIN_COUNTS) readonly buffer TileBinCounts { uint tileBinCount[]; };
+layout(std430, binding = BIND_SSBO_TILE_BIN_LIGHTS) readonly buffer TileBinLights { uint tileBinLight[]; };
+uniform int uBinCap;
 
 uniform int uLightCount;
 uniform vec3 uAmbient;
@@ -62,8 +66,17 @@ void main() {
         uint base = uint(cluster) * uint(uMaxLights);
         for (uint k = 0u; k < count; ++k) addLight(int(clusterLight[base + k]), pos, n, as, color, lit);
     } else {
-        // Over the cap: the list is incomplete, so every light is tried (exact, slower).
-        for (int i = 0; i < uLightCount; ++i) addLight(i, pos, n, as, color, lit);
+        // Over the cap: the cluster's list is incomplete, so the tile's whole list (a superset, in
+        // index order) is tried, or every light where the tile's bin overflowed too (exact, slower).
+        int tile = (px.y / uTileSize) * uGrid.x + px.x / uTileSize;
+        uint tileCount = tileBinCount[tile];
+        if (tileCount <= uint(uBinCap)) {
+            uint base = uint(tile) * uint(uBinCap);
+            for (uint k = 0u; k < tileCount; ++k) addLight(int(tileBinLight[base + k]), pos, n, as, color, lit);
+            count = tileCount;  // what was evaluated
+        } else {
+            for (int i = 0; i < uLightCount; ++i) addLight(i, pos, n, as, color, lit);
+        }
     }
     if (uShade) imageStore(uLightingImage, px, accumulationTarget0(color, surface, as.rgb));
     if (uShade && uSplitAccumulation) imageStore(uSpecularImage, px, vec4(color.specular, 1.0));

@@ -5,8 +5,12 @@
 // the full-screen pass's order.
 #ifndef GBL_TILE_BIN_READ_GLSL
 #define GBL_TILE_BIN_READ_GLSL
-layout(std430, binding = BIND_SSBO_TILE_BIN_COUNTS) readonly buffer TileBinCounts { uint tileBinCount[]; };
-layout(std430, binding = BIND_SSBO_TILE_BIN_LIGHTS) readonly buffer TileBinLights { uint tileBinLight[]; };
+// cluster_build.comp defines TILE_BIN_ACCESS empty: it writes each tile's sorted list back.
+#ifndef TILE_BIN_ACCESS
+#define TILE_BIN_ACCESS readonly
+#endif
+layout(std430, binding = BIND_SSBO_TILE_BIN_COUNTS) TILE_BIN_ACCESS buffer TileBinCounts { uint tileBinCount[]; };
+layout(std430, binding = BIND_SSBO_TILE_BIN_LIGHTS) TILE_BIN_ACCESS buffer TileBinLights { uint tileBinLight[]; };
 uniform int uBinCap;  // entries per tile (TileBins::cap, at most kTileBinMaxLights)
 
 #define BIN_MAX 1024  // kTileBinMaxLights

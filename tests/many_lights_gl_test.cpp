@@ -1,6 +1,7 @@
 // Tiled and clustered lists built from the light bins (shaders/tile_bin.comp) with thousands of
 // small lights, and with a tile holding more candidates than the bins keep: both still add
 // exactly the lights the full-screen pass adds, in its order.
+#include "core/cluster_math.h"
 #include "core/light_math.h"
 #include "core/tile_math.h"
 #include "gl_fixture.h"
@@ -116,5 +117,14 @@ TEST_F(ManyLightsGlTest, TilesOverTheBinCapTestEveryLightAndStillMatchQuad) {
     std::vector<PointLight> lights = makeDefaultLights(32);
     PointLight const crowd = lights[5];
     lights.insert(lights.begin() + 3, std::size_t(kTileBinMaxLights + 100), crowd);
+    expectTiledAndClusteredMatchQuad(lights, kW * kH / 4);
+}
+
+TEST_F(ManyLightsGlTest, ClustersOverTheirCapShadeFromTheTileListAndStillMatchQuad) {
+    // kClusterMaxLights + 44 copies of one light: its clusters are over their list cap (they shade
+    // from their tile's sorted list), while the tiles' bins (up to 1024) still hold them.
+    std::vector<PointLight> lights = makeDefaultLights(32);
+    PointLight const crowd = lights[9];
+    lights.insert(lights.begin() + 7, std::size_t(kClusterMaxLights + 44), crowd);
     expectTiledAndClusteredMatchQuad(lights, kW * kH / 4);
 }

@@ -49,8 +49,6 @@ void clusterListsPass(LightingClusteredInput const& in, LightingClusteredConfig 
     setGridUniforms(p, in, c, g);
     glDispatchCompute(GLuint(g.tilesX), GLuint(g.tilesY), 1);  // one work group per tile, a slice per invocation
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS, 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS, 0);
 }
 
 LightingOutput clusterShadePass(LightingClusteredInput const& in, LightingClusteredConfig const& c) {
@@ -61,6 +59,10 @@ LightingOutput clusterShadePass(LightingClusteredInput const& in, LightingCluste
     setGridUniforms(p, in, c, g);
     p.set("uShade", c.shade ? 1 : 0);
     p.set("uWriteCoverage", c.coverage ? 1 : 0);
+    // The tiles' sorted lists that clusterListsPass left in the bins, for clusters over their cap.
+    p.set("uBinCap", in.bins.cap);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS, in.bins.counts.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS, in.bins.lights.id());
     // Both image units are bound whatever the flags, so the program's declared images are valid.
     glBindImageTexture(slot::BIND_IMAGE_LIGHTING, in.hdr.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glBindImageTexture(slot::BIND_IMAGE_COVERAGE, in.coverage.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
@@ -71,6 +73,8 @@ LightingOutput clusterShadePass(LightingClusteredInput const& in, LightingCluste
     glBindImageTexture(slot::BIND_IMAGE_COVERAGE, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_CLUSTER_COUNTS, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_CLUSTER_LIGHTS, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS, 0);
     return {in.hdr};
 }
 
