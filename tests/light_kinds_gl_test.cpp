@@ -212,3 +212,30 @@ TEST_F(LightKindsGlTest, CameraInsideASpotConeMatchesTheCpu) {
         }
     EXPECT_LT(sumBack, 0.5 * sumFront);
 }
+
+TEST_F(LightKindsGlTest, WireframesDrawTheSpotsConeAndTheDirectionalArrow) {
+    PointLight sun;
+    sun.kind = LightKind::Directional;
+    sun.position = {0.0f, 2.0f, 0.0f};  // where its arrow starts
+    sun.direction = {1.0f, -0.3f, 0.0f};
+    std::vector<PointLight> const sunOnly{sun};
+    std::vector<PointLight> const spotOnly{
+        spot({0.0f, 3.0f, -2.0f}, {0.0f, -1.0f, 0.0f}, 10.0f, 25.0f, {1.0f, 1.0f, 1.0f})};
+    // Pixels the wireframe pass changes in the lit image (lines are drawn at HDR brightness 2).
+    auto linePixels = [&](std::vector<PointLight> const& lights) {
+        PipelineSettings s = settings(LightingMode::Quad);
+        FloatImage const plain = render(s, lights);
+        s.volumeWireframes = true;
+        FloatImage const wired = render(s, lights);
+        int changed = 0;
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < kW; ++x) changed += std::abs(wired.at(x, y, 0) - plain.at(x, y, 0)) > 0.05f ? 1 : 0;
+        return changed;
+    };
+    // The arrow: 1.5 units long about 14 units from the camera (0.07 units a pixel here), seen
+    // partly end-on: 15 pixels of line on llvmpipe; more than 8 says it is drawn at all.
+    EXPECT_GT(linePixels(sunOnly), 8);
+    // The cone: 16 edges from the apex to a ring 7.3 units below (under the floor, so only the
+    // part above it shows), and no sphere.
+    EXPECT_GT(linePixels(spotOnly), 50);
+}
