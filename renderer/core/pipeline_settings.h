@@ -83,9 +83,9 @@ inline constexpr std::array<std::string_view, 3> kTonemapNames{"exposure", "rein
 inline constexpr std::array<std::string_view, 4> kGBufferLayoutNames{"classic", "packed", "naive8", "rgb10a2"};
 inline constexpr std::array<std::string_view, 2> kLightAccumulationNames{"single", "split"};
 inline constexpr std::array<std::string_view, 19> kDebugViewNames{
-    "final", "lighting",     "position", "normal",      "albedo",        "specular",       "depth",
-    "depth_linear", "heatmap",  "tile_lights", "raw0",          "raw1",  "raw2",  "raw3",
-    "emissive", "occlusion",   "diffuse_light", "specular_light", "cluster_slices"};
+    "final",        "lighting",  "position",      "normal",         "albedo",        "specular", "depth",
+    "depth_linear", "heatmap",   "tile_lights",   "raw0",           "raw1",          "raw2",     "raw3",
+    "emissive",     "occlusion", "diffuse_light", "specular_light", "cluster_slices"};
 
 template <class Enum, std::size_t N>
 std::optional<Enum> enumFromName(std::array<std::string_view, N> const& names, std::string_view name) {
