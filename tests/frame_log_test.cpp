@@ -28,6 +28,8 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     l.pipelineWindow = {0, 370, 300, 350};
     l.layoutCombo = {900, 400, 200, 19};
     l.layoutItems = {{1000.0f, 430.5f}, {1000.0f, 450.5f}};
+    l.toolsImage = {1262, 611};
+    l.toolsRegion = {10, 20, 120, 60};
     nlohmann::json const j = nlohmann::json::parse(frameLogJson(l));
     EXPECT_EQ(j["frame"], 41);
     EXPECT_EQ(j["rendered"], true);
@@ -49,6 +51,9 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     EXPECT_DOUBLE_EQ(j["layoutCombo"][3].get<double>(), 19.0);
     ASSERT_EQ(j["layoutItems"].size(), 4u);  // x, y of each entry, flat
     EXPECT_DOUBLE_EQ(j["layoutItems"][3].get<double>(), 450.5);
+    EXPECT_EQ(j["toolsImage"][0], 1262);
+    EXPECT_EQ(j["toolsRegion"][2], 120);
+    EXPECT_EQ(j["toolsRegion"][3], 60);
 }
 
 TEST(FrameLog, WritesOneLinePerFrame) {

@@ -1,7 +1,8 @@
 #!/bin/sh
 # The real editor driven by real X events (xdotool) while each frame takes 150 ms or more: a click
 # selects a light, a 20 ms F tap frames it, Ctrl+S over the viewport saves without flying, Home
-# returns to the scene's view, a double click frames a light, and an idle editor does not render.
+# returns to the scene's view, a double click frames a light, an idle editor does not render, and
+# a Shift+drag over the viewport's tools gives a region of the dragged size without moving the image.
 # Every check reads the editor's --log-frames lines or the saved session file.
 # usage: ui_real_input.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
 set -eu
@@ -151,5 +152,59 @@ grep "ui-test" "$work/lit_diff.log" || true
 [ "$status" -eq 0 ] || fail "the lit diff script failed (exit $status, see $work/lit_diff.log)"
 grep -q "ui-test PASS .*expect-lit-diff" "$work/lit_diff.log" || fail "no lit diff check passed"
 echo "Pin lit and Diff clicked for real; the diff statistics checked"
+
+# --- a real Shift+drag over the viewport's tools (albedo) gives a region of the dragged size ----
+# The region rows above the image once appeared with the region and pushed the image down under
+# the mouse, so a 120x60 drag came out 121x9: the image must stay put for the whole drag.
+cat > "$work/make_tools.txt" <<SCRIPT
+frames 2
+set view albedo
+viewport-tools on
+frames 2
+save-session $work/tools.json
+SCRIPT
+"$bin" --size 1280x720 --no-vsync --session "$work/start.json" --ui-test "$work/make_tools.txt" \
+    > "$work/make_tools.log" 2>&1 || { cat "$work/make_tools.log"; fail "could not write the tools session"; }
+log="$work/tools_frames.jsonl"
+export GBL_RECOVERY_DIR="$work/recovery-tools"
+mkdir -p "$GBL_RECOVERY_DIR"
+"$bin" --size 1280x720 --no-vsync --session "$work/tools.json" --frame-sleep-ms 60 --log-frames "$log" \
+    > "$work/tools_editor.log" 2>&1 &
+pid=$!
+wait_frames 6
+ui_window
+[ "$(field toolsRegion)" = "[0,0,0,0]" ] || fail "the viewport's tools are not open without a region: $(field toolsRegion)"
+before=$(field viewport)
+set -- $(rect_point viewport 0.3 0.4)
+sx=$1 sy=$2
+dx=120 dy=60
+xdotool mousemove --window "$wid" "$sx" "$sy"
+wait_frames 3
+mark=$(lines)
+xdotool keydown shift sleep 0.1 mousedown 1
+wait_frames 3
+for step in 1 2 3 4; do
+    xdotool mousemove --window "$wid" $((sx + dx * step / 4)) $((sy + dy * step / 4))
+    wait_frames 3
+done
+end=$(lines)
+xdotool mouseup 1 sleep 0.1 keyup shift
+wait_frames 4
+moved=$(tail -n +"$(( mark + 1 ))" "$log" | sed -n 's/.*"viewport":\(\[[^]]*\]\).*/\1/p' | grep -v -x -F "$before" | head -n 1)
+[ -z "$moved" ] || fail "the viewport image moved during the drag: $before -> $moved"
+region=$(field toolsRegion | tr -d '[]')
+image=$(field toolsImage "$(sed -n "${end}p" "$log")" | tr -d '[]')
+# The drag in window pixels scaled to the image's texels (1:1 unless the framebuffer is scaled),
+# plus one: the texels under both ends are inside (rectFromCorners).
+want=$(printf '%s %s\n' "$image" "$(printf '%s' "$before" | tr -d '[]')" | tr ',' ' ' |
+    awk -v dx="$dx" -v dy="$dy" '{ printf "%d %d", dx * $1 / $5 + 1.5, dy * $2 / $6 + 1.5 }')
+echo "Shift+drag ${dx}x${dy} px from $sx,$sy: region $region (x,y,w,h), expected size $want, image $before"
+printf '%s %s\n' "$region" "$want" | tr ',' ' ' |
+    awk '{ d1 = $3 - $5; d2 = $4 - $6; exit !(d1 <= 1 && d1 >= -1 && d2 <= 1 && d2 >= -1) }' ||
+    fail "the ${dx}x${dy} px drag gave region $region, not $want (+-1 texel)"
+shot region_drag
+clipped=$(clipped_list)
+[ -z "$clipped" ] || echo "clipped after the drag: $clipped"
+ui_stop
 
 echo "ui_real_input: PASS"

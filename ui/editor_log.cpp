@@ -65,6 +65,13 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.pipelineWindow = editor.pipelineRects.window;
     line.layoutCombo = editor.pipelineRects.layoutCombo;
     line.layoutItems = editor.pipelineRects.layoutItems;
+    if (ui::ViewportTools const& tools = state.viewportTools; tools.open) {
+        line.toolsImage = tools.viewer.imageSize;
+        line.toolsRegion = glm::ivec4(0);
+        if (tools.viewer.region)
+            line.toolsRegion =
+                glm::ivec4(tools.viewer.region->min, tools.viewer.region->max - tools.viewer.region->min);
+    }
     editor.frameLog.write(line);
 }
 

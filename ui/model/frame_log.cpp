@@ -78,7 +78,10 @@ std::string frameLogJson(FrameLogLine const& l) {
            ",\"layoutCombo\":" + rect(l.layoutCombo) + ",\"layoutItems\":[";
     for (std::size_t i = 0; i < l.layoutItems.size(); ++i)
         out += (i ? "," : "") + number(l.layoutItems[i].x) + "," + number(l.layoutItems[i].y);
-    return out + "]}";
+    out += "],\"toolsImage\":[" + std::to_string(l.toolsImage.x) + "," + std::to_string(l.toolsImage.y) + "]";
+    out += ",\"toolsRegion\":[" + std::to_string(l.toolsRegion.x) + "," + std::to_string(l.toolsRegion.y) + "," +
+           std::to_string(l.toolsRegion.z) + "," + std::to_string(l.toolsRegion.w) + "]";
+    return out + "}";
 }
 
 std::optional<std::string> FrameLog::open(std::string const& path) {

@@ -51,6 +51,10 @@ struct FrameLogLine {
     glm::vec4 pipelineWindow{0.0f};
     glm::vec4 layoutCombo{0.0f};
     std::vector<glm::vec2> layoutItems;
+    // The viewport's tools: the texel size of the image they read and their Shift+drag region as
+    // x, y, width, height in texels (width 0 while none; -1 = tools closed).
+    glm::ivec2 toolsImage{0};
+    glm::ivec4 toolsRegion{-1, -1, -1, -1};
 };
 
 std::string frameLogJson(FrameLogLine const& line);

@@ -50,11 +50,14 @@ struct ViewerState {
     std::optional<glm::ivec2> picked;           // magnifier centre: right-click, arrow keys, Ctrl+G
     std::optional<PixelRect> region;            // Shift+drag; statistics and "Fit to region" use it
     std::optional<glm::ivec2> regionDragStart;  // texel where the Shift+drag began
-    int histogramDrag = -1;                     // 0: dragging the black point, 1: the white point
-    bool percentileFitRequested = false;        // "Fit 1-99 %": serviced like fitRequested
-    bool regionFitRequested = false;            // "Fit to region": min/max inside the region
-    bool pinRequested = false;                  // "Pin": the loop stores the current values as the pinned image
-    bool showDiff = false;                      // show |current - pinned| as a heat map instead of the view
+    // Height of the region rows above the image when no drag was on; a drag keeps the rows this tall
+    // so the image below them does not move under the mouse (UI layout, not saved).
+    float regionRowsHeight = 0.0f;
+    int histogramDrag = -1;               // 0: dragging the black point, 1: the white point
+    bool percentileFitRequested = false;  // "Fit 1-99 %": serviced like fitRequested
+    bool regionFitRequested = false;      // "Fit to region": min/max inside the region
+    bool pinRequested = false;            // "Pin": the loop stores the current values as the pinned image
+    bool showDiff = false;                // show |current - pinned| as a heat map instead of the view
     DiffMode diffMode = DiffMode::Absolute;
     float diffThreshold = 0.0f;  // pixels above it are counted ("over threshold")
 };

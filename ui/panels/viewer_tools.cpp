@@ -5,6 +5,7 @@
 #include "panels/gui_compat.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstdio>
 
 namespace gbl::ui {
@@ -98,7 +99,19 @@ void viewerRegionAndDiff(ViewerState& v, ViewerData const& d) {
     auto buttonWidth = [](char const* label) {
         return ImGui::CalcTextSize(label, nullptr, true).x + ImGui::GetStyle().FramePadding.x * 2.0f;
     };
-    if (v.region) {
+    // The region rows: "no region" and room for the statistics without a region, the statistics
+    // with one. While a Shift+drag is
+    // on, only the region's line is drawn, padded to the rows' height when the drag began, so
+    // the image below keeps its place and the region matches the texels under the mouse.
+    ImGui::BeginGroup();
+    float const top = ImGui::GetCursorScreenPos().y;
+    if (v.regionDragStart && v.region) {
+        PixelRect const r = *v.region;
+        ImGui::TextDisabled("region %d,%d %dx%d", r.min.x, r.min.y, r.max.x - r.min.x, r.max.y - r.min.y);
+        // The padding starts one item spacing below the line.
+        float const pad = v.regionRowsHeight - (ImGui::GetItemRectMax().y - top) - ImGui::GetStyle().ItemSpacing.y;
+        if (pad > 0.0f) ImGui::Dummy(ImVec2(1.0f, pad));
+    } else if (v.region) {
         PixelRect const r = *v.region;
         ImGui::TextDisabled("region %d,%d %dx%d", r.min.x, r.min.y, r.max.x - r.min.x, r.max.y - r.min.y);
         sameLineIfRoom(buttonWidth("Fit to region"), right);
@@ -114,7 +127,19 @@ void viewerRegionAndDiff(ViewerState& v, ViewerData const& d) {
                                    v.kind == ViewerKind::Depth ? "d" : kChannel[c], s.min, s.max, s.mean, s.nan);
             }
         }
+        v.regionRowsHeight = ImGui::GetItemRectMax().y - top;
+    } else {
+        ImGui::TextDisabled("no region");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Shift+drag in the image: statistics of a region");
+        // Room for the statistics rows a region brings (one line each where they do not wrap), so
+        // the image keeps its place and size when the drag ends.
+        int const rows = d.frame >= 0 ? std::popcount(viewerStatsMask(v)) : 0;
+        if (rows > 0)
+            ImGui::Dummy(
+                ImVec2(1.0f, ImGui::GetTextLineHeightWithSpacing() * float(rows) - ImGui::GetStyle().ItemSpacing.y));
+        v.regionRowsHeight = ImGui::GetItemRectMax().y - top;
     }
+    ImGui::EndGroup();
     if (v.showDiff && d.pinned) {
         if (!d.diff.comparable) {
             ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.6f, 0.3f, 1));

@@ -32,7 +32,8 @@ void viewerHeaderCounts(ViewerState const& v, ViewerData const& d);
 void viewerToolsRow(ViewerState& v, ViewerData const& d);
 // Histogram with draggable black/white points, the fit buttons and the colormap legend.
 void viewerHistogram(ViewerState& v, ViewerData const& d);
-// Region statistics and diff statistics, when a region is set / the diff is shown.
+// The region rows ("no region", or the region and its statistics; a row of fixed height while a
+// Shift+drag is on) and the diff statistics when the diff is shown.
 void viewerRegionAndDiff(ViewerState& v, ViewerData const& d);
 // The viewport's tools (issue 15: the viewer tools "in the viewport when it shows an
 // attachment"): a Tools toggle while the view is a G-buffer attachment, then the same rows as a
