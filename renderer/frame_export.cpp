@@ -79,7 +79,8 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
     check(writeExr(path("normal.exr"), renderer.readAttachment(Attachment::Normal)));
     check(writePng(path("albedo.png"), albedo, 3));
     check(writePng(path("specular.png"), specularImage(albedo)));
-    // Emitted radiance (rgb) and ambient occlusion (a), decoded: the same in every layout.
+    // Emitted radiance (rgb) and ambient occlusion (a), decoded: the same in every layout that stores
+    // them; a layout that does not (packed) writes what it decodes, emission 0 and occlusion 1.
     check(writeExr(path("emissive.exr"), renderer.readAttachment(Attachment::Emissive)));
     // The accumulation targets, when the frame used them (docs/lighting.md, "Accumulation targets").
     if (frame.stats.accumulationUsed == LightAccumulation::Split) {
@@ -161,6 +162,8 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
                       {"triangles", frame.triangles},
                       {"gl_errors", renderer.glErrorCount()}};
     if (frame.stats.fragmentInvocations) statsJson["fragment_invocations"] = *frame.stats.fragmentInvocations;
+    // A layout that does not store emission and occlusion says so (emissive.exr is then 0 rgb, 1 a).
+    if (std::string const note = layoutOmissionNote(layout); !note.empty()) statsJson["gbuffer_note"] = note;
     check(writeJson(out / "lights.json", lightsJson));
     check(writeJson(out / "camera.json", cameraJson));
     check(writeJson(out / "stats.json", statsJson));

@@ -38,6 +38,14 @@ unsigned Renderer::texture(Attachment a) const {
 }
 
 namespace {
+// A width x height RGBA image of one value (what a layout decodes for a quantity it does not store).
+FloatImage constantImage(int width, int height, glm::vec4 v) {
+    FloatImage img{width, height, 4, {}};
+    img.pixels.reserve(std::size_t(width) * std::size_t(height) * 4);
+    for (int i = 0; i < width * height; ++i) img.pixels.insert(img.pixels.end(), {v.x, v.y, v.z, v.w});
+    return img;
+}
+
 // Reads a whole framebuffer attachment as floats, flipped so rows run top to bottom: one channel
 // reads depth, two read RG, four RGBA.
 FloatImage readFramebuffer(GLuint fbo, GLenum attachment, int width, int height, int channels) {
@@ -127,6 +135,7 @@ FloatImage Renderer::readAttachment(Attachment a) const {
             return readFramebuffer(t.gbuffer.fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + albedoIndex), t.width, t.height,
                                    4);
         case Attachment::Emissive:
+            if (emissiveIndex < 0) return constantImage(t.width, t.height, kNoEmissiveAo);
             return readFramebuffer(t.gbuffer.fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + emissiveIndex), t.width, t.height,
                                    4);
         case Attachment::Depth:
@@ -179,8 +188,10 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
               s.rawNormal);
     readColor(t.gbuffer.fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + colorAttachmentIndex(desc, GBufferSlot::AlbedoSpec)),
               s.albedoSpec);
-    readColor(t.gbuffer.fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + colorAttachmentIndex(desc, GBufferSlot::Emissive)),
-              s.emissiveAo);
+    if (int const e = colorAttachmentIndex(desc, GBufferSlot::Emissive); e >= 0)
+        readColor(t.gbuffer.fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + e), s.emissiveAo);
+    else
+        s.emissiveAo = kNoEmissiveAo;
     readColor(t.litFbo.id(), GL_COLOR_ATTACHMENT0, s.lighting);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, t.gbuffer.fbo.id());
     glReadPixels(x, glY, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &s.depth);

@@ -22,7 +22,12 @@ void main() {
     if (uAlphaMask && base.a < uAlphaCutoff) discard;
     vec3 n = materialNormal(vNormal, vTangent, vUV, gl_FrontFacing);
     float spec = materialSpecular(vUV);
+#ifdef GBUFFER_NO_EMISSIVE_AO
+    // The layout (packed) has no room for emission and occlusion: forward shows what deferred does.
+    vec3 color = surfaceTerms(uAmbient, base.rgb, 1.0, vec3(0.0));
+#else
     vec3 color = surfaceTerms(uAmbient, base.rgb, materialOcclusion(vUV), materialEmissive(vUV));
+#endif
     color += shadeGlobalLights(vWorldPos, n, base.rgb, spec);  // directional lights
     for (int i = 0; i < uLightCount; ++i) {
         vec4 pr = texelFetch(uLights, i * 4);

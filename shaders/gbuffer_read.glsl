@@ -32,8 +32,15 @@ vec3 gbufferNormal(ivec2 px) { return decodeNormal(texelFetch(uNormal, px, 0)); 
 // Linear albedo (rgb) and specular intensity (a) at px.
 vec4 gbufferAlbedoSpec(ivec2 px) { return texelFetch(uAlbedoSpec, px, 0); }
 
-// Emitted radiance (rgb) and ambient occlusion (a) at px.
-vec4 gbufferEmissiveAo(ivec2 px) { return texelFetch(uEmissiveAo, px, 0); }
+// Emitted radiance (rgb) and ambient occlusion (a) at px. A layout without the emissive_ao
+// attachment (packed) stores neither: no emission, no occlusion.
+vec4 gbufferEmissiveAo(ivec2 px) {
+#ifdef GBUFFER_NO_EMISSIVE_AO
+    return vec4(0.0, 0.0, 0.0, 1.0);
+#else
+    return texelFetch(uEmissiveAo, px, 0);
+#endif
+}
 
 // Colour attachment `index` of the layout exactly as stored (the order of core/gbuffer_layout.h);
 // zero past the layout's last one.
@@ -41,7 +48,9 @@ vec4 gbufferRawAttachment(ivec2 px, int index) {
 #ifdef GBUFFER_POSITION_FROM_DEPTH
     if (index == 0) return texelFetch(uNormal, px, 0);
     if (index == 1) return texelFetch(uAlbedoSpec, px, 0);
+#ifndef GBUFFER_NO_EMISSIVE_AO
     if (index == 2) return texelFetch(uEmissiveAo, px, 0);
+#endif
 #else
     if (index == 0) return texelFetch(uPosition, px, 0);
     if (index == 1) return texelFetch(uNormal, px, 0);

@@ -1,6 +1,6 @@
 // Geometry pass: writes the surface into the G-buffer in the current layout's encoding
 // (core/gbuffer_layout.h: world position unless rebuilt from depth, the normal, albedo/specular,
-// emissive/occlusion).
+// emissive/occlusion where the layout has room for them).
 #version 330 core
 #include "bindings.glsl"
 #include "material.glsl"
@@ -14,7 +14,9 @@ in vec4 vTangent;
 #ifdef GBUFFER_POSITION_FROM_DEPTH
 layout(location = 0) out vec4 gNormal;      // encodeNormal(world normal)
 layout(location = 1) out vec4 gAlbedoSpec;  // rgb linear albedo, a = specular intensity
+#ifndef GBUFFER_NO_EMISSIVE_AO
 layout(location = 2) out vec4 gEmissiveAo;  // rgb emitted radiance, a = ambient occlusion
+#endif
 #else
 layout(location = 0) out vec4 gPosition;    // xyz world position, w = 1 where geometry was drawn
 layout(location = 1) out vec4 gNormal;      // encodeNormal(world normal): xyz unit normal, w = 1
@@ -30,5 +32,7 @@ void main() {
 #endif
     gNormal = encodeNormal(materialNormal(vNormal, vTangent, vUV, gl_FrontFacing));
     gAlbedoSpec = vec4(base.rgb, materialSpecular(vUV));
+#ifndef GBUFFER_NO_EMISSIVE_AO
     gEmissiveAo = vec4(materialEmissive(vUV), materialOcclusion(vUV));
+#endif
 }

@@ -265,7 +265,7 @@ TEST_F(GBufferLayoutsGlTest, RawViewsAndExportShowTheStoredAttachments) {
     FrameStats const stats = renderer_->render({camera_, lights_, s, true});
     FloatImage const raw0 = renderer_->readRawAttachment(0);
     ASSERT_EQ(raw0.channels, 2);  // RG16: the octahedral normal
-    EXPECT_TRUE(renderer_->readRawAttachment(4).pixels.empty()) << "packed has four attachments";
+    EXPECT_TRUE(renderer_->readRawAttachment(3).pixels.empty()) << "packed has three attachments";
     // The floor's normal (0, 1, 0) encodes to oct (0, 1), stored biased as (0.5, 1).
     EXPECT_NEAR(raw0.at(kW / 2, kH - 4, 0), 0.5f, 1e-4f);
     EXPECT_NEAR(raw0.at(kW / 2, kH - 4, 1), 1.0f, 1e-4f);
@@ -280,10 +280,11 @@ TEST_F(GBufferLayoutsGlTest, RawViewsAndExportShowTheStoredAttachments) {
     std::string const dir = test::freshTempDir("gbuffer_layouts_export");
     FrameExport frame{camera_, lights_, s, stats, scene_.triangleCount(), {}};
     ASSERT_FALSE(exportFrame(*renderer_, frame, dir));
-    for (char const* f : {"raw_normal_oct.exr", "raw_albedo_spec.png", "raw_emissive_ao.png", "raw_depth.exr",
-                          "position.exr", "normal.exr", "emissive.exr"})
+    for (char const* f :
+         {"raw_normal_oct.exr", "raw_albedo_spec.png", "raw_depth.exr", "position.exr", "normal.exr", "emissive.exr"})
         EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
     EXPECT_FALSE(std::filesystem::exists(dir + "/raw_position.exr")) << "packed stores no position";
+    EXPECT_FALSE(std::filesystem::exists(dir + "/raw_emissive_ao.png")) << "packed stores no emissive_ao";
     auto const position = readImage(dir + "/position.exr");
     ASSERT_TRUE(position);
     FloatImage const decoded = renderer_->readAttachment(Attachment::Position);

@@ -127,14 +127,27 @@ TEST(RenderCommand, LayoutWritesItsRawAttachmentsAndTheDecodedInputs) {
     std::string const out = test::freshTempDir("render_layout_packed");
     auto const r = runGbufferLab({"render", "--out", out, "--size", "64x36", "--layout", "packed"});
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (char const* f : {"raw_normal_oct.exr", "raw_albedo_spec.png", "raw_emissive_ao.png", "raw_depth.exr",
-                          "position.exr", "normal.exr", "emissive.exr"})
+    for (char const* f :
+         {"raw_normal_oct.exr", "raw_albedo_spec.png", "raw_depth.exr", "position.exr", "normal.exr", "emissive.exr"})
         EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
     EXPECT_FALSE(fs::exists(out + "/raw_position.exr"));
+    // The raw files follow the layout's attachments: packed has no room for emissive_ao.
+    EXPECT_FALSE(fs::exists(out + "/raw_emissive_ao.png"));
     std::ifstream statsFile(out + "/stats.json");
     auto const stats = nlohmann::json::parse(statsFile);
     EXPECT_EQ(stats["layout"], "packed");
-    EXPECT_EQ(stats["gbuffer_bytes_per_pixel"], 16);  // RG16 + RGBA8 + RGBA8 emissive_ao + DEPTH24_STENCIL8
+    EXPECT_EQ(stats["gbuffer_bytes_per_pixel"], 12);  // RG16 + RGBA8 + DEPTH24_STENCIL8
+    EXPECT_EQ(stats["gbuffer_note"],
+              "packed: no room for emissive and occlusion in 12 bytes; emission and AO are not shown");
+    // emissive.exr holds what packed decodes: emission 0, occlusion 1, at every pixel.
+    auto const emissive = readImage(out + "/emissive.exr");
+    ASSERT_TRUE(emissive);
+    ASSERT_EQ(emissive->channels, 4);
+    int notDecoded = 0;
+    for (std::size_t i = 0; i + 3 < emissive->pixels.size(); i += 4)
+        notDecoded += emissive->pixels[i] != 0.0f || emissive->pixels[i + 1] != 0.0f ||
+                      emissive->pixels[i + 2] != 0.0f || emissive->pixels[i + 3] != 1.0f;
+    EXPECT_EQ(notDecoded, 0);
     // normal.exr is decoded: unit length wherever geometry was drawn (w = 1).
     auto const normal = readImage(out + "/normal.exr");
     ASSERT_TRUE(normal);
@@ -158,6 +171,30 @@ TEST(RenderCommand, AccumulationSplitWritesBothLightTargets) {
         EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
     std::ifstream statsFile(out + "/stats.json");
     EXPECT_EQ(nlohmann::json::parse(statsFile)["accumulation"], "split");
+}
+
+TEST(RenderCommand, PackedDropsTheEmissionAnEmissiveSceneHas) {
+    std::string const helmet = test::sharedGltfDir() + "/DamagedHelmet/DamagedHelmet.gltf";
+    if (!fs::exists(helmet)) GTEST_SKIP() << "needs the shared glTF sample models beside the project: " << helmet;
+    // The helmet's emissive texture lights its visor: classic stores it, packed has no room for it.
+    auto emissionSum = [&](char const* layout, bool expectRaw) {
+        std::string const out = test::freshTempDir(std::string("render_emissive_") + layout);
+        auto const r =
+            runGbufferLab({"render", "--out", out, "--size", "64x64", "--scene", helmet, "--layout", layout});
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_EQ(fs::exists(out + "/raw_emissive_ao.exr") || fs::exists(out + "/raw_emissive_ao.png"), expectRaw)
+            << layout;
+        auto const emissive = readImage(out + "/emissive.exr");
+        double sum = 0.0;
+        if (emissive)
+            for (std::size_t i = 0; i + 3 < emissive->pixels.size(); i += 4)
+                sum += double(emissive->pixels[i]) + emissive->pixels[i + 1] + emissive->pixels[i + 2];
+        else
+            ADD_FAILURE() << layout << ": no emissive.exr";
+        return sum;
+    };
+    EXPECT_GT(emissionSum("classic", true), 1.0) << "the scene has emission to lose";
+    EXPECT_EQ(emissionSum("packed", false), 0.0) << "packed decodes emission 0 everywhere";
 }
 
 TEST(RenderCommand, NormalMapsBendTheStoredNormals) {

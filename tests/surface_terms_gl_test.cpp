@@ -153,10 +153,20 @@ TEST_F(SurfaceTermsGlTest, LoaderReadsEmissionOcclusionAndTheirMappings) {
     EXPECT_EQ(m.occlusionTransform.texCoord, 0);
 }
 
+// What the layout keeps of the material's emission and occlusion: all of it where it has the
+// emissive_ao attachment, nothing in packed (decoded as emission 0, occlusion 1).
+glm::vec3 storedEmission(GBufferLayout layout) {
+    return storesEmissiveAo(layoutDesc(layout)) ? expectedEmission() : glm::vec3(kNoEmissiveAo);
+}
+float storedOcclusion(GBufferLayout layout) {
+    return storesEmissiveAo(layoutDesc(layout)) ? expectedOcclusion() : kNoEmissiveAo.a;
+}
+
 TEST_F(SurfaceTermsGlTest, WithNoLightsEveryModeShowsOccludedAmbientPlusEmission) {
-    glm::vec3 const expected = glm::vec3(0.5f) * kAlbedo * expectedOcclusion() + expectedEmission();
     for (GBufferLayout layout : kAllLayouts)
         for (LightingMode mode : modes()) {
+            // packed shows neither emission nor occlusion, in every mode (forward included).
+            glm::vec3 const expected = glm::vec3(0.5f) * kAlbedo * storedOcclusion(layout) + storedEmission(layout);
             PipelineSettings const s = settings(layout, mode);
             FloatImage const lit = lighting(s, {});
             int wrong = 0;
@@ -174,8 +184,8 @@ TEST_F(SurfaceTermsGlTest, WithNoLightsEveryModeShowsOccludedAmbientPlusEmission
             // What the G-buffer holds: the emissive attachment, decoded, at the centre.
             FloatImage const em = renderer_->readAttachment(Attachment::Emissive);
             for (int c = 0; c < 3; ++c)
-                EXPECT_NEAR(em.at(kSize / 2, kSize / 2, c), expectedEmission()[c], 2.0e-3f) << what(layout, mode);
-            EXPECT_NEAR(em.at(kSize / 2, kSize / 2, 3), expectedOcclusion(), 2.0e-3f) << what(layout, mode);
+                EXPECT_NEAR(em.at(kSize / 2, kSize / 2, c), storedEmission(layout)[c], 2.0e-3f) << what(layout, mode);
+            EXPECT_NEAR(em.at(kSize / 2, kSize / 2, 3), storedOcclusion(layout), 2.0e-3f) << what(layout, mode);
         }
 }
 
@@ -222,6 +232,12 @@ TEST_F(SurfaceTermsGlTest, WithALightEveryModeMatchesTheCpuOnTheStoredInputs) {
                         in.specular = alb.at(x, y, 3);
                         in.emissive = {em.at(x, y, 0), em.at(x, y, 1), em.at(x, y, 2)};
                         in.occlusion = em.at(x, y, 3);
+                        if (!storesEmissiveAo(layoutDesc(layout))) {
+                            // packed: the CPU value with emissive 0 and ao 1, whatever was read back.
+                            EXPECT_EQ(glm::vec4(in.emissive, in.occlusion), kNoEmissiveAo) << x << " " << y;
+                            in.emissive = glm::vec3(0.0f);
+                            in.occlusion = 1.0f;
+                        }
                         in.viewPosition = camera_.position;
                         in.shininess = s.shininess;
                     }
@@ -268,7 +284,7 @@ TEST_F(SurfaceTermsGlTest, OneLightsContributionLeavesEmissionAndAmbientOut) {
 }
 
 TEST_F(SurfaceTermsGlTest, ExportWritesTheDecodedEmissionAndTheRawAttachment) {
-    PipelineSettings const s = settings(GBufferLayout::Packed, LightingMode::Quad);
+    PipelineSettings const s = settings(GBufferLayout::Rgb10a2, LightingMode::Quad);
     FrameStats const stats = renderer_->render({camera_, {}, s, true});
     std::string const dir = test::freshTempDir("surface_terms_export");
     FrameExport frame{camera_, {}, s, stats, scene_.triangleCount(), {DebugView::Emissive, DebugView::Occlusion}};
@@ -283,4 +299,39 @@ TEST_F(SurfaceTermsGlTest, ExportWritesTheDecodedEmissionAndTheRawAttachment) {
     ASSERT_TRUE(view);
     // The occlusion view remaps [0, 1] to grey: 0.6265 within two 8-bit steps (store and display).
     EXPECT_NEAR(view->at(kSize / 2, kSize / 2, 0), expectedOcclusion(), 2.0f / 255.0f);
+    std::ifstream statsFile(dir + "/stats.json");
+    EXPECT_FALSE(json::parse(statsFile).contains("gbuffer_note")) << "rgb10a2 stores emission and occlusion";
+}
+
+TEST_F(SurfaceTermsGlTest, PackedStoresNoEmissionOrOcclusionAndSaysSo) {
+    PipelineSettings const s = settings(GBufferLayout::Packed, LightingMode::Quad);
+    FrameStats const stats = renderer_->render({camera_, {}, s, true});
+    EXPECT_EQ(stats.glErrors, 0u);
+    std::string const dir = test::freshTempDir("surface_terms_packed_export");
+    FrameExport frame{camera_, {}, s, stats, scene_.triangleCount(), {DebugView::Emissive, DebugView::Occlusion}};
+    ASSERT_FALSE(exportFrame(*renderer_, frame, dir));
+    // emissive.exr is what packed decodes: emission 0 and occlusion 1 at every pixel (exact).
+    auto const emissive = readImage(dir + "/emissive.exr");
+    ASSERT_TRUE(emissive);
+    ASSERT_EQ(emissive->channels, 4);
+    for (int y = 0; y < kSize; y += 7)
+        for (int x = 0; x < kSize; x += 7)
+            for (int c = 0; c < 4; ++c) ASSERT_EQ(emissive->at(x, y, c), kNoEmissiveAo[c]) << x << " " << y << " " << c;
+    EXPECT_FALSE(fs::exists(dir + "/raw_emissive_ao.png")) << "the raw files follow the layout's attachments";
+    EXPECT_FALSE(fs::exists(dir + "/raw_emissive_ao.exr"));
+    auto const emissiveView = readImage(dir + "/view_emissive.png");
+    auto const occlusionView = readImage(dir + "/view_occlusion.png");
+    ASSERT_TRUE(emissiveView && occlusionView);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(emissiveView->at(kSize / 2, kSize / 2, c), 0.0f) << c;
+        EXPECT_EQ(occlusionView->at(kSize / 2, kSize / 2, c), 1.0f) << c;
+    }
+    std::ifstream statsFile(dir + "/stats.json");
+    json const st = json::parse(statsFile);
+    EXPECT_EQ(st["gbuffer_bytes_per_pixel"], 12);
+    EXPECT_EQ(st["gbuffer_note"], layoutOmissionNote(layoutDesc(GBufferLayout::Packed)));
+    // The inspector's sample decodes the same: emission 0, occlusion 1.
+    PixelSample const px = renderer_->samplePixel(kSize / 2, kSize / 2, camera_);
+    EXPECT_TRUE(px.covered);
+    EXPECT_EQ(px.emissiveAo, kNoEmissiveAo);
 }

@@ -89,6 +89,10 @@ struct FloatImage {
     float at(int x, int y, int c) const { return pixels[(std::size_t(y) * width + x) * channels + c]; }
 };
 
+// What a layout without the emissive_ao attachment decodes (shaders/gbuffer_read.glsl,
+// gbufferEmissiveAo under GBUFFER_NO_EMISSIVE_AO): no emission (rgb 0), no occlusion (a 1).
+inline constexpr glm::vec4 kNoEmissiveAo{0.0f, 0.0f, 0.0f, 1.0f};
+
 // Light cubes are drawn unlit with the light's colour times this, in HDR: bright enough to read as
 // emissive, low enough that tonemapping keeps their hue.
 inline constexpr float kLightCubeEmissive = 1.5f;

@@ -74,9 +74,10 @@ struct GBufferLayoutDesc {
 };
 
 // The one table of layouts, in GBufferLayout order. Layouts that rebuild position use a 24-bit
-// depth; classic keeps a 32-bit float depth. Every layout stores emissive + occlusion in one more
-// attachment: RGBA16F in classic (4 bytes more than RGBA8, room for emission above 1), RGBA8 in the
-// three compact ones, which grow from 12 to 16 bytes a pixel (no spare channel holds three more values).
+// depth; classic keeps a 32-bit float depth. Emissive + occlusion take one more attachment where
+// there is room: RGBA16F in classic (room for emission above 1), RGBA8 in the teaching layouts
+// naive8 and rgb10a2 (16 bytes a pixel, no byte target). packed keeps the 12 bytes, where no
+// spare channel holds four more values, so it stores neither: it decodes emission 0 and occlusion 1.
 inline constexpr std::array<GBufferLayoutDesc, 4> kGBufferLayouts{{
     {"classic",
      true,
@@ -92,9 +93,8 @@ inline constexpr std::array<GBufferLayoutDesc, 4> kGBufferLayouts{{
      NormalEncoding::Octahedral,
      {{{GBufferSlot::Normal, "normal_oct", TexelFormat::RG16},
        {GBufferSlot::AlbedoSpec, "albedo_spec", TexelFormat::RGBA8},
-       {GBufferSlot::Emissive, "emissive_ao", TexelFormat::RGBA8},
        {GBufferSlot::Depth, "depth", TexelFormat::Depth24Stencil8}}},
-     4},
+     3},
     {"naive8",
      false,
      NormalEncoding::Biased,
@@ -124,6 +124,11 @@ constexpr int colorAttachmentIndex(GBufferLayoutDesc const& d, GBufferSlot slot)
     return -1;
 }
 
+// Whether the layout has an emissive_ao attachment (layouts without one decode emission 0, occlusion 1).
+constexpr bool storesEmissiveAo(GBufferLayoutDesc const& d) {
+    return colorAttachmentIndex(d, GBufferSlot::Emissive) >= 0;
+}
+
 // The #defines that select this layout's encode (geometry.frag) and decode (gbuffer_read.glsl).
 inline std::vector<std::string> layoutShaderDefines(GBufferLayoutDesc const& d) {
     std::vector<std::string> out;
@@ -138,6 +143,7 @@ inline std::vector<std::string> layoutShaderDefines(GBufferLayoutDesc const& d) 
             out.push_back("GBUFFER_NORMAL_OCTAHEDRAL");
             break;
     }
+    if (!storesEmissiveAo(d)) out.push_back("GBUFFER_NO_EMISSIVE_AO");
     return out;
 }
 
@@ -152,6 +158,14 @@ constexpr int layoutBytesPerPixel(GBufferLayoutDesc const& d) {
 // Megabytes (10^6 bytes) the layout's attachments take at width x height.
 constexpr double layoutMegabytes(GBufferLayoutDesc const& d, int width, int height) {
     return double(layoutBytesPerPixel(d)) * double(width) * double(height) / 1.0e6;
+}
+
+// What the user is told when the layout does not store emission and occlusion (stats panel, pixel
+// inspector, export's stats.json); empty when it does.
+inline std::string layoutOmissionNote(GBufferLayoutDesc const& d) {
+    if (storesEmissiveAo(d)) return {};
+    return std::string(d.name) + ": no room for emissive and occlusion in " + std::to_string(layoutBytesPerPixel(d)) +
+           " bytes; emission and AO are not shown";
 }
 
 }  // namespace gbl

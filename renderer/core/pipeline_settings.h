@@ -39,7 +39,7 @@ enum class DebugView {
     Raw0 = 10,
     Raw1 = 11,
     Raw2 = 12,
-    Raw3 = 13,  // classic's fourth colour attachment (emissive_ao); zero in the others
+    Raw3 = 13,  // classic's fourth colour attachment (emissive_ao); zero in the others (and raw2 in packed)
     // The emissive attachment decoded: emitted radiance (rgb), and ambient occlusion as grey.
     Emissive = 14,
     Occlusion = 15,

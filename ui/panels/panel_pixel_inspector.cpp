@@ -1,6 +1,7 @@
 // Pixel inspector window.
 #include "panels/panel_pixel_inspector.h"
 
+#include "core/gbuffer_layout.h"
 #include "model/pixel_breakdown.h"
 #include "model/viewer_tools.h"
 #include "panels/gui_compat.h"
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 namespace gbl::ui {
@@ -77,6 +79,9 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
             // The depth as stored (DEPTH32F) with its raw bits, as the magnifier shows them.
             ImGui::TextWrapped("depth stored %s", storedFloatText(s.depth).c_str());
             ImGui::Text("stencil %u", s.stencil);
+            // A layout without the emissive_ao attachment shows emissive 0 and ao 1: say why.
+            if (std::string const note = layoutOmissionNote(layoutDesc(state.settings.layout)); !note.empty())
+                ImGui::TextWrapped("emissive,ao not stored: %s", note.c_str());
             if (s.covered) {
                 float const err = glm::length(glm::vec3(s.position) - s.reconstructedPosition);
                 ImGui::Text("rebuilt from depth is %.3g units off", err);

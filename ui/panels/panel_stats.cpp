@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 namespace gbl::ui {
 
@@ -96,6 +97,11 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
         ImGui::Text("Layout %s: %d bytes a pixel", layout.name.data(), layoutBytesPerPixel(layout));
         for (GBufferAttachmentDesc const& a : layout.attachments())
             ImGui::TextDisabled("  %s %s: %d B", a.name.data(), texelFormatName(a.format).data(), texelBytes(a.format));
+        if (std::string const note = layoutOmissionNote(layout); !note.empty()) {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
+            ImGui::TextWrapped("%s", note.c_str());
+            ImGui::PopStyleColor();
+        }
         ImGui::TextWrapped("%.1f MB at %dx%d, %.1f MB at 1080p, %.1f MB at 4K",
                            layoutMegabytes(layout, f.width, f.height), f.width, f.height,
                            layoutMegabytes(layout, 1920, 1080), layoutMegabytes(layout, 3840, 2160));
