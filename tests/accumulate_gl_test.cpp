@@ -32,27 +32,18 @@ double maxAbsDiff(FloatImage const& a, FloatImage const& b) {
     return m;
 }
 
-class AccumulateGlTest : public GlTest {
+class AccumulateGlTest : public test::CourtyardGlTest {
 protected:
+    AccumulateGlTest() : CourtyardGlTest(kW, kH) {}
     void SetUp() override {
-        GlTest::SetUp();
-        scene_ = makeDefaultScene();
-        lights_ = scene_.lights;
-        // Above the courtyard, outside every light's volume (as light_modes_gl_test's camera).
-        camera_.position = {0.0f, 11.5f, 10.0f};
-        camera_.lookAt({0.0f, 0.0f, -2.0f});
-        renderer_ = makeRenderer(kW, kH);
-        ASSERT_FALSE(renderer_->setScene(scene_));
+        CourtyardGlTest::SetUp();
+        if (IsSkipped() || HasFatalFailure()) return;
         // The CPU reference reads the surface from a deferred G-buffer (forward mode has none).
         PipelineSettings quad = settings(LightingMode::Quad);
         lighting(quad, std::nullopt);
         position_ = renderer_->readAttachment(Attachment::Position);
         normal_ = renderer_->readAttachment(Attachment::Normal);
         albedo_ = renderer_->readAttachment(Attachment::AlbedoSpec);
-    }
-    void TearDown() override {
-        renderer_.reset();
-        GlTest::TearDown();
     }
 
     static PipelineSettings settings(LightingMode mode) {
@@ -116,10 +107,6 @@ protected:
         return over;
     }
 
-    SceneData scene_;
-    std::vector<PointLight> lights_;
-    Camera camera_;
-    std::unique_ptr<Renderer> renderer_;
     FloatImage position_, normal_, albedo_;
 };
 

@@ -22,22 +22,9 @@ namespace {
 
 constexpr int kW = 240, kH = 135;
 
-class AccumulationSplitGlTest : public GlTest {
+class AccumulationSplitGlTest : public test::CourtyardGlTest {
 protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        scene_ = makeDefaultScene();
-        lights_ = scene_.lights;
-        // The light_modes_gl_test camera: the courtyard from above, every light's highlight in view.
-        camera_.position = {0.0f, 11.5f, 10.0f};
-        camera_.lookAt({0.0f, 0.0f, -2.0f});
-        renderer_ = makeRenderer(kW, kH);
-        ASSERT_FALSE(renderer_->setScene(scene_));
-    }
-    void TearDown() override {
-        renderer_.reset();
-        GlTest::TearDown();
-    }
+    AccumulationSplitGlTest() : CourtyardGlTest(kW, kH) {}
 
     static PipelineSettings settings(LightingMode mode, LightAccumulation accumulation,
                                      GBufferLayout layout = GBufferLayout::Classic) {
@@ -61,11 +48,6 @@ protected:
         if (caps().computeShaders) m.insert(m.end(), {LightingMode::Tiled, LightingMode::Clustered});
         return m;
     }
-
-    SceneData scene_;
-    std::vector<PointLight> lights_;
-    Camera camera_;
-    std::unique_ptr<Renderer> renderer_;
 };
 
 std::string name(LightingMode mode) {

@@ -52,22 +52,9 @@ Diff compareRgb(FloatImage const& a, FloatImage const& b) {
     return d;
 }
 
-class GBufferLayoutsGlTest : public GlTest {
+class GBufferLayoutsGlTest : public test::CourtyardGlTest {
 protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        scene_ = makeDefaultScene();
-        lights_ = scene_.lights;
-        // The light_modes_gl_test camera: the courtyard from above, every light's highlight in view.
-        camera_.position = {0.0f, 11.5f, 10.0f};
-        camera_.lookAt({0.0f, 0.0f, -2.0f});
-        renderer_ = makeRenderer(kW, kH);
-        ASSERT_FALSE(renderer_->setScene(scene_));
-    }
-    void TearDown() override {
-        renderer_.reset();
-        GlTest::TearDown();
-    }
+    GBufferLayoutsGlTest() : CourtyardGlTest(kW, kH) {}
 
     static PipelineSettings settings(GBufferLayout layout, LightingMode mode = LightingMode::Quad) {
         PipelineSettings s;
@@ -85,11 +72,6 @@ protected:
         EXPECT_EQ(st.glErrors, 0u);
         return renderer_->readAttachment(Attachment::Lighting);
     }
-
-    SceneData scene_;
-    std::vector<PointLight> lights_;
-    Camera camera_;
-    std::unique_ptr<Renderer> renderer_;
 };
 
 }  // namespace

@@ -57,20 +57,14 @@ struct Check {
     double maxErr = 0.0;
 };
 
-class LightKindsGlTest : public GlTest {
+class LightKindsGlTest : public test::CourtyardGlTest {
 protected:
+    LightKindsGlTest() : CourtyardGlTest(kW, kH) {}
     void SetUp() override {
-        GlTest::SetUp();
-        scene_ = makeDefaultScene();
-        scene_.lights.clear();
-        renderer_ = makeRenderer(kW, kH);
+        CourtyardGlTest::SetUp();
+        if (IsSkipped() || HasFatalFailure()) return;
+        scene_.lights.clear();  // each test places its own lights
         ASSERT_FALSE(renderer_->setScene(scene_));
-        camera_.position = {0.0f, 11.5f, 10.0f};
-        camera_.lookAt({0.0f, 0.0f, -2.0f});
-    }
-    void TearDown() override {
-        renderer_.reset();
-        GlTest::TearDown();
     }
 
     static PipelineSettings settings(LightingMode mode, CullMode cull = CullMode::Front) {
@@ -147,10 +141,6 @@ protected:
         }
         return out;
     }
-
-    SceneData scene_;
-    Camera camera_;
-    std::unique_ptr<Renderer> renderer_;
 };
 
 }  // namespace

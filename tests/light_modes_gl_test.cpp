@@ -77,23 +77,9 @@ PipelineSettings settingsFor(LightingMode mode, CullMode cull = CullMode::Front)
 // to 2^-11; additive blending rounds once per light.
 constexpr double kHalfUlp = 1.0 / 2048.0;
 
-class LightModesGlTest : public GlTest {
+class LightModesGlTest : public test::CourtyardGlTest {
 protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        scene_ = makeDefaultScene();
-        lights_ = scene_.lights;
-        // Above the courtyard, higher than any light's volume reaches (lights are at most 3
-        // units up with radii up to 7.5): outside every volume, so the cull modes all hold.
-        camera_.position = {0.0f, 11.5f, 10.0f};
-        camera_.lookAt({0.0f, 0.0f, -2.0f});
-        renderer_ = makeRenderer(kW, kH);
-        ASSERT_FALSE(renderer_->setScene(scene_));
-    }
-    void TearDown() override {
-        renderer_.reset();
-        GlTest::TearDown();
-    }
+    LightModesGlTest() : CourtyardGlTest(kW, kH) {}
 
     FloatImage lighting(PipelineSettings const& s, Camera const& cam, std::span<PointLight const> lights) {
         FrameStats const st = renderer_->render({cam, lights, s, true});
@@ -148,11 +134,6 @@ protected:
         c.lookAt(glm::vec3(l.position.x, 0.0f, l.position.z) + glm::vec3(0.0f, 0.0f, -2.0f));
         return c;
     }
-
-    SceneData scene_;
-    std::vector<PointLight> lights_;
-    Camera camera_;
-    std::unique_ptr<Renderer> renderer_;
 };
 
 }  // namespace

@@ -38,21 +38,9 @@ std::vector<PointLight> smallLights(int count, float s) {
     return lights;
 }
 
-class ManyLightsGlTest : public GlTest {
+class ManyLightsGlTest : public test::CourtyardGlTest {
 protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        if (!caps().computeShaders) GTEST_SKIP() << caps().tiledUnavailableReason();
-        scene_ = makeDefaultScene();
-        camera_.position = {0.0f, 11.5f, 10.0f};  // above the courtyard, as light_modes_gl_test
-        camera_.lookAt({0.0f, 0.0f, -2.0f});
-        renderer_ = makeRenderer(kW, kH);
-        ASSERT_FALSE(renderer_->setScene(scene_));
-    }
-    void TearDown() override {
-        renderer_.reset();
-        GlTest::TearDown();
-    }
+    ManyLightsGlTest() : CourtyardGlTest(kW, kH, true) {}
     FloatImage lighting(LightingMode m, std::span<PointLight const> lights) {
         FrameStats const st = renderer_->render({camera_, lights, settingsFor(m), true});
         EXPECT_EQ(st.modeUsed, m) << st.fallbackReason;
@@ -96,10 +84,6 @@ protected:
             EXPECT_EQ(differ, 0) << name << ": pixels whose lit-light count differs from quad's";
         }
     }
-
-    SceneData scene_;
-    Camera camera_;
-    std::unique_ptr<Renderer> renderer_;
 };
 
 }  // namespace

@@ -12,20 +12,9 @@ namespace {
 
 constexpr int kW = 64, kH = 40;
 
-class StencilGlTest : public GlTest {
+class StencilGlTest : public test::CourtyardGlTest {
 protected:
-    void SetUp() override {
-        GlTest::SetUp();
-        scene_ = makeDefaultScene();
-        camera_.position = {0.0f, 11.5f, 10.0f};
-        camera_.lookAt({0.0f, 0.0f, -2.0f});
-        renderer_ = makeRenderer(kW, kH);
-        ASSERT_FALSE(renderer_->setScene(scene_));
-    }
-    void TearDown() override {
-        renderer_.reset();
-        GlTest::TearDown();
-    }
+    StencilGlTest() : CourtyardGlTest(kW, kH) {}
     void renderVolumesStencil() {
         PipelineSettings s;
         s.mode = LightingMode::Volumes;
@@ -56,10 +45,6 @@ protected:
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glDeleteFramebuffers(1, &fbo);
     }
-
-    SceneData scene_;
-    Camera camera_;
-    std::unique_ptr<Renderer> renderer_;
 };
 
 TEST_F(StencilGlTest, ReadsTheWrittenIntegersTopRowFirst) {

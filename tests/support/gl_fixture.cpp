@@ -2,6 +2,7 @@
 #include "gl_fixture.h"
 
 #include "gl/debug.h"
+#include "scene/default_scene.h"
 
 namespace gbl::test {
 
@@ -54,6 +55,22 @@ GlCaps const& GlTest::caps() {
 
 std::unique_ptr<Renderer> GlTest::makeRenderer(int width, int height) {
     return std::make_unique<Renderer>(gCaps, width, height);
+}
+
+void CourtyardGlTest::SetUp() {
+    GlTest::SetUp();
+    if (needsCompute_ && !caps().computeShaders) GTEST_SKIP() << caps().tiledUnavailableReason();
+    scene_ = makeDefaultScene();
+    lights_ = scene_.lights;
+    camera_.position = {0.0f, 11.5f, 10.0f};
+    camera_.lookAt({0.0f, 0.0f, -2.0f});
+    renderer_ = makeRenderer(width_, height_);
+    ASSERT_FALSE(renderer_->setScene(scene_));
+}
+
+void CourtyardGlTest::TearDown() {
+    renderer_.reset();
+    GlTest::TearDown();
 }
 
 }  // namespace gbl::test

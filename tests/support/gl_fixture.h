@@ -1,14 +1,17 @@
 // A headless GL context shared by every test of a GL test binary, with an error check after each test.
 #pragma once
 
+#include "core/camera.h"
 #include "gl/caps.h"
 #include "gl/headless_context.h"
 #include "renderer.h"
+#include "scene/scene_data.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace gbl::test {
 
@@ -32,6 +35,28 @@ protected:
 
 private:
     std::uint64_t errorsAtSetUp_ = 0;
+};
+
+// The generated default scene seen from above its courtyard, higher than any light's volume
+// reaches (lights are at most 3 units up with radii up to 7.5), so every cull mode holds and every
+// light's highlight is in view: the set-up the tests comparing lighting modes share. The size is
+// the test's; `needsCompute` skips, with the reason, where compute shaders are missing.
+class CourtyardGlTest : public GlTest {
+protected:
+    CourtyardGlTest(int width, int height, bool needsCompute = false)
+        : width_(width), height_(height), needsCompute_(needsCompute) {}
+    void SetUp() override;
+    void TearDown() override;
+
+    SceneData scene_;
+    std::vector<PointLight> lights_;  // the scene's lights, which tests may change
+    Camera camera_;
+    std::unique_ptr<Renderer> renderer_;
+
+private:
+    int width_;
+    int height_;
+    bool needsCompute_;
 };
 
 }  // namespace gbl::test
