@@ -7,7 +7,7 @@ packages=(
   libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev libopenimageio-dev libepoxy-dev libdraco-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libcli11-dev nlohmann-json3-dev
-  xvfb xauth xdotool
+  xvfb xauth xdotool x11-apps
   clang libclang-rt-14-dev clang-format
 )
 
