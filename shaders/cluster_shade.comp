@@ -75,7 +75,14 @@ void main() {
             for (uint k = 0u; k < tileCount; ++k) addLight(int(tileBinLight[base + k]), pos, n, as, color, lit);
             count = tileCount;  // what was evaluated
         } else {
-            for (int i = 0; i < uLightCount; ++i) addLight(i, pos, n, as, color, lit);
+            // LIGHTS_PER_ITERATION lights an iteration (light_fetch.glsl says why).
+#define ADD(j) addLight(j, pos, n, as, color, lit)
+            int i = 0;
+            for (; i + LIGHTS_PER_ITERATION <= uLightCount; i += LIGHTS_PER_ITERATION) {
+                ADD(i); ADD(i + 1); ADD(i + 2); ADD(i + 3); ADD(i + 4); ADD(i + 5); ADD(i + 6); ADD(i + 7);
+            }
+            for (; i < uLightCount; ++i) ADD(i);
+#undef ADD
         }
     }
     if (uShade) imageStore(uLightingImage, px, accumulationTarget0(color, surface, as.rgb));

@@ -9,14 +9,25 @@
 uniform int uLightCount;
 out vec4 fragColor;
 
+// 1 where light i reaches the surface at p (normal n) and lights it, else 0.
+float litBy(int i, vec3 p, vec3 n) {
+    return any(greaterThan(shadeLight(fetchLight(i), p, n, vec3(1.0), 1.0), vec3(0.0))) ? 1.0 : 0.0;
+}
+
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec3 pos;
     if (!gbufferPosition(px, pos)) { fragColor = vec4(0.0); return; }
     vec3 n = gbufferNormal(px);
     float lit = 0.0;
-    for (int i = 0; i < uLightCount; ++i)
-        if (any(greaterThan(shadeLight(fetchLight(i), pos, n, vec3(1.0), 1.0), vec3(0.0)))) lit += 1.0;
+    // LIGHTS_PER_ITERATION lights an iteration (light_fetch.glsl says why).
+#define ADD(j) lit += litBy(j, pos, n)
+    int i = 0;
+    for (; i + LIGHTS_PER_ITERATION <= uLightCount; i += LIGHTS_PER_ITERATION) {
+        ADD(i); ADD(i + 1); ADD(i + 2); ADD(i + 3); ADD(i + 4); ADD(i + 5); ADD(i + 6); ADD(i + 7);
+    }
+    for (; i < uLightCount; ++i) ADD(i);
+#undef ADD
     // Directional lights (radius 0 above, so never counted there) light every surface facing them.
     for (int k = 0; k < uDirectionalCount; ++k)
         if (any(greaterThan(shadeDirectional(fetchLight(uDirectionalLights[k]), pos, n, vec3(1.0), 1.0), vec3(0.0))))

@@ -17,6 +17,11 @@ uniform int uLightCount;
 
 out vec4 fragColor;
 
+vec3 shadeNear(int i, vec3 n, vec3 albedo, float spec) {
+    vec4 pr = texelFetch(uLights, i * 4);
+    return distance(pr.xyz, vWorldPos) < pr.w ? shadeLight(fetchLight(i), vWorldPos, n, albedo, spec) : vec3(0.0);
+}
+
 void main() {
     vec4 base = materialBaseColor(vUV);
     if (uAlphaMask && base.a < uAlphaCutoff) discard;
@@ -29,10 +34,13 @@ void main() {
     vec3 color = surfaceTerms(uAmbient, base.rgb, materialOcclusion(vUV), materialEmissive(vUV));
 #endif
     color += shadeGlobalLights(vWorldPos, n, base.rgb, spec);  // directional lights
-    for (int i = 0; i < uLightCount; ++i) {
-        vec4 pr = texelFetch(uLights, i * 4);
-        if (distance(pr.xyz, vWorldPos) >= pr.w) continue;
-        color += shadeLight(fetchLight(i), vWorldPos, n, base.rgb, spec);
+    // Every light in index order, LIGHTS_PER_ITERATION at a time (light_fetch.glsl says why).
+#define ADD(j) color += shadeNear(j, n, base.rgb, spec)
+    int i = 0;
+    for (; i + LIGHTS_PER_ITERATION <= uLightCount; i += LIGHTS_PER_ITERATION) {
+        ADD(i); ADD(i + 1); ADD(i + 2); ADD(i + 3); ADD(i + 4); ADD(i + 5); ADD(i + 6); ADD(i + 7);
     }
+    for (; i < uLightCount; ++i) ADD(i);
+#undef ADD
     fragColor = vec4(color, base.a);
 }

@@ -15,6 +15,14 @@ vec3 lightDirectionDecode(vec2 e) {
     return normalize(v);
 }
 
+// Loops that visit every light take LIGHTS_PER_ITERATION lights an iteration. Mesa's llvmpipe
+// ends a shader invocation's loops after 65,535 iterations counted over all of its loops together
+// (gallivm's loop limiter), with no error: a plain loop over more lights than that silently drops
+// the rest (at 262,144 lights clustered's over-cap pixels lost lights that way). Eight an
+// iteration keeps kMaxLights (262,144) at 32,768 iterations, with room for the shader's other
+// loops. tests/many_lights_gl_test.cpp ("MoreLightsThanOneShaderMayLoopOver") checks it.
+#define LIGHTS_PER_ITERATION 8
+
 Light fetchLight(int i) {
     vec4 a = texelFetch(uLights, i * 4 + 0);
     vec4 b = texelFetch(uLights, i * 4 + 1);

@@ -13,6 +13,12 @@ uniform int uLightCount;
 layout(location = 0) out vec4 fragColor;     // the lit value; split: diffuse light
 layout(location = 1) out vec4 fragSpecular;  // split: specular light (no attachment in single frames)
 
+void addLight(int i, vec3 pos, vec3 n, float specular, inout LightSum sum) {
+    // Distance test on the first texel alone: most lights are out of reach of most pixels.
+    vec4 pr = texelFetch(uLights, i * 4);
+    if (distance(pr.xyz, pos) < pr.w) accumulateLight(sum, fetchLight(i), pos, n, specular);
+}
+
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec3 pos;
@@ -26,12 +32,14 @@ void main() {
     vec3 surface = surfaceTerms(uAmbient, as.rgb, ea.a, ea.rgb);
     LightSum sum = noLight();
     accumulateGlobalLights(sum, pos, n, as.a);  // directional lights: no volume, every pixel
-    for (int i = 0; i < uLightCount; ++i) {
-        // Distance test on the first texel alone: most lights are out of reach of most pixels.
-        vec4 pr = texelFetch(uLights, i * 4);
-        if (distance(pr.xyz, pos) >= pr.w) continue;
-        accumulateLight(sum, fetchLight(i), pos, n, as.a);
+    // Every light in index order, LIGHTS_PER_ITERATION at a time (light_fetch.glsl says why).
+#define ADD(j) addLight(j, pos, n, as.a, sum)
+    int i = 0;
+    for (; i + LIGHTS_PER_ITERATION <= uLightCount; i += LIGHTS_PER_ITERATION) {
+        ADD(i); ADD(i + 1); ADD(i + 2); ADD(i + 3); ADD(i + 4); ADD(i + 5); ADD(i + 6); ADD(i + 7);
     }
+    for (; i < uLightCount; ++i) ADD(i);
+#undef ADD
     fragColor = accumulationTarget0(sum, surface, as.rgb);
     fragSpecular = vec4(sum.specular, 1.0);
 }

@@ -7,6 +7,7 @@
 #include "gl_fixture.h"
 #include "scene/default_scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -40,7 +41,7 @@ std::vector<PointLight> smallLights(int count, float s) {
 
 class ManyLightsGlTest : public test::CourtyardGlTest {
 protected:
-    ManyLightsGlTest() : CourtyardGlTest(kW, kH, true) {}
+    explicit ManyLightsGlTest(int width = kW, int height = kH) : CourtyardGlTest(width, height, true) {}
     FloatImage lighting(LightingMode m, std::span<PointLight const> lights) {
         FrameStats const st = renderer_->render({camera_, lights, settingsFor(m), true});
         EXPECT_EQ(st.modeUsed, m) << st.fallbackReason;
@@ -111,4 +112,34 @@ TEST_F(ManyLightsGlTest, ClustersOverTheirCapShadeFromTheTileListAndStillMatchQu
     PointLight const crowd = lights[9];
     lights.insert(lights.begin() + 7, std::size_t(kClusterMaxLights + 44), crowd);
     expectTiledAndClusteredMatchQuad(lights, kW * kH / 4);
+}
+
+namespace {
+// Every pixel of quad visits every light: 70,000 of them want a tiny frame.
+constexpr int kTinyW = 48, kTinyH = 27;
+class TinyFrameManyLightsGlTest : public ManyLightsGlTest {
+protected:
+    TinyFrameManyLightsGlTest() : ManyLightsGlTest(kTinyW, kTinyH) {}
+};
+}  // namespace
+
+TEST_F(TinyFrameManyLightsGlTest, MoreLightsThanOneShaderMayLoopOver) {
+    // llvmpipe ends a shader invocation's loops after 65,535 iterations in all (light_fetch.glsl,
+    // LIGHTS_PER_ITERATION). 70,000 lights below the ground, past the far plane (they reach no
+    // pixel and no tile), come before kTileBinMaxLights + 100 copies of one scene light: quad
+    // loops over all of them at every pixel, and the copies' tiles overflow their bins and
+    // their clusters their lists, so clustered's pixels there loop over every light as well. A
+    // loop that stopped early would drop the copies, which all come after the 65,535th light.
+    std::vector<PointLight> lights = makeDefaultLights(32);
+    PointLight below = lights[0];
+    below.position.y = -1000.0f;
+    lights.insert(lights.end(), 70000, below);
+    PointLight const crowd = lights[5];
+    std::size_t const firstCopy = lights.size();
+    lights.insert(lights.end(), std::size_t(kTileBinMaxLights + 100), crowd);
+    ASSERT_GT(firstCopy, 65535u);
+    std::vector<float> const quadLit = litCounts(LightingMode::Quad, lights);
+    float const most = *std::max_element(quadLit.begin(), quadLit.end());
+    EXPECT_GE(most, float(kTileBinMaxLights + 100)) << "every copy of the crowded light reaches the surface under it";
+    expectTiledAndClusteredMatchQuad(lights, kTinyW * kTinyH / 4);
 }
