@@ -3,7 +3,8 @@
 // lighting_tiled.comp does), then one invocation per exponential depth slice lists, in index
 // order, the tile's lights whose sphere reaches that slice's view-space box
 // (renderer/core/cluster_math.h does the same on the CPU). A tile with more candidates than the
-// bins hold tests every light instead.
+// bins hold tests every light instead. Either way the tile's own sorted list is left in its bin
+// (when it fits) for cluster_shade.comp's clusters over their cap.
 #version 430 core
 #include "bindings.glsl"
 #include "lighting.glsl"
@@ -32,6 +33,7 @@ uniform float uFar;
 shared uint sLightMask[MAX_LIGHT_WORDS];
 shared uint sWords[MAX_LIGHT_WORDS];
 shared uint sWordCount;
+shared uint sTileKept;  // over the bins' cap: the tile's lights so far (every chunk's)
 
 float sliceNear(int slice) { return uNear * pow(uFar / uNear, float(slice) / float(uGrid.z)); }
 
@@ -111,7 +113,10 @@ void main() {
             }
         }
     }
-    // Over the bins' cap: every light, in chunks (the same tests, the same order).
+    // Over the bins' cap: every light, in chunks (the same tests, the same order). The tile's lights
+    // found on the way are written to its bin, in index order, while they fit: a cluster over its
+    // own cap then shades from that list rather than from every light.
+    if (local == 0) sTileKept = 0u;
     for (int start = 0; binned < 0 && start < uLightCount; start += CHUNK_LIGHTS) {
         int chunk = min(uLightCount - start, CHUNK_LIGHTS);
         int words = (chunk + 31) / 32;
@@ -128,6 +133,16 @@ void main() {
             for (int w = 0; w < words; ++w)
                 if (sLightMask[w] != 0u) sWords[n++] = uint(w);
             sWordCount = n;
+            for (uint k = 0u; k < n; ++k) {
+                uint bits = sLightMask[sWords[k]];
+                while (bits != 0u) {
+                    int b = findLSB(bits);
+                    bits &= bits - 1u;
+                    if (sTileKept < uint(uBinCap))
+                        tileBinLight[uint(tileIndex) * uint(uBinCap) + sTileKept] = uint(start + int(sWords[k]) * 32 + b);
+                    ++sTileKept;
+                }
+            }
         }
         memoryBarrierShared();
         barrier();
@@ -151,4 +166,6 @@ void main() {
         barrier();
     }
     if (owner) clusterCount[cluster] = count;
+    // The tile's true count: its list in the bin is complete when the count is within the cap.
+    if (binned < 0 && local == 0) tileBinCount[tileIndex] = sTileKept;
 }
