@@ -68,8 +68,6 @@ std::string programFailure(std::string const& mode, ShaderLibrary const& shaders
 RendererImpl::RendererImpl(GlCaps capsIn, int width, int height) : caps(std::move(capsIn)), shaders(shaderReloadDir()) {
     installGlDebug(caps);
     glErrorsAtStart = glErrorCount();
-    lights.storageBuffer = caps.lightStorageBuffers;
-    shaders.setGlobalDefines(withLightFetchDefine({}, lights.storageBuffer), nullptr);  // nothing built yet
     // Core programs are fatal: without them there is no frame at all. Optional ones are built
     // when their mode is first asked for (volumesReady, tiledReady).
     for (ProgramInfo const& p : programTable()) {
@@ -107,8 +105,7 @@ void RendererImpl::applyLayout(GBufferLayout layout) {
     if (layout == targets.gbuffer.layout) return;
     std::string log;
     // The built-in shaders compile for every layout; a failure here is a bug in them.
-    if (!shaders.setGlobalDefines(withLightFetchDefine(layoutShaderDefines(layoutDesc(layout)), lights.storageBuffer),
-                                  &log))
+    if (!shaders.setGlobalDefines(layoutShaderDefines(layoutDesc(layout)), &log))
         throw std::runtime_error("Renderer: the shaders failed to build for G-buffer layout " +
                                  std::string(layoutDesc(layout).name) + ":\n" + log);
     if (auto err = createRenderTargets(targets.width, targets.height, layout, targets))

@@ -31,13 +31,4 @@
 // cluster_build.comp read): each 16x16 tile's candidate lights.
 #define BIND_SSBO_TILE_BIN_COUNTS 2
 #define BIND_SSBO_TILE_BIN_LIGHTS 3
-// The light buffer read as a storage buffer (shaders/light_fetch.glsl, GBL_LIGHTS_SSBO): the same
-// buffer object as the BIND_LIGHTS buffer texture, on every program that reads lights.
-#define BIND_SSBO_LIGHTS 4
-// Storage buffers in a #version 330 shader need the extensions, named before any declaration;
-// every shader includes this file first, right after #version.
-#if defined(GBL_LIGHTS_SSBO) && __VERSION__ < 430
-#extension GL_ARB_shader_storage_buffer_object : require
-#extension GL_ARB_shading_language_420pack : require
-#endif
 #endif

@@ -33,7 +33,7 @@ uniform bool uShade;          // write the lit image
 uniform bool uWriteCoverage;  // write x = lights in the cluster's list, y = lights that lit the pixel
 
 void addLight(int i, vec3 pos, vec3 n, vec4 as, inout LightSum color, inout float lit) {
-    vec4 pr = lightTexel(i * 4);
+    vec4 pr = texelFetch(uLights, i * 4);
     if (!(distance(pr.xyz, pos) < pr.w)) return;
     Light l = fetchLight(i);
     accumulateLight(color, l, pos, n, as.a);

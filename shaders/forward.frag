@@ -30,7 +30,7 @@ void main() {
 #endif
     color += shadeGlobalLights(vWorldPos, n, base.rgb, spec);  // directional lights
     for (int i = 0; i < uLightCount; ++i) {
-        vec4 pr = lightTexel(i * 4);
+        vec4 pr = texelFetch(uLights, i * 4);
         if (distance(pr.xyz, vWorldPos) >= pr.w) continue;
         color += shadeLight(fetchLight(i), vWorldPos, n, base.rgb, spec);
     }

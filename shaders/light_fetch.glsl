@@ -1,15 +1,5 @@
-// Reads one light from the light buffer (texel layout in renderer/gpu/light_buffer.h). One
-// buffer object, read two ways: as a storage buffer where the context has them in every stage
-// (GBL_LIGHTS_SSBO, injected by the renderer: GlCaps::lightStorageBuffers), where a light index
-// that is the same for every pixel of a draw is one load; otherwise as a buffer texture (the
-// OpenGL 3.3 path), a texel fetch per pixel. lightTexel(t) is texel t of either.
-#ifdef GBL_LIGHTS_SSBO
-layout(std430, binding = BIND_SSBO_LIGHTS) readonly buffer LightTexels { vec4 uLightTexels[]; };
-#define lightTexel(t) uLightTexels[t]
-#else
+// Reads one light from the light buffer texture (layout in renderer/gpu/light_buffer.h).
 uniform samplerBuffer uLights;
-#define lightTexel(t) texelFetch(uLights, t)
-#endif
 
 // Directional lights, shaded by every mode's full-screen loop (shadeGlobalLights below): their
 // indices in the light buffer, set by bindLights() (renderer/passes/shading_inputs.cpp).
@@ -26,10 +16,10 @@ vec3 lightDirectionDecode(vec2 e) {
 }
 
 Light fetchLight(int i) {
-    vec4 a = lightTexel(i * 4 + 0);
-    vec4 b = lightTexel(i * 4 + 1);
-    vec4 c = lightTexel(i * 4 + 2);
-    vec4 d = lightTexel(i * 4 + 3);
+    vec4 a = texelFetch(uLights, i * 4 + 0);
+    vec4 b = texelFetch(uLights, i * 4 + 1);
+    vec4 c = texelFetch(uLights, i * 4 + 2);
+    vec4 d = texelFetch(uLights, i * 4 + 3);
     return Light(a.xyz, b.xyz, c.xyz, a.w, b.w, lightDirectionDecode(d.yz), c.w, d.w);
 }
 
@@ -43,7 +33,7 @@ vec3 unpackLightWireColor(float bits) {
     c.b = floor(v / 256.0);
     return c / 255.0;
 }
-vec3 fetchLightColor(int i) { return unpackLightWireColor(lightTexel(i * 4 + 3).x); }
+vec3 fetchLightColor(int i) { return unpackLightWireColor(texelFetch(uLights, i * 4 + 3).x); }
 
 // Every directional light at a surface point: the "global lights in one full-screen pass" half
 // of the split (local lights are culled by radius, volumes or tiles; these reach every pixel).
@@ -58,9 +48,9 @@ vec3 shadeGlobalLights(vec3 p, vec3 n, vec3 albedo, float specular) {
 // pixels cannot meet light i's cone (apex at its view-space position, along its direction, outer
 // angle); always true for point lights. Run after the sphere test, which bounds the range.
 bool coneMayTouchSphere(int i, mat3 view, vec3 apexView, vec3 s, float sr) {
-    vec4 c = lightTexel(i * 4 + 2);
+    vec4 c = texelFetch(uLights, i * 4 + 2);
     if (c.w < -1.5) return true;  // no cone
-    vec3 axis = view * lightDirectionDecode(lightTexel(i * 4 + 3).yz);
+    vec3 axis = view * lightDirectionDecode(texelFetch(uLights, i * 4 + 3).yz);
     vec3 v = s - apexView;
     float along = dot(v, axis);
     float across = length(v - along * axis);

@@ -28,7 +28,7 @@ void main() {
     accumulateGlobalLights(sum, pos, n, as.a);  // directional lights: no volume, every pixel
     for (int i = 0; i < uLightCount; ++i) {
         // Distance test on the first texel alone: most lights are out of reach of most pixels.
-        vec4 pr = lightTexel(i * 4);
+        vec4 pr = texelFetch(uLights, i * 4);
         if (distance(pr.xyz, pos) >= pr.w) continue;
         accumulateLight(sum, fetchLight(i), pos, n, as.a);
     }

@@ -47,7 +47,7 @@ shared uint sMaxDepthBits;
 // pass (the binned and the every-light paths both call it).
 bool lightTouchesTile(int index, float minDepth, float maxDepth, vec3 left, vec3 right, vec3 bottom, vec3 top,
                       vec3 tileCentre, float tileRadius) {
-    vec4 positionRadius = lightTexel(index * 4);
+    vec4 positionRadius = texelFetch(uLights, index * 4);
     float r = positionRadius.w;
     vec3 c = (uView * vec4(positionRadius.xyz, 1.0)).xyz;
     float depth = -c.z;
@@ -60,7 +60,7 @@ bool lightTouchesTile(int index, float minDepth, float maxDepth, vec3 left, vec3
 // Adds light `index` at the pixel: lights in the tile's list that miss this pixel's surface cost
 // one fetch (they would add exactly zero).
 void addLight(int index, vec3 pos, vec3 n, vec4 as, inout LightSum sum, inout float lit) {
-    vec4 positionRadius = lightTexel(index * 4);
+    vec4 positionRadius = texelFetch(uLights, index * 4);
     if (!(distance(positionRadius.xyz, pos) < positionRadius.w)) return;
     Light l = fetchLight(index);
     accumulateLight(sum, l, pos, n, as.a);

@@ -388,28 +388,3 @@ TEST_F(LightModesGlTest, WireframesAreDrawnInTheLightColourAndHiddenByTheScene) 
     changed({0.0f, 2.0f, 3.0f}, onWall, elsewhere, redder);  // in front of the wall, camera outside
     EXPECT_GT(onWall, 20) << "wires in front of the wall are visible over it";
 }
-
-// The two ways the shaders read the light buffer (shaders/light_fetch.glsl): a storage buffer where
-// the context has them, a buffer texture on OpenGL 3.3. Both load the same 32-bit floats and run
-// the same arithmetic on them, so every mode's image is identical, bit for bit (bound 0).
-TEST_F(LightModesGlTest, StorageBufferAndBufferTextureLightsGiveTheSameImage) {
-    if (!caps().lightStorageBuffers)
-        GTEST_SKIP() << "this context has no storage buffers in the vertex and fragment stages, so only the "
-                        "buffer-texture path exists";
-    GlCaps textureCaps = caps();
-    textureCaps.lightStorageBuffers = false;
-    Renderer r(textureCaps, kW, kH);
-    ASSERT_FALSE(r.setScene(scene_));
-    std::vector<LightingMode> modes = {LightingMode::Quad, LightingMode::Volumes, LightingMode::Forward};
-    if (caps().computeShaders) modes.insert(modes.end(), {LightingMode::Tiled, LightingMode::Clustered});
-    for (Camera const& cam : {camera_, insideCamera()}) {
-        for (LightingMode m : modes) {
-            FrameStats const st = r.render({cam, lights_, settingsFor(m), true});
-            EXPECT_EQ(st.modeUsed, m) << st.fallbackReason;
-            FloatImage const texture = r.readAttachment(Attachment::Lighting);
-            Diff const d = compare(lighting(settingsFor(m), cam, lights_), texture, [](double) { return 0.0; });
-            EXPECT_EQ(d.pixelsOver, 0) << enumName(kLightingModeNames, m) << ": " << describe(d);
-            EXPECT_GT(d.meanValue, 0.0) << enumName(kLightingModeNames, m) << ": an unlit image proves nothing";
-        }
-    }
-}

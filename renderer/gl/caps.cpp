@@ -3,8 +3,6 @@
 
 #include <epoxy/gl.h>
 
-#include <cstdlib>
-
 namespace gbl {
 
 namespace {
@@ -36,16 +34,6 @@ GlCaps detectGlCaps(int limitMajor, int limitMinor) {
         caps.atLeast(4, 3) || (has("GL_ARB_compute_shader") && has("GL_ARB_shader_storage_buffer_object") &&
                                has("GL_ARB_shader_image_load_store"));
     caps.pipelineStatistics = caps.atLeast(4, 6) || has("GL_ARB_pipeline_statistics_query");
-    bool const ssbo = caps.atLeast(4, 3) || (has("GL_ARB_shader_storage_buffer_object") &&
-                                             (caps.atLeast(4, 2) || has("GL_ARB_shading_language_420pack")));
-    GLint vertexBlocks = 0, fragmentBlocks = 0;
-    if (ssbo) {
-        glGetIntegerv(GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS, &vertexBlocks);
-        glGetIntegerv(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS, &fragmentBlocks);
-    }
-    char const* forced = std::getenv("GBL_LIGHT_BUFFER");
-    bool const textureForced = forced && std::string(forced) == "texture";
-    caps.lightStorageBuffers = ssbo && vertexBlocks > 0 && fragmentBlocks > 0 && !textureForced;
     return caps;
 }
 

@@ -15,11 +15,6 @@ struct GlCaps {
     bool khrDebug = false;            // GL 4.3 or GL_KHR_debug: debug callback and object labels
     bool computeShaders = false;      // GL 4.3 or ARB_compute_shader + SSBOs: tiled lighting
     bool pipelineStatistics = false;  // ARB_pipeline_statistics_query: fragment invocations
-    // Shaders read the light buffer as a storage buffer (GBL_LIGHTS_SSBO in shaders/light_fetch.glsl):
-    // GL 4.3 or ARB_shader_storage_buffer_object + ARB_shading_language_420pack, with storage blocks
-    // in the vertex and fragment stages (light volumes read lights in both). Otherwise, or with the
-    // environment variable GBL_LIGHT_BUFFER=texture, as a buffer texture (the OpenGL 3.3 path).
-    bool lightStorageBuffers = false;
 
     bool atLeast(int maj, int min) const { return major > maj || (major == maj && minor >= min); }
 

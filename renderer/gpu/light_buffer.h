@@ -26,15 +26,6 @@ namespace gbl {
 
 inline constexpr int kTexelsPerLight = 4;
 
-// The shader define that reads the light buffer as a storage buffer (shaders/light_fetch.glsl).
-inline constexpr char kLightsSsboDefine[] = "GBL_LIGHTS_SSBO";
-
-// `defines` plus kLightsSsboDefine when the lights are read from a storage buffer.
-inline std::vector<std::string> withLightFetchDefine(std::vector<std::string> defines, bool storageBuffer) {
-    if (storageBuffer) defines.emplace_back(kLightsSsboDefine);
-    return defines;
-}
-
 // The wire colour of texel 3: each channel rounded to 8 bits, packed as r + 256 g + 65536 b.
 float packWireColor(glm::vec3 color);
 
@@ -47,9 +38,6 @@ struct LightBuffer {
     gl::Texture texture;  // GL_TEXTURE_BUFFER over `buffer`, RGBA32F
     int count = 0;
     std::vector<int> directional;  // indices of the directional lights shaded, in list order
-    // Also bound as the storage buffer BIND_SSBO_LIGHTS (GlCaps::lightStorageBuffers; the shaders
-    // then read it there, built with kLightsSsboDefine).
-    bool storageBuffer = false;
 
     // Uploads every light the context's buffer textures can address (GL_MAX_TEXTURE_BUFFER_SIZE
     // texels, kTexelsPerLight per light; 65,536 texels = 16,384 lights is all GL guarantees,

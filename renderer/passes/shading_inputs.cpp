@@ -21,7 +21,6 @@ void bindGBuffer(GBuffer const& g) {
 
 void bindLights(gl::Program const& p, LightBuffer const& lights) {
     bindTextureUnit(slot::BIND_LIGHTS, GL_TEXTURE_BUFFER, lights.texture.id());
-    if (lights.storageBuffer) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_LIGHTS, lights.buffer.id());
     p.set("uLightCount", lights.count);
     p.set("uDirectionalCount", int(lights.directional.size()));
     if (!lights.directional.empty())
