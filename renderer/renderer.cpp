@@ -260,6 +260,8 @@ void RendererImpl::runLighting(FrameContext const& f) {
 }
 
 void RendererImpl::runCoverage(FrameContext const& f) {
+    coverageView = f.settings.view;
+    coverageMode = f.settings.mode;
     if (f.settings.mode == LightingMode::Clustered && f.settings.view != DebugView::TileLights) {
         // x = the pixel's cluster list, y = lights that lit it: the heat map's scale, as tiles.
         glBindFramebuffer(GL_FRAMEBUFFER, targets.coverageFbo.id());
@@ -295,6 +297,7 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     stats.layout = input.settings.layout;
     if (targets.empty()) return stats;  // minimised: nothing to draw into
 
+    coverageView.reset();  // counts of an earlier frame
     FrameContext f = frameContext(input);
     if (auto why = modeUnavailable(f.settings.mode)) {
         f.settings.mode = LightingMode::Quad;

@@ -74,6 +74,10 @@ public:
     gl::Query fragmentQuery;  // GL_FRAGMENT_SHADER_INVOCATIONS_ARB when available
     std::uint64_t glErrorsAtStart = 0;
     glm::mat4 frameInverseViewProj{1.0f};  // of the last frame rendered: decodes its G-buffer
+    // What the coverage target counts now (runCoverage), for the pixel inspector; none before a
+    // count view ran in this frame.
+    std::optional<DebugView> coverageView;
+    LightingMode coverageMode = LightingMode::Quad;
     OptionalFeature volumesFeature;
     OptionalFeature tiledFeature;
     OptionalFeature clusteredFeature;

@@ -193,6 +193,13 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
     else
         s.emissiveAo = kNoEmissiveAo;
     readColor(t.litFbo.id(), GL_COLOR_ATTACHMENT0, s.lighting);
+    if (impl_->coverageView) {
+        glm::vec4 c{0.0f};
+        readColor(t.coverageFbo.id(), GL_COLOR_ATTACHMENT0, c);
+        s.coverage = glm::vec2(c);
+        s.coverageView = impl_->coverageView;
+        s.coverageMode = impl_->coverageMode;
+    }
     glBindFramebuffer(GL_READ_FRAMEBUFFER, t.gbuffer.fbo.id());
     glReadPixels(x, glY, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &s.depth);
     std::uint8_t stencil = 0;

@@ -20,7 +20,6 @@ uniform float uRangeMax;
 uniform int uNormalDisplay;
 uniform float uNear;
 uniform float uFar;
-uniform float uHeatMax;      // count shown at the top of the heat ramp
 uniform int uClusterSlices;  // kClusterSlices: the clustered grid's exponential depth slices
 
 in vec2 vUV;
@@ -40,34 +39,31 @@ vec3 tonemap(vec3 hdr) {
 
 vec4 remap(vec4 v) { return (v - vec4(uRangeMin)) / max(uRangeMax - uRangeMin, 1e-20); }
 
-// Blue -> cyan -> green -> yellow -> red over 0..1, black for exactly 0.
-vec3 heatRamp(float t) {
-    if (t <= 0.0) return vec3(0.0);
-    t = clamp(t, 0.0, 1.0);
-    vec3 a = mix(vec3(0.0, 0.0, 1.0), vec3(0.0, 1.0, 1.0), clamp(t * 4.0, 0.0, 1.0));
-    vec3 b = mix(vec3(0.0, 1.0, 0.0), vec3(1.0, 1.0, 0.0), clamp(t * 4.0 - 2.0, 0.0, 1.0));
-    vec3 c = mix(vec3(1.0, 1.0, 0.0), vec3(1.0, 0.0, 0.0), clamp(t * 4.0 - 3.0, 0.0, 1.0));
-    if (t < 0.25) return a;
-    if (t < 0.5) return mix(vec3(0.0, 1.0, 1.0), vec3(0.0, 1.0, 0.0), t * 4.0 - 1.0);
-    if (t < 0.75) return b;
-    return c;
+// The bin of a count on the heat maps' one scale (core/heat_scale.h heatBin is the twin): bin k
+// holds HEAT_EDGES[k] up to the next edge; NaN and negative counts fall in bin 0.
+int heatBin(float count) {
+    int bin = 0;
+    for (int k = 1; k < HEAT_BINS; ++k)
+        if (count >= float(HEAT_EDGES[k])) bin = k;
+    return bin;
 }
 
-// Legend along the bottom edge (frames of at least 64x64): the ramp from 0 to uHeatMax left to
-// right with a tick at every quarter; for the heat map the lower half shows the dimmed ramp of
-// pixels where nothing evaluated actually lit the surface.
+vec3 heatColor(float count) { return HEAT_COLORS[heatBin(count)] / 255.0; }
+
+// Legend along the bottom edge (frames of at least 64x64): one swatch per bin, equal widths
+// (HEAT_SWATCH texels, fewer on narrow frames), bin 0 on the left; the viewport labels them. For
+// the heat map the lower half shows each colour as dimmed where none of the evaluated lights lit
+// the surface (HEAT_WASTED_DIM).
 vec3 heatLegend(ivec2 px, vec3 color) {
     ivec2 size = textureSize(uCoverage, 0);
     if (size.x < 64 || size.y < 64) return color;
-    int x0 = 8, x1 = min(size.x - 8, 264), y0 = 6, y1 = 22;
+    int w = max(min(size.x - 16, HEAT_SWATCH * HEAT_BINS) / HEAT_BINS, 1);
+    int x0 = 8, x1 = x0 + w * HEAT_BINS, y0 = 6, y1 = 22;
     if (px.x < x0 - 1 || px.x > x1 || px.y < y0 - 1 || px.y > y1) return color;
     if (px.x == x0 - 1 || px.x == x1 || px.y == y0 - 1 || px.y == y1) return vec3(1.0);  // frame
-    float t = (float(px.x - x0) + 0.5) / float(x1 - x0);
-    int quarter = (x1 - x0) / 4;
-    if ((px.x - x0) % quarter == 0) return vec3(1.0);  // ticks at 0, 1/4, 1/2, 3/4 of uHeatMax
-    vec3 ramp = heatRamp(max(t, 1e-3));
-    if (uView == VIEW_HEATMAP && px.y < (y0 + y1) / 2) ramp *= 0.3;
-    return ramp;
+    vec3 swatch = HEAT_COLORS[(px.x - x0) / w] / 255.0;
+    if (uView == VIEW_HEATMAP && px.y < (y0 + y1) / 2) swatch *= HEAT_WASTED_DIM;
+    return swatch;
 }
 
 // The depth-slice view's colour of slice k (core/cluster_math.h, clusterSliceColor, is the twin):
@@ -131,16 +127,18 @@ void main() {
     case VIEW_DEPTH: v = vec4(vec3(texelFetch(uDepth, px, 0).r), 1.0); break;
     case VIEW_DEPTH_LINEAR: v = vec4(vec3(linearDepth(texelFetch(uDepth, px, 0).r, uNear, uFar)), 1.0); break;
     case VIEW_HEATMAP: {
-        // Hue: how many lights were evaluated here (volumes covering, tile list, or all);
-        // brightness: the share of them that actually lit the surface. Dim = wasted work.
+        // Colour: the bin of how many lights were evaluated here (volumes covering, tile or
+        // cluster list, or all); brightness: the share of them that actually lit the surface.
+        // Dim = wasted work (heatMapColor in core/heat_scale.h is the twin).
         vec2 c = texelFetch(uCoverage, px, 0).xy;  // x: evaluated, y: lit
-        v = vec4(heatRamp(c.x / uHeatMax) * mix(0.3, 1.0, c.y / max(c.x, 1.0)), 1.0);
+        float share = c.x > 0.0 ? clamp(c.y / c.x, 0.0, 1.0) : 0.0;
+        v = vec4(heatColor(c.x) * mix(HEAT_WASTED_DIM, 1.0, share), 1.0);
         data = false;
         break;
     }
     case VIEW_TILE_LIGHTS: {
         // Lights in each 16x16 tile's list, with the tile grid drawn dark.
-        v = vec4(heatRamp(texelFetch(uCoverage, px, 0).x / uHeatMax), 1.0);
+        v = vec4(heatColor(texelFetch(uCoverage, px, 0).x), 1.0);
         if (px.x % 16 == 0 || px.y % 16 == 0) v.rgb *= 0.5;
         data = false;
         break;

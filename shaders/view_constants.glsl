@@ -25,6 +25,16 @@
 // Width in texels of each slice's swatch in the depth-slice legend (kSliceSwatchTexels).
 #define SLICE_SWATCH 12
 
+// The count heat maps' one scale (core/heat_scale.h): bin k holds counts from HEAT_EDGES[k] up to
+// the next edge, shown in HEAT_COLORS[k] (sRGB bytes); legend swatches HEAT_SWATCH texels wide.
+#define HEAT_BINS 8
+#define HEAT_SWATCH 32
+const int HEAT_EDGES[HEAT_BINS] = int[HEAT_BINS](0, 1, 2, 4, 8, 16, 32, 64);
+const vec3 HEAT_COLORS[HEAT_BINS] = vec3[HEAT_BINS](vec3(0, 0, 0), vec3(40, 60, 220), vec3(0, 160, 255),
+    vec3(0, 200, 140), vec3(120, 220, 30), vec3(250, 220, 0), vec3(255, 120, 0), vec3(230, 0, 180));
+// The heat map's brightness where none of the evaluated lights lit the surface (kHeatWastedDim).
+const float HEAT_WASTED_DIM = 0.3;
+
 // gbl::Tonemap, TONEMAP_ + the upper-cased kTonemapNames entry.
 #define TONEMAP_EXPOSURE 0
 #define TONEMAP_REINHARD 1

@@ -1,6 +1,7 @@
 // The constants C++ and GLSL share: the enum values view.frag switches on, the binding slots of
 // shaders/bindings.glsl, and the program table's order.
 #include "core/cluster_math.h"
+#include "core/heat_scale.h"
 #include "core/pipeline_settings.h"
 #include "core/point_light.h"
 #include "core/view_params.h"
@@ -16,6 +17,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 using namespace gbl;
 
@@ -32,6 +34,27 @@ std::map<std::string, int> defines(std::string const& file) {
         std::smatch m;
         if (std::regex_match(text, m, line)) out[m[1]] = std::stoi(m[2]);
     }
+    return out;
+}
+
+// The numbers of a `const TYPE NAME... = ...;` line of a shader file (names and type words
+// dropped), in order; empty when no such line exists.
+std::vector<double> constNumbers(std::string const& file, std::string const& name) {
+    std::ifstream f(std::string(GBL_SOURCE_DIR) + "/shaders/" + file);
+    EXPECT_TRUE(f) << "cannot read shaders/" << file;
+    std::stringstream ss;
+    ss << f.rdbuf();
+    std::string const text = ss.str();
+    std::smatch m;
+    if (!std::regex_search(text, m, std::regex("\\bconst [a-z0-9]+ " + name + "\\b"))) return {};
+    std::size_t const start = std::size_t(m.position(0));
+    std::size_t const eq = text.find('=', start), end = text.find(';', start);
+    std::string const words =
+        std::regex_replace(text.substr(eq + 1, end - eq - 1), std::regex("[A-Za-z_][A-Za-z_0-9]*"), " ");
+    std::vector<double> out;
+    std::regex const number(R"(-?[0-9]+(\.[0-9]+)?)");
+    for (std::sregex_iterator it(words.begin(), words.end(), number), e; it != e; ++it)
+        out.push_back(std::stod(it->str()));
     return out;
 }
 
@@ -77,6 +100,27 @@ TEST(ShaderConstants, ViewConstantsMatchTheEnums) {
     EXPECT_EQ(overlays, cpp);
     ASSERT_EQ(all.count("SLICE_SWATCH"), 1u);
     EXPECT_EQ(all.at("SLICE_SWATCH"), kSliceSwatchTexels);
+}
+
+TEST(ShaderConstants, HeatScaleMatchesTheShader) {
+    // The heat maps' bins and colours (core/heat_scale.h) are the ones view.frag draws.
+    auto const all = defines("view_constants.glsl");
+    ASSERT_EQ(all.count("HEAT_BINS"), 1u);
+    EXPECT_EQ(all.at("HEAT_BINS"), kHeatBins);
+    ASSERT_EQ(all.count("HEAT_SWATCH"), 1u);
+    EXPECT_EQ(all.at("HEAT_SWATCH"), kHeatSwatchTexels);
+    std::vector<double> const edges = constNumbers("view_constants.glsl", "HEAT_EDGES");
+    ASSERT_EQ(edges.size(), std::size_t(kHeatBins));
+    for (int k = 0; k < kHeatBins; ++k) EXPECT_EQ(edges[std::size_t(k)], kHeatBinEdges[std::size_t(k)]) << k;
+    std::vector<double> const colors = constNumbers("view_constants.glsl", "HEAT_COLORS");
+    ASSERT_EQ(colors.size(), std::size_t(3 * kHeatBins));
+    for (int k = 0; k < kHeatBins; ++k)
+        for (int c = 0; c < 3; ++c)
+            EXPECT_EQ(colors[std::size_t(3 * k + c)], kHeatBinColors[std::size_t(k)][std::size_t(c)])
+                << "bin " << k << " channel " << c;
+    std::vector<double> const dim = constNumbers("view_constants.glsl", "HEAT_WASTED_DIM");
+    ASSERT_EQ(dim.size(), 1u);
+    EXPECT_FLOAT_EQ(float(dim[0]), kHeatWastedDim);
 }
 
 TEST(ShaderConstants, DirectionalLightLimitMatchesTheShader) {

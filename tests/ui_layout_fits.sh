@@ -1,7 +1,8 @@
 #!/bin/sh
 # Nothing is cut off at 1280x720 and 1600x900 where ImGui can tell (ui/panels/clip_check.h): the
 # editor runs a few frames with --log-frames and the last frame's "clipped" list must be empty
-# (every window, the G-buffer strip included), at start and with the viewer tools' rows open.
+# (every window, the G-buffer strip included), at start, with the viewer tools' rows open, and with
+# a count heat map shown and the pixel inspector's exact-count line.
 # usage: ui_layout_fits.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
 set -eu
 bin="$1"
@@ -22,12 +23,22 @@ frames 2
 viewer-tool albedo diff on
 frames 4
 SCRIPT
+# The third shows the lights-per-cluster heat map with its labelled legend, the inspector locked
+# on a surface pixel (its count line).
+cat > "$work/heat.txt" <<'SCRIPT'
+frames 3
+set mode clustered
+set view heatmap
+inspect 300 250
+frames 4
+SCRIPT
 status=0
 for size in 1280x720 1600x900; do
-    for run in start tools; do
+    for run in start tools heat; do
         log="$work/frames-$size-$run.jsonl"
         set -- --frames 8
         [ "$run" = tools ] && set -- --ui-test "$work/tools.txt"
+        [ "$run" = heat ] && set -- --ui-test "$work/heat.txt"
         "$bin" --size "$size" --no-vsync "$@" --log-frames "$log" > "$work/editor-$size-$run.log" 2>&1 ||
             { cat "$work/editor-$size-$run.log"; echo "ui_layout_fits: FAIL: the editor failed at $size ($run)"; exit 1; }
         clipped=$(clipped_list "$(tail -n 1 "$log")")

@@ -78,6 +78,11 @@ struct PixelSample {
     unsigned stencil = 0;                   // the G-buffer's stencil bits 0..255
     glm::vec3 reconstructedPosition{0.0f};  // world position rebuilt from depth and the camera
     glm::vec4 lighting{0.0f};
+    // The count heat maps' exact counts here (x: lights evaluated, y: lights that lit it), for the
+    // view and mode they were last counted for since the frame rendered; no view: none counted.
+    glm::vec2 coverage{0.0f};
+    std::optional<DebugView> coverageView;
+    LightingMode coverageMode = LightingMode::Quad;
 };
 
 // Float image read back from a target, rows top to bottom.

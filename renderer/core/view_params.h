@@ -25,7 +25,6 @@ struct ViewParams {
     float rangeMin = 0.0f;       // data views show (v - min) / (max - min)
     float rangeMax = 1.0f;
     NormalDisplay normalDisplay = NormalDisplay::Biased;
-    float heatMax = 16.0f;               // count at the top of the heat ramp
     Colormap colormap = Colormap::Grey;  // applied when one channel is shown
     unsigned overlays = 0;               // kOverlay* bits
 

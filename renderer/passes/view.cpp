@@ -32,7 +32,6 @@ void viewPass(ViewInput const& in, ViewConfig const& c) {
     p.set("uNormalDisplay", int(v.normalDisplay));
     p.set("uNear", c.nearPlane);
     p.set("uFar", c.farPlane);
-    p.set("uHeatMax", v.heatMax);
     p.set("uClusterSlices", kClusterSlices);
     p.set("uInverseViewProj", c.inverseViewProj);
     p.set("uColormap", int(v.colormap));  // viewer tools (shaders/view_tools.glsl)

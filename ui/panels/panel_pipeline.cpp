@@ -208,7 +208,9 @@ void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailabl
             bool heatmap = settings.view == DebugView::Heatmap;
             if (ImGui::Checkbox("Coverage heatmap", &heatmap))
                 settings.view = heatmap ? DebugView::Heatmap : DebugView::Final;
-            helpTooltip("per pixel: how many light volumes covered it and how many actually lit it");
+            helpTooltip(
+                "per pixel: how many lights the mode evaluated (volumes, tile or cluster list) and how many\n"
+                "lit it; colours in bins 0, 1, 2, 4, 8, 16, 32, 64+, dim where the lights evaluated did not light it");
             sameLineIfFits(checkItemWidth("Normal maps"), false, right);
             ImGui::Checkbox("Normal maps", &settings.normalMaps);
         }

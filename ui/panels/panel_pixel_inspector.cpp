@@ -2,6 +2,7 @@
 #include "panels/panel_pixel_inspector.h"
 
 #include "core/gbuffer_layout.h"
+#include "core/heat_scale.h"
 #include "model/pixel_breakdown.h"
 #include "model/viewer_tools.h"
 #include "panels/gui_compat.h"
@@ -79,6 +80,13 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
             // The depth as stored (DEPTH32F) with its raw bits, as the magnifier shows them.
             ImGui::TextWrapped("depth stored %s", storedFloatText(s.depth).c_str());
             ImGui::Text("stencil %u", s.stencil);
+            // The count a heat map shows as a colour bin, exactly (core/heat_scale.h).
+            if (s.coverageView && *s.coverageView == state.settings.view) {
+                std::string const quantity(heatQuantity(*s.coverageView, s.coverageMode));
+                std::string const bin = heatBinRange(heatBin(s.coverage.x));
+                ImGui::TextWrapped("%s: %.0f here (colour of %s), %.0f of them lit it", quantity.c_str(),
+                                   double(s.coverage.x), bin.c_str(), double(s.coverage.y));
+            }
             // A layout without the emissive_ao attachment shows emissive 0 and ao 1: say why.
             if (std::string const note = layoutOmissionNote(layoutDesc(state.settings.layout)); !note.empty())
                 ImGui::TextWrapped("emissive,ao not stored: %s", note.c_str());

@@ -2,6 +2,7 @@
 #include "panels/panel_viewport.h"
 
 #include "core/cluster_math.h"
+#include "core/heat_scale.h"
 #include "gpu/view_target.h"
 #include "model/colormap.h"
 #include "panels/gui_compat.h"
@@ -30,24 +31,41 @@ void viewCombo(PipelineSettings& settings) {
         ImGui::EndCombo();
     }
 }
-// Labels for the heat legend that shaders/view.frag draws into the image itself (heatLegend: a
-// ramp from texel x 8 to min(width - 8, 264), rows 6..22 from the bottom). Only the words are
-// drawn here, over the image just above that ramp, so there is one legend and it is labelled.
-void labelHeatLegend(ImVec2 imageMin, ImVec2 imageMax, glm::ivec2 textureSize, DebugView view) {
+// Labels for the heat legend that shaders/view.frag draws into the image itself (heatLegend:
+// kHeatBins swatches of kHeatSwatchTexels from texel x 8, rows 6..22 from the bottom). Only the
+// words are drawn here, in a box just above that bar: the quantity on one line, each swatch's
+// lowest count centred over it on the next, so there is one legend and it is labelled.
+void labelHeatLegend(ImVec2 imageMin, ImVec2 imageMax, glm::ivec2 textureSize, DebugView view, LightingMode mode) {
     if (textureSize.x < 64 || textureSize.y < 64) return;  // the shader draws no legend either
     float const sx = (imageMax.x - imageMin.x) / float(textureSize.x);
     float const sy = (imageMax.y - imageMin.y) / float(textureSize.y);
-    float const x0 = imageMin.x + 8.0f * sx, x1 = imageMin.x + float(std::min(textureSize.x - 8, 264)) * sx;
-    float const barTop = imageMax.y - 23.0f * sy;
-    char text[96];
-    std::snprintf(text, sizeof text, "%s: 0 .. %.0f+",
-                  view == DebugView::TileLights ? "lights per tile" : "volumes per pixel", ViewParams{}.heatMax);
-    ImVec2 const size = ImGui::CalcTextSize(text);
-    ImVec2 const p(x0, barTop - size.y - 3.0f);
+    int const w = std::max(std::min(textureSize.x - 16, kHeatSwatchTexels * kHeatBins) / kHeatBins, 1);
+    float const x0 = imageMin.x + 8.0f * sx, swatch = float(w) * sx, x1 = x0 + swatch * float(kHeatBins);
+    float const barTop = imageMax.y - 23.0f * sy, line = ImGui::GetTextLineHeight();
+    std::string title(heatQuantity(view, mode));
+    if (view == DebugView::Heatmap) title += "; lower half: none of them lit";
+    // Numbers over their swatches when the widest fits; else one line, left to right.
+    bool const fits = ImGui::CalcTextSize(heatBinLabel(kHeatBins - 1).c_str()).x + 2.0f <= swatch;
+    std::string numbers;
+    if (!fits)
+        for (int k = 0; k < kHeatBins; ++k) numbers += (k ? ", " : "") + heatBinLabel(k);
+    float const top = barTop - 2.0f * line - 4.0f;
+    float const right =
+        std::max({x1, x0 + ImGui::CalcTextSize(title.c_str()).x, x0 + ImGui::CalcTextSize(numbers.c_str()).x});
     ImDrawList* dl = ImGui::GetWindowDrawList();
-    dl->AddRectFilled(ImVec2(p.x - 3.0f, p.y - 1.0f), ImVec2(std::max(x1, p.x + size.x) + 3.0f, barTop),
-                      IM_COL32(0, 0, 0, 170));
-    dl->AddText(p, IM_COL32(235, 235, 235, 255), text);
+    ImU32 const text = IM_COL32(235, 235, 235, 255);
+    dl->AddRectFilled(ImVec2(x0 - 3.0f, top - 1.0f), ImVec2(right + 3.0f, barTop), IM_COL32(0, 0, 0, 170));
+    dl->AddText(ImVec2(x0, top), text, title.c_str());
+    if (!fits) {
+        dl->AddText(ImVec2(x0, top + line), text, numbers.c_str());
+        return;
+    }
+    for (int k = 0; k < kHeatBins; ++k) {
+        std::string const label = heatBinLabel(k);
+        float const cx = x0 + (float(k) + 0.5f) * swatch;
+        dl->AddText(ImVec2(std::round(cx - 0.5f * ImGui::CalcTextSize(label.c_str()).x), top + line), text,
+                    label.c_str());
+    }
 }
 
 // Labels for the depth-slice legend (shaders/view.frag sliceLegend: kClusterSlices swatches of
@@ -405,7 +423,8 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
     // The tools' Shift+drag and Shift+right-click are theirs, not the camera's.
     bool const toolsMouse = viewportToolsImage(tools, origin, avail, textureSize);
     if (settings.view == DebugView::Heatmap || settings.view == DebugView::TileLights)
-        labelHeatLegend(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), textureSize, settings.view);
+        labelHeatLegend(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), textureSize, settings.view,
+                        settings.mode);
     if (settings.view == DebugView::ClusterSlices)
         labelSliceLegend(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), textureSize, state.clipPlanes);
 
