@@ -77,11 +77,7 @@ void main() {
         } else {
             // LIGHTS_PER_ITERATION lights an iteration (light_fetch.glsl says why).
 #define ADD(j) addLight(j, pos, n, as, color, lit)
-            int i = 0;
-            for (; i + LIGHTS_PER_ITERATION <= uLightCount; i += LIGHTS_PER_ITERATION) {
-                ADD(i); ADD(i + 1); ADD(i + 2); ADD(i + 3); ADD(i + 4); ADD(i + 5); ADD(i + 6); ADD(i + 7);
-            }
-            for (; i < uLightCount; ++i) ADD(i);
+            FOR_EVERY_LIGHT(uLightCount, ADD)
 #undef ADD
         }
     }

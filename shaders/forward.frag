@@ -36,11 +36,7 @@ void main() {
     color += shadeGlobalLights(vWorldPos, n, base.rgb, spec);  // directional lights
     // Every light in index order, LIGHTS_PER_ITERATION at a time (light_fetch.glsl says why).
 #define ADD(j) color += shadeNear(j, n, base.rgb, spec)
-    int i = 0;
-    for (; i + LIGHTS_PER_ITERATION <= uLightCount; i += LIGHTS_PER_ITERATION) {
-        ADD(i); ADD(i + 1); ADD(i + 2); ADD(i + 3); ADD(i + 4); ADD(i + 5); ADD(i + 6); ADD(i + 7);
-    }
-    for (; i < uLightCount; ++i) ADD(i);
+    FOR_EVERY_LIGHT(uLightCount, ADD)
 #undef ADD
     fragColor = vec4(color, base.a);
 }

@@ -22,6 +22,10 @@ vec3 lightDirectionDecode(vec2 e) {
 // iteration keeps kMaxLights (262,144) at 32,768 iterations, with room for the shader's other
 // loops. tests/many_lights_gl_test.cpp ("MoreLightsThanOneShaderMayLoopOver") checks it.
 #define LIGHTS_PER_ITERATION 8
+// FOR_EVERY_LIGHT(count, STEP) calls STEP(i) for i = 0 .. count - 1 in order, 8 an iteration; STEP
+// is a one-line macro the caller defines (e.g. #define ADD(j) addLight(j, ...)). One line, since
+// GLSL 3.30 has no line continuation.
+#define FOR_EVERY_LIGHT(count, STEP) { int i_ = 0; for (; i_ + LIGHTS_PER_ITERATION <= (count); i_ += LIGHTS_PER_ITERATION) { STEP(i_); STEP(i_ + 1); STEP(i_ + 2); STEP(i_ + 3); STEP(i_ + 4); STEP(i_ + 5); STEP(i_ + 6); STEP(i_ + 7); } for (; i_ < (count); ++i_) STEP(i_); }
 
 Light fetchLight(int i) {
     vec4 a = texelFetch(uLights, i * 4 + 0);

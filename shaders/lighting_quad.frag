@@ -34,11 +34,7 @@ void main() {
     accumulateGlobalLights(sum, pos, n, as.a);  // directional lights: no volume, every pixel
     // Every light in index order, LIGHTS_PER_ITERATION at a time (light_fetch.glsl says why).
 #define ADD(j) addLight(j, pos, n, as.a, sum)
-    int i = 0;
-    for (; i + LIGHTS_PER_ITERATION <= uLightCount; i += LIGHTS_PER_ITERATION) {
-        ADD(i); ADD(i + 1); ADD(i + 2); ADD(i + 3); ADD(i + 4); ADD(i + 5); ADD(i + 6); ADD(i + 7);
-    }
-    for (; i < uLightCount; ++i) ADD(i);
+    FOR_EVERY_LIGHT(uLightCount, ADD)
 #undef ADD
     fragColor = accumulationTarget0(sum, surface, as.rgb);
     fragSpecular = vec4(sum.specular, 1.0);
