@@ -11,8 +11,6 @@
 #include "passes/geometry.h"
 #include "passes/light_cubes.h"
 #include "passes/light_volumes.h"
-#include "passes/lighting_quad.h"
-#include "passes/lighting_tiled.h"
 #include "passes/view.h"
 #include "passes/wireframes.h"
 
@@ -141,7 +139,7 @@ bool RendererImpl::tiledReady() {
     if (!caps.computeShaders)
         f.unavailable = caps.tiledUnavailableReason();
     else
-        for (ProgramId id : {ProgramId::LightingTiled, ProgramId::TileBin})
+        for (ProgramId id : {ProgramId::LightingTiled, ProgramId::TileBin, ProgramId::TileDepth})
             if (!f.unavailable && !shaders.add(id, nullptr)) f.unavailable = programFailure("tiled", shaders, id);
     return !f.unavailable;
 }
@@ -155,27 +153,12 @@ bool RendererImpl::clusteredReady() {
                         std::to_string(caps.minor) + ", so clustered mode is unavailable";
         return false;
     }
-    for (ProgramId id : {ProgramId::ClusterBuild, ProgramId::ClusterBin, ProgramId::ClusterShade})
+    for (ProgramId id : {ProgramId::ClusterBuild, ProgramId::ClusterBin, ProgramId::TileDepth, ProgramId::ClusterShade})
         if (!shaders.add(id, nullptr)) {
             f.unavailable = programFailure("clustered", shaders, id);
             return false;
         }
     return true;
-}
-
-LightingClusteredInput RendererImpl::clusteredInput(FrameContext const& f) {
-    return {deferredInputs(f),
-            shaders.get(ProgramId::ClusterBuild),
-            shaders.get(ProgramId::ClusterBin),
-            tileBins,
-            shaders.get(ProgramId::ClusterShade),
-            clusters,
-            lightingImage(f),
-            targets.coverage};
-}
-
-LightingClusteredConfig RendererImpl::clusteredConfig(FrameContext const& f, bool shade) const {
-    return {f.view, f.projection, targets.width, targets.height, f.camera.nearPlane, f.camera.farPlane, shade, !shade};
 }
 
 std::optional<std::string> RendererImpl::modeUnavailable(LightingMode mode) {
@@ -232,59 +215,6 @@ ShadingUniforms shadingUniforms(FrameContext const& f) {
 
 DeferredInputs RendererImpl::deferredInputs(FrameContext const& f) const {
     return {targets.gbuffer, lights, shadingUniforms(f)};
-}
-
-void RendererImpl::runLighting(FrameContext const& f) {
-    DeferredInputs const deferred = deferredInputs(f);
-    switch (f.settings.mode) {
-        case LightingMode::Volumes:
-            lightingVolumesPass(
-                {deferred, volumes, shaders.get(ProgramId::LightingQuad), shaders.get(ProgramId::LightVolume),
-                 shaders.get(ProgramId::LightVolumeStencil), triangle, volumeTarget(f)},
-                {f.viewProj, f.settings.cull});
-            break;
-        case LightingMode::Tiled:
-            lightingTiledPass({deferred, shaders.get(ProgramId::LightingTiled), shaders.get(ProgramId::TileBin),
-                               tileBins, lightingImage(f), targets.coverage},
-                              {f.view, f.projection, targets.width, targets.height, f.camera.nearPlane,
-                               f.camera.farPlane, true, false});
-            break;
-        case LightingMode::Clustered:  // the lists were built in the frame's light_lists pass
-            clusterShadePass(clusteredInput(f), clusteredConfig(f, true));
-            break;
-        default:
-            lightingQuadPass({deferred, shaders.get(ProgramId::LightingQuad), triangle, quadTarget(f)});
-            break;
-    }
-    if (splitAccumulation(f)) combineLights(f);
-}
-
-void RendererImpl::runCoverage(FrameContext const& f) {
-    coverageView = f.settings.view;
-    coverageMode = f.settings.mode;
-    if (f.settings.mode == LightingMode::Clustered && f.settings.view != DebugView::TileLights) {
-        // x = the pixel's cluster list, y = lights that lit it: the heat map's scale, as tiles.
-        glBindFramebuffer(GL_FRAMEBUFFER, targets.coverageFbo.id());
-        glClearColor(0, 0, 0, 0);
-        glClear(GL_COLOR_BUFFER_BIT);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        clusterListsPass(clusteredInput(f), clusteredConfig(f, false));
-        clusterShadePass(clusteredInput(f), clusteredConfig(f, false));
-        return;
-    }
-    bool const tiles = f.settings.view == DebugView::TileLights || f.settings.mode == LightingMode::Tiled;
-    bool const volumeCounts = !tiles && f.settings.mode == LightingMode::Volumes && volumesReady();
-    if (volumeCounts) prepareVolumeInstances(volumes, {f.camera, f.aspect, f.lights});
-    bool const tiled = tiles && tiledReady();
-    LightingTiledConfig const t{
-        f.view, f.projection, targets.width, targets.height, f.camera.nearPlane, f.camera.farPlane, false, true};
-    coveragePass(
-        {deferredInputs(f), triangle, shaders.get(ProgramId::CoverageAllLights), volumeCounts ? &volumes : nullptr,
-         volumeCounts ? &shaders.get(ProgramId::LightVolumeCoverage) : nullptr,
-         volumeCounts ? &shaders.get(ProgramId::LightVolumeStencil) : nullptr,
-         tiled ? &shaders.get(ProgramId::LightingTiled) : nullptr, tiled ? &shaders.get(ProgramId::TileBin) : nullptr,
-         tiled ? &tileBins : nullptr, targets.coverageFbo, targets.coverage, targets.lighting},
-        {f.settings.mode, f.settings.cull, f.settings.view, t, f.viewProj});
 }
 
 FrameStats RendererImpl::render(FrameInput const& input) {
@@ -344,9 +274,9 @@ FrameStats RendererImpl::render(FrameInput const& input) {
         geometryPass({scene, shaders.get(ProgramId::Geometry), targets.gbuffer}, {f.viewProj, s.normalMaps});
         timer.end();
         if (frameTestHook) frameTestHook();
-        if (s.mode == LightingMode::Clustered) {
+        if (s.mode == LightingMode::Clustered || s.mode == LightingMode::Tiled) {
             timer.begin("light_lists");
-            clusterListsPass(clusteredInput(f), clusteredConfig(f, true));
+            buildLightLists(f);
             timer.end();
         }
         timer.begin("lighting");

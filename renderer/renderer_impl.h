@@ -95,6 +95,8 @@ private:
     bool clusteredReady();  // builds the two clustered programs on first use
     LightingClusteredInput clusteredInput(FrameContext const& f);
     LightingClusteredConfig clusteredConfig(FrameContext const& f, bool shade) const;
+    TileBinPrograms binPrograms(ProgramId bin) const;  // TileDepth and the mode's binning program
+    void buildLightLists(FrameContext const& f);       // tiled and clustered: the light_lists pass
     void runLighting(FrameContext const& f);
     void runCoverage(FrameContext const& f);
     // Accumulation targets (renderer_accumulation.cpp, docs/lighting.md "Accumulation targets").

@@ -20,6 +20,7 @@
 #define BIND_MATERIAL_OCCLUSION 10  // sampler uOcclusionTex
 #define BIND_DIFFUSE_LIGHT 11       // sampler uDiffuseLight
 #define BIND_SPECULAR_LIGHT 12      // sampler uSpecularLight
+#define BIND_CLUSTER_LIST 13        // sampler uClusterList
 // Image units of the tiled compute pass (declared with layout(binding = ...) in the shader).
 #define BIND_IMAGE_LIGHTING 0
 #define BIND_IMAGE_COVERAGE 1
@@ -31,4 +32,6 @@
 // cluster_build.comp read): each 16x16 tile's candidate lights.
 #define BIND_SSBO_TILE_BIN_COUNTS 2
 #define BIND_SSBO_TILE_BIN_LIGHTS 3
+// Each tile's view-depth range (tile_depth.comp writes, tile_bin.comp reads).
+#define BIND_SSBO_TILE_DEPTH 4
 #endif

@@ -102,11 +102,11 @@ void main() {
         int kept = sortKeptLights();
         // The tile's sorted list replaces its bin (no invocation reads the bin any more): a cluster
         // over its own cap shades from it in cluster_shade.comp instead of from every light.
-        for (int k = local; k < kept; k += 256) tileBinLight[uint(tileIndex) * uint(uBinCap) + uint(k)] = sSorted[k];
+        for (int k = local; k < kept; k += 256) tileBinLight[uint(tileIndex) * uint(uBinCap) + uint(k)] = sortedLight(k);
         if (local == 0) tileBinCount[tileIndex] = uint(kept);
         // --- each slice keeps the tile's lights that reach its box, in index order ---
         for (int k = 0; owner && k < kept; ++k) {
-            int index = int(sSorted[k]);
+            int index = int(sortedLight(k));
             if (lightTouchesCluster(index, boxLo, boxHi)) {
                 if (count < uint(uMaxLights)) clusterLight[base + count] = uint(index);
                 ++count;  // the true count, also past the cap (cluster_shade.comp then loops over all)

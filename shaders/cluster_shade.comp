@@ -14,7 +14,9 @@ layout(rgba16f, binding = BIND_IMAGE_LIGHTING) uniform writeonly image2D uLighti
 layout(rg32f, binding = BIND_IMAGE_COVERAGE) uniform writeonly image2D uCoverageImage;
 layout(rgba16f, binding = BIND_IMAGE_SPECULAR_LIGHT) uniform writeonly image2D uSpecularImage;  // split only
 layout(std430, binding = BIND_SSBO_CLUSTER_COUNTS) readonly buffer ClusterCounts { uint clusterCount[]; };
-layout(std430, binding = BIND_SSBO_CLUSTER_LIGHTS) readonly buffer ClusterLights { uint clusterLight[]; };
+// The lists themselves, read as a buffer texture: llvmpipe fetches a texel for all of a vector's
+// pixels at once, where it reads a storage buffer one pixel at a time.
+uniform usamplerBuffer uClusterList;
 // Each tile's sorted light list, as cluster_build.comp left it (a count past uBinCap: none).
 layout(std430, binding = BIND_SSBO_TILE_BIN_COUNTS) readonly buffer TileBinCounts { uint tileBinCount[]; };
 layout(std430, binding = BIND_SSBO_TILE_BIN_LIGHTS) readonly buffer TileBinLights { uint tileBinLight[]; };
@@ -36,9 +38,9 @@ void addLight(int i, vec3 pos, vec3 n, vec4 as, inout LightSum color, inout floa
     vec4 pr = texelFetch(uLights, i * 4);
     if (!(distance(pr.xyz, pos) < pr.w)) return;
     Light l = fetchLight(i);
-    accumulateLight(color, l, pos, n, as.a);
+    bool reached = accumulateLight(color, l, pos, n, as.a);
     // "Lit" as in light_volume.frag: the light reaches a surface that faces it.
-    if (uWriteCoverage && any(greaterThan(shadeLight(l, pos, n, vec3(1.0), 1.0), vec3(0.0)))) lit += 1.0;
+    if (uWriteCoverage && reached) lit += 1.0;
 }
 
 void main() {
@@ -64,7 +66,7 @@ void main() {
     uint count = clusterCount[cluster];
     if (count <= uint(uMaxLights)) {
         uint base = uint(cluster) * uint(uMaxLights);
-        for (uint k = 0u; k < count; ++k) addLight(int(clusterLight[base + k]), pos, n, as, color, lit);
+        for (uint k = 0u; k < count; ++k) addLight(int(texelFetch(uClusterList, int(base + k)).r), pos, n, as, color, lit);
     } else {
         // Over the cap: the cluster's list is incomplete, so the tile's whole list (a superset, in
         // index order) is tried, or every light where the tile's bin overflowed too (exact, slower).

@@ -13,11 +13,15 @@ struct LightSum {
 
 LightSum noLight() { return LightSum(vec3(0.0), vec3(0.0)); }
 
-void accumulateLight(inout LightSum sum, Light l, vec3 p, vec3 n, float specularIntensity) {
+// Returns whether the light reached the surface (added more than zero): the coverage views count
+// those, and a second shading call to find out would cost its full price again (llvmpipe runs
+// both sides of every branch, and the compiler does not merge the two calls).
+bool accumulateLight(inout LightSum sum, Light l, vec3 p, vec3 n, float specularIntensity) {
     vec3 diffuseLight, specularLight;
     shadeLightSplit(l, p, n, diffuseLight, specularLight);
     sum.diffuse += diffuseLight;
     sum.specular += specularIntensity * specularLight;
+    return any(greaterThan(diffuseLight + specularLight, vec3(0.0)));
 }
 
 // Every directional light (light_fetch.glsl's list: no volume, no tile, every pixel) into the sums.

@@ -63,9 +63,9 @@ void addLight(int index, vec3 pos, vec3 n, vec4 as, inout LightSum sum, inout fl
     vec4 positionRadius = texelFetch(uLights, index * 4);
     if (!(distance(positionRadius.xyz, pos) < positionRadius.w)) return;
     Light l = fetchLight(index);
-    accumulateLight(sum, l, pos, n, as.a);
+    bool reached = accumulateLight(sum, l, pos, n, as.a);
     // "Lit" as in light_volume.frag: the light reaches a surface that faces it.
-    if (uWriteCoverage && any(greaterThan(shadeLight(l, pos, n, vec3(1.0), 1.0), vec3(0.0)))) lit += 1.0;
+    if (uWriteCoverage && reached) lit += 1.0;
 }
 
 
@@ -136,7 +136,15 @@ void main() {
         int kept = sortKeptLights();
         tileCount = uint(kept);
         // --- shading: the tile's lights in ascending index order ---
-        for (int k = 0; geometry && k < kept; ++k) addLight(int(sSorted[k]), pos, n, as, sum, lit);
+        // Four list entries a read (tile_bin_read.glsl says why); past `kept` the list holds stale
+        // entries, so the last three are guarded.
+        for (int k = 0; geometry && k < kept; k += 4) {
+            uvec4 four = sSorted4[k >> 2];
+            addLight(int(four.x), pos, n, as, sum, lit);
+            if (k + 1 < kept) addLight(int(four.y), pos, n, as, sum, lit);
+            if (k + 2 < kept) addLight(int(four.z), pos, n, as, sum, lit);
+            if (k + 3 < kept) addLight(int(four.w), pos, n, as, sum, lit);
+        }
     }
     // Over the bins' cap: every light, in chunks (the same test, the same order).
     for (int base = 0; binned < 0 && base < uLightCount; base += CHUNK_LIGHTS) {

@@ -12,6 +12,8 @@ layout(local_size_x = 64) in;
 // Zeroed before the dispatch; each count is the tile's true candidate count, also past the cap.
 layout(std430, binding = BIND_SSBO_TILE_BIN_COUNTS) buffer TileBinCounts { uint tileBinCount[]; };
 layout(std430, binding = BIND_SSBO_TILE_BIN_LIGHTS) writeonly buffer TileBinLights { uint tileBinLight[]; };
+// Each tile's view-depth range of drawn pixels (tile_depth.comp): x nearest, y farthest.
+layout(std430, binding = BIND_SSBO_TILE_DEPTH) readonly buffer TileDepth { vec2 tileDepth[]; };
 
 uniform int uLightCount;
 uniform mat4 uView;
@@ -52,6 +54,12 @@ void main() {
     for (int ty = t0.y; ty <= t1.y; ++ty)
         for (int tx = t0.x; tx <= t1.x; ++tx) {
             uint tile = uint(ty * uTiles.x + tx);
+            // A light wholly in front of or behind every drawn pixel of the tile reaches none of
+            // them (a pixel farther than r in depth is farther than r away): not a candidate. The
+            // list passes test the same range again; the hair of slack keeps this side looser.
+            vec2 range = tileDepth[tile];
+            float slack = 1e-5 * range.y + 1e-6;
+            if (depth + r < range.x - slack || depth - r > range.y + slack) continue;
             uint slot = atomicAdd(tileBinCount[tile], 1u);
             if (slot < uint(uBinCap)) tileBinLight[tile * uint(uBinCap) + slot] = uint(i);
         }

@@ -55,6 +55,7 @@ std::span<ProgramInfo const> programTable() {
           {}}},
         {ProgramId::LightingTiled, G::Tiled, {"lighting_tiled", {{GL_COMPUTE_SHADER, "lighting_tiled.comp"}}, {}}},
         {ProgramId::TileBin, G::Tiled, {"tile_bin", {{GL_COMPUTE_SHADER, "tile_bin.comp"}}, {}}},
+        {ProgramId::TileDepth, G::Tiled, {"tile_depth", {{GL_COMPUTE_SHADER, "tile_depth.comp"}}, {}}},
         {ProgramId::ClusterBuild, G::Clustered, {"cluster_build", {{GL_COMPUTE_SHADER, "cluster_build.comp"}}, {}}},
         {ProgramId::ClusterBin, G::Clustered, {"cluster_bin", {{GL_COMPUTE_SHADER, "tile_bin.comp"}}, {}}},
         {ProgramId::ClusterShade, G::Clustered, {"cluster_shade", {{GL_COMPUTE_SHADER, "cluster_shade.comp"}}, {}}},

@@ -30,7 +30,8 @@ enum class ProgramId {
     LightVolumeWire,
     // tiled mode
     LightingTiled,
-    TileBin,  // the light binning pass before the tiled lists (shaders/tile_bin.comp)
+    TileBin,    // the light binning pass before the tiled lists (shaders/tile_bin.comp)
+    TileDepth,  // each tile's depth range, before either binning pass (clustered builds it too)
     // clustered mode
     ClusterBuild,
     ClusterBin,  // the same binning pass before the cluster lists

@@ -18,7 +18,7 @@ struct CoverageInput {
     gl::Program const* volumeCoverage;  // ProgramId::LightVolumeCoverage
     gl::Program const* volumeStencil;   // ProgramId::LightVolumeStencil
     gl::Program const* tiled;           // ProgramId::LightingTiled
-    gl::Program const* tiledBin;        // ProgramId::TileBin (with `tiled`)
+    TileBinPrograms const* tiledBin;    // ProgramId::TileDepth and TileBin (with `tiled`)
     TileBins* bins;                     // (with `tiled`)
     gl::Framebuffer const& target;      // coverageFbo: the counts and the G-buffer's depth-stencil
     gl::Texture const& coverage;        // its colour attachment (the tiled pass writes it as an image)

@@ -31,15 +31,19 @@ void clusterListsPass(LightingClusteredInput const& in, LightingClusteredConfig 
     if (l.clusters != g.count() || !l.counts) {
         GLint64 maxBlock = 0;
         glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
-        l.cap = clusterListCap(g.count(), maxBlock);
+        // The shading pass reads the lists through a buffer texture, so they must fit its limit too.
+        GLint maxTexels = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+        l.cap = clusterListCap(g.count(), std::min<long long>(maxBlock, 4LL * maxTexels));
         l.counts = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER, std::size_t(g.count()) * sizeof(GLuint), nullptr,
                                       GL_DYNAMIC_COPY, "cluster counts");
         l.lights = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER,
                                       std::size_t(g.count()) * std::size_t(std::max(l.cap, 1)) * sizeof(GLuint),
                                       nullptr, GL_DYNAMIC_COPY, "cluster lights");
+        l.list = gl::Texture::createBuffer(GL_R32UI, l.lights.id(), "cluster lights.tbo");
         l.clusters = g.count();
     }
-    tileBinPass({in.bin, in.deferred.lights, in.bins},
+    tileBinPass({in.bin, in.deferred.lights, in.deferred.gbuffer.depth, in.bins},
                 {c.view, c.projection, c.width, c.height, c.nearPlane, c.farPlane});
     gl::Program const& p = in.build;
     p.use();
@@ -66,6 +70,7 @@ LightingOutput clusterShadePass(LightingClusteredInput const& in, LightingCluste
     // Both image units are bound whatever the flags, so the program's declared images are valid.
     glBindImageTexture(slot::BIND_IMAGE_LIGHTING, in.hdr.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glBindImageTexture(slot::BIND_IMAGE_COVERAGE, in.coverage.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    bindTextureUnit(slot::BIND_CLUSTER_LIST, GL_TEXTURE_BUFFER, in.lists.list.id());
     glDispatchCompute(GLuint((c.width + 15) / 16), GLuint((c.height + 15) / 16), 1);
     // Later passes read the images as textures and framebuffer attachments.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -13,6 +13,7 @@ namespace gbl {
 struct ClusterLists {
     gl::Buffer counts;  // uint per cluster: lights reaching it (also past the cap)
     gl::Buffer lights;  // `cap` uint light indices per cluster, ascending
+    gl::Texture list;   // `lights` as an R32UI buffer texture: what cluster_shade.comp reads
     int clusters = 0;
     int cap = 0;  // clusterListCap() for this grid and context
 };
@@ -20,7 +21,7 @@ struct ClusterLists {
 struct LightingClusteredInput {
     DeferredInputs deferred;
     gl::Program const& build;  // ProgramId::ClusterBuild
-    gl::Program const& bin;    // ProgramId::ClusterBin: fills `bins` before the build
+    TileBinPrograms bin;       // ProgramId::TileDepth and ClusterBin: fill `bins` before the build
     TileBins& bins;
     gl::Program const& shade;  // ProgramId::ClusterShade
     ClusterLists& lists;

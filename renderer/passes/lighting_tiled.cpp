@@ -7,8 +7,9 @@
 namespace gbl {
 
 LightingOutput lightingTiledPass(LightingTiledInput const& in, LightingTiledConfig const& c) {
-    tileBinPass({in.bin, in.deferred.lights, in.bins},
-                {c.view, c.projection, c.width, c.height, c.nearPlane, c.farPlane});
+    if (!c.binned)
+        tileBinPass({in.bin, in.deferred.lights, in.deferred.gbuffer.depth, in.bins},
+                    {c.view, c.projection, c.width, c.height, c.nearPlane, c.farPlane});
     gl::Program const& p = in.program;
     p.use();
     bindDeferredInputs(p, in.deferred);

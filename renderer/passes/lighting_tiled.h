@@ -9,7 +9,7 @@ namespace gbl {
 struct LightingTiledInput {
     DeferredInputs deferred;
     gl::Program const& program;  // ProgramId::LightingTiled
-    gl::Program const& bin;      // ProgramId::TileBin: fills `bins` first
+    TileBinPrograms bin;         // ProgramId::TileDepth and TileBin: fill `bins` first
     TileBins& bins;
     gl::Texture const& hdr;       // RGBA16F image written when config.shade
     gl::Texture const& coverage;  // RG32F image written when config.coverage
@@ -23,6 +23,7 @@ struct LightingTiledConfig {
     float farPlane = 100.0f;
     bool shade = true;      // write the lit image
     bool coverage = false;  // write x = lights in the tile, y = lights that lit the pixel
+    bool binned = false;    // `bins` already hold this frame's candidates (tileBinPass ran)
 };
 
 LightingOutput lightingTiledPass(LightingTiledInput const& in, LightingTiledConfig const& config);

@@ -20,6 +20,8 @@ void tileBinPass(TileBinInput const& in, TileBinConfig const& c) {
         b.lights = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER,
                                       std::size_t(g.count()) * std::size_t(std::max(b.cap, 1)) * sizeof(GLuint),
                                       nullptr, GL_DYNAMIC_COPY, "tile bin lights");
+        b.depth = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER, std::size_t(g.count()) * 2 * sizeof(GLfloat), nullptr,
+                                     GL_DYNAMIC_COPY, "tile depth ranges");
         b.tiles = g.count();
     }
     GLuint const zero = 0;
@@ -28,8 +30,18 @@ void tileBinPass(TileBinInput const& in, TileBinConfig const& c) {
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS, b.counts.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS, b.lights.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_DEPTH, b.depth.id());
 
-    gl::Program const& p = in.program;
+    gl::Program const& d = in.programs.depth;
+    d.use();
+    bindTextureUnit(slot::BIND_DEPTH, GL_TEXTURE_2D, in.depth.id());
+    glUniform2i(d.uniform("uScreenSize"), c.width, c.height);
+    d.set("uNear", c.nearPlane);
+    d.set("uFar", c.farPlane);
+    glDispatchCompute(GLuint(g.tilesX), GLuint(g.tilesY), 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+    gl::Program const& p = in.programs.bin;
     p.use();
     bindLights(p, in.lights);
     p.set("uView", c.view);
@@ -42,6 +54,7 @@ void tileBinPass(TileBinInput const& in, TileBinConfig const& c) {
     p.set("uFar", c.farPlane);
     if (in.lights.count > 0) glDispatchCompute(GLuint((in.lights.count + 63) / 64), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_DEPTH, 0);
 }
 
 }  // namespace gbl

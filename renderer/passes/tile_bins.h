@@ -1,5 +1,6 @@
-// Light binning: each light's index appended to the candidate lists of the 16x16 tiles its
-// bounding sphere can cover (shaders/tile_bin.comp), read by the tiled and clustered list passes.
+// Light binning: each tile's depth range of drawn pixels (shaders/tile_depth.comp), then each
+// light's index appended to the candidate lists of the 16x16 tiles its bounding sphere can cover
+// within those ranges (shaders/tile_bin.comp), read by the tiled and clustered list passes.
 #pragma once
 
 #include "core/tile_math.h"
@@ -15,13 +16,21 @@ namespace gbl {
 struct TileBins {
     gl::Buffer counts;  // uint per tile: candidates (also past the cap)
     gl::Buffer lights;  // `cap` uint light indices per tile, in no particular order
+    gl::Buffer depth;   // vec2 per tile: nearest and farthest view depth of its drawn pixels
     int tiles = 0;
     int cap = 0;  // tileBinCap() for this grid and context
 };
 
+// The two programs of the pass.
+struct TileBinPrograms {
+    gl::Program const& depth;  // ProgramId::TileDepth
+    gl::Program const& bin;    // ProgramId::TileBin or ProgramId::ClusterBin
+};
+
 struct TileBinInput {
-    gl::Program const& program;  // ProgramId::TileBin or ProgramId::ClusterBin
+    TileBinPrograms programs;
     LightBuffer const& lights;
+    gl::Texture const& depth;  // the G-buffer's depth
     TileBins& bins;
 };
 struct TileBinConfig {
