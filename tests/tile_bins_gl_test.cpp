@@ -26,7 +26,7 @@ float windowDepth(float z) {
 class TileBinsGlTest : public test::GlTest {};
 
 TEST_F(TileBinsGlTest, ABinHoldsOnlyLightsWithinTheDepthsItsTileShows) {
-    if (!caps().computeShaders) GTEST_SKIP() << "the binning pass needs compute shaders (OpenGL 4.3)";
+    if (!caps().computeShaders) GTEST_SKIP() << caps().tiledUnavailableReason();  // the passes are compute shaders
     ShaderLibrary lib("");
     std::string log;
     ASSERT_TRUE(lib.add(ProgramId::TileDepth, &log)) << log;
