@@ -25,11 +25,6 @@ using nlohmann::json;
 
 namespace {
 
-int badArgument(std::string const& message) {
-    std::fprintf(stderr, "gbuffer-lab bench: %s\n", message.c_str());
-    return 2;
-}
-
 struct Combination {
     LightingMode mode = LightingMode::Quad;
     CullMode cull = CullMode::Front;
@@ -250,8 +245,9 @@ void printTable(std::vector<Result> const& results, GlCaps const& caps, Size2 si
     std::string timing;
     for (auto const& r : results)
         if (timing.empty()) timing = r.timingReason;
-    std::printf("%d warm-up + %d measured frames per combination, budget %.0f s each\npass times: %s\n\n", o.warmup,
-                o.frames, o.budgetSeconds, timing.c_str());
+    std::printf(
+        "%d warm-up + %d measured frames per combination, budget %.0f s each\npass times: %s\nlight loops: %s\n\n",
+        o.warmup, o.frames, o.budgetSeconds, timing.c_str(), caps.lightLoopsNote().c_str());
     std::printf("%-16s %6s %6s %7s %11s %11s %9s %10s %10s %8s %9s %9s  %s\n", "mode", "lights", "radius", "frames",
                 "frame med", "frame p95", "vs quad", "frag.inv", "lit px", "shaded", "lit pairs", "evaluated",
                 "status");
@@ -360,6 +356,7 @@ json toJson(std::vector<Result> const& results, GlCaps const& caps, Size2 size, 
             {"frames", o.frames},
             {"budget_seconds", o.budgetSeconds},
             {"pipeline_statistics", caps.pipelineStatistics},
+            {"masked_branches", caps.masksBranches},
             {"timing", timing},
             {"timing_reason", timingReason},
             {"combinations", combos}};
@@ -393,71 +390,72 @@ void addBenchOptions(CLI::App& sub, BenchOptions& o) {
 int runBench(BenchOptions const& o) {
     std::string error;
     auto const size = parseSize(o.size, &error);
-    if (!size) return badArgument(error);
-    if (o.lights.empty()) return badArgument("--lights needs at least one count");
+    if (!size) return benchBadArgument(error);
+    if (o.lights.empty()) return benchBadArgument("--lights needs at least one count");
     for (int n : o.lights)
         if (n < 0 || n > kMaxLights)
-            return badArgument("--lights counts must be 0.." + std::to_string(kMaxLights) + ", got " +
-                               std::to_string(n));
+            return benchBadArgument("--lights counts must be 0.." + std::to_string(kMaxLights) + ", got " +
+                                    std::to_string(n));
     std::vector<LightingMode> modes;
     for (auto const& name : o.modes) {
         auto m = enumFromName<LightingMode>(kLightingModeNames, name);
-        if (!m) return badArgument("--modes must list quad, volumes, tiled, forward or clustered, got '" + name + "'");
+        if (!m)
+            return benchBadArgument("--modes must list quad, volumes, tiled, forward or clustered, got '" + name + "'");
         modes.push_back(*m);
     }
     std::vector<CullMode> culls;
     for (auto const& name : o.culls) {
         auto c = enumFromName<CullMode>(kCullModeNames, name);
-        if (!c) return badArgument("--cull must list back, front, none, flip or stencil, got '" + name + "'");
+        if (!c) return benchBadArgument("--cull must list back, front, none, flip or stencil, got '" + name + "'");
         culls.push_back(*c);
     }
-    if (modes.empty() || culls.empty()) return badArgument("--modes and --cull need at least one value each");
-    if (o.frames < 1) return badArgument("--frames must be at least 1, got " + std::to_string(o.frames));
-    if (o.warmup < 0) return badArgument("--warmup must be 0 or more, got " + std::to_string(o.warmup));
-    if (!(o.budgetSeconds > 0)) return badArgument("--budget must be a positive number of seconds");
+    if (modes.empty() || culls.empty()) return benchBadArgument("--modes and --cull need at least one value each");
+    if (o.frames < 1) return benchBadArgument("--frames must be at least 1, got " + std::to_string(o.frames));
+    if (o.warmup < 0) return benchBadArgument("--warmup must be 0 or more, got " + std::to_string(o.warmup));
+    if (!(o.budgetSeconds > 0)) return benchBadArgument("--budget must be a positive number of seconds");
     bool const autoScale = o.radiusScale == "auto";
     float fixedScale = 1.0f;
     if (!autoScale) {
         char* end = nullptr;
         fixedScale = std::strtof(o.radiusScale.c_str(), &end);
         if (end == o.radiusScale.c_str() || *end != '\0' || !(fixedScale > 0.0f) || !std::isfinite(fixedScale))
-            return badArgument("--radius-scale must be a positive number or auto, got '" + o.radiusScale + "'");
+            return benchBadArgument("--radius-scale must be a positive number or auto, got '" + o.radiusScale + "'");
     }
     if (o.jsonPath) {
         // Fail now rather than after minutes of measuring.
         std::ofstream probe(*o.jsonPath, std::ios::app);
-        if (!probe) return badArgument("cannot write the JSON file " + *o.jsonPath);
+        if (!probe) return benchBadArgument("cannot write the JSON file " + *o.jsonPath);
     }
 
     std::vector<int> counts = o.lights;
     std::optional<PreparedScene> prepared;
     PipelineSettings base;
     if (o.scenePath && o.sessionPath)
-        return badArgument("--scene and --session cannot be combined: the session names its scene");
+        return benchBadArgument("--scene and --session cannot be combined: the session names its scene");
     if (o.sessionPath) {
         ui::SessionLoad loaded = ui::loadSession(*o.sessionPath);
-        if (!loaded.session) return badArgument(loaded.error);
+        if (!loaded.session) return benchBadArgument(loaded.error);
         prepared = prepareSessionScene(*loaded.session, *o.sessionPath, false, &error);
-        if (!prepared) return badArgument(error);
+        if (!prepared) return benchBadArgument(error);
         base = loaded.session->pipeline;
         int const available = int(prepared->lights.size());
         if (!o.lightsGiven) counts = {available};
         for (int n : counts)
             if (n > available)
-                return badArgument("--lights " + std::to_string(n) + " is more than the " + std::to_string(available) +
-                                   " lights of " + *o.sessionPath);
+                return benchBadArgument("--lights " + std::to_string(n) + " is more than the " +
+                                        std::to_string(available) + " lights of " + *o.sessionPath);
     } else {
         SceneRequest request;
         request.scenePath = o.scenePath;
         request.lightCount = *std::max_element(counts.begin(), counts.end());
         prepared = prepareScene(request, &error);
-        if (!prepared) return badArgument(error);
+        if (!prepared) return benchBadArgument(error);
         int const available = int(prepared->lights.size());
         if (o.scenePath && !o.lightsGiven) counts = {available};
         for (int n : counts)
             if (n > available)
-                return badArgument("--lights " + std::to_string(n) + " is more than the " + std::to_string(available) +
-                                   " lights of the scene");
+                return benchBadArgument("--lights " + std::to_string(n) + " is more than the " +
+                                        std::to_string(available) + " lights of the scene");
     }
     if (!o.layouts.empty())
         if (auto layout = enumFromName<GBufferLayout>(kGBufferLayoutNames, o.layouts.front())) base.layout = *layout;
@@ -467,7 +465,7 @@ int runBench(BenchOptions const& o) {
         return 1;
     }
     Renderer& renderer = *headless->renderer;
-    if (auto err = renderer.setScene(prepared->scene)) return badArgument(*err);
+    if (auto err = renderer.setScene(prepared->scene)) return benchBadArgument(*err);
 
     std::vector<Result> results;
     for (int n : counts) {
@@ -492,7 +490,7 @@ int runBench(BenchOptions const& o) {
     if (o.jsonPath) {
         std::ofstream f(*o.jsonPath, std::ios::trunc);
         f << toJson(results, renderer.caps(), *size, o).dump(2) << "\n";
-        if (!f) return badArgument("cannot write the JSON file " + *o.jsonPath);
+        if (!f) return benchBadArgument("cannot write the JSON file " + *o.jsonPath);
     }
     return 0;
 }

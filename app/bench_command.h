@@ -13,6 +13,12 @@
 
 namespace gbl {
 
+// Prints "gbuffer-lab bench: <message>" and returns a bad argument's exit status (2).
+inline int benchBadArgument(std::string const& message) {
+    std::fprintf(stderr, "gbuffer-lab bench: %s\n", message.c_str());
+    return 2;
+}
+
 struct BenchOptions {
     std::string size = "1280x720";
     std::vector<int> lights{32, 256, 1024, 4096};

@@ -9,23 +9,16 @@
 
 namespace gbl {
 
-namespace {
-int badArgument(std::string const& message) {
-    std::fprintf(stderr, "gbuffer-lab bench: %s\n", message.c_str());
-    return 2;
-}
-}  // namespace
-
 int runBenchLayouts(BenchOptions const& o) {
     if (o.layouts.size() <= 1) {
         if (!o.layouts.empty() && !enumFromName<GBufferLayout>(kGBufferLayoutNames, o.layouts.front()))
-            return badArgument("--layouts must list classic, packed, naive8 or rgb10a2, got '" + o.layouts.front() +
-                               "'");
+            return benchBadArgument("--layouts must list classic, packed, naive8 or rgb10a2, got '" +
+                                    o.layouts.front() + "'");
         return runBench(o);
     }
     for (auto const& name : o.layouts)
         if (!enumFromName<GBufferLayout>(kGBufferLayoutNames, name))
-            return badArgument("--layouts must list classic, packed, naive8 or rgb10a2, got '" + name + "'");
+            return benchBadArgument("--layouts must list classic, packed, naive8 or rgb10a2, got '" + name + "'");
     for (auto const& name : o.layouts) {
         GBufferLayoutDesc const& d = layoutDesc(*enumFromName<GBufferLayout>(kGBufferLayoutNames, name));
         std::printf("\n== G-buffer layout %s: %d bytes per pixel (", d.name.data(), layoutBytesPerPixel(d));

@@ -66,6 +66,7 @@ std::string programFailure(std::string const& mode, ShaderLibrary const& shaders
 RendererImpl::RendererImpl(GlCaps capsIn, int width, int height) : caps(std::move(capsIn)), shaders(shaderReloadDir()) {
     installGlDebug(caps);
     glErrorsAtStart = glErrorCount();
+    shaders.setGlobalDefines(shaderDefines(targets.gbuffer.layout), nullptr);  // nothing built yet
     // Core programs are fatal: without them there is no frame at all. Optional ones are built
     // when their mode is first asked for (volumesReady, tiledReady).
     for (ProgramInfo const& p : programTable()) {
@@ -99,11 +100,17 @@ void RendererImpl::resizeTargets(int width, int height) {
         throw std::runtime_error("Renderer::resizeTargets(): " + *err);
 }
 
+std::vector<std::string> RendererImpl::shaderDefines(GBufferLayout layout) const {
+    std::vector<std::string> defines = layoutShaderDefines(layoutDesc(layout));
+    if (caps.masksBranches) defines.push_back("GBL_MASKED_BRANCHES");
+    return defines;
+}
+
 void RendererImpl::applyLayout(GBufferLayout layout) {
     if (layout == targets.gbuffer.layout) return;
     std::string log;
     // The built-in shaders compile for every layout; a failure here is a bug in them.
-    if (!shaders.setGlobalDefines(layoutShaderDefines(layoutDesc(layout)), &log))
+    if (!shaders.setGlobalDefines(shaderDefines(layout), &log))
         throw std::runtime_error("Renderer: the shaders failed to build for G-buffer layout " +
                                  std::string(layoutDesc(layout).name) + ":\n" + log);
     if (auto err = createRenderTargets(targets.width, targets.height, layout, targets))

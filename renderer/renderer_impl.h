@@ -55,6 +55,8 @@ public:
     void resizeTargets(int width, int height);
     // Switches the G-buffer layout: the programs get its defines, the targets are recreated.
     void applyLayout(GBufferLayout layout);
+    // Every program's defines: the layout's, and GBL_MASKED_BRANCHES where caps.masksBranches.
+    std::vector<std::string> shaderDefines(GBufferLayout layout) const;
     void drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target);
     std::optional<std::string> modeUnavailable(LightingMode mode);
     float lightCubeHalfSize() const;

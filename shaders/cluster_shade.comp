@@ -35,12 +35,8 @@ uniform bool uShade;          // write the lit image
 uniform bool uWriteCoverage;  // write x = lights in the cluster's list, y = lights that lit the pixel
 
 void addLight(int i, vec3 pos, vec3 n, vec4 as, inout LightSum color, inout float lit) {
-    vec4 pr = texelFetch(uLights, i * 4);
-    if (!(distance(pr.xyz, pos) < pr.w)) return;
-    Light l = fetchLight(i);
-    bool reached = accumulateLight(color, l, pos, n, as.a);
     // "Lit" as in light_volume.frag: the light reaches a surface that faces it.
-    if (uWriteCoverage && reached) lit += 1.0;
+    lit += accumulateListedLight(color, i, true, pos, n, as.a) ? 1.0 : 0.0;
 }
 
 void main() {

@@ -24,6 +24,24 @@ bool accumulateLight(inout LightSum sum, Light l, vec3 p, vec3 n, float specular
     return any(greaterThan(diffuseLight + specularLight, vec3(0.0)));
 }
 
+// Light i of a loop over lights at a surface point, if `listed` (false: a padding entry past the
+// end of a list, which must add nothing). Returns whether it reached the surface.
+// Where branches skip work (GPUs), lights out of reach are skipped after one texel. Where branches
+// are masked (GBL_MASKED_BRANCHES: CPU rasterisers such as llvmpipe run both sides of every `if`),
+// a test only adds the cost of its mask: the light is shaded anyway, which adds exactly zero past
+// its radius (windowedAttenuation), and a padding entry's colour is scaled by zero.
+bool accumulateListedLight(inout LightSum sum, int i, bool listed, vec3 p, vec3 n, float specularIntensity) {
+#ifdef GBL_MASKED_BRANCHES
+    Light l = fetchLight(i);
+    l.color *= listed ? 1.0 : 0.0;
+    return accumulateLight(sum, l, p, n, specularIntensity);
+#else
+    vec4 positionRadius = texelFetch(uLights, i * 4);
+    if (!listed || !(distance(positionRadius.xyz, p) < positionRadius.w)) return false;
+    return accumulateLight(sum, fetchLight(i), p, n, specularIntensity);
+#endif
+}
+
 // Every directional light (light_fetch.glsl's list: no volume, no tile, every pixel) into the sums.
 void accumulateGlobalLights(inout LightSum sum, vec3 p, vec3 n, float specularIntensity) {
     for (int k = 0; k < uDirectionalCount; ++k) {

@@ -41,9 +41,10 @@ void blinnPhongSplit(vec3 L, vec3 radiance, vec3 p, vec3 n, out vec3 diffuseLigh
 
 // One point or spot light at a surface point, as the two sums.
 // No early return where the light adds nothing: the factor att * cone is zero there and zeroes both
-// sums. Callers test the distance first, which is where a GPU skips whole groups of pixels;
-// llvmpipe runs both sides of every branch under a mask, and the masks of two early returns cost
-// quad and tiled about a tenth of their lighting pass (bench, 512 lights, radius x1).
+// sums. The loops over lights test the distance first where that skips work on the machine
+// (accumulateListedLight, light_accumulation.glsl); llvmpipe runs both sides of every branch under
+// a mask, and the masks of two early returns here cost quad and tiled about a tenth of their
+// lighting pass (bench, 512 lights, radius x1).
 void shadeLightSplit(Light l, vec3 p, vec3 n, out vec3 diffuseLight, out vec3 specularLight) {
     vec3 toLight = l.position - p;
     float d = length(toLight);

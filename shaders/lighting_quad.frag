@@ -13,12 +13,6 @@ uniform int uLightCount;
 layout(location = 0) out vec4 fragColor;     // the lit value; split: diffuse light
 layout(location = 1) out vec4 fragSpecular;  // split: specular light (no attachment in single frames)
 
-void addLight(int i, vec3 pos, vec3 n, float specular, inout LightSum sum) {
-    // Distance test on the first texel alone: most lights are out of reach of most pixels.
-    vec4 pr = texelFetch(uLights, i * 4);
-    if (distance(pr.xyz, pos) < pr.w) accumulateLight(sum, fetchLight(i), pos, n, specular);
-}
-
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec3 pos;
@@ -33,7 +27,7 @@ void main() {
     LightSum sum = noLight();
     accumulateGlobalLights(sum, pos, n, as.a);  // directional lights: no volume, every pixel
     // Every light in index order, LIGHTS_PER_ITERATION at a time (light_fetch.glsl says why).
-#define ADD(j) addLight(j, pos, n, as.a, sum)
+#define ADD(j) accumulateListedLight(sum, j, true, pos, n, as.a)
     FOR_EVERY_LIGHT(uLightCount, ADD)
 #undef ADD
     fragColor = accumulationTarget0(sum, surface, as.rgb);

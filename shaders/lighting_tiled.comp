@@ -1,8 +1,8 @@
-// Tiled lighting (OpenGL 4.3): one work group per 16x16-pixel tile finds the depth bounds of
-// its pixels, keeps the lights whose sphere touches the tile's frustum between those bounds
-// (renderer/tile_math.h does the same on the CPU), then shades its pixels with only those. The
-// lights tested are the tile's candidates from the binning pass (tile_bin.comp); a tile with
-// more candidates than the bins hold tests every light instead.
+// Tiled lighting (OpenGL 4.3): one work group per 16x16-pixel tile keeps the lights whose sphere
+// touches the tile's frustum between the depth bounds of its pixels (renderer/tile_math.h does the
+// same on the CPU), then shades its pixels with only those. The bounds come from tile_depth.comp
+// and the lights tested are the tile's candidates from the binning pass (tile_bin.comp); a tile
+// with more candidates than the bins hold tests every light instead.
 #version 430 core
 #include "bindings.glsl"
 #include "lighting.glsl"
@@ -22,8 +22,6 @@ uniform int uLightCount;
 uniform vec3 uAmbient;
 uniform mat4 uView;
 uniform ivec2 uScreenSize;
-uniform float uNear;
-uniform float uFar;
 uniform bool uShade;          // write the lit image
 uniform bool uWriteCoverage;  // write x = lights in the tile, y = lights that lit the pixel
 
@@ -36,10 +34,9 @@ uniform bool uWriteCoverage;  // write x = lights in the tile, y = lights that l
 shared uint sLightMask[MAX_LIGHT_WORDS];
 shared uint sWords[MAX_LIGHT_WORDS];  // indices of the non-empty words of sLightMask, ascending
 shared uint sWordCount;
-shared uint sMinDepthBits;
-shared uint sMaxDepthBits;
+// x = nearest, y = farthest view depth of each tile's drawn pixels; (3e38, 0) when none is drawn.
+layout(std430, binding = BIND_SSBO_TILE_DEPTH) readonly buffer TileDepth { vec2 tileDepth[]; };
 
-#include "depth.glsl"
 #include "tile_frustum.glsl"
 
 // Whether light `index` may reach a surface of the tile: its sphere reaches the tile's depth range
@@ -57,44 +54,26 @@ bool lightTouchesTile(int index, float minDepth, float maxDepth, vec3 left, vec3
     return touches && coneMayTouchSphere(index, mat3(uView), c, tileCentre, tileRadius);
 }
 
-// Adds light `index` at the pixel: lights in the tile's list that miss this pixel's surface cost
-// one fetch (they would add exactly zero).
-void addLight(int index, vec3 pos, vec3 n, vec4 as, inout LightSum sum, inout float lit) {
-    vec4 positionRadius = texelFetch(uLights, index * 4);
-    if (!(distance(positionRadius.xyz, pos) < positionRadius.w)) return;
-    Light l = fetchLight(index);
-    bool reached = accumulateLight(sum, l, pos, n, as.a);
+// Adds light `index` at the pixel if `listed` (accumulateListedLight says how lights that miss
+// it are skipped).
+void addLight(int index, bool listed, vec3 pos, vec3 n, vec4 as, inout LightSum sum, inout float lit) {
     // "Lit" as in light_volume.frag: the light reaches a surface that faces it.
-    if (uWriteCoverage && reached) lit += 1.0;
+    lit += accumulateListedLight(sum, index, listed, pos, n, as.a) ? 1.0 : 0.0;
 }
 
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
     uint local = gl_LocalInvocationIndex;
-    if (local == 0u) {
-        sMinDepthBits = floatBitsToUint(3.0e38);
-        sMaxDepthBits = 0u;
-    }
-    memoryBarrierShared();
-    barrier();
-
-    // --- depth bounds of the tile's geometry (view depth; positive floats order like uints) ---
+    int tile = int(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x);
     bool onScreen = px.x < uScreenSize.x && px.y < uScreenSize.y;
     vec3 pos = vec3(0.0);
     bool geometry = onScreen && gbufferPosition(px, pos);
-    if (geometry) {
-        float d = texelFetch(uDepth, px, 0).r;
-        float viewDepth = linearDepth(d, uNear, uFar);
-        atomicMin(sMinDepthBits, floatBitsToUint(viewDepth));
-        atomicMax(sMaxDepthBits, floatBitsToUint(viewDepth));
-    }
-    memoryBarrierShared();
-    barrier();
 
-    // The tile's frustum side planes, once for every chunk.
-    float minDepth = uintBitsToFloat(sMinDepthBits), maxDepth = uintBitsToFloat(sMaxDepthBits);
-    bool anyGeometry = sMaxDepthBits != 0u;  // the same in every invocation: uniform flow below
+    // The tile's depth bounds and frustum side planes, once for every chunk.
+    vec2 depthRange = tileDepth[tile];
+    float minDepth = depthRange.x, maxDepth = depthRange.y;
+    bool anyGeometry = maxDepth != 0.0;  // the same in every invocation: uniform flow below
     ivec2 lo = ivec2(gl_WorkGroupID.xy) * 16, hi = min(lo + 16, uScreenSize);
     vec2 ndcLo = vec2(lo) / vec2(uScreenSize) * 2.0 - 1.0, ndcHi = vec2(hi) / vec2(uScreenSize) * 2.0 - 1.0;
     vec3 bl = unprojectFar(ndcLo), br = unprojectFar(vec2(ndcHi.x, ndcLo.y));
@@ -125,7 +104,6 @@ void main() {
     if (geometry) accumulateGlobalLights(sum, pos, n, as.a);  // directional: in no tile list
     float lit = 0.0;
     uint tileCount = 0u;
-    int tile = int(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x);
     int binned = anyGeometry ? tileBinCandidates(tile) : 0;
     if (binned >= 0) {
         // --- light list: the tile's candidates, each invocation testing every 256th ---
@@ -136,14 +114,14 @@ void main() {
         int kept = sortKeptLights();
         tileCount = uint(kept);
         // --- shading: the tile's lights in ascending index order ---
-        // Four list entries a read (tile_bin_read.glsl says why); past `kept` the list holds stale
-        // entries, so the last three are guarded.
+        // Four list entries a read (tile_bin_read.glsl says why); the entries up to the next
+        // multiple of four past `kept` are padding, not listed.
         for (int k = 0; geometry && k < kept; k += 4) {
             uvec4 four = sSorted4[k >> 2];
-            addLight(int(four.x), pos, n, as, sum, lit);
-            if (k + 1 < kept) addLight(int(four.y), pos, n, as, sum, lit);
-            if (k + 2 < kept) addLight(int(four.z), pos, n, as, sum, lit);
-            if (k + 3 < kept) addLight(int(four.w), pos, n, as, sum, lit);
+            addLight(int(four.x), true, pos, n, as, sum, lit);
+            addLight(int(four.y), k + 1 < kept, pos, n, as, sum, lit);
+            addLight(int(four.z), k + 2 < kept, pos, n, as, sum, lit);
+            addLight(int(four.w), k + 3 < kept, pos, n, as, sum, lit);
         }
     }
     // Over the bins' cap: every light, in chunks (the same test, the same order).
@@ -178,7 +156,7 @@ void main() {
                 while (bits != 0u) {
                     int b = findLSB(bits);
                     bits &= bits - 1u;
-                    addLight(base + w * 32 + b, pos, n, as, sum, lit);
+                    addLight(base + w * 32 + b, true, pos, n, as, sum, lit);
                 }
             }
         }

@@ -49,6 +49,10 @@ int sortKeptLights() {
         for (uint j = 0u; j < n; ++j) rank += sKept[j] < index ? 1u : 0u;
         sSorted4[rank >> 2u][rank & 3u] = index;
     }
+    // Padding up to the next multiple of four, for readers that take four entries at a time: light
+    // 0, which exists whenever the list is not empty (they fetch it and add nothing).
+    uint pad = n + gl_LocalInvocationIndex;
+    if (gl_LocalInvocationIndex < 3u && pad < uint(BIN_MAX)) sSorted4[pad >> 2u][pad & 3u] = 0u;
     memoryBarrierShared();
     barrier();
     return int(n);

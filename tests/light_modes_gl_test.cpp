@@ -388,3 +388,45 @@ TEST_F(LightModesGlTest, WireframesAreDrawnInTheLightColourAndHiddenByTheScene) 
     changed({0.0f, 2.0f, 3.0f}, onWall, elsewhere, redder);  // in front of the wall, camera outside
     EXPECT_GT(onWall, 20) << "wires in front of the wall are visible over it";
 }
+
+// The two builds of the light loops (GlCaps::masksBranches, shaders/light_accumulation.glsl): where
+// branches skip work, lights out of reach and padding entries past a tile's list are skipped; where
+// they are masked, they are shaded with a zero factor. Both add the same lights, so every mode's
+// image agrees within one fp16 rounding (the compiler may fuse the sums differently), and the
+// coverage views count the same lights, exactly. Whichever build this machine picks, the other is
+// forced here, so both are run on every machine.
+TEST_F(LightModesGlTest, LightLoopsWithAndWithoutBranchSkippingAgree) {
+    GlCaps flipped = caps();
+    flipped.masksBranches = !caps().masksBranches;
+    Renderer other(flipped, kW, kH);
+    ASSERT_FALSE(other.setScene(scene_));
+    std::vector<LightingMode> modes = {LightingMode::Quad, LightingMode::Volumes, LightingMode::Forward};
+    if (caps().computeShaders) modes.insert(modes.end(), {LightingMode::Tiled, LightingMode::Clustered});
+    for (Camera const& cam : {camera_, insideCamera()}) {
+        for (LightingMode m : modes) {
+            std::string_view const name = enumName(kLightingModeNames, m);
+            PipelineSettings s = settingsFor(m);
+            FrameStats const st = other.render({cam, lights_, s, true});
+            EXPECT_EQ(st.modeUsed, m) << st.fallbackReason;
+            FloatImage const forced = other.readAttachment(Attachment::Lighting);
+            Diff const d = compare(forced, lighting(s, cam, lights_), [](double v) { return kHalfUlp * v + 1e-6; });
+            EXPECT_EQ(d.pixelsOver, 0) << name << ": " << describe(d);
+            EXPECT_GT(d.meanValue, 0.0) << name << ": an unlit image proves nothing";
+            if (m != LightingMode::Tiled && m != LightingMode::Clustered) continue;
+            s.view = DebugView::Heatmap;
+            other.render({cam, lights_, s, true});
+            renderer_->render({cam, lights_, s, true});
+            FloatImage const a = other.readAttachment(Attachment::Coverage);
+            FloatImage const b = renderer_->readAttachment(Attachment::Coverage);
+            ASSERT_EQ(a.pixels.size(), b.pixels.size());
+            int differing = 0;
+            double lit = 0.0;
+            for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+                differing += a.pixels[i] != b.pixels[i];
+                lit += i % 2 == 1 ? b.pixels[i] : 0.0;
+            }
+            EXPECT_EQ(differing, 0) << name << ": lights counted per pixel";
+            EXPECT_GT(lit, 0.0) << name << ": no pixel counted a light";
+        }
+    }
+}

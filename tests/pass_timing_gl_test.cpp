@@ -84,6 +84,16 @@ TEST(TimingMethod, SoftwareRasterisersAreTimedOnTheCpu) {
     EXPECT_FALSE(chooseTimingMethod("llvmpipe").reason.empty());
 }
 
+// The same renderers mask branches (GlCaps::masksBranches), and GBL_SHADER_BRANCHES overrides.
+TEST(BranchMasking, SoftwareRasterisersMaskBranchesUnlessOverridden) {
+    EXPECT_TRUE(rendererMasksBranches("llvmpipe (LLVM 15.0.6, 256 bits)", nullptr));
+    EXPECT_TRUE(rendererMasksBranches("softpipe", nullptr));
+    EXPECT_FALSE(rendererMasksBranches("NVIDIA H200/PCIe/SSE2", nullptr));
+    EXPECT_FALSE(rendererMasksBranches("llvmpipe (LLVM 15.0.6, 256 bits)", "skipping"));
+    EXPECT_TRUE(rendererMasksBranches("NVIDIA H200/PCIe/SSE2", "masked"));
+    EXPECT_TRUE(rendererMasksBranches("llvmpipe", "anything else: detect"));
+}
+
 TEST_F(PassTimingGlTest, StatsNameTheTimingSource) {
     std::vector<PointLight> const l = lights(4);
     FrameStats const s = renderer_->render({camera_, l, settings_, true});

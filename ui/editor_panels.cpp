@@ -101,6 +101,7 @@ EditRequest drawMainMenu(Editor& editor) {
     if (x > ImGui::GetCursorPosX()) {
         ImGui::SetCursorPosX(x);
         ImGui::TextDisabled("%s", status.c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("light loops: %s", caps.lightLoopsNote().c_str());
     }
     ImGui::EndMainMenuBar();
     return edit;

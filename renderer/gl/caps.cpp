@@ -3,6 +3,8 @@
 
 #include <epoxy/gl.h>
 
+#include <cstdlib>
+
 namespace gbl {
 
 namespace {
@@ -11,6 +13,13 @@ std::string glString(GLenum name) {
     return s ? s : "";
 }
 }  // namespace
+
+bool rendererMasksBranches(std::string_view renderer, char const* override) {
+    std::string_view const choice = override ? override : "";
+    if (choice == "masked") return true;
+    if (choice == "skipping") return false;
+    return renderer.find("llvmpipe") != std::string_view::npos || renderer.find("softpipe") != std::string_view::npos;
+}
 
 GlCaps detectGlCaps(int limitMajor, int limitMinor) {
     GlCaps caps;
@@ -34,6 +43,7 @@ GlCaps detectGlCaps(int limitMajor, int limitMinor) {
         caps.atLeast(4, 3) || (has("GL_ARB_compute_shader") && has("GL_ARB_shader_storage_buffer_object") &&
                                has("GL_ARB_shader_image_load_store"));
     caps.pipelineStatistics = caps.atLeast(4, 6) || has("GL_ARB_pipeline_statistics_query");
+    caps.masksBranches = rendererMasksBranches(caps.renderer, std::getenv("GBL_SHADER_BRANCHES"));
     return caps;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 namespace gbl {
 
@@ -15,6 +16,11 @@ struct GlCaps {
     bool khrDebug = false;            // GL 4.3 or GL_KHR_debug: debug callback and object labels
     bool computeShaders = false;      // GL 4.3 or ARB_compute_shader + SSBOs: tiled lighting
     bool pipelineStatistics = false;  // ARB_pipeline_statistics_query: fragment invocations
+    // The rasteriser runs shaders on the CPU and executes both sides of every branch under a mask
+    // (Mesa's llvmpipe and softpipe), so a test that only skips work saves nothing and costs its
+    // mask: the light loops are then built without such tests (GBL_MASKED_BRANCHES,
+    // shaders/light_accumulation.glsl). GBL_SHADER_BRANCHES=masked or =skipping overrides it.
+    bool masksBranches = false;
 
     bool atLeast(int maj, int min) const { return major > maj || (major == maj && minor >= min); }
 
@@ -24,12 +30,23 @@ struct GlCaps {
                               : "compute shaders need OpenGL 4.3; this context is " + std::to_string(major) + "." +
                                     std::to_string(minor) + ", so tiled mode is unavailable";
     }
+    // How the light loops were built for this context, one line for bench and the editor's info.
+    std::string lightLoopsNote() const {
+        return masksBranches ? "built for masked branches: this rasteriser runs both sides of every branch,\nso "
+                               "lights out of reach are shaded with a zero factor instead of tested\n"
+                               "(GBL_SHADER_BRANCHES=skipping builds the tests)"
+                             : "lights out of reach are skipped after a distance test";
+    }
     std::string pipelineStatisticsUnavailableReason() const {
         return pipelineStatistics ? std::string()
                                   : "fragment invocation counts need ARB_pipeline_statistics_query, which this "
                                     "context lacks";
     }
 };
+
+// Whether a context with this GL_RENDERER string masks branches (GlCaps::masksBranches);
+// `override` is GBL_SHADER_BRANCHES ("masked", "skipping"; null or anything else: detect).
+bool rendererMasksBranches(std::string_view renderer, char const* override);
 
 // Reads the current context. limitMajor/limitMinor > 0 pretend the context is at most that
 // version (to try the OpenGL 3.3 floor on a newer driver): features above it read as absent.

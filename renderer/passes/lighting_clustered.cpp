@@ -20,7 +20,6 @@ void setGridUniforms(gl::Program const& p, LightingClusteredInput const& in, Lig
     p.set("uNear", c.nearPlane);
     p.set("uFar", c.farPlane);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_CLUSTER_COUNTS, in.lists.counts.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_CLUSTER_LIGHTS, in.lists.lights.id());
 }
 
 }  // namespace
@@ -51,8 +50,10 @@ void clusterListsPass(LightingClusteredInput const& in, LightingClusteredConfig 
     p.set("uBinCap", in.bins.cap);
     p.set("uInverseProjection", glm::inverse(c.projection));
     setGridUniforms(p, in, c, g);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_CLUSTER_LIGHTS, in.lists.lights.id());  // written here
     glDispatchCompute(GLuint(g.tilesX), GLuint(g.tilesY), 1);  // one work group per tile, a slice per invocation
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_CLUSTER_LIGHTS, 0);
 }
 
 LightingOutput clusterShadePass(LightingClusteredInput const& in, LightingClusteredConfig const& c) {
@@ -77,7 +78,6 @@ LightingOutput clusterShadePass(LightingClusteredInput const& in, LightingCluste
     glBindImageTexture(slot::BIND_IMAGE_LIGHTING, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glBindImageTexture(slot::BIND_IMAGE_COVERAGE, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_CLUSTER_COUNTS, 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_CLUSTER_LIGHTS, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS, 0);
     return {in.hdr};

@@ -17,11 +17,13 @@ LightingOutput lightingTiledPass(LightingTiledInput const& in, LightingTiledConf
     p.set("uView", c.view);
     p.set("uInverseProjection", glm::inverse(c.projection));
     glUniform2i(p.uniform("uScreenSize"), c.width, c.height);
-    p.set("uNear", c.nearPlane);
-    p.set("uFar", c.farPlane);
     p.set("uShade", c.shade ? 1 : 0);
     p.set("uWriteCoverage", c.coverage ? 1 : 0);
     p.set("uBinCap", in.bins.cap);
+    // The bins and the tiles' depth ranges, as tileBinPass left them.
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS, in.bins.counts.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS, in.bins.lights.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_DEPTH, in.bins.depth.id());
     // Both image units are bound whatever the flags, so the program's declared images are valid.
     glBindImageTexture(slot::BIND_IMAGE_LIGHTING, in.hdr.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glBindImageTexture(slot::BIND_IMAGE_COVERAGE, in.coverage.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
@@ -33,6 +35,7 @@ LightingOutput lightingTiledPass(LightingTiledInput const& in, LightingTiledConf
     glBindImageTexture(slot::BIND_IMAGE_COVERAGE, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_DEPTH, 0);
     return {in.hdr};
 }
 
