@@ -26,7 +26,8 @@ float windowDepth(float z) {
 class TileBinsGlTest : public test::GlTest {};
 
 TEST_F(TileBinsGlTest, ABinHoldsOnlyLightsWithinTheDepthsItsTileShows) {
-    if (!caps().computeShaders) GTEST_SKIP() << caps().tiledUnavailableReason();  // the passes are compute shaders
+    if (!caps().computeShaders)
+        GTEST_SKIP() << "the depth and bin passes are compute shaders: " << caps().tiledUnavailableReason();
     ShaderLibrary lib("");
     std::string log;
     ASSERT_TRUE(lib.add(ProgramId::TileDepth, &log)) << log;
