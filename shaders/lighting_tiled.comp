@@ -34,8 +34,7 @@ uniform bool uWriteCoverage;  // write x = lights in the tile, y = lights that l
 shared uint sLightMask[MAX_LIGHT_WORDS];
 shared uint sWords[MAX_LIGHT_WORDS];  // indices of the non-empty words of sLightMask, ascending
 shared uint sWordCount;
-// x = nearest, y = farthest view depth of each tile's drawn pixels; (3e38, 0) when none is drawn.
-layout(std430, binding = BIND_SSBO_TILE_DEPTH) readonly buffer TileDepth { vec2 tileDepth[]; };
+#include "tile_depth_buffer.glsl"
 
 #include "tile_frustum.glsl"
 

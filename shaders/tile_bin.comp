@@ -12,8 +12,7 @@ layout(local_size_x = 64) in;
 // Zeroed before the dispatch; each count is the tile's true candidate count, also past the cap.
 layout(std430, binding = BIND_SSBO_TILE_BIN_COUNTS) buffer TileBinCounts { uint tileBinCount[]; };
 layout(std430, binding = BIND_SSBO_TILE_BIN_LIGHTS) writeonly buffer TileBinLights { uint tileBinLight[]; };
-// Each tile's view-depth range of drawn pixels (tile_depth.comp): x nearest, y farthest.
-layout(std430, binding = BIND_SSBO_TILE_DEPTH) readonly buffer TileDepth { vec2 tileDepth[]; };
+#include "tile_depth_buffer.glsl"
 
 uniform int uLightCount;
 uniform mat4 uView;

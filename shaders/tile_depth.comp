@@ -9,8 +9,8 @@
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
-// x = nearest, y = farthest view depth of the tile's drawn pixels; (3e38, 0) when none is drawn.
-layout(std430, binding = BIND_SSBO_TILE_DEPTH) writeonly buffer TileDepth { vec2 tileDepth[]; };
+#define TILE_DEPTH_ACCESS writeonly
+#include "tile_depth_buffer.glsl"
 
 uniform sampler2D uDepth;
 uniform ivec2 uScreenSize;
