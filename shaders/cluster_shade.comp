@@ -34,9 +34,9 @@ uniform float uFar;
 uniform bool uShade;          // write the lit image
 uniform bool uWriteCoverage;  // write x = lights in the cluster's list, y = lights that lit the pixel
 
-void addLight(int i, vec3 pos, vec3 n, vec4 as, inout LightSum color, inout float lit) {
+void addLight(int i, SurfacePoint s, vec4 as, inout LightSum color, inout float lit) {
     // "Lit" as in light_volume.frag: the light reaches a surface that faces it.
-    lit += accumulateListedLight(color, i, true, pos, n, as.a) ? 1.0 : 0.0;
+    lit += accumulateListedLight(color, i, true, s, as.a) ? 1.0 : 0.0;
 }
 
 void main() {
@@ -53,8 +53,9 @@ void main() {
     vec4 as = gbufferAlbedoSpec(px);
     vec4 ea = gbufferEmissiveAo(px);
     vec3 surface = surfaceTerms(uAmbient, as.rgb, ea.a, ea.rgb);
+    SurfacePoint s = surfacePoint(pos, n);
     LightSum color = noLight();  // the pixel's light sums (light_accumulation.glsl)
-    accumulateGlobalLights(color, pos, n, as.a);  // directional: in no cluster list
+    accumulateGlobalLights(color, s, as.a);  // directional: in no cluster list
     float lit = 0.0;
     float depth = -(uView * vec4(pos, 1.0)).z;
     int slice = clamp(int(floor(log(depth / uNear) / log(uFar / uNear) * float(uGrid.z))), 0, uGrid.z - 1);
@@ -62,7 +63,7 @@ void main() {
     uint count = clusterCount[cluster];
     if (count <= uint(uMaxLights)) {
         uint base = uint(cluster) * uint(uMaxLights);
-        for (uint k = 0u; k < count; ++k) addLight(int(texelFetch(uClusterList, int(base + k)).r), pos, n, as, color, lit);
+        for (uint k = 0u; k < count; ++k) addLight(int(texelFetch(uClusterList, int(base + k)).r), s, as, color, lit);
     } else {
         // Over the cap: the cluster's list is incomplete, so the tile's whole list (a superset, in
         // index order) is tried, or every light where the tile's bin overflowed too (exact, slower).
@@ -70,11 +71,11 @@ void main() {
         uint tileCount = tileBinCount[tile];
         if (tileCount <= uint(uBinCap)) {
             uint base = uint(tile) * uint(uBinCap);
-            for (uint k = 0u; k < tileCount; ++k) addLight(int(tileBinLight[base + k]), pos, n, as, color, lit);
+            for (uint k = 0u; k < tileCount; ++k) addLight(int(tileBinLight[base + k]), s, as, color, lit);
             count = tileCount;  // what was evaluated
         } else {
             // LIGHTS_PER_ITERATION lights an iteration (light_fetch.glsl says why).
-#define ADD(j) addLight(j, pos, n, as, color, lit)
+#define ADD(j) addLight(j, s, as, color, lit)
             FOR_EVERY_LIGHT(uLightCount, ADD)
 #undef ADD
         }

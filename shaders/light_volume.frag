@@ -39,7 +39,7 @@ void main() {
 #else
     vec4 as = gbufferAlbedoSpec(px);
     LightSum sum = noLight();
-    accumulateLight(sum, l, pos, gbufferNormal(px), as.a);
+    accumulateLight(sum, l, surfacePoint(pos, gbufferNormal(px)), as.a);
     // Blended additively: the surface terms came with the full-screen pass before the volumes.
     fragColor = vec4(accumulationTarget0(sum, vec3(0.0), as.rgb).rgb, 0.0);
     fragSpecular = vec4(sum.specular, 0.0);

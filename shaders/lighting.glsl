@@ -13,6 +13,16 @@ struct Light {
 uniform vec3 uViewPos;
 uniform float uShininess;
 
+// A surface point as the light loops see it: position, unit normal, and the unit direction to the
+// eye, which is the same for every light and so is worked out once per pixel, not once per light.
+struct SurfacePoint {
+    vec3 p;
+    vec3 n;
+    vec3 V;
+};
+
+SurfacePoint surfacePoint(vec3 p, vec3 n) { return SurfacePoint(p, n, normalize(uViewPos - p)); }
+
 // Windowed attenuation: the classic 1/(Kc + Kl d + Kq d^2) minus its value at the radius, so
 // the contribution is exactly zero at and beyond the radius in every mode.
 float windowedAttenuation(Light l, float d) {
@@ -30,44 +40,43 @@ float spotConeFactor(Light l, vec3 L) {
 // diffuse light N.L * radiance (the albedo multiplies it) and specular light
 // (N.H)^shininess * radiance (the specular intensity multiplies it). `accumulation: split` keeps
 // the two sums apart.
-void blinnPhongSplit(vec3 L, vec3 radiance, vec3 p, vec3 n, out vec3 diffuseLight, out vec3 specularLight) {
-    vec3 V = normalize(uViewPos - p);
-    vec3 H = normalize(L + V);
-    float diff = max(dot(n, L), 0.0);
-    float spec = diff > 0.0 ? pow(max(dot(n, H), 0.0), uShininess) : 0.0;
+void blinnPhongSplit(vec3 L, vec3 radiance, SurfacePoint s, out vec3 diffuseLight, out vec3 specularLight) {
+    vec3 H = normalize(L + s.V);
+    float diff = max(dot(s.n, L), 0.0);
+    float spec = diff > 0.0 ? pow(max(dot(s.n, H), 0.0), uShininess) : 0.0;
     diffuseLight = diff * radiance;
     specularLight = spec * radiance;
 }
 
 // One point or spot light at a surface point, as the two sums.
 // No early return where the light adds nothing: the factor att * cone is zero there and zeroes both
-// sums. The loops over lights test the distance first where that skips work on the machine
-// (accumulateListedLight, light_accumulation.glsl); llvmpipe runs both sides of every branch under
+// sums. The loops over lights test whether the light can reach the point first where that skips
+// work on the machine (lightMayLight, light_accumulation.glsl); llvmpipe runs both sides of every branch under
 // a mask, and the masks of two early returns here cost quad and tiled about a tenth of their
 // lighting pass (bench, 512 lights, radius x1).
-void shadeLightSplit(Light l, vec3 p, vec3 n, out vec3 diffuseLight, out vec3 specularLight) {
-    vec3 toLight = l.position - p;
+void shadeLightSplit(Light l, SurfacePoint s, out vec3 diffuseLight, out vec3 specularLight) {
+    vec3 toLight = l.position - s.p;
     float d = length(toLight);
     vec3 L = toLight / max(d, 1e-30);  // a surface point at the light itself: L = 0, not NaN
     float factor = windowedAttenuation(l, d) * spotConeFactor(l, L);
-    blinnPhongSplit(L, l.color * factor, p, n, diffuseLight, specularLight);
+    blinnPhongSplit(L, l.color * factor, s, diffuseLight, specularLight);
 }
 
 // One directional light, as the two sums: from -direction everywhere, no attenuation.
-void shadeDirectionalSplit(Light l, vec3 p, vec3 n, out vec3 diffuseLight, out vec3 specularLight) {
-    blinnPhongSplit(-l.direction, l.color, p, n, diffuseLight, specularLight);
+void shadeDirectionalSplit(Light l, SurfacePoint s, out vec3 diffuseLight, out vec3 specularLight) {
+    blinnPhongSplit(-l.direction, l.color, s, diffuseLight, specularLight);
 }
 
 // One point or spot light at a surface point, with its material.
 vec3 shadeLight(Light l, vec3 p, vec3 n, vec3 albedo, float specular) {
     vec3 diffuseLight, specularLight;
-    shadeLightSplit(l, p, n, diffuseLight, specularLight);
+    shadeLightSplit(l, surfacePoint(p, n), diffuseLight, specularLight);
     return albedo * diffuseLight + specular * specularLight;
 }
 
 // One directional light at a surface point, with its material.
 vec3 shadeDirectional(Light l, vec3 p, vec3 n, vec3 albedo, float specular) {
     vec3 diffuseLight, specularLight;
-    shadeDirectionalSplit(l, p, n, diffuseLight, specularLight);
+    shadeDirectionalSplit(l, surfacePoint(p, n), diffuseLight, specularLight);
     return albedo * diffuseLight + specular * specularLight;
 }

@@ -24,10 +24,11 @@ void main() {
     vec4 as = gbufferAlbedoSpec(px);
     vec4 ea = gbufferEmissiveAo(px);
     vec3 surface = surfaceTerms(uAmbient, as.rgb, ea.a, ea.rgb);
+    SurfacePoint s = surfacePoint(pos, n);
     LightSum sum = noLight();
-    accumulateGlobalLights(sum, pos, n, as.a);  // directional lights: no volume, every pixel
+    accumulateGlobalLights(sum, s, as.a);  // directional lights: no volume, every pixel
     // Every light in index order, LIGHTS_PER_ITERATION at a time (light_fetch.glsl says why).
-#define ADD(j) accumulateListedLight(sum, j, true, pos, n, as.a)
+#define ADD(j) accumulateListedLight(sum, j, true, s, as.a)
     FOR_EVERY_LIGHT(uLightCount, ADD)
 #undef ADD
     fragColor = accumulationTarget0(sum, surface, as.rgb);

@@ -55,9 +55,9 @@ bool lightTouchesTile(int index, float minDepth, float maxDepth, vec3 left, vec3
 
 // Adds light `index` at the pixel if `listed` (accumulateListedLight says how lights that miss
 // it are skipped).
-void addLight(int index, bool listed, vec3 pos, vec3 n, vec4 as, inout LightSum sum, inout float lit) {
+void addLight(int index, bool listed, SurfacePoint s, vec4 as, inout LightSum sum, inout float lit) {
     // "Lit" as in light_volume.frag: the light reaches a surface that faces it.
-    lit += accumulateListedLight(sum, index, listed, pos, n, as.a) ? 1.0 : 0.0;
+    lit += accumulateListedLight(sum, index, listed, s, as.a) ? 1.0 : 0.0;
 }
 
 
@@ -99,8 +99,9 @@ void main() {
         ea = gbufferEmissiveAo(px);
     }
     vec3 surface = surfaceTerms(uAmbient, as.rgb, ea.a, ea.rgb);
+    SurfacePoint s = surfacePoint(pos, n);
     LightSum sum = noLight();
-    if (geometry) accumulateGlobalLights(sum, pos, n, as.a);  // directional: in no tile list
+    if (geometry) accumulateGlobalLights(sum, s, as.a);  // directional: in no tile list
     float lit = 0.0;
     uint tileCount = 0u;
     int binned = anyGeometry ? tileBinCandidates(tile) : 0;
@@ -117,10 +118,10 @@ void main() {
         // multiple of four past `kept` are padding, not listed.
         for (int k = 0; geometry && k < kept; k += 4) {
             uvec4 four = sSorted4[k >> 2];
-            addLight(int(four.x), true, pos, n, as, sum, lit);
-            addLight(int(four.y), k + 1 < kept, pos, n, as, sum, lit);
-            addLight(int(four.z), k + 2 < kept, pos, n, as, sum, lit);
-            addLight(int(four.w), k + 3 < kept, pos, n, as, sum, lit);
+            addLight(int(four.x), true, s, as, sum, lit);
+            addLight(int(four.y), k + 1 < kept, s, as, sum, lit);
+            addLight(int(four.z), k + 2 < kept, s, as, sum, lit);
+            addLight(int(four.w), k + 3 < kept, s, as, sum, lit);
         }
     }
     // Over the bins' cap: every light, in chunks (the same test, the same order).
@@ -155,7 +156,7 @@ void main() {
                 while (bits != 0u) {
                     int b = findLSB(bits);
                     bits &= bits - 1u;
-                    addLight(base + w * 32 + b, true, pos, n, as, sum, lit);
+                    addLight(base + w * 32 + b, true, s, as, sum, lit);
                 }
             }
         }
