@@ -50,10 +50,10 @@ void blinnPhongSplit(vec3 L, vec3 radiance, SurfacePoint s, out vec3 diffuseLigh
 
 // One point or spot light at a surface point, as the two sums.
 // No early return where the light adds nothing: the factor att * cone is zero there and zeroes both
-// sums. The loops over lights test whether the light can reach the point first where that skips
-// work on the machine (lightMayLight, light_accumulation.glsl); llvmpipe runs both sides of every branch under
-// a mask, and the masks of two early returns here cost quad and tiled about a tenth of their
-// lighting pass (bench, 512 lights, radius x1).
+// sums. The loops over lights test whether the light can light the point first where that skips
+// work on the machine (lightMayLight, light_accumulation.glsl); llvmpipe runs both sides of every
+// branch under a mask, and the masks of two early returns here cost quad and tiled about a tenth
+// of their lighting pass (bench, 512 lights, radius x1).
 void shadeLightSplit(Light l, SurfacePoint s, out vec3 diffuseLight, out vec3 specularLight) {
     vec3 toLight = l.position - s.p;
     float d = length(toLight);
