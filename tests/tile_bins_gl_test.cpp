@@ -26,8 +26,7 @@ float windowDepth(float z) {
 class TileBinsGlTest : public test::GlTest {};
 
 TEST_F(TileBinsGlTest, ABinHoldsOnlyLightsWithinTheDepthsItsTileShows) {
-    if (!caps().computeShaders)
-        GTEST_SKIP() << "the depth and bin passes are compute shaders: " << caps().tiledUnavailableReason();
+    if (!caps().computeShaders) GTEST_SKIP() << "its passes are compute shaders: " << caps().tiledUnavailableReason();
     ShaderLibrary lib("");
     std::string log;
     ASSERT_TRUE(lib.add(ProgramId::TileDepth, &log)) << log;
