@@ -9,9 +9,9 @@
 uniform int uLightCount;
 out vec4 fragColor;
 
-// 1 where light i reaches the surface at p (normal n) and lights it, else 0.
-float litBy(int i, vec3 p, vec3 n) {
-    return any(greaterThan(shadeLight(fetchLight(i), p, n, vec3(1.0), 1.0), vec3(0.0))) ? 1.0 : 0.0;
+// 1 where light i reaches the surface point and lights it, else 0.
+float litBy(int i, SurfacePoint s) {
+    return any(greaterThan(shadeLight(fetchLight(i), s, vec3(1.0), 1.0), vec3(0.0))) ? 1.0 : 0.0;
 }
 
 void main() {
@@ -19,9 +19,10 @@ void main() {
     vec3 pos;
     if (!gbufferPosition(px, pos)) { fragColor = vec4(0.0); return; }
     vec3 n = gbufferNormal(px);
+    SurfacePoint s = surfacePoint(pos, n);
     float lit = 0.0;
     // LIGHTS_PER_ITERATION lights an iteration (light_fetch.glsl says why).
-#define ADD(j) lit += litBy(j, pos, n)
+#define ADD(j) lit += litBy(j, s)
     FOR_EVERY_LIGHT(uLightCount, ADD)
 #undef ADD
     // Directional lights (radius 0 above, so never counted there) light every surface facing them.

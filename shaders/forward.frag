@@ -17,9 +17,9 @@ uniform int uLightCount;
 
 out vec4 fragColor;
 
-vec3 shadeNear(int i, vec3 n, vec3 albedo, float spec) {
+vec3 shadeNear(int i, SurfacePoint s, vec3 albedo, float spec) {
     vec4 pr = texelFetch(uLights, i * 4);
-    return distance(pr.xyz, vWorldPos) < pr.w ? shadeLight(fetchLight(i), vWorldPos, n, albedo, spec) : vec3(0.0);
+    return distance(pr.xyz, s.p) < pr.w ? shadeLight(fetchLight(i), s, albedo, spec) : vec3(0.0);
 }
 
 void main() {
@@ -35,7 +35,8 @@ void main() {
 #endif
     color += shadeGlobalLights(vWorldPos, n, base.rgb, spec);  // directional lights
     // Every light in index order, LIGHTS_PER_ITERATION at a time (light_fetch.glsl says why).
-#define ADD(j) color += shadeNear(j, n, base.rgb, spec)
+    SurfacePoint s = surfacePoint(vWorldPos, n);  // the eye direction once, not once per light
+#define ADD(j) color += shadeNear(j, s, base.rgb, spec)
     FOR_EVERY_LIGHT(uLightCount, ADD)
 #undef ADD
     fragColor = vec4(color, base.a);

@@ -68,11 +68,12 @@ void shadeDirectionalSplit(Light l, SurfacePoint s, out vec3 diffuseLight, out v
 }
 
 // One point or spot light at a surface point, with its material.
-vec3 shadeLight(Light l, vec3 p, vec3 n, vec3 albedo, float specular) {
+vec3 shadeLight(Light l, SurfacePoint s, vec3 albedo, float specular) {
     vec3 diffuseLight, specularLight;
-    shadeLightSplit(l, surfacePoint(p, n), diffuseLight, specularLight);
+    shadeLightSplit(l, s, diffuseLight, specularLight);
     return albedo * diffuseLight + specular * specularLight;
 }
+vec3 shadeLight(Light l, vec3 p, vec3 n, vec3 albedo, float specular) { return shadeLight(l, surfacePoint(p, n), albedo, specular); }
 
 // One directional light at a surface point, with its material.
 vec3 shadeDirectional(Light l, vec3 p, vec3 n, vec3 albedo, float specular) {
