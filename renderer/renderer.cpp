@@ -66,6 +66,9 @@ std::string programFailure(std::string const& mode, ShaderLibrary const& shaders
 RendererImpl::RendererImpl(GlCaps capsIn, int width, int height) : caps(std::move(capsIn)), shaders(shaderReloadDir()) {
     installGlDebug(caps);
     glErrorsAtStart = glErrorCount();
+    // Before the first build: the defines include the checks' own.
+    if (shaderChecksRequested() && caps.computeShaders)
+        shaderChecks = ShaderChecks::create(shaderCheckSiteNames(shaders.source("shader_checks.glsl").value_or("")));
     shaders.setGlobalDefines(shaderDefines(targets.gbuffer.layout), nullptr);  // nothing built yet
     // Core programs are fatal: without them there is no frame at all. Optional ones are built
     // when their mode is first asked for (volumesReady, tiledReady).
@@ -103,6 +106,7 @@ void RendererImpl::resizeTargets(int width, int height) {
 std::vector<std::string> RendererImpl::shaderDefines(GBufferLayout layout) const {
     std::vector<std::string> defines = layoutShaderDefines(layoutDesc(layout));
     if (caps.masksBranches) defines.push_back("GBL_MASKED_BRANCHES");
+    if (shaderChecks) defines.push_back("GBL_SHADER_CHECKS");
     return defines;
 }
 
@@ -235,6 +239,7 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     if (targets.empty()) return stats;  // minimised: nothing to draw into
 
     coverageView.reset();  // counts of an earlier frame
+    if (shaderChecks) shaderChecks.begin();
     FrameContext f = frameContext(input);
     if (auto why = modeUnavailable(f.settings.mode)) {
         f.settings.mode = LightingMode::Quad;
@@ -343,6 +348,8 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     if (fragmentQuery && (input.waitForGpuTimings || fragmentQuery.resultAvailable()))
         stats.fragmentInvocations = fragmentQuery.result();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (shaderChecks)
+        if (auto report = shaderChecks.collect()) stats.shaderCheckReport = *report;
     stats.glErrors = glErrorCount() - errorsBefore;
     return stats;
 }
@@ -360,7 +367,9 @@ void RendererImpl::drawView(ViewParams const& params, FrameInput const& frame, V
     if (viewNeedsCoverage(params.view)) {
         f.settings.view = params.view;
         lights.upload(f.lights);
+        if (shaderChecks) shaderChecks.begin();
         runCoverage(f);
+        if (shaderChecks) shaderChecks.collect();
     }
     viewPass({targets.gbuffer, targets.lighting, targets.coverage, targets.diffuseLight, targets.specularLight,
               shaders.get(ProgramId::View), triangle, target.fbo},

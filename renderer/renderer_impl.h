@@ -5,6 +5,7 @@
 #include "gl/fullscreen_triangle.h"
 #include "gl/gpu_timer.h"
 #include "gl/query.h"
+#include "gl/shader_checks.h"
 #include "gl/shader_library.h"
 #include "gl/vertex_array.h"
 #include "gpu/gpu_scene.h"
@@ -55,7 +56,8 @@ public:
     void resizeTargets(int width, int height);
     // Switches the G-buffer layout: the programs get its defines, the targets are recreated.
     void applyLayout(GBufferLayout layout);
-    // Every program's defines: the layout's, and GBL_MASKED_BRANCHES where caps.masksBranches.
+    // Every program's defines: the layout's, GBL_MASKED_BRANCHES where caps.masksBranches, and
+    // GBL_SHADER_CHECKS in the shader-checks build.
     std::vector<std::string> shaderDefines(GBufferLayout layout) const;
     void drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target);
     std::optional<std::string> modeUnavailable(LightingMode mode);
@@ -73,7 +75,8 @@ public:
     gl::Buffer cubeVertices;
     LightVolumeGpu volumes;
     GpuTimer timer;
-    gl::Query fragmentQuery;  // GL_FRAGMENT_SHADER_INVOCATIONS_ARB when available
+    ShaderChecks shaderChecks;  // the shader-checks build's report (gl/shader_checks.h); empty when off
+    gl::Query fragmentQuery;    // GL_FRAGMENT_SHADER_INVOCATIONS_ARB when available
     std::uint64_t glErrorsAtStart = 0;
     glm::mat4 frameInverseViewProj{1.0f};  // of the last frame rendered: decodes its G-buffer
     // What the coverage target counts now (runCoverage), for the pixel inspector; none before a

@@ -34,4 +34,6 @@
 #define BIND_SSBO_TILE_BIN_LIGHTS 3
 // Each tile's view-depth range (tile_depth.comp writes, tile_bin.comp reads).
 #define BIND_SSBO_TILE_DEPTH 4
+// The shader-checks build's report of out-of-range accesses (shader_checks.glsl).
+#define BIND_SSBO_SHADER_CHECKS 5
 #endif

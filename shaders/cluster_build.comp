@@ -7,6 +7,7 @@
 // (when it fits) for cluster_shade.comp's clusters over their cap.
 #version 430 core
 #include "bindings.glsl"
+#include "shader_checks.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 #include "tile_frustum.glsl"
@@ -102,13 +103,13 @@ void main() {
         int kept = sortKeptLights();
         // The tile's sorted list replaces its bin (no invocation reads the bin any more): a cluster
         // over its own cap shades from it in cluster_shade.comp instead of from every light.
-        for (int k = local; k < kept; k += 256) tileBinLight[uint(tileIndex) * uint(uBinCap) + uint(k)] = sortedLight(k);
+        for (int k = local; k < kept; k += 256) tileBinLight[CHECKED(CHECK_SITE_TILE_BIN_LIGHT, uint(tileIndex) * uint(uBinCap) + uint(k), tileBinLight.length())] = sortedLight(k);
         if (local == 0) tileBinCount[tileIndex] = uint(kept);
         // --- each slice keeps the tile's lights that reach its box, in index order ---
         for (int k = 0; owner && k < kept; ++k) {
             int index = int(sortedLight(k));
             if (lightTouchesCluster(index, boxLo, boxHi)) {
-                if (count < uint(uMaxLights)) clusterLight[base + count] = uint(index);
+                if (count < uint(uMaxLights)) clusterLight[CHECKED(CHECK_SITE_CLUSTER_LIGHT, base + count, clusterLight.length())] = uint(index);
                 ++count;  // the true count, also past the cap (cluster_shade.comp then loops over all)
             }
         }
@@ -139,7 +140,7 @@ void main() {
                     int b = findLSB(bits);
                     bits &= bits - 1u;
                     if (sTileKept < uint(uBinCap))
-                        tileBinLight[uint(tileIndex) * uint(uBinCap) + sTileKept] = uint(start + int(sWords[k]) * 32 + b);
+                        tileBinLight[CHECKED(CHECK_SITE_TILE_BIN_LIGHT, uint(tileIndex) * uint(uBinCap) + sTileKept, tileBinLight.length())] = uint(start + int(sWords[k]) * 32 + b);
                     ++sTileKept;
                 }
             }
@@ -156,7 +157,7 @@ void main() {
                     bits &= bits - 1u;
                     int index = start + w * 32 + b;
                     if (lightTouchesCluster(index, boxLo, boxHi)) {
-                        if (count < uint(uMaxLights)) clusterLight[base + count] = uint(index);
+                        if (count < uint(uMaxLights)) clusterLight[CHECKED(CHECK_SITE_CLUSTER_LIGHT, base + count, clusterLight.length())] = uint(index);
                         ++count;  // the true count, also past the cap (cluster_shade.comp then loops over all)
                     }
                 }
@@ -165,7 +166,7 @@ void main() {
         // Every slice is done with this chunk's list before the next one overwrites it.
         barrier();
     }
-    if (owner) clusterCount[cluster] = count;
+    if (owner) clusterCount[CHECKED(CHECK_SITE_CLUSTER_COUNT, cluster, clusterCount.length())] = count;
     // The tile's true count: its list in the bin is complete when the count is within the cap.
     if (binned < 0 && local == 0) tileBinCount[tileIndex] = sTileKept;
 }

@@ -2,6 +2,7 @@
 // depth slice) and shades with that cluster's light list, in index order like the full-screen pass.
 #version 430 core
 #include "bindings.glsl"
+#include "shader_checks.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 #include "gbuffer_read.glsl"
@@ -60,7 +61,7 @@ void main() {
     float depth = -(uView * vec4(pos, 1.0)).z;
     int slice = clamp(int(floor(log(depth / uNear) / log(uFar / uNear) * float(uGrid.z))), 0, uGrid.z - 1);
     int cluster = (slice * uGrid.y + px.y / uTileSize) * uGrid.x + px.x / uTileSize;
-    uint count = clusterCount[cluster];
+    uint count = clusterCount[CHECKED(CHECK_SITE_CLUSTER_COUNT, cluster, clusterCount.length())];
     if (count <= uint(uMaxLights)) {
         uint base = uint(cluster) * uint(uMaxLights);
         for (uint k = 0u; k < count; ++k) addLight(int(texelFetch(uClusterList, int(base + k)).r), s, as, color, lit);
@@ -68,10 +69,10 @@ void main() {
         // Over the cap: the cluster's list is incomplete, so the tile's whole list (a superset, in
         // index order) is tried, or every light where the tile's bin overflowed too (exact, slower).
         int tile = (px.y / uTileSize) * uGrid.x + px.x / uTileSize;
-        uint tileCount = tileBinCount[tile];
+        uint tileCount = tileBinCount[CHECKED(CHECK_SITE_TILE_BIN_COUNT, tile, tileBinCount.length())];
         if (tileCount <= uint(uBinCap)) {
             uint base = uint(tile) * uint(uBinCap);
-            for (uint k = 0u; k < tileCount; ++k) addLight(int(tileBinLight[base + k]), s, as, color, lit);
+            for (uint k = 0u; k < tileCount; ++k) addLight(int(tileBinLight[CHECKED(CHECK_SITE_TILE_BIN_LIGHT, base + k, tileBinLight.length())]), s, as, color, lit);
             count = tileCount;  // what was evaluated
         } else {
             // LIGHTS_PER_ITERATION lights an iteration (light_fetch.glsl says why).

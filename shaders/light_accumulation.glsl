@@ -53,7 +53,7 @@ bool accumulateListedLight(inout LightSum sum, int i, bool listed, SurfacePoint 
 
 // Every directional light (light_fetch.glsl's list: no volume, no tile, every pixel) into the sums.
 void accumulateGlobalLights(inout LightSum sum, SurfacePoint s, float specularIntensity) {
-    for (int k = 0; k < uDirectionalCount; ++k) {
+    for (int k = 0; k < min(uDirectionalCount, MAX_DIRECTIONAL_LIGHTS); ++k) {
         vec3 diffuseLight, specularLight;
         shadeDirectionalSplit(fetchLight(uDirectionalLights[k]), s, diffuseLight, specularLight);
         sum.diffuse += diffuseLight;

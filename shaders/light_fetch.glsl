@@ -1,4 +1,5 @@
 // Reads one light from the light buffer texture (layout in renderer/gpu/light_buffer.h).
+#include "shader_checks.glsl"
 uniform samplerBuffer uLights;
 
 // Directional lights, shaded by every mode's full-screen loop (shadeGlobalLights below): their
@@ -28,6 +29,7 @@ vec3 lightDirectionDecode(vec2 e) {
 #define FOR_EVERY_LIGHT(count, STEP) { int i_ = 0; for (; i_ + LIGHTS_PER_ITERATION <= (count); i_ += LIGHTS_PER_ITERATION) { STEP(i_); STEP(i_ + 1); STEP(i_ + 2); STEP(i_ + 3); STEP(i_ + 4); STEP(i_ + 5); STEP(i_ + 6); STEP(i_ + 7); } for (; i_ < (count); ++i_) STEP(i_); }
 
 Light fetchLight(int i) {
+    i = CHECKED(CHECK_SITE_LIGHT_TEXEL, i, textureSize(uLights) / 4);
     vec4 a = texelFetch(uLights, i * 4 + 0);
     vec4 b = texelFetch(uLights, i * 4 + 1);
     vec4 c = texelFetch(uLights, i * 4 + 2);
@@ -51,7 +53,7 @@ vec3 fetchLightColor(int i) { return unpackLightWireColor(texelFetch(uLights, i 
 // of the split (local lights are culled by radius, volumes or tiles; these reach every pixel).
 vec3 shadeGlobalLights(vec3 p, vec3 n, vec3 albedo, float specular) {
     vec3 sum = vec3(0.0);
-    for (int k = 0; k < uDirectionalCount; ++k) sum += shadeDirectional(fetchLight(uDirectionalLights[k]), p, n, albedo, specular);
+    for (int k = 0; k < min(uDirectionalCount, MAX_DIRECTIONAL_LIGHTS); ++k) sum += shadeDirectional(fetchLight(uDirectionalLights[k]), p, n, albedo, specular);
     return sum;
 }
 

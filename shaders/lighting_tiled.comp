@@ -5,6 +5,7 @@
 // with more candidates than the bins hold tests every light instead.
 #version 430 core
 #include "bindings.glsl"
+#include "shader_checks.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 #include "gbuffer_read.glsl"
@@ -70,7 +71,7 @@ void main() {
     bool geometry = onScreen && gbufferPosition(px, pos);
 
     // The tile's depth bounds and frustum side planes, once for every chunk.
-    vec2 depthRange = tileDepth[tile];
+    vec2 depthRange = tileDepth[CHECKED(CHECK_SITE_TILE_DEPTH, tile, tileDepth.length())];
     float minDepth = depthRange.x, maxDepth = depthRange.y;
     bool anyGeometry = maxDepth != 0.0;  // the same in every invocation: uniform flow below
     ivec2 lo = ivec2(gl_WorkGroupID.xy) * 16, hi = min(lo + 16, uScreenSize);
@@ -104,7 +105,10 @@ void main() {
     if (geometry) accumulateGlobalLights(sum, s, as.a);  // directional: in no tile list
     float lit = 0.0;
     uint tileCount = 0u;
-    int binned = anyGeometry ? tileBinCandidates(tile) : 0;
+    // Every work group empties its list here, also a tile with nothing drawn (which then keeps
+    // nothing): sortKeptLights() below reads the list's count in every tile.
+    int binned = tileBinCandidates(tile);
+    if (!anyGeometry) binned = 0;
     if (binned >= 0) {
         // --- light list: the tile's candidates, each invocation testing every 256th ---
         for (int k = int(local); k < binned; k += 256) {
@@ -117,7 +121,7 @@ void main() {
         // Four list entries a read (tile_bin_read.glsl says why); the entries up to the next
         // multiple of four past `kept` are padding, not listed.
         for (int k = 0; geometry && k < kept; k += 4) {
-            uvec4 four = sSorted4[k >> 2];
+            uvec4 four = sSorted4[CHECKED(CHECK_SITE_SORTED, k >> 2, BIN_MAX / 4)];
             addLight(int(four.x), true, s, as, sum, lit);
             addLight(int(four.y), k + 1 < kept, s, as, sum, lit);
             addLight(int(four.z), k + 2 < kept, s, as, sum, lit);
@@ -128,21 +132,21 @@ void main() {
     for (int base = 0; binned < 0 && base < uLightCount; base += CHUNK_LIGHTS) {
         int chunk = min(uLightCount - base, CHUNK_LIGHTS);
         int words = (chunk + 31) / 32;
-        for (int w = int(local); w < words; w += 256) sLightMask[w] = 0u;
+        for (int w = int(local); w < words; w += 256) sLightMask[CHECKED(CHECK_SITE_LIGHT_MASK, w, MAX_LIGHT_WORDS)] = 0u;
         memoryBarrierShared();
         barrier();
 
         // --- light list: every invocation tests every 256th light of the chunk ---
         for (int i = int(local); i < chunk; i += 256)
             if (lightTouchesTile(base + i, minDepth, maxDepth, left, right, bottom, top, tileCentre, tileRadius))
-                atomicOr(sLightMask[i >> 5], 1u << uint(i & 31));
+                atomicOr(sLightMask[CHECKED(CHECK_SITE_LIGHT_MASK, i >> 5, MAX_LIGHT_WORDS)], 1u << uint(i & 31));
         memoryBarrierShared();
         barrier();
         // The non-empty words, in order, so pixels skip the empty ones (most, for small lights).
         if (local == 0u) {
             uint count = 0u;
             for (int w = 0; w < words; ++w)
-                if (sLightMask[w] != 0u) sWords[count++] = uint(w);
+                if (sLightMask[w] != 0u) sWords[CHECKED(CHECK_SITE_LIGHT_WORDS, count++, MAX_LIGHT_WORDS)] = uint(w);
             sWordCount = count;
         }
         memoryBarrierShared();
@@ -166,6 +170,7 @@ void main() {
         barrier();
     }
     if (!onScreen) return;
+    px = CHECKED_PIXEL(px, imageSize(uLightingImage));
     if (uShade) imageStore(uLightingImage, px, geometry ? accumulationTarget0(sum, surface, as.rgb) : vec4(0.0));
     if (uShade && uSplitAccumulation) imageStore(uSpecularImage, px, geometry ? vec4(sum.specular, 1.0) : vec4(0.0));
     if (uWriteCoverage) imageStore(uCoverageImage, px, vec4(float(tileCount), lit, 0.0, 0.0));

@@ -4,6 +4,7 @@
 // tile's candidates: the work grows with the tiles each light covers, not lights x tiles.
 #version 430 core
 #include "bindings.glsl"
+#include "shader_checks.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 
@@ -56,10 +57,11 @@ void main() {
             // A light wholly in front of or behind every drawn pixel of the tile reaches none of
             // them (a pixel farther than r in depth is farther than r away): not a candidate. The
             // list passes test the same range again; the hair of slack keeps this side looser.
-            vec2 range = tileDepth[tile];
+            vec2 range = tileDepth[CHECKED(CHECK_SITE_TILE_DEPTH, tile, tileDepth.length())];
             float slack = 1e-5 * range.y + 1e-6;
             if (depth + r < range.x - slack || depth - r > range.y + slack) continue;
-            uint slot = atomicAdd(tileBinCount[tile], 1u);
-            if (slot < uint(uBinCap)) tileBinLight[tile * uint(uBinCap) + slot] = uint(i);
+            uint slot = atomicAdd(tileBinCount[CHECKED(CHECK_SITE_TILE_BIN_COUNT, tile, tileBinCount.length())], 1u);
+            if (slot < uint(uBinCap))
+                tileBinLight[CHECKED(CHECK_SITE_TILE_BIN_LIGHT, tile * uint(uBinCap) + slot, tileBinLight.length())] = uint(i);
         }
 }

@@ -23,31 +23,41 @@ shared uint sKeptCount;
 
 // The tile's candidate count, or -1 when the binning pass found more than the cap (the bin is
 // incomplete: the caller tests every light instead). Every invocation of the work group calls it
-// (it holds a barrier) and gets the same answer; candidate k is then binnedLight(tile, k).
+// (it holds a barrier) and gets the same answer; candidate k is then binnedLight(tile, k). It also
+// empties the kept list, so it comes before any keepLight() or sortKeptLights() of the work group,
+// whatever the tile holds: shared memory starts undefined, and a list never emptied has a count
+// of whatever was there.
 int tileBinCandidates(int tile) {
     if (gl_LocalInvocationIndex == 0u) sKeptCount = 0u;
     memoryBarrierShared();
     barrier();
-    uint n = tileBinCount[tile];
+    uint n = tileBinCount[CHECKED(CHECK_SITE_TILE_BIN_COUNT, tile, tileBinCount.length())];
     return n > uint(uBinCap) ? -1 : int(n);
 }
 
-int binnedLight(int tile, int k) { return int(tileBinLight[uint(tile) * uint(uBinCap) + uint(k)]); }
+int binnedLight(int tile, int k) {
+    return int(tileBinLight[CHECKED(CHECK_SITE_TILE_BIN_LIGHT, uint(tile) * uint(uBinCap) + uint(k), tileBinLight.length())]);
+}
 
-void keepLight(int index) { sKept[atomicAdd(sKeptCount, 1u)] = uint(index); }
+// Keeps a candidate; a tile never keeps more than its bin's cap (at most BIN_MAX) candidates, and
+// an index past the list is dropped rather than written outside it.
+void keepLight(int index) {
+    uint slot = atomicAdd(sKeptCount, 1u);
+    if (slot < uint(BIN_MAX)) sKept[CHECKED(CHECK_SITE_KEPT, slot, BIN_MAX)] = uint(index);
+}
 
 // After every invocation has kept its lights: sorts them into sSorted and returns how many.
 // Rank sort: a light's place is the number of smaller indices (each light is binned once per tile).
-uint sortedLight(int k) { return sSorted4[k >> 2][k & 3]; }
+uint sortedLight(int k) { return sSorted4[CHECKED(CHECK_SITE_SORTED, k >> 2, BIN_MAX / 4)][k & 3]; }
 
 int sortKeptLights() {
     memoryBarrierShared();
     barrier();
-    uint n = sKeptCount;
+    uint n = min(sKeptCount, uint(BIN_MAX));
     for (uint k = gl_LocalInvocationIndex; k < n; k += 256u) {
         uint index = sKept[k], rank = 0u;
         for (uint j = 0u; j < n; ++j) rank += sKept[j] < index ? 1u : 0u;
-        sSorted4[rank >> 2u][rank & 3u] = index;
+        sSorted4[CHECKED(CHECK_SITE_SORTED, rank >> 2u, BIN_MAX / 4)][rank & 3u] = index;
     }
     // Padding up to the next multiple of four, for readers that take four entries at a time: light
     // 0, which exists whenever the list is not empty (they fetch it and add nothing).

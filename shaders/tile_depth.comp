@@ -5,6 +5,7 @@
 // light (the slow exact path of lighting_tiled.comp and cluster_shade.comp).
 #version 430 core
 #include "bindings.glsl"
+#include "shader_checks.glsl"
 #include "depth.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
@@ -39,6 +40,6 @@ void main() {
     memoryBarrierShared();
     barrier();
     if (gl_LocalInvocationIndex == 0u)
-        tileDepth[gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x] =
+        tileDepth[CHECKED(CHECK_SITE_TILE_DEPTH, gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x, tileDepth.length())] =
             vec2(uintBitsToFloat(sMinDepthBits), uintBitsToFloat(sMaxDepthBits));
 }

@@ -167,6 +167,7 @@ TEST(ShaderConstants, GeneratedBindingsHeaderMatchesBindingsGlsl) {
                                          {"BIND_SSBO_TILE_BIN_COUNTS", slot::BIND_SSBO_TILE_BIN_COUNTS},
                                          {"BIND_SSBO_TILE_BIN_LIGHTS", slot::BIND_SSBO_TILE_BIN_LIGHTS},
                                          {"BIND_SSBO_TILE_DEPTH", slot::BIND_SSBO_TILE_DEPTH},
+                                         {"BIND_SSBO_SHADER_CHECKS", slot::BIND_SSBO_SHADER_CHECKS},
                                          {"BIND_CLUSTER_LIST", slot::BIND_CLUSTER_LIST}};
     EXPECT_EQ(all, cpp);
     // Each sampler uniform has exactly one unit, and the G-buffer samplers, the lights, every

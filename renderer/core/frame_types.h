@@ -64,6 +64,9 @@ struct FrameStats {
     // The accumulation that ran: split is refused in forward mode (fallbackReason says why).
     LightAccumulation accumulationUsed = LightAccumulation::Single;
     std::string fallbackReason;
+    // The shader-checks build's report of this frame's out-of-range accesses (gl/shader_checks.h);
+    // empty when there were none or the checks are off.
+    std::string shaderCheckReport;
 };
 
 // Everything stored at one pixel, read back as floats (for the pixel inspector and tests).

@@ -61,24 +61,30 @@ std::optional<std::string> ShaderLibrary::source(std::string const& file, std::s
     return out;
 }
 
-std::optional<gl::Program> ShaderLibrary::build(ProgramDesc const& desc, std::string* log) const {
+std::optional<std::string> ShaderLibrary::stageSource(ProgramId id, std::string const& file, std::string* error) const {
+    auto text = source(file, error);
+    if (!text) return std::nullopt;
+    // Defines go right after the #version line, which must stay the first directive (the one-line
+    // file header comment may come before it). GBL_PROGRAM_ID names the program in the
+    // shader-checks report (shaders/shader_checks.glsl).
+    auto const version = text->find("#version");
+    auto const eol = text->find('\n', version == std::string::npos ? 0 : version);
+    std::string defs = "#define GBL_PROGRAM_ID " + std::to_string(int(id)) + "\n";
+    for (auto const& d : programInfo(id).desc.defines) defs += "#define " + d + "\n";
+    for (auto const& d : globalDefines_) defs += "#define " + d + "\n";
+    text->insert(eol == std::string::npos ? text->size() : eol + 1, defs);
+    return text;
+}
+
+std::optional<gl::Program> ShaderLibrary::build(ProgramId id, std::string* log) const {
+    ProgramDesc const& desc = programInfo(id).desc;
     std::vector<gl::ShaderStageSource> stages;
     for (auto const& [stage, file] : desc.stages) {
         std::string err;
-        auto text = source(file, &err);
+        auto text = stageSource(id, file, &err);
         if (!text) {
             if (log) *log = "program " + desc.name + ": " + err;
             return std::nullopt;
-        }
-        if (!desc.defines.empty() || !globalDefines_.empty()) {
-            // Defines go right after the #version line, which must stay the first directive
-            // (the one-line file header comment may come before it).
-            auto const version = text->find("#version");
-            auto const eol = text->find('\n', version == std::string::npos ? 0 : version);
-            std::string defs;
-            for (auto const& d : desc.defines) defs += "#define " + d + "\n";
-            for (auto const& d : globalDefines_) defs += "#define " + d + "\n";
-            text->insert(eol == std::string::npos ? text->size() : eol + 1, defs);
         }
         stages.push_back({stage, file, std::move(*text)});
     }
@@ -97,7 +103,7 @@ void bindSamplerSlots(gl::Program const& program) {
 
 bool ShaderLibrary::add(ProgramId id, std::string* log) {
     std::string buildLog;
-    auto program = build(programInfo(id).desc, &buildLog);
+    auto program = build(id, &buildLog);
     if (log) *log = buildLog;
     if (!program) {
         failures_[std::size_t(id)] = buildLog.empty() ? "unknown error" : buildLog;
@@ -163,7 +169,7 @@ std::vector<std::string> ShaderLibrary::reloadChanged() {
         for (auto const& f : changed) affected |= f.ends_with(".glsl");
         if (!affected) continue;
         std::string log;
-        if (auto program = build(info.desc, &log)) {
+        if (auto program = build(info.id, &log)) {
             bindSamplerSlots(*program);
             current = std::move(*program);
             messages.push_back("reloaded shader program " + name);

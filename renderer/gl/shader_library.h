@@ -47,9 +47,14 @@ public:
     // Text of a shader file with #include lines expanded: from disk when reloading has seen a
     // change to it, otherwise the embedded copy. nullopt when unknown.
     std::optional<std::string> source(std::string const& file, std::string* error = nullptr) const;
+    // The text stage `file` of program `id` is compiled from: source(file) with the program's own
+    // defines, the global ones and GBL_PROGRAM_ID inserted after #version. No GL call: the
+    // reference-compiler test (tests/shader_compile_test.cpp) reads it too.
+    std::optional<std::string> stageSource(ProgramId id, std::string const& file, std::string* error = nullptr) const;
+    std::vector<std::string> const& globalDefines() const { return globalDefines_; }
 
 private:
-    std::optional<gl::Program> build(ProgramDesc const& desc, std::string* log) const;
+    std::optional<gl::Program> build(ProgramId id, std::string* log) const;
     std::optional<std::string> rawSource(std::string const& file) const;
 
     std::filesystem::path sourceDir_;

@@ -2,6 +2,7 @@
 #include "gl_fixture.h"
 
 #include "gl/debug.h"
+#include "gl/shader_checks.h"
 #include "scene/default_scene.h"
 
 namespace gbl::test {
@@ -28,7 +29,11 @@ void GlTest::SetUp() {
 }
 
 void GlTest::TearDown() {
-    if (gContext) expectNoGlErrors();
+    if (!gContext) return;
+    expectNoGlErrors();
+    std::uint64_t const checks = shaderCheckFailureCount() - checksAtSetUp_;
+    EXPECT_EQ(checks, 0u) << "the shader checks found out-of-range accesses during this test: "
+                          << lastShaderCheckReport();
 }
 
 std::uint64_t GlTest::glErrorsSinceSetUp() const {
@@ -47,6 +52,7 @@ void GlTest::expectNoGlErrors() const {
 
 void GlTest::acceptGlErrors() {
     errorsAtSetUp_ = glErrorCount();
+    checksAtSetUp_ = shaderCheckFailureCount();
 }
 
 GlCaps const& GlTest::caps() {

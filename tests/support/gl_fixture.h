@@ -20,7 +20,8 @@ protected:
     static void SetUpTestSuite();
     // Records the process's GL error count (gl/debug.h), which only ever grows.
     void SetUp() override;
-    // Fails the test when the GL reported any error while it ran (expectNoGlErrors()).
+    // Fails the test when the GL reported any error while it ran (expectNoGlErrors()), or the
+    // shader checks an out-of-range access (GBL_SHADER_CHECKS=1, set for every GL test).
     void TearDown() override;
 
     // GL errors reported since SetUp (or the last acceptGlErrors()), whoever raised them.
@@ -35,6 +36,7 @@ protected:
 
 private:
     std::uint64_t errorsAtSetUp_ = 0;
+    std::uint64_t checksAtSetUp_ = 0;  // shaderCheckFailureCount() at SetUp (gl/shader_checks.h)
 };
 
 // The generated default scene seen from above its courtyard, higher than any light's volume

@@ -1,0 +1,86 @@
+// Every program's stages under every define set it can be built with, through the Khronos
+// reference compiler (glslangValidator, Debian's glslang-tools): the strictest check of the
+// shaders without a GPU, since llvmpipe's compiler accepts some things others refuse. The define
+// sets: each G-buffer layout's, with and without GBL_MASKED_BRANCHES (software rasterisers) and
+// GBL_SHADER_CHECKS (the test build's range checks); the coverage variants are programs of their own.
+#include "core/gbuffer_layout.h"
+#include "gl/shader_library.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace gbl {
+namespace {
+
+namespace fs = std::filesystem;
+
+char const* stageExtension(GLenum stage) {
+    switch (stage) {
+        case GL_VERTEX_SHADER:
+            return "vert";
+        case GL_FRAGMENT_SHADER:
+            return "frag";
+        case GL_COMPUTE_SHADER:
+            return "comp";
+        default:
+            return "glsl";
+    }
+}
+
+// Runs the validator on one file; returns its output when it fails, "" when it passes.
+std::string validate(fs::path const& file) {
+    fs::path const log = file.string() + ".log";
+    std::string const command = "glslangValidator \"" + file.string() + "\" > \"" + log.string() + "\" 2>&1";
+    int const status = std::system(command.c_str());
+    if (status == 0) return "";
+    std::ifstream in(log);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return text.empty() ? "exit status " + std::to_string(status) : text;
+}
+
+TEST(ShaderCompile, EveryProgramUnderEveryDefineSetPassesTheReferenceCompiler) {
+    if (std::system("glslangValidator --version > /dev/null 2>&1") != 0)
+        GTEST_FAIL() << "glslangValidator not found: install Debian's glslang-tools (scripts/install-deps.sh does)";
+    fs::path const dir = fs::temp_directory_path() / ("gbl_glslang_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    ShaderLibrary shaders{fs::path()};
+    int variants = 0;
+    std::vector<std::string> failures;
+    for (GBufferLayout layout :
+         {GBufferLayout::Classic, GBufferLayout::Packed, GBufferLayout::Naive8, GBufferLayout::Rgb10a2})
+        for (bool masked : {false, true})
+            for (bool checks : {false, true}) {
+                std::vector<std::string> defines = layoutShaderDefines(layoutDesc(layout));
+                if (masked) defines.push_back("GBL_MASKED_BRANCHES");
+                if (checks) defines.push_back("GBL_SHADER_CHECKS");
+                ASSERT_TRUE(shaders.setGlobalDefines(defines, nullptr));
+                std::string defineNames;
+                for (auto const& d : defines) defineNames += " " + d;
+                for (ProgramInfo const& p : programTable())
+                    for (auto const& [stage, file] : p.desc.stages) {
+                        std::string error;
+                        auto const text = shaders.stageSource(p.id, file, &error);
+                        ASSERT_TRUE(text.has_value()) << file << ": " << error;
+                        fs::path const out =
+                            dir / (p.desc.name + "_" + std::to_string(variants) + "." + stageExtension(stage));
+                        std::ofstream(out) << *text;
+                        ++variants;
+                        if (std::string const log = validate(out); !log.empty())
+                            failures.push_back(p.desc.name + " (" + file + ", defines" + defineNames + "):\n" + log);
+                    }
+            }
+    EXPECT_TRUE(failures.empty()) << failures.size() << " of " << variants << " stage variants failed; the first:\n"
+                                  << failures.front();
+    EXPECT_GT(variants, 100);
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace gbl
