@@ -37,6 +37,9 @@ int main(int argc, char** argv) {
                    "Sleep this long every frame, still taking input (tests of slow machines)")
         ->check(CLI::Range(0, 10000));
     app.add_option("--lesson", editor.lesson, "Open a lesson at start: ID or ID:STEP (see `gbuffer-lab lessons`)");
+    app.add_option("--frame-warn-seconds", editor.frameWarnSeconds,
+                   "Switch to a faster mode, with a message, before a frame estimated to take longer than this")
+        ->check(CLI::NonNegativeNumber);
     app.add_flag("--continuous", editor.continuousRender,
                  "Run the renderer every frame even when nothing changed (for timing)");
 

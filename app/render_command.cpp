@@ -4,6 +4,7 @@
 #include "cli_values.h"
 #include "frame_export.h"
 #include "lesson_command.h"
+#include "long_frame.h"
 #include "session_cli.h"
 
 #include <cstdio>
@@ -65,12 +66,30 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
     sub.add_option("--accumulate", o.accumulate,
                    "Shade with the first K lights only (0 = ambient alone) and outline light K's volume");
     sub.add_flag("--contribution", o.contribution, "With --accumulate K: light K alone, without ambient");
+    sub.add_option("--warn-seconds", o.warnSeconds,
+                   "Say so before a frame estimated to take longer than this, with a faster mode")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
     sub.parse_complete_callback([&sub, &o] {
         for (char const* name :
              {"--scene", "--lights", "--time", "--blit", "--mode", "--layout", "--accumulation", "--cull", "--size"})
             if (sub.count(name) > 0) o.given.insert(name);
     });
 }
+
+namespace {
+
+// Says so before a frame estimated above `warnSeconds` (core/frame_cost.h), with the faster mode;
+// the frame is rendered as asked all the same.
+void warnOfLongFrame(Renderer& renderer, FrameInput const& input, double warnSeconds) {
+    auto const w = longFrameWarning(renderer, input, warnSeconds);
+    if (!w) return;
+    std::string const hint =
+        w->cheaper ? " (--mode " + std::string(kLightingModeNames[std::size_t(w->cheaper->mode)]) + ")" : "";
+    std::fprintf(stderr, "gbuffer-lab render: %s%s; rendering it as asked\n", w->message.c_str(), hint.c_str());
+}
+
+}  // namespace
 
 int runRender(RenderOptions const& o) {
     if (o.lesson) return runRenderLesson(o);
@@ -171,6 +190,7 @@ int runRender(RenderOptions const& o) {
     FrameInput input{prepared->camera, prepared->lights, settings, true};
     input.accumulateLights = o.accumulate;
     input.lightContribution = o.contribution;
+    warnOfLongFrame(renderer, input, o.warnSeconds);
     FrameStats const stats = renderer.render(input);
 
     FrameExport frame{prepared->camera, prepared->lights, settings, stats, prepared->scene.triangleCount(), views};

@@ -35,6 +35,9 @@ struct RenderOptions {
     std::set<std::string> given;                 // options given explicitly (they override a session)
     std::optional<std::string> lesson;           // render a lesson step instead (app/lesson_command.cpp)
     std::optional<std::string> lessonsDir;
+    // A frame estimated above this many seconds (core/frame_cost.h) is announced before it starts,
+    // with the mode that gives the same image sooner.
+    double warnSeconds = 5.0;
 };
 
 void addRenderOptions(CLI::App& sub, RenderOptions& options);

@@ -2,7 +2,10 @@
 # Configures and builds gbuffer-lab (the Quick start commands share this), against a docking-branch
 # Dear ImGui when one can be had, else against Debian's ImGui 1.86 (tiled windows, no docking).
 #
-#   scripts/build.sh [--imgui-dir PATH | --debian-imgui] [--print-build-dir] [extra cmake arguments]
+#   scripts/build.sh [--imgui-dir PATH | --debian-imgui] [--print-build-dir] [--target NAME] [extra cmake arguments]
+#
+# --target NAME builds that target only (scripts/run-editor.sh builds gbuffer-lab, not the tests);
+# every caller configures the folder the same way, so the editor's build and the tests' share it.
 #
 # Which ImGui, first that applies:
 #   --debian-imgui             Debian's 1.86 into build/ (what scripts/test.sh and CI use: no network)
@@ -26,6 +29,7 @@ imgui_dir="${GBL_IMGUI_DIR:-}"
 imgui_from="GBL_IMGUI_DIR"
 debian=0
 print_only=0
+targets=()
 cmake_args=()
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -34,6 +38,8 @@ while [ $# -gt 0 ]; do
     --imgui-dir=*) imgui_dir="${1#*=}"; imgui_from="--imgui-dir"; shift ;;
     --debian-imgui) debian=1; shift ;;
     --print-build-dir) print_only=1; shift ;;
+    --target) [ $# -ge 2 ] || { echo "build.sh: --target needs a name" >&2; exit 2; }
+              targets+=(--target "$2"); shift 2 ;;
     *) cmake_args+=("$1"); shift ;;
   esac
 done
@@ -110,4 +116,4 @@ if [ "$print_only" = 1 ]; then echo "$build"; exit 0; fi
 
 echo "gbuffer-lab: $why -> $build/"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${imgui_arg[@]}" "${cmake_args[@]}" >/dev/null
-cmake --build "$build" -j"$(nproc)"
+cmake --build "$build" -j"$(nproc)" "${targets[@]}"

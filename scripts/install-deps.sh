@@ -3,12 +3,13 @@
 set -euo pipefail
 
 packages=(
-  cmake g++ make pkg-config
+  cmake g++ make pkg-config mold
   libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev libopenimageio-dev libepoxy-dev libdraco-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libcli11-dev nlohmann-json3-dev
   xvfb xauth xdotool x11-apps
   clang libclang-rt-14-dev clang-format
+  glslang-tools fonts-dejavu-core
 )
 
 missing=()

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Quick start 1: installs what is missing, builds (with a docking ImGui when one can be had, see
+# Quick start 1: installs what is missing, builds the editor alone (not the tests; with a docking ImGui when one can be had, see
 # scripts/build.sh), and opens the editor on the default scene.
 #
 #   scripts/run-editor.sh [--imgui-dir PATH | --debian-imgui] [editor arguments...]
@@ -17,7 +17,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 scripts/install-deps.sh
-scripts/build.sh "${build_args[@]}"
+scripts/build.sh "${build_args[@]}" --target gbuffer-lab
 build="$(scripts/build.sh --print-build-dir "${build_args[@]}")"
 if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
   echo "No display is available for the editor window; render headlessly instead: $build/gbuffer-lab render --out out/"

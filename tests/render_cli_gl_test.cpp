@@ -95,6 +95,22 @@ TEST(RenderCommand, TimeMovesTheLights) {
     EXPECT_NE(la[0]["position"], lb[0]["position"]);
 }
 
+// A frame estimated above --warn-seconds is announced with the mode that gives the same image
+// sooner, then rendered as asked; under the threshold nothing is said.
+TEST(RenderCommand, AFrameOverTheCostThresholdIsAnnouncedWithAFasterMode) {
+    std::string const out = test::freshTempDir("render_slow");
+    auto const slow = runGbufferLab({"render", "--out", out, "--size", "96x64", "--warn-seconds", "1e-6"});
+    ASSERT_EQ(slow.exitCode, 0) << slow.output;
+    EXPECT_NE(slow.output.find("this frame is estimated at"), std::string::npos) << slow.output;
+    EXPECT_NE(slow.output.find("in quad mode (32 lights, 96x64"), std::string::npos) << slow.output;
+    EXPECT_NE(slow.output.find("mode gives the same image in about"), std::string::npos) << slow.output;
+    EXPECT_NE(slow.output.find("rendering it as asked"), std::string::npos) << slow.output;
+    EXPECT_TRUE(fs::exists(fs::path(out) / "lighting.exr"));
+    auto const quick = runGbufferLab({"render", "--out", out, "--size", "96x64"});
+    ASSERT_EQ(quick.exitCode, 0) << quick.output;
+    EXPECT_EQ(quick.output.find("estimated at"), std::string::npos) << quick.output;
+}
+
 TEST(RenderCommand, BadArgumentsExitWithCodeTwoAndOneSentence) {
     std::string const out = test::freshTempDir("render_bad");
     struct Case {

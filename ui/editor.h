@@ -22,6 +22,9 @@ struct EditorOptions {
     int frameSleepMs = 0;                      // a sleep per frame that still takes input: slow-machine tests
     bool continuousRender = false;             // render every frame, changed or not (timing)
     std::optional<std::string> lesson;         // "ID" or "ID:STEP": open this lesson step at start
+    // A frame estimated above this many seconds (core/frame_cost.h) switches to the mode that gives
+    // the same image sooner, with a message, instead of freezing the editor.
+    double frameWarnSeconds = 2.0;
 };
 
 // Opens the window and runs until it is closed, the frame count is reached or the test script

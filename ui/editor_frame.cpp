@@ -5,6 +5,7 @@
 #include "ab_frame.h"
 
 #include "core/light_math.h"
+#include "long_frame.h"
 #include "model/image_range.h"
 #include "model/light_pick.h"
 #include "model/pixel_breakdown.h"
@@ -202,6 +203,31 @@ bool beginFrame(Editor& editor, FrameTimes& times) {
     return true;
 }
 
+// Before a frame estimated to take longer than --frame-warn-seconds (core/frame_cost.h), switches
+// to the mode that gives the same image soonest and says so in the log; with no faster mode, says
+// what the frame will cost. Checked once per mode, light count and size, so a user who switches
+// back has been told and gets the mode they chose.
+void avoidLongFrame(Editor& editor, glm::ivec2 size) {
+    EditorState& state = editor.state;
+    auto const key = std::make_tuple(state.pipeline.mode, editor.drawn.size(), size);
+    if (editor.longFrameChecked == key) return;
+    editor.longFrameChecked = key;
+    if (size.x <= 0 || size.y <= 0) return;
+    FrameInput const input{state.camera, editor.drawn, state.pipeline};
+    auto const warning = longFrameWarning(*editor.renderer, input, editor.options.frameWarnSeconds);
+    if (!warning) return;
+    if (!warning->cheaper) {
+        ui::logMessage(state.log, "Slow frame ahead: " + warning->message + ".", true);
+        return;
+    }
+    state.pipeline.mode = warning->cheaper->mode;
+    editor.longFrameChecked = std::make_tuple(state.pipeline.mode, editor.drawn.size(), size);
+    ui::logMessage(state.log,
+                   "Switched to " + std::string(kLightingModeNames[std::size_t(state.pipeline.mode)]) +
+                       " mode: " + warning->message + ". Pipeline > Lighting mode switches back.",
+                   true);
+}
+
 void renderScene(Editor& editor, FrameTimes& times) {
     EditorState& state = editor.state;
     Renderer& renderer = *editor.renderer;
@@ -217,6 +243,7 @@ void renderScene(Editor& editor, FrameTimes& times) {
         renderer.resizeTargets(state.viewport.size.x, state.viewport.size.y);
     if (state.animation.enabled) state.animation.time += times.dt * state.animation.speed;
     editor.drawn = animatedLights(state);
+    avoidLongFrame(editor, glm::ivec2(renderer.width(), renderer.height()));
     finishIfMeasuring(times);
     auto t0 = EditorClock::now();
     // Render on change: the frame is rendered again only when something it depends on changed;

@@ -32,6 +32,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace gbl {
@@ -128,6 +129,8 @@ struct Editor {
     ui::FrameLog frameLog;                 // --log-frames
     ui::PipelinePanelRects pipelineRects;  // where the Pipeline window drew its layout combo (--log-frames)
     std::vector<PointLight> drawn;         // this frame's lights (animated)
+    // The mode, light count and size last checked for a long frame (avoidLongFrame in editor_frame.cpp).
+    std::optional<std::tuple<LightingMode, std::size_t, glm::ivec2>> longFrameChecked;
     // --- lessons (ui/editor_lessons.cpp) ---
     ui::LessonState lessons;
     ui::LessonLibrary lessonLibrary;  // read from assets/lessons on the first frame
