@@ -12,6 +12,7 @@
 #include "passes/light_cubes.h"
 #include "passes/light_volumes.h"
 #include "passes/view.h"
+#include "passes/volume_depth.h"
 #include "passes/wireframes.h"
 
 #include <algorithm>
@@ -286,6 +287,11 @@ FrameStats RendererImpl::render(FrameInput const& input) {
             buildLightLists(f);
             timer.end();
         }
+        if (s.mode == LightingMode::Volumes && targets.volumeDepth) {
+            timer.begin("volume_depth");
+            volumeDepthPass({targets.gbuffer, targets.volumeFbo}, {targets.width, targets.height});
+            timer.end();
+        }
         timer.begin("lighting");
         if (fragmentQuery) fragmentQuery.begin();
         runLighting(f);
@@ -307,7 +313,7 @@ FrameStats RendererImpl::render(FrameInput const& input) {
         timer.begin("wireframes");
         // Forward mode leaves the G-buffer empty, so its own depth (in litFbo) is the scene's.
         LitTarget const target =
-            s.mode == LightingMode::Forward ? litTarget() : LitTarget{targets.volumeFbo, targets.lighting};
+            s.mode == LightingMode::Forward ? litTarget() : LitTarget{targets.wireframeFbo, targets.lighting};
         WireframesConfig wire{f.viewProj};
         if (outline >= 0) {
             auto const slot = volumeInstanceSlot(f.lights, outline, f.camera, f.aspect, volumes.enclosingScale,
@@ -360,6 +366,9 @@ void RendererImpl::drawView(ViewParams const& params, FrameInput const& frame, V
     if (viewNeedsCoverage(params.view)) {
         f.settings.view = params.view;
         lights.upload(f.lights);
+        // The volume counts test against the copy, which only a volumes frame refreshed.
+        if (f.settings.mode == LightingMode::Volumes && targets.volumeDepth)
+            volumeDepthPass({targets.gbuffer, targets.volumeFbo}, {targets.width, targets.height});
         runCoverage(f);
     }
     viewPass({targets.gbuffer, targets.lighting, targets.coverage, targets.diffuseLight, targets.specularLight,

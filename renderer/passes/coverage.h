@@ -20,7 +20,7 @@ struct CoverageInput {
     gl::Program const* tiled;           // ProgramId::LightingTiled
     TileBinPrograms const* tiledBin;    // ProgramId::TileDepth and TileBin (with `tiled`)
     TileBins* bins;                     // (with `tiled`)
-    gl::Framebuffer const& target;      // coverageFbo: the counts and the G-buffer's depth-stencil
+    gl::Framebuffer const& target;      // coverageFbo: the counts and volumeDepthStencil()
     gl::Texture const& coverage;        // its colour attachment (the tiled pass writes it as an image)
     gl::Texture const& hdr;             // bound (not written) for the tiled program's lit image
 };
