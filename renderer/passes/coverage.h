@@ -3,6 +3,7 @@
 // actually reached the surface there.
 #pragma once
 
+#include "core/frame_passes.h"
 #include "gl/fullscreen_triangle.h"
 #include "passes/light_volumes.h"
 #include "passes/lighting_tiled.h"
@@ -38,9 +39,5 @@ struct CoverageOutput {
 // The lights-per-tile view always shows the tiled mode's lists (when compute exists). Forward
 // mode has no G-buffer to count over: the counts stay zero.
 CoverageOutput coveragePass(CoverageInput const& in, CoverageConfig const& config);
-
-inline bool viewNeedsCoverage(DebugView v) {
-    return v == DebugView::Heatmap || v == DebugView::TileLights;
-}
 
 }  // namespace gbl
