@@ -2,6 +2,7 @@
 #include "bench_command.h"
 
 #include "cli_values.h"
+#include "core/frame_passes.h"
 #include "core/light_math.h"
 #include "core/pipeline_settings.h"
 #include "core/point_light.h"
@@ -200,12 +201,12 @@ std::optional<double> asDouble(std::optional<std::uint64_t> v) {
     return v ? std::optional<double>(double(*v)) : std::nullopt;
 }
 
-// The lighting work of a frame: the deferred lighting pass (tiled and clustered build their light
-// lists inside it or in light_lists, counted here too) or forward's single shading pass.
+// The lighting work of a frame: the passes core/frame_passes.h counts as lighting (the lighting
+// pass, the light lists, the volumes' depth copy, the split combine, or forward's shading pass).
 double lightingMs(Result const& r) {
     double ms = 0.0;
     for (auto const& [name, s] : r.passMs)
-        if (name == "lighting" || name == "light_lists" || name == "forward_shading") ms += s.median;
+        if (std::optional<PassId> const id = passFromName(name); id && countsAsLighting(*id)) ms += s.median;
     return ms;
 }
 

@@ -2,6 +2,7 @@
 #include "renderer_impl.h"
 #include "renderer_test_access.h"
 
+#include "core/frame_passes.h"
 #include "core/light_math.h"
 #include "gl/debug.h"
 #include "gl/embedded_shaders.h"
@@ -12,9 +13,12 @@
 #include "passes/light_cubes.h"
 #include "passes/light_volumes.h"
 #include "passes/view.h"
+#include "passes/volume_depth.h"
 #include "passes/wireframes.h"
 
 #include <algorithm>
+#include <cassert>
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -60,6 +64,25 @@ std::string programFailure(std::string const& mode, ShaderLibrary const& shaders
     return mode + " mode is unavailable: its shader program " + programInfo(id).desc.name +
            " failed to build on this context (" + firstErrorLine(shaders.failureLog(id)) + ")";
 }
+
+#ifndef NDEBUG
+// Debug builds: a declared pass that samples what it draws into is a bug in the wiring.
+void checkNoFeedbackLoops(std::span<PassDecl const> passes) {
+    for (FeedbackLoop const& l : feedbackLoops(passes))
+        std::fprintf(stderr,
+                     "Renderer::render(): pass %s samples %s, which its framebuffer attaches: a feedback loop\n",
+                     std::string(passName(l.pass)).c_str(), std::string(resourceName(l.resource)).c_str());
+    assert(feedbackLoops(passes).empty() && "Renderer::render(): a feedback loop; give the pass its own attachment");
+}
+
+// Debug builds: the passes that ran are the declared ones, in order (framePasses follows render()).
+void checkFrameRan(std::span<PassDecl const> declared, std::span<PassId const> ran) {
+    bool const same = std::equal(declared.begin(), declared.end(), ran.begin(), ran.end(),
+                                 [](PassDecl const& d, PassId id) { return d.id == id; });
+    if (!same) std::fprintf(stderr, "Renderer::render(): the passes that ran differ from framePasses()\n");
+    assert(same && "Renderer::render(): update framePasses() (core/frame_passes.cpp) with the frame's sequence");
+}
+#endif
 
 }  // namespace
 
@@ -268,6 +291,14 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     bool const volumeInstances = s.mode == LightingMode::Volumes || wireframes;
     if (volumeInstances) prepareVolumeInstances(volumes, {f.camera, f.aspect, f.lights});
 
+    // The frame as declared (core/frame_passes.h): checked for feedback loops, and against the
+    // passes that ran, in debug builds.
+    passesRun.clear();
+#ifndef NDEBUG
+    std::vector<PassDecl> const declared = framePasses(s, wireframes);
+    checkNoFeedbackLoops(declared);
+#endif
+
     glViewport(0, 0, targets.width, targets.height);
     if (s.mode == LightingMode::Forward) {
         // No G-buffer in forward mode: clear it so the viewers show that it is unused.
@@ -275,44 +306,54 @@ FrameStats RendererImpl::render(FrameInput const& input) {
         glClearColor(0, 0, 0, 0);
         glClearDepth(1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-        timer.begin("forward_shading");
+        PassScope const pass = timed(PassId::ForwardShading);
         if (fragmentQuery) fragmentQuery.begin();
         forwardPass({scene, lights, shaders.get(ProgramId::Forward), litTarget()},
                     {MaterialFilter::Opaque, f.viewProj, shading, s.normalMaps});
         if (fragmentQuery) fragmentQuery.end();
-        timer.end();
     } else {
-        timer.begin("geometry");
-        geometryPass({scene, shaders.get(ProgramId::Geometry), targets.gbuffer}, {f.viewProj, s.normalMaps});
-        timer.end();
+        {
+            PassScope const pass = timed(PassId::Geometry);
+            geometryPass({scene, shaders.get(ProgramId::Geometry), targets.gbuffer}, {f.viewProj, s.normalMaps});
+        }
         if (frameTestHook) frameTestHook();
         if (s.mode == LightingMode::Clustered || s.mode == LightingMode::Tiled) {
-            timer.begin("light_lists");
+            PassScope const pass = timed(PassId::LightLists);
             buildLightLists(f);
-            timer.end();
         }
-        timer.begin("lighting");
-        if (fragmentQuery) fragmentQuery.begin();
-        runLighting(f);
-        if (fragmentQuery) fragmentQuery.end();
-        timer.end();
-        timer.begin("depth_copy");
+        if (s.mode == LightingMode::Volumes && targets.volumeDepth) {
+            PassScope const pass = timed(PassId::VolumeDepth);
+            volumeDepthPass({targets.gbuffer, targets.volumeFbo}, {targets.width, targets.height});
+        }
+        {
+            PassScope const pass = timed(PassId::Lighting);
+            if (fragmentQuery) fragmentQuery.begin();
+            runLighting(f);
+            if (fragmentQuery) fragmentQuery.end();
+        }
+        if (splitAccumulation(f)) {
+            PassScope const pass = timed(PassId::LightCombine);
+            combineLights(f);
+        }
+        PassScope const pass = timed(PassId::DepthCopy);
         depthCopyPass({targets.gbuffer, shaders.get(ProgramId::DepthCopy), triangle, targets.litFbo},
                       {s.depthCopy, targets.width, targets.height});
-        timer.end();
     }
-    timer.begin("forward");
-    forwardPass({scene, lights, shaders.get(ProgramId::Forward), litTarget()},
-                {MaterialFilter::Blended, f.viewProj, shading, s.normalMaps});
-    if (s.lightCubes)
+    {
+        PassScope const pass = timed(PassId::Forward);
+        forwardPass({scene, lights, shaders.get(ProgramId::Forward), litTarget()},
+                    {MaterialFilter::Blended, f.viewProj, shading, s.normalMaps});
+    }
+    if (s.lightCubes) {
+        PassScope const pass = timed(PassId::LightCubes);
         lightCubesPass({lights, shaders.get(ProgramId::LightCube), cubeVao, litTarget()},
                        {f.viewProj, lightCubeHalfSize()});
-    timer.end();
+    }
     if (wireframes) {
-        timer.begin("wireframes");
+        PassScope const pass = timed(PassId::Wireframes);
         // Forward mode leaves the G-buffer empty, so its own depth (in litFbo) is the scene's.
         LitTarget const target =
-            s.mode == LightingMode::Forward ? litTarget() : LitTarget{targets.volumeFbo, targets.lighting};
+            s.mode == LightingMode::Forward ? litTarget() : LitTarget{targets.wireframeFbo, targets.lighting};
         WireframesConfig wire{f.viewProj};
         if (outline >= 0) {
             auto const slot = volumeInstanceSlot(f.lights, outline, f.camera, f.aspect, volumes.enclosingScale,
@@ -321,22 +362,24 @@ FrameStats RendererImpl::render(FrameInput const& input) {
             wire.count = slot ? 1 : 0;
         }
         wireframesPass({lights, volumes, shaders.get(ProgramId::LightVolumeWire), target}, wire);
-        timer.end();
     }
     // Debug counts for the heat map and tile views, only when one of them is shown.
     if (viewNeedsCoverage(s.view)) {
-        timer.begin("coverage");
+        PassScope const pass = timed(PassId::Coverage);
         runCoverage(f);
-        timer.end();
     }
-    timer.begin("display");
-    ViewParams display;
-    display.view = s.view;
-    viewPass({targets.gbuffer, targets.lighting, targets.coverage, targets.diffuseLight, targets.specularLight,
-              shaders.get(ProgramId::View), triangle, targets.displayFbo},
-             {display, s.tonemap, s.exposure, f.camera.nearPlane, f.camera.farPlane, targets.width, targets.height,
-              shading.inverseViewProj});
-    timer.end();
+    {
+        PassScope const pass = timed(PassId::Display);
+        ViewParams display;
+        display.view = s.view;
+        viewPass({targets.gbuffer, targets.lighting, targets.coverage, targets.diffuseLight, targets.specularLight,
+                  shaders.get(ProgramId::View), triangle, targets.displayFbo},
+                 {display, s.tonemap, s.exposure, f.camera.nearPlane, f.camera.farPlane, targets.width, targets.height,
+                  shading.inverseViewProj});
+    }
+#ifndef NDEBUG
+    checkFrameRan(declared, passesRun);
+#endif
 
     stats.timingSource = timingSourceName(timer.method().source);
     stats.timingReason = timer.method().reason;
@@ -367,6 +410,9 @@ void RendererImpl::drawView(ViewParams const& params, FrameInput const& frame, V
     if (viewNeedsCoverage(params.view)) {
         f.settings.view = params.view;
         lights.upload(f.lights);
+        // The volume counts test against the copy, which only a volumes frame refreshed.
+        if (f.settings.mode == LightingMode::Volumes && targets.volumeDepth)
+            volumeDepthPass({targets.gbuffer, targets.volumeFbo}, {targets.width, targets.height});
         if (shaderChecks) shaderChecks.begin();
         runCoverage(f);
         if (shaderChecks) shaderChecks.collect();

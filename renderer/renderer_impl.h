@@ -2,6 +2,7 @@
 // renderer's own .cpp files include this; everyone else uses renderer.h.
 #pragma once
 
+#include "core/frame_passes.h"
 #include "gl/fullscreen_triangle.h"
 #include "gl/gpu_timer.h"
 #include "gl/query.h"
@@ -42,6 +43,21 @@ inline constexpr char const* kForwardRefusesSplit =
 // The uniforms of shaders/lighting.glsl and surface_terms.glsl for frame `f`.
 ShadingUniforms shadingUniforms(FrameContext const& f);
 
+// Times one pass under its declared name (core/frame_passes.h) and records that it ran.
+class PassScope {
+public:
+    PassScope(GpuTimer& timer, std::vector<PassId>& ran, PassId id) : timer_(timer) {
+        timer.begin(std::string(passName(id)));
+        ran.push_back(id);
+    }
+    ~PassScope() { timer_.end(); }
+    PassScope(PassScope const&) = delete;
+    PassScope& operator=(PassScope const&) = delete;
+
+private:
+    GpuTimer& timer_;
+};
+
 // An optional group of programs (and, for volumes, the sphere mesh), built on first use.
 struct OptionalFeature {
     bool tried = false;
@@ -75,8 +91,9 @@ public:
     gl::Buffer cubeVertices;
     LightVolumeGpu volumes;
     GpuTimer timer;
-    ShaderChecks shaderChecks;  // the shader-checks build's report (gl/shader_checks.h); empty when off
-    gl::Query fragmentQuery;    // GL_FRAGMENT_SHADER_INVOCATIONS_ARB when available
+    ShaderChecks shaderChecks;      // the shader-checks build's report (gl/shader_checks.h); empty when off
+    std::vector<PassId> passesRun;  // this frame's passes so far, in order (PassScope)
+    gl::Query fragmentQuery;        // GL_FRAGMENT_SHADER_INVOCATIONS_ARB when available
     std::uint64_t glErrorsAtStart = 0;
     glm::mat4 frameInverseViewProj{1.0f};  // of the last frame rendered: decodes its G-buffer
     // What the coverage target counts now (runCoverage), for the pixel inspector; none before a
@@ -95,6 +112,7 @@ private:
     FrameContext frameContext(FrameInput const& input) const;
     DeferredInputs deferredInputs(FrameContext const& f) const;
     LitTarget litTarget() const { return {targets.litFbo, targets.lighting}; }
+    PassScope timed(PassId id) { return {timer, passesRun, id}; }
     bool volumesReady();    // builds the volume programs and mesh on first use
     bool tiledReady();      // builds the tiled program on first use
     bool clusteredReady();  // builds the two clustered programs on first use

@@ -61,7 +61,6 @@ void RendererImpl::runLighting(FrameContext const& f) {
             lightingQuadPass({deferred, shaders.get(ProgramId::LightingQuad), triangle, quadTarget(f)});
             break;
     }
-    if (splitAccumulation(f)) combineLights(f);
 }
 
 void RendererImpl::runCoverage(FrameContext const& f) {

@@ -1,5 +1,6 @@
 // The deferred core on a headless context: G-buffer contents against analytic values, the
 // lighting pass against the CPU equation, the blit step, resizing and shader hot reload.
+#include "core/frame_passes.h"
 #include "core/shading_cpu.h"
 #include "gl/shader_bindings.h"
 #include "gl/shader_library.h"
@@ -299,6 +300,38 @@ TEST_F(RendererGlTest, GpuTimingsCoverEveryPass) {
         EXPECT_GE(p.gpuMs, 0.0);
     }
     EXPECT_EQ(names, (std::vector<std::string>{"geometry", "lighting", "depth_copy", "forward", "display"}));
+}
+
+TEST_F(RendererGlTest, TheTimedPassesAreTheDeclaredOnes) {
+    // core/frame_passes.h describes the frame render() runs: the timer's names, in order, are the
+    // declared passes' for every mode and layout, with and without the optional passes.
+    auto r = makeRenderer(32, 24);
+    ASSERT_FALSE(r->setScene(test::floorScene()));
+    PointLight light;
+    light.position = {0, 1, 0};
+    std::vector<PointLight> const lights{light};
+    int frames = 0;
+    for (std::size_t layout = 0; layout < kGBufferLayoutNames.size(); ++layout)
+        for (std::size_t mode = 0; mode < kLightingModeNames.size(); ++mode)
+            for (CullMode cull : {CullMode::Front, CullMode::Stencil})
+                for (bool extras : {false, true}) {
+                    PipelineSettings s = plainSettings();
+                    s.layout = GBufferLayout(layout);
+                    s.mode = LightingMode(mode);
+                    s.cull = cull;
+                    s.lightCubes = s.volumeWireframes = extras;
+                    s.accumulation = extras ? LightAccumulation::Split : LightAccumulation::Single;
+                    s.view = extras ? DebugView::Heatmap : DebugView::Final;
+                    FrameStats const st = r->render({lookingAt({0, 5, 5}, {0, 0, 0}), lights, s});
+                    s.mode = st.modeUsed;  // as it ran (a mode this context lacks falls back to quad)
+                    std::vector<std::string> timed, declared;
+                    for (auto const& p : st.passes) timed.push_back(p.name);
+                    for (PassDecl const& p : framePasses(s)) declared.emplace_back(p.name());
+                    EXPECT_EQ(timed, declared) << kGBufferLayoutNames[layout] << " " << kLightingModeNames[mode];
+                    EXPECT_EQ(st.glErrors, 0u);
+                    ++frames;
+                }
+    EXPECT_EQ(frames, 4 * 5 * 2 * 2);
 }
 
 TEST_F(RendererGlTest, EverySamplerReadsTheUnitOfBindingsGlsl) {

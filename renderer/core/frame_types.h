@@ -23,8 +23,9 @@ enum class Attachment {
     AlbedoSpec,  // RGBA8 linear albedo, alpha = specular intensity
     Depth,       // DEPTH32F_STENCIL8 window-space depth of the geometry pass
     // The stencil bits of that same depth-stencil texture, read back as 1 channel of the integer
-    // values 0..255. Only the stencil cull of the volumes mode writes it, and every shade visit
-    // resets its marks to 0, so after a whole frame it reads 0 wherever the frame cleared it.
+    // values 0..255. Only the stencil cull of the volumes mode writes it (in classic; the layouts
+    // that rebuild position mark a copy, RenderTargets::volumeDepth), and every shade visit resets
+    // its marks to 0, so after a whole frame it reads 0 wherever the frame cleared it.
     Stencil,
     Lighting,  // RGBA16F HDR lit image (lighting + forward passes, before tonemap)
     // RG32F: x = lights evaluated at the pixel, y = lights that lit it. Read back with 2 channels;

@@ -129,6 +129,13 @@ constexpr bool storesEmissiveAo(GBufferLayoutDesc const& d) {
     return colorAttachmentIndex(d, GBufferSlot::Emissive) >= 0;
 }
 
+// Whether the G-buffer readers (gbuffer_read.glsl) sample the depth-stencil texture to rebuild
+// position. Where they do, a pass that reads the G-buffer and depth-tests against the scene must
+// not have that texture attached: it draws against a copy (RenderTargets::volumeDepth).
+constexpr bool lightingSamplesDepth(GBufferLayoutDesc const& d) {
+    return !d.storesPosition;
+}
+
 // The #defines that select this layout's encode (geometry.frag) and decode (gbuffer_read.glsl).
 inline std::vector<std::string> layoutShaderDefines(GBufferLayoutDesc const& d) {
     std::vector<std::string> out;

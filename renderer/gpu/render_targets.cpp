@@ -46,19 +46,23 @@ std::optional<std::string> createRenderTargets(int width, int height, GBufferLay
     out.lighting = Texture::create2D(GL_RGBA16F, width, height, "lighting.hdr");
     out.litDepth = Texture::create2D(glInternalFormat(desc.depthFormat()), width, height, "lighting.depth");
     out.litFbo = Framebuffer::create({&out.lighting}, &out.litDepth, "lighting");
-    out.volumeFbo = Framebuffer::create({&out.lighting}, &g.depth, "lighting.volumes");
+    if (lightingSamplesDepth(desc))
+        out.volumeDepth = Texture::create2D(glInternalFormat(desc.depthFormat()), width, height, "volumes.depth");
+    Texture const* volumeDepth = &out.volumeDepthStencil();
+    out.volumeFbo = Framebuffer::create({&out.lighting}, volumeDepth, "lighting.volumes");
+    out.wireframeFbo = Framebuffer::create({&out.lighting}, &g.depth, "lighting.wireframes");
     out.diffuseLight = Texture::create2D(GL_RGBA16F, width, height, "lighting.diffuse");
     out.specularLight = Texture::create2D(GL_RGBA16F, width, height, "lighting.specular");
     out.splitFbo = Framebuffer::create({&out.diffuseLight, &out.specularLight}, nullptr, "lighting.split");
     out.splitVolumeFbo =
-        Framebuffer::create({&out.diffuseLight, &out.specularLight}, &g.depth, "lighting.split.volumes");
+        Framebuffer::create({&out.diffuseLight, &out.specularLight}, volumeDepth, "lighting.split.volumes");
     out.coverage = Texture::create2D(GL_RG32F, width, height, "coverage");
-    out.coverageFbo = Framebuffer::create({&out.coverage}, &g.depth, "coverage");
+    out.coverageFbo = Framebuffer::create({&out.coverage}, volumeDepth, "coverage");
     out.display = Texture::create2D(GL_RGBA8, width, height, "display");
     out.displayFbo = Framebuffer::create({&out.display}, nullptr, "display");
 
-    for (Framebuffer const* fb :
-         {&g.fbo, &out.litFbo, &out.volumeFbo, &out.splitFbo, &out.splitVolumeFbo, &out.coverageFbo, &out.displayFbo})
+    for (Framebuffer const* fb : {&g.fbo, &out.litFbo, &out.volumeFbo, &out.wireframeFbo, &out.splitFbo,
+                                  &out.splitVolumeFbo, &out.coverageFbo, &out.displayFbo})
         if (fb->error()) return fb->error();
     return std::nullopt;
 }

@@ -47,21 +47,31 @@ struct RenderTargets {
     gl::Texture lighting;    // RGBA16F HDR
     gl::Texture litDepth;    // the G-buffer depth's format, so blits work
     gl::Framebuffer litFbo;  // lighting + litDepth: lighting passes and the forward pass
-    // lighting + the G-buffer's depth-stencil: light volumes test against the scene depth (and
-    // use its stencil) without needing the blit step.
+    // The depth-stencil the volume passes test against (and mark in stencil cull): a copy of the
+    // G-buffer's, blitted before them (volumeDepthPass), in the layouts whose lighting samples the
+    // G-buffer's depth to rebuild position; empty in the others, which attach the G-buffer's own.
+    // Attaching a texture the pass samples is a feedback loop, undefined in GL.
+    gl::Texture volumeDepth;
+    // lighting + volumeDepthStencil(): the light volumes test against the scene depth (and use its
+    // stencil) without needing the blit step.
     gl::Framebuffer volumeFbo;
+    // lighting + the G-buffer's depth-stencil: the wireframes test against the scene depth; they
+    // sample nothing of the G-buffer.
+    gl::Framebuffer wireframeFbo;
     // Accumulation targets of `accumulation: split` (RGBA16F each): diffuse light (N.L * att *
     // colour, no albedo) and specular light; the combine pass turns them into `lighting`.
     gl::Texture diffuseLight;
     gl::Texture specularLight;
     gl::Framebuffer splitFbo;        // diffuseLight + specularLight: the full-screen pass
-    gl::Framebuffer splitVolumeFbo;  // the same with the G-buffer's depth-stencil: the volumes
+    gl::Framebuffer splitVolumeFbo;  // the same with volumeDepthStencil(): the volumes
     gl::Texture coverage;            // RG32F: x = volumes that covered the pixel, y = lights that lit it
-    gl::Framebuffer coverageFbo;
-    gl::Texture display;  // RGBA8 final image
+    gl::Framebuffer coverageFbo;     // coverage + volumeDepthStencil(): the volume counts
+    gl::Texture display;             // RGBA8 final image
     gl::Framebuffer displayFbo;
 
     bool empty() const { return width == 0 || height == 0; }
+    // What volumeFbo, splitVolumeFbo and coverageFbo attach as depth-stencil.
+    gl::Texture const& volumeDepthStencil() const { return volumeDepth ? volumeDepth : gbuffer.depth; }
 };
 
 // Creates all targets at w x h (0 x 0 gives empty targets) with the G-buffer in `layout`. Returns

@@ -3,6 +3,7 @@
 // actually reached the surface there.
 #pragma once
 
+#include "core/frame_passes.h"
 #include "gl/fullscreen_triangle.h"
 #include "passes/light_volumes.h"
 #include "passes/lighting_tiled.h"
@@ -20,7 +21,7 @@ struct CoverageInput {
     gl::Program const* tiled;           // ProgramId::LightingTiled
     TileBinPrograms const* tiledBin;    // ProgramId::TileDepth and TileBin (with `tiled`)
     TileBins* bins;                     // (with `tiled`)
-    gl::Framebuffer const& target;      // coverageFbo: the counts and the G-buffer's depth-stencil
+    gl::Framebuffer const& target;      // coverageFbo: the counts and volumeDepthStencil()
     gl::Texture const& coverage;        // its colour attachment (the tiled pass writes it as an image)
     gl::Texture const& hdr;             // bound (not written) for the tiled program's lit image
 };
@@ -38,9 +39,5 @@ struct CoverageOutput {
 // The lights-per-tile view always shows the tiled mode's lists (when compute exists). Forward
 // mode has no G-buffer to count over: the counts stay zero.
 CoverageOutput coveragePass(CoverageInput const& in, CoverageConfig const& config);
-
-inline bool viewNeedsCoverage(DebugView v) {
-    return v == DebugView::Heatmap || v == DebugView::TileLights;
-}
 
 }  // namespace gbl

@@ -52,7 +52,7 @@ struct LightingVolumesInput {
     gl::Program const& shade;        // ProgramId::LightVolume
     gl::Program const& stencilMark;  // ProgramId::LightVolumeStencil
     gl::FullscreenTriangle const& triangle;
-    LitTarget target;  // volumeFbo: the HDR image and the G-buffer's depth-stencil
+    LitTarget target;  // volumeFbo: the HDR image and RenderTargets::volumeDepthStencil()
 };
 struct LightingVolumesConfig {
     glm::mat4 viewProj{1.0f};

@@ -41,7 +41,7 @@ struct DeferredInputs {
 void bindDeferredInputs(gl::Program const& program, DeferredInputs const& in);
 
 // The HDR image a pass draws into, and the framebuffer that holds it with a depth-stencil
-// (litFbo: its own depth; volumeFbo: the G-buffer's).
+// (litFbo: its own depth; volumeFbo: the G-buffer's or a copy of it, RenderTargets::volumeDepth).
 struct LitTarget {
     gl::Framebuffer const& fbo;
     gl::Texture const& hdr;

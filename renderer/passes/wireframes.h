@@ -16,7 +16,7 @@ struct WireframesInput {
     LightBuffer const& lights;
     LightVolumeGpu const& volumes;  // instances prepared for this frame
     gl::Program const& program;     // ProgramId::LightVolumeWire
-    // Holds the scene's depth: volumeFbo (G-buffer depth), or litFbo in forward mode.
+    // Holds the scene's depth: wireframeFbo (G-buffer depth), or litFbo in forward mode.
     LitTarget target;
 };
 struct WireframesConfig {

@@ -1,0 +1,239 @@
+// The declared passes of a frame and the feedback-loop check over them.
+#include "core/frame_passes.h"
+
+#include "core/gbuffer_layout.h"
+
+#include <algorithm>
+
+namespace gbl {
+
+namespace {
+
+using R = Resource;
+
+PassDecl declare(PassId id, PassKind kind = PassKind::Raster) {
+    PassDecl p;
+    p.id = id;
+    p.kind = kind;
+    return p;
+}
+
+DrawState state(std::string_view what, DepthTest depthTest, bool depthWrite, Blend blend, FaceCull cull,
+                StencilUse stencil = StencilUse::Off, bool colorWrite = true) {
+    return {what, depthTest, depthWrite, blend, cull, stencil, colorWrite};
+}
+
+Resource slotResource(GBufferSlot slot) {
+    switch (slot) {
+        case GBufferSlot::Position:
+            return R::GBufferPosition;
+        case GBufferSlot::Normal:
+            return R::GBufferNormal;
+        case GBufferSlot::AlbedoSpec:
+            return R::GBufferAlbedoSpec;
+        case GBufferSlot::Emissive:
+            return R::GBufferEmissive;
+        case GBufferSlot::Depth:
+            break;
+    }
+    return R::GBufferDepth;
+}
+
+// What shaders/gbuffer_read.glsl samples in `layout`: position, or the depth it is rebuilt from.
+std::vector<Resource> gbufferSamples(GBufferLayoutDesc const& d) {
+    std::vector<Resource> out{lightingSamplesDepth(d) ? R::GBufferDepth : R::GBufferPosition, R::GBufferNormal,
+                              R::GBufferAlbedoSpec};
+    if (storesEmissiveAo(d)) out.push_back(R::GBufferEmissive);
+    return out;
+}
+
+std::vector<Resource> plus(std::vector<Resource> a, std::initializer_list<Resource> b) {
+    for (Resource r : b)
+        if (std::find(a.begin(), a.end(), r) == a.end()) a.push_back(r);
+    return a;
+}
+
+DrawState fullScreen(std::string_view what) {
+    return state(what, DepthTest::Off, false, Blend::Off, FaceCull::Off);
+}
+
+// passes/light_volumes.cpp, drawLightVolumes: the draws of one cull mode, added by `blend`.
+std::vector<DrawState> volumeStates(CullMode cull) {
+    DrawState const front = state("volumes: front faces", DepthTest::Less, false, Blend::Add, FaceCull::Back);
+    DrawState const back = state("volumes: back faces", DepthTest::GreaterEqual, false, Blend::Add, FaceCull::Front);
+    switch (cull) {
+        case CullMode::Back:
+            return {front};
+        case CullMode::Front:
+            return {back};
+        case CullMode::None:
+            return {state("volumes: both faces", DepthTest::Off, false, Blend::Add, FaceCull::Off)};
+        case CullMode::Flip:
+            return {front, back};
+        case CullMode::Stencil:
+            return {state("stencil mark", DepthTest::Less, false, Blend::Off, FaceCull::Off, StencilUse::Mark, false),
+                    state("stencil shade", DepthTest::Off, false, Blend::Add, FaceCull::Off, StencilUse::ShadeMarked)};
+    }
+    return {};
+}
+
+// The volumes drawn into `color` against the volume depth-stencil (lighting and coverage).
+PassDecl volumePass(PassId id, GBufferLayoutDesc const& d, CullMode cull, std::vector<Resource> color) {
+    PassDecl p = declare(id);
+    p.samples = plus(gbufferSamples(d), {R::Lights, R::VolumeInstances});
+    p.color = std::move(color);
+    p.depthStencil = lightingSamplesDepth(d) ? R::VolumeDepth : R::GBufferDepth;
+    p.depthRead = cull != CullMode::None;
+    p.stencilRead = p.stencilWrite = cull == CullMode::Stencil;
+    p.states = volumeStates(cull);
+    return p;
+}
+
+PassDecl computePass(PassId id, std::vector<Resource> samples, std::vector<Resource> writes) {
+    PassDecl p = declare(id, PassKind::Compute);
+    p.samples = std::move(samples);
+    p.writes = std::move(writes);
+    return p;
+}
+
+// The lit target (litFbo: lighting + its own depth-stencil) drawn with one state.
+PassDecl litPass(PassId id, std::vector<Resource> samples, DrawState drawn) {
+    PassDecl p = declare(id);
+    p.samples = std::move(samples);
+    p.color = {R::Lighting};
+    p.depthStencil = R::LitDepth;
+    p.depthRead = drawn.depthTest != DepthTest::Off;
+    p.depthWrite = drawn.depthWrite;
+    p.states = {drawn};
+    return p;
+}
+
+PassDecl lightingPass(PipelineSettings const& s, bool split) {
+    GBufferLayoutDesc const& d = layoutDesc(s.layout);
+    std::vector<Resource> const lit = split ? std::vector{R::DiffuseLight, R::SpecularLight} : std::vector{R::Lighting};
+    switch (s.mode) {
+        case LightingMode::Volumes: {
+            PassDecl p = volumePass(PassId::Lighting, d, s.cull, lit);
+            p.states.insert(p.states.begin(), fullScreen("ambient"));
+            return p;
+        }
+        case LightingMode::Tiled:
+            return computePass(PassId::Lighting, plus(gbufferSamples(d), {R::Lights, R::TileBins}), lit);
+        case LightingMode::Clustered:
+            return computePass(PassId::Lighting, plus(gbufferSamples(d), {R::Lights, R::ClusterLists}), lit);
+        case LightingMode::Quad:
+        case LightingMode::Forward:
+            break;
+    }
+    PassDecl p = declare(PassId::Lighting);  // full screen into litFbo, or splitFbo (no depth-stencil)
+    p.samples = plus(gbufferSamples(d), {R::Lights});
+    p.color = lit;
+    if (!split) p.depthStencil = R::LitDepth;
+    p.states = {fullScreen("every light")};
+    return p;
+}
+
+PassDecl depthCopyPass(DepthCopy mode) {
+    PassDecl p = declare(PassId::DepthCopy, mode == DepthCopy::Blit ? PassKind::Blit : PassKind::Raster);
+    p.color = {R::Lighting};
+    p.depthStencil = R::LitDepth;
+    p.depthWrite = p.stencilWrite = true;  // cleared, then written
+    if (mode != DepthCopy::Off) p.samples = {R::GBufferDepth};
+    if (mode == DepthCopy::Shader)
+        p.states = {
+            {"depth from the shader", DepthTest::Always, true, Blend::Off, FaceCull::Off, StencilUse::Off, false}};
+    return p;
+}
+
+PassDecl coveragePass(PipelineSettings const& s) {
+    GBufferLayoutDesc const& d = layoutDesc(s.layout);
+    std::vector<Resource> const gbuffer = plus(gbufferSamples(d), {R::GBufferDepth});  // and tile depth bounds
+    if (s.view == DebugView::TileLights || s.mode == LightingMode::Tiled)
+        return computePass(PassId::Coverage, plus(gbuffer, {R::Lights}), {R::Coverage, R::TileBins});
+    if (s.mode == LightingMode::Clustered)
+        return computePass(PassId::Coverage, plus(gbuffer, {R::Lights}), {R::Coverage, R::TileBins, R::ClusterLists});
+    if (s.mode == LightingMode::Volumes) return volumePass(PassId::Coverage, d, s.cull, {R::Coverage});
+    PassDecl p = declare(PassId::Coverage);  // coverageFbo: the counts over the volume depth-stencil, unused here
+    p.color = {R::Coverage};
+    p.depthStencil = lightingSamplesDepth(d) ? R::VolumeDepth : R::GBufferDepth;
+    if (s.mode == LightingMode::Quad) {
+        p.samples = plus(gbufferSamples(d), {R::Lights});
+        p.states = {fullScreen("every light")};
+    }
+    return p;  // forward: cleared only, nothing to count over
+}
+
+}  // namespace
+
+std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes) {
+    GBufferLayoutDesc const& d = layoutDesc(s.layout);
+    bool const forward = s.mode == LightingMode::Forward;
+    bool const split = s.accumulation == LightAccumulation::Split && !forward;
+    DrawState const opaque = state("opaque surfaces", DepthTest::Less, true, Blend::Off, FaceCull::Material);
+    std::vector<PassDecl> out;
+    if (forward) {
+        out.push_back(litPass(PassId::ForwardShading, {R::Materials, R::Lights}, opaque));
+        out.back().stencilWrite = true;  // cleared with the rest
+    } else {
+        PassDecl g = declare(PassId::Geometry);
+        g.samples = {R::Materials};
+        for (GBufferAttachmentDesc const& a : d.colorAttachments()) g.color.push_back(slotResource(a.slot));
+        g.depthStencil = R::GBufferDepth;
+        g.depthRead = g.depthWrite = g.stencilWrite = true;  // stencil cleared
+        g.states = {opaque};
+        out.push_back(std::move(g));
+        if (s.mode == LightingMode::Tiled)
+            out.push_back(computePass(PassId::LightLists, {R::GBufferDepth, R::Lights}, {R::TileBins}));
+        if (s.mode == LightingMode::Clustered)
+            out.push_back(
+                computePass(PassId::LightLists, {R::GBufferDepth, R::Lights}, {R::TileBins, R::ClusterLists}));
+        if (s.mode == LightingMode::Volumes && lightingSamplesDepth(d)) {
+            PassDecl v = declare(PassId::VolumeDepth, PassKind::Blit);
+            v.samples = {R::GBufferDepth};
+            v.color = {R::Lighting};  // volumeFbo's; the blit writes depth and stencil only
+            v.depthStencil = R::VolumeDepth;
+            v.depthWrite = v.stencilWrite = true;
+            out.push_back(std::move(v));
+        }
+        out.push_back(lightingPass(s, split));
+        if (split) {
+            PassDecl c = litPass(PassId::LightCombine, plus(gbufferSamples(d), {R::DiffuseLight, R::SpecularLight}),
+                                 fullScreen("combine"));
+            out.push_back(std::move(c));
+        }
+        out.push_back(depthCopyPass(s.depthCopy));
+    }
+    out.push_back(litPass(PassId::Forward, {R::Materials, R::Lights},
+                          state("blended surfaces", DepthTest::Less, false, Blend::Alpha, FaceCull::Material)));
+    if (s.lightCubes)
+        out.push_back(litPass(PassId::LightCubes, {R::Lights},
+                              state("cubes", DepthTest::Less, true, Blend::Off, FaceCull::Back)));
+    if (wireframes) {
+        PassDecl w = litPass(PassId::Wireframes, {R::Lights, R::VolumeInstances},
+                             state("lines", DepthTest::LessEqual, false, Blend::Off, FaceCull::Off));
+        if (!forward) w.depthStencil = R::GBufferDepth;  // wireframeFbo: the scene's depth without the blit step
+        out.push_back(std::move(w));
+    }
+    if (viewNeedsCoverage(s.view)) out.push_back(coveragePass(s));
+    PassDecl v = declare(PassId::Display);
+    for (GBufferAttachmentDesc const& a : d.attachments()) v.samples.push_back(slotResource(a.slot));  // raw views
+    v.samples = plus(v.samples, {R::Lighting, R::Coverage, R::DiffuseLight, R::SpecularLight});
+    v.color = {R::Display};
+    v.states = {fullScreen("view")};
+    out.push_back(std::move(v));
+    return out;
+}
+
+std::vector<FeedbackLoop> feedbackLoops(std::span<PassDecl const> passes) {
+    std::vector<FeedbackLoop> out;
+    for (PassDecl const& p : passes) {
+        if (p.kind == PassKind::Compute) continue;  // no framebuffer in a dispatch
+        for (Resource r : p.samples) {
+            bool const attached = std::find(p.color.begin(), p.color.end(), r) != p.color.end() || p.depthStencil == r;
+            if (attached) out.push_back({p.id, r});
+        }
+    }
+    return out;
+}
+
+}  // namespace gbl

@@ -1,0 +1,157 @@
+// The frame as data: each pass's name, what it samples, what it renders into and its
+// fixed-function state, and the ordered passes a frame runs for its settings. Plain values, no
+// GL: the renderer checks its frame against them in debug builds, the pass timer takes its names
+// from them, and a CPU test checks every combination of settings for feedback loops.
+#pragma once
+
+#include "core/pipeline_settings.h"
+
+#include <array>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace gbl {
+
+// Every pass a frame can run. kPassNames holds the one name of each, used by the pass timer,
+// FrameStats::passes, stats.json and bench.
+enum class PassId {
+    ForwardShading,  // forward mode: every opaque surface lit by every light
+    Geometry,        // the G-buffer
+    LightLists,      // tiled and clustered: each tile's or cluster's candidate lights
+    VolumeDepth,     // the G-buffer's depth-stencil copied for the volume passes
+    Lighting,        // the lighting mode's pass
+    LightCombine,    // accumulation split: the two light targets into the lit image
+    DepthCopy,       // the blit step: the G-buffer depth into the lit target
+    Forward,         // blended surfaces, forward-lit over the lit image
+    LightCubes,      // a small unlit cube at each light
+    Wireframes,      // light-volume outlines
+    Coverage,        // the counts behind the heat map and lights-per-tile views
+    Display,         // tonemap or debug view into the display image
+};
+inline constexpr std::array<std::string_view, 12> kPassNames{
+    "forward_shading", "geometry", "light_lists", "volume_depth", "lighting", "light_combine",
+    "depth_copy",      "forward",  "light_cubes", "wireframes",   "coverage", "display"};
+
+inline std::string_view passName(PassId id) {
+    return enumName(kPassNames, id);
+}
+inline std::optional<PassId> passFromName(std::string_view name) {
+    return enumFromName<PassId>(kPassNames, name);
+}
+
+// The lighting work of a frame (bench's lighting figure): shading the lights, and the passes that
+// exist only to shade them (light lists, the volumes' depth copy, the split combine).
+constexpr bool countsAsLighting(PassId id) {
+    return id == PassId::ForwardShading || id == PassId::LightLists || id == PassId::VolumeDepth ||
+           id == PassId::Lighting || id == PassId::LightCombine;
+}
+
+// Everything a pass reads or writes (gpu/render_targets.h, gpu/light_buffer.h, ...).
+enum class Resource {
+    GBufferPosition,
+    GBufferNormal,
+    GBufferAlbedoSpec,
+    GBufferEmissive,
+    GBufferDepth,  // the G-buffer's depth-stencil texture
+    VolumeDepth,   // its copy for the volume passes (RenderTargets::volumeDepth)
+    Lighting,      // the HDR lit image
+    LitDepth,      // the lit target's own depth-stencil
+    DiffuseLight,
+    SpecularLight,
+    Coverage,
+    Display,
+    Lights,           // the light buffer texture
+    VolumeInstances,  // the light-volume instance list
+    Materials,        // the scene's material textures
+    TileBins,         // storage buffers: tile depth bounds and candidate lists
+    ClusterLists,     // storage buffers and list texture of the clustered mode
+};
+inline constexpr std::array<std::string_view, 17> kResourceNames{
+    "gbuffer.position", "gbuffer.normal",   "gbuffer.albedo_spec", "gbuffer.emissive", "gbuffer.depth", "volumes.depth",
+    "lighting",         "lighting.depth",   "diffuse_light",       "specular_light",   "coverage",      "display",
+    "lights",           "volume_instances", "materials",           "tile_bins",        "cluster_lists"};
+
+inline std::string_view resourceName(Resource r) {
+    return enumName(kResourceNames, r);
+}
+
+enum class PassKind {
+    Raster,   // draws into a framebuffer
+    Compute,  // dispatches; writes images and buffers, no framebuffer involved
+    Blit,     // glBlitFramebuffer from `samples` into the attachments
+};
+enum class DepthTest { Off, Less, LessEqual, GreaterEqual, Always };
+enum class Blend {
+    Off,
+    Add,    // ONE, ONE: lights summed
+    Alpha,  // SRC_ALPHA, ONE_MINUS_SRC_ALPHA
+};
+enum class FaceCull {
+    Off,
+    Back,
+    Front,
+    Material,  // back faces, except for double-sided materials
+};
+enum class StencilUse {
+    Off,
+    Mark,         // both faces, depth failures: back +1, front -1
+    ShadeMarked,  // passes where the mark is 1, and zeroes every mark it visits
+};
+
+// The fixed-function state of one group of draws of a pass (most passes have one).
+struct DrawState {
+    std::string_view what;  // which draws, e.g. "ambient" or "stencil mark"
+    DepthTest depthTest = DepthTest::Off;
+    bool depthWrite = false;
+    Blend blend = Blend::Off;
+    FaceCull cull = FaceCull::Off;
+    StencilUse stencil = StencilUse::Off;
+    bool colorWrite = true;
+
+    bool operator==(DrawState const&) const = default;
+};
+
+// One pass: what it reads, where it draws, and how.
+struct PassDecl {
+    PassId id = PassId::Display;
+    PassKind kind = PassKind::Raster;
+    std::vector<Resource> samples;  // read by its shaders, or the source of its blit
+    // The framebuffer it draws into (raster and blit): colour attachments, then the depth-stencil.
+    std::vector<Resource> color;
+    std::optional<Resource> depthStencil;
+    bool depthRead = false;  // depth-tested against
+    bool depthWrite = false;
+    bool stencilRead = false;
+    bool stencilWrite = false;
+    std::vector<Resource> writes;  // images and buffers a compute pass writes
+    std::vector<DrawState> states;
+
+    std::string_view name() const { return passName(id); }
+    bool operator==(PassDecl const&) const = default;
+};
+
+// Whether the heat map or lights-per-tile view is shown: only then the frame runs the coverage pass.
+constexpr bool viewNeedsCoverage(DebugView v) {
+    return v == DebugView::Heatmap || v == DebugView::TileLights;
+}
+
+// The passes RendererImpl::render runs, in order, for a frame with `settings` as it ran (the mode
+// after any fallback; split accumulation is ignored in forward mode, as the renderer does).
+// `wireframes`: whether the volume outlines are drawn (the setting, or an accumulation outline).
+std::vector<PassDecl> framePasses(PipelineSettings const& settings, bool wireframes);
+inline std::vector<PassDecl> framePasses(PipelineSettings const& settings) {
+    return framePasses(settings, settings.volumeWireframes);
+}
+
+// A pass that samples a resource attached to the framebuffer it draws into: a feedback loop,
+// undefined in GL.
+struct FeedbackLoop {
+    PassId pass = PassId::Display;
+    Resource resource = Resource::GBufferDepth;
+    bool operator==(FeedbackLoop const&) const = default;
+};
+std::vector<FeedbackLoop> feedbackLoops(std::span<PassDecl const> passes);
+
+}  // namespace gbl

@@ -1,0 +1,26 @@
+// The volume depth copy: the G-buffer's depth-stencil blitted into the depth-stencil the volume
+// passes test against, so they never sample a texture attached to the framebuffer they draw into.
+#pragma once
+
+#include "gl/framebuffer.h"
+#include "gpu/render_targets.h"
+
+namespace gbl {
+
+struct VolumeDepthInput {
+    GBuffer const& gbuffer;         // read: its depth-stencil
+    gl::Framebuffer const& target;  // written: its depth-stencil (volumeFbo's volumeDepth)
+};
+struct VolumeDepthConfig {
+    int width = 0;
+    int height = 0;
+};
+struct VolumeDepthOutput {
+    gl::Framebuffer const& target;
+};
+
+// Depth and stencil in one blit (the two textures share the layout's depth format, as a depth
+// blit requires). Blits bypass the fragment pipeline, so no depth, stencil or blend state matters.
+VolumeDepthOutput volumeDepthPass(VolumeDepthInput const& in, VolumeDepthConfig const& config);
+
+}  // namespace gbl

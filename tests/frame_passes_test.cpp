@@ -1,0 +1,161 @@
+// The declared passes of a frame: the feedback-loop check over every combination of settings, the
+// check shown to fail on the wiring it replaced, and the sequences of a few frames.
+#include "core/frame_passes.h"
+
+#include "core/gbuffer_layout.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace gbl;
+
+namespace {
+
+std::string describe(std::vector<FeedbackLoop> const& loops) {
+    std::string out;
+    for (FeedbackLoop const& l : loops)
+        out += std::string(passName(l.pass)) + " samples " + std::string(resourceName(l.resource)) + "; ";
+    return out;
+}
+
+std::vector<std::string> names(std::vector<PassDecl> const& passes) {
+    std::vector<std::string> out;
+    for (PassDecl const& p : passes) out.emplace_back(p.name());
+    return out;
+}
+
+PassDecl const& find(std::vector<PassDecl> const& passes, PassId id) {
+    for (PassDecl const& p : passes)
+        if (p.id == id) return p;
+    throw std::runtime_error("no pass " + std::string(passName(id)));
+}
+
+}  // namespace
+
+TEST(FramePasses, NoCombinationSamplesWhatItDrawsInto) {
+    int frames = 0;
+    for (std::size_t mode = 0; mode < kLightingModeNames.size(); ++mode)
+        for (std::size_t layout = 0; layout < kGBufferLayoutNames.size(); ++layout)
+            for (std::size_t cull = 0; cull < kCullModeNames.size(); ++cull)
+                for (std::size_t acc = 0; acc < kLightAccumulationNames.size(); ++acc)
+                    for (std::size_t copy = 0; copy < kDepthCopyNames.size(); ++copy)
+                        for (DebugView view : {DebugView::Final, DebugView::Heatmap, DebugView::TileLights})
+                            for (bool overlays : {false, true}) {
+                                PipelineSettings s;
+                                s.mode = LightingMode(mode);
+                                s.layout = GBufferLayout(layout);
+                                s.cull = CullMode(cull);
+                                s.accumulation = LightAccumulation(acc);
+                                s.depthCopy = DepthCopy(copy);
+                                s.view = view;
+                                s.lightCubes = s.volumeWireframes = overlays;
+                                auto const passes = framePasses(s);
+                                EXPECT_EQ(describe(feedbackLoops(passes)), "")
+                                    << kLightingModeNames[mode] << " " << kGBufferLayoutNames[layout] << " "
+                                    << kCullModeNames[cull] << " " << kLightAccumulationNames[acc] << " "
+                                    << kDepthCopyNames[copy];
+                                ++frames;
+                            }
+    EXPECT_EQ(frames, 5 * 4 * 5 * 2 * 3 * 3 * 2);
+}
+
+TEST(FramePasses, TheOldVolumeWiringIsALoop) {
+    // Before the volume depth copy: in the layouts that rebuild position, the volumes pass sampled
+    // the G-buffer's depth (to rebuild position) while that texture was volumeFbo's depth-stencil,
+    // and in stencil cull it also wrote its stencil.
+    for (GBufferLayout layout : {GBufferLayout::Packed, GBufferLayout::Naive8, GBufferLayout::Rgb10a2}) {
+        PipelineSettings s;
+        s.mode = LightingMode::Volumes;
+        s.cull = CullMode::Stencil;
+        s.layout = layout;
+        s.view = DebugView::Heatmap;
+        std::vector<PassDecl> old = framePasses(s);
+        std::erase_if(old, [](PassDecl const& p) { return p.id == PassId::VolumeDepth; });
+        for (PassDecl& p : old)
+            if (p.depthStencil == Resource::VolumeDepth) p.depthStencil = Resource::GBufferDepth;
+        EXPECT_EQ(feedbackLoops(old), (std::vector<FeedbackLoop>{{PassId::Lighting, Resource::GBufferDepth},
+                                                                 {PassId::Coverage, Resource::GBufferDepth}}))
+            << kGBufferLayoutNames[std::size_t(layout)];
+    }
+}
+
+TEST(FramePasses, ALoopInAnyPassIsReported) {
+    // A colour attachment sampled (the lit image read while drawn into), and a blit whose source is
+    // its own destination; a compute pass has no framebuffer, so it cannot loop.
+    PassDecl raster;
+    raster.id = PassId::Forward;
+    raster.samples = {Resource::Lights, Resource::Lighting};
+    raster.color = {Resource::Lighting};
+    PassDecl blit;
+    blit.id = PassId::DepthCopy;
+    blit.kind = PassKind::Blit;
+    blit.samples = {Resource::LitDepth};
+    blit.depthStencil = Resource::LitDepth;
+    PassDecl compute;
+    compute.id = PassId::Lighting;
+    compute.kind = PassKind::Compute;
+    compute.samples = {Resource::Lighting};
+    compute.writes = {Resource::Lighting};
+    std::vector<PassDecl> const passes{raster, blit, compute};
+    EXPECT_EQ(feedbackLoops(passes), (std::vector<FeedbackLoop>{{PassId::Forward, Resource::Lighting},
+                                                                {PassId::DepthCopy, Resource::LitDepth}}));
+}
+
+TEST(FramePasses, VolumesCopyDepthOnlyWhereTheLightingSamplesIt) {
+    PipelineSettings s;
+    s.mode = LightingMode::Volumes;
+    s.lightCubes = false;
+    EXPECT_EQ(names(framePasses(s)),
+              (std::vector<std::string>{"geometry", "lighting", "depth_copy", "forward", "display"}));
+    EXPECT_EQ(find(framePasses(s), PassId::Lighting).depthStencil, Resource::GBufferDepth);
+    s.layout = GBufferLayout::Packed;
+    auto const packed = framePasses(s);
+    EXPECT_EQ(names(packed),
+              (std::vector<std::string>{"geometry", "volume_depth", "lighting", "depth_copy", "forward", "display"}));
+    EXPECT_EQ(find(packed, PassId::Lighting).depthStencil, Resource::VolumeDepth);
+    EXPECT_EQ(find(packed, PassId::VolumeDepth).samples, std::vector<Resource>{Resource::GBufferDepth});
+}
+
+TEST(FramePasses, SequencesFollowTheSettings) {
+    PipelineSettings s;  // quad, cubes on
+    EXPECT_EQ(names(framePasses(s)),
+              (std::vector<std::string>{"geometry", "lighting", "depth_copy", "forward", "light_cubes", "display"}));
+    s.mode = LightingMode::Tiled;
+    s.accumulation = LightAccumulation::Split;
+    s.view = DebugView::Heatmap;
+    EXPECT_EQ(names(framePasses(s, true)),
+              (std::vector<std::string>{"geometry", "light_lists", "lighting", "light_combine", "depth_copy", "forward",
+                                        "light_cubes", "wireframes", "coverage", "display"}));
+    s.mode = LightingMode::Forward;  // split is refused there
+    s.view = DebugView::Final;
+    s.lightCubes = false;
+    EXPECT_EQ(names(framePasses(s)), (std::vector<std::string>{"forward_shading", "forward", "display"}));
+}
+
+TEST(FramePasses, EachPassDeclaresItsStateAndTheStencilCullMarksTheStencil) {
+    PipelineSettings s;
+    s.mode = LightingMode::Volumes;
+    s.cull = CullMode::Stencil;
+    PassDecl const lighting = find(framePasses(s), PassId::Lighting);
+    EXPECT_TRUE(lighting.stencilRead && lighting.stencilWrite);
+    EXPECT_FALSE(lighting.depthWrite);
+    ASSERT_EQ(lighting.states.size(), 3u);  // ambient, mark, shade
+    EXPECT_EQ(lighting.states[1].stencil, StencilUse::Mark);
+    EXPECT_FALSE(lighting.states[1].colorWrite);
+    EXPECT_EQ(lighting.states[2].blend, Blend::Add);
+    s.cull = CullMode::Front;
+    PassDecl const front = find(framePasses(s), PassId::Lighting);
+    EXPECT_FALSE(front.stencilWrite);
+    EXPECT_EQ(front.states.back().depthTest, DepthTest::GreaterEqual);
+    EXPECT_EQ(front.states.back().cull, FaceCull::Front);
+}
+
+TEST(FramePasses, NamesRoundTripAndLightingWorkIsDeclared) {
+    for (std::size_t i = 0; i < kPassNames.size(); ++i) EXPECT_EQ(passFromName(kPassNames[i]), PassId(i));
+    EXPECT_EQ(passFromName("viewers"), std::nullopt);  // the editor's own timer, not a frame pass
+    EXPECT_TRUE(countsAsLighting(PassId::LightLists));
+    EXPECT_TRUE(countsAsLighting(PassId::ForwardShading));
+    EXPECT_FALSE(countsAsLighting(PassId::Geometry));
+    EXPECT_FALSE(countsAsLighting(PassId::Display));
+}
