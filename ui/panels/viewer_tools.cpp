@@ -18,8 +18,12 @@ float mapComboWidth() {
 }  // namespace
 
 float viewerCellMinWidth() {
-    // The histogram's "Fit min/max" button is about as wide; 4 px more keeps both inside.
-    return mapComboWidth() + ImGui::GetStyle().CellPadding.x * 2.0f + 4.0f;
+    ImGuiStyle const& style = ImGui::GetStyle();
+    auto button = [&](char const* label) { return ImGui::CalcTextSize(label).x + style.FramePadding.x * 2.0f; };
+    float const toolbar = ImGui::CalcTextSize("specular").x + style.ItemSpacing.x * 2.0f + button("R") + button("G") +
+                          button("B") + button("A") + 6.0f + button("...");
+    // 4 px more keeps the last button clear of the column border.
+    return toolbar + style.CellPadding.x * 2.0f + 4.0f;
 }
 
 void sameLineIfRoom(float w, float right) {
