@@ -3,6 +3,7 @@
 
 #include "model/colormap.h"
 #include "panels/gui_compat.h"
+#include "panels/wrapped_text.h"
 
 #include <algorithm>
 #include <bit>
@@ -127,8 +128,8 @@ void viewerRegionAndDiff(ViewerState& v, ViewerData const& d) {
             for (int c = 0; c < 4; ++c) {
                 if (!(mask & (1u << c))) continue;
                 ChannelStats const& s = d.regionStats.channel[std::size_t(c)];
-                ImGui::TextWrapped("%s min %.4g max %.4g mean %.4g NaN %ld",
-                                   v.kind == ViewerKind::Depth ? "d" : kChannel[c], s.min, s.max, s.mean, s.nan);
+                wrappedText("%s min %.4g max %.4g mean %.4g NaN %ld", v.kind == ViewerKind::Depth ? "d" : kChannel[c],
+                            s.min, s.max, s.mean, s.nan);
             }
         }
         v.regionRowsHeight = ImGui::GetItemRectMax().y - top;
@@ -147,7 +148,7 @@ void viewerRegionAndDiff(ViewerState& v, ViewerData const& d) {
     if (v.showDiff && d.pinned) {
         if (!d.diff.comparable) {
             ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.6f, 0.3f, 1));
-            ImGui::TextWrapped("pinned image has another size; pin again");
+            wrappedText("pinned image has another size; pin again");
             ImGui::PopStyleColor();
             return;
         }
@@ -160,8 +161,8 @@ void viewerRegionAndDiff(ViewerState& v, ViewerData const& d) {
         bool rel = v.diffMode == DiffMode::Relative;
         if (ImGui::Checkbox("rel", &rel)) v.diffMode = rel ? DiffMode::Relative : DiffMode::Absolute;
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("relative: |a - b| / |pinned|");
-        ImGui::TextWrapped("max %.4g at %d,%d  mean %.3g", d.diff.max, d.diff.maxAt.x, d.diff.maxAt.y, d.diff.mean);
-        ImGui::TextWrapped("over %ld of %ld  NaN/Inf %ld", d.diff.overThreshold, d.diff.pixels, d.diff.nanPixels);
+        wrappedText("max %.4g at %d,%d  mean %.3g", d.diff.max, d.diff.maxAt.x, d.diff.maxAt.y, d.diff.mean);
+        wrappedText("over %ld of %ld  NaN/Inf %ld", d.diff.overThreshold, d.diff.pixels, d.diff.nanPixels);
     }
 }
 
