@@ -119,7 +119,9 @@ struct GBufferPanelState {
 inline constexpr int kViewportViewer = 5;
 
 struct ViewportTools {
-    bool open = false;  // the viewport's "Tools" toggle
+    // The viewport's "Tools" toggle. On from the start: an attachment picked in "Show" opens
+    // auto-ranged (depth linearised, positions over the scene), not blank white or black.
+    bool open = true;
     ViewerState viewer = defaultViewer();
     ViewerData data;
     // Magnifier and region input of the viewport image (the G-buffer viewers keep theirs).
