@@ -199,16 +199,29 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
         return;
     }
     LightRadius const r = lightRadius(light);
+    // The plot is a section of its own, open by default and never squeezed below 160 px: the
+    // curve is what the attenuation terms above are for.
+    if (!ImGui::CollapsingHeader("Attenuation plot", ImGuiTreeNodeFlags_DefaultOpen)) return;
     ImGui::Text("Radius %.3f  (%s)", r.radius, radiusKindText(r.kind));
     ImGui::Text("Imax %.3f  Imax/cut %.1f", lightImax(light),
                 light.threshold > 0.0f ? lightImax(light) / light.threshold : 0.0f);
-    ImGui::SameLine();
     ImGui::Checkbox("log", &state.plotLogScale);
+    ImGui::SameLine();
+    if (ImGui::Checkbox("fixed axis", &state.plotFixedAxis) && state.plotFixedAxis)
+        state.plotAxisMax = r.radius > 0.0f ? r.radius * 1.25f : 1.0f;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("hold the distance axis where it is now, so changing Kq or the cut-off moves the curve");
+    if (state.plotFixedAxis) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5.0f);
+        ImGui::DragFloat("##axis", &state.plotAxisMax, 0.05f, 0.1f, 1e4f, "0..%.2f", ImGuiSliderFlags_AlwaysClamp);
+    }
     // A spot gets a second, smaller plot: its cone factor against the angle from its axis.
     float const coneH = light.kind == LightKind::Spot ? ImGui::GetFontSize() * 5.0f : 0.0f;
-    float const plotH = std::clamp(ImGui::GetContentRegionAvail().y - 4.0f - coneH, ImGui::GetFontSize() * 5.0f,
-                                   ImGui::GetFontSize() * 18.0f);
-    drawAttenuationPlot(light, state.plotLogScale, ImVec2(ImGui::GetContentRegionAvail().x, plotH));
+    float const plotH = std::clamp(ImGui::GetContentRegionAvail().y - 4.0f - coneH, 160.0f,
+                                   std::max(160.0f, ImGui::GetFontSize() * 18.0f));
+    drawAttenuationPlot(light, state.plotLogScale, ImVec2(ImGui::GetContentRegionAvail().x, plotH),
+                        state.plotFixedAxis ? state.plotAxisMax : 0.0f);
     if (light.kind == LightKind::Spot) drawConePlot(light, ImVec2(ImGui::GetContentRegionAvail().x, coneH));
 }
 
