@@ -41,9 +41,9 @@ inline constexpr float kViewerStrip = 0.29f;
 // Shares of the band above the strip: Lights over Pipeline on the left; Pixel inspector over
 // Lessons over Stats over Log on the right.
 inline constexpr float kLightsShare = 0.50f;
-inline constexpr float kInspectorShare = 0.36f;
-inline constexpr float kLessonsShare = 0.30f;
-inline constexpr float kStatsShare = 0.17f;
+inline constexpr float kInspectorShare = 0.32f;
+inline constexpr float kLessonsShare = 0.38f;  // a step's text and equation without scrolling
+inline constexpr float kStatsShare = 0.15f;
 
 // Where a window sits in the tiled arrangement (no docking): the G-buffer strip along the
 // bottom; above it lights over pipeline on the left, the viewport in the centre, pixel
