@@ -25,6 +25,18 @@ viewer-pin albedo
 frames 2
 viewer-tool albedo diff on
 frames 4
+# A pinned lit frame survives the viewport's toolbar: Tools off and on again, with a histogram,
+# leave the frame its size, so the pin stays comparable (issue 26: it used to take three presses).
+set view depth
+pin-lit
+frames 2
+lit-diff on
+viewport-tools off
+frames 2
+viewport-tools on
+viewer-tool viewport histogram on
+frames 3
+expect-lit-diff pixels > 1000
 SCRIPT
 # The third shows the lights-per-cluster heat map with its labelled legend, the inspector locked
 # on a surface pixel (its count line).
