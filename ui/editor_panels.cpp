@@ -152,8 +152,9 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     state.viewport.clipPlanes = {state.camera.nearPlane, state.camera.farPlane};
     ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, state.viewportTools, viewportTexture,
                           {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer),
-                          &ab);
-    ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()});
+                          &ab, state.inspector.locked ? state.inspector.pixel : std::nullopt);
+    ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()},
+                         state.inspector.locked ? state.inspector.pixel : std::nullopt);
     ui::drawViewerMagnifier(state.gbuffer, state.viewportTools);
     ui::drawPixelInspectorPanel(state.inspector);
     ui::drawStatsPanel(state.stats, editor.caps, int(state.lights.size()), &editor.render, editor.renderReason);

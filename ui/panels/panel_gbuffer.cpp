@@ -21,7 +21,8 @@ namespace {
 // Shift+drag draws the statistics region, right-click picks the magnifier's texel; `marker` is a
 // texel hovered in another viewer (Sync), outlined here.
 std::optional<glm::ivec2> viewerImage(ViewerState& v, unsigned texture, glm::ivec2 imageSize, bool& clicked,
-                                      std::optional<glm::ivec2> marker, glm::vec4& fittedRect) {
+                                      std::optional<glm::ivec2> marker, std::optional<glm::ivec2> locked,
+                                      glm::vec4& fittedRect) {
     ImVec2 const avail = ImGui::GetContentRegionAvail();
     ImVec2 const origin = ImGui::GetCursorScreenPos();
     if (avail.x < 4.0f || avail.y < 4.0f || imageSize.x <= 0 || imageSize.y <= 0) return std::nullopt;
@@ -77,6 +78,7 @@ std::optional<glm::ivec2> viewerImage(ViewerState& v, unsigned texture, glm::ive
     if (v.region) outlineTexels(dl, p0, fullNow, imageSize, v.region->min, v.region->max, IM_COL32(255, 255, 255, 230));
     if (v.picked) outlineTexels(dl, p0, fullNow, imageSize, *v.picked, *v.picked + 1, IM_COL32(255, 160, 0, 255));
     if (marker) outlineTexels(dl, p0, fullNow, imageSize, *marker, *marker + 1, IM_COL32(0, 255, 255, 255));
+    if (locked) markLockedPixel(dl, p0, fullNow, imageSize, *locked);
     dl->PopClipRect();
 
     if (hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
@@ -179,7 +181,8 @@ void viewerToolbar(GBufferPanelState& state, std::size_t i) {
 
 }  // namespace
 
-void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& textures, glm::ivec2 imageSize) {
+void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& textures, glm::ivec2 imageSize,
+                      std::optional<glm::ivec2> lockedPixel) {
     std::optional<glm::ivec2> const previousHover = state.hoverPixel;
     state.hoverPixel.reset();
     state.showInViewport.reset();
@@ -214,7 +217,8 @@ void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& t
                 std::optional<glm::ivec2> const marker = state.syncViews ? previousHover : std::nullopt;
                 ImVec2 const imageOrigin = ImGui::GetCursorScreenPos();
                 float const cellWidth = ImGui::GetContentRegionAvail().x;
-                if (auto texel = viewerImage(v, textures[i], imageSize, clicked, marker, state.imageRects[i])) {
+                if (auto texel =
+                        viewerImage(v, textures[i], imageSize, clicked, marker, lockedPixel, state.imageRects[i])) {
                     state.hoverPixel = texel;
                     if (!state.showMagnifier || !v.picked) state.activeViewer = int(i);
                 }

@@ -338,7 +338,7 @@ void teachingRow(ViewportTeaching& t, PipelineSettings const& settings) {
 
 void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin& litPin, ViewportTools& tools,
                        unsigned texture, glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight,
-                       ViewportTeaching* ab) {
+                       ViewportTeaching* ab, std::optional<glm::ivec2> lockedPixel) {
     state.hovered = false;
     state.hoverPixel.reset();
     state.clickPixel.reset();
@@ -423,6 +423,12 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         dl->PushClipRect(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), true);
         dl->AddCircle(c, 11.0f, IM_COL32(0, 0, 0, 200), 24, 3.0f);
         dl->AddCircle(c, 11.0f, IM_COL32(255, 230, 80, 255), 24, 1.5f);
+        dl->PopClipRect();
+    }
+    if (lockedPixel && textureSize.x > 0 && textureSize.y > 0) {
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        dl->PushClipRect(origin, imageEnd, true);
+        markLockedPixel(dl, origin, avail, textureSize, *lockedPixel);
         dl->PopClipRect();
     }
     // The tools' Shift+drag and Shift+right-click are theirs, not the camera's.

@@ -6,6 +6,7 @@
 #include "panels/gui_compat.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace gbl::ui {
 
@@ -101,6 +102,18 @@ void outlineTexels(ImDrawList* dl, ImVec2 p0, ImVec2 full, glm::ivec2 imageSize,
     float const tw = full.x / float(imageSize.x), th = full.y / float(imageSize.y);
     dl->AddRect(ImVec2(p0.x + float(a.x) * tw, p0.y + float(a.y) * th),
                 ImVec2(p0.x + float(b.x) * tw, p0.y + float(b.y) * th), colour, 0.0f, 0, 1.5f);
+}
+
+void markLockedPixel(ImDrawList* dl, ImVec2 p0, ImVec2 full, glm::ivec2 imageSize, glm::ivec2 pixel) {
+    ImVec2 const c(p0.x + (float(pixel.x) + 0.5f) * full.x / float(imageSize.x),
+                   p0.y + (float(pixel.y) + 0.5f) * full.y / float(imageSize.y));
+    for (auto [colour, width] :
+         {std::pair{IM_COL32(0, 0, 0, 220), 3.0f}, std::pair{IM_COL32(255, 255, 255, 255), 1.0f}}) {
+        dl->AddLine(ImVec2(c.x - 9, c.y), ImVec2(c.x - 3, c.y), colour, width);
+        dl->AddLine(ImVec2(c.x + 3, c.y), ImVec2(c.x + 9, c.y), colour, width);
+        dl->AddLine(ImVec2(c.x, c.y - 9), ImVec2(c.x, c.y - 3), colour, width);
+        dl->AddLine(ImVec2(c.x, c.y + 3), ImVec2(c.x, c.y + 9), colour, width);
+    }
 }
 
 // --- the viewport's tools -----------------------------------------------------------------

@@ -28,6 +28,9 @@ void viewerControls(ViewerState& v, bool stencilChoice);
 // Outline of the texels a (inclusive) .. b (exclusive) on an image drawn at p0 with size full.
 void outlineTexels(ImDrawList* dl, ImVec2 p0, ImVec2 full, glm::ivec2 imageSize, glm::ivec2 a, glm::ivec2 b,
                    ImU32 colour);
+// The pixel inspector's locked pixel on an image drawn at p0 with size full: a black-and-white
+// cross with a gap, so the pixel itself stays visible over any picture. The caller clips.
+void markLockedPixel(ImDrawList* dl, ImVec2 p0, ImVec2 full, glm::ivec2 imageSize, glm::ivec2 pixel);
 // Header counts ("NaN 3  Inf 0  neg 12") once the tools have statistics.
 void viewerHeaderCounts(ViewerState const& v, ViewerData const& d);
 // The row of tool toggles: histogram, colormap, overlays, pin, diff.
