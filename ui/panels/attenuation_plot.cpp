@@ -54,7 +54,8 @@ void polyline(ImDrawList* dl, Axes const& axes, AttenuationCurve const& c, std::
 }
 }  // namespace
 
-void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size, float fixedMaxDistance) {
+void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size, float fixedMaxDistance,
+                         std::optional<float> pixelDistance) {
     AttenuationCurve const c = sampleAttenuationCurve(light, 128, fixedMaxDistance);
     ImDrawList* dl = ImGui::GetWindowDrawList();
     ImVec2 const p0 = ImGui::GetCursorScreenPos();
@@ -83,11 +84,26 @@ void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size, fl
         std::snprintf(label, sizeof label, "r = %.2f", c.radius);
         dl->AddText(ImVec2(std::min(r0.x + 3, p1.x - 70), p0.y + 1), IM_COL32(90, 200, 255, 255), label);
     }
+    if (pixelDistance && *pixelDistance > c.maxDistance) {
+        // Past the axis: said at its end, so the user knows the light adds nothing there.
+        char label[48];
+        std::snprintf(label, sizeof label, "pixel at %.2f: past the axis", *pixelDistance);
+        float const w = ImGui::CalcTextSize(label).x;
+        dl->AddText(ImVec2(std::max(p1.x - w - 4, p0.x + 2), p1.y - 28), IM_COL32(255, 160, 0, 255), label);
+    } else if (pixelDistance && *pixelDistance >= 0.0f) {
+        // The inspected pixel: where it sits on the curve is what the light adds there.
+        ImVec2 const q0 = axes.at(*pixelDistance, axes.yTop), q1 = axes.at(*pixelDistance, axes.yBottom);
+        dl->AddLine(q0, q1, IM_COL32(255, 160, 0, 220), 1.0f);
+        char label[48];
+        std::snprintf(label, sizeof label, "pixel %.2f", *pixelDistance);
+        float const w = ImGui::CalcTextSize(label).x;
+        dl->AddText(ImVec2(std::clamp(q0.x + 3, p0.x + 2, p1.x - w - 2), p1.y - 28), IM_COL32(255, 160, 0, 255), label);
+    }
     polyline(dl, axes, c, c.classic, IM_COL32(150, 150, 150, 160), 1.0f);
     polyline(dl, axes, c, c.applied, IM_COL32(255, 255, 255, 255), 2.0f);
     // Legend, top left: the bright curve is what the renderer adds, the faint one the textbook form.
     dl->AddText(ImVec2(p0.x + 6, p0.y + 16), IM_COL32(255, 255, 255, 255), "applied");
-    dl->AddText(ImVec2(p0.x + 6, p0.y + 30), IM_COL32(150, 150, 150, 255), "1/(Kc+Kl d+Kq d^2)");
+    dl->AddText(ImVec2(p0.x + 6, p0.y + 30), IM_COL32(150, 150, 150, 255), "1/(Kc+Kl d+Kq d²)");
     char axisLabel[64];
     std::snprintf(axisLabel, sizeof axisLabel, "0 .. %.2f units%s%s", c.maxDistance, logScale ? "  (log)" : "",
                   fixedMaxDistance > 0.0f ? "  (fixed)" : "");

@@ -112,7 +112,7 @@ bool drawKindFields(PointLight& edited) {
     return changed;
 }
 
-void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
+void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights, std::optional<float> pixelDistance) {
     if (state.selected < 0 || state.selected >= int(lights.size())) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         ImGui::TextWrapped("Select a light in the list or click its cube in the viewport.");
@@ -221,14 +221,14 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
     float const plotH = std::clamp(ImGui::GetContentRegionAvail().y - 4.0f - coneH, 160.0f,
                                    std::max(160.0f, ImGui::GetFontSize() * 18.0f));
     drawAttenuationPlot(light, state.plotLogScale, ImVec2(ImGui::GetContentRegionAvail().x, plotH),
-                        state.plotFixedAxis ? state.plotAxisMax : 0.0f);
+                        state.plotFixedAxis ? state.plotAxisMax : 0.0f, pixelDistance);
     if (light.kind == LightKind::Spot) drawConePlot(light, ImVec2(ImGui::GetContentRegionAvail().x, coneH));
 }
 
 }  // namespace
 
 void drawLightsPanel(LightsPanelState& state, std::vector<PointLight>& lights, LightAnimation& animation,
-                     Bounds const& sceneBounds) {
+                     Bounds const& sceneBounds, std::optional<float> pixelDistance) {
     placeWindow(EditorWindow::Lights);
     if (ImGui::Begin(windowName(EditorWindow::Lights), nullptr, editorWindowFlags())) {
         if (state.selected >= int(lights.size())) state.selected = int(lights.size()) - 1;
@@ -273,7 +273,7 @@ void drawLightsPanel(LightsPanelState& state, std::vector<PointLight>& lights, L
 
         drawList(state, lights);
         if (!state.message.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", state.message.c_str());
-        drawSelected(state, lights);
+        drawSelected(state, lights, pixelDistance);
     }
     ImGui::End();
 }
