@@ -30,6 +30,7 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     l.layoutItems = {{1000.0f, 430.5f}, {1000.0f, 450.5f}};
     l.toolsImage = {1262, 611};
     l.toolsRegion = {10, 20, 120, 60};
+    l.viewerImages = {{4, 520, 244, 140}, {260, 520, 244, 140}};
     nlohmann::json const j = nlohmann::json::parse(frameLogJson(l));
     EXPECT_EQ(j["frame"], 41);
     EXPECT_EQ(j["rendered"], true);
@@ -37,6 +38,10 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     EXPECT_DOUBLE_EQ(j["camera"][1].get<double>(), -2.0);
     EXPECT_EQ(j["selectedLight"], 7);
     EXPECT_DOUBLE_EQ(j["viewport"][2].get<double>(), 640.0);
+    // Flat: x, y, width, height of each viewer in turn (the tests' shell reader takes no nesting).
+    ASSERT_EQ(j["viewerImages"].size(), 8u);
+    EXPECT_DOUBLE_EQ(j["viewerImages"][4].get<double>(), 260.0);
+    EXPECT_DOUBLE_EQ(j["viewerImages"][7].get<double>(), 140.0);
     EXPECT_EQ(j["accumulate"], 3);
     EXPECT_DOUBLE_EQ(j["scrubber"][2].get<double>(), 160.0);
     EXPECT_DOUBLE_EQ(j["abToggle"][0].get<double>(), 0.0);

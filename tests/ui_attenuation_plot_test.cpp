@@ -44,6 +44,24 @@ TEST(UiAttenuationPlot, LightBelowThresholdHasAnAxisButNoRadius) {
     for (float v : c.applied) EXPECT_EQ(v, 0.0f);
 }
 
+// Issue 26: with the axis held, a smaller Kq (a larger radius) moves the curve instead of
+// rescaling the axis under it: the value at a fixed distance grows.
+TEST(UiAttenuationPlot, AFixedAxisShowsAChangeOfKq) {
+    PointLight light;
+    light.kq = 2.4f;
+    float const axis = 2.0f * lightRadius(light).radius;
+    AttenuationCurve const before = sampleAttenuationCurve(light, 33, axis);
+    light.kq = 0.84f;
+    AttenuationCurve const after = sampleAttenuationCurve(light, 33, axis);
+    EXPECT_FLOAT_EQ(before.maxDistance, axis);
+    EXPECT_FLOAT_EQ(after.maxDistance, axis);
+    EXPECT_FLOAT_EQ(before.distance.back(), after.distance.back());
+    EXPECT_GT(after.radius, before.radius);
+    std::size_t const middle = 8;  // a quarter of the axis: inside both radii
+    ASSERT_LT(before.distance[middle], before.radius);
+    EXPECT_GT(after.applied[middle], before.applied[middle]);
+}
+
 TEST(UiAttenuationPlot, TheConePlotIsTheSpotsFactorFromOneToZero) {
     PointLight light;
     light.kind = LightKind::Spot;

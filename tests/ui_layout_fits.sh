@@ -3,6 +3,9 @@
 # editor runs a few frames with --log-frames and the last frame's "clipped" list must be empty
 # (every window, the G-buffer strip included), at start, with the viewer tools' rows open, and with
 # a count heat map shown and the pixel inspector's exact-count line.
+# The images are the point (issue 26): in every run the frame log's rectangles must show each
+# G-buffer viewer's image at least 240 px wide at 1280x720 (280 px at 1600x900) and the viewport's
+# image at least 40 % of the window's width and of its height, whatever tools are open.
 # usage: ui_layout_fits.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
 set -eu
 bin="$1"
@@ -22,6 +25,18 @@ viewer-pin albedo
 frames 2
 viewer-tool albedo diff on
 frames 4
+# A pinned lit frame survives the viewport's toolbar: Tools off and on again, with a histogram,
+# leave the frame its size, so the pin stays comparable (issue 26: it used to take three presses).
+set view depth
+pin-lit
+frames 2
+lit-diff on
+viewport-tools off
+frames 2
+viewport-tools on
+viewer-tool viewport histogram on
+frames 3
+expect-lit-diff pixels > 1000
 SCRIPT
 # The third shows the lights-per-cluster heat map with its labelled legend, the inspector locked
 # on a surface pixel (its count line).
@@ -32,6 +47,23 @@ set view heatmap
 inspect 300 250
 frames 4
 SCRIPT
+# image_sizes LINE WxH: the viewers' image widths and the viewport image's size, with FAIL after
+# each that is too small.
+image_sizes() {
+    viewers=$(field viewerImages "$1" | tr -d '[]')
+    viewport=$(field viewport "$1" | tr -d '[]')
+    echo "$2 $viewers $viewport" | awk -F'[ ,x]' '{
+        w = $1; h = $2; least = w >= 1600 ? 280 : 240; out = "viewer widths"
+        if (NF - 2 != 24) { print "FAIL: expected 5 viewer and 1 viewport rectangles"; exit }
+        for (i = 0; i < 5; ++i) {
+            vw = $(3 + 4 * i + 2); out = out " " int(vw) (vw < least ? " FAIL" : "")
+        }
+        ww = $(3 + 20 + 2); wh = $(3 + 20 + 3)
+        out = out "; viewport " int(ww) "x" int(wh)
+        if (ww < 0.4 * w || wh < 0.4 * h) out = out " FAIL"
+        print out
+    }'
+}
 status=0
 for size in 1280x720 1600x900; do
     for run in start tools heat; do
@@ -41,6 +73,9 @@ for size in 1280x720 1600x900; do
         [ "$run" = heat ] && set -- --ui-test "$work/heat.txt"
         "$bin" --size "$size" --no-vsync "$@" --log-frames "$log" > "$work/editor-$size-$run.log" 2>&1 ||
             { cat "$work/editor-$size-$run.log"; echo "ui_layout_fits: FAIL: the editor failed at $size ($run)"; exit 1; }
+        sizes=$(image_sizes "$(tail -n 1 "$log")" "$size")
+        echo "$size ($run): $sizes"
+        case "$sizes" in *FAIL*) echo "ui_layout_fits: FAIL: images too small at $size ($run)"; status=1 ;; esac
         clipped=$(clipped_list "$(tail -n 1 "$log")")
         echo "$size ($run): cut off: ${clipped:-nothing}"
         if [ -n "$clipped" ]; then

@@ -46,3 +46,19 @@ TEST(UiLayout, ViewportIsTheLargestWindow) {
         EXPECT_GT(v.size.x * v.size.y, r.size.x * r.size.y) << kEditorWindowNames[i];
     }
 }
+
+// Issue 26: every attachment readable at once. The strip spans the work area, so each of the five
+// viewers gets a fifth of it: 256 px at 1280 wide, room for a 240 px image beside the cell
+// padding and borders (the editor's frame log measures the drawn images: ui_layout_fits.sh).
+TEST(UiLayout, EachViewerGetsAFifthOfTheWidth) {
+    for (glm::vec2 size : {glm::vec2(1280, 701), glm::vec2(1600, 881)}) {
+        TileRect const strip = tiledRect(EditorWindow::GBuffer, {0, 19}, size);
+        EXPECT_EQ(strip.size.x, size.x);
+        EXPECT_GE(strip.size.x / 5.0f, 250.0f) << size.x;
+        // Tall enough for the one-line toolbar over an image of the frame's aspect at 240 px.
+        EXPECT_GE(strip.size.y, 200.0f) << size.y;
+        TileRect const v = tiledRect(EditorWindow::Viewport, {0, 19}, size);
+        EXPECT_GE(v.size.x, 0.4f * size.x);
+        EXPECT_GE(v.size.y, 0.4f * (size.y + 19.0f));
+    }
+}

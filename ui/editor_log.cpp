@@ -47,6 +47,7 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.textInput = ImGui::GetIO().WantTextInput;
     line.viewportHovered = state.viewport.hovered;
     line.viewport = state.viewport.imageRect;
+    line.viewerImages.assign(state.gbuffer.imageRects.begin(), state.gbuffer.imageRects.end());
     line.accumulate = state.accumulate.enabled ? state.accumulate.count : -1;
     line.scrubber = state.accumulate.sliderRect;
     line.abToggle = state.ab.toggleRect;

@@ -134,7 +134,13 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     markImGuiDoubleClicks(editor.input);
     EditRequest const edit = drawMainMenu(editor);
     ui::beginLayout(state.layout);
-    ui::drawLightsPanel(state.lightsPanel, state.lights, state.animation, state.sceneBounds);
+    // The inspected pixel's distance from the selected light as drawn (animation included).
+    std::optional<float> pixelDistance;
+    if (int const s = state.lightsPanel.selected;
+        s >= 0 && std::size_t(s) < editor.drawn.size() && state.inspector.sample && state.inspector.sample->covered)
+        pixelDistance =
+            glm::distance(glm::vec3(state.inspector.sample->position), editor.drawn[std::size_t(s)].position);
+    ui::drawLightsPanel(state.lightsPanel, state.lights, state.animation, state.sceneBounds, pixelDistance);
     ui::drawPipelinePanel(state.pipeline,
                           ui::modeReasons([&](LightingMode m) { return editor.renderer->modeUnavailable(m); }),
                           &state.ab, &editor.pipelineRects);
@@ -152,8 +158,9 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     state.viewport.clipPlanes = {state.camera.nearPlane, state.camera.farPlane};
     ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, state.viewportTools, viewportTexture,
                           {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer),
-                          &ab);
-    ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()});
+                          &ab, state.inspector.locked ? state.inspector.pixel : std::nullopt);
+    ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()},
+                         state.inspector.locked ? state.inspector.pixel : std::nullopt);
     ui::drawViewerMagnifier(state.gbuffer, state.viewportTools);
     ui::drawPixelInspectorPanel(state.inspector);
     ui::drawStatsPanel(state.stats, editor.caps, int(state.lights.size()), &editor.render, editor.renderReason);

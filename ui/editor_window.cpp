@@ -3,6 +3,7 @@
 #include "editor_loop.h"
 
 #include "gltf/loader.h"
+#include "panels/fonts.h"
 #include "panels/gui_compat.h"
 #include "panels/panel_log.h"
 #include "panels/panel_scene_loading.h"
@@ -214,7 +215,10 @@ void initImGui(Editor& editor) {
     io.IniFilename = editor.iniPath.empty() ? nullptr : editor.iniPath.c_str();
     ui::enableConfigFlags(io);
     ImGui::StyleColorsDark();
-    ui::loadFonts();
+    if (auto warning = ui::loadUiFont(ui::uiFontPath())) {
+        std::fprintf(stderr, "gbuffer-lab: %s\n", warning->c_str());
+        ui::logMessage(editor.state.log, *warning);
+    }
     float xscale = 1.0f, yscale = 1.0f;
     glfwGetWindowContentScale(editor.window(), &xscale, &yscale);
     ui::applyContentScale(xscale);

@@ -98,14 +98,20 @@ unsigned serviceViewportTools(EditorState& state, Renderer& renderer, FrameInput
 
     // Fits as the G-buffer viewers' (editor_frame.cpp), from this viewer's own read-back.
     bool const autoDue = v.autoFit && (v.lastFitFrame < 0 || (rendered && frame - v.lastFitFrame >= 60));
-    bool const fit = (v.fitRequested || autoDue) && viewerRemaps(v.kind);
+    bool const asked = v.fitRequested;
+    bool const fit = (asked || autoDue) && viewerRemaps(v.kind);
     v.fitRequested = false;
     bool diffChanged = false;
     bool const magnifier = state.gbuffer.showMagnifier && state.gbuffer.activeViewer == kViewportViewer;
     if (fit || viewerToolsNeedData(v) || magnifier)
         diffChanged = serviceViewerData(v, d, renderer, state.camera, frame, fit);
     if (fit) {
-        ValueRange const r = fitRange(d.values, viewerStatsMask(v), viewerSkip(v.kind));
+        // The lit frame's own auto-fit leaves out the 1 % brightest: the light cubes (drawn at 1.5)
+        // and highlights would otherwise leave the lit surfaces almost black.
+        bool const litAuto = !asked && v.kind == ViewerKind::Lighting;
+        ValueRange const r = litAuto
+                                 ? percentileRange(d.values, viewerStatsMask(v), 0.0f, 99.0f, {}, viewerSkip(v.kind))
+                                 : fitRange(d.values, viewerStatsMask(v), viewerSkip(v.kind));
         if (r.samples > 0) {
             v.rangeMin = r.min;
             v.rangeMax = r.max > r.min ? r.max : r.min + 1e-6f;

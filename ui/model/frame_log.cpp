@@ -55,6 +55,12 @@ std::string frameLogJson(FrameLogLine const& l) {
     auto rect = [&](glm::vec4 r) {
         return "[" + number(r.x) + "," + number(r.y) + "," + number(r.z) + "," + number(r.w) + "]";
     };
+    out += ",\"viewerImages\":[";
+    for (std::size_t i = 0; i < l.viewerImages.size(); ++i) {
+        glm::vec4 const r = l.viewerImages[i];
+        out += (i ? "," : "") + number(r.x) + "," + number(r.y) + "," + number(r.z) + "," + number(r.w);
+    }
+    out += "]";
     out += ",\"accumulate\":" + std::to_string(l.accumulate);
     out += ",\"scrubber\":" + rect(l.scrubber);
     out += ",\"abToggle\":" + rect(l.abToggle);

@@ -29,6 +29,9 @@ struct FrameLogLine {
     bool textInput = false;  // a text field has the keyboard
     bool viewportHovered = false;
     glm::vec4 viewport{0.0f};  // the viewport image in window coordinates: x, y, width, height
+    // Each G-buffer viewer's image at zoom 1 (kViewerNames order), x, y, width, height in window
+    // coordinates, written as one flat array of numbers; all 0 while the window is hidden.
+    std::vector<glm::vec4> viewerImages;
     std::vector<PickableLight> pickable;
     int accumulate = -1;                     // lights the scrubber accumulates; -1 = off
     glm::vec4 scrubber{0.0f};                // the scrubber's slider in window coordinates

@@ -10,30 +10,32 @@ TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize) {
     float const leftW = std::floor(workSize.x * kLeftColumn);
     float const rightW = std::floor(workSize.x * kRightColumn);
     float const centreW = workSize.x - leftW - rightW;
-    float const h = workSize.y;
-    float const stripH = std::floor(h * kViewerStrip);
+    float const stripH = std::floor(workSize.y * kViewerStrip);
+    float const h = workSize.y - stripH;  // the band above the strip
     float const leftTopH = std::floor(h * kLightsShare);
-    float const rightTopH = std::floor(h * kInspectorShare);
+    float const inspectorH = std::floor(h * kInspectorShare);
+    float const lessonsH = std::floor(h * kLessonsShare);
     float const statsH = std::floor(h * kStatsShare);
-    float const lessonsW = std::floor(centreW * kLessonsShare);
     glm::vec2 const p = workPos;
+    float const rightX = leftW + centreW;
     switch (window) {
         case EditorWindow::Lights:
             return {p, {leftW, leftTopH}};
         case EditorWindow::Pipeline:
             return {p + glm::vec2(0, leftTopH), {leftW, h - leftTopH}};
         case EditorWindow::Viewport:
-            return {p + glm::vec2(leftW, 0), {centreW, h - stripH}};
+            return {p + glm::vec2(leftW, 0), {centreW, h}};
         case EditorWindow::GBuffer:
-            return {p + glm::vec2(leftW, h - stripH), {centreW - lessonsW, stripH}};
-        case EditorWindow::Lessons:
-            return {p + glm::vec2(leftW + centreW - lessonsW, h - stripH), {lessonsW, stripH}};
+            return {p + glm::vec2(0, h), {workSize.x, stripH}};
         case EditorWindow::PixelInspector:
-            return {p + glm::vec2(leftW + centreW, 0), {rightW, rightTopH}};
+            return {p + glm::vec2(rightX, 0), {rightW, inspectorH}};
+        case EditorWindow::Lessons:
+            return {p + glm::vec2(rightX, inspectorH), {rightW, lessonsH}};
         case EditorWindow::Stats:
-            return {p + glm::vec2(leftW + centreW, rightTopH), {rightW, statsH}};
+            return {p + glm::vec2(rightX, inspectorH + lessonsH), {rightW, statsH}};
         case EditorWindow::Log:
-            return {p + glm::vec2(leftW + centreW, rightTopH + statsH), {rightW, h - rightTopH - statsH}};
+            return {p + glm::vec2(rightX, inspectorH + lessonsH + statsH),
+                    {rightW, h - inspectorH - lessonsH - statsH}};
     }
     return {};
 }

@@ -28,24 +28,27 @@ struct TileRect {
     glm::vec2 size{0.0f};
 };
 
-// Fractions of the work area: the side columns keep their widths, the centre gets the rest.
-// At 1280x720 the side columns are about 300 px: the narrowest that fits the Lights and Pipeline
-// rows in the built-in 13 px font without cutting a label.
+// Fractions of the work area. The G-buffer strip spans the whole width below the others, so
+// its five viewers get a fifth of the window each (about 250 px at 1280x720: every attachment
+// readable at once, as Unreal's buffer overview); above it the side columns keep their widths
+// and the viewport gets the rest. At 1280x720 the side columns are about 300 px: the narrowest
+// that fits the Lights and Pipeline rows without cutting a label.
 inline constexpr float kLeftColumn = 0.24f;
 inline constexpr float kRightColumn = 0.26f;
-inline constexpr float kViewerStrip = 0.30f;  // share of the centre column below the viewport
-// Shares of the column heights: Lights over Pipeline (each about half, so the Pipeline panel
-// shows all its rows from 1600x900 on); Pixel inspector over Stats over Log on the right.
+// Share of the height below the others: a viewer's one-line toolbar over an image of the
+// frame's aspect at a fifth of the width (the frame is about 1.6:1).
+inline constexpr float kViewerStrip = 0.29f;
+// Shares of the band above the strip: Lights over Pipeline on the left; Pixel inspector over
+// Lessons over Stats over Log on the right.
 inline constexpr float kLightsShare = 0.50f;
-inline constexpr float kInspectorShare = 0.46f;
-inline constexpr float kStatsShare = 0.34f;
-// The Lessons window (its text beside the frame) takes this share of the strip below the
-// viewport, on the right of the G-buffer viewers.
-inline constexpr float kLessonsShare = 0.42f;
+inline constexpr float kInspectorShare = 0.32f;
+inline constexpr float kLessonsShare = 0.38f;  // a step's text and equation without scrolling
+inline constexpr float kStatsShare = 0.15f;
 
-// Where a window sits in the tiled arrangement (no docking): lights over pipeline on the
-// left, viewport over the G-buffer strip in the centre, pixel inspector over stats over log on
-// the right. The rectangles cover the work area exactly, without overlap.
+// Where a window sits in the tiled arrangement (no docking): the G-buffer strip along the
+// bottom; above it lights over pipeline on the left, the viewport in the centre, pixel
+// inspector over lessons over stats over log on the right. The rectangles cover the work area
+// exactly, without overlap.
 TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize);
 
 }  // namespace gbl::ui

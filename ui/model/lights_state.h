@@ -22,6 +22,10 @@ struct LightsPanelState {
     int randomCount = 16;
     std::uint32_t randomSeed = 20240611u;
     bool plotLogScale = false;
+    // The attenuation plot's distance axis held at plotAxisMax instead of following the radius,
+    // so a change of Kq shows as a change of the curve.
+    bool plotFixedAxis = false;
+    float plotAxisMax = 0.0f;
     std::string message;  // why the last edit or request was refused; empty when it was fine
 };
 

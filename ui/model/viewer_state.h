@@ -105,6 +105,9 @@ struct GBufferPanelState {
     bool goToOpen = false;  // Ctrl+G was pressed: the go-to-pixel popup opens
     glm::ivec2 goToInput{0};
     std::array<ViewerData, 5> data{};  // read-backs for the tools, filled by the loop
+    // Each viewer's image at zoom 1 in window coordinates (x, y, width, height) as last drawn, for
+    // the frame log (UI layout, not saved).
+    std::array<glm::vec4, 5> imageRects{};
 
     static std::array<ViewerState, 5> defaultViewers();
 };
@@ -116,7 +119,9 @@ struct GBufferPanelState {
 inline constexpr int kViewportViewer = 5;
 
 struct ViewportTools {
-    bool open = false;  // the viewport's "Tools" toggle
+    // The viewport's "Tools" toggle. On from the start: an attachment picked in "Show" opens
+    // auto-ranged (depth linearised, positions over the scene), not blank white or black.
+    bool open = true;
     ViewerState viewer = defaultViewer();
     ViewerData data;
     // Magnifier and region input of the viewport image (the G-buffer viewers keep theirs).

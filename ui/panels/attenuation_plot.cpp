@@ -9,13 +9,13 @@
 
 namespace gbl::ui {
 
-AttenuationCurve sampleAttenuationCurve(PointLight const& light, int samples) {
+AttenuationCurve sampleAttenuationCurve(PointLight const& light, int samples, float maxDistance) {
     AttenuationCurve c;
     LightRadius const r = lightRadius(light);
     c.radius = r.radius;
     // Show a quarter past the radius so the curve visibly reaches zero; a light without a
     // radius still gets a short axis so the plot is not empty.
-    c.maxDistance = r.radius > 0.0f ? r.radius * 1.25f : 1.0f;
+    c.maxDistance = maxDistance > 0.0f ? maxDistance : r.radius > 0.0f ? r.radius * 1.25f : 1.0f;
     float const imax = lightImax(light);
     samples = std::max(samples, 2);
     for (int i = 0; i < samples; ++i) {
@@ -54,8 +54,9 @@ void polyline(ImDrawList* dl, Axes const& axes, AttenuationCurve const& c, std::
 }
 }  // namespace
 
-void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size) {
-    AttenuationCurve const c = sampleAttenuationCurve(light, 128);
+void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size, float fixedMaxDistance,
+                         std::optional<float> pixelDistance) {
+    AttenuationCurve const c = sampleAttenuationCurve(light, 128, fixedMaxDistance);
     ImDrawList* dl = ImGui::GetWindowDrawList();
     ImVec2 const p0 = ImGui::GetCursorScreenPos();
     ImVec2 const p1(p0.x + size.x, p0.y + size.y);
@@ -76,20 +77,36 @@ void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size) {
     ImVec2 const t0 = axes.at(0.0f, light.threshold), t1 = axes.at(c.maxDistance, light.threshold);
     dl->AddLine(t0, t1, IM_COL32(230, 180, 60, 200), 1.0f);
     dl->AddText(ImVec2(t1.x - 70, t1.y - 14), IM_COL32(230, 180, 60, 255), "threshold");
-    if (c.radius > 0.0f) {
+    if (c.radius > 0.0f && c.radius <= c.maxDistance) {
         ImVec2 const r0 = axes.at(c.radius, axes.yTop), r1 = axes.at(c.radius, axes.yBottom);
         dl->AddLine(r0, r1, IM_COL32(90, 200, 255, 220), 1.5f);
         char label[48];
         std::snprintf(label, sizeof label, "r = %.2f", c.radius);
         dl->AddText(ImVec2(std::min(r0.x + 3, p1.x - 70), p0.y + 1), IM_COL32(90, 200, 255, 255), label);
     }
+    if (pixelDistance && *pixelDistance > c.maxDistance) {
+        // Past the axis: said at its end, so the user knows the light adds nothing there.
+        char label[48];
+        std::snprintf(label, sizeof label, "pixel at %.2f: past the axis", *pixelDistance);
+        float const w = ImGui::CalcTextSize(label).x;
+        dl->AddText(ImVec2(std::max(p1.x - w - 4, p0.x + 2), p1.y - 28), IM_COL32(255, 160, 0, 255), label);
+    } else if (pixelDistance && *pixelDistance >= 0.0f) {
+        // The inspected pixel: where it sits on the curve is what the light adds there.
+        ImVec2 const q0 = axes.at(*pixelDistance, axes.yTop), q1 = axes.at(*pixelDistance, axes.yBottom);
+        dl->AddLine(q0, q1, IM_COL32(255, 160, 0, 220), 1.0f);
+        char label[48];
+        std::snprintf(label, sizeof label, "pixel %.2f", *pixelDistance);
+        float const w = ImGui::CalcTextSize(label).x;
+        dl->AddText(ImVec2(std::clamp(q0.x + 3, p0.x + 2, p1.x - w - 2), p1.y - 28), IM_COL32(255, 160, 0, 255), label);
+    }
     polyline(dl, axes, c, c.classic, IM_COL32(150, 150, 150, 160), 1.0f);
     polyline(dl, axes, c, c.applied, IM_COL32(255, 255, 255, 255), 2.0f);
     // Legend, top left: the bright curve is what the renderer adds, the faint one the textbook form.
     dl->AddText(ImVec2(p0.x + 6, p0.y + 16), IM_COL32(255, 255, 255, 255), "applied");
-    dl->AddText(ImVec2(p0.x + 6, p0.y + 30), IM_COL32(150, 150, 150, 255), "1/(Kc+Kl d+Kq d^2)");
+    dl->AddText(ImVec2(p0.x + 6, p0.y + 30), IM_COL32(150, 150, 150, 255), "1/(Kc+Kl d+Kq d²)");
     char axisLabel[64];
-    std::snprintf(axisLabel, sizeof axisLabel, "0 .. %.2f units%s", c.maxDistance, logScale ? "  (log)" : "");
+    std::snprintf(axisLabel, sizeof axisLabel, "0 .. %.2f units%s%s", c.maxDistance, logScale ? "  (log)" : "",
+                  fixedMaxDistance > 0.0f ? "  (fixed)" : "");
     dl->AddText(ImVec2(p0.x + 4, p1.y - 14), IM_COL32(160, 160, 160, 255), axisLabel);
 
     if (hovered && c.maxDistance > 0.0f) {

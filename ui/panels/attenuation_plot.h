@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include <optional>
 #include <vector>
 
 namespace gbl::ui {
@@ -18,11 +19,15 @@ struct AttenuationCurve {
     std::vector<float> applied;  // Imax * windowedAttenuation: what every lighting mode adds
 };
 
-// Samples both curves from 0 to a little past the radius.
-AttenuationCurve sampleAttenuationCurve(PointLight const& light, int samples);
+// Samples both curves from 0 to a little past the radius, or to maxDistance when it is above 0
+// (a fixed axis).
+AttenuationCurve sampleAttenuationCurve(PointLight const& light, int samples, float maxDistance = 0.0f);
 
 // Draws into a box of `size` at the cursor with ImDrawList; hovering shows the values there.
-void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size);
+// fixedMaxDistance > 0 holds the distance axis there instead of a quarter past the radius;
+// pixelDistance (the inspected pixel's distance from the light) is marked where it is on the axis.
+void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size, float fixedMaxDistance = 0.0f,
+                         std::optional<float> pixelDistance = std::nullopt);
 
 // A spot's cone factor (gbl::spotConeFactor) against the angle from its axis, 0 to a little
 // past the outer angle, with the inner and outer angles marked.

@@ -47,12 +47,6 @@ inline void applyContentScale(float scale) {
 #endif
 }
 
-// Loads the UI font. Both versions ship the same built-in font; 1.92 no longer needs the
-// atlas to be built by hand before the first frame.
-inline void loadFonts() {
-    ImGui::GetIO().Fonts->AddFontDefault();
-}
-
 // A framed child region: 1.86 takes `bool border`, 1.90+ takes ImGuiChildFlags.
 inline bool beginFramedChild(char const* id, ImVec2 size, ImGuiWindowFlags flags = 0) {
 #if IMGUI_VERSION_NUM >= 19000

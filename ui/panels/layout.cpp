@@ -22,22 +22,24 @@ void buildDefaultDockLayout(ImGuiID dockspace, ImGuiViewport const* viewport) {
     ImGui::DockBuilderAddNode(dockspace, ImGuiDockNodeFlags_DockSpace);
     ImGui::DockBuilderSetNodeSize(dockspace, viewport->WorkSize);
 
+    // The G-buffer strip first, along the whole bottom; the columns split what is above it.
     ImGuiID centre = dockspace;
+    ImGuiID const strip = ImGui::DockBuilderSplitNode(centre, ImGuiDir_Down, kViewerStrip, nullptr, &centre);
     ImGuiID const left = ImGui::DockBuilderSplitNode(centre, ImGuiDir_Left, kLeftColumn, nullptr, &centre);
     // The right column is a share of what is left after the left column was taken.
     ImGuiID const right =
         ImGui::DockBuilderSplitNode(centre, ImGuiDir_Right, kRightColumn / (1.0f - kLeftColumn), nullptr, &centre);
-    ImGuiID strip = ImGui::DockBuilderSplitNode(centre, ImGuiDir_Down, kViewerStrip, nullptr, &centre);
-    ImGuiID const lessons = ImGui::DockBuilderSplitNode(strip, ImGuiDir_Right, kLessonsShare, nullptr, &strip);
     ImGuiID leftTop = left;
     ImGuiID const leftBottom =
         ImGui::DockBuilderSplitNode(leftTop, ImGuiDir_Down, 1.0f - kLightsShare, nullptr, &leftTop);
+    // Each split below takes its share of what is still left of the right column.
     ImGuiID rightTop = right;
-    ImGuiID rightMiddle =
-        ImGui::DockBuilderSplitNode(rightTop, ImGuiDir_Down, 1.0f - kInspectorShare, nullptr, &rightTop);
-    // The log's share of what is below the inspector.
-    ImGuiID const rightBottom = ImGui::DockBuilderSplitNode(
-        rightMiddle, ImGuiDir_Down, 1.0f - kStatsShare / (1.0f - kInspectorShare), nullptr, &rightMiddle);
+    ImGuiID lessons = ImGui::DockBuilderSplitNode(rightTop, ImGuiDir_Down, 1.0f - kInspectorShare, nullptr, &rightTop);
+    float const belowLessons = 1.0f - kInspectorShare - kLessonsShare;
+    ImGuiID stats =
+        ImGui::DockBuilderSplitNode(lessons, ImGuiDir_Down, belowLessons / (1.0f - kInspectorShare), nullptr, &lessons);
+    ImGuiID const log =
+        ImGui::DockBuilderSplitNode(stats, ImGuiDir_Down, 1.0f - kStatsShare / belowLessons, nullptr, &stats);
 
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::Viewport), centre);
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::GBuffer), strip);
@@ -46,8 +48,8 @@ void buildDefaultDockLayout(ImGuiID dockspace, ImGuiViewport const* viewport) {
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::Pipeline), leftBottom);
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::PixelInspector), rightTop);
     // Every window gets its own node so all of them are visible at once (no hidden tabs).
-    ImGui::DockBuilderDockWindow(windowName(EditorWindow::Stats), rightMiddle);
-    ImGui::DockBuilderDockWindow(windowName(EditorWindow::Log), rightBottom);
+    ImGui::DockBuilderDockWindow(windowName(EditorWindow::Stats), stats);
+    ImGui::DockBuilderDockWindow(windowName(EditorWindow::Log), log);
     ImGui::DockBuilderFinish(dockspace);
 }
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace gbl::ui {
 
@@ -20,7 +21,8 @@ namespace {
 // Shift+drag draws the statistics region, right-click picks the magnifier's texel; `marker` is a
 // texel hovered in another viewer (Sync), outlined here.
 std::optional<glm::ivec2> viewerImage(ViewerState& v, unsigned texture, glm::ivec2 imageSize, bool& clicked,
-                                      std::optional<glm::ivec2> marker) {
+                                      std::optional<glm::ivec2> marker, std::optional<glm::ivec2> locked,
+                                      glm::vec4& fittedRect) {
     ImVec2 const avail = ImGui::GetContentRegionAvail();
     ImVec2 const origin = ImGui::GetCursorScreenPos();
     if (avail.x < 4.0f || avail.y < 4.0f || imageSize.x <= 0 || imageSize.y <= 0) return std::nullopt;
@@ -32,6 +34,8 @@ std::optional<glm::ivec2> viewerImage(ViewerState& v, unsigned texture, glm::ive
     float const fit = std::min(avail.x / float(imageSize.x), avail.y / float(imageSize.y));
     ImVec2 const full(float(imageSize.x) * fit * v.zoom, float(imageSize.y) * fit * v.zoom);
     ImVec2 const cellCentre(origin.x + avail.x * 0.5f, origin.y + avail.y * 0.5f);
+    glm::vec2 const fitted(float(imageSize.x) * fit, float(imageSize.y) * fit);
+    fittedRect = glm::vec4(cellCentre.x - fitted.x * 0.5f, cellCentre.y - fitted.y * 0.5f, fitted.x, fitted.y);
     auto imageMin = [&] { return ImVec2(cellCentre.x - v.center.x * full.x, cellCentre.y - v.center.y * full.y); };
 
     if (hovered && io.MouseWheel != 0.0f) {
@@ -74,6 +78,7 @@ std::optional<glm::ivec2> viewerImage(ViewerState& v, unsigned texture, glm::ive
     if (v.region) outlineTexels(dl, p0, fullNow, imageSize, v.region->min, v.region->max, IM_COL32(255, 255, 255, 230));
     if (v.picked) outlineTexels(dl, p0, fullNow, imageSize, *v.picked, *v.picked + 1, IM_COL32(255, 160, 0, 255));
     if (marker) outlineTexels(dl, p0, fullNow, imageSize, *marker, *marker + 1, IM_COL32(0, 255, 255, 255));
+    if (locked) markLockedPixel(dl, p0, fullNow, imageSize, *locked);
     dl->PopClipRect();
 
     if (hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
@@ -94,74 +99,130 @@ std::optional<glm::ivec2> viewerImage(ViewerState& v, unsigned texture, glm::ive
     return texel;
 }
 
+// Labels over the image's top-left corner: the zoom, DIFF while the diff is shown and the
+// NaN/Inf/negative counts while overlays are on. Drawn over the image, so they never take its
+// height.
+void imageLabels(ViewerState const& v, ViewerData const& d, ImVec2 origin, float width) {
+    char text[128];
+    int n = 0;
+    text[0] = '\0';
+    auto add = [&](char const* fmt, auto... args) {
+        if (n < 0 || n >= int(sizeof text)) return;
+        if (n > 0) n += std::snprintf(text + n, sizeof text - std::size_t(n), "  ");
+        if (n < int(sizeof text)) n += std::snprintf(text + n, sizeof text - std::size_t(n), fmt, args...);
+    };
+    if (v.zoom > 1.0f) add("x%.1f", double(v.zoom));
+    if (v.showDiff && d.pinned) add("DIFF");
+    if (d.frame >= 0 && v.overlays != 0)
+        add("NaN %ld  Inf %ld  neg %ld", d.stats.nanPixels, d.stats.infPixels, d.stats.negativePixels);
+    if (n <= 0) return;
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    float const wrap = std::max(width - 8.0f, 40.0f);
+    ImVec2 const size = ImGui::CalcTextSize(text, nullptr, false, wrap);
+    ImVec2 const p(origin.x + 4.0f, origin.y + 3.0f);
+    dl->AddRectFilled(ImVec2(p.x - 2, p.y - 1), ImVec2(p.x + size.x + 2, p.y + size.y + 1), IM_COL32(0, 0, 0, 170));
+    ImU32 const colour = v.showDiff && d.pinned ? IM_COL32(255, 180, 50, 255) : IM_COL32(235, 235, 235, 255);
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), p, colour, text, nullptr, wrap);
+}
+
+// The options of the whole G-buffer window, at the foot of every viewer's popover.
+void windowOptions(GBufferPanelState& state) {
+    separatorText("all viewers");
+    ImGui::Checkbox("Redraw all", &state.refreshEveryFrame);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "redraw every viewer every frame; off: one viewer is redrawn per frame in turn (cheaper\n"
+            "on slow GL), and a viewer whose settings change is redrawn at once");
+    ImGui::Checkbox("Sync zoom/pan", &state.syncViews);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("link zoom and pan of all viewers: the same texel under the cursor in each");
+    ImGui::Checkbox("Magnifier", &state.showMagnifier);
+    ImGui::TextDisabled(
+        "click: show in viewport  drag: pan\nwheel: zoom  double-click: reset\nShift+drag: statistics region\n"
+        "right-click: pick texel (magnifier)\narrow keys: step the picked texel\nCtrl+G: go to pixel");
+}
+
+// The viewer's one-line toolbar: its name, the channel toggles, Fit, and "..." for the popover
+// with everything else (range, kind options, histogram, colormap, overlays, pin, diff, region).
+// One line whatever is on, so the image below never changes size.
+void viewerToolbar(GBufferPanelState& state, std::size_t i) {
+    ViewerState& v = state.viewers[i];
+    ViewerData const& d = state.data[i];
+    float const right = rowRightEdge();
+    float const more = ImGui::CalcTextSize("...").x + ImGui::GetStyle().FramePadding.x * 2.0f;
+    ImGui::TextUnformatted(v.kind == ViewerKind::Depth && v.showStencil ? "stencil" : kViewerNames[i].data());
+    ImGui::SameLine();
+    viewerChannelToggles(v);
+    float const fit = ImGui::CalcTextSize("Fit").x + ImGui::GetStyle().FramePadding.x * 2.0f;
+    if (viewerRemaps(v.kind) && ImGui::GetItemRectMax().x + 2.0f + fit + 4.0f + more <= right) {
+        ImGui::SameLine(0, 2);
+        if (ImGui::SmallButton("Fit")) v.fitRequested = true;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("fit the range to the data now (auto-fit: in \"...\")");
+    }
+    ImGui::SameLine();
+    // Right-aligned in the cell, where it is found in every viewer.
+    ImVec2 const at = ImGui::GetCursorScreenPos();
+    ImGui::SetCursorScreenPos(ImVec2(std::max(at.x, right - more), at.y));
+    if (ImGui::SmallButton("...##details")) ImGui::OpenPopup("viewer-details");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("range, %s, histogram, colormap, overlays, pin and diff, region statistics",
+                          v.kind == ViewerKind::Depth ? "linear/stencil" : "display");
+    float const width = ImGui::GetFontSize() * 21.0f;
+    ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, 1e6f));
+    if (ImGui::BeginPopup("viewer-details")) {
+        viewerControls(v, true);
+        viewerToolsRow(v, d);
+        viewerHistogram(v, d);
+        viewerRegionAndDiff(v, d);
+        windowOptions(state);
+        ImGui::EndPopup();
+    }
+}
+
 }  // namespace
 
-void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& textures, glm::ivec2 imageSize) {
+void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& textures, glm::ivec2 imageSize,
+                      std::optional<glm::ivec2> lockedPixel) {
     std::optional<glm::ivec2> const previousHover = state.hoverPixel;
     state.hoverPixel.reset();
     state.showInViewport.reset();
+    state.imageRects.fill(glm::vec4(0.0f));
     placeWindow(EditorWindow::GBuffer);
-    // Five cells narrower than viewerCellMinWidth would cut their controls off: the strip then
-    // scrolls sideways instead (1280x720 with the Lessons window beside it).
-    state.visible = ImGui::Begin(windowName(EditorWindow::GBuffer), nullptr,
-                                 editorWindowFlags() | ImGuiWindowFlags_HorizontalScrollbar);
+    // Little padding above and below: the strip's height is the images'. The images fill the
+    // window exactly, so it never scrolls (a scrollbar coming and going would resize them).
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(ImGui::GetStyle().WindowPadding.x, 3.0f));
+    state.visible =
+        ImGui::Begin(windowName(EditorWindow::GBuffer), nullptr,
+                     editorWindowFlags() | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    ImGui::PopStyleVar();
     if (state.visible) {
-        float const right = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;
-        auto checkWidth = [](char const* label) {
-            return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
-        };
-        ImGui::Checkbox("Redraw all", &state.refreshEveryFrame);
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip(
-                "redraw every viewer every frame; off: one viewer is redrawn per frame in turn (cheaper\n"
-                "on slow GL), and a viewer whose settings change is redrawn at once");
-        sameLineIfRoom(checkWidth("Sync zoom/pan"), right);
-        ImGui::Checkbox("Sync zoom/pan", &state.syncViews);
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("link zoom and pan of all viewers: the same texel under the cursor in each");
-        sameLineIfRoom(checkWidth("Magnifier"), right);
-        ImGui::Checkbox("Magnifier", &state.showMagnifier);
-        sameLineIfRoom(ImGui::CalcTextSize("(?)").x, right);
-        ImGui::TextDisabled("(?)");
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip(
-                "click: show in viewport  drag: pan  wheel: zoom  double-click: reset\n"
-                "Shift+drag: statistics region  right-click: pick texel (magnifier)\n"
-                "arrow keys: step the picked texel  Ctrl+G: go to pixel");
         ImVec2 const avail = ImGui::GetContentRegionAvail();
-        float const width = std::max(avail.x, viewerCellMinWidth() * float(state.viewers.size()));
-        if (ImGui::BeginTable("viewers", 5, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame,
-                              ImVec2(width, avail.y))) {
+        // Five cells narrower than viewerCellMinWidth would cut their toolbars off: the table then
+        // scrolls sideways instead.
+        float const width = viewerCellMinWidth() * float(state.viewers.size());
+        ImGuiTableFlags const scroll = avail.x < width ? ImGuiTableFlags_ScrollX : 0;
+        if (ImGui::BeginTable("viewers", 5, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame | scroll,
+                              avail, scroll ? width : 0.0f)) {
             for (std::size_t i = 0; i < state.viewers.size(); ++i) ImGui::TableSetupColumn(kViewerNames[i].data());
-            ImGui::TableNextRow(ImGuiTableRowFlags_None, ImGui::GetContentRegionAvail().y);
+            ImGui::TableNextRow(ImGuiTableRowFlags_None);
             for (std::size_t i = 0; i < state.viewers.size(); ++i) {
                 ViewerState& v = state.viewers[i];
                 ImGui::TableNextColumn();
                 ImGui::PushID(int(i));
-                ImGui::TextUnformatted(v.kind == ViewerKind::Depth && v.showStencil ? "stencil"
-                                                                                    : kViewerNames[i].data());
-                if (v.zoom > 1.0f) {
-                    ImGui::SameLine();
-                    ImGui::TextDisabled("x%.1f", v.zoom);
-                }
-                if (v.showDiff && state.data[i].pinned) {
-                    ImGui::SameLine();
-                    ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.2f, 1.0f), "DIFF");
-                }
-                viewerHeaderCounts(v, state.data[i]);
-                viewerControls(v, true);
-                viewerToolsRow(v, state.data[i]);
-                viewerHistogram(v, state.data[i]);
-                viewerRegionAndDiff(v, state.data[i]);
+                viewerToolbar(state, i);
                 v.imageSize = imageSize;
                 bool clicked = false;
                 float const zoomBefore = v.zoom;
                 glm::vec2 const centerBefore = v.center;
                 std::optional<glm::ivec2> const marker = state.syncViews ? previousHover : std::nullopt;
-                if (auto texel = viewerImage(v, textures[i], imageSize, clicked, marker)) {
+                ImVec2 const imageOrigin = ImGui::GetCursorScreenPos();
+                float const cellWidth = ImGui::GetContentRegionAvail().x;
+                if (auto texel =
+                        viewerImage(v, textures[i], imageSize, clicked, marker, lockedPixel, state.imageRects[i])) {
                     state.hoverPixel = texel;
                     if (!state.showMagnifier || !v.picked) state.activeViewer = int(i);
                 }
+                imageLabels(v, state.data[i], imageOrigin, cellWidth);
                 if (ImGui::IsItemClicked(ImGuiMouseButton_Right) || clicked) state.activeViewer = int(i);
                 if (clicked) state.showInViewport = viewerDebugView(v);
                 if (state.syncViews && (v.zoom != zoomBefore || v.center != centerBefore)) syncViewers(state, i);

@@ -4,9 +4,13 @@
 
 #include "model/viewer_state.h"
 
+#include <optional>
+
 namespace gbl::ui {
 
-// textures[i]: the view target drawn for viewer i this frame (0 when there is none yet).
-void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& textures, glm::ivec2 imageSize);
+// textures[i]: the view target drawn for viewer i this frame (0 when there is none yet);
+// lockedPixel: the pixel inspector's locked pixel, marked in every viewer.
+void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& textures, glm::ivec2 imageSize,
+                      std::optional<glm::ivec2> lockedPixel = std::nullopt);
 
 }  // namespace gbl::ui

@@ -3,6 +3,7 @@
 
 #include "panels/layout.h"
 #include "panels/panel_file_browser.h"
+#include "panels/wrapped_text.h"
 
 #include <imgui.h>
 
@@ -38,7 +39,7 @@ glm::vec2 itemCentre() {
 
 void drawPicker(LessonState& state, std::span<Lesson const> lessons) {
     if (lessons.empty()) {
-        ImGui::TextWrapped("No lessons were found.");
+        wrappedText("No lessons were found.");
         return;
     }
     state.picked = std::clamp(state.picked, 0, int(lessons.size()) - 1);
@@ -57,7 +58,7 @@ void drawPicker(LessonState& state, std::span<Lesson const> lessons) {
     ImGui::SameLine();
     if (ImGui::Button("Start")) state.startRequest = state.picked;
     state.buttonCentres[0] = itemCentre();
-    ImGui::TextWrapped("%s (%zu steps)", picked.summary.c_str(), picked.steps.size());
+    wrappedText("%s (%zu steps)", picked.summary.c_str(), picked.steps.size());
 }
 
 void drawStep(LessonState& state, Lesson const& lesson, LessonValues const& values) {
@@ -77,15 +78,15 @@ void drawStep(LessonState& state, Lesson const& lesson, LessonValues const& valu
     state.buttonCentres[3] = itemCentre();
     ImGui::SameLine();
     ImGui::TextDisabled("%d / %d", state.step + 1, n);
-    ImGui::TextWrapped("%s: %s", lesson.title.c_str(), step.text.title.c_str());
+    wrappedText("%s: %s", lesson.title.c_str(), step.text.title.c_str());
     ImGui::Separator();
-    ImGui::TextWrapped("%s", substituteLessonText(step.text.look, values).c_str());
+    wrappedText("%s", substituteLessonText(step.text.look, values).c_str());
     ImGui::Spacing();
     ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.0f, 1.0f), "Equation");
-    ImGui::TextWrapped("%s", substituteLessonText(step.text.equation, values).c_str());
+    wrappedText("%s", substituteLessonText(step.text.equation, values).c_str());
     ImGui::Spacing();
     ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.45f, 1.0f), "Question");
-    ImGui::TextWrapped("%s", substituteLessonText(step.text.question, values).c_str());
+    wrappedText("%s", substituteLessonText(step.text.question, values).c_str());
     if (step.claim)
         ImGui::TextDisabled("checked claim: %s", std::string(enumName(kClaimKindNames, step.claim->kind)).c_str());
 }
@@ -122,10 +123,10 @@ void drawLessonsPanel(LessonState& state, std::span<Lesson const> lessons, std::
             ImVec4 const colour =
                 state.messageIsError ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.6f, 0.9f, 0.6f, 1.0f);
             ImGui::PushStyleColor(ImGuiCol_Text, colour);
-            ImGui::TextWrapped("%s", state.message.c_str());
+            wrappedText("%s", state.message.c_str());
             ImGui::PopStyleColor();
         }
-        for (auto const& e : loadErrors) ImGui::TextWrapped("%s", e.c_str());
+        for (auto const& e : loadErrors) wrappedText("%s", e.c_str());
         ImGui::Separator();
         drawAuthoring(state, browser);
     }

@@ -112,7 +112,7 @@ bool drawKindFields(PointLight& edited) {
     return changed;
 }
 
-void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
+void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights, std::optional<float> pixelDistance) {
     if (state.selected < 0 || state.selected >= int(lights.size())) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         ImGui::TextWrapped("Select a light in the list or click its cube in the viewport.");
@@ -199,23 +199,36 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights) {
         return;
     }
     LightRadius const r = lightRadius(light);
+    // The plot is a section of its own, open by default and never squeezed below 160 px: the
+    // curve is what the attenuation terms above are for.
+    if (!ImGui::CollapsingHeader("Attenuation plot", ImGuiTreeNodeFlags_DefaultOpen)) return;
     ImGui::Text("Radius %.3f  (%s)", r.radius, radiusKindText(r.kind));
     ImGui::Text("Imax %.3f  Imax/cut %.1f", lightImax(light),
                 light.threshold > 0.0f ? lightImax(light) / light.threshold : 0.0f);
-    ImGui::SameLine();
     ImGui::Checkbox("log", &state.plotLogScale);
+    ImGui::SameLine();
+    if (ImGui::Checkbox("fixed axis", &state.plotFixedAxis) && state.plotFixedAxis)
+        state.plotAxisMax = r.radius > 0.0f ? r.radius * 1.25f : 1.0f;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("hold the distance axis where it is now, so changing Kq or the cut-off moves the curve");
+    if (state.plotFixedAxis) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 5.0f);
+        ImGui::DragFloat("##axis", &state.plotAxisMax, 0.05f, 0.1f, 1e4f, "0..%.2f", ImGuiSliderFlags_AlwaysClamp);
+    }
     // A spot gets a second, smaller plot: its cone factor against the angle from its axis.
     float const coneH = light.kind == LightKind::Spot ? ImGui::GetFontSize() * 5.0f : 0.0f;
-    float const plotH = std::clamp(ImGui::GetContentRegionAvail().y - 4.0f - coneH, ImGui::GetFontSize() * 5.0f,
-                                   ImGui::GetFontSize() * 18.0f);
-    drawAttenuationPlot(light, state.plotLogScale, ImVec2(ImGui::GetContentRegionAvail().x, plotH));
+    float const plotH = std::clamp(ImGui::GetContentRegionAvail().y - 4.0f - coneH, 160.0f,
+                                   std::max(160.0f, ImGui::GetFontSize() * 18.0f));
+    drawAttenuationPlot(light, state.plotLogScale, ImVec2(ImGui::GetContentRegionAvail().x, plotH),
+                        state.plotFixedAxis ? state.plotAxisMax : 0.0f, pixelDistance);
     if (light.kind == LightKind::Spot) drawConePlot(light, ImVec2(ImGui::GetContentRegionAvail().x, coneH));
 }
 
 }  // namespace
 
 void drawLightsPanel(LightsPanelState& state, std::vector<PointLight>& lights, LightAnimation& animation,
-                     Bounds const& sceneBounds) {
+                     Bounds const& sceneBounds, std::optional<float> pixelDistance) {
     placeWindow(EditorWindow::Lights);
     if (ImGui::Begin(windowName(EditorWindow::Lights), nullptr, editorWindowFlags())) {
         if (state.selected >= int(lights.size())) state.selected = int(lights.size()) - 1;
@@ -260,7 +273,7 @@ void drawLightsPanel(LightsPanelState& state, std::vector<PointLight>& lights, L
 
         drawList(state, lights);
         if (!state.message.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", state.message.c_str());
-        drawSelected(state, lights);
+        drawSelected(state, lights, pixelDistance);
     }
     ImGui::End();
 }

@@ -2,6 +2,7 @@
 // random lights and animation.
 #pragma once
 
+#include <optional>
 #include <vector>
 #include "core/point_light.h"
 #include "model/lights_state.h"
@@ -9,8 +10,9 @@
 
 namespace gbl::ui {
 
-// Edits `lights` in place through the validated operations of light_list.h.
+// Edits `lights` in place through the validated operations of light_list.h. pixelDistance: the
+// inspected pixel's distance from the selected light, marked on the attenuation plot.
 void drawLightsPanel(LightsPanelState& state, std::vector<PointLight>& lights, LightAnimation& animation,
-                     Bounds const& sceneBounds);
+                     Bounds const& sceneBounds, std::optional<float> pixelDistance = std::nullopt);
 
 }  // namespace gbl::ui

@@ -2,6 +2,7 @@
 #include "panels/panel_log.h"
 
 #include "panels/layout.h"
+#include "panels/wrapped_text.h"
 
 #include <imgui.h>
 
@@ -18,7 +19,7 @@ void drawLogPanel(LogState& log) {
         }
         ImGui::Separator();
         ImGui::BeginChild("log-lines");
-        for (auto const& line : log.lines) ImGui::TextWrapped("%s", line.c_str());
+        for (auto const& line : log.lines) wrappedText("%s", line.c_str());
         if (log.scrollToBottom) ImGui::SetScrollHereY(1.0f);
         log.scrollToBottom = false;
         ImGui::EndChild();

@@ -7,6 +7,7 @@
 #include "model/viewer_tools.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
+#include "panels/wrapped_text.h"
 
 #include <imgui.h>
 
@@ -78,18 +79,18 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
                 ImGui::EndTable();
             }
             // The depth as stored (DEPTH32F) with its raw bits, as the magnifier shows them.
-            ImGui::TextWrapped("depth stored %s", storedFloatText(s.depth).c_str());
+            wrappedText("depth stored %s", storedFloatText(s.depth).c_str());
             ImGui::Text("stencil %u", s.stencil);
             // The count a heat map shows as a colour bin, exactly (core/heat_scale.h).
             if (s.coverageView && *s.coverageView == state.settings.view) {
                 std::string const quantity(heatQuantity(*s.coverageView, s.coverageMode));
                 std::string const bin = heatBinRange(heatBin(s.coverage.x));
-                ImGui::TextWrapped("%s: %.0f here (colour of %s), %.0f of them lit it", quantity.c_str(),
-                                   double(s.coverage.x), bin.c_str(), double(s.coverage.y));
+                wrappedText("%s: %.0f here (colour of %s), %.0f of them lit it", quantity.c_str(), double(s.coverage.x),
+                            bin.c_str(), double(s.coverage.y));
             }
             // A layout without the emissive_ao attachment shows emissive 0 and ao 1: say why.
             if (std::string const note = layoutOmissionNote(layoutDesc(state.settings.layout)); !note.empty())
-                ImGui::TextWrapped("emissive,ao not stored: %s", note.c_str());
+                wrappedText("emissive,ao not stored: %s", note.c_str());
             if (s.covered) {
                 float const err = glm::length(glm::vec3(s.position) - s.reconstructedPosition);
                 ImGui::Text("rebuilt from depth is %.3g units off", err);
@@ -122,8 +123,8 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
                 ValueCheck const check = checkStoredValue(stored, b, state.settings);
                 if (!check.agrees) {
                     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.35f, 1.0f));
-                    ImGui::TextWrapped("stored != sum of the lights: off by %.4f (fp16 allows %.4f). Likely: %s",
-                                       check.error, check.allowed, check.cause.c_str());
+                    wrappedText("stored != sum of the lights: off by %.4f (fp16 allows %.4f). Likely: %s", check.error,
+                                check.allowed, check.cause.c_str());
                     ImGui::PopStyleColor();
                 }
             }

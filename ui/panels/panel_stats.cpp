@@ -4,6 +4,7 @@
 #include "core/gbuffer_layout.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
+#include "panels/wrapped_text.h"
 
 #include <imgui.h>
 
@@ -34,7 +35,7 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
             // Render on change: an idle editor shows the last frame again instead of re-rendering it.
             if (render->renderedLastFrame) {
                 ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.4f, 1.0f));
-                ImGui::TextWrapped("Last frame: re-rendered (%s)", renderReason.c_str());
+                wrappedText("Last frame: re-rendered (%s)", renderReason.c_str());
                 ImGui::PopStyleColor();
             } else {
                 ImGui::TextDisabled("Last frame: reused, nothing changed");
@@ -50,7 +51,7 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
         ImGui::Text("Mode run: %s", enumName(kLightingModeNames, f.modeUsed).data());
         if (!f.fallbackReason.empty()) {
             ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
-            ImGui::TextWrapped("%s", f.fallbackReason.c_str());
+            wrappedText("%s", f.fallbackReason.c_str());
             ImGui::PopStyleColor();
         }
         int const offset = stats.count == StatsState::kHistory ? stats.next : 0;
@@ -80,13 +81,12 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
             ImGui::EndTable();
         }
 
-        ImGui::TextWrapped("Lights: %d in the list, %d submitted, %d shaded", lightCount, f.lightsSubmitted,
-                           f.lightsShaded);
+        wrappedText("Lights: %d in the list, %d submitted, %d shaded", lightCount, f.lightsSubmitted, f.lightsShaded);
         if (f.fragmentInvocations)
-            ImGui::TextWrapped("Fragment invocations (lighting): %llu", (unsigned long long)*f.fragmentInvocations);
+            wrappedText("Fragment invocations (lighting): %llu", (unsigned long long)*f.fragmentInvocations);
         else {
             ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-            ImGui::TextWrapped("Fragment invocations: n/a (%s)", caps.pipelineStatisticsUnavailableReason().c_str());
+            wrappedText("Fragment invocations: n/a (%s)", caps.pipelineStatisticsUnavailableReason().c_str());
             ImGui::PopStyleColor();
         }
         ImGui::Text("GL errors this frame: %llu", (unsigned long long)f.glErrors);
@@ -99,20 +99,19 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
             ImGui::TextDisabled("  %s %s: %d B", a.name.data(), texelFormatName(a.format).data(), texelBytes(a.format));
         if (std::string const note = layoutOmissionNote(layout); !note.empty()) {
             ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
-            ImGui::TextWrapped("%s", note.c_str());
+            wrappedText("%s", note.c_str());
             ImGui::PopStyleColor();
         }
-        ImGui::TextWrapped("%.1f MB at %dx%d, %.1f MB at 1080p, %.1f MB at 4K",
-                           layoutMegabytes(layout, f.width, f.height), f.width, f.height,
-                           layoutMegabytes(layout, 1920, 1080), layoutMegabytes(layout, 3840, 2160));
+        wrappedText("%.1f MB at %dx%d, %.1f MB at 1080p, %.1f MB at 4K", layoutMegabytes(layout, f.width, f.height),
+                    f.width, f.height, layoutMegabytes(layout, 1920, 1080), layoutMegabytes(layout, 3840, 2160));
 
         separatorText("Editor cost");
         EditorCost const& c = stats.costAverage;
         double const editor = c.uiCpuMs + c.viewersGpuMs + c.imguiGpuMs;
         ImGui::Text("UI build %.2f ms (CPU)", c.uiCpuMs);
-        ImGui::TextWrapped("Viewers %.2f ms, ImGui draw %.2f ms (GPU)", c.viewersGpuMs, c.imguiGpuMs);
-        ImGui::TextWrapped("Editor total %.2f ms = %.0f%% of the frame", editor,
-                           frameMs > 0.0 ? 100.0 * editor / frameMs : 0.0);
+        wrappedText("Viewers %.2f ms, ImGui draw %.2f ms (GPU)", c.viewersGpuMs, c.imguiGpuMs);
+        wrappedText("Editor total %.2f ms = %.0f%% of the frame", editor,
+                    frameMs > 0.0 ? 100.0 * editor / frameMs : 0.0);
     }
     ImGui::End();
 }

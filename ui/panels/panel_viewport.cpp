@@ -109,16 +109,22 @@ glm::vec4 itemRect() {
     return {a.x, a.y, b.x - a.x, b.y - a.y};
 }
 
-// "Pin lit" holds the lit HDR frame; "Diff" shows |now - pinned| over RGB as the viewers' heat
-// map, with the statistics of both on the row (a row of its own: the toolbar above is full).
-void litPinRow(LitPin& pin) {
+// The viewport's tools, then "Pin lit", which holds the lit HDR frame; "Diff" shows |now - pinned|
+// over RGB as the viewers' heat map, with the statistics of both on the row (a row of its own:
+// the toolbar above is full).
+void litPinRow(LitPin& pin, ViewportTools& tools, DebugView view) {
     ImGui::SetCursorPosX(ImGui::GetCursorPosX() + 6);
+    // The viewport's tools share this row: opening them never adds one.
+    viewportToolsRow(tools, view);
+    if (viewerKindOfView(view)) ImGui::SameLine();
     if (ImGui::Button("Pin lit")) pin.pinRequested = true;
     pin.pinRect = itemRect();
     pin.diffRect = glm::vec4(0.0f);
     ImGui::SameLine();
     if (!pin.pinned) {
-        ImGui::TextDisabled("pin the lit frame to compare later frames with it");
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        fittedText("pin the lit frame to compare later frames with it", "pin to compare");
+        ImGui::PopStyleColor();
         return;
     }
     ImGui::Checkbox("Diff", &pin.showDiff);
@@ -332,7 +338,7 @@ void teachingRow(ViewportTeaching& t, PipelineSettings const& settings) {
 
 void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin& litPin, ViewportTools& tools,
                        unsigned texture, glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight,
-                       ViewportTeaching* ab) {
+                       ViewportTeaching* ab, std::optional<glm::ivec2> lockedPixel) {
     state.hovered = false;
     state.hoverPixel.reset();
     state.clickPixel.reset();
@@ -371,9 +377,8 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
             "W A S D / Q E: fly (shift: faster)    F: frame the selection    Home: the scene's view\n"
             "click a light cube: select it    double-click: select and frame it\n"
             "L: lock the pixel inspector    F1: every shortcut");
-    litPinRow(litPin);
+    litPinRow(litPin, tools, settings.view);
     if (ab) teachingRow(*ab, settings);
-    viewportToolsRow(tools, settings.view);
 
     ImVec2 const avail = ImGui::GetContentRegionAvail();
     ImVec2 const scale = ImGui::GetIO().DisplayFramebufferScale;
@@ -418,6 +423,12 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         dl->PushClipRect(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), true);
         dl->AddCircle(c, 11.0f, IM_COL32(0, 0, 0, 200), 24, 3.0f);
         dl->AddCircle(c, 11.0f, IM_COL32(255, 230, 80, 255), 24, 1.5f);
+        dl->PopClipRect();
+    }
+    if (lockedPixel && textureSize.x > 0 && textureSize.y > 0) {
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        dl->PushClipRect(origin, imageEnd, true);
+        markLockedPixel(dl, origin, avail, textureSize, *lockedPixel);
         dl->PopClipRect();
     }
     // The tools' Shift+drag and Shift+right-click are theirs, not the camera's.

@@ -29,8 +29,9 @@ struct ViewportTeaching {
 };
 // tools: the viewer tools while the view is a G-buffer attachment; the caller passes their view
 // (serviceViewportTools) as texture while they are open.
+// lockedPixel: the pixel inspector's locked pixel (renderer pixels, top-left origin), marked.
 void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin& litPin, ViewportTools& tools,
                        unsigned texture, glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight = std::nullopt,
-                       ViewportTeaching* ab = nullptr);
+                       ViewportTeaching* ab = nullptr, std::optional<glm::ivec2> lockedPixel = std::nullopt);
 
 }  // namespace gbl::ui

@@ -6,6 +6,7 @@
 #include "panels/gui_compat.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace gbl::ui {
 
@@ -15,8 +16,9 @@ constexpr char const* kChannelLabels[4] = {"R", "G", "B", "A"};
 constexpr ImU32 kChannelColours[4] = {IM_COL32(200, 60, 60, 255), IM_COL32(60, 170, 60, 255),
                                       IM_COL32(70, 100, 220, 255), IM_COL32(150, 150, 150, 255)};
 
-// Four small toggles; a single channel alone is shown as grey by the view pass.
-void channelToggles(ViewerState& v) {
+}  // namespace
+
+void viewerChannelToggles(ViewerState& v) {
     for (int c = 0; c < 4; ++c) {
         if (c > 0) ImGui::SameLine(0, 2);
         bool const on = v.channelMask & (1u << c);
@@ -34,15 +36,13 @@ void channelToggles(ViewerState& v) {
     }
 }
 
-}  // namespace
-
 void viewerControls(ViewerState& v, bool stencilChoice) {
     // Cells are narrow at 1280x720: what does not fit beside the channel toggles or the range
     // goes on a row of its own instead of being cut off at the cell's edge.
     float const font = ImGui::GetFontSize();
     float const cellWidth = ImGui::GetContentRegionAvail().x;
     float const cellRight = ImGui::GetCursorScreenPos().x + cellWidth;
-    channelToggles(v);
+    viewerChannelToggles(v);
     if (v.kind == ViewerKind::Normal) {
         if (cellWidth >= font * 12.0f) ImGui::SameLine();
         int mode = int(v.normalDisplay);
@@ -104,6 +104,18 @@ void outlineTexels(ImDrawList* dl, ImVec2 p0, ImVec2 full, glm::ivec2 imageSize,
                 ImVec2(p0.x + float(b.x) * tw, p0.y + float(b.y) * th), colour, 0.0f, 0, 1.5f);
 }
 
+void markLockedPixel(ImDrawList* dl, ImVec2 p0, ImVec2 full, glm::ivec2 imageSize, glm::ivec2 pixel) {
+    ImVec2 const c(p0.x + (float(pixel.x) + 0.5f) * full.x / float(imageSize.x),
+                   p0.y + (float(pixel.y) + 0.5f) * full.y / float(imageSize.y));
+    for (auto [colour, width] :
+         {std::pair{IM_COL32(0, 0, 0, 220), 3.0f}, std::pair{IM_COL32(255, 255, 255, 255), 1.0f}}) {
+        dl->AddLine(ImVec2(c.x - 9, c.y), ImVec2(c.x - 3, c.y), colour, width);
+        dl->AddLine(ImVec2(c.x + 3, c.y), ImVec2(c.x + 9, c.y), colour, width);
+        dl->AddLine(ImVec2(c.x, c.y - 9), ImVec2(c.x, c.y - 3), colour, width);
+        dl->AddLine(ImVec2(c.x, c.y + 3), ImVec2(c.x, c.y + 9), colour, width);
+    }
+}
+
 // --- the viewport's tools -----------------------------------------------------------------
 
 void viewportToolsRow(ViewportTools& tools, DebugView view) {
@@ -111,44 +123,33 @@ void viewportToolsRow(ViewportTools& tools, DebugView view) {
         tools.hoverTexel.reset();
         return;  // the final image and the heat views: no attachment values to read
     }
-    ImGui::SetCursorPosX(ImGui::GetCursorPosX() + 6);
     ImGui::PushStyleColor(ImGuiCol_Button, tools.open ? IM_COL32(70, 110, 170, 255) : IM_COL32(50, 50, 55, 255));
-    if (ImGui::SmallButton("Tools")) tools.open = !tools.open;
+    if (ImGui::Button("Tools")) tools.open = !tools.open;
     ImGui::PopStyleColor();
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "the G-buffer viewers' tools on this attachment (lighting: the HDR values before the\n"
-            "tonemap): range, colormap, histogram, overlays, pin/diff; Shift+drag in the image:\n"
-            "region statistics, Shift+right-click: magnifier texel");
+            "tonemap): range, colormap, histogram, overlays, pin/diff in \"...\"; Shift+drag in the\n"
+            "image: region statistics, Shift+right-click: magnifier texel");
     if (!tools.open) return;
     ViewerState& v = tools.viewer;
     ViewerData const& d = tools.data;
-    ImGui::SameLine();
-    ImGui::TextUnformatted(viewerKindName(v.kind).data());
-    viewerHeaderCounts(v, d);
-    // The rows get the window's padding the image does not have; the controls take a column of
-    // a G-buffer cell's width (they lay themselves out for that), the tool toggles the rest.
-    ImGui::Indent(6.0f);
-    if (ImGui::BeginTable("viewport-tools", 2, ImGuiTableFlags_SizingFixedFit,
-                          ImVec2(ImGui::GetContentRegionAvail().x - 6.0f, 0.0f))) {
-        ImGui::TableSetupColumn("controls", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFontSize() * 20.0f);
-        ImGui::TableSetupColumn("tools", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
+    // Everything else in a popover: the row keeps one line, so the frame never changes size
+    // (which would make a pinned frame incomparable).
+    ImGui::SameLine(0, 2);
+    if (ImGui::Button("...##viewport-tools")) ImGui::OpenPopup("viewport-tools");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("range, channels, histogram, colormap, overlays, pin and diff");
+    float const width = ImGui::GetFontSize() * 22.0f;
+    ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, 1e6f));
+    if (ImGui::BeginPopup("viewport-tools")) {
+        ImGui::TextUnformatted(viewerKindName(v.kind).data());
+        viewerHeaderCounts(v, d);
         viewerControls(v, false);
-        ImGui::TableNextColumn();
         viewerToolsRow(v, d);
-        ImGui::EndTable();
-    }
-    if (v.showHistogram) {
-        ImGui::BeginChild("viewport-histogram",
-                          ImVec2(std::min(ImGui::GetContentRegionAvail().x - 6.0f, ImGui::GetFontSize() * 30.0f),
-                                 ImGui::GetFontSize() * 9.5f));
         viewerHistogram(v, d);
-        ImGui::EndChild();
+        viewerRegionAndDiff(v, d);
+        ImGui::EndPopup();
     }
-    viewerRegionAndDiff(v, d);
-    ImGui::Unindent(6.0f);
 }
 
 bool viewportToolsImage(ViewportTools& tools, ImVec2 origin, ImVec2 size, glm::ivec2 imageSize) {

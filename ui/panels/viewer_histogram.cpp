@@ -2,6 +2,7 @@
 #include "panels/viewer_tools.h"
 
 #include "model/colormap.h"
+#include "panels/wrapped_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -116,7 +117,7 @@ void viewerHistogram(ViewerState& v, ViewerData const& d) {
     }
     // Wrapped: a narrow cell breaks the line instead of cutting it at its edge.
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("%.4g .. %.4g   mean %.4g", d.stats.shown.min, d.stats.shown.max, d.stats.shown.mean);
+    wrappedText("%.4g .. %.4g   mean %.4g", d.stats.shown.min, d.stats.shown.max, d.stats.shown.mean);
     ImGui::PopStyleColor();
     if (remaps) legend(v, ImGui::GetCursorScreenPos(), width, lo, hi);
 }

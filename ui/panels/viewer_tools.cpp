@@ -3,6 +3,7 @@
 
 #include "model/colormap.h"
 #include "panels/gui_compat.h"
+#include "panels/wrapped_text.h"
 
 #include <algorithm>
 #include <bit>
@@ -18,8 +19,12 @@ float mapComboWidth() {
 }  // namespace
 
 float viewerCellMinWidth() {
-    // The histogram's "Fit min/max" button is about as wide; 4 px more keeps both inside.
-    return mapComboWidth() + ImGui::GetStyle().CellPadding.x * 2.0f + 4.0f;
+    ImGuiStyle const& style = ImGui::GetStyle();
+    auto button = [&](char const* label) { return ImGui::CalcTextSize(label).x + style.FramePadding.x * 2.0f; };
+    float const toolbar = ImGui::CalcTextSize("specular").x + style.ItemSpacing.x * 2.0f + button("R") + button("G") +
+                          button("B") + button("A") + 6.0f + button("...");
+    // 4 px more keeps the last button clear of the column border.
+    return toolbar + style.CellPadding.x * 2.0f + 4.0f;
 }
 
 void sameLineIfRoom(float w, float right) {
@@ -123,8 +128,8 @@ void viewerRegionAndDiff(ViewerState& v, ViewerData const& d) {
             for (int c = 0; c < 4; ++c) {
                 if (!(mask & (1u << c))) continue;
                 ChannelStats const& s = d.regionStats.channel[std::size_t(c)];
-                ImGui::TextWrapped("%s min %.4g max %.4g mean %.4g NaN %ld",
-                                   v.kind == ViewerKind::Depth ? "d" : kChannel[c], s.min, s.max, s.mean, s.nan);
+                wrappedText("%s min %.4g max %.4g mean %.4g NaN %ld", v.kind == ViewerKind::Depth ? "d" : kChannel[c],
+                            s.min, s.max, s.mean, s.nan);
             }
         }
         v.regionRowsHeight = ImGui::GetItemRectMax().y - top;
@@ -143,7 +148,7 @@ void viewerRegionAndDiff(ViewerState& v, ViewerData const& d) {
     if (v.showDiff && d.pinned) {
         if (!d.diff.comparable) {
             ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.6f, 0.3f, 1));
-            ImGui::TextWrapped("pinned image has another size; pin again");
+            wrappedText("pinned image has another size; pin again");
             ImGui::PopStyleColor();
             return;
         }
@@ -156,8 +161,8 @@ void viewerRegionAndDiff(ViewerState& v, ViewerData const& d) {
         bool rel = v.diffMode == DiffMode::Relative;
         if (ImGui::Checkbox("rel", &rel)) v.diffMode = rel ? DiffMode::Relative : DiffMode::Absolute;
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("relative: |a - b| / |pinned|");
-        ImGui::TextWrapped("max %.4g at %d,%d  mean %.3g", d.diff.max, d.diff.maxAt.x, d.diff.maxAt.y, d.diff.mean);
-        ImGui::TextWrapped("over %ld of %ld  NaN/Inf %ld", d.diff.overThreshold, d.diff.pixels, d.diff.nanPixels);
+        wrappedText("max %.4g at %d,%d  mean %.3g", d.diff.max, d.diff.maxAt.x, d.diff.maxAt.y, d.diff.mean);
+        wrappedText("over %ld of %ld  NaN/Inf %ld", d.diff.overThreshold, d.diff.pixels, d.diff.nanPixels);
     }
 }
 

@@ -13,19 +13,24 @@ inline constexpr ImU32 kNaNColour = IM_COL32(255, 0, 255, 255);
 inline constexpr ImU32 kInfColour = IM_COL32(0, 255, 0, 255);
 inline constexpr ImU32 kNegativeColour = IM_COL32(0, 255, 255, 255);
 
-// The narrowest a G-buffer viewer cell may be: its widest control that cannot wrap (the colormap
-// combo, wide enough for "viridis") plus the cell's padding. The strip scrolls sideways below
-// five of these rather than cut a control off.
+// The narrowest a G-buffer viewer cell may be: its one-line toolbar (the longest name, the
+// channel toggles and "...") plus the cell's padding. The strip scrolls sideways below five of
+// these rather than cut the toolbar off.
 float viewerCellMinWidth();
 // Puts the next item of width w on the current line when it ends before `right`, else on a new one.
 void sameLineIfRoom(float w, float right);
 
+// Four small toggles R G B A; a single channel alone is shown as grey by the view pass.
+void viewerChannelToggles(ViewerState& v);
 // Channel toggles, range with Fit and auto, and the kind's own options (normals, depth; the
 // depth viewer's stencil switch when stencilChoice).
 void viewerControls(ViewerState& v, bool stencilChoice);
 // Outline of the texels a (inclusive) .. b (exclusive) on an image drawn at p0 with size full.
 void outlineTexels(ImDrawList* dl, ImVec2 p0, ImVec2 full, glm::ivec2 imageSize, glm::ivec2 a, glm::ivec2 b,
                    ImU32 colour);
+// The pixel inspector's locked pixel on an image drawn at p0 with size full: a black-and-white
+// cross with a gap, so the pixel itself stays visible over any picture. The caller clips.
+void markLockedPixel(ImDrawList* dl, ImVec2 p0, ImVec2 full, glm::ivec2 imageSize, glm::ivec2 pixel);
 // Header counts ("NaN 3  Inf 0  neg 12") once the tools have statistics.
 void viewerHeaderCounts(ViewerState const& v, ViewerData const& d);
 // The row of tool toggles: histogram, colormap, overlays, pin, diff.
@@ -36,8 +41,9 @@ void viewerHistogram(ViewerState& v, ViewerData const& d);
 // Shift+drag is on) and the diff statistics when the diff is shown.
 void viewerRegionAndDiff(ViewerState& v, ViewerData const& d);
 // The viewport's tools (issue 15: the viewer tools "in the viewport when it shows an
-// attachment"): a Tools toggle while the view is a G-buffer attachment, then the same rows as a
-// G-buffer cell. Call in the viewport window above its image.
+// attachment"): a Tools toggle while the view is a G-buffer attachment or the lit frame, and
+// while on a "..." popover with the same controls as a G-buffer viewer's. Call on a toolbar
+// row of the viewport; it never adds a row.
 void viewportToolsRow(ViewportTools& tools, DebugView view);
 // Call right after the viewport's image item: Shift+drag sets the region, Shift+right-click the
 // magnifier's texel; draws their outlines. True when the mouse is the tools' (the camera must
