@@ -114,7 +114,8 @@ TEST_F(ViewportToolsGlTest, ViewportToolsDrawTheAttachmentWithTheirRange) {
     state_.pipeline.view = DebugView::DepthLinear;
     render();
     FrameInput const frame{state_.camera, scene_.lights, state_.pipeline, true};
-    // Tools closed: the viewport shows the renderer's own image.
+    // Tools closed (they open with the editor): the viewport shows the renderer's own image.
+    state_.viewportTools.open = false;
     EXPECT_EQ(ui::serviceViewportTools(state_, *renderer_, frame, 1, true, gpu_), 0u);
     state_.viewportTools.open = true;
     state_.pipeline.view = DebugView::Final;
@@ -164,8 +165,15 @@ TEST_F(ViewportToolsGlTest, LightingViewToolsWorkOnTheHdrValues) {
     FrameInput const frame{state_.camera, scene_.lights, state_.pipeline, true};
     state_.viewportTools.open = true;
     state_.viewportTools.viewer.showHistogram = true;
-    unsigned const tex = ui::serviceViewportTools(state_, *renderer_, frame, 1, true, gpu_);
-    ASSERT_NE(tex, 0u);
+    unsigned const autoTex = ui::serviceViewportTools(state_, *renderer_, frame, 1, true, gpu_);
+    ASSERT_NE(autoTex, 0u);
+    // The lit frame's own auto-fit stops at the 99th percentile, below the light cubes and the
+    // brightest highlights, so lit surfaces are not left almost black.
+    float const autoMax = state_.viewportTools.viewer.rangeMax;
+    // Fit takes the whole range.
+    state_.viewportTools.viewer.fitRequested = true;
+    unsigned const tex = ui::serviceViewportTools(state_, *renderer_, frame, 2, false, gpu_);
+    ASSERT_EQ(tex, autoTex);
     ui::ViewerState const& v = state_.viewportTools.viewer;
     ui::ViewerData const& d = state_.viewportTools.data;
     EXPECT_EQ(v.kind, ui::ViewerKind::Lighting);
@@ -181,7 +189,9 @@ TEST_F(ViewportToolsGlTest, LightingViewToolsWorkOnTheHdrValues) {
                 hi = std::max(hi, lit.at(x, y, c));
             }
     ASSERT_GT(hi, lo);
-    // Auto-fit took the RGB min and max of every pixel (the lit frame has no background mask).
+    EXPECT_LT(autoMax, hi);
+    EXPECT_GT(autoMax, lo);
+    // Fit took the RGB min and max of every pixel (the lit frame has no background mask).
     EXPECT_EQ(v.rangeMin, lo);
     EXPECT_EQ(v.rangeMax, hi);
     EXPECT_EQ(d.stats.shown.min, lo);
