@@ -205,14 +205,14 @@ bool beginFrame(Editor& editor, FrameTimes& times) {
 
 // Before a frame estimated to take longer than --frame-warn-seconds (core/frame_cost.h), switches
 // to the mode that gives the same image soonest and says so in the log; with no faster mode, says
-// what the frame will cost. Checked once per mode, light count and size, so a user who switches
-// back has been told and gets the mode they chose.
+// what the frame will cost. Checked once per mode and light count; a user who switches back to the
+// mode it left, with the same lights, has been told and keeps the mode they chose.
 void avoidLongFrame(Editor& editor, glm::ivec2 size) {
     EditorState& state = editor.state;
-    auto const key = std::make_tuple(state.pipeline.mode, editor.drawn.size(), size);
-    if (editor.longFrameChecked == key) return;
+    auto const key = std::make_pair(state.pipeline.mode, editor.drawn.size());
+    if (editor.longFrameChecked == key || size.x <= 0 || size.y <= 0) return;
     editor.longFrameChecked = key;
-    if (size.x <= 0 || size.y <= 0) return;
+    if (editor.longFrameSwitchedFrom == key) return;
     FrameInput const input{state.camera, editor.drawn, state.pipeline};
     auto const warning = longFrameWarning(*editor.renderer, input, editor.options.frameWarnSeconds);
     if (!warning) return;
@@ -220,8 +220,9 @@ void avoidLongFrame(Editor& editor, glm::ivec2 size) {
         ui::logMessage(state.log, "Slow frame ahead: " + warning->message + ".", true);
         return;
     }
+    editor.longFrameSwitchedFrom = key;
     state.pipeline.mode = warning->cheaper->mode;
-    editor.longFrameChecked = std::make_tuple(state.pipeline.mode, editor.drawn.size(), size);
+    editor.longFrameChecked = std::make_pair(state.pipeline.mode, editor.drawn.size());
     ui::logMessage(state.log,
                    "Switched to " + std::string(kLightingModeNames[std::size_t(state.pipeline.mode)]) +
                        " mode: " + warning->message + ". Pipeline > Lighting mode switches back.",

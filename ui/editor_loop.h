@@ -32,7 +32,7 @@
 #include <optional>
 #include <span>
 #include <string>
-#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace gbl {
@@ -129,8 +129,10 @@ struct Editor {
     ui::FrameLog frameLog;                 // --log-frames
     ui::PipelinePanelRects pipelineRects;  // where the Pipeline window drew its layout combo (--log-frames)
     std::vector<PointLight> drawn;         // this frame's lights (animated)
-    // The mode, light count and size last checked for a long frame (avoidLongFrame in editor_frame.cpp).
-    std::optional<std::tuple<LightingMode, std::size_t, glm::ivec2>> longFrameChecked;
+    // The mode and light count last checked for a long frame, and the ones it switched away from
+    // (avoidLongFrame in editor_frame.cpp).
+    std::optional<std::pair<LightingMode, std::size_t>> longFrameChecked;
+    std::optional<std::pair<LightingMode, std::size_t>> longFrameSwitchedFrom;
     // --- lessons (ui/editor_lessons.cpp) ---
     ui::LessonState lessons;
     ui::LessonLibrary lessonLibrary;  // read from assets/lessons on the first frame
