@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/frame_passes.h"
 #include "core/pipeline_settings.h"
 
 #include <cstddef>
@@ -65,6 +66,8 @@ struct FrameStats {
     // The accumulation that ran: split is refused in forward mode (fallbackReason says why).
     LightAccumulation accumulationUsed = LightAccumulation::Single;
     std::string fallbackReason;
+    // The pass the frame stopped after (FrameInput::stopAfter); nullopt: it ran every pass.
+    std::optional<PassId> stoppedAfter = std::nullopt;
 };
 
 // Everything stored at one pixel, read back as floats (for the pixel inspector and tests).
