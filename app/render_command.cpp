@@ -70,6 +70,8 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
                    "Say so before a frame estimated to take longer than this, with a faster mode")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
+    sub.add_option("--until", o.until,
+                   "Stop after pass PASS (e.g. geometry, lighting, depth_copy) and write the frame as it stands");
     sub.parse_complete_callback([&sub, &o] {
         for (char const* name :
              {"--scene", "--lights", "--time", "--blit", "--mode", "--layout", "--accumulation", "--cull", "--size"})
@@ -191,6 +193,11 @@ int runRender(RenderOptions const& o) {
     input.accumulateLights = o.accumulate;
     input.lightContribution = o.contribution;
     warnOfLongFrame(renderer, input, o.warnSeconds);
+    if (o.until) {
+        // Checked against the passes this frame runs (its mode, blit, accumulation, overlays).
+        if (auto why = stopAfterError(*o.until, renderer.framePasses(input))) return badArgument("--until " + *why);
+        input.stopAfter = passFromName(*o.until);
+    }
     FrameStats const stats = renderer.render(input);
 
     FrameExport frame{prepared->camera, prepared->lights, settings, stats, prepared->scene.triangleCount(), views};
@@ -203,6 +210,7 @@ int runRender(RenderOptions const& o) {
     if (o.accumulate)
         accumulated = o.contribution ? ", light " + std::to_string(*o.accumulate) + " alone"
                                      : ", first " + std::to_string(*o.accumulate) + " accumulated";
+    if (stats.stoppedAfter) accumulated += ", stopped after " + std::string(passName(*stats.stoppedAfter));
     std::printf("wrote %s (%dx%d, %d lights%s, %.2f GPU ms, %llu GL errors)\n", o.outDir.c_str(), size->width,
                 size->height, stats.lightsSubmitted, accumulated.c_str(), stats.gpuFrameMs,
                 (unsigned long long)renderer.glErrorCount());

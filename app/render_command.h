@@ -32,6 +32,7 @@ struct RenderOptions {
     std::optional<std::string> saveSessionPath;  // write the session that reproduces this frame
     std::optional<int> accumulate;               // shade with the first K lights only
     bool contribution = false;                   // with --accumulate K: light K alone, no ambient
+    std::optional<std::string> until;            // stop after this pass (core/frame_passes.h names)
     std::set<std::string> given;                 // options given explicitly (they override a session)
     std::optional<std::string> lesson;           // render a lesson step instead (app/lesson_command.cpp)
     std::optional<std::string> lessonsDir;

@@ -161,6 +161,8 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
                       {"timing_reason", frame.stats.timingReason},
                       {"triangles", frame.triangles},
                       {"gl_errors", renderer.glErrorCount()}};
+    // The pass a stopped frame (`render --until`) ended at, before its display pass; null: every pass ran.
+    statsJson["stopped_after"] = frame.stats.stoppedAfter ? json(passName(*frame.stats.stoppedAfter)) : json(nullptr);
     if (frame.stats.fragmentInvocations) statsJson["fragment_invocations"] = *frame.stats.fragmentInvocations;
     // A layout that does not store emission and occlusion says so (emissive.exr is then 0 rgb, 1 a).
     if (std::string const note = layoutOmissionNote(layout); !note.empty()) statsJson["gbuffer_note"] = note;

@@ -286,16 +286,29 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     // which start at input.lights[0] except for a contribution frame (light k alone).
     int outline = outlinedLight(input);
     if (outline >= 0 && input.accumulateLights && input.lightContribution) outline = 0;
-    bool const wireframes =
-        (s.volumeWireframes || (input.accumulateLights && input.outlineAccumulated && outline >= 0)) && volumesReady();
+    bool const wireframes = wireframesDrawn(input);
     bool const volumeInstances = s.mode == LightingMode::Volumes || wireframes;
     if (volumeInstances) prepareVolumeInstances(volumes, {f.camera, f.aspect, f.lights});
 
     // The frame as declared (core/frame_passes.h): checked for feedback loops, and against the
     // passes that ran, in debug builds.
     passesRun.clear();
+    std::optional<PassId> stop = input.stopAfter;
+    if (stop) {
+        std::vector<PassDecl> const all = gbl::framePasses(s, wireframes);
+        if (auto why = stopAfterError(passName(*stop), all)) {
+            stats.fallbackReason += (stats.fallbackReason.empty() ? "" : "; ") + *why + ", so the whole frame ran";
+            stop.reset();
+        } else {
+            stats.stoppedAfter = stop;
+            clearForStop();
+        }
+    }
+    // Whether the frame goes on to its next pass: not once its stop pass has run.
+    auto const runs = [&] { return !stop || std::find(passesRun.begin(), passesRun.end(), *stop) == passesRun.end(); };
 #ifndef NDEBUG
-    std::vector<PassDecl> const declared = framePasses(s, wireframes);
+    std::vector<PassDecl> const declared =
+        stop ? passesUntil(gbl::framePasses(s, wireframes), *stop) : gbl::framePasses(s, wireframes);
     checkNoFeedbackLoops(declared);
 #endif
 
@@ -317,39 +330,41 @@ FrameStats RendererImpl::render(FrameInput const& input) {
             geometryPass({scene, shaders.get(ProgramId::Geometry), targets.gbuffer}, {f.viewProj, s.normalMaps});
         }
         if (frameTestHook) frameTestHook();
-        if (s.mode == LightingMode::Clustered || s.mode == LightingMode::Tiled) {
+        if (runs() && (s.mode == LightingMode::Clustered || s.mode == LightingMode::Tiled)) {
             PassScope const pass = timed(PassId::LightLists);
             buildLightLists(f);
         }
-        if (s.mode == LightingMode::Volumes && targets.volumeDepth) {
+        if (runs() && s.mode == LightingMode::Volumes && targets.volumeDepth) {
             PassScope const pass = timed(PassId::VolumeDepth);
             volumeDepthPass({targets.gbuffer, targets.volumeFbo}, {targets.width, targets.height});
         }
-        {
+        if (runs()) {
             PassScope const pass = timed(PassId::Lighting);
             if (fragmentQuery) fragmentQuery.begin();
             runLighting(f);
             if (fragmentQuery) fragmentQuery.end();
         }
-        if (splitAccumulation(f)) {
+        if (runs() && splitAccumulation(f)) {
             PassScope const pass = timed(PassId::LightCombine);
             combineLights(f);
         }
-        PassScope const pass = timed(PassId::DepthCopy);
-        depthCopyPass({targets.gbuffer, shaders.get(ProgramId::DepthCopy), triangle, targets.litFbo},
-                      {s.depthCopy, targets.width, targets.height});
+        if (runs()) {
+            PassScope const pass = timed(PassId::DepthCopy);
+            depthCopyPass({targets.gbuffer, shaders.get(ProgramId::DepthCopy), triangle, targets.litFbo},
+                          {s.depthCopy, targets.width, targets.height});
+        }
     }
-    {
+    if (runs()) {
         PassScope const pass = timed(PassId::Forward);
         forwardPass({scene, lights, shaders.get(ProgramId::Forward), litTarget()},
                     {MaterialFilter::Blended, f.viewProj, shading, s.normalMaps});
     }
-    if (s.lightCubes) {
+    if (runs() && s.lightCubes) {
         PassScope const pass = timed(PassId::LightCubes);
         lightCubesPass({lights, shaders.get(ProgramId::LightCube), cubeVao, litTarget()},
                        {f.viewProj, lightCubeHalfSize()});
     }
-    if (wireframes) {
+    if (runs() && wireframes) {
         PassScope const pass = timed(PassId::Wireframes);
         // Forward mode leaves the G-buffer empty, so its own depth (in litFbo) is the scene's.
         LitTarget const target =
@@ -364,7 +379,7 @@ FrameStats RendererImpl::render(FrameInput const& input) {
         wireframesPass({lights, volumes, shaders.get(ProgramId::LightVolumeWire), target}, wire);
     }
     // Debug counts for the heat map and tile views, only when one of them is shown.
-    if (viewNeedsCoverage(s.view)) {
+    if (runs() && viewNeedsCoverage(s.view)) {
         PassScope const pass = timed(PassId::Coverage);
         runCoverage(f);
     }
@@ -388,13 +403,45 @@ FrameStats RendererImpl::render(FrameInput const& input) {
         stats.gpuFrameMs += ms;
     }
     // Interactive frames read the count only when it is ready, so they never wait on the GPU.
-    if (fragmentQuery && (input.waitForGpuTimings || fragmentQuery.resultAvailable()))
+    bool const counted = std::find(passesRun.begin(), passesRun.end(),
+                                   s.mode == LightingMode::Forward ? PassId::ForwardShading : PassId::Lighting) !=
+                         passesRun.end();  // a frame stopped before the counted pass began no query
+    if (fragmentQuery && counted && (input.waitForGpuTimings || fragmentQuery.resultAvailable()))
         stats.fragmentInvocations = fragmentQuery.result();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (shaderChecks)
         if (auto report = shaderChecks.collect()) stats.shaderCheckReport = *report;
     stats.glErrors = glErrorCount() - errorsBefore;
     return stats;
+}
+
+bool RendererImpl::wireframesDrawn(FrameInput const& input) {
+    bool const outlined = input.accumulateLights && input.outlineAccumulated && outlinedLight(input) >= 0;
+    return (input.settings.volumeWireframes || outlined) && volumesReady();
+}
+
+std::vector<PassDecl> RendererImpl::framePasses(FrameInput const& input) {
+    PipelineSettings s = input.settings;
+    if (modeUnavailable(s.mode)) s.mode = LightingMode::Quad;  // as render() runs it
+    return gbl::framePasses(s, wireframesDrawn(input));
+}
+
+// A frame that stops early skips the passes that would overwrite these targets: clear them, so the
+// viewers show what this frame drew so far rather than an earlier frame's lighting.
+void RendererImpl::clearForStop() {
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    glStencilMask(0xFF);
+    glClearColor(0, 0, 0, 0);
+    glClearDepth(1.0);
+    glClearStencil(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, targets.litFbo.id());
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    for (gl::Framebuffer const* fbo : {&targets.splitFbo, &targets.coverageFbo}) {
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo->id());
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 // A view of the frame `frame` describes (the last one rendered): coverage views recount from
@@ -455,6 +502,10 @@ std::optional<std::string> Renderer::setScene(SceneData const& scene) {
 
 FrameStats Renderer::render(FrameInput const& input) {
     return impl_->render(input);
+}
+
+std::vector<PassDecl> Renderer::framePasses(FrameInput const& input) {
+    return impl_->framePasses(input);
 }
 
 std::optional<std::string> Renderer::modeUnavailable(LightingMode mode) {

@@ -37,6 +37,13 @@ struct FrameInput {
     bool outlineAccumulated = true;
     // >= 0: the volume wireframes outline this light only (an index into `lights`; past its end: none).
     int wireframeLight = -1;
+    // Stop after this pass: the passes after it are skipped, except the display pass, which shows
+    // the frame as it stands. Such a frame first clears the lit, light and coverage targets, so what
+    // the skipped passes would have drawn reads as zero, not as an earlier frame's. A pass this frame
+    // does not run (Renderer::framePasses) is not an error to render(): the whole frame runs, and
+    // FrameStats::fallbackReason says why (stopAfterError); callers that take a name from a user check
+    // it first (`render --until`).
+    std::optional<PassId> stopAfter = std::nullopt;
 };
 
 // The lights a frame shades: all of them, or the accumulated prefix, or light k alone.
@@ -71,6 +78,9 @@ public:
     // A mode that is unavailable (modeUnavailable) runs the quad pass instead, and the stats'
     // fallbackReason says why.
     FrameStats render(FrameInput const& input);
+
+    // The passes render(input) runs, in order: after any mode fallback, and before any stop.
+    std::vector<PassDecl> framePasses(FrameInput const& input);
 
     // Why `mode` cannot run on this context (a missing GL feature, or a program of the mode that
     // failed to build, with the compiler's reason), in one sentence; nullopt when it can. Builds

@@ -77,6 +77,7 @@ public:
     std::vector<std::string> shaderDefines(GBufferLayout layout) const;
     void drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target);
     std::optional<std::string> modeUnavailable(LightingMode mode);
+    std::vector<PassDecl> framePasses(FrameInput const& input);
     float lightCubeHalfSize() const;
 
     // --- resources -------------------------------------------------------------------------
@@ -113,9 +114,11 @@ private:
     DeferredInputs deferredInputs(FrameContext const& f) const;
     LitTarget litTarget() const { return {targets.litFbo, targets.lighting}; }
     PassScope timed(PassId id) { return {timer, passesRun, id}; }
-    bool volumesReady();    // builds the volume programs and mesh on first use
-    bool tiledReady();      // builds the tiled program on first use
-    bool clusteredReady();  // builds the two clustered programs on first use
+    bool wireframesDrawn(FrameInput const& input);  // volume outlines: the setting, or an accumulated light's
+    void clearForStop();                            // FrameInput::stopAfter: the targets later passes draw
+    bool volumesReady();                            // builds the volume programs and mesh on first use
+    bool tiledReady();                              // builds the tiled program on first use
+    bool clusteredReady();                          // builds the two clustered programs on first use
     LightingClusteredInput clusteredInput(FrameContext const& f);
     LightingClusteredConfig clusteredConfig(FrameContext const& f, bool shade) const;
     TileBinPrograms binPrograms(ProgramId bin) const;  // TileDepth and the mode's binning program

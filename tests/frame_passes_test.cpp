@@ -159,3 +159,28 @@ TEST(FramePasses, NamesRoundTripAndLightingWorkIsDeclared) {
     EXPECT_FALSE(countsAsLighting(PassId::Geometry));
     EXPECT_FALSE(countsAsLighting(PassId::Display));
 }
+
+TEST(FramePasses, StoppingKeepsThePassesUpToTheStopThenTheDisplay) {
+    PipelineSettings s;
+    s.mode = LightingMode::Volumes;
+    s.lightCubes = true;
+    std::vector<PassDecl> const all = framePasses(s, false);
+    EXPECT_EQ(names(passesUntil(all, PassId::Geometry)), (std::vector<std::string>{"geometry", "display"}));
+    EXPECT_EQ(names(passesUntil(all, PassId::Lighting)), (std::vector<std::string>{"geometry", "lighting", "display"}));
+    EXPECT_EQ(passesUntil(all, PassId::Display), all);
+    EXPECT_EQ(passesUntil(all, PassId::Wireframes), all) << "a pass the frame does not run stops nothing";
+}
+
+TEST(FramePasses, AStopOutsideTheFrameIsOneSentenceNamingItsPasses) {
+    PipelineSettings s;
+    s.lightCubes = false;
+    std::vector<PassDecl> const all = framePasses(s, false);
+    EXPECT_EQ(stopAfterError("lighting", all), std::nullopt);
+    EXPECT_EQ(stopAfterError("light_lists", all),
+              "cannot stop after 'light_lists': this frame does not run it; this frame's passes are geometry, "
+              "lighting, depth_copy, forward and display");
+    std::optional<std::string> const unknown = stopAfterError("tonemap", all);
+    ASSERT_TRUE(unknown);
+    EXPECT_NE(unknown->find("no pass has that name"), std::string::npos) << *unknown;
+    EXPECT_EQ(unknown->find('\n'), std::string::npos) << *unknown;
+}

@@ -129,6 +129,9 @@ TEST(RenderCommand, BadArgumentsExitWithCodeTwoAndOneSentence) {
         {{"render", "--out", out, "--layout", "zip"}, "--layout"},
         {{"render", "--out", out, "--accumulation", "double"}, "--accumulation"},
         {{"render", "--out", out, "--view", "xray"}, "--view"},
+        {{"render", "--out", out, "--size", "16x16", "--until", "tonemap"},
+         "this frame's passes are geometry, lighting, depth_copy, forward, light_cubes and display"},
+        {{"render", "--out", out, "--size", "16x16", "--until", "light_lists"}, "this frame does not run it"},
         {{"render", "--out", "/proc/gbuffer-lab-cannot-write-here"}, "/proc/gbuffer-lab-cannot-write-here"},
         {{"render"}, "--out"},
     };
@@ -276,4 +279,23 @@ TEST(RenderCommand, OpenGl33DriverThatListsComputeStillRendersVolumes) {
     // One sentence naming the program and the compiler's reason, not a stack trace or the whole log.
     EXPECT_LE(std::count(tiled.output.begin(), tiled.output.end(), '\n'), 1) << tiled.output;
     EXPECT_NE(tiled.output.find("lighting_tiled"), std::string::npos) << tiled.output;
+}
+
+TEST(RenderCommand, UntilGeometryWritesTheGBufferAndAClearedLitImage) {
+    std::string const out = test::freshTempDir("render_until_geometry");
+    auto const r = runGbufferLab({"render", "--out", out, "--size", "48x32", "--until", "geometry"});
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("stopped after geometry"), std::string::npos) << r.output;
+    auto const stats = test::readJsonFile(fs::path(out) / "stats.json");
+    EXPECT_EQ(stats["stopped_after"], "geometry");
+    EXPECT_EQ(stats["gpu_ms"].size(), 2u) << stats["gpu_ms"].dump();  // geometry, display
+    auto const lighting = readImage(out + "/lighting.exr");
+    auto const albedo = readImage(out + "/albedo.png");
+    ASSERT_TRUE(lighting);
+    ASSERT_TRUE(albedo);
+    float litMax = 0.0f, albedoMax = 0.0f;
+    for (float v : lighting->pixels) litMax = std::max(litMax, std::abs(v));
+    for (float v : albedo->pixels) albedoMax = std::max(albedoMax, v);
+    EXPECT_EQ(litMax, 0.0f) << "nothing lit yet";
+    EXPECT_GT(albedoMax, 0.0f) << "the G-buffer is filled";
 }

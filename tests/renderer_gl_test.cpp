@@ -334,6 +334,104 @@ TEST_F(RendererGlTest, TheTimedPassesAreTheDeclaredOnes) {
     EXPECT_EQ(frames, 4 * 5 * 2 * 2);
 }
 
+namespace {
+float maxAbs(FloatImage const& image, int channels) {
+    float m = 0.0f;
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        if (int(i % std::size_t(image.channels)) < channels) m = std::max(m, std::abs(image.pixels[i]));
+    return m;
+}
+}  // namespace
+
+TEST_F(RendererGlTest, StoppingAfterGeometryLeavesTheLitTargetCleared) {
+    int const w = 48, h = 32;
+    auto r = makeRenderer(w, h);
+    ASSERT_FALSE(r->setScene(test::floorScene()));
+    PointLight light;
+    light.position = {0.0f, 1.0f, 0.0f};
+    std::vector<PointLight> const lights{light};
+    Camera const cam = lookingAt({0, 5, 5}, {0, 0, 0});
+    for (LightingMode mode :
+         {LightingMode::Quad, LightingMode::Volumes, LightingMode::Tiled, LightingMode::Clustered}) {
+        PipelineSettings s = plainSettings();
+        s.mode = mode;
+        s.lightCubes = true;
+        std::string const name(enumName(kLightingModeNames, mode));
+        r->render({cam, lights, s});  // a whole frame first: its light must not survive the stopped one
+        ASSERT_GT(maxAbs(r->readAttachment(Attachment::Lighting), 3), 0.0f) << name;
+        FrameInput input{cam, lights, s};
+        input.stopAfter = PassId::Geometry;
+        FrameStats const st = r->render(input);
+        EXPECT_EQ(st.stoppedAfter, PassId::Geometry) << name;
+        EXPECT_EQ(st.fallbackReason, "") << name;
+        std::vector<std::string> ran;
+        for (auto const& p : st.passes) ran.push_back(p.name);
+        EXPECT_EQ(ran, (std::vector<std::string>{"geometry", "display"})) << name;
+        // Exactly zero: the stopped frame cleared the lit target and nothing drew into it since.
+        EXPECT_EQ(maxAbs(r->readAttachment(Attachment::Lighting), 4), 0.0f) << name;
+        EXPECT_EQ(maxAbs(r->readAttachment(Attachment::Final), 3), 0.0f) << name << ": the display shows it black";
+        // The G-buffer is filled: the floor covers the lower part of the view with its albedo.
+        FloatImage const pos = r->readAttachment(Attachment::Position);
+        FloatImage const alb = r->readAttachment(Attachment::AlbedoSpec);
+        EXPECT_EQ(pos.at(w / 2, h - 1, 3), 1.0f) << name;
+        EXPECT_NEAR(alb.at(w / 2, h - 1, 0), test::kPlaneAlbedo.x, 1.0f / 255.0f) << name;  // RGBA8: one step
+        EXPECT_EQ(st.glErrors, 0u) << name;
+    }
+}
+
+TEST_F(RendererGlTest, StoppingAfterLightingGivesTheLightSumWithoutCubes) {
+    int const w = 48, h = 32;
+    auto r = makeRenderer(w, h);
+    ASSERT_FALSE(r->setScene(test::floorScene()));  // no blended surfaces: the forward pass adds nothing
+    PointLight light;
+    light.position = {0.0f, 1.0f, 0.0f};
+    std::vector<PointLight> const lights{light};
+    Camera const cam = lookingAt({0, 5, 5}, {0, 0, 0});
+    for (LightingMode mode :
+         {LightingMode::Quad, LightingMode::Volumes, LightingMode::Tiled, LightingMode::Clustered}) {
+        std::string const name(enumName(kLightingModeNames, mode));
+        PipelineSettings s = plainSettings();
+        s.mode = mode;
+        s.lightCubes = false;
+        r->render({cam, lights, s});
+        FloatImage const withoutCubes = r->readAttachment(Attachment::Lighting);
+        s.lightCubes = true;
+        r->render({cam, lights, s});
+        FloatImage const withCubes = r->readAttachment(Attachment::Lighting);
+        FrameInput input{cam, lights, s};
+        input.stopAfter = PassId::Lighting;
+        FrameStats const st = r->render(input);
+        EXPECT_EQ(st.stoppedAfter, PassId::Lighting) << name;
+        FloatImage const stopped = r->readAttachment(Attachment::Lighting);
+        ASSERT_EQ(stopped.pixels.size(), withoutCubes.pixels.size());
+        float diffNoCubes = 0.0f, diffCubes = 0.0f;
+        for (std::size_t i = 0; i < stopped.pixels.size(); ++i) {
+            if (i % 4 == 3) continue;  // alpha: not part of the light sum
+            diffNoCubes = std::max(diffNoCubes, std::abs(stopped.pixels[i] - withoutCubes.pixels[i]));
+            diffCubes = std::max(diffCubes, std::abs(stopped.pixels[i] - withCubes.pixels[i]));
+        }
+        EXPECT_GT(maxAbs(stopped, 3), 0.0f) << name << ": the light sum is there";
+        // The same passes drew the same light into the same target: equal to the bit.
+        EXPECT_EQ(diffNoCubes, 0.0f) << name << ": stopped after lighting = a whole frame without cubes";
+        // The cube is drawn at kLightCubeEmissive x white where the floor is far dimmer.
+        EXPECT_GT(diffCubes, 0.5f) << name << ": the full frame with cubes differs by the cube";
+        EXPECT_EQ(st.glErrors, 0u) << name;
+    }
+}
+
+TEST_F(RendererGlTest, AStopThisFrameDoesNotRunIsReportedAndTheWholeFrameRuns) {
+    auto r = makeRenderer(32, 24);
+    ASSERT_FALSE(r->setScene(test::floorScene()));
+    FrameInput input{lookingAt({0, 5, 5}, {0, 0, 0}), {}, plainSettings()};
+    input.stopAfter = PassId::LightLists;  // quad mode builds no light lists
+    EXPECT_EQ(r->framePasses(input).size(), 5u);
+    FrameStats const st = r->render(input);
+    EXPECT_EQ(st.stoppedAfter, std::nullopt);
+    EXPECT_NE(st.fallbackReason.find("cannot stop after 'light_lists'"), std::string::npos) << st.fallbackReason;
+    EXPECT_EQ(st.passes.size(), 5u);
+    EXPECT_EQ(st.glErrors, 0u);
+}
+
 TEST_F(RendererGlTest, EverySamplerReadsTheUnitOfBindingsGlsl) {
     // After linking, the library points each sampler at its slot of shaders/bindings.glsl; a
     // sampler missing from the table would silently read unit 0.

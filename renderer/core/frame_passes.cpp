@@ -224,6 +224,25 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes) {
     return out;
 }
 
+std::vector<PassDecl> passesUntil(std::vector<PassDecl> passes, PassId stop) {
+    auto const last = std::find_if(passes.begin(), passes.end(), [stop](PassDecl const& p) { return p.id == stop; });
+    if (last == passes.end() || last->id == PassId::Display) return passes;
+    PassDecl display = std::move(passes.back());  // always last (framePasses)
+    passes.erase(last + 1, passes.end());
+    passes.push_back(std::move(display));
+    return passes;
+}
+
+std::optional<std::string> stopAfterError(std::string_view name, std::span<PassDecl const> passes) {
+    if (std::any_of(passes.begin(), passes.end(), [name](PassDecl const& p) { return p.name() == name; }))
+        return std::nullopt;
+    std::string known;
+    for (std::size_t i = 0; i < passes.size(); ++i)
+        known += std::string(i == 0 ? "" : i + 1 == passes.size() ? " and " : ", ") + std::string(passes[i].name());
+    std::string const why = passFromName(name) ? "this frame does not run it" : "no pass has that name";
+    return "cannot stop after '" + std::string(name) + "': " + why + "; this frame's passes are " + known;
+}
+
 std::vector<FeedbackLoop> feedbackLoops(std::span<PassDecl const> passes) {
     std::vector<FeedbackLoop> out;
     for (PassDecl const& p : passes) {

@@ -9,6 +9,7 @@
 #include <array>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -144,6 +145,13 @@ std::vector<PassDecl> framePasses(PipelineSettings const& settings, bool wirefra
 inline std::vector<PassDecl> framePasses(PipelineSettings const& settings) {
     return framePasses(settings, settings.volumeWireframes);
 }
+
+// Stopping after a pass (FrameInput::stopAfter): the passes up to and including `stop`, then the
+// display pass, which shows the frame as it stands. `passes` unchanged when `stop` is not among them.
+std::vector<PassDecl> passesUntil(std::vector<PassDecl> passes, PassId stop);
+// Why the frame of `passes` cannot stop after the pass called `name` (no pass has that name, or this
+// frame does not run it), in one sentence naming the passes it runs; nullopt when it can.
+std::optional<std::string> stopAfterError(std::string_view name, std::span<PassDecl const> passes);
 
 // A pass that samples a resource attached to the framebuffer it draws into: a feedback loop,
 // undefined in GL.

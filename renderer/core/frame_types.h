@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/frame_passes.h"
 #include "core/pipeline_settings.h"
 
 #include <cstddef>
@@ -68,6 +69,8 @@ struct FrameStats {
     // The shader-checks build's report of this frame's out-of-range accesses (gl/shader_checks.h);
     // empty when there were none or the checks are off.
     std::string shaderCheckReport;
+    // The pass the frame stopped after (FrameInput::stopAfter); nullopt: it ran every pass.
+    std::optional<PassId> stoppedAfter = std::nullopt;
 };
 
 // Everything stored at one pixel, read back as floats (for the pixel inspector and tests).
