@@ -255,3 +255,17 @@ TEST(InputEvents, DescribeNamesTheEvent) {
     EXPECT_EQ(describeEvent(key(keys::F, kPress)), "key 70 press mods 0");
     EXPECT_EQ(describeEvent(button(1, kRelease)), "button 1 release mods 0");
 }
+
+TEST(InputEvents, ProjectorKeysStepViewLightingCullAndBlit) {
+    Frames f;
+    FrameActions const a = f.frame({key(keys::V, kPress), key(keys::V, kRelease), key(keys::V, kPress, kModShift),
+                                    key(keys::M, kPress), key(keys::C, kPress), key(keys::B, kPress)},
+                                   0.2, false);
+    EXPECT_EQ(a.taps, (std::vector<EditorAction>{EditorAction::NextView, EditorAction::PreviousView,
+                                                 EditorAction::NextLightingMode, EditorAction::NextCullMode,
+                                                 EditorAction::NextDepthCopy}));
+    EXPECT_EQ(a.move, glm::vec3(0.0f));
+    // They wait, like the others, while a text field has the keyboard.
+    FrameActions const b = f.frame({key(keys::M, kPress)}, 0.4, true, true);
+    EXPECT_TRUE(b.taps.empty());
+}

@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 
 namespace gbl {
 
@@ -186,6 +187,27 @@ void carryOut(Editor& editor, EditorAction action) {
             if (state.accumulate.enabled)
                 ui::stepAccumulation(state.accumulate, action == EditorAction::AccumulateNext ? 1 : -1,
                                      int(state.lights.size()));
+            break;
+        case EditorAction::NextView:
+        case EditorAction::PreviousView: {
+            // Final, lighting, then the attachments in the G-buffer strip's order.
+            constexpr std::array views{DebugView::Final,  DebugView::Lighting, DebugView::Position,
+                                       DebugView::Normal, DebugView::Albedo,   DebugView::Specular,
+                                       DebugView::Depth};
+            auto it = std::find(views.begin(), views.end(), state.pipeline.view);
+            int i = it == views.end() ? 0 : int(it - views.begin());
+            int n = int(views.size());
+            state.pipeline.view = views[size_t((i + (action == EditorAction::NextView ? 1 : n - 1)) % n)];
+            break;
+        }
+        case EditorAction::NextLightingMode:
+            state.pipeline.mode = LightingMode((int(state.pipeline.mode) + 1) % 5);
+            break;
+        case EditorAction::NextCullMode:
+            state.pipeline.cull = CullMode((int(state.pipeline.cull) + 1) % 5);
+            break;
+        case EditorAction::NextDepthCopy:
+            state.pipeline.depthCopy = DepthCopy((int(state.pipeline.depthCopy) + 1) % 3);
             break;
         default:
             break;  // fly keys act through CameraInput::move

@@ -149,6 +149,16 @@ std::string_view actionName(EditorAction action) {
             return "accumulate-previous";
         case EditorAction::AccumulateNext:
             return "accumulate-next";
+        case EditorAction::NextView:
+            return "next-view";
+        case EditorAction::PreviousView:
+            return "previous-view";
+        case EditorAction::NextLightingMode:
+            return "next-lighting-mode";
+        case EditorAction::NextCullMode:
+            return "next-cull-mode";
+        case EditorAction::NextDepthCopy:
+            return "next-depth-copy";
         case EditorAction::FlyForward:
             return "fly-forward";
         case EditorAction::FlyBack:

@@ -18,7 +18,7 @@ namespace gbl::ui {
 // glfw3.h), so this layer and its tests need no GLFW.
 namespace keys {
 inline constexpr int Space = 32;
-inline constexpr int A = 'A', D = 'D', E = 'E', F = 'F', L = 'L', N = 'N', O = 'O', Q = 'Q', S = 'S', W = 'W', Y = 'Y',
+inline constexpr int A = 'A', B = 'B', C = 'C', D = 'D', E = 'E', F = 'F', L = 'L', M = 'M', N = 'N', O = 'O', Q = 'Q', S = 'S', V = 'V', W = 'W', Y = 'Y',
                      Z = 'Z';
 inline constexpr int Escape = 256, Enter = 257, Tab = 258, Backspace = 259, Delete = 261;
 inline constexpr int Right = 262, Left = 263, Down = 264, Up = 265, Home = 268, End = 269;
@@ -85,6 +85,11 @@ enum class EditorAction {
     ShowShortcuts,
     AccumulatePrevious,
     AccumulateNext,
+    NextView,
+    PreviousView,
+    NextLightingMode,
+    NextCullMode,
+    NextDepthCopy,
     FlyForward,
     FlyBack,
     FlyLeft,
@@ -109,7 +114,7 @@ struct Shortcut {
 };
 
 // One list: the key handling, the menus' shortcut hints and the Help > Shortcuts window read it.
-inline constexpr std::array<Shortcut, 19> kShortcuts{{
+inline constexpr std::array<Shortcut, 24> kShortcuts{{
     {keys::Z, kModControl, EditorAction::Undo, ShortcutScope::Editor, false, "Ctrl+Z", "undo the last edit"},
     {keys::Y, kModControl, EditorAction::Redo, ShortcutScope::Editor, false, "Ctrl+Y", "redo"},
     {keys::S, kModControl, EditorAction::SaveSession, ShortcutScope::Editor, false, "Ctrl+S", "save the session"},
@@ -129,6 +134,15 @@ inline constexpr std::array<Shortcut, 19> kShortcuts{{
      "light by light: one light fewer (while accumulating)"},
     {keys::Right, 0, EditorAction::AccumulateNext, ShortcutScope::Editor, false, "Right",
      "light by light: one light more (while accumulating)"},
+    {keys::V, 0, EditorAction::NextView, ShortcutScope::Editor, false, "V",
+     "next view: final, lighting, then each G-buffer attachment"},
+    {keys::V, kModShift, EditorAction::PreviousView, ShortcutScope::Editor, false, "Shift+V", "previous view"},
+    {keys::M, 0, EditorAction::NextLightingMode, ShortcutScope::Editor, false, "M",
+     "next lighting mode (quad, volumes, tiled, forward, clustered)"},
+    {keys::C, 0, EditorAction::NextCullMode, ShortcutScope::Editor, false, "C",
+     "next light-volume cull mode (back, front, none, flip, stencil)"},
+    {keys::B, 0, EditorAction::NextDepthCopy, ShortcutScope::Editor, false, "B",
+     "next blit step: how depth reaches the lit target (blit, shader, off)"},
     {keys::W, 0, EditorAction::FlyForward, ShortcutScope::Viewport, true, "W", "fly forward (Shift: faster)"},
     {keys::S, 0, EditorAction::FlyBack, ShortcutScope::Viewport, true, "S", "fly back"},
     {keys::A, 0, EditorAction::FlyLeft, ShortcutScope::Viewport, true, "A", "fly left"},
