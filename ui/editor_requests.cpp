@@ -191,9 +191,8 @@ void carryOut(Editor& editor, EditorAction action) {
         case EditorAction::NextView:
         case EditorAction::PreviousView: {
             // Final, lighting, then the attachments in the G-buffer strip's order.
-            constexpr std::array views{DebugView::Final,  DebugView::Lighting, DebugView::Position,
-                                       DebugView::Normal, DebugView::Albedo,   DebugView::Specular,
-                                       DebugView::Depth};
+            constexpr std::array views{DebugView::Final,  DebugView::Lighting, DebugView::Position, DebugView::Normal,
+                                       DebugView::Albedo, DebugView::Specular, DebugView::Depth};
             auto it = std::find(views.begin(), views.end(), state.pipeline.view);
             int i = it == views.end() ? 0 : int(it - views.begin());
             int n = int(views.size());

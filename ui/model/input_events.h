@@ -18,8 +18,8 @@ namespace gbl::ui {
 // glfw3.h), so this layer and its tests need no GLFW.
 namespace keys {
 inline constexpr int Space = 32;
-inline constexpr int A = 'A', B = 'B', C = 'C', D = 'D', E = 'E', F = 'F', L = 'L', M = 'M', N = 'N', O = 'O', Q = 'Q', S = 'S', V = 'V', W = 'W', Y = 'Y',
-                     Z = 'Z';
+inline constexpr int A = 'A', B = 'B', C = 'C', D = 'D', E = 'E', F = 'F', L = 'L', M = 'M', N = 'N', O = 'O', Q = 'Q',
+                     S = 'S', V = 'V', W = 'W', Y = 'Y', Z = 'Z';
 inline constexpr int Escape = 256, Enter = 257, Tab = 258, Backspace = 259, Delete = 261;
 inline constexpr int Right = 262, Left = 263, Down = 264, Up = 265, Home = 268, End = 269;
 inline constexpr int F1 = 290;
