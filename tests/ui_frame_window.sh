@@ -1,9 +1,10 @@
 #!/bin/sh
 # The Frame window (issue 24) driven by real X input (xdotool) on the real editor under Xvfb: the
 # Stats window's "Frame diagram" button opens it; a click on the geometry pass's gbuffer.normal
-# pin shows the normals in the viewport; a click on the geometry box and "Stop here" makes the
-# frame stop after it (the renderer's own record says so); "M" to forward mode, which has no
-# geometry pass, drops the stop with a log line. Nothing is cut off at 1280x720 or 1600x900 with
+# pin shows the normals in the viewport; a click on the lighting box and "Stop here" makes the
+# frame stop after it (the renderer's own record says so); the wheel scrolls the diagram to the
+# display pass, whose pin shows the final image again; "M" to forward mode, which has no
+# lighting pass, drops the stop with a log line. Nothing is cut off at 1280x720 or 1600x900 with
 # the window open. Every check reads the editor's --log-frames lines; screenshots are for a person.
 # usage: ui_frame_window.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
 set -eu
@@ -69,6 +70,10 @@ for size in 1280x720 1600x900; do
     wait_frames 6
     [ "$(field stopAfter)" = '"lighting"' ] || fail "Stop here did not set the stop: $(field stopAfter)"
     [ "$(field stoppedAfter)" = '"lighting"' ] || fail "the frame did not stop after lighting: $(field stoppedAfter)"
+    # The diagram is wider than the window: the wheel scrolls it sideways to the display pass.
+    set -- $(target pass:lighting)
+    xdotool mousemove --window "$wid" "$1" "$2" sleep 0.1 click --repeat 30 --delay 20 5
+    wait_frames 6
     click_target out:display:display
     wait_frames 4
     [ "$(field view)" = '"final"' ] || fail "the display pin showed view $(field view), not final"

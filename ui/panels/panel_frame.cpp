@@ -249,8 +249,19 @@ void drawFramePanel(FramePanelState& state, PipelineSettings& settings, FrameSta
         ImVec2 const avail = ImGui::GetContentRegionAvail();
         float const detailsW = std::min(380.0f, std::floor(avail.x * 0.32f));
         float const diagramW = avail.x - detailsW - ImGui::GetStyle().ItemSpacing.x;
-        if (beginFramedChild("diagram", ImVec2(diagramW, avail.y), ImGuiWindowFlags_HorizontalScrollbar))
+        if (beginFramedChild("diagram", ImVec2(diagramW, avail.y),
+                             ImGuiWindowFlags_HorizontalScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) {
+            // The frame runs sideways: the wheel scrolls along it, Shift+wheel up and down.
+            ImGuiIO const& io = ImGui::GetIO();
+            if (ImGui::IsWindowHovered() && io.MouseWheel != 0.0f) {
+                float const step = -io.MouseWheel * 3.0f * ImGui::GetFontSize();
+                if (io.KeyShift)
+                    ImGui::SetScrollY(ImGui::GetScrollY() + step);
+                else
+                    ImGui::SetScrollX(ImGui::GetScrollX() + step);
+            }
             drawDiagram(state, settings, last);
+        }
         ImGui::EndChild();
         ImGui::SameLine();
         if (beginFramedChild("details", ImVec2(detailsW, avail.y))) drawDetails(state, last);
