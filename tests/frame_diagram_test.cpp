@@ -142,7 +142,7 @@ TEST(FrameDiagram, PassStateInPlainWords) {
     EXPECT_EQ(words[2], "Draws into: lighting; depth-stencil gbuffer.depth.");
     EXPECT_EQ(words[3], "Depth tested, not written; stencil not tested, not written.");
     EXPECT_EQ(words[5],
-              "volumes: back faces: depth test greater-or-equal (behind the stored surface), depth read-only, additive "
+              "Volumes: back faces: depth test greater-or-equal (behind the stored surface), depth read-only, additive "
               "blending (ONE, ONE: lights summed), front faces culled, no stencil.");
 }
 

@@ -191,6 +191,7 @@ std::vector<std::string> describePass(PassDecl const& p) {
     if (p.states.empty() && p.kind == PassKind::Raster) out.push_back("No draws: its targets are only cleared.");
     for (DrawState const& s : p.states) {
         std::string line = std::string(s.what) + ": " + depthTestWords(s.depthTest);
+        if (!line.empty() && line[0] >= 'a' && line[0] <= 'z') line[0] = char(line[0] - 'a' + 'A');
         line += s.depthWrite ? ", writes depth" : (s.depthTest != DepthTest::Off ? ", depth read-only" : "");
         line += std::string(", ") + blendWords(s.blend) + ", " + cullWords(s.cull) + ", " + stencilWords(s.stencil);
         if (!s.colorWrite) line += ", colour writes off";

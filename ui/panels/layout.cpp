@@ -70,7 +70,13 @@ void beginLayout(LayoutState& state) {
 
 void placeWindow(EditorWindow) {}
 
-void placeFrameWindow() {}
+void placeFrameWindow() {
+    // Docked beside the strip by the default layout; a layout restored from an older imgui.ini has
+    // no place for it, so it floats at a size that shows a few passes until docked.
+    ImGuiViewport const* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowSize(ImVec2(viewport->WorkSize.x * 0.8f, viewport->WorkSize.y * kViewerStrip),
+                             ImGuiCond_FirstUseEver);
+}
 
 int editorWindowFlags() {
     return 0;
