@@ -1,7 +1,8 @@
 #!/bin/sh
 # The Frame window (issue 24) driven by real X input (xdotool) on the real editor under Xvfb: the
 # Stats window's "Frame diagram" button opens it; a click on the geometry pass's gbuffer.normal
-# pin shows the normals in the viewport; a click on the lighting box and "Stop here" makes the
+# pin shows the normals in the viewport, one on the lighting pass's lights pin (no view) leaves the
+# view alone; a click on the lighting box and "Stop here" makes the
 # frame stop after it (the renderer's own record says so); the wheel scrolls the diagram to the
 # display pass, whose pin shows the final image again; "M" to forward mode, which has no
 # lighting pass, drops the stop with a log line. Nothing is cut off at 1280x720 or 1600x900 with
@@ -60,6 +61,10 @@ for size in 1280x720 1600x900; do
     wait_frames 4
     [ "$(field view)" = '"normal"' ] || fail "the gbuffer.normal pin showed view $(field view), not normal"
     shot "frame-$size-normal"
+    # The light list has no view: its pin only says so (a tooltip) and leaves the view alone.
+    click_target in:lighting:lights
+    wait_frames 3
+    [ "$(field view)" = '"normal"' ] || fail "the lights pin, which has no view, changed the view to $(field view)"
 
     # A pass box selects the pass; "Stop here" stops the frame after it.
     click_target pass:lighting
