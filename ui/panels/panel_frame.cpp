@@ -156,7 +156,10 @@ void drawDiagram(FramePanelState& state, PipelineSettings& settings, FrameStats 
                 alpha);
         ImGui::SetCursorScreenPos(min);
         if (ImGui::InvisibleButton("pass", ImVec2(b.size.x, b.size.y))) state.selected = passes[i].id;
-        if (ImGui::IsItemHovered()) hoveredBox = i;
+        if (ImGui::IsItemHovered()) {
+            hoveredBox = i;
+            ImGui::SetTooltip("%s: click for its declared state and Stop here", passes[i].name().data());
+        }
         ImGui::PopID();
         ImU32 const border = selected                          ? IM_COL32(255, 230, 80, 255)
                              : hoveredBox == i                 ? IM_COL32(200, 200, 220, 255)
@@ -173,8 +176,11 @@ void drawDiagram(FramePanelState& state, PipelineSettings& settings, FrameStats 
     }
     for (EdgeRoute const& r : d.routes) {
         bool const dim = skipped(std::size_t(r.edge.to)) || skipped(std::size_t(r.edge.from));
+        // The hovered pass's arrows stand out, else the selected one's.
+        std::size_t const from = std::size_t(r.edge.from), to = std::size_t(r.edge.to);
         bool const lit =
-            hoveredBox && (std::size_t(r.edge.from) == *hoveredBox || std::size_t(r.edge.to) == *hoveredBox);
+            hoveredBox ? (from == *hoveredBox || to == *hoveredBox)
+                       : state.selected && (passes[from].id == *state.selected || passes[to].id == *state.selected);
         drawArrow(dl, r, origin, resourceColour(r.edge.resource, dim ? 0.25f : lit ? 1.0f : 0.7f), lit ? 2.5f : 1.5f);
     }
     // The content's size, so the child scrolls to all of it.
