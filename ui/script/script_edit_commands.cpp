@@ -179,6 +179,20 @@ constexpr ScriptCommandSpec kCommands[] = {
     {"shader-break", "FILE", "append a compile error to FILE in $GBL_SHADER_DIR (never the source tree)",
      shaderBreakCommand},
     {"shader-fix", "FILE", "put FILE back as it was before shader-break", shaderFixCommand},
+    {"frame-window", "on|off", "open or close the Frame window",
+     [](CommandCall const& c) { c.host.state.frame.open = c.w[1] != "off"; }},
+    {"frame-pass", "PASS", "select PASS in the Frame window (as a click on its box)",
+     [](CommandCall const& c) {
+         std::optional<PassId> const pass = passFromName(c.w[1]);
+         c.check(bool(pass), pass ? std::string() : "no pass called " + c.w[1]);
+         if (pass) c.host.state.frame.selected = pass;
+     }},
+    {"frame-stop", "PASS|off", "stop the editor's frames after PASS (the Frame window's Stop here), or not",
+     [](CommandCall const& c) {
+         std::optional<PassId> const pass = passFromName(c.w[1]);
+         if (!pass && c.w[1] != "off") return c.check(false, "no pass called " + c.w[1]);
+         c.host.state.frame.stopAfter = pass;
+     }},
     {"print", "TEXT...", "print TEXT",
      [](CommandCall const& c) { std::printf("ui-test: %s\n", joinWords(c.w, 1).c_str()); }},
 };
