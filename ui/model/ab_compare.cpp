@@ -63,16 +63,8 @@ std::vector<std::string_view> differingFields(PipelineSettings const& a, Pipelin
 
 std::string fieldText(AbField const& f, PipelineSettings const& s) {
     double const v = f.get(s);
-    switch (f.kind) {
-        case AbFieldKind::Choice: {
-            std::size_t const i = std::size_t(v);
-            return i < f.choices.size() ? std::string(f.choices[i]) : std::string("?");
-        }
-        case AbFieldKind::Toggle:
-            return v != 0.0 ? "on" : "off";
-        case AbFieldKind::Number:
-            break;
-    }
+    if (f.kind == AbFieldKind::Toggle) return v != 0.0 ? "on" : "off";
+    if (f.kind == AbFieldKind::Choice) return fieldScriptText(f, s);
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.4g", v);
     return buf;
