@@ -14,7 +14,8 @@ log="$work/frames.jsonl"
 ui_require_xdotool
 ui_fresh_work
 
-# button N: window coordinates of Lessons button N (1 Start, 2 Back, 3 Next, 4 Leave).
+# button N: window coordinates of Lessons button N (1 Start, 2 Back, 3 Next, 4 Leave, 5 Show answer,
+# 6 Check my prediction, 7 the prediction's first choice, 8 Glossary).
 button() {
     field lessonButtons | tr -d '[]' | awk -F, -v n="$1" '{ printf "%d %d", $(2 * n - 1), $(2 * n) }'
 }
@@ -58,6 +59,31 @@ click 4
 [ "$(field camera)" = "$camera0" ] || fail "Leave did not restore the camera: $camera0 -> $(field camera)"
 [ "$(field view)" = "$view0" ] || fail "Leave did not restore the view: $view0 -> $(field view)"
 echo "Leave: camera $(field camera), view $(field view)"
+ui_stop
+
+# A prediction and an answer (issue 27): camera_inside:2 shows cull front while the student
+# predicts; picking "back" and checking it applies the step (cull back, A/B split) and says right;
+# Show answer reveals the answer. Screenshots before and after are kept to look at.
+log="$work/predict.jsonl"
+"$bin" --size 1280x720 --no-vsync --lesson camera_inside:2 --log-frames "$log" > "$work/predict.log" 2>&1 &
+pid=$!
+wait_frames 4
+ui_window
+wait_frames 2
+[ "$(field lesson)" = '"camera_inside:2"' ] || fail "--lesson camera_inside:2 did not open that step"
+[ "$(field lessonPrediction)" = '""' ] || fail "a prediction is made before any click: $(field lessonPrediction)"
+shot predict-before
+click 7
+click 6
+[ "$(field lessonPrediction)" = '"right"' ] || fail "picking back and checking did not say right: $(field lessonPrediction)"
+echo "prediction: $(field lessonPrediction)"
+click 5
+[ "$(field lessonAnswer)" = 'true' ] || fail "Show answer did not reveal the answer"
+wait_frames 4
+shot predict-answer
+click 8
+wait_frames 4
+shot glossary
 ui_stop
 
 # Screenshots with a lesson step open, for a person to look at (no clipped text).
