@@ -19,6 +19,17 @@ ui_fresh_work
 button() {
     field lessonButtons | tr -d '[]' | awk -F, -v n="$1" '{ printf "%d %d", $(2 * n - 1), $(2 * n) }'
 }
+# reach N [WHEEL]: scrolls the Lessons window (mouse wheel at lx, ly; 5 down, 4 up) until button N
+# is in view.
+reach() {
+    i=0
+    while [ "$(button "$1")" = "0 0" ]; do
+        xdotool mousemove --window "$wid" "$lx" "$ly" click "${2:-5}"
+        wait_frames 2
+        i=$((i + 1))
+        [ "$i" -le 30 ] || fail "button $1 never scrolled into view: $(field lessonButtons)"
+    done
+}
 click() {
     set -- $(button "$1")
     [ "$1" -gt 0 ] || fail "button not drawn: $(field lessonButtons)"
@@ -73,16 +84,28 @@ wait_frames 2
 [ "$(field lesson)" = '"camera_inside:2"' ] || fail "--lesson camera_inside:2 did not open that step"
 [ "$(field lessonPrediction)" = '""' ] || fail "a prediction is made before any click: $(field lessonPrediction)"
 shot predict-before
+set -- $(button 2)
+lx=$1
+ly=$(($2 + 60))
+reach 7
 click 7
+reach 6
 click 6
 [ "$(field lessonPrediction)" = '"right"' ] || fail "picking back and checking did not say right: $(field lessonPrediction)"
 echo "prediction: $(field lessonPrediction)"
+wait_frames 2
+shot predict-after
+reach 5
 click 5
 [ "$(field lessonAnswer)" = 'true' ] || fail "Show answer did not reveal the answer"
 wait_frames 4
 shot predict-answer
+reach 8 4
+xdotool mousemove --window "$wid" "$lx" "$ly" click --repeat 10 4  # to the top: the row fully in view
+wait_frames 3
 click 8
 wait_frames 4
+[ "$(field lessonGlossary)" = 'true' ] || fail "the Glossary button did not open the glossary"
 shot glossary
 ui_stop
 

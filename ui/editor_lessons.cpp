@@ -155,6 +155,7 @@ void lessonLogFields(Editor const& editor, ui::FrameLogLine& line) {
     line.lessonButtons.assign(l.buttonCentres.begin(), l.buttonCentres.end());
     line.lessonPrediction = l.predicted ? (l.predictedRight ? "right" : "wrong") : "";
     line.lessonAnswer = l.answerShown;
+    line.lessonGlossary = editor.glossaryWindow.open;
     line.view = std::string(enumName(kDebugViewNames, editor.state.pipeline.view));
 }
 

@@ -49,6 +49,7 @@ struct FrameLogLine {
     std::string lesson;
     std::string lessonPrediction;
     bool lessonAnswer = false;
+    bool lessonGlossary = false;  // the Glossary window is open
     std::vector<glm::vec2> lessonButtons;
     std::string view;
     // The G-buffer layout in use, the Pipeline window, its layout combo (0 while not visible) and,

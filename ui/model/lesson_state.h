@@ -140,6 +140,7 @@ struct LessonState {
     bool predictedRight = false;
     bool predictRequested = false;   // "Check my prediction" was pressed: the loop applies the step
     bool answerShown = false;        // "Show answer" was pressed
+    bool scrollToResult = false;     // scroll the verdict or the answer into view once drawn
     bool glossaryRequested = false;  // open the glossary (glossaryTerm: at that term, or "")
     std::string glossaryTerm;
     glm::ivec2 pixelFrameSize{0};  // the frame size the step's pixel was placed for; a resize re-places it

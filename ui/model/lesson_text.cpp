@@ -5,6 +5,7 @@
 #include "core/light_math.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace gbl::ui {
@@ -60,6 +61,11 @@ std::string value(std::string_view name, LessonValues const& v) {
     PixelSample const& s = *v.sample;
     if (name == "pixel.lit") return vec3Text(glm::vec3(s.lighting));
     if (name == "pixel.depth") return num(s.depth);
+    // The heat map's or tile view's counts at the pixel: lights evaluated, lights that reached it.
+    if (name == "pixel.evaluated" || name == "pixel.reached") {
+        if (!s.coverageView) return na;
+        return std::to_string(int(std::lround(name == "pixel.evaluated" ? s.coverage.x : s.coverage.y)));
+    }
     if (!s.covered) return "(no geometry)";
     if (name == "pixel.position") return vec3Text(glm::vec3(s.position));
     if (name == "pixel.normal") return vec3Text(glm::vec3(s.normal));

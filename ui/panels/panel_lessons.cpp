@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <utility>
 #include <vector>
 
 namespace gbl::ui {
@@ -41,7 +42,9 @@ std::string formatNumber(float v) {
     return buf;
 }
 
+// The last item's centre in window coordinates; (0, 0) while it is scrolled out of view.
 glm::vec2 itemCentre() {
+    if (!ImGui::IsItemVisible()) return {0.0f, 0.0f};
     ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
     return {(a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f};
 }
@@ -90,7 +93,10 @@ void drawPrediction(LessonState& state, LessonPrediction const& p, LessonValues 
             state.buttonCentres[6] = itemCentre();
         }
         ImGui::BeginDisabled(!p.choices.empty() && state.predictChoice < 0);
-        if (ImGui::Button("Check my prediction")) state.predictRequested = true;
+        if (ImGui::Button("Check my prediction")) {
+            state.predictRequested = true;
+            state.scrollToResult = true;
+        }
         state.buttonCentres[5] = itemCentre();
         ImGui::EndDisabled();
         return;
@@ -98,6 +104,7 @@ void drawPrediction(LessonState& state, LessonPrediction const& p, LessonValues 
     std::string const right = p.choices.empty()
                                   ? formatNumber(p.number) + " (within " + formatNumber(p.tolerance) + ")"
                                   : p.choices[std::size_t(std::clamp(p.correct, 0, int(p.choices.size()) - 1))];
+    if (std::exchange(state.scrollToResult, false)) ImGui::SetScrollHereY(0.0f);  // the verdict in view
     if (state.predictedRight)
         ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "Right: %s", right.c_str());
     else {
@@ -169,7 +176,10 @@ void drawStep(LessonState& state, Lesson const& lesson, LessonValues const& valu
     wrappedText("%s", substituteLessonText(step.text.question, values).c_str());
     ImGui::BeginDisabled(waiting);
     if (!state.answerShown) {
-        if (ImGui::Button("Show answer")) state.answerShown = true;
+        if (ImGui::Button("Show answer")) {
+            state.answerShown = true;
+            state.scrollToResult = true;
+        }
         if (waiting && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
             ImGui::SetTooltip("Make the prediction first");
     } else if (ImGui::Button("Hide answer")) {
@@ -178,6 +188,7 @@ void drawStep(LessonState& state, Lesson const& lesson, LessonValues const& valu
     state.buttonCentres[4] = itemCentre();
     ImGui::EndDisabled();
     if (state.answerShown && !waiting) {
+        if (std::exchange(state.scrollToResult, false)) ImGui::SetScrollHereY(0.0f);  // the answer in view
         ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "Answer");
         wrappedText("%s", substituteLessonText(step.text.answer, values).c_str());
     }
