@@ -42,10 +42,13 @@ std::string formatNumber(float v) {
     return buf;
 }
 
-// The last item's centre in window coordinates; (0, 0) while it is scrolled out of view.
+// The last item's centre in window coordinates; (0, 0) unless it is wholly in view (scrolled
+// partly out, a click at its centre could land on the next window).
 glm::vec2 itemCentre() {
-    if (!ImGui::IsItemVisible()) return {0.0f, 0.0f};
     ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    float const top = ImGui::GetWindowPos().y + ImGui::GetFrameHeight();
+    float const bottom = ImGui::GetWindowPos().y + ImGui::GetWindowHeight() - ImGui::GetStyle().WindowPadding.y * 0.5f;
+    if (!ImGui::IsItemVisible() || a.y < top || b.y > bottom) return {0.0f, 0.0f};
     return {(a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f};
 }
 
@@ -171,26 +174,25 @@ void drawStep(LessonState& state, Lesson const& lesson, LessonValues const& valu
         wrappedText("%s", substituteLessonText(step.text.equation, values).c_str());
     }
     if (step.predict) drawPrediction(state, *step.predict, values);
-    ImGui::Spacing();
-    ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.45f, 1.0f), "Question");
-    wrappedText("%s", substituteLessonText(step.text.question, values).c_str());
-    ImGui::BeginDisabled(waiting);
-    if (!state.answerShown) {
-        if (ImGui::Button("Show answer")) {
-            state.answerShown = true;
-            state.scrollToResult = true;
+    if (waiting) {
+        // The question and its answer would give the prediction away: they follow it.
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        wrappedText("The step's question and its answer follow your prediction.");
+        ImGui::PopStyleColor();
+    } else {
+        ImGui::Spacing();
+        ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.45f, 1.0f), "Question");
+        wrappedText("%s", substituteLessonText(step.text.question, values).c_str());
+        if (ImGui::Button(state.answerShown ? "Hide answer" : "Show answer")) {
+            state.answerShown = !state.answerShown;
+            state.scrollToResult = state.answerShown;
         }
-        if (waiting && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-            ImGui::SetTooltip("Make the prediction first");
-    } else if (ImGui::Button("Hide answer")) {
-        state.answerShown = false;
-    }
-    state.buttonCentres[4] = itemCentre();
-    ImGui::EndDisabled();
-    if (state.answerShown && !waiting) {
-        if (std::exchange(state.scrollToResult, false)) ImGui::SetScrollHereY(0.0f);  // the answer in view
-        ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "Answer");
-        wrappedText("%s", substituteLessonText(step.text.answer, values).c_str());
+        state.buttonCentres[4] = itemCentre();
+        if (state.answerShown) {
+            if (std::exchange(state.scrollToResult, false)) ImGui::SetScrollHereY(0.0f);  // the answer in view
+            ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "Answer");
+            wrappedText("%s", substituteLessonText(step.text.answer, values).c_str());
+        }
     }
     drawTerms(state, step, glossary);
     if (step.claim)
