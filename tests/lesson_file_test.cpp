@@ -80,7 +80,8 @@ TEST(LessonFile, BrokenFilesNameTheField) {
         {[](json& j) { j["version"] = 1; },
          "demo.json: version 1 is not supported; this program reads lesson version 2 (version 2 adds an \"answer\""},
         {[](json& j) { j["steps"][0].erase("answer"); },
-         "demo.json: steps[0].answer is missing: step \"One\" asks a question and every question needs an answer"},
+         "demo.json: steps[0].answer is missing: step \"One\" of lesson demo asks a question and every question "
+         "needs an answer"},
         {[](json& j) { j["steps"][0]["answer"] = " "; }, "demo.json: steps[0].answer must not be empty"},
         {[](json& j) { j["steps"][0]["answer"] = "{light.colour}"; },
          "demo.json: steps[0].answer uses the unknown placeholder {light.colour}"},
@@ -225,9 +226,15 @@ TEST(LessonFile, ABrokenFileInTheFolderIsReportedAndTheOthersLoad) {
     bad["steps"][0]["pipeline"]["blit"] = "copy";
     std::ofstream(dir + "/b.json") << bad.dump();
     std::ofstream(dir + "/c.json") << minimal().dump();  // the same id again
+    json noAnswer = minimal();
+    noAnswer["id"] = "other";
+    noAnswer["steps"][0].erase("answer");
+    std::ofstream(dir + "/d.json") << noAnswer.dump();
     LessonLibrary const lib = loadLessonDir(dir);
     ASSERT_EQ(lib.lessons.size(), 1u);
-    ASSERT_EQ(lib.errors.size(), 2u);
+    ASSERT_EQ(lib.errors.size(), 3u);
+    EXPECT_NE(lib.errors[2].find("d.json: steps[0].answer is missing: step \"One\" of lesson other"), std::string::npos)
+        << lib.errors[2];
     EXPECT_NE(lib.errors[0].find("b.json: steps[0].pipeline.blit must be one of blit, shader or off"),
               std::string::npos)
         << lib.errors[0];

@@ -306,7 +306,7 @@ LessonPrediction readPrediction(json const& j, std::string const& path, json con
     return p;
 }
 
-LessonStep readStep(json const& j, std::string const& path, json const& setup) {
+LessonStep readStep(json const& j, std::string const& path, json const& setup, std::string const& lessonId) {
     knownFields(j, path,
                 {"title", "look", "equation", "question", "answer", "predict", "scene", "lights", "camera", "pipeline",
                  "viewers", "selected_light", "viewer", "pixel", "claim", "ab"});
@@ -316,8 +316,8 @@ LessonStep readStep(json const& j, std::string const& path, json const& setup) {
     step.text.equation = text(j, "equation", path);
     step.text.question = text(j, "question", path);
     if (!j.contains("answer"))
-        fail(path + ".answer", "is missing: step \"" + step.text.title +
-                                   "\" asks a question and every question needs an answer the student can reveal");
+        fail(path + ".answer", "is missing: step \"" + step.text.title + "\" of lesson " + lessonId +
+                                   " asks a question and every question needs an answer the student can reveal");
     step.text.answer = text(j, "answer", path);
     json const state = mergedState(setup, j);
     step.state = snapshotOf(state, path, &step.defaultSceneLights);
@@ -408,7 +408,7 @@ Lesson readLesson(json const& j) {
     if (steps == j.end()) fail("steps", "is missing");
     if (!steps->is_array() || steps->empty()) fail("steps", "must be an array of at least one step");
     for (std::size_t i = 0; i < steps->size(); ++i)
-        lesson.steps.push_back(readStep((*steps)[i], "steps[" + std::to_string(i) + "]", setup));
+        lesson.steps.push_back(readStep((*steps)[i], "steps[" + std::to_string(i) + "]", setup, lesson.id));
     return lesson;
 }
 
