@@ -108,6 +108,8 @@ wait_frames 4
 [ "$(field lessonGlossary)" = 'true' ] || fail "the Glossary button did not open the glossary"
 shot glossary
 ui_stop
+# The editor was ended with changes: its autosave would offer recovery over the screenshots below.
+rm -f "$GBL_RECOVERY_DIR"/*
 
 # Screenshots with a lesson step open, for a person to look at (no clipped text).
 for size in 1280x720 1600x900; do
