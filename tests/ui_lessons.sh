@@ -15,7 +15,7 @@ ui_require_xdotool
 ui_fresh_work
 
 # button N: window coordinates of Lessons button N (1 Start, 2 Back, 3 Next, 4 Leave, 5 Show answer,
-# 6 Check my prediction, 7 the prediction's first choice, 8 Glossary).
+# 6 Check my prediction, 7 the prediction's first choice, 8 Glossary, 9 the first term under the step).
 button() {
     field lessonButtons | tr -d '[]' | awk -F, -v n="$1" '{ printf "%d %d", $(2 * n - 1), $(2 * n) }'
 }
@@ -100,6 +100,14 @@ click 5
 [ "$(field lessonAnswer)" = 'true' ] || fail "Show answer did not reveal the answer"
 wait_frames 4
 shot predict-answer
+# The first term under the step opens the glossary at that term.
+reach 9
+click 9
+[ "$(field lessonGlossary)" = 'true' ] || fail "a term under the step did not open the glossary"
+[ "$(field lessonGlossaryTerm)" != '""' ] || fail "the glossary did not open at the term"
+echo "term: the glossary opened at $(field lessonGlossaryTerm)"
+wait_frames 2
+shot glossary-term
 reach 8 4
 xdotool mousemove --window "$wid" "$lx" "$ly" click --repeat 10 4  # to the top: the row fully in view
 wait_frames 3

@@ -156,6 +156,7 @@ void lessonLogFields(Editor const& editor, ui::FrameLogLine& line) {
     line.lessonPrediction = l.predicted ? (l.predictedRight ? "right" : "wrong") : "";
     line.lessonAnswer = l.answerShown;
     line.lessonGlossary = editor.glossaryWindow.open;
+    line.lessonGlossaryTerm = editor.glossaryWindow.shownTerm;
     line.view = std::string(enumName(kDebugViewNames, editor.state.pipeline.view));
 }
 

@@ -82,6 +82,7 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += "],\"lessonPrediction\":" + quoted(l.lessonPrediction);
     out += std::string(",\"lessonAnswer\":") + (l.lessonAnswer ? "true" : "false");
     out += std::string(",\"lessonGlossary\":") + (l.lessonGlossary ? "true" : "false");
+    out += ",\"lessonGlossaryTerm\":" + quoted(l.lessonGlossaryTerm);
     out += ",\"view\":" + quoted(l.view);
     out += ",\"layout\":" + quoted(l.layout) + ",\"pipelineWindow\":" + rect(l.pipelineWindow) +
            ",\"layoutCombo\":" + rect(l.layoutCombo) + ",\"layoutItems\":[";

@@ -49,7 +49,8 @@ struct FrameLogLine {
     std::string lesson;
     std::string lessonPrediction;
     bool lessonAnswer = false;
-    bool lessonGlossary = false;  // the Glossary window is open
+    bool lessonGlossary = false;     // the Glossary window is open
+    std::string lessonGlossaryTerm;  // the term it last opened at ("" = none)
     std::vector<glm::vec2> lessonButtons;
     std::string view;
     // The G-buffer layout in use, the Pipeline window, its layout combo (0 while not visible) and,

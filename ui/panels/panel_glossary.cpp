@@ -62,7 +62,10 @@ void drawGlossaryWindow(GlossaryWindowState& state, Glossary const& glossary) {
                 lower(t.definition).find(filter) == std::string::npos)
                 continue;
             ImGui::PushID(int(i));
-            if (focused) ImGui::SetNextItemOpen(true);
+            if (focused) {
+                ImGui::SetNextItemOpen(true);
+                state.shownTerm = t.term;
+            }
             if (ImGui::CollapsingHeader(t.term.c_str())) {
                 ImGui::Indent();
                 wrappedTextUnformatted(t.definition);

@@ -10,8 +10,9 @@ namespace gbl::ui {
 
 struct GlossaryWindowState {
     bool open = false;
-    std::string focus;   // the term to open and scroll to on the next frame ("" = none)
-    std::string filter;  // typed text: only terms whose name or definition contain it
+    std::string focus;      // the term to open and scroll to on the next frame ("" = none)
+    std::string filter;     // typed text: only terms whose name or definition contain it
+    std::string shownTerm;  // the term it last opened at (for the frame log)
 };
 
 void drawGlossaryWindow(GlossaryWindowState& state, Glossary const& glossary);

@@ -138,6 +138,7 @@ void drawTerms(LessonState& state, LessonStep const& step, Glossary const& gloss
             state.glossaryRequested = true;
             state.glossaryTerm = t.term;
         }
+        if (i == terms.front()) state.buttonCentres[8] = itemCentre();
         glossaryTooltip(t);
         ImGui::PopID();
     }
