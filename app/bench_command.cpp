@@ -1,5 +1,6 @@
 // The headless bench command: every (mode, cull, light count) combination timed on the GPU.
 #include "bench_command.h"
+#include "cli_options.h"
 
 #include "cli_values.h"
 #include "core/frame_passes.h"
@@ -366,8 +367,8 @@ json toJson(std::vector<Result> const& results, GlCaps const& caps, Size2 size, 
 }  // namespace
 
 void addBenchOptions(CLI::App& sub, BenchOptions& o) {
-    sub.add_option("--size", o.size, "Frame size WxH")->capture_default_str();
-    sub.add_option("--lights", o.lights, "Light counts, comma-separated")->delimiter(',')->capture_default_str();
+    cli::addShared(sub, cli::kSize, o.size)->capture_default_str();
+    cli::addShared(sub, cli::kLights, o.lights)->delimiter(',')->capture_default_str();
     sub.add_option("--modes", o.modes, "Lighting modes, comma-separated: quad, volumes, tiled, forward, clustered")
         ->delimiter(',')
         ->capture_default_str();
@@ -381,9 +382,9 @@ void addBenchOptions(CLI::App& sub, BenchOptions& o) {
     sub.add_option("--radius-scale", o.radiusScale, "Scale every light's radius: a number, or auto = sqrt(32 / lights)")
         ->capture_default_str();
     sub.add_option("--json", o.jsonPath, "Also write the results to this JSON file");
-    sub.add_option("--session", o.sessionPath, "Measure the scene, camera, lights and settings of a session file");
-    sub.add_option("--scene", o.scenePath, "Measure a glTF 2.0 scene (its own lights) instead of the default scene");
-    sub.add_option("--gl", o.glLimit, "Pretend the context is at most this OpenGL version, e.g. 3.3");
+    cli::addShared(sub, cli::kSession, o.sessionPath);
+    cli::addShared(sub, cli::kScene, o.scenePath);
+    cli::addShared(sub, cli::kGl, o.glLimit);
     sub.add_option("--layouts", o.layouts, "G-buffer layouts, comma-separated: classic, packed, naive8, rgb10a2")
         ->delimiter(',');
 }

@@ -1,5 +1,6 @@
 // The compare command: render each session like `render --session`, then diff the lit frames.
 #include "compare_command.h"
+#include "cli_options.h"
 
 #include "cli_values.h"
 #include "frame_export.h"
@@ -59,11 +60,11 @@ json passTimes(FrameStats const& stats) {
 void addCompareOptions(CLI::App& sub, CompareOptions& o) {
     sub.add_option("a", o.sessionA, "Session file of side A")->required();
     sub.add_option("b", o.sessionB, "Session file of side B")->required();
-    sub.add_option("--out", o.outDir, "Directory for a/, b/, diff.exr, diff.png and compare.json")->required();
-    sub.add_option("--size", o.size, "Frame size WxH of both sides")->capture_default_str();
+    cli::addShared(sub, cli::kOut, o.outDir)->required();  // a/, b/, diff.exr, diff.png and compare.json
+    cli::addShared(sub, cli::kSize, o.size)->capture_default_str();
     sub.add_option("--threshold", o.threshold, "A pixel differs when its largest RGB difference exceeds this")
         ->capture_default_str();
-    sub.add_flag("--allow-outside-uris", o.allowOutsideUris, "Let glTF scenes read files outside their folder");
+    cli::addShared(sub, cli::kAllowOutsideUris, o.allowOutsideUris);
 }
 
 int runCompare(CompareOptions const& o) {

@@ -1,5 +1,6 @@
 // The lesson commands: listing the lesson files, and rendering one step as `render` does.
 #include "lesson_command.h"
+#include "cli_options.h"
 
 #include "cli_values.h"
 #include "frame_export.h"
@@ -25,7 +26,7 @@ ui::LessonLibrary loadLibrary(std::optional<std::string> const& dir) {
 
 void addLessonsOptions(CLI::App& sub, LessonsOptions& o) {
     sub.add_flag("--json", o.json, "Write the list as JSON");
-    sub.add_option("--dir", o.dir, "A folder of lesson files instead of the shipped ones");
+    cli::addShared(sub, cli::kLessonsDir, o.dir);
 }
 
 int runLessons(LessonsOptions const& o) {
@@ -60,9 +61,9 @@ int runRenderLesson(RenderOptions const& o) {
         std::fprintf(stderr, "gbuffer-lab render: %s\n", m.c_str());
         return 2;
     };
-    for (char const* name : {"--scene", "--lights", "--time", "--mode", "--cull", "--blit"})
+    for (char const* name : {cli::kScene.name, cli::kLights.name, "--time", "--mode", "--cull", "--blit"})
         if (o.given.count(name)) return bad(std::string(name) + " cannot be combined with --lesson (the step sets it)");
-    if (o.sessionPath) return bad("--session cannot be combined with --lesson");
+    if (o.sessionPath) return bad(std::string(cli::kSession.name) + " cannot be combined with --lesson");
     // A broken lesson file is an error even when another lesson is asked for: the folder is one unit.
     ui::LessonLibrary const lib = loadLibrary(o.lessonsDir);
     if (!lib.errors.empty()) return bad(lib.errors.front());
@@ -72,7 +73,7 @@ int runRenderLesson(RenderOptions const& o) {
     ui::LessonStep const& step = lesson.steps[std::size_t(ref.step)];
     std::string error;
     Size2 size{lesson.width, lesson.height};
-    if (o.given.count("--size")) {
+    if (o.given.count(cli::kSize.name)) {
         auto parsed = parseSize(o.size, &error);
         if (!parsed) return bad(error);
         size = *parsed;

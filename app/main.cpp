@@ -1,6 +1,7 @@
 // gbuffer-lab entry point: the editor by default, `render` and `bench` as sub-commands.
 #include "bench_command.h"
 #include "bench_layouts.h"
+#include "cli_options.h"
 #include "cli_values.h"
 #include "compare_command.h"
 #include "editor.h"
@@ -24,19 +25,19 @@ int main(int argc, char** argv) {
     app.add_option("--screenshot", editor.screenshotPath,
                    "Write the editor window as PNG after --frames frames, then exit");
     app.add_option("--frames", editor.frames, "Frames to run before exiting (0: until the window is closed)");
-    app.add_option("--size", windowSize, "Window size WxH");
-    app.add_option("--lights", editor.lightCount, "Number of lights in the default scene");
-    app.add_option("--session", editor.sessionPath, "A session file to open");
+    gbl::cli::addShared(app, gbl::cli::kSize, windowSize);
+    gbl::cli::addShared(app, gbl::cli::kLights, editor.lightCount);
+    gbl::cli::addShared(app, gbl::cli::kSession, editor.sessionPath);
     app.add_option("--ui-test", editor.uiTestScript, "Run a UI test script and exit 0 when every check passes");
-    app.add_option("--gl", editor.glLimit, "Pretend the context is at most this OpenGL version, e.g. 3.3");
+    gbl::cli::addShared(app, gbl::cli::kGl, editor.glLimit);
     app.add_flag("--no-vsync", noVsync, "Render as fast as possible");
-    app.add_flag("--allow-outside-uris", editor.allowOutsideUris, "Let glTF files read files outside their folder");
+    gbl::cli::addShared(app, gbl::cli::kAllowOutsideUris, editor.allowOutsideUris);
     app.add_option("--log-frames", editor.logFramesPath,
                    "Write one JSON line per frame to FILE: rendered or not, frame ms, camera, selection, input events");
     app.add_option("--frame-sleep-ms", editor.frameSleepMs,
                    "Sleep this long every frame, still taking input (tests of slow machines)")
         ->check(CLI::Range(0, 10000));
-    app.add_option("--lesson", editor.lesson, "Open a lesson at start: ID or ID:STEP (see `gbuffer-lab lessons`)");
+    gbl::cli::addShared(app, gbl::cli::kLesson, editor.lesson);
     app.add_option("--frame-warn-seconds", editor.frameWarnSeconds,
                    "Switch to a faster mode, with a message, before a frame estimated to take longer than this")
         ->check(CLI::NonNegativeNumber);
@@ -70,7 +71,7 @@ int main(int argc, char** argv) {
     if (lessons->parsed()) return gbl::runLessons(lessonsOptions);
     if (compare->parsed()) return gbl::runCompare(compareOptions);
     if (bench->parsed()) {
-        benchOptions.lightsGiven = bench->count("--lights") > 0;
+        benchOptions.lightsGiven = bench->count(gbl::cli::kLights.name) > 0;
         return gbl::runBenchLayouts(benchOptions);
     }
 

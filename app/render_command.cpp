@@ -1,5 +1,6 @@
 // The headless render command.
 #include "render_command.h"
+#include "cli_options.h"
 
 #include "cli_values.h"
 #include "frame_export.h"
@@ -38,9 +39,9 @@ std::optional<std::string> prepareOutDir(std::string const& dir) {
 }  // namespace
 
 void addRenderOptions(CLI::App& sub, RenderOptions& o) {
-    sub.add_option("--out", o.outDir, "Directory for the images and JSON files")->required();
-    sub.add_option("--size", o.size, "Frame size WxH")->capture_default_str();
-    sub.add_option("--lights", o.lights, "Number of lights (default scene: 32)");
+    cli::addShared(sub, cli::kOut, o.outDir)->required();
+    cli::addShared(sub, cli::kSize, o.size)->capture_default_str();
+    cli::addShared(sub, cli::kLights, o.lights);
     sub.add_option("--time", o.time, "Seconds of light animation")->capture_default_str();
     sub.add_option("--blit", o.blit, "Depth copy before the forward pass: blit, shader or off")->capture_default_str();
     sub.add_option("--mode", o.mode, "Lighting mode: quad, volumes, tiled, forward or clustered")
@@ -52,17 +53,15 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
     sub.add_option("--cull", o.cull, "Light volume cull mode: back, front, none, flip or stencil")
         ->capture_default_str();
     sub.add_option("--view", o.views, "Extra debug view(s) to write as view_NAME.png");
-    sub.add_option("--scene", o.scene, "A glTF 2.0 scene instead of the default scene");
+    cli::addShared(sub, cli::kScene, o.scene);
     sub.add_option("--camera", o.camera,
                    "View from the glTF file's camera N (0, 1, ... as the editor's View menu lists them)");
-    sub.add_flag("--allow-outside-uris", o.allowOutsideUris, "Let the glTF file read files outside its folder");
-    sub.add_option("--gl", o.glLimit, "Pretend the context is at most this OpenGL version, e.g. 3.3");
-    sub.add_option("--session", o.sessionPath,
-                   "Render the frame a session file describes (--mode, --layout, --accumulation, --cull, --blit, "
-                   "--time override it)");
+    cli::addShared(sub, cli::kAllowOutsideUris, o.allowOutsideUris);
+    cli::addShared(sub, cli::kGl, o.glLimit);
+    cli::addShared(sub, cli::kSession, o.sessionPath);
     sub.add_option("--save-session", o.saveSessionPath, "Also write the session that reproduces this frame");
-    sub.add_option("--lesson", o.lesson, "Render step STEP (from 1) of lesson ID, as ID or ID:STEP (see `lessons`)");
-    sub.add_option("--lessons-dir", o.lessonsDir, "Read lessons from this folder instead of the shipped ones");
+    cli::addShared(sub, cli::kLesson, o.lesson);
+    cli::addShared(sub, cli::kLessonsDir, o.lessonsDir);
     sub.add_option("--accumulate", o.accumulate,
                    "Shade with the first K lights only (0 = ambient alone) and outline light K's volume");
     sub.add_flag("--contribution", o.contribution, "With --accumulate K: light K alone, without ambient");
@@ -73,8 +72,8 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
     sub.add_option("--until", o.until,
                    "Stop after pass PASS (e.g. geometry, lighting, depth_copy) and write the frame as it stands");
     sub.parse_complete_callback([&sub, &o] {
-        for (char const* name :
-             {"--scene", "--lights", "--time", "--blit", "--mode", "--layout", "--accumulation", "--cull", "--size"})
+        for (char const* name : {cli::kScene.name, cli::kLights.name, "--time", "--blit", "--mode", "--layout",
+                                 "--accumulation", "--cull", cli::kSize.name})
             if (sub.count(name) > 0) o.given.insert(name);
     });
 }
@@ -146,7 +145,7 @@ int runRender(RenderOptions const& o) {
     std::optional<ui::Session> session;  // the loaded session, with the overrides applied
     if (o.sessionPath) {
         // The session names its scene and lights; options that change the frame override it.
-        if (o.given.count("--scene") || o.given.count("--lights"))
+        if (o.given.count(cli::kScene.name) || o.given.count(cli::kLights.name))
             return badArgument(
                 "--scene and --lights cannot be combined with --session (the session names its scene and lights)");
         ui::SessionLoad loaded = ui::loadSession(*o.sessionPath);

@@ -161,7 +161,9 @@ ShadingUniforms shadingUniforms(FrameContext const& f) {
 }
 
 DeferredInputs RendererImpl::deferredInputs(FrameContext const& f) const {
-    return {targets.gbuffer, lights, shadingUniforms(f)};
+    ShadingUniforms shading = shadingUniforms(f);
+    shading.splitAccumulation = splitAccumulation(f);
+    return {targets.gbuffer, lights, shading};
 }
 
 FrameStats RendererImpl::render(FrameInput const& input) {

@@ -130,7 +130,7 @@ private:
     LitTarget quadTarget(FrameContext const& f) const;              // lit image, or the two light targets
     LitTarget volumeTarget(FrameContext const& f) const;            // the same with the G-buffer's depth
     gl::Texture const& lightingImage(FrameContext const& f) const;  // tiled / clustered image 0
-    void prepareAccumulation(FrameContext const& f);                // uSplitAccumulation, image unit 2
+    void prepareAccumulation(FrameContext const& f);                // zeroes split targets left from a split frame
     void combineLights(FrameContext const& f);                      // split: the two targets into `lighting`
 };
 

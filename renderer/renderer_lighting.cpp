@@ -17,6 +17,7 @@ LightingClusteredInput RendererImpl::clusteredInput(FrameContext const& f) {
             shaders.get(ProgramId::ClusterShade),
             clusters,
             lightingImage(f),
+            targets.specularLight,
             targets.coverage};
 }
 
@@ -50,7 +51,7 @@ void RendererImpl::runLighting(FrameContext const& f) {
             break;
         case LightingMode::Tiled:  // the tiles' candidates were binned in the frame's light_lists pass
             lightingTiledPass({deferred, shaders.get(ProgramId::LightingTiled), binPrograms(ProgramId::TileBin),
-                               tileBins, lightingImage(f), targets.coverage},
+                               tileBins, lightingImage(f), targets.specularLight, targets.coverage},
                               {f.view, f.projection, targets.width, targets.height, f.camera.nearPlane,
                                f.camera.farPlane, true, false, true});
             break;

@@ -23,7 +23,6 @@ uniform int uLightCount;
 uniform mat4 uView;
 uniform ivec2 uScreenSize;
 uniform ivec3 uGrid;  // tiles x, tiles y, slices (at most 256: one invocation each)
-uniform int uTileSize;
 uniform int uMaxLights;  // list entries per cluster (ClusterLists::cap, at most kClusterMaxLights)
 uniform float uNear;
 uniform float uFar;
@@ -68,7 +67,7 @@ void main() {
     int slice = local;
     bool owner = slice < uGrid.z;  // this invocation builds cluster (tile, slice)
 
-    ivec2 lo = tile * uTileSize, hi = min(lo + uTileSize, uScreenSize);
+    ivec2 lo = tile * GBL_TILE_SIZE, hi = min(lo + GBL_TILE_SIZE, uScreenSize);
     vec2 ndcLo = vec2(lo) / vec2(uScreenSize) * 2.0 - 1.0, ndcHi = vec2(hi) / vec2(uScreenSize) * 2.0 - 1.0;
     vec3 bl = unprojectFar(ndcLo), br = unprojectFar(vec2(ndcHi.x, ndcLo.y));
     vec3 tl = unprojectFar(vec2(ndcLo.x, ndcHi.y)), tr = unprojectFar(ndcHi);

@@ -9,7 +9,7 @@
 #include "surface_terms.glsl"
 #include "light_accumulation.glsl"
 
-layout(local_size_x = 16, local_size_y = 16) in;
+layout(local_size_x = GBL_TILE_SIZE, local_size_y = GBL_TILE_SIZE) in;  // GBL_TILE_SIZE: kTileSize, core/tile_math.h
 
 layout(rgba16f, binding = BIND_IMAGE_LIGHTING) uniform writeonly image2D uLightingImage;
 layout(rg32f, binding = BIND_IMAGE_COVERAGE) uniform writeonly image2D uCoverageImage;
@@ -28,7 +28,6 @@ uniform vec3 uAmbient;
 uniform mat4 uView;
 uniform ivec2 uScreenSize;
 uniform ivec3 uGrid;
-uniform int uTileSize;
 uniform int uMaxLights;
 uniform float uNear;
 uniform float uFar;
@@ -60,7 +59,7 @@ void main() {
     float lit = 0.0;
     float depth = -(uView * vec4(pos, 1.0)).z;
     int slice = clamp(int(floor(log(depth / uNear) / log(uFar / uNear) * float(uGrid.z))), 0, uGrid.z - 1);
-    int cluster = (slice * uGrid.y + px.y / uTileSize) * uGrid.x + px.x / uTileSize;
+    int cluster = (slice * uGrid.y + px.y / GBL_TILE_SIZE) * uGrid.x + px.x / GBL_TILE_SIZE;
     uint count = clusterCount[CHECKED(CHECK_SITE_CLUSTER_COUNT, cluster, clusterCount.length())];
     if (count <= uint(uMaxLights)) {
         uint base = uint(cluster) * uint(uMaxLights);
@@ -68,7 +67,7 @@ void main() {
     } else {
         // Over the cap: the cluster's list is incomplete, so the tile's whole list (a superset, in
         // index order) is tried, or every light where the tile's bin overflowed too (exact, slower).
-        int tile = (px.y / uTileSize) * uGrid.x + px.x / uTileSize;
+        int tile = (px.y / GBL_TILE_SIZE) * uGrid.x + px.x / GBL_TILE_SIZE;
         uint tileCount = tileBinCount[CHECKED(CHECK_SITE_TILE_BIN_COUNT, tile, tileBinCount.length())];
         if (tileCount <= uint(uBinCap)) {
             uint base = uint(tile) * uint(uBinCap);

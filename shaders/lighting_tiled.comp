@@ -13,7 +13,8 @@
 #include "surface_terms.glsl"
 #include "light_accumulation.glsl"
 
-layout(local_size_x = 16, local_size_y = 16) in;
+layout(local_size_x = GBL_TILE_SIZE, local_size_y = GBL_TILE_SIZE) in;  // GBL_TILE_SIZE: kTileSize, core/tile_math.h
+const int TILE_INVOCATIONS = GBL_TILE_SIZE * GBL_TILE_SIZE;
 
 layout(rgba16f, binding = BIND_IMAGE_LIGHTING) uniform writeonly image2D uLightingImage;
 layout(rg32f, binding = BIND_IMAGE_COVERAGE) uniform writeonly image2D uCoverageImage;
@@ -74,7 +75,7 @@ void main() {
     vec2 depthRange = tileDepth[CHECKED(CHECK_SITE_TILE_DEPTH, tile, tileDepth.length())];
     float minDepth = depthRange.x, maxDepth = depthRange.y;
     bool anyGeometry = maxDepth != 0.0;  // the same in every invocation: uniform flow below
-    ivec2 lo = ivec2(gl_WorkGroupID.xy) * 16, hi = min(lo + 16, uScreenSize);
+    ivec2 lo = ivec2(gl_WorkGroupID.xy) * GBL_TILE_SIZE, hi = min(lo + GBL_TILE_SIZE, uScreenSize);
     vec2 ndcLo = vec2(lo) / vec2(uScreenSize) * 2.0 - 1.0, ndcHi = vec2(hi) / vec2(uScreenSize) * 2.0 - 1.0;
     vec3 bl = unprojectFar(ndcLo), br = unprojectFar(vec2(ndcHi.x, ndcLo.y));
     vec3 tl = unprojectFar(vec2(ndcLo.x, ndcHi.y)), tr = unprojectFar(ndcHi);
@@ -111,7 +112,7 @@ void main() {
     if (!anyGeometry) binned = 0;
     if (binned >= 0) {
         // --- light list: the tile's candidates, each invocation testing every 256th ---
-        for (int k = int(local); k < binned; k += 256) {
+        for (int k = int(local); k < binned; k += TILE_INVOCATIONS) {
             int index = binnedLight(tile, k);
             if (lightTouchesTile(index, minDepth, maxDepth, left, right, bottom, top, tileCentre, tileRadius)) keepLight(index);
         }
@@ -132,12 +133,12 @@ void main() {
     for (int base = 0; binned < 0 && base < uLightCount; base += CHUNK_LIGHTS) {
         int chunk = min(uLightCount - base, CHUNK_LIGHTS);
         int words = (chunk + 31) / 32;
-        for (int w = int(local); w < words; w += 256) sLightMask[CHECKED(CHECK_SITE_LIGHT_MASK, w, MAX_LIGHT_WORDS)] = 0u;
+        for (int w = int(local); w < words; w += TILE_INVOCATIONS) sLightMask[CHECKED(CHECK_SITE_LIGHT_MASK, w, MAX_LIGHT_WORDS)] = 0u;
         memoryBarrierShared();
         barrier();
 
         // --- light list: every invocation tests every 256th light of the chunk ---
-        for (int i = int(local); i < chunk; i += 256)
+        for (int i = int(local); i < chunk; i += TILE_INVOCATIONS)
             if (lightTouchesTile(base + i, minDepth, maxDepth, left, right, bottom, top, tileCentre, tileRadius))
                 atomicOr(sLightMask[CHECKED(CHECK_SITE_LIGHT_MASK, i >> 5, MAX_LIGHT_WORDS)], 1u << uint(i & 31));
         memoryBarrierShared();

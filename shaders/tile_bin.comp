@@ -20,7 +20,6 @@ uniform mat4 uView;
 uniform mat4 uProjection;
 uniform ivec2 uScreenSize;
 uniform ivec2 uTiles;
-uniform int uTileSize;
 uniform int uBinCap;  // entries per tile (TileBins::cap)
 uniform float uNear;
 uniform float uFar;
@@ -45,11 +44,11 @@ void main() {
             lo = min(lo, ndc);
             hi = max(hi, ndc);
         }
-        vec2 size = vec2(uScreenSize), margin = vec2(float(uTileSize));
+        vec2 size = vec2(uScreenSize), margin = vec2(float(GBL_TILE_SIZE));
         vec2 pxLo = clamp((lo * 0.5 + 0.5) * size - 1.0, -margin, size + margin);
         vec2 pxHi = clamp((hi * 0.5 + 0.5) * size + 1.0, -margin, size + margin);
-        t0 = max(ivec2(floor(pxLo / float(uTileSize))), ivec2(0));
-        t1 = min(ivec2(floor(pxHi / float(uTileSize))), uTiles - 1);
+        t0 = max(ivec2(floor(pxLo / float(GBL_TILE_SIZE))), ivec2(0));
+        t1 = min(ivec2(floor(pxHi / float(GBL_TILE_SIZE))), uTiles - 1);
     }
     for (int ty = t0.y; ty <= t1.y; ++ty)
         for (int tx = t0.x; tx <= t1.x; ++tx) {

@@ -8,7 +8,7 @@
 #include "shader_checks.glsl"
 #include "depth.glsl"
 
-layout(local_size_x = 16, local_size_y = 16) in;
+layout(local_size_x = GBL_TILE_SIZE, local_size_y = GBL_TILE_SIZE) in;  // GBL_TILE_SIZE: kTileSize, core/tile_math.h
 
 #define TILE_DEPTH_ACCESS writeonly
 #include "tile_depth_buffer.glsl"

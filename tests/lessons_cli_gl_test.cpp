@@ -66,7 +66,7 @@ TEST(LessonsCli, RefusesBadLessonsInOneSentence) {
     std::string const file = dir + "/broken.json";
     expectRefused({"render", "--lesson", "b", "--lessons-dir", dir, "--out", out},
                   file + ": steps[0].pipeline.cull must be one of back, front, none, flip or stencil (got \"up\")");
-    CommandResult const list = runGbufferLab({"lessons", "--dir", dir});
+    CommandResult const list = runGbufferLab({"lessons", "--lessons-dir", dir});
     EXPECT_EQ(list.exitCode, 2);
     EXPECT_NE(list.output.find(file + ": steps[0].pipeline.cull"), std::string::npos) << list.output;
 }

@@ -16,7 +16,7 @@ using gbl::test::GlTest;
 namespace {
 
 std::string shippedDir() {
-    return std::string(GBL_SOURCE_DIR) + "/assets/lessons";
+    return gbl::test::sourcePath("assets/lessons");
 }
 
 class LessonsGlTest : public GlTest {

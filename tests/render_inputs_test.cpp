@@ -80,3 +80,17 @@ TEST(RenderInputs, DescribeNamesWhatChanged) {
     EXPECT_EQ(describeChange(a.make(), a.make()), "nothing");
     EXPECT_EQ(describeChange(std::nullopt, a.make()), "first frame");
 }
+
+// The Frame window's "Stop here" and "Run whole frame" each render the frame again.
+TEST(RenderInputs, AStopAfterAPassRendersAgain) {
+    RenderOnChange r;
+    Inputs in;
+    RenderInputs whole = in.make();
+    EXPECT_TRUE(needsRender(r, whole));
+    RenderInputs stopped = whole;
+    stopped.stopAfter = PassId::Geometry;
+    EXPECT_TRUE(needsRender(r, stopped));
+    EXPECT_EQ(describeChange(whole, stopped), "stop after a pass");
+    EXPECT_FALSE(needsRender(r, stopped));
+    EXPECT_TRUE(needsRender(r, whole));
+}

@@ -407,7 +407,17 @@ TEST(Session, EveryKindOfBadFieldGetsOneMessageNamingIt) {
          },
          "s.json: lights[1]: light parameter inner_cone_deg must not exceed outer_cone_deg (40.000000 > 30.000000)"},
         {"negative exposure", [](json& j) { j["pipeline"]["exposure"] = -1; },
-         "s.json: pipeline.exposure must be a finite number > 0 (got -1)"},
+         "s.json: pipeline.exposure must be between 0.05 and 16 (got -1)"},
+        // The ranges of core/pipeline_fields.h, the same as the Pipeline panel's and the A/B table's.
+        {"shininess past the panel's range", [](json& j) { j["pipeline"]["shininess"] = 1000; },
+         "s.json: pipeline.shininess must be between 1 and 512 (got 1000)"},
+        {"ambient above one",
+         [](json& j) {
+             j["pipeline"]["ambient"] = {0.1, 2.0, 0.1};
+         },
+         "s.json: pipeline.ambient[1] must be between 0 and 1 (got 2.0)"},
+        {"the script's old name", [](json& j) { j["pipeline"]["cubes"] = true; },
+         "s.json: pipeline.cubes is not a known field"},
         // out of range
         {"far before near", [](json& j) { j["camera"]["far"] = 0.001; },
          "s.json: camera.far must be greater than camera.near"},

@@ -30,7 +30,7 @@ pick() { # pick INDEX WORDS...: the word at INDEX modulo the count
 # The state the baseline and the final check are taken in, so both count the same objects.
 canonical() {
     echo "resize 320 240"; echo "set mode quad"; echo "set cull front"; echo "set blit blit"
-    echo "set cubes 1"; echo "set wireframes 0"; echo "set lights 32"; echo "frames 30"
+    echo "set light_cubes 1"; echo "set volume_wireframes 0"; echo "set lights 32"; echo "frames 30"
 }
 
 {
@@ -38,8 +38,8 @@ canonical() {
     echo "frames 10"
     # Warm-up: every mode, overlay and size once, so objects created on first use exist
     # before the baseline is taken.
-    for m in $modes; do echo "set mode $m"; echo "set wireframes 1"; echo "frames 4"; done
-    echo "set wireframes 0"
+    for m in $modes; do echo "set mode $m"; echo "set volume_wireframes 1"; echo "frames 4"; done
+    echo "set volume_wireframes 0"
     echo "resize 0 0"; echo "frames 3"; echo "resize 360 240"; echo "frames 3"
     canonical
     i=0
@@ -47,8 +47,8 @@ canonical() {
         echo "set mode $(pick "$i" $modes)"
         echo "set cull $(pick $((i / 2)) $culls)"
         echo "set blit $(pick $((i / 3)) $blits)"
-        echo "set cubes $((i % 2))"
-        echo "set wireframes $(((i / 4) % 2))"
+        echo "set light_cubes $((i % 2))"
+        echo "set volume_wireframes $(((i / 4) % 2))"
         echo "light $((i % 8)) x $(((i % 17) - 8))"
         echo "light $((i % 8)) intensity $((1 + i % 5))"
         # A refused edit now and then: the editor must keep the light as it was.

@@ -24,7 +24,7 @@ frames 4
 expect-setting layout packed
 expect-no-gl-errors
 # Without the light cubes (drawn unlit at 1.5) the values are the lit surfaces alone.
-set cubes 0
+set light_cubes 0
 set view lighting
 viewport-tools on
 viewer-tool viewport histogram on

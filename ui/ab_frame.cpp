@@ -9,6 +9,7 @@ namespace gbl::ui {
 
 FrameInput editorFrameInput(EditorState const& state, std::span<PointLight const> lights, bool waitForGpuTimings) {
     FrameInput in{state.camera, lights, state.pipeline, waitForGpuTimings};
+    in.stopAfter = state.frame.stopAfter;  // the Frame window's "Stop here"
     if (state.accumulate.enabled) {
         in.accumulateLights = state.accumulate.count;
         in.lightContribution = state.accumulate.contribution;

@@ -229,6 +229,24 @@ void avoidLongFrame(Editor& editor, glm::ivec2 size) {
                    true);
 }
 
+namespace {
+
+// The Frame window's stop after a pass that this frame no longer runs (the mode changed): dropped,
+// with the reason in the log.
+void dropStaleStop(Editor& editor) {
+    EditorState& state = editor.state;
+    if (!state.frame.stopAfter) return;
+    FrameInput input = ui::editorFrameInput(state, editor.drawn, false);
+    input.stopAfter.reset();
+    std::vector<PassDecl> const passes = editor.renderer->framePasses(input);
+    if (auto why = stopAfterError(passName(*state.frame.stopAfter), passes)) {
+        ui::logMessage(state.log, *why + "; the Frame window runs the whole frame again.");
+        state.frame.stopAfter.reset();
+    }
+}
+
+}  // namespace
+
 void renderScene(Editor& editor, FrameTimes& times) {
     EditorState& state = editor.state;
     Renderer& renderer = *editor.renderer;
@@ -252,7 +270,9 @@ void renderScene(Editor& editor, FrameTimes& times) {
     glm::ivec2 const size(renderer.width(), renderer.height());
     ui::RenderInputs inputs = ui::renderInputs(state.camera, editor.drawn, state.pipeline, size, editor.sceneGeneration,
                                                editor.shaderGeneration, state.animation.time, times.measuring);
+    dropStaleStop(editor);
     FrameInput const frameInput = ui::editorFrameInput(state, editor.drawn, times.measuring);
+    inputs.stopAfter = frameInput.stopAfter;
     inputs.teaching = ui::teachingInputs(frameInput, state.ab);
     std::optional<ui::RenderInputs> const before = editor.render.last;
     times.rendered = size.x > 0 && size.y > 0 && ui::needsRender(editor.render, inputs);
@@ -261,6 +281,8 @@ void renderScene(Editor& editor, FrameTimes& times) {
         // Interactive frames take the previous frame's GPU timings instead of waiting for
         // this one's; a measurement waits anyway (glFinish), so it can have exact ones.
         times.frameStats = ui::renderEditorFrame(state, renderer, frameInput, editor.frame, editor.gpu.ab);
+    if (times.rendered || state.frame.passes.empty())
+        state.frame.passes = renderer.framePasses(frameInput);
     else
         times.frameStats = state.stats.last;
     finishIfMeasuring(times);

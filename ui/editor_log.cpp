@@ -73,6 +73,12 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
             line.toolsRegion =
                 glm::ivec4(tools.viewer.region->min, tools.viewer.region->max - tools.viewer.region->min);
     }
+    line.frameWindow = state.frame.windowRect;
+    line.frameButton = state.frame.openButton;
+    line.stopButton = state.frame.stopButton;
+    line.frameTargets = state.frame.targets;
+    line.stopAfter = state.frame.stopAfter ? std::string(passName(*state.frame.stopAfter)) : std::string();
+    line.stoppedAfter = state.stats.last.stoppedAfter ? std::string(passName(*state.stats.last.stoppedAfter)) : "";
     editor.frameLog.write(line);
 }
 

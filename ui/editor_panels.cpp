@@ -7,6 +7,7 @@
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
 #include "panels/panel_confirm.h"
+#include "panels/panel_frame.h"
 #include "panels/panel_gbuffer.h"
 #include "panels/panel_lights.h"
 #include "panels/panel_log.h"
@@ -75,6 +76,9 @@ EditRequest drawMainMenu(Editor& editor) {
         if (ImGui::MenuItem("Frame selection", keysFor(ui::EditorAction::FrameSelection))) edit.frameSelection = true;
         if (ImGui::MenuItem("Home view", keysFor(ui::EditorAction::HomeView))) edit.homeView = true;
         if (ImGui::MenuItem("Frame the whole scene")) ui::frameBounds(state.rig, state.camera, state.sceneBounds);
+        ImGui::Separator();
+        // The Frame window: the frame's passes as a diagram (over the G-buffer strip while open).
+        ImGui::MenuItem("Frame diagram", nullptr, &state.frame.open);
         std::vector<ui::NamedView> const fileViews =
             ui::sceneCameraViews(state.sceneCameras, state.sceneBounds, state.rig);
         if (!fileViews.empty()) ui::separatorText("The file's cameras");
@@ -157,14 +161,26 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
                             editor.gpu.ab.b.texture.id(),
                             editor.gpu.ab.diff.id()};
     state.viewport.clipPlanes = {state.camera.nearPlane, state.camera.farPlane};
+    state.viewport.stoppedAfter =
+        state.stats.last.stoppedAfter ? std::string(passName(*state.stats.last.stoppedAfter)) : std::string();
     ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, state.viewportTools, viewportTexture,
                           {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer),
                           &ab, state.inspector.locked ? state.inspector.pixel : std::nullopt);
-    ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()},
-                         state.inspector.locked ? state.inspector.pixel : std::nullopt);
+    if (state.frame.open && !ui::kHasDocking) {
+        // Tiled: the Frame window takes the strip's place while open.
+        state.gbuffer.visible = false;
+        state.gbuffer.hoverPixel.reset();
+        state.gbuffer.showInViewport.reset();
+        state.gbuffer.imageRects.fill(glm::vec4(0.0f));
+    } else {
+        ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()},
+                             state.inspector.locked ? state.inspector.pixel : std::nullopt);
+    }
+    ui::drawFramePanel(state.frame, state.pipeline, state.stats.last);
     ui::drawViewerMagnifier(state.gbuffer, state.viewportTools);
     ui::drawPixelInspectorPanel(state.inspector);
-    ui::drawStatsPanel(state.stats, editor.caps, int(state.lights.size()), &editor.render, editor.renderReason);
+    ui::drawStatsPanel(state.stats, editor.caps, int(state.lights.size()), &editor.render, editor.renderReason,
+                       &state.frame);
     ui::drawLogPanel(state.log);
     drawLessons(editor);  // the Lessons window; applies the step it asks for (editor_lessons.cpp)
     ui::drawSceneLoadingUi(editor.loading);

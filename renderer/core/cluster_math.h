@@ -13,8 +13,8 @@
 
 namespace gbl {
 
-inline constexpr int kClusterTileSize = 16;  // pixels, as tiled mode's tiles
-inline constexpr int kClusterSlices = 24;    // exponential depth slices between near and far
+inline constexpr int kClusterTileSize = kTileSize;  // pixels: tiled mode's tiles (GBL_TILE_SIZE in the shaders)
+inline constexpr int kClusterSlices = 24;           // exponential depth slices between near and far
 // Lights stored per cluster, at most. A cluster reached by more keeps its true count, and its
 // pixels loop over every light (exact, slower) instead of the list: the cap costs time, never
 // correctness. 256 holds the default scene's 512 lights at their full radii.

@@ -57,7 +57,7 @@ DrawState fullScreen(std::string_view what) {
     return state(what, DepthTest::Off, false, Blend::Off, FaceCull::Off);
 }
 
-// passes/light_volumes.cpp, drawLightVolumes: the draws of one cull mode, added by `blend`.
+// passes/light_volumes.cpp, drawLightVolumes: the draws of one cull mode, each added (blend ONE, ONE).
 std::vector<DrawState> volumeStates(CullMode cull) {
     DrawState const front = state("volumes: front faces", DepthTest::Less, false, Blend::Add, FaceCull::Back);
     DrawState const back = state("volumes: back faces", DepthTest::GreaterEqual, false, Blend::Add, FaceCull::Front);

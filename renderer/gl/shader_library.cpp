@@ -1,6 +1,7 @@
 // Shader sources, #include expansion and hot reload.
 #include "gl/shader_library.h"
 
+#include "core/tile_math.h"
 #include "gl/embedded_shaders.h"
 #include "gl/shader_bindings.h"
 
@@ -70,6 +71,8 @@ std::optional<std::string> ShaderLibrary::stageSource(ProgramId id, std::string 
     auto const version = text->find("#version");
     auto const eol = text->find('\n', version == std::string::npos ? 0 : version);
     std::string defs = "#define GBL_PROGRAM_ID " + std::to_string(int(id)) + "\n";
+    // The tile size of tiled and clustered lighting: one constant for C++ and every shader.
+    defs += "#define GBL_TILE_SIZE " + std::to_string(kTileSize) + "\n";
     for (auto const& d : programInfo(id).desc.defines) defs += "#define " + d + "\n";
     for (auto const& d : globalDefines_) defs += "#define " + d + "\n";
     text->insert(eol == std::string::npos ? text->size() : eol + 1, defs);

@@ -14,15 +14,11 @@ CoverageOutput coveragePass(CoverageInput const& in, CoverageConfig const& c) {
             LightingTiledConfig t = c.tiled;
             t.shade = false;
             t.coverage = true;
-            lightingTiledPass({in.deferred, *in.tiled, *in.tiledBin, *in.bins, in.hdr, in.coverage}, t);
+            lightingTiledPass({in.deferred, *in.tiled, *in.tiledBin, *in.bins, in.hdr, in.hdr, in.coverage}, t);
         }
     } else if (c.mode == LightingMode::Volumes) {
         if (in.volumes && in.volumeCoverage && in.volumeStencil) {
-            glEnable(GL_BLEND);
-            glBlendEquation(GL_FUNC_ADD);
-            glBlendFunc(GL_ONE, GL_ONE);
             drawLightVolumes({in.deferred, *in.volumes, *in.volumeCoverage, *in.volumeStencil}, c.viewProj, c.cull);
-            glDisable(GL_BLEND);
         }
     } else if (c.mode == LightingMode::Quad) {
         glDisable(GL_DEPTH_TEST);

@@ -23,7 +23,7 @@ struct CoverageInput {
     TileBins* bins;                     // (with `tiled`)
     gl::Framebuffer const& target;      // coverageFbo: the counts and volumeDepthStencil()
     gl::Texture const& coverage;        // its colour attachment (the tiled pass writes it as an image)
-    gl::Texture const& hdr;             // bound (not written) for the tiled program's lit image
+    gl::Texture const& hdr;             // bound (not written) as the tiled program's lit and specular images
 };
 struct CoverageConfig {
     LightingMode mode = LightingMode::Quad;

@@ -111,6 +111,14 @@ void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, Cull
         // The cost: a light whose volume crosses the far plane misses surfaces right at it.
     };
 
+    // Every shading draw adds to the target (the state frame_passes.cpp declares for this pass); the
+    // stencil marks turn blending off and back on around themselves. Left off on return.
+    auto additive = [] {
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ONE);
+    };
+    additive();
     glDepthMask(GL_FALSE);
     setCommon(p);
     for (Mesh const& m : meshes) {
@@ -143,7 +151,6 @@ void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, Cull
                 gl::Program const& mark = in.stencilMark;
                 setCommon(mark);
                 glEnable(GL_STENCIL_TEST);
-                GLboolean blend = glIsEnabled(GL_BLEND);
                 for (int i = 0; i < total; ++i) {
                     // Mark: both faces, depth-tested, no colour; only depth failures count.
                     mark.use();
@@ -161,7 +168,7 @@ void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, Cull
                     // and every visit resets the mark to 0 for the next light, pass or fail (which is
                     // why light_volume.frag never discards).
                     p.use();
-                    if (blend) glEnable(GL_BLEND);
+                    additive();
                     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
                     glDisable(GL_DEPTH_TEST);
                     glStencilFunc(GL_EQUAL, 1, 0xFF);
@@ -176,6 +183,7 @@ void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, Cull
         }
     }
     glBindVertexArray(0);
+    glDisable(GL_BLEND);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
     glEnable(GL_DEPTH_TEST);
@@ -195,11 +203,7 @@ LightingOutput lightingVolumesPass(LightingVolumesInput const& in, LightingVolum
     in.ambient.set("uLightCount", 0);
     in.triangle.draw();
 
-    glEnable(GL_BLEND);
-    glBlendEquation(GL_FUNC_ADD);
-    glBlendFunc(GL_ONE, GL_ONE);
     drawLightVolumes({in.deferred, in.volumes, in.shade, in.stencilMark}, config.viewProj, config.cull);
-    glDisable(GL_BLEND);
     return {in.target.hdr};
 }
 

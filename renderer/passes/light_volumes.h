@@ -35,8 +35,9 @@ struct VolumeInstancesConfig {
 };
 void prepareVolumeInstances(LightVolumeGpu& volumes, VolumeInstancesConfig const& config);
 
-// Draws the volumes with `program` into the bound framebuffer, with the face culling, depth and
-// stencil state of `cull`; `stencilMark` is the marking program of the stencil mode.
+// Draws the volumes with `program` added (blend ONE, ONE) into the bound framebuffer, with the face
+// culling, depth and stencil state of `cull`; `stencilMark` is the marking program of the stencil
+// mode. Sets every state it uses; leaves blending off, depth test on (LESS) and back faces culled.
 struct LightVolumeDraw {
     DeferredInputs deferred;
     LightVolumeGpu const& volumes;

@@ -15,7 +15,6 @@ void setGridUniforms(gl::Program const& p, LightingClusteredInput const& in, Lig
     p.set("uView", c.view);
     glUniform2i(p.uniform("uScreenSize"), c.width, c.height);
     glUniform3i(p.uniform("uGrid"), g.tilesX, g.tilesY, g.slices);
-    p.set("uTileSize", kClusterTileSize);
     p.set("uMaxLights", in.lists.cap);
     p.set("uNear", c.nearPlane);
     p.set("uFar", c.farPlane);
@@ -68,15 +67,13 @@ LightingOutput clusterShadePass(LightingClusteredInput const& in, LightingCluste
     p.set("uBinCap", in.bins.cap);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS, in.bins.counts.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS, in.bins.lights.id());
-    // Both image units are bound whatever the flags, so the program's declared images are valid.
-    glBindImageTexture(slot::BIND_IMAGE_LIGHTING, in.hdr.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    glBindImageTexture(slot::BIND_IMAGE_COVERAGE, in.coverage.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    bindLightImages(in.hdr, in.specular, in.coverage);
     bindTextureUnit(slot::BIND_CLUSTER_LIST, GL_TEXTURE_BUFFER, in.lists.list.id());
-    glDispatchCompute(GLuint((c.width + 15) / 16), GLuint((c.height + 15) / 16), 1);
+    TileGrid const grid = tileGrid(c.width, c.height);
+    glDispatchCompute(GLuint(grid.tilesX), GLuint(grid.tilesY), 1);
     // Later passes read the images as textures and framebuffer attachments.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    glBindImageTexture(slot::BIND_IMAGE_LIGHTING, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    glBindImageTexture(slot::BIND_IMAGE_COVERAGE, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    unbindLightImages();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_CLUSTER_COUNTS, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS, 0);

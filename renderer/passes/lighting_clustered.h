@@ -26,6 +26,7 @@ struct LightingClusteredInput {
     gl::Program const& shade;  // ProgramId::ClusterShade
     ClusterLists& lists;
     gl::Texture const& hdr;       // RGBA16F image written when config.shade
+    gl::Texture const& specular;  // RGBA16F: specular light, written when config.shade in split frames
     gl::Texture const& coverage;  // RG32F image written when config.coverage
 };
 struct LightingClusteredConfig {

@@ -12,6 +12,7 @@ struct LightingTiledInput {
     TileBinPrograms bin;         // ProgramId::TileDepth and TileBin: fill `bins` first
     TileBins& bins;
     gl::Texture const& hdr;       // RGBA16F image written when config.shade
+    gl::Texture const& specular;  // RGBA16F: specular light, written when config.shade in split frames
     gl::Texture const& coverage;  // RG32F image written when config.coverage
 };
 struct LightingTiledConfig {

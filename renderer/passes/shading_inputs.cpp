@@ -33,6 +33,19 @@ void setShadingUniforms(gl::Program const& p, ShadingUniforms const& s) {
     p.set("uAmbient", s.ambient);
     p.set("uEmissiveWeight", s.emissiveWeight);
     p.set("uInverseViewProj", s.inverseViewProj);
+    p.set("uSplitAccumulation", s.splitAccumulation ? 1 : 0);
+}
+
+void bindLightImages(gl::Texture const& lit, gl::Texture const& specular, gl::Texture const& coverage) {
+    glBindImageTexture(slot::BIND_IMAGE_LIGHTING, lit.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(slot::BIND_IMAGE_SPECULAR_LIGHT, specular.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(slot::BIND_IMAGE_COVERAGE, coverage.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+}
+
+void unbindLightImages() {
+    glBindImageTexture(slot::BIND_IMAGE_LIGHTING, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(slot::BIND_IMAGE_SPECULAR_LIGHT, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(slot::BIND_IMAGE_COVERAGE, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
 }
 
 void bindDeferredInputs(gl::Program const& p, DeferredInputs const& in) {

@@ -21,6 +21,9 @@ struct ShadingUniforms {
     // Multiplies the surfaces' emission (shaders/surface_terms.glsl): 0 in a frame showing one
     // light's contribution alone, which leaves out the ambient term too.
     float emissiveWeight = 1.0f;
+    // Split accumulation (shaders/light_accumulation.glsl): the lights go to the diffuse and
+    // specular targets instead of one lit image.
+    bool splitAccumulation = false;
 };
 
 // Binds `texture` to texture unit `unit` (a BIND_* slot) and leaves unit 0 active.
@@ -31,6 +34,13 @@ void bindGBuffer(GBuffer const& gbuffer);
 // The light buffer on BIND_LIGHTS, and uLightCount.
 void bindLights(gl::Program const& program, LightBuffer const& lights);
 void setShadingUniforms(gl::Program const& program, ShadingUniforms const& shading);
+
+// The images a compute lighting pass writes: the lit (or diffuse) image on BIND_IMAGE_LIGHTING,
+// split accumulation's specular light on BIND_IMAGE_SPECULAR_LIGHT, the counts on
+// BIND_IMAGE_COVERAGE. All three are bound whatever the pass writes, so the program's declared
+// images are always valid; unbindLightImages() after the dispatch.
+void bindLightImages(gl::Texture const& lit, gl::Texture const& specular, gl::Texture const& coverage);
+void unbindLightImages();
 
 // All three: what every deferred lighting program reads.
 struct DeferredInputs {

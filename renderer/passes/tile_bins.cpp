@@ -48,7 +48,6 @@ void tileBinPass(TileBinInput const& in, TileBinConfig const& c) {
     p.set("uProjection", c.projection);
     glUniform2i(p.uniform("uScreenSize"), c.width, c.height);
     glUniform2i(p.uniform("uTiles"), g.tilesX, g.tilesY);
-    p.set("uTileSize", g.tileSize);
     p.set("uBinCap", b.cap);
     p.set("uNear", c.nearPlane);
     p.set("uFar", c.farPlane);

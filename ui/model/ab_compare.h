@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/frame_types.h"
+#include "core/pipeline_fields.h"
 #include "core/pipeline_settings.h"
 #include "model/viewer_tools.h"
 
@@ -15,18 +16,9 @@
 
 namespace gbl::ui {
 
-enum class AbFieldKind { Choice, Toggle, Number };
-
-// One PipelineSettings field as the A/B table edits it: every value travels as a double (an enum's
-// index, 0/1, the number), so a new setting is one more row here and nothing else.
-struct AbField {
-    std::string_view name;
-    AbFieldKind kind = AbFieldKind::Choice;
-    std::span<std::string_view const> choices;  // Choice: the names in enum order
-    float min = 0.0f, max = 1.0f;               // Number: the slider's range
-    double (*get)(PipelineSettings const&) = nullptr;
-    void (*set)(PipelineSettings&, double) = nullptr;
-};
+// The A/B table's rows: the fields of core/pipeline_fields.h that side B can change, in its order.
+using AbField = PipelineField;
+using AbFieldKind = SettingKind;
 
 std::span<AbField const> abFields();
 

@@ -8,6 +8,7 @@
 #include "model/ab_accumulate.h"
 #include "model/ab_compare.h"
 #include "model/camera_rig.h"
+#include "model/frame_diagram.h"
 #include "model/layout_state.h"
 #include "model/lights_state.h"
 #include "model/log_state.h"
@@ -59,6 +60,7 @@ struct EditorState {
     GBufferPanelState gbuffer;
     PixelInspectorState inspector;
     StatsState stats;
+    FramePanelState frame;  // the Frame window and the stop after a pass
     LogState log;
 
     CostMeasurement measurement;

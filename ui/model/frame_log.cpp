@@ -91,6 +91,10 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += "],\"toolsImage\":[" + std::to_string(l.toolsImage.x) + "," + std::to_string(l.toolsImage.y) + "]";
     out += ",\"toolsRegion\":[" + std::to_string(l.toolsRegion.x) + "," + std::to_string(l.toolsRegion.y) + "," +
            std::to_string(l.toolsRegion.z) + "," + std::to_string(l.toolsRegion.w) + "]";
+    out += ",\"frameWindow\":" + rect(l.frameWindow) + ",\"frameButton\":" + rect(l.frameButton) +
+           ",\"stopButton\":" + rect(l.stopButton);
+    out += ",\"stopAfter\":" + quoted(l.stopAfter) + ",\"stoppedAfter\":" + quoted(l.stoppedAfter);
+    out += ",\"frameTargets\":" + strings(l.frameTargets);
     return out + "}";
 }
 

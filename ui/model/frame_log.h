@@ -63,6 +63,16 @@ struct FrameLogLine {
     // x, y, width, height in texels (width 0 while none; -1 = tools closed).
     glm::ivec2 toolsImage{0};
     glm::ivec4 toolsRegion{-1, -1, -1, -1};
+    // The Frame window (model/frame_diagram.h): its rectangle (0 while closed), the Stats button
+    // that opens it, the selected pass's "Stop here" button, what a click may land on
+    // ("pass:NAME@X,Y", "in:PASS:RESOURCE@X,Y", "out:..."), the stop the editor asks for and the
+    // pass the frame shown stopped after ("" = none).
+    glm::vec4 frameWindow{0.0f};
+    glm::vec4 frameButton{0.0f};
+    glm::vec4 stopButton{0.0f};
+    std::vector<std::string> frameTargets;
+    std::string stopAfter;
+    std::string stoppedAfter;
 };
 
 std::string frameLogJson(FrameLogLine const& line);

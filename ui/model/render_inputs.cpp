@@ -51,6 +51,7 @@ std::string describeChange(std::optional<RenderInputs> const& before, RenderInpu
     add(before->shaderGeneration != now.shaderGeneration, "shaders");
     add(before->animationTime != now.animationTime, "animation");
     add(!(before->teaching == now.teaching), "accumulation or A/B");
+    add(before->stopAfter != now.stopAfter, "stop after a pass");
     add(now.measuring, "measuring");
     return out.empty() ? std::string("nothing") : out;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/camera.h"
+#include "core/frame_passes.h"
 #include "core/pipeline_settings.h"
 #include "core/point_light.h"
 #include "model/ab_compare.h"
@@ -29,8 +30,9 @@ struct RenderInputs {
     std::uint64_t sceneGeneration = 0;   // counts scenes handed to Renderer::setScene
     std::uint64_t shaderGeneration = 0;  // counts hot reloads that replaced a program
     float animationTime = 0.0f;
-    bool measuring = false;   // a cost measurement times real frames, so each of its frames renders
-    TeachingInputs teaching;  // the scrubber, the wireframe option and A/B's side B
+    bool measuring = false;           // a cost measurement times real frames, so each of its frames renders
+    TeachingInputs teaching;          // the scrubber, the wireframe option and A/B's side B
+    std::optional<PassId> stopAfter;  // the Frame window's stop after a pass
 
     bool operator==(RenderInputs const&) const = default;
 };

@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include <optional>
+#include <string>
 
 namespace gbl::ui {
 
@@ -22,6 +23,7 @@ struct ViewportState {
     float wheel = 0.0f;
     bool frameRequested = false;         // the Frame button (the F key is read by the loop)
     glm::vec2 clipPlanes{0.1f, 100.0f};  // the camera's near and far: the depth-slice legend's ranges
+    std::string stoppedAfter;            // the pass the frame shown stopped after ("" = every pass ran)
 };
 
 }  // namespace gbl::ui

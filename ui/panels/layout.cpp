@@ -2,6 +2,7 @@
 #include "panels/layout.h"
 
 #include "panels/gui_compat.h"
+#include "panels/panel_frame.h"
 
 #include <imgui.h>
 #ifdef IMGUI_HAS_DOCK
@@ -50,6 +51,7 @@ void buildDefaultDockLayout(ImGuiID dockspace, ImGuiViewport const* viewport) {
     // Every window gets its own node so all of them are visible at once (no hidden tabs).
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::Stats), stats);
     ImGui::DockBuilderDockWindow(windowName(EditorWindow::Log), log);
+    ImGui::DockBuilderDockWindow(kFrameWindowName, strip);  // a tab beside the strip, off by default
     ImGui::DockBuilderFinish(dockspace);
 }
 }  // namespace
@@ -68,6 +70,14 @@ void beginLayout(LayoutState& state) {
 
 void placeWindow(EditorWindow) {}
 
+void placeFrameWindow() {
+    // Docked beside the strip by the default layout; a layout restored from an older imgui.ini has
+    // no place for it, so it floats at a size that shows a few passes until docked.
+    ImGuiViewport const* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowSize(ImVec2(viewport->WorkSize.x * 0.8f, viewport->WorkSize.y * kViewerStrip),
+                             ImGuiCond_FirstUseEver);
+}
+
 int editorWindowFlags() {
     return 0;
 }
@@ -85,6 +95,10 @@ void placeWindow(EditorWindow window) {
         tiledRect(window, {viewport->WorkPos.x, viewport->WorkPos.y}, {viewport->WorkSize.x, viewport->WorkSize.y});
     ImGui::SetNextWindowPos(ImVec2(r.pos.x, r.pos.y), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(r.size.x, r.size.y), ImGuiCond_Always);
+}
+
+void placeFrameWindow() {
+    placeWindow(EditorWindow::GBuffer);  // over the strip: full width for the diagram
 }
 
 int editorWindowFlags() {

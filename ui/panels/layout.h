@@ -13,6 +13,11 @@ void beginLayout(LayoutState& state);
 // and gives docking builds nothing to do (the dock tree places it).
 void placeWindow(EditorWindow window);
 
+// Called right before ImGui::Begin of the Frame window (panel_frame.h): tiled builds pin it over
+// the G-buffer strip while it is open (the strip is not drawn then); docking builds dock it as a
+// tab beside the strip in the default layout.
+void placeFrameWindow();
+
 // Window flags for editor windows in this build (tiled windows cannot be moved or resized).
 int editorWindowFlags();
 

@@ -1,6 +1,7 @@
 // Pipeline window.
 #include "panels/panel_pipeline.h"
 
+#include "core/pipeline_fields.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
 
@@ -190,6 +191,13 @@ void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailabl
             bool const volumes = settings.mode == LightingMode::Volumes;
             ImGui::BeginDisabled(!volumes);
             radioRow("cull", settings.cull, kCullModeNames, kCullHelp);
+            PipelineField const& scale = *findPipelineField("volume_scale");
+            ImGui::SetNextItemWidth(ImGui::GetFontSize() * 10.0f);
+            ImGui::SliderFloat("Volume scale", &settings.volumeScale, scale.min, scale.max, "%.2f",
+                               ImGuiSliderFlags_AlwaysClamp);
+            helpTooltip(
+                "1: each volume just encloses its light's radius; below 1 its faces cut the light off "
+                "(dark rims), above 1 it shades pixels the light cannot reach");
             ImGui::EndDisabled();
         }
 
@@ -219,12 +227,14 @@ void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailabl
             // Labels on the right take their own width; the fields get the rest of the column.
             ImGui::PushItemWidth(-ImGui::CalcTextSize("Shininess").x - ImGui::GetStyle().ItemInnerSpacing.x * 2.0f);
             ImGui::ColorEdit3("Ambient", &settings.ambient.x, ImGuiColorEditFlags_Float);
-            ImGui::DragFloat("Shininess", &settings.shininess, 0.5f, 1.0f, 512.0f, "%.1f",
+            PipelineField const& shininess = *findPipelineField("shininess");  // ranges: core/pipeline_fields.h
+            PipelineField const& exposure = *findPipelineField("exposure");
+            ImGui::DragFloat("Shininess", &settings.shininess, 0.5f, shininess.min, shininess.max, "%.1f",
                              ImGuiSliderFlags_AlwaysClamp);
             int tonemap = int(settings.tonemap);
             char const* tonemapItems[] = {kTonemapNames[0].data(), kTonemapNames[1].data(), kTonemapNames[2].data()};
             if (ImGui::Combo("Tonemap", &tonemap, tonemapItems, 3)) settings.tonemap = Tonemap(tonemap);
-            ImGui::SliderFloat("Exposure", &settings.exposure, 0.05f, 16.0f, "%.2f",
+            ImGui::SliderFloat("Exposure", &settings.exposure, exposure.min, exposure.max, "%.2f",
                                ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
             layoutCombo(settings, rects);
             // One lit target, or diffuse and specular light in two plus a combine pass (docs/lighting.md).

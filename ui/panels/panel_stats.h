@@ -2,6 +2,7 @@
 #pragma once
 
 #include "gl/caps.h"
+#include "model/frame_diagram.h"
 #include "model/render_inputs.h"
 #include "model/stats_state.h"
 
@@ -10,8 +11,9 @@
 namespace gbl::ui {
 
 // render: the loop's render-on-change record, shown as "re-rendered"/"reused" with a checkbox for
-// continuous rendering; null hides that line.
+// continuous rendering; null hides that line. frame: the Frame window, opened by a button beside
+// the pass times; null hides the button.
 void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount, RenderOnChange* render = nullptr,
-                    std::string const& renderReason = {});
+                    std::string const& renderReason = {}, FramePanelState* frame = nullptr);
 
 }  // namespace gbl::ui

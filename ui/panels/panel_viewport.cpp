@@ -431,6 +431,10 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         markLockedPixel(dl, origin, avail, textureSize, *lockedPixel);
         dl->PopClipRect();
     }
+    // A frame stopped after a pass (the Frame window's "Stop here") says so over the image.
+    if (!state.stoppedAfter.empty() && texture != 0)
+        boxedText(ImVec2(origin.x + 8, origin.y + (abOn ? 3.0f * ImGui::GetTextLineHeightWithSpacing() : 6.0f)),
+                  "stopped after " + state.stoppedAfter);
     // The tools' Shift+drag and Shift+right-click are theirs, not the camera's.
     bool const toolsMouse = viewportToolsImage(tools, origin, avail, textureSize);
     if (settings.view == DebugView::Heatmap || settings.view == DebugView::TileLights)

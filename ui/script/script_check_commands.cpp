@@ -1,6 +1,8 @@
 // UI script commands that capture images and check the editor's state, images and resources.
 #include "script/script_run.h"
 
+#include "core/pipeline_fields.h"
+
 #include "gl/gl_object.h"
 
 #include <unistd.h>
@@ -92,12 +94,10 @@ void expectLightCommand(CommandCall const& c) {
 }
 
 void expectSettingCommand(CommandCall const& c) {
-    for (EnumSetting const& e : enumSettings()) {
-        if (e.key != c.w[1]) continue;
-        std::string const now(e.get(c.host.state.pipeline));
-        return c.check(now == c.w[2], "it is " + now);
-    }
-    c.check(false, "unknown setting");
+    PipelineField const* field = findPipelineField(c.w[1]);
+    if (!field) return c.check(false, "unknown setting");
+    std::string const now = fieldScriptText(*field, c.host.state.pipeline);
+    c.check(now == c.w[2], "it is " + now);
 }
 
 void soakStableCommand(CommandCall const& c) {
@@ -192,17 +192,16 @@ constexpr ScriptCommandSpec kCommands[] = {
          c.check(int(n) == std::atoi(c.w[1].c_str()), "there are " + std::to_string(n));
      }},
     {"expect-light", "I FIELD VALUE", "light I's FIELD (as for `light`) equals VALUE", expectLightCommand},
-    {"expect-setting", "KEY NAME", "mode|cull|blit|view|tonemap|layout is NAME", expectSettingCommand},
+    {"expect-setting", "KEY NAME", "pipeline field KEY (as for `set`) is NAME, 0|1 or the number",
+     expectSettingCommand},
     {"wait-setting", "KEY NAME SECONDS",
      "run frames until the setting (as for expect-setting) is NAME: a real click may change it",
      [](CommandCall const& c) {
-         EnumSetting const* setting = nullptr;
-         for (EnumSetting const& e : enumSettings())
-             if (e.key == c.w[1]) setting = &e;
-         if (!setting) return c.check(false, "unknown setting");
+         PipelineField const* field = findPipelineField(c.w[1]);
+         if (!field) return c.check(false, "unknown setting");
          PipelineSettings const& p = c.host.state.pipeline;
          std::string const want = c.w[2];
-         c.waitUntil([setting, &p, want] { return setting->get(p) == want; }, number(c.w[3]));
+         c.waitUntil([field, &p, want] { return fieldScriptText(*field, p) == want; }, number(c.w[3]));
      }},
     {"expect-no-gl-errors", "", "the renderer counted no GL errors so far",
      [](CommandCall const& c) {

@@ -2,6 +2,7 @@
 #include "script/script_run.h"
 
 #include "core/light_math.h"
+#include "core/pipeline_fields.h"
 #include "model/light_list.h"
 
 #include <algorithm>
@@ -15,47 +16,16 @@ namespace gbl::ui {
 
 namespace {
 
-template <class Enum, std::size_t N>
-bool setEnum(Enum& field, std::array<std::string_view, N> const& names, std::string const& value) {
-    auto const e = enumFromName<Enum>(names, value);
-    if (e) field = *e;
-    return bool(e);
-}
-
-constexpr EnumSetting kEnumSettings[] = {
-    {"mode", [](PipelineSettings& p, std::string const& v) { return setEnum(p.mode, kLightingModeNames, v); },
-     [](PipelineSettings const& p) { return enumName(kLightingModeNames, p.mode); }},
-    {"cull", [](PipelineSettings& p, std::string const& v) { return setEnum(p.cull, kCullModeNames, v); },
-     [](PipelineSettings const& p) { return enumName(kCullModeNames, p.cull); }},
-    {"blit", [](PipelineSettings& p, std::string const& v) { return setEnum(p.depthCopy, kDepthCopyNames, v); },
-     [](PipelineSettings const& p) { return enumName(kDepthCopyNames, p.depthCopy); }},
-    {"view", [](PipelineSettings& p, std::string const& v) { return setEnum(p.view, kDebugViewNames, v); },
-     [](PipelineSettings const& p) { return enumName(kDebugViewNames, p.view); }},
-    {"tonemap", [](PipelineSettings& p, std::string const& v) { return setEnum(p.tonemap, kTonemapNames, v); },
-     [](PipelineSettings const& p) { return enumName(kTonemapNames, p.tonemap); }},
-    {"layout", [](PipelineSettings& p, std::string const& v) { return setEnum(p.layout, kGBufferLayoutNames, v); },
-     [](PipelineSettings const& p) { return enumName(kGBufferLayoutNames, p.layout); }},
-    {"accumulation",
-     [](PipelineSettings& p, std::string const& v) { return setEnum(p.accumulation, kLightAccumulationNames, v); },
-     [](PipelineSettings const& p) { return enumName(kLightAccumulationNames, p.accumulation); }},
-};
-
 void setCommand(CommandCall const& c) {
     EditorState& s = c.host.state;
     std::string const& key = c.w[1];
     std::string const& value = c.w[2];
     bool ok = true;
-    if (auto const* e = std::find_if(std::begin(kEnumSettings), std::end(kEnumSettings),
-                                     [&](EnumSetting const& x) { return x.key == key; });
-        e != std::end(kEnumSettings))
-        ok = e->set(s.pipeline, value);
-    else if (key == "exposure")
-        s.pipeline.exposure = number(value);
-    else if (key == "cubes")
-        s.pipeline.lightCubes = value != "0";
-    else if (key == "wireframes")
-        s.pipeline.volumeWireframes = value != "0";
-    else if (key == "animate")
+    if (PipelineField const* field = findPipelineField(key)) {  // core/pipeline_fields.h: names, ranges
+        std::optional<double> const v = parseFieldValue(*field, value);
+        ok = bool(v);
+        if (ok) field->set(s.pipeline, *v);
+    } else if (key == "animate")
         s.animation.enabled = value != "0";
     else if (key == "time")
         s.animation.time = number(value);
@@ -156,7 +126,9 @@ constexpr ScriptCommandSpec kCommands[] = {
     {"frames", "N", "run N frames before the next command",
      [](CommandCall const& c) { c.run.wait = std::max(std::atoi(c.w[1].c_str()), 1); }},
     {"set", "KEY VALUE",
-     "mode|cull|blit|view|tonemap|layout NAME, exposure F, cubes|wireframes|animate 0|1,\n"
+     "FIELD VALUE for every pipeline field (core/pipeline_fields.h: mode cull blit tonemap layout\n"
+     "normal_maps light_cubes volume_wireframes shininess exposure ambient view accumulation\n"
+     "wireframes_selected_only volume_scale; names, 0|1, numbers in range), animate 0|1,\n"
      "time SECONDS (light animation), lights N (default scene lights),\n"
      "accumulate K (-1: off), contribution 0|1, ab off|split|diff, ab-divider X,\n"
      "ab-metric lit|normal-angle, ab-threshold X, ab-angle-threshold DEGREES,\n"
@@ -207,15 +179,26 @@ constexpr ScriptCommandSpec kCommands[] = {
     {"shader-break", "FILE", "append a compile error to FILE in $GBL_SHADER_DIR (never the source tree)",
      shaderBreakCommand},
     {"shader-fix", "FILE", "put FILE back as it was before shader-break", shaderFixCommand},
+    {"frame-window", "on|off", "open or close the Frame window",
+     [](CommandCall const& c) { c.host.state.frame.open = c.w[1] != "off"; }},
+    {"frame-pass", "PASS", "select PASS in the Frame window (as a click on its box)",
+     [](CommandCall const& c) {
+         std::optional<PassId> const pass = passFromName(c.w[1]);
+         c.check(bool(pass), pass ? std::string() : "no pass called " + c.w[1]);
+         if (pass) c.host.state.frame.selected = pass;
+     }},
+    {"frame-stop", "PASS|off", "stop the editor's frames after PASS (the Frame window's Stop here), or not",
+     [](CommandCall const& c) {
+         std::optional<PassId> const pass = passFromName(c.w[1]);
+         if (!pass && c.w[1] != "off") return c.check(false, "no pass called " + c.w[1]);
+         c.host.state.frame.stopAfter = pass;
+     }},
     {"print", "TEXT...", "print TEXT",
      [](CommandCall const& c) { std::printf("ui-test: %s\n", joinWords(c.w, 1).c_str()); }},
 };
 
 }  // namespace
 
-std::span<EnumSetting const> enumSettings() {
-    return kEnumSettings;
-}
 std::span<ScriptCommandSpec const> editCommands() {
     return kCommands;
 }

@@ -73,14 +73,6 @@ std::span<ScriptCommandSpec const> sessionCommands();  // script_session_command
 std::span<ScriptCommandSpec const> sceneCommands();    // ui_script_scene.cpp
 std::span<ScriptCommandSpec const> viewerCommands();   // script_viewer_commands.cpp
 
-// The pipeline's named switches, for `set` and `expect-setting` (script_edit_commands.cpp).
-struct EnumSetting {
-    std::string_view key;                                     // mode cull blit view tonemap
-    bool (*set)(PipelineSettings&, std::string const& name);  // false: no such name
-    std::string_view (*get)(PipelineSettings const&);
-};
-std::span<EnumSetting const> enumSettings();
-
 // Helpers the command files share (ui_script.cpp).
 double nowSeconds();
 std::string joinWords(std::vector<std::string> const& words, std::size_t from);

@@ -2,6 +2,7 @@
 #include "session/session.h"
 
 #include "core/light_math.h"
+#include "core/pipeline_fields.h"
 #include "session/atomic_file.h"
 
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 
@@ -37,11 +39,10 @@ ojson vec(glm::vec2 v) {
     return {v.x, v.y};
 }
 
-template <std::size_t N>
-std::string joinNames(std::array<std::string_view, N> const& names) {
+std::string joinNames(std::span<std::string_view const> names) {
     std::string s;
-    for (std::size_t i = 0; i < N; ++i) {
-        if (i) s += i + 1 == N ? " or " : ", ";
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i) s += i + 1 == names.size() ? " or " : ", ";
         s += names[i];
     }
     return s;
@@ -72,6 +73,22 @@ ojson viewerJson(ViewerState const& v) {
             {"tools", toolsJson(v)}};
 }
 
+ojson pipelineJson(PipelineSettings const& p) {
+    ojson out = ojson::object();
+    for (PipelineField const& f : pipelineFields()) {
+        std::string const name(f.name);
+        if (f.rgb)
+            out[name] = vec(p.*f.rgb);
+        else if (f.kind == SettingKind::Choice)
+            out[name] = fieldScriptText(f, p);
+        else if (f.kind == SettingKind::Toggle)
+            out[name] = f.get(p) != 0.0;
+        else
+            out[name] = float(f.get(p));
+    }
+    return out;
+}
+
 ojson sessionJson(Session const& s) {
     ojson lights = ojson::array();
     for (auto const& l : s.lights)
@@ -87,7 +104,6 @@ ojson sessionJson(Session const& s) {
                           {"direction", vec(l.direction)},
                           {"inner_cone_deg", l.innerConeDeg},
                           {"outer_cone_deg", l.outerConeDeg}});
-    PipelineSettings const& p = s.pipeline;
     ojson viewers = ojson::object();
     for (std::size_t i = 0; i < s.viewers.size(); ++i) viewers[std::string(kViewerNames[i])] = viewerJson(s.viewers[i]);
     return {
@@ -102,22 +118,7 @@ ojson sessionJson(Session const& s) {
           {"near", s.camera.nearPlane},
           {"far", s.camera.farPlane}}},
         {"lights", lights},
-        {"pipeline",
-         {{"mode", enumName(kLightingModeNames, p.mode)},
-          {"cull", enumName(kCullModeNames, p.cull)},
-          {"blit", enumName(kDepthCopyNames, p.depthCopy)},
-          {"tonemap", enumName(kTonemapNames, p.tonemap)},
-          {"layout", enumName(kGBufferLayoutNames, p.layout)},
-          {"accumulation", enumName(kLightAccumulationNames, p.accumulation)},
-          {"view", enumName(kDebugViewNames, p.view)},
-          {"light_cubes", p.lightCubes},
-          {"volume_wireframes", p.volumeWireframes},
-          {"normal_maps", p.normalMaps},
-          {"ambient", vec(p.ambient)},
-          {"exposure", p.exposure},
-          {"shininess", p.shininess},
-          {"volume_scale", p.volumeScale},
-          {"wireframes_selected_only", p.wireframesSelectedOnly}}},
+        {"pipeline", pipelineJson(s.pipeline)},
         {"viewers", viewers},
         {"animation", {{"enabled", s.animation.enabled}, {"speed", s.animation.speed}, {"time", s.animation.time}}},
         {"viewer_tools",
@@ -150,7 +151,7 @@ std::string typeName(json const& j) {
 // reported as the unknown field it is, before the "missing" message it would also cause.
 class Object {
 public:
-    Object(json const& j, std::string path, std::initializer_list<std::string_view> known)
+    Object(json const& j, std::string path, std::vector<std::string_view> const& known)
         : j_(j), path_(std::move(path)) {
         if (!j_.is_object()) fail(path_, "must be an object (got " + typeName(j_) + ")");
         for (auto it = j_.begin(); it != j_.end(); ++it)
@@ -219,13 +220,18 @@ std::string string(json const& j, std::string const& field) {
     return j.get<std::string>();
 }
 
-template <class Enum, std::size_t N>
-Enum enumeration(json const& j, std::string const& field, std::array<std::string_view, N> const& names) {
+// The index of the name `j` holds among `names`.
+std::size_t choiceIndex(json const& j, std::string const& field, std::span<std::string_view const> names) {
     std::string const want = "must be one of " + joinNames(names);
     if (!j.is_string()) fail(field, want + " (got " + typeName(j) + ")");
-    auto const v = enumFromName<Enum>(names, j.get<std::string>());
-    if (!v) fail(field, want + " (got " + j.dump() + ")");
-    return *v;
+    auto const it = std::find(names.begin(), names.end(), j.get<std::string>());
+    if (it == names.end()) fail(field, want + " (got " + j.dump() + ")");
+    return std::size_t(it - names.begin());
+}
+
+template <class Enum, std::size_t N>
+Enum enumeration(json const& j, std::string const& field, std::array<std::string_view, N> const& names) {
+    return static_cast<Enum>(choiceIndex(j, field, names));
 }
 
 template <int N>
@@ -290,35 +296,35 @@ std::vector<PointLight> readLights(json const& j) {
     return lights;
 }
 
+// Every field of core/pipeline_fields.h, by its kind and within its range; the optional ones (added
+// after the format's first version) keep their default when absent.
 PipelineSettings readPipeline(json const& j) {
-    Object o(j, "pipeline",
-             {"mode", "cull", "blit", "tonemap", "view", "light_cubes", "volume_wireframes", "normal_maps", "ambient",
-              "exposure", "shininess", "volume_scale", "layout", "wireframes_selected_only", "accumulation"});
+    std::vector<std::string_view> known;
+    for (PipelineField const& f : pipelineFields()) known.push_back(f.name);
+    Object o(j, "pipeline", known);
     PipelineSettings p;
-    p.mode = enumeration<LightingMode>(o.required("mode"), o.field("mode"), kLightingModeNames);
-    p.cull = enumeration<CullMode>(o.required("cull"), o.field("cull"), kCullModeNames);
-    p.depthCopy = enumeration<DepthCopy>(o.required("blit"), o.field("blit"), kDepthCopyNames);
-    p.tonemap = enumeration<Tonemap>(o.required("tonemap"), o.field("tonemap"), kTonemapNames);
-    p.view = enumeration<DebugView>(o.required("view"), o.field("view"), kDebugViewNames);
-    // Optional: sessions written before layouts existed load with today's classic G-buffer.
-    if (json const* layout = o.optional("layout"))
-        p.layout = enumeration<GBufferLayout>(*layout, o.field("layout"), kGBufferLayoutNames);
-    // Optional: sessions written before the split targets existed accumulate into one target.
-    if (json const* accumulation = o.optional("accumulation"))
-        p.accumulation =
-            enumeration<LightAccumulation>(*accumulation, o.field("accumulation"), kLightAccumulationNames);
-    p.lightCubes = boolean(o.required("light_cubes"), o.field("light_cubes"));
-    p.volumeWireframes = boolean(o.required("volume_wireframes"), o.field("volume_wireframes"));
-    // Optional: files from before the option draw every volume.
-    if (json const* only = o.optional("wireframes_selected_only"))
-        p.wireframesSelectedOnly = boolean(*only, o.field("wireframes_selected_only"));
-    p.normalMaps = boolean(o.required("normal_maps"), o.field("normal_maps"));
-    p.ambient = vector<3>(o.required("ambient"), o.field("ambient"), Bound::NonNegative);
-    p.exposure = number(o.required("exposure"), o.field("exposure"), Bound::Positive);
-    p.shininess = number(o.required("shininess"), o.field("shininess"), Bound::Positive);
-    // Optional: sessions written before it existed read as 1, the enclosing scale.
-    if (json const* scale = o.optional("volume_scale"))
-        p.volumeScale = numberIn(*scale, o.field("volume_scale"), 0.1f, 4.0f);
+    for (PipelineField const& f : pipelineFields()) {
+        json const* v = f.optionalInFiles ? o.optional(f.name) : &o.required(f.name);
+        if (!v) continue;
+        std::string const path = o.field(f.name);
+        if (f.rgb) {
+            if (!v->is_array() || v->size() != 3) fail(path, "must be an array of 3 numbers");
+            for (std::size_t i = 0; i < 3; ++i)
+                (p.*f.rgb)[int(i)] = numberIn((*v)[i], path + "[" + std::to_string(i) + "]", f.min, f.max);
+            continue;
+        }
+        switch (f.kind) {
+            case SettingKind::Choice:
+                f.set(p, double(choiceIndex(*v, path, f.choices)));
+                break;
+            case SettingKind::Toggle:
+                f.set(p, boolean(*v, path) ? 1.0 : 0.0);
+                break;
+            case SettingKind::Number:
+                f.set(p, numberIn(*v, path, f.min, f.max));
+                break;
+        }
+    }
     return p;
 }
 
