@@ -26,9 +26,10 @@ namespace {
 
 json minimal() {
     return json::parse(R"({
-      "format": "gbuffer-lab-lesson", "version": 1, "id": "demo", "title": "Demo",
+      "format": "gbuffer-lab-lesson", "version": 2, "id": "demo", "title": "Demo",
       "setup": {"pipeline": {"mode": "volumes"}},
       "steps": [{"title": "One", "look": "look here", "equation": "r = {light.radius}", "question": "why?",
+                 "answer": "because r = {light.radius}",
                  "scene": {"lights": 4}, "selected_light": 2, "viewer": "depth", "pixel": [0.25, 0.75],
                  "pipeline": {"cull": "back", "volume_scale": 0.5},
                  "camera": {"position": [0, 4, 8], "look_at": [0, 0, 0]},
@@ -75,7 +76,15 @@ TEST(LessonFile, BrokenFilesNameTheField) {
         std::string expect;
     };
     std::vector<Case> const cases{
-        {[](json& j) { j["version"] = 2; }, "demo.json: version 2 is not supported"},
+        {[](json& j) { j["version"] = 3; }, "demo.json: version 3 is not supported"},
+        {[](json& j) { j["version"] = 1; },
+         "demo.json: version 1 is not supported; this program reads lesson version 2 (version 2 adds an \"answer\""},
+        {[](json& j) { j["steps"][0].erase("answer"); },
+         "demo.json: steps[0].answer is missing: step \"One\" of lesson demo asks a question and every question "
+         "needs an answer"},
+        {[](json& j) { j["steps"][0]["answer"] = " "; }, "demo.json: steps[0].answer must not be empty"},
+        {[](json& j) { j["steps"][0]["answer"] = "{light.colour}"; },
+         "demo.json: steps[0].answer uses the unknown placeholder {light.colour}"},
         {[](json& j) { j["format"] = "gbuffer-lab-session"; }, "demo.json: format must be \"gbuffer-lab-lesson\""},
         {[](json& j) { j["steps"][0]["pipeline"]["cull"] = "sideways"; },
          "demo.json: steps[0].pipeline.cull must be one of back, front, none, flip or stencil (got \"sideways\")"},
@@ -116,6 +125,26 @@ TEST(LessonFile, BrokenFilesNameTheField) {
     }
 }
 
+// Every question of every shipped lesson has an answer to reveal (issue 27), and every shipped
+// lesson reads without an error.
+TEST(LessonFile, EveryShippedQuestionHasAnAnswer) {
+    LessonLibrary const lib = loadLessonDir(defaultLessonDir());
+    EXPECT_TRUE(lib.errors.empty()) << lib.errors.front();
+    EXPECT_EQ(lib.lessons.size(), 10u);
+    int questions = 0;
+    for (Lesson const& l : lib.lessons)
+        for (std::size_t i = 0; i < l.steps.size(); ++i) {
+            LessonText const& t = l.steps[i].text;
+            if (t.question.empty()) continue;
+            ++questions;
+            EXPECT_GE(t.answer.size(), 40u) << l.id << ":" << i + 1 << " has no real answer: \"" << t.answer << "\"";
+            EXPECT_NE(t.answer, t.question) << l.id << ":" << i + 1;
+        }
+    EXPECT_GE(questions, 37);
+    // The raw files too: a step with a question and no "answer" field fails to load (above), so
+    // a lesson dropped from the library would show up as an error, not as a missing answer.
+}
+
 TEST(LessonFile, PlaceholdersAreSubstitutedWithLiveValues) {
     LessonValues v;
     PointLight l;
@@ -141,6 +170,15 @@ TEST(LessonFile, PlaceholdersAreSubstitutedWithLiveValues) {
     EXPECT_EQ(unknownPlaceholder("a {light.kq} b {nope} c"), std::optional<std::string>("{nope}"));
     EXPECT_EQ(unknownPlaceholder("open {light.kq"), std::optional<std::string>("{light.kq"));
     EXPECT_FALSE(unknownPlaceholder("plain text"));
+    // The live frame: its size, and the light evaluations a full-screen pass costs.
+    EXPECT_EQ(substituteLessonText("{frame.width}x{frame.height}", v),
+              "n/a"
+              "x"
+              "n/a");
+    v.frameSize = {641, 400};
+    EXPECT_EQ(substituteLessonText("{frame.width}\u00d7{frame.height}: {frame.evaluations}", v),
+              "641\u00d7400: " + std::to_string(641 * 400 * 7));
+    EXPECT_EQ(substituteLessonText("{frame.gbuffer_mb}", v), "9.23");  // 36 bytes x 641 x 400
 }
 
 TEST(LessonFile, StepReferences) {
@@ -188,9 +226,15 @@ TEST(LessonFile, ABrokenFileInTheFolderIsReportedAndTheOthersLoad) {
     bad["steps"][0]["pipeline"]["blit"] = "copy";
     std::ofstream(dir + "/b.json") << bad.dump();
     std::ofstream(dir + "/c.json") << minimal().dump();  // the same id again
+    json noAnswer = minimal();
+    noAnswer["id"] = "other";
+    noAnswer["steps"][0].erase("answer");
+    std::ofstream(dir + "/d.json") << noAnswer.dump();
     LessonLibrary const lib = loadLessonDir(dir);
     ASSERT_EQ(lib.lessons.size(), 1u);
-    ASSERT_EQ(lib.errors.size(), 2u);
+    ASSERT_EQ(lib.errors.size(), 3u);
+    EXPECT_NE(lib.errors[2].find("d.json: steps[0].answer is missing: step \"One\" of lesson other"), std::string::npos)
+        << lib.errors[2];
     EXPECT_NE(lib.errors[0].find("b.json: steps[0].pipeline.blit must be one of blit, shader or off"),
               std::string::npos)
         << lib.errors[0];

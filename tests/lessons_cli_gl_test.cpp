@@ -61,8 +61,8 @@ TEST(LessonsCli, RefusesBadLessonsInOneSentence) {
     expectRefused({"render", "--lesson", "gbuffer", "--mode", "tiled", "--out", out},
                   "--mode cannot be combined with --lesson");
     std::string const dir = freshTempDir("lesson_bad_dir");
-    std::ofstream(dir + "/broken.json") << R"({"format": "gbuffer-lab-lesson", "version": 1, "id": "b", "title": "B",
-              "steps": [{"title": "t", "look": "l", "equation": "e", "question": "q", "pipeline": {"cull": "up"}}]})";
+    std::ofstream(dir + "/broken.json") << R"({"format": "gbuffer-lab-lesson", "version": 2, "id": "b", "title": "B",
+              "steps": [{"title": "t", "look": "l", "equation": "e", "question": "q", "answer": "a", "pipeline": {"cull": "up"}}]})";
     std::string const file = dir + "/broken.json";
     expectRefused({"render", "--lesson", "b", "--lessons-dir", dir, "--out", out},
                   file + ": steps[0].pipeline.cull must be one of back, front, none, flip or stencil (got \"up\")");

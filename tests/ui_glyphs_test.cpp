@@ -91,6 +91,14 @@ TEST(UiGlyphs, EveryLessonStringIsCovered) {
     EXPECT_GT(files, 0);
 }
 
+TEST(UiGlyphs, EveryGlossaryStringIsCovered) {
+    fs::path const path = fs::path(GBL_SOURCE_DIR) / "assets" / "glossary.json";
+    std::string text;
+    collectStrings(nlohmann::json::parse(readFile(path)), text);
+    expectCovered(text, "glossary.json");
+    EXPECT_GT(text.size(), 100u);
+}
+
 TEST(UiGlyphs, EveryCharacterOfTheUiSourcesIsCovered) {
     // Whole files, comments included: stricter than the strings alone, and simpler.
     int files = 0;

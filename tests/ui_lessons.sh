@@ -14,9 +14,21 @@ log="$work/frames.jsonl"
 ui_require_xdotool
 ui_fresh_work
 
-# button N: window coordinates of Lessons button N (1 Start, 2 Back, 3 Next, 4 Leave).
+# button N: window coordinates of Lessons button N (1 Start, 2 Back, 3 Next, 4 Leave, 5 Show answer,
+# 6 Check my prediction, 7 the prediction's first choice, 8 Glossary, 9 the first term under the step).
 button() {
     field lessonButtons | tr -d '[]' | awk -F, -v n="$1" '{ printf "%d %d", $(2 * n - 1), $(2 * n) }'
+}
+# reach N [WHEEL]: scrolls the Lessons window (mouse wheel at lx, ly; 5 down, 4 up) until button N
+# is in view.
+reach() {
+    i=0
+    while [ "$(button "$1")" = "0 0" ]; do
+        xdotool mousemove --window "$wid" "$lx" "$ly" click "${2:-5}"
+        wait_frames 2
+        i=$((i + 1))
+        [ "$i" -le 30 ] || fail "button $1 never scrolled into view: $(field lessonButtons)"
+    done
 }
 click() {
     set -- $(button "$1")
@@ -59,6 +71,53 @@ click 4
 [ "$(field view)" = "$view0" ] || fail "Leave did not restore the view: $view0 -> $(field view)"
 echo "Leave: camera $(field camera), view $(field view)"
 ui_stop
+
+# A prediction and an answer (issue 27): camera_inside:2 shows cull front while the student
+# predicts; picking "back" and checking it applies the step (cull back, A/B split) and says right;
+# Show answer reveals the answer. Screenshots before and after are kept to look at.
+log="$work/predict.jsonl"
+"$bin" --size 1280x720 --no-vsync --lesson camera_inside:2 --log-frames "$log" > "$work/predict.log" 2>&1 &
+pid=$!
+wait_frames 4
+ui_window
+wait_frames 2
+[ "$(field lesson)" = '"camera_inside:2"' ] || fail "--lesson camera_inside:2 did not open that step"
+[ "$(field lessonPrediction)" = '""' ] || fail "a prediction is made before any click: $(field lessonPrediction)"
+shot predict-before
+set -- $(button 2)
+lx=$1
+ly=$(($2 + 60))
+reach 7
+click 7
+reach 6
+click 6
+[ "$(field lessonPrediction)" = '"right"' ] || fail "picking back and checking did not say right: $(field lessonPrediction)"
+echo "prediction: $(field lessonPrediction)"
+wait_frames 2
+shot predict-after
+reach 5
+click 5
+[ "$(field lessonAnswer)" = 'true' ] || fail "Show answer did not reveal the answer"
+wait_frames 4
+shot predict-answer
+# The first term under the step opens the glossary at that term.
+reach 9
+click 9
+[ "$(field lessonGlossary)" = 'true' ] || fail "a term under the step did not open the glossary"
+[ "$(field lessonGlossaryTerm)" != '""' ] || fail "the glossary did not open at the term"
+echo "term: the glossary opened at $(field lessonGlossaryTerm)"
+wait_frames 2
+shot glossary-term
+reach 8 4
+xdotool mousemove --window "$wid" "$lx" "$ly" click --repeat 10 4  # to the top: the row fully in view
+wait_frames 3
+click 8
+wait_frames 4
+[ "$(field lessonGlossary)" = 'true' ] || fail "the Glossary button did not open the glossary"
+shot glossary
+ui_stop
+# The editor was ended with changes: its autosave would offer recovery over the screenshots below.
+rm -f "$GBL_RECOVERY_DIR"/*
 
 # Screenshots with a lesson step open, for a person to look at (no clipped text).
 for size in 1280x720 1600x900; do

@@ -4,6 +4,7 @@
 #include "editor_loop.h"
 
 #include "model/lesson_text.h"
+#include "panels/panel_glossary.h"
 #include "panels/panel_lessons.h"
 
 #include <filesystem>
@@ -29,7 +30,18 @@ void showStep(Editor& editor, int step) {
     LessonState& l = editor.lessons;
     ui::Lesson const& lesson = editor.lessonLibrary.lessons[std::size_t(l.lesson)];
     l.step = std::clamp(step, 0, int(lesson.steps.size()) - 1);
-    ui::applyLessonSnapshot(lesson.steps[std::size_t(l.step)].state, editor.state, frameSize(editor));
+    ui::LessonStep const& s = lesson.steps[std::size_t(l.step)];
+    l.predictChoice = -1;
+    l.predictNumber = 0.0f;
+    l.predicted = false;
+    l.predictedRight = false;
+    l.predictRequested = false;
+    l.answerShown = false;
+    // A step that asks for a prediction first shows the state before its change.
+    bool const before = s.predict && s.predict->before;
+    ui::LessonSnapshot shown = before ? *s.predict->before : s.state;
+    if (before) shown.pixel = s.state.pixel;
+    ui::applyLessonSnapshot(shown, editor.state, frameSize(editor));
     editor.sessions->commitLessonStep(editor.state);
     editor.actionLog.push_back("lesson " + lesson.id + " step " + std::to_string(l.step + 1));
     l.message.clear();
@@ -58,6 +70,22 @@ void start(Editor& editor, int index) {
     showStep(editor, 0);
 }
 
+// The student's prediction: right or wrong, then the step's own state (its change) is applied.
+void checkPrediction(Editor& editor) {
+    LessonState& l = editor.lessons;
+    if (l.lesson < 0) return;
+    ui::Lesson const& lesson = editor.lessonLibrary.lessons[std::size_t(l.lesson)];
+    ui::LessonStep const& s = lesson.steps[std::size_t(l.step)];
+    if (!s.predict || l.predicted) return;
+    l.predictedRight = ui::predictionRight(*s.predict, l.predictChoice, l.predictNumber);
+    l.predicted = true;
+    if (s.predict->before) {
+        ui::applyLessonSnapshot(s.state, editor.state, frameSize(editor));
+        editor.sessions->commitLessonStep(editor.state);
+    }
+    editor.actionLog.push_back(std::string("lesson prediction ") + (l.predictedRight ? "right" : "wrong"));
+}
+
 void leave(Editor& editor) {
     LessonState& l = editor.lessons;
     if (l.lesson < 0) return;
@@ -74,9 +102,10 @@ void saveStep(Editor& editor) {
     LessonState& l = editor.lessons;
     ui::LessonStep step;
     step.text = l.draft;
-    for (auto const* field : {&step.text.title, &step.text.look, &step.text.equation, &step.text.question})
+    for (auto const* field :
+         {&step.text.title, &step.text.look, &step.text.equation, &step.text.question, &step.text.answer})
         if (field->find_first_not_of(" \t\n") == std::string::npos) {
-            report(editor, "type a title, what to look at, an equation and a question first", true);
+            report(editor, "type a title, what to look at, an equation, a question and its answer first", true);
             return;
         }
     step.state = ui::captureLessonSnapshot(editor.state);
@@ -124,6 +153,10 @@ void lessonLogFields(Editor const& editor, ui::FrameLogLine& line) {
     if (l.lesson >= 0 && l.lesson < int(editor.lessonLibrary.lessons.size()))
         line.lesson = editor.lessonLibrary.lessons[std::size_t(l.lesson)].id + ":" + std::to_string(l.step + 1);
     line.lessonButtons.assign(l.buttonCentres.begin(), l.buttonCentres.end());
+    line.lessonPrediction = l.predicted ? (l.predictedRight ? "right" : "wrong") : "";
+    line.lessonAnswer = l.answerShown;
+    line.lessonGlossary = editor.glossaryWindow.open;
+    line.lessonGlossaryTerm = editor.glossaryWindow.shownTerm;
     line.view = std::string(enumName(kDebugViewNames, editor.state.pipeline.view));
 }
 
@@ -132,6 +165,8 @@ void drawLessons(Editor& editor) {
         editor.lessonLibrary = ui::loadLessonDir(ui::defaultLessonDir());
         editor.lessonsLoaded = true;
         for (auto const& e : editor.lessonLibrary.errors) ui::logMessage(editor.state.log, e, true);
+        editor.glossary = ui::loadGlossary(ui::defaultGlossaryPath());
+        if (!editor.glossary.error.empty()) ui::logMessage(editor.state.log, editor.glossary.error, true);
         if (editor.options.lesson) {
             ui::LessonRef const ref = ui::findLessonStep(editor.lessonLibrary, *editor.options.lesson);
             if (ref.lesson < 0) {
@@ -154,8 +189,9 @@ void drawLessons(Editor& editor) {
     values.sample = state.inspector.sample;
     values.pipeline = state.pipeline;
     values.lightCount = int(state.lights.size());
+    values.frameSize = frameSize(editor);
     ui::drawLessonsPanel(editor.lessons, editor.lessonLibrary.lessons, editor.lessonLibrary.errors, values,
-                         editor.lessonBrowser);
+                         editor.lessonBrowser, editor.glossary);
 
     LessonState& l = editor.lessons;
     if (l.startRequest >= 0) start(editor, std::exchange(l.startRequest, -1));
@@ -166,6 +202,12 @@ void drawLessons(Editor& editor) {
     if (std::exchange(l.leaveRequested, false)) leave(editor);
     if (std::exchange(l.saveStepRequested, false)) saveStep(editor);
     if (std::exchange(l.openRequested, false)) open(editor, l.openPath);
+    if (std::exchange(l.predictRequested, false)) checkPrediction(editor);
+    if (std::exchange(l.glossaryRequested, false)) {
+        editor.glossaryWindow.open = true;
+        editor.glossaryWindow.focus = std::exchange(l.glossaryTerm, {});
+    }
+    ui::drawGlossaryWindow(editor.glossaryWindow, editor.glossary);
     keepStepPixel(editor);
 }
 

@@ -15,6 +15,7 @@
 #include "model/lesson_state.h"
 #include "model/render_inputs.h"
 #include "model/scene_loading.h"
+#include "panels/panel_glossary.h"
 #include "panels/panel_pipeline.h"
 #include "renderer.h"
 #include "script/ui_script.h"
@@ -138,6 +139,8 @@ struct Editor {
     ui::LessonLibrary lessonLibrary;  // read from assets/lessons on the first frame
     bool lessonsLoaded = false;
     ui::FileBrowserState lessonBrowser;
+    ui::Glossary glossary;  // assets/glossary.json, read with the lessons
+    ui::GlossaryWindowState glossaryWindow;
     long frame = 0;
     int exitCode = 0;
     EditorClock::time_point lastFrame = EditorClock::now();

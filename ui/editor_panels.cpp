@@ -94,6 +94,7 @@ EditRequest drawMainMenu(Editor& editor) {
     }
     if (ImGui::BeginMenu("Help")) {
         if (ImGui::MenuItem("Shortcuts", keysFor(ui::EditorAction::ShowShortcuts))) editor.showShortcuts = true;
+        if (ImGui::MenuItem("Glossary")) editor.glossaryWindow.open = true;
         ImGui::EndMenu();
     }
     GlCaps const& caps = editor.caps;

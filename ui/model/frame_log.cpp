@@ -79,7 +79,11 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"lesson\":" + quoted(l.lesson) + ",\"lessonButtons\":[";
     for (std::size_t i = 0; i < l.lessonButtons.size(); ++i)
         out += (i ? "," : "") + number(l.lessonButtons[i].x) + "," + number(l.lessonButtons[i].y);
-    out += "],\"view\":" + quoted(l.view);
+    out += "],\"lessonPrediction\":" + quoted(l.lessonPrediction);
+    out += std::string(",\"lessonAnswer\":") + (l.lessonAnswer ? "true" : "false");
+    out += std::string(",\"lessonGlossary\":") + (l.lessonGlossary ? "true" : "false");
+    out += ",\"lessonGlossaryTerm\":" + quoted(l.lessonGlossaryTerm);
+    out += ",\"view\":" + quoted(l.view);
     out += ",\"layout\":" + quoted(l.layout) + ",\"pipelineWindow\":" + rect(l.pipelineWindow) +
            ",\"layoutCombo\":" + rect(l.layoutCombo) + ",\"layoutItems\":[";
     for (std::size_t i = 0; i < l.layoutItems.size(); ++i)

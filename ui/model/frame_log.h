@@ -44,8 +44,13 @@ struct FrameLogLine {
     std::vector<std::string> clipped;        // UI content cut off this frame, where ImGui can tell
     std::optional<std::string> sessionPath;  // the session file of the editor ("" = untitled)
     // Lessons (ui/editor_lessons.cpp): "ID:STEP" shown ("" = none), the window centres of the
-    // Lessons window's Start, Back, Next and Leave buttons (0, 0 when not drawn), the debug view.
+    // Lessons window's buttons (LessonState::buttonCentres; 0, 0 when not drawn), the step's
+    // prediction ("" none made, "right", "wrong"), whether its answer is shown, the debug view.
     std::string lesson;
+    std::string lessonPrediction;
+    bool lessonAnswer = false;
+    bool lessonGlossary = false;     // the Glossary window is open
+    std::string lessonGlossaryTerm;  // the term it last opened at ("" = none)
     std::vector<glm::vec2> lessonButtons;
     std::string view;
     // The G-buffer layout in use, the Pipeline window, its layout combo (0 while not visible) and,

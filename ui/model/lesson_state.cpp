@@ -4,6 +4,7 @@
 #include "model/camera_rig.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace gbl::ui {
 
@@ -59,6 +60,11 @@ void applyLessonSnapshot(LessonSnapshot const& s, EditorState& state, glm::ivec2
         state.inspector.pixel = s.inspectorPixel;
         state.inspector.locked = s.inspectorLocked;
     }
+}
+
+bool predictionRight(LessonPrediction const& p, int choice, float typed) {
+    if (!p.choices.empty()) return choice >= 0 && choice == p.correct;
+    return std::isfinite(typed) && std::abs(typed - p.number) <= p.tolerance;
 }
 
 }  // namespace gbl::ui

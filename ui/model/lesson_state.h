@@ -93,7 +93,26 @@ struct LessonText {
     std::string look;      // what to look at
     std::string equation;  // with {placeholders} for live values
     std::string question;  // what to answer with the tool
+    std::string answer;    // revealed on request, after the student has tried (same placeholders)
 };
+
+// --- predictions -------------------------------------------------------------------------------
+// A step may ask for a prediction before it reveals: the editor shows `before` (when given), the
+// student picks a choice or types a number, then the step's own state is applied and the
+// explanation is shown with whether the prediction was right.
+struct LessonPrediction {
+    std::string prompt;                    // what to predict
+    std::vector<std::string> choices;      // multiple choice; empty for a number
+    int correct = -1;                      // index into choices
+    float number = 0.0f;                   // the right number (when choices is empty)
+    float tolerance = 0.0f;                // |typed - number| <= tolerance is right
+    std::string explain;                   // shown after the prediction (placeholders allowed)
+    std::optional<LessonSnapshot> before;  // the state shown while the student predicts
+    std::string beforeJson;                // `before` as written in the file, for writing it back
+};
+
+// Whether a prediction is right: the picked choice for multiple choice, the typed number otherwise.
+bool predictionRight(LessonPrediction const& p, int choice, float typed);
 
 // --- what the Lessons window shows and asks for -------------------------------------------------
 
@@ -113,11 +132,22 @@ struct LessonState {
     LessonText draft;                         // text typed for the step being saved
     std::string message;                      // the last request's outcome (or why it was refused)
     bool messageIsError = false;
-    int picked = 0;                // the lesson the list shows selected
+    int picked = 0;  // the lesson the list shows selected
+    // The step being shown: its prediction and its answer. Reset when the step changes.
+    int predictChoice = -1;      // the picked choice, -1 = none yet
+    float predictNumber = 0.0f;  // the typed number
+    bool predicted = false;      // the prediction was made; the step's state is shown
+    bool predictedRight = false;
+    bool predictRequested = false;   // "Check my prediction" was pressed: the loop applies the step
+    bool answerShown = false;        // "Show answer" was pressed
+    bool scrollToResult = false;     // scroll the verdict or the answer into view once drawn
+    bool glossaryRequested = false;  // open the glossary (glossaryTerm: at that term, or "")
+    std::string glossaryTerm;
     glm::ivec2 pixelFrameSize{0};  // the frame size the step's pixel was placed for; a resize re-places it
-    // Window centres of the Start, Back, Next and Leave buttons as last drawn (0, 0 = not drawn),
-    // for UI tests that click them.
-    std::array<glm::vec2, 4> buttonCentres{};
+    // Window centres of the Start, Back, Next, Leave, Show answer, Check my prediction, first
+    // choice (or the number field), Glossary and first "Terms:" buttons as last drawn (0, 0 = not
+    // drawn or not wholly in view), for UI tests that click them.
+    std::array<glm::vec2, 9> buttonCentres{};
 };
 
 }  // namespace gbl::ui

@@ -1,9 +1,11 @@
 // Lesson text placeholders: validation and substitution.
 #include "model/lesson_text.h"
 
+#include "core/gbuffer_layout.h"
 #include "core/light_math.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace gbl::ui {
@@ -28,6 +30,16 @@ std::string value(std::string_view name, LessonValues const& v) {
     std::string const na = "n/a";
     if (name == "lights.count") return std::to_string(v.lightCount);
     if (name == "pipeline.mode") return std::string(enumName(kLightingModeNames, v.pipeline.mode));
+    if (name.starts_with("frame.")) {
+        if (v.frameSize.x <= 0 || v.frameSize.y <= 0) return na;
+        long long const pixels = (long long)v.frameSize.x * v.frameSize.y;
+        if (name == "frame.width") return std::to_string(v.frameSize.x);
+        if (name == "frame.height") return std::to_string(v.frameSize.y);
+        if (name == "frame.pixels") return std::to_string(pixels);
+        if (name == "frame.evaluations") return std::to_string(pixels * v.lightCount);
+        if (name == "frame.gbuffer_mb")
+            return num(float(layoutMegabytes(layoutDesc(v.pipeline.layout), v.frameSize.x, v.frameSize.y)));
+    }
     if (name == "pipeline.cull") return std::string(enumName(kCullModeNames, v.pipeline.cull));
     if (name.starts_with("light.")) {
         if (!v.light) return na;
@@ -49,6 +61,11 @@ std::string value(std::string_view name, LessonValues const& v) {
     PixelSample const& s = *v.sample;
     if (name == "pixel.lit") return vec3Text(glm::vec3(s.lighting));
     if (name == "pixel.depth") return num(s.depth);
+    // The heat map's or tile view's counts at the pixel: lights evaluated, lights that reached it.
+    if (name == "pixel.evaluated" || name == "pixel.reached") {
+        if (!s.coverageView) return na;
+        return std::to_string(int(std::lround(name == "pixel.evaluated" ? s.coverage.x : s.coverage.y)));
+    }
     if (!s.covered) return "(no geometry)";
     if (name == "pixel.position") return vec3Text(glm::vec3(s.position));
     if (name == "pixel.normal") return vec3Text(glm::vec3(s.normal));

@@ -16,11 +16,12 @@
 namespace gbl::ui {
 
 // Every placeholder a lesson may use, once: validation refuses others, substitution fills these.
-inline constexpr std::array<std::string_view, 20> kLessonPlaceholders{
-    "light.index",     "light.name",      "light.kc",      "light.kl",      "light.kq",
-    "light.intensity", "light.threshold", "light.imax",    "light.radius",  "light.imax_256_5",
-    "pixel.x",         "pixel.y",         "pixel.lit",     "pixel.depth",   "pixel.error",
-    "pixel.position",  "pixel.normal",    "pipeline.mode", "pipeline.cull", "lights.count"};
+inline constexpr std::array<std::string_view, 27> kLessonPlaceholders{
+    "light.index",      "light.name",      "light.kc",     "light.kl",         "light.kq",     "light.intensity",
+    "light.threshold",  "light.imax",      "light.radius", "light.imax_256_5", "pixel.x",      "pixel.y",
+    "pixel.lit",        "pixel.depth",     "pixel.error",  "pixel.position",   "pixel.normal", "pipeline.mode",
+    "pipeline.cull",    "lights.count",    "frame.width",  "frame.height",     "frame.pixels", "frame.evaluations",
+    "frame.gbuffer_mb", "pixel.evaluated", "pixel.reached"};
 
 // What the placeholders are filled from; missing values read "n/a".
 struct LessonValues {
@@ -30,6 +31,7 @@ struct LessonValues {
     std::optional<PixelSample> sample;  // the inspector's read-back at that pixel
     PipelineSettings pipeline;
     int lightCount = 0;
+    glm::ivec2 frameSize{0};  // the live frame (viewport) size; 0 = unknown
 };
 
 // The first placeholder in `text` that is not in kLessonPlaceholders (or an unclosed "{"), as

@@ -3,11 +3,15 @@
 
 #include "panels/layout.h"
 #include "panels/panel_file_browser.h"
+#include "panels/panel_glossary.h"
 #include "panels/wrapped_text.h"
 
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <utility>
+#include <vector>
 
 namespace gbl::ui {
 
@@ -32,8 +36,19 @@ bool inputText(char const* label, std::string& s, bool multiline) {
     return ImGui::InputText(label, s.data(), s.capacity() + 1, flags, resizeCallback, &s);
 }
 
+std::string formatNumber(float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", double(v));
+    return buf;
+}
+
+// The last item's centre in window coordinates; (0, 0) unless it is wholly in view (scrolled
+// partly out, a click at its centre could land on the next window).
 glm::vec2 itemCentre() {
     ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    float const top = ImGui::GetWindowPos().y + ImGui::GetFrameHeight();
+    float const bottom = ImGui::GetWindowPos().y + ImGui::GetWindowHeight() - ImGui::GetStyle().WindowPadding.y * 0.5f;
+    if (!ImGui::IsItemVisible() || a.y < top || b.y > bottom) return {0.0f, 0.0f};
     return {(a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f};
 }
 
@@ -61,7 +76,76 @@ void drawPicker(LessonState& state, std::span<Lesson const> lessons) {
     wrappedText("%s (%zu steps)", picked.summary.c_str(), picked.steps.size());
 }
 
-void drawStep(LessonState& state, Lesson const& lesson, LessonValues const& values) {
+// The prediction the step asks for before it reveals, then whether it was right and why.
+void drawPrediction(LessonState& state, LessonPrediction const& p, LessonValues const& values) {
+    ImGui::Spacing();
+    ImGui::TextColored(ImVec4(0.75f, 0.6f, 1.0f, 1.0f), "Predict first");
+    wrappedText("%s", substituteLessonText(p.prompt, values).c_str());
+    if (!state.predicted) {
+        if (!p.choices.empty()) {
+            for (std::size_t i = 0; i < p.choices.size(); ++i) {
+                ImGui::PushID(int(i));
+                if (ImGui::RadioButton(p.choices[i].c_str(), state.predictChoice == int(i)))
+                    state.predictChoice = int(i);
+                if (i == 0) state.buttonCentres[6] = itemCentre();
+                ImGui::PopID();
+            }
+        } else {
+            ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+            ImGui::InputFloat("your number", &state.predictNumber, 0.0f, 0.0f, "%.3g");
+            state.buttonCentres[6] = itemCentre();
+        }
+        ImGui::BeginDisabled(!p.choices.empty() && state.predictChoice < 0);
+        if (ImGui::Button("Check my prediction")) {
+            state.predictRequested = true;
+            state.scrollToResult = true;
+        }
+        state.buttonCentres[5] = itemCentre();
+        ImGui::EndDisabled();
+        return;
+    }
+    std::string const right = p.choices.empty()
+                                  ? formatNumber(p.number) + " (within " + formatNumber(p.tolerance) + ")"
+                                  : p.choices[std::size_t(std::clamp(p.correct, 0, int(p.choices.size()) - 1))];
+    if (std::exchange(state.scrollToResult, false)) ImGui::SetScrollHereY(0.0f);  // the verdict in view
+    if (state.predictedRight)
+        ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "Right: %s", right.c_str());
+    else {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.45f, 1.0f));
+        wrappedText("Not quite: the answer is %s", right.c_str());
+        ImGui::PopStyleColor();
+    }
+    wrappedText("%s", substituteLessonText(p.explain, values).c_str());
+}
+
+// "Terms: NDC, window-space depth": the glossary's terms the step's text uses; hover for the
+// definition, click to open the glossary there.
+void drawTerms(LessonState& state, LessonStep const& step, Glossary const& glossary) {
+    std::string all = step.text.look + "\n" + step.text.equation + "\n" + step.text.question;
+    if (step.predict) all += "\n" + step.predict->prompt;
+    std::vector<int> const terms = glossaryTermsIn(glossary, all);
+    if (terms.empty()) return;
+    ImGui::TextDisabled("Terms:");
+    float const right = ImGui::GetWindowContentRegionMax().x + ImGui::GetWindowPos().x;
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(3.0f, 0.0f));
+    for (int i : terms) {
+        GlossaryTerm const& t = glossary.terms[std::size_t(i)];
+        float const w = ImGui::CalcTextSize(t.term.c_str()).x + 6.0f;
+        ImGui::SameLine();
+        if (ImGui::GetCursorScreenPos().x + w > right) ImGui::NewLine();
+        ImGui::PushID(i);
+        if (ImGui::SmallButton(t.term.c_str())) {
+            state.glossaryRequested = true;
+            state.glossaryTerm = t.term;
+        }
+        if (i == terms.front()) state.buttonCentres[8] = itemCentre();
+        glossaryTooltip(t);
+        ImGui::PopID();
+    }
+    ImGui::PopStyleVar();
+}
+
+void drawStep(LessonState& state, Lesson const& lesson, LessonValues const& values, Glossary const& glossary) {
     int const n = int(lesson.steps.size());
     LessonStep const& step = lesson.steps[std::size_t(std::clamp(state.step, 0, n - 1))];
     ImGui::BeginDisabled(state.step <= 0);
@@ -77,16 +161,41 @@ void drawStep(LessonState& state, Lesson const& lesson, LessonValues const& valu
     if (ImGui::Button("Leave")) state.leaveRequested = true;
     state.buttonCentres[3] = itemCentre();
     ImGui::SameLine();
+    if (ImGui::Button("Glossary")) state.glossaryRequested = true;
+    state.buttonCentres[7] = itemCentre();
+    ImGui::SameLine();
     ImGui::TextDisabled("%d / %d", state.step + 1, n);
     wrappedText("%s: %s", lesson.title.c_str(), step.text.title.c_str());
     ImGui::Separator();
-    wrappedText("%s", substituteLessonText(step.text.look, values).c_str());
-    ImGui::Spacing();
-    ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.0f, 1.0f), "Equation");
-    wrappedText("%s", substituteLessonText(step.text.equation, values).c_str());
-    ImGui::Spacing();
-    ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.45f, 1.0f), "Question");
-    wrappedText("%s", substituteLessonText(step.text.question, values).c_str());
+    bool const waiting = step.predict && !state.predicted;  // the step's change is not shown yet
+    if (!waiting) {
+        wrappedText("%s", substituteLessonText(step.text.look, values).c_str());
+        ImGui::Spacing();
+        ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.0f, 1.0f), "Equation");
+        wrappedText("%s", substituteLessonText(step.text.equation, values).c_str());
+    }
+    if (step.predict) drawPrediction(state, *step.predict, values);
+    if (waiting) {
+        // The question and its answer would give the prediction away: they follow it.
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        wrappedText("The step's question and its answer follow your prediction.");
+        ImGui::PopStyleColor();
+    } else {
+        ImGui::Spacing();
+        ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.45f, 1.0f), "Question");
+        wrappedText("%s", substituteLessonText(step.text.question, values).c_str());
+        if (ImGui::Button(state.answerShown ? "Hide answer" : "Show answer")) {
+            state.answerShown = !state.answerShown;
+            state.scrollToResult = state.answerShown;
+        }
+        state.buttonCentres[4] = itemCentre();
+        if (state.answerShown) {
+            if (std::exchange(state.scrollToResult, false)) ImGui::SetScrollHereY(0.0f);  // the answer in view
+            ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "Answer");
+            wrappedText("%s", substituteLessonText(step.text.answer, values).c_str());
+        }
+    }
+    drawTerms(state, step, glossary);
     if (step.claim)
         ImGui::TextDisabled("checked claim: %s", std::string(enumName(kClaimKindNames, step.claim->kind)).c_str());
 }
@@ -101,6 +210,8 @@ void drawAuthoring(LessonState& state, FileBrowserState& browser) {
     inputText("##equation", state.draft.equation, true);
     ImGui::TextUnformatted("Question");
     inputText("##question", state.draft.question, true);
+    ImGui::TextUnformatted("Answer (revealed after trying)");
+    inputText("##answer", state.draft.answer, true);
     ImGui::TextUnformatted("Lesson file (appended to)");
     inputText("##savepath", state.savePath, false);
     if (ImGui::Button("Save step")) state.saveStepRequested = true;
@@ -111,12 +222,12 @@ void drawAuthoring(LessonState& state, FileBrowserState& browser) {
 }  // namespace
 
 void drawLessonsPanel(LessonState& state, std::span<Lesson const> lessons, std::span<std::string const> loadErrors,
-                      LessonValues const& values, FileBrowserState& browser) {
+                      LessonValues const& values, FileBrowserState& browser, Glossary const& glossary) {
     state.buttonCentres = {};
     placeWindow(EditorWindow::Lessons);
     if (ImGui::Begin(windowName(EditorWindow::Lessons), nullptr, editorWindowFlags())) {
         if (state.lesson >= 0 && state.lesson < int(lessons.size()))
-            drawStep(state, lessons[std::size_t(state.lesson)], values);
+            drawStep(state, lessons[std::size_t(state.lesson)], values, glossary);
         else
             drawPicker(state, lessons);
         if (!state.message.empty()) {

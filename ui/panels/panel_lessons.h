@@ -5,6 +5,7 @@
 #include "model/file_browser.h"
 #include "model/lesson_state.h"
 #include "model/lesson_text.h"
+#include "session/glossary_file.h"
 #include "session/lesson_file.h"
 
 #include <span>
@@ -13,8 +14,9 @@
 namespace gbl::ui {
 
 // Requests go into `state` (startRequest, stepRequest, leaveRequested, saveStepRequested,
-// openRequested); the editor loop carries them out. `values` fill the text's placeholders.
+// openRequested, predictRequested, glossaryRequested); the editor loop carries them out. `values` fill the text's
+// placeholders.
 void drawLessonsPanel(LessonState& state, std::span<Lesson const> lessons, std::span<std::string const> loadErrors,
-                      LessonValues const& values, FileBrowserState& browser);
+                      LessonValues const& values, FileBrowserState& browser, Glossary const& glossary);
 
 }  // namespace gbl::ui

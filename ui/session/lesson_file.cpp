@@ -266,51 +266,103 @@ LessonAb readAb(json const& j, std::string const& path, PipelineSettings const& 
     return ab;
 }
 
-LessonStep readStep(json const& j, std::string const& path, json const& setup) {
+LessonSnapshot snapshotOf(json const& state, std::string const& path, int* defaultLights = nullptr);
+
+// "predict": {"prompt", "choices" + "correct" | "number" + "tolerance", "explain", "before"}.
+LessonPrediction readPrediction(json const& j, std::string const& path, json const& state) {
+    knownFields(j, path, {"prompt", "choices", "correct", "number", "tolerance", "explain", "before"});
+    LessonPrediction p;
+    p.prompt = text(j, "prompt", path);
+    p.explain = text(j, "explain", path);
+    auto choices = j.find("choices");
+    auto numberIt = j.find("number");
+    if ((choices == j.end()) == (numberIt == j.end()))
+        fail(path, "must have either choices (with correct) or number (with tolerance)");
+    if (choices != j.end()) {
+        if (!choices->is_array() || choices->size() < 2 || choices->size() > 6)
+            fail(path + ".choices", "must be an array of 2 to 6 strings");
+        for (std::size_t i = 0; i < choices->size(); ++i) {
+            json const wrap = {{"c", (*choices)[i]}};
+            p.choices.push_back(text(wrap, "c", path + ".choices[" + std::to_string(i) + "]"));
+        }
+        auto c = j.find("correct");
+        if (c == j.end()) fail(path + ".correct", "is missing (the index of the right choice)");
+        p.correct = integer(*c, path + ".correct", 0, int(p.choices.size()) - 1);
+        if (j.contains("tolerance")) fail(path + ".tolerance", "is only for a number prediction");
+    } else {
+        p.number = number(*numberIt, path + ".number", -1e9f, 1e9f);
+        auto t = j.find("tolerance");
+        if (t == j.end()) fail(path + ".tolerance", "is missing (how far from number still counts as right)");
+        p.tolerance = number(*t, path + ".tolerance", 0.0f, 1e9f);
+        if (j.contains("correct")) fail(path + ".correct", "is only for a multiple-choice prediction");
+    }
+    if (auto b = j.find("before"); b != j.end()) {
+        knownFields(*b, path + ".before",
+                    {"scene", "lights", "camera", "pipeline", "viewers", "selected_light", "viewer"});
+        // The step's state with these fields changed, merged like a step over the setup.
+        p.before = snapshotOf(mergedState(state, *b), path + ".before");
+        p.beforeJson = b->dump();
+    }
+    return p;
+}
+
+LessonStep readStep(json const& j, std::string const& path, json const& setup, std::string const& lessonId) {
     knownFields(j, path,
-                {"title", "look", "equation", "question", "scene", "lights", "camera", "pipeline", "viewers",
-                 "selected_light", "viewer", "pixel", "claim", "ab"});
+                {"title", "look", "equation", "question", "answer", "predict", "scene", "lights", "camera", "pipeline",
+                 "viewers", "selected_light", "viewer", "pixel", "claim", "ab"});
     LessonStep step;
     step.text.title = text(j, "title", path);
     step.text.look = text(j, "look", path);
     step.text.equation = text(j, "equation", path);
     step.text.question = text(j, "question", path);
+    if (!j.contains("answer"))
+        fail(path + ".answer", "is missing: step \"" + step.text.title + "\" of lesson " + lessonId +
+                                   " asks a question and every question needs an answer the student can reveal");
+    step.text.answer = text(j, "answer", path);
     json const state = mergedState(setup, j);
+    step.state = snapshotOf(state, path, &step.defaultSceneLights);
+    if (auto it = j.find("ab"); it != j.end()) step.state.ab = readAb(*it, path + ".ab", step.state.pipeline);
+    if (auto it = j.find("claim"); it != j.end()) step.claim = readClaim(*it, path + ".claim", state, step);
+    if (auto it = j.find("predict"); it != j.end()) step.predict = readPrediction(*it, path + ".predict", state);
+    return step;
+}
+
+// The whole state of a step (or of a prediction's `before`) from its merged JSON.
+LessonSnapshot snapshotOf(json const& state, std::string const& path, int* defaultLights) {
+    LessonSnapshot out;
     glm::vec3 lookAt{0.0f};
     bool hasLookAt = false;
     Session const s = readState(state, path, &lookAt, &hasLookAt);
-    step.defaultSceneLights = s.defaultSceneLights;
-    step.state.camera = s.camera;
+    if (defaultLights) *defaultLights = s.defaultSceneLights;
+    out.camera = s.camera;
     if (hasLookAt) {
         if (glm::length(lookAt - s.camera.position) < 1e-4f)
             fail(path + ".camera.look_at", "must differ from camera.position");
-        step.state.camera.lookAt(lookAt);
-        if (std::abs(step.state.camera.pitchDegrees) > 89.0f)
+        out.camera.lookAt(lookAt);
+        if (std::abs(out.camera.pitchDegrees) > 89.0f)
             fail(path + ".camera.look_at", "is straight above or below the camera (pitch must stay within 89 degrees)");
     }
-    step.state.lights = s.lights;
-    step.state.pipeline = s.pipeline;
-    step.state.viewers = s.viewers;
-    step.state.animation = {};
+    out.lights = s.lights;
+    out.pipeline = s.pipeline;
+    out.viewers = s.viewers;
+    out.animation = {};
     if (auto it = state.find("selected_light"); it != state.end())
-        step.state.selectedLight = integer(*it, path + ".selected_light", -1, int(s.lights.size()) - 1);
+        out.selectedLight = integer(*it, path + ".selected_light", -1, int(s.lights.size()) - 1);
     if (auto it = state.find("viewer"); it != state.end()) {
         auto const v = it->is_string() ? enumFromName<ViewerKind>(kViewerNames, it->get<std::string>()) : std::nullopt;
         if (!v)
             fail(path + ".viewer",
                  "must be one of position, normal, albedo, specular or depth (got " + it->dump() + ")");
-        step.state.activeViewer = int(*v);
+        out.activeViewer = int(*v);
     }
     if (auto it = state.find("pixel"); it != state.end()) {
         if (!it->is_array() || it->size() != 2) fail(path + ".pixel", "must be an array of 2 numbers");
         glm::vec2 p;
         for (int i = 0; i < 2; ++i)
             p[i] = number((*it)[std::size_t(i)], path + ".pixel[" + std::to_string(i) + "]", 0.0f, 1.0f);
-        step.state.pixel = p;
+        out.pixel = p;
     }
-    if (auto it = j.find("ab"); it != j.end()) step.state.ab = readAb(*it, path + ".ab", step.state.pipeline);
-    if (auto it = j.find("claim"); it != j.end()) step.claim = readClaim(*it, path + ".claim", state, step);
-    return step;
+    return out;
 }
 
 Lesson readLesson(json const& j) {
@@ -323,8 +375,11 @@ Lesson readLesson(json const& j) {
     auto ver = j.find("version");
     if (ver == j.end()) fail("version", "is missing");
     if (!ver->is_number_integer() || ver->get<long long>() != kLessonVersion)
-        fail("version",
-             ver->dump() + " is not supported; this program reads lesson version " + std::to_string(kLessonVersion));
+        fail("version", ver->dump() + " is not supported; this program reads lesson version " +
+                            std::to_string(kLessonVersion) +
+                            (ver->is_number_integer() && ver->get<long long>() == 1
+                                 ? " (version 2 adds an \"answer\" to every step: add one and set \"version\": 2)"
+                                 : ""));
     knownFields(j, "", {"format", "version", "id", "title", "summary", "size", "setup", "steps"});
     Lesson lesson;
     auto id = j.find("id");
@@ -353,7 +408,7 @@ Lesson readLesson(json const& j) {
     if (steps == j.end()) fail("steps", "is missing");
     if (!steps->is_array() || steps->empty()) fail("steps", "must be an array of at least one step");
     for (std::size_t i = 0; i < steps->size(); ++i)
-        lesson.steps.push_back(readStep((*steps)[i], "steps[" + std::to_string(i) + "]", setup));
+        lesson.steps.push_back(readStep((*steps)[i], "steps[" + std::to_string(i) + "]", setup, lesson.id));
     return lesson;
 }
 
@@ -391,70 +446,6 @@ LessonLoad loadLesson(std::string const& path) {
     LessonLoad load = parseLesson(*text, path);
     if (load.lesson) load.lesson->path = path;
     return load;
-}
-
-std::string defaultLessonDir() {
-    if (char const* env = std::getenv("GBL_LESSONS_DIR"); env && *env) return env;
-    return GBL_LESSONS_DIR;
-}
-
-LessonLibrary loadLessonDir(std::string const& dir) {
-    LessonLibrary lib;
-    std::error_code ec;
-    std::vector<std::string> files;
-    for (auto const& e : fs::directory_iterator(dir, ec))
-        if (e.path().extension() == ".json") files.push_back(e.path().string());
-    if (ec) {
-        lib.errors.push_back("cannot list lessons in " + dir + ": " + ec.message());
-        return lib;
-    }
-    std::sort(files.begin(), files.end());
-    for (auto const& f : files) {
-        LessonLoad load = loadLesson(f);
-        if (!load.lesson) {
-            lib.errors.push_back(load.error);
-            continue;
-        }
-        bool const dup = std::any_of(lib.lessons.begin(), lib.lessons.end(),
-                                     [&](Lesson const& l) { return l.id == load.lesson->id; });
-        if (dup)
-            lib.errors.push_back(f + ": id \"" + load.lesson->id + "\" is already used by another lesson");
-        else
-            lib.lessons.push_back(std::move(*load.lesson));
-    }
-    return lib;
-}
-
-LessonRef findLessonStep(LessonLibrary const& library, std::string_view ref) {
-    LessonRef out;
-    std::string_view id = ref;
-    std::string_view step;
-    if (auto colon = ref.find(':'); colon != std::string_view::npos) {
-        id = ref.substr(0, colon);
-        step = ref.substr(colon + 1);
-    }
-    for (std::size_t i = 0; i < library.lessons.size(); ++i)
-        if (library.lessons[i].id == id) out.lesson = int(i);
-    if (out.lesson < 0) {
-        std::string ids;
-        for (auto const& l : library.lessons) ids += (ids.empty() ? "" : ", ") + l.id;
-        out.error = "no lesson has the id \"" + std::string(id) + "\" (lessons: " + ids + ")";
-        return out;
-    }
-    int const count = int(library.lessons[std::size_t(out.lesson)].steps.size());
-    if (!step.empty()) {
-        int n = 0;
-        bool digits = step.find_first_not_of("0123456789") == std::string_view::npos && step.size() < 6;
-        if (digits) n = std::stoi(std::string(step));
-        if (!digits || n < 1 || n > count) {
-            out.error = "lesson " + std::string(id) + " has steps 1 to " + std::to_string(count) + ", not \"" +
-                        std::string(step) + "\"";
-            out.lesson = -1;
-            return out;
-        }
-        out.step = n - 1;
-    }
-    return out;
 }
 
 }  // namespace gbl::ui

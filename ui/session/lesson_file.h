@@ -15,13 +15,15 @@ namespace gbl::ui {
 
 inline constexpr std::string_view kLessonFormat = "gbuffer-lab-lesson";
 // Bump when a field changes meaning or a required field is added.
-inline constexpr int kLessonVersion = 1;
+// Version 2: every step has an answer; a step may carry a prediction.
+inline constexpr int kLessonVersion = 2;
 
 struct LessonStep {
     LessonText text;
     LessonSnapshot state;  // camera, lights, pipeline, viewers, selection, pixel
     int defaultSceneLights = 32;
     std::optional<LessonClaim> claim;
+    std::optional<LessonPrediction> predict;
 };
 
 struct Lesson {

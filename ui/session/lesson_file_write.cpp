@@ -30,6 +30,7 @@ nlohmann::ordered_json stepJson(LessonStep const& step) {
                                 {"look", step.text.look},
                                 {"equation", step.text.equation},
                                 {"question", step.text.question},
+                                {"answer", step.text.answer},
                                 {"scene", {{"lights", step.defaultSceneLights}}},
                                 {"camera", session["camera"]},
                                 {"lights", session["lights"]},
@@ -53,6 +54,20 @@ nlohmann::ordered_json stepJson(LessonStep const& step) {
                 b[std::string(f.name)] = v;
         }
         j["ab"] = {{"view", step.state.ab->view == AbView::Diff ? "diff" : "split"}, {"b", b}};
+    }
+    if (step.predict) {
+        LessonPrediction const& p = *step.predict;
+        nlohmann::ordered_json pj = {{"prompt", p.prompt}};
+        if (!p.choices.empty()) {
+            pj["choices"] = p.choices;
+            pj["correct"] = p.correct;
+        } else {
+            pj["number"] = p.number;
+            pj["tolerance"] = p.tolerance;
+        }
+        pj["explain"] = p.explain;
+        if (!p.beforeJson.empty()) pj["before"] = nlohmann::ordered_json::parse(p.beforeJson);
+        j["predict"] = pj;
     }
     return j;
 }
