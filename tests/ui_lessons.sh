@@ -31,8 +31,11 @@ reach() {
     done
 }
 click() {
+    # In the scrolling part (lx set) a button that left the view since `reach` (the window's content
+    # moved, as a click on a choice does) is scrolled back first.
+    if [ -n "${lx:-}" ]; then reach "$1"; fi
     set -- $(button "$1")
-    [ "$1" -gt 0 ] || fail "button not drawn: $(field lessonButtons)"
+    [ "${1:-0}" -gt 0 ] || fail "button not drawn: $(field lessonButtons)"
     xdotool mousemove --window "$wid" "$1" "$2" mousedown 1 sleep 0.05 mouseup 1
     wait_frames 4
 }
