@@ -1,6 +1,7 @@
 // Glossary window.
 #include "panels/panel_glossary.h"
 
+#include "panels/string_input.h"
 #include "panels/wrapped_text.h"
 
 #include <imgui.h>
@@ -16,15 +17,6 @@ std::string lower(std::string_view s) {
     std::string out(s);
     for (char& c : out) c = char(std::tolower(static_cast<unsigned char>(c)));
     return out;
-}
-
-int resizeCallback(ImGuiInputTextCallbackData* data) {
-    if (data->EventFlag == ImGuiInputTextFlags_CallbackResize) {
-        auto* s = static_cast<std::string*>(data->UserData);
-        s->resize(std::size_t(data->BufTextLen));
-        data->Buf = s->data();
-    }
-    return 0;
 }
 
 }  // namespace
@@ -53,7 +45,7 @@ void drawGlossaryWindow(GlossaryWindowState& state, Glossary const& glossary) {
         if (!glossary.error.empty()) wrappedText("%s", glossary.error.c_str());
         ImGui::SetNextItemWidth(-1.0f);
         ImGui::InputTextWithHint("##filter", "filter", state.filter.data(), state.filter.capacity() + 1,
-                                 ImGuiInputTextFlags_CallbackResize, resizeCallback, &state.filter);
+                                 ImGuiInputTextFlags_CallbackResize, stringResizeCallback, &state.filter);
         std::string const filter = lower(state.filter);
         for (std::size_t i = 0; i < glossary.terms.size(); ++i) {
             GlossaryTerm const& t = glossary.terms[i];

@@ -4,6 +4,7 @@
 #include "panels/layout.h"
 #include "panels/panel_file_browser.h"
 #include "panels/panel_glossary.h"
+#include "panels/string_input.h"
 #include "panels/wrapped_text.h"
 
 #include <imgui.h>
@@ -17,23 +18,14 @@ namespace gbl::ui {
 
 namespace {
 
-// std::string through ImGui's resize callback, so typed text has no fixed length.
-int resizeCallback(ImGuiInputTextCallbackData* data) {
-    if (data->EventFlag == ImGuiInputTextFlags_CallbackResize) {
-        auto* s = static_cast<std::string*>(data->UserData);
-        s->resize(std::size_t(data->BufTextLen));
-        data->Buf = s->data();
-    }
-    return 0;
-}
-
 bool inputText(char const* label, std::string& s, bool multiline) {
     ImGuiInputTextFlags const flags = ImGuiInputTextFlags_CallbackResize;
     if (multiline)
         return ImGui::InputTextMultiline(label, s.data(), s.capacity() + 1,
-                                         ImVec2(-1.0f, ImGui::GetTextLineHeight() * 2.6f), flags, resizeCallback, &s);
+                                         ImVec2(-1.0f, ImGui::GetTextLineHeight() * 2.6f), flags, stringResizeCallback,
+                                         &s);
     ImGui::SetNextItemWidth(-1.0f);
-    return ImGui::InputText(label, s.data(), s.capacity() + 1, flags, resizeCallback, &s);
+    return ImGui::InputText(label, s.data(), s.capacity() + 1, flags, stringResizeCallback, &s);
 }
 
 std::string formatNumber(float v) {
