@@ -86,6 +86,8 @@ ui_window
 wait_frames 2
 [ "$(field lesson)" = '"camera_inside:2"' ] || fail "--lesson camera_inside:2 did not open that step"
 [ "$(field lessonPrediction)" = '""' ] || fail "a prediction is made before any click: $(field lessonPrediction)"
+# The step's camera sits inside light 0's volume: the viewport says so (issue 26).
+[ "$(field cameraInside)" = "[0]" ] || fail "camera_inside:2 reports the camera inside $(field cameraInside), not [0]"
 shot predict-before
 set -- $(button 2)
 lx=$1

@@ -1,7 +1,8 @@
 #!/bin/sh
 # The light-by-light scrubber and the A/B divider driven by real X events (xdotool) at two window
 # sizes: a click on the scrubber turns accumulation on at k = 0, Right/Left arrows step it, a click
-# turns A/B on, and a drag moves the divider without moving the camera. Checks read --log-frames;
+# turns A/B on, and a drag moves the divider without moving the camera. Wireframes outline the
+# selected light's volume alone, "all" every light's (issue 26). Checks read --log-frames;
 # screenshots of each step are left in WORK_DIR to look at.
 # usage: ui_teaching.sh GBUFFER_LAB WORK_DIR          (ctest: each size on an Xvfb of its own)
 #        ui_teaching.sh GBUFFER_LAB WORK_DIR WxH      (one size, on the current $DISPLAY)
@@ -40,6 +41,28 @@ run_size() {
     xdotool mousemove --window "$wid" "$1" "$2"
     wait_frames 6
     [ "$(field accumulate)" = "-1" ] || fail "accumulation is on at start"
+
+    # --- wireframes: the selected light's volume alone, every light one click away ------------
+    [ "$(field wireframes)" = "0" ] || fail "wireframes outlined at start: $(field wireframes)"
+    echo "$size: camera inside the volumes of lights $(field cameraInside)"
+    [ "$(field selectedLight)" -ge 0 ] || fail "no light selected at start"
+    set -- $(rect_point wireframesToggle 0.1 0.5)
+    click_at "$1" "$2"
+    wait_frames 4
+    [ "$(field wireframes)" = "1" ] || fail "Wireframes outlined $(field wireframes) volumes, not the selected one"
+    set -- $(rect_point wireframesAll 0.1 0.5)
+    click_at "$1" "$2"
+    wait_frames 4
+    [ "$(field wireframes)" -ge 16 ] || fail "all outlined $(field wireframes) volumes, not every light"
+    echo "$size: wireframes: the selected light's, then all $(field wireframes)"
+    shot "wireframes_all_$size"
+    click_at "$1" "$2"
+    wait_frames 4
+    [ "$(field wireframes)" = "1" ] || fail "all off again outlined $(field wireframes) volumes"
+    set -- $(rect_point wireframesToggle 0.1 0.5)
+    click_at "$1" "$2"
+    wait_frames 4
+    [ "$(field wireframes)" = "0" ] || fail "Wireframes off still outlines $(field wireframes) volumes"
 
     # --- a click at the scrubber's left end: accumulation on, k = 0 -------------------------
     set -- $(rect_point scrubber 0.02 0.5)

@@ -290,3 +290,30 @@ TEST(WhyValue, ASpotsConeVolumeIsWhatTheVolumesPassDraws) {
     EXPECT_FALSE(explainPixel(f.input(LightingMode::Tiled), aside)[0].evaluated);
     EXPECT_EQ(f.shaded(spot), glm::vec3(0.0f));
 }
+
+TEST(WhyValue, LightsAroundTheEyeAreThoseWhoseDrawnVolumeHoldsIt) {
+    // A light at the origin with a radius of about 5.1; the drawn sphere is radius * 1.0301.
+    PointLight const near = light({0.0f, 0.0f, 0.0f});
+    float const r = lightRadius(near).radius;
+    ASSERT_GT(r, 3.0f);
+    PointLight far = light({100.0f, 0.0f, 0.0f});
+    PointLight sun = light({0.0f, 0.0f, 0.0f});
+    sun.kind = LightKind::Directional;
+    PointLight const lights[] = {far, near, sun};
+    EXPECT_EQ(lightsAroundEye({0.0f, 0.0f, 0.9f * r}, lights, 1.0f), std::vector<int>{1});
+    // Just past the radius but inside the enclosing sphere the pass draws: still inside.
+    EXPECT_EQ(lightsAroundEye({0.0f, 0.0f, 1.01f * r}, lights, 1.0f), std::vector<int>{1});
+    EXPECT_TRUE(lightsAroundEye({0.0f, 0.0f, 1.05f * r}, lights, 1.0f).empty());
+    // The volume scale grows and shrinks what is drawn, so the answer follows it.
+    EXPECT_EQ(lightsAroundEye({0.0f, 0.0f, 1.5f * r}, lights, 2.0f), std::vector<int>{1});
+    EXPECT_TRUE(lightsAroundEye({0.0f, 0.0f, 0.9f * r}, lights, 0.5f).empty());
+    // A spot pointing down -Z: inside its cone, not beside it at the same distance.
+    PointLight spot = light({0.0f, 0.0f, 0.0f});
+    spot.kind = LightKind::Spot;
+    spot.direction = {0.0f, 0.0f, -1.0f};
+    spot.innerConeDeg = 10.0f;
+    spot.outerConeDeg = 20.0f;
+    PointLight const spots[] = {spot};
+    EXPECT_EQ(lightsAroundEye({0.0f, 0.0f, -0.5f * r}, spots, 1.0f), std::vector<int>{0});
+    EXPECT_TRUE(lightsAroundEye({0.5f * r, 0.0f, 0.0f}, spots, 1.0f).empty());
+}

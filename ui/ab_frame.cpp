@@ -20,6 +20,12 @@ FrameInput editorFrameInput(EditorState const& state, std::span<PointLight const
     return in;
 }
 
+int outlinedVolumes(FrameInput const& in) {
+    if (!in.settings.volumeWireframes) return 0;
+    if (in.wireframeLight < 0) return int(in.lights.size());
+    return in.wireframeLight < int(in.lights.size()) ? 1 : 0;
+}
+
 TeachingInputs teachingInputs(FrameInput const& a, AbState const& ab) {
     TeachingInputs t;
     t.accumulate = a.accumulateLights;

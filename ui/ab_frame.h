@@ -18,6 +18,10 @@ struct AbGpu {
 // The frame the editor renders for side A: the pipeline, the scrubber and the wireframe option.
 FrameInput editorFrameInput(EditorState const& state, std::span<PointLight const> lights, bool waitForGpuTimings);
 
+// How many light volumes the wireframes of `in` outline: every light, the selected one alone, or
+// none (wireframes off, or selected-only with nothing selected). For the frame log.
+int outlinedVolumes(FrameInput const& in);
+
 // The part of `a` and the A/B state that RenderInputs does not already hold.
 TeachingInputs teachingInputs(FrameInput const& a, AbState const& ab);
 

@@ -79,6 +79,12 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.frameTargets = state.frame.targets;
     line.stopAfter = state.frame.stopAfter ? std::string(passName(*state.frame.stopAfter)) : std::string();
     line.stoppedAfter = state.stats.last.stoppedAfter ? std::string(passName(*state.stats.last.stoppedAfter)) : "";
+    line.cameraInside = state.viewport.cameraInside;
+    line.wireframes = ui::outlinedVolumes(ui::editorFrameInput(state, editor.drawn, false));
+    line.wireframesToggle = state.viewport.wireframesRect;
+    line.wireframesAll = state.viewport.allWireframesRect;
+    line.litDiffShown = state.litPin.showDiff;
+    line.everyLight = state.inspector.everyLight;
     editor.frameLog.write(line);
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "model/why_value.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
 #include "panels/panel_confirm.h"
@@ -161,6 +162,7 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
                             editor.gpu.ab.b.texture.id(),
                             editor.gpu.ab.diff.id()};
     state.viewport.clipPlanes = {state.camera.nearPlane, state.camera.farPlane};
+    state.viewport.cameraInside = ui::lightsAroundEye(state.camera.position, editor.drawn, state.pipeline.volumeScale);
     state.viewport.stoppedAfter =
         state.stats.last.stoppedAfter ? std::string(passName(*state.stats.last.stoppedAfter)) : std::string();
     ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, state.viewportTools, viewportTexture,

@@ -62,7 +62,8 @@ struct PipelineSettings {
     LightAccumulation accumulation = LightAccumulation::Single;
     bool lightCubes = true;
     bool volumeWireframes = false;
-    bool wireframesSelectedOnly = false;  // the wireframes outline the selected light's volume only
+    // The wireframes outline the selected light's volume only: 32 outlines at once bury the frame.
+    bool wireframesSelectedOnly = true;
     bool normalMaps = true;
     glm::vec3 ambient{0.03f};
     float exposure = 1.0f;

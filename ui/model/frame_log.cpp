@@ -95,6 +95,12 @@ std::string frameLogJson(FrameLogLine const& l) {
            ",\"stopButton\":" + rect(l.stopButton);
     out += ",\"stopAfter\":" + quoted(l.stopAfter) + ",\"stoppedAfter\":" + quoted(l.stoppedAfter);
     out += ",\"frameTargets\":" + strings(l.frameTargets);
+    out += ",\"cameraInside\":[";
+    for (std::size_t i = 0; i < l.cameraInside.size(); ++i) out += (i ? "," : "") + std::to_string(l.cameraInside[i]);
+    out += "],\"wireframes\":" + std::to_string(l.wireframes);
+    out += ",\"wireframesToggle\":" + rect(l.wireframesToggle) + ",\"wireframesAll\":" + rect(l.wireframesAll);
+    out += std::string(",\"litDiffShown\":") + (l.litDiffShown ? "true" : "false");
+    out += std::string(",\"everyLight\":") + (l.everyLight ? "true" : "false");
     return out + "}";
 }
 

@@ -73,6 +73,15 @@ struct FrameLogLine {
     std::vector<std::string> frameTargets;
     std::string stopAfter;
     std::string stoppedAfter;
+    // Markers and overlays (issue 26): the lights whose volume holds the camera (the viewport
+    // says so), the light volumes the wireframes outline, the viewport's "Wireframes" and "all"
+    // checkboxes, whether the lit diff is shown and the inspector lists every light.
+    std::vector<int> cameraInside;
+    int wireframes = 0;
+    glm::vec4 wireframesToggle{0.0f};
+    glm::vec4 wireframesAll{0.0f};
+    bool litDiffShown = false;
+    bool everyLight = false;
 };
 
 std::string frameLogJson(FrameLogLine const& line);

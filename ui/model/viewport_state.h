@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace gbl::ui {
 
@@ -24,6 +25,11 @@ struct ViewportState {
     bool frameRequested = false;         // the Frame button (the F key is read by the loop)
     glm::vec2 clipPlanes{0.1f, 100.0f};  // the camera's near and far: the depth-slice legend's ranges
     std::string stoppedAfter;            // the pass the frame shown stopped after ("" = every pass ran)
+    std::vector<int> cameraInside;       // lights whose drawn volume holds the camera (model/why_value.h)
+    // Where the "Wireframes" and "all" checkboxes were drawn (x, y, w, h in window pixels), for
+    // the frame log that real-input tests click by.
+    glm::vec4 wireframesRect{0.0f};
+    glm::vec4 allWireframesRect{0.0f};
 };
 
 }  // namespace gbl::ui

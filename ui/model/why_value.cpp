@@ -253,6 +253,25 @@ std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointL
     return out;
 }
 
+std::vector<int> lightsAroundEye(glm::vec3 eye, std::span<PointLight const> lights, float volumeScale) {
+    static float const scale = enclosingScale(makeLightVolumeSphere());
+    static float const radial = coneRadialScale(makeLightVolumeCone());
+    std::vector<int> out;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        PointLight const& light = lights[i];
+        if (light.kind == LightKind::Directional) continue;  // no volume
+        float const radius = lightRadius(light).radius;
+        if (radius <= 0.0f) continue;
+        // Any ray from the eye starts inside a convex volume exactly when the eye is inside it.
+        VolumeHit const h =
+            volumeShape(light) == VolumeShape::Cone
+                ? hitCone(eye, glm::vec3(0.0f, 0.0f, 1.0f), coneVolume(light, radius, radial, volumeScale))
+                : hitVolume(eye, glm::vec3(0.0f, 0.0f, 1.0f), light.position, radius * scale * volumeScale);
+        if (h.cameraInside) out.push_back(int(i));
+    }
+    return out;
+}
+
 std::optional<TileDepthBounds> tileDepthBounds(FloatImage const& depth, glm::ivec2 pixel, float nearPlane,
                                                float farPlane) {
     if (depth.width <= 0 || depth.height <= 0 || depth.channels < 1) return std::nullopt;

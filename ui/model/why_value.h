@@ -47,6 +47,11 @@ struct LightVerdict {
 // One verdict per light, in list order. Empty when the sample is background.
 std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointLight const> lights);
 
+// The local lights whose volume, as the volumes pass draws it (the enclosing sphere, or a spot's
+// cone, at the pipeline's volume scale), holds the eye, in list order: the viewport's "camera inside
+// light N's volume" (a volume the camera is inside loses its front faces to the near plane).
+std::vector<int> lightsAroundEye(glm::vec3 eye, std::span<PointLight const> lights, float volumeScale);
+
 // The depth bounds the tiled pass computes for the tile holding pixel (top-left origin) of a
 // depth attachment read back with Renderer::readAttachment(Attachment::Depth) (rows top to
 // bottom); nullopt when the tile has no geometry. Background pixels (depth 1) are left out,

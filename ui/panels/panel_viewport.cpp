@@ -198,6 +198,14 @@ void boxedText(ImVec2 p, std::string const& text) {
     dl->AddText(p, IM_COL32(240, 240, 240, 255), text.c_str());
 }
 
+// "camera inside light 3's volume"; several: "camera inside the volumes of lights 3, 7, 9".
+std::string cameraInsideText(std::vector<int> const& lights) {
+    if (lights.size() == 1) return "camera inside light " + std::to_string(lights[0]) + "'s volume";
+    std::string out = "camera inside the volumes of lights ";
+    for (std::size_t i = 0; i < lights.size() && i < 8; ++i) out += (i ? ", " : "") + std::to_string(lights[i]);
+    return lights.size() > 8 ? out + ", ..." : out;
+}
+
 // One side's GPU ms per pass, as much as fits in `width` pixels: every pass, else the passes of
 // 1 ms or more, else the total alone (the Stats window lists every pass).
 std::string passLine(char const* side, std::vector<PassTiming> const& passes, double total, float width) {
@@ -367,6 +375,20 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
     ImGui::Checkbox("Cubes", &settings.lightCubes);
     ImGui::SameLine();
     ImGui::Checkbox("Wireframes", &settings.volumeWireframes);
+    state.wireframesRect = itemRect();
+    ImGui::SameLine();
+    // The selected light's volume by default (32 outlines bury the frame); every light's one click
+    // away, which also turns the wireframes on.
+    bool every = !settings.wireframesSelectedOnly;
+    if (ImGui::Checkbox("all", &every)) {
+        settings.wireframesSelectedOnly = !every;
+        if (every) settings.volumeWireframes = true;
+    }
+    state.allWireframesRect = itemRect();
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "Outline every light's volume, not only the selected light's (Wireframes outlines the "
+            "selected one)");
     ImGui::SameLine();
     if (ImGui::Button("Frame (F)")) state.frameRequested = true;
     ImGui::SameLine();
@@ -431,10 +453,15 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         markLockedPixel(dl, origin, avail, textureSize, *lockedPixel);
         dl->PopClipRect();
     }
-    // A frame stopped after a pass (the Frame window's "Stop here") says so over the image.
-    if (!state.stoppedAfter.empty() && texture != 0)
-        boxedText(ImVec2(origin.x + 8, origin.y + (abOn ? 3.0f * ImGui::GetTextLineHeightWithSpacing() : 6.0f)),
-                  "stopped after " + state.stoppedAfter);
+    // A frame stopped after a pass (the Frame window's "Stop here") says so over the image, and so
+    // does a camera inside a light's volume (why the volume passes lose that light with cull back).
+    float notesY = origin.y + (abOn ? 3.0f * ImGui::GetTextLineHeightWithSpacing() : 6.0f);
+    if (!state.stoppedAfter.empty() && texture != 0) {
+        boxedText(ImVec2(origin.x + 8, notesY), "stopped after " + state.stoppedAfter);
+        notesY += ImGui::GetTextLineHeightWithSpacing() + 4.0f;
+    }
+    if (!state.cameraInside.empty() && texture != 0)
+        boxedText(ImVec2(origin.x + 8, notesY), cameraInsideText(state.cameraInside));
     // The tools' Shift+drag and Shift+right-click are theirs, not the camera's.
     bool const toolsMouse = viewportToolsImage(tools, origin, avail, textureSize);
     if (settings.view == DebugView::Heatmap || settings.view == DebugView::TileLights)
