@@ -1,7 +1,8 @@
 #!/bin/sh
 # The Lessons window driven by real X clicks (xdotool): Start opens the first lesson at step 1,
 # Next and Back step through it (each step sets its pipeline view and one undo entry), Leave
-# returns the editor to the camera and view it had before. Every check reads --log-frames; the
+# returns the editor to the camera and view it had before and drops the lit pin and diff made
+# during the lesson; Ctrl+Q in a lesson quits without an unsaved-edits question. Every check reads --log-frames; the
 # screenshots at 1280x720 and 1600x900 with a lesson open are kept in WORK_DIR to look at.
 # usage: ui_lessons.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
 set -eu
@@ -54,6 +55,17 @@ click 1
 [ "$(field lesson)" = '"gbuffer:1"' ] || fail "Start did not open gbuffer:1 (lesson $(field lesson))"
 [ "$(field view)" = '"final"' ] || fail "step 1 shows view $(field view), want final"
 echo "Start: $(field lesson), view $(field view)"
+# The student pins the lit frame and shows its diff during the lesson (real clicks); Leave must
+# take both away again (issue 26: a stale lit diff followed the student out of the lesson).
+set -- $(rect_point pinLit 0.5 0.5)
+[ "${1:-0}" -gt 0 ] || fail "Pin lit not drawn: $(field pinLit)"
+click_at "$1" "$2"
+wait_frames 6
+set -- $(rect_point litDiff 0.3 0.5)
+[ "${1:-0}" -gt 0 ] || fail "the lit pin's Diff not drawn after Pin lit: $(field litDiff)"
+click_at "$1" "$2"
+wait_frames 4
+[ "$(field litDiffShown)" = "true" ] || fail "clicking Diff did not show the lit diff"
 
 click 3
 [ "$(field lesson)" = '"gbuffer:2"' ] || fail "Next did not go to step 2 (lesson $(field lesson))"
@@ -72,7 +84,9 @@ click 4
 [ "$(field lesson)" = '""' ] || fail "Leave did not close the lesson ($(field lesson))"
 [ "$(field camera)" = "$camera0" ] || fail "Leave did not restore the camera: $camera0 -> $(field camera)"
 [ "$(field view)" = "$view0" ] || fail "Leave did not restore the view: $view0 -> $(field view)"
-echo "Leave: camera $(field camera), view $(field view)"
+[ "$(field litDiffShown)" = "false" ] || fail "Leave kept the lit diff the lesson's student turned on"
+[ "$(field litDiff)" = "[0.0000,0.0000,0.0000,0.0000]" ] || fail "Leave kept the lesson's lit pin ($(field litDiff))"
+echo "Leave: camera $(field camera), view $(field view), lit pin and diff gone"
 ui_stop
 
 # A prediction and an answer (issue 27): camera_inside:2 shows cull front while the student
@@ -120,7 +134,19 @@ click 8
 wait_frames 4
 [ "$(field lessonGlossary)" = 'true' ] || fail "the Glossary button did not open the glossary"
 shot glossary
-ui_stop
+# Opening a lesson, predicting and reading it are not edits: Ctrl+Q quits without asking about
+# unsaved edits (issue 26).
+xdotool mousemove --window "$wid" "$(rect_point viewport 0.5 0.5 | cut -d' ' -f1)" "$(rect_point viewport 0.5 0.5 | cut -d' ' -f2)"
+wait_frames 2
+xdotool key --delay 30 ctrl+q
+i=0
+while kill -0 "$pid" 2>/dev/null; do
+    i=$((i + 1))
+    [ "$i" -le 100 ] || fail "Ctrl+Q after only opening a lesson did not quit (an unsaved-edits question?)"
+    sleep 0.1
+done
+pid=""
+echo "Ctrl+Q in the lesson quit at once"
 # The editor was ended with changes: its autosave would offer recovery over the screenshots below.
 rm -f "$GBL_RECOVERY_DIR"/*
 

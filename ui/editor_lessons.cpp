@@ -43,6 +43,7 @@ void showStep(Editor& editor, int step) {
     if (before) shown.pixel = s.state.pixel;
     ui::applyLessonSnapshot(shown, editor.state, frameSize(editor));
     editor.sessions->commitLessonStep(editor.state);
+    editor.sessions->lessonStepShown(editor.state);
     editor.actionLog.push_back("lesson " + lesson.id + " step " + std::to_string(l.step + 1));
     l.message.clear();
     l.pixelFrameSize = frameSize(editor);
@@ -65,7 +66,14 @@ void start(Editor& editor, int index) {
         report(editor, "lessons use the default scene: open it first (File > New session)", true);
         return;
     }
-    if (l.lesson < 0) l.before = ui::captureLessonSnapshot(editor.state);
+    if (l.lesson < 0) {
+        editor.sessions->lessonStarting(editor.state);
+        l.before = ui::captureLessonReturn(editor.state);
+    } else if (l.before) {
+        // Another lesson: it starts from the editor as it was before any, not from the tools the
+        // last one left open.
+        ui::applyLessonReturn(*l.before, editor.state, frameSize(editor));
+    }
     l.lesson = index;
     showStep(editor, 0);
 }
@@ -82,6 +90,7 @@ void checkPrediction(Editor& editor) {
     if (s.predict->before) {
         ui::applyLessonSnapshot(s.state, editor.state, frameSize(editor));
         editor.sessions->commitLessonStep(editor.state);
+        editor.sessions->lessonStepShown(editor.state);
     }
     editor.actionLog.push_back(std::string("lesson prediction ") + (l.predictedRight ? "right" : "wrong"));
 }
@@ -89,8 +98,9 @@ void checkPrediction(Editor& editor) {
 void leave(Editor& editor) {
     LessonState& l = editor.lessons;
     if (l.lesson < 0) return;
-    if (l.before) ui::applyLessonSnapshot(*l.before, editor.state, frameSize(editor));
+    if (l.before) ui::applyLessonReturn(*l.before, editor.state, frameSize(editor));
     editor.sessions->commitLessonStep(editor.state);
+    editor.sessions->lessonLeft();
     editor.actionLog.push_back("lesson left");
     l.before.reset();
     l.lesson = -1;

@@ -85,6 +85,19 @@ void SessionController::commitLessonStep(EditorState const& state) {
     undo_.commit(undoSnapshot(state), clock_());
 }
 
+void SessionController::lessonStarting(EditorState const& state) {
+    if (!lessonBaseline_) editsBeforeLesson_ = hasUnsavedEdits(state);
+}
+
+void SessionController::lessonStepShown(EditorState const& state) {
+    lessonBaseline_ = editsText(state);
+}
+
+void SessionController::lessonLeft() {
+    lessonBaseline_.reset();
+    editsBeforeLesson_ = false;
+}
+
 void SessionController::redo(EditorState& state) {
     if (auto s = undo_.redo(undoSnapshot(state), clock_())) applyUndoSnapshot(*s, state);
 }
@@ -127,10 +140,22 @@ std::string SessionController::editsText(EditorState const& state) const {
     Session session = captureSession(state, defaultSceneLights_);
     session.camera = Camera{};
     session.animation.time = 0.0f;
+    // Nor is a range that auto-fit refits from the data, or what a viewer last read.
+    auto const settingsOnly = [](ViewerState& v) {
+        if (v.autoFit) v.rangeMin = 0.0f, v.rangeMax = 1.0f;
+        v.lastFitFrame = -1;
+        v.imageSize = glm::ivec2(0);
+        v.fitRequested = v.percentileFitRequested = v.regionFitRequested = v.pinRequested = false;
+    };
+    for (ViewerState& v : session.viewers) settingsOnly(v);
+    settingsOnly(session.viewportViewer);
     return sessionToJson(session);
 }
 
 bool SessionController::hasUnsavedEdits(EditorState const& state) const {
+    // In a lesson: the edits from before it (they wait in its return state), or edits made since
+    // its step was shown.
+    if (lessonBaseline_) return editsBeforeLesson_ || editsText(state) != *lessonBaseline_;
     return editsText(state) != savedEdits_;
 }
 
@@ -162,6 +187,10 @@ std::optional<std::string> SessionController::saveSession(std::string const& pat
     if (auto err = ui::saveSession(path, captureSession(state, defaultSceneLights_))) return err;
     panel.currentPath = path;
     savedEdits_ = editsText(state);
+    if (lessonBaseline_) {  // saved mid-lesson: what is shown is in the file now
+        lessonBaseline_ = savedEdits_;
+        editsBeforeLesson_ = false;
+    }
     return std::nullopt;
 }
 

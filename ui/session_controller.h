@@ -36,6 +36,12 @@ public:
     void undo(EditorState& state);
     // A lesson step (or leaving a lesson) was applied: one undo entry of its own (UndoStack::commit).
     void commitLessonStep(EditorState const& state);
+    // A lesson shows states of its own: what it sets is not an edit Quit would ask about. Called
+    // before the first step (remembers whether edits were unsaved then), after each step or
+    // prediction is applied (what it shows is the new baseline) and after leaving.
+    void lessonStarting(EditorState const& state);
+    void lessonStepShown(EditorState const& state);
+    void lessonLeft();
     void redo(EditorState& state);
     // A new scene replaced the lights: the old scene's edits must not be undone into it.
     void sceneChanged(EditorState const& state);
@@ -78,6 +84,8 @@ public:
 private:
     std::optional<std::string> applyLoaded(Session const& session, EditorState& state, SceneLoader const& load);
     std::string editsText(EditorState const& state) const;
+    std::optional<std::string> lessonBaseline_;  // the edits text of the lesson step shown
+    bool editsBeforeLesson_ = false;
 
     Clock clock_;
     std::optional<RecoveryDir> recovery_;

@@ -41,9 +41,11 @@ inline constexpr float kViewerStrip = 0.29f;
 // Shares of the band above the strip: Lights over Pipeline on the left; Pixel inspector over
 // Lessons over Stats over Log on the right.
 inline constexpr float kLightsShare = 0.50f;
-inline constexpr float kInspectorShare = 0.32f;
-inline constexpr float kLessonsShare = 0.38f;  // a step's text and equation without scrolling
-inline constexpr float kStatsShare = 0.15f;
+inline constexpr float kInspectorShare = 0.28f;
+// A step's text, equation and a prediction's choices and Check button without scrolling (about
+// 240 px at 1280x720).
+inline constexpr float kLessonsShare = 0.48f;
+inline constexpr float kStatsShare = 0.12f;
 
 // Where a window sits in the tiled arrangement (no docking): the G-buffer strip along the
 // bottom; above it lights over pipeline on the left, the viewport in the centre, pixel

@@ -62,6 +62,51 @@ void applyLessonSnapshot(LessonSnapshot const& s, EditorState& state, glm::ivec2
     }
 }
 
+LessonReturn captureLessonReturn(EditorState const& state) {
+    LessonReturn r;
+    r.snapshot = captureLessonSnapshot(state);
+    r.toolsOpen = state.viewportTools.open;
+    r.toolsViewer = state.viewportTools.viewer;
+    r.litDiff = state.litPin.showDiff;
+    r.litPinned = state.litPin.pinned;
+    r.litPinnedFrame = state.litPin.pinnedFrame;
+    r.everyLight = state.inspector.everyLight;
+    r.accumulate = state.accumulate;
+    r.abDivider = state.ab.divider;
+    r.abDiffMode = state.ab.diffMode;
+    r.abThreshold = state.ab.threshold;
+    r.abHeatToThreshold = state.ab.heatToThreshold;
+    r.abMetric = state.ab.metric;
+    r.abAngleThreshold = state.ab.angleThreshold;
+    r.stopAfter = state.frame.stopAfter;
+    return r;
+}
+
+void applyLessonReturn(LessonReturn const& r, EditorState& state, glm::ivec2 frameSize) {
+    applyLessonSnapshot(r.snapshot, state, frameSize);
+    state.viewportTools.open = r.toolsOpen;
+    // The image size and last fit are run-time facts of the viewer; its settings come back.
+    ViewerState v = r.toolsViewer;
+    v.imageSize = state.viewportTools.viewer.imageSize;
+    state.viewportTools.viewer = v;
+    state.litPin.showDiff = r.litDiff;
+    state.litPin.pinned = r.litPinned;
+    state.litPin.pinnedFrame = r.litPinnedFrame;
+    state.litPin.pinRequested = false;
+    state.litPin.diffFor.reset();  // recomputed against the pin that came back
+    state.inspector.everyLight = r.everyLight;
+    glm::vec4 const slider = state.accumulate.sliderRect;
+    state.accumulate = r.accumulate;
+    state.accumulate.sliderRect = slider;
+    state.ab.divider = r.abDivider;
+    state.ab.diffMode = r.abDiffMode;
+    state.ab.threshold = r.abThreshold;
+    state.ab.heatToThreshold = r.abHeatToThreshold;
+    state.ab.metric = r.abMetric;
+    state.ab.angleThreshold = r.abAngleThreshold;
+    state.frame.stopAfter = r.stopAfter;
+}
+
 bool predictionRight(LessonPrediction const& p, int choice, float typed) {
     if (!p.choices.empty()) return choice >= 0 && choice == p.correct;
     return std::isfinite(typed) && std::abs(typed - p.number) <= p.tolerance;

@@ -48,6 +48,30 @@ struct LessonSnapshot {
     std::optional<glm::ivec2> inspectorPixel;
 };
 
+// What leaving a lesson puts back: the snapshot, and the tools a student may have used during the
+// lesson, which its steps never set (so they would otherwise follow the student out of it): the
+// viewport's Tools and its viewer, the lit pin and its diff, the inspector's "every light", the
+// scrubber, A/B's diff settings and the Frame window's stop.
+struct LessonReturn {
+    LessonSnapshot snapshot;
+    bool toolsOpen = true;
+    ViewerState toolsViewer;
+    bool litDiff = false;
+    std::optional<FloatImage> litPinned;
+    long litPinnedFrame = -1;
+    bool everyLight = false;
+    AccumulateState accumulate;
+    float abDivider = 0.5f;
+    DiffMode abDiffMode = DiffMode::Absolute;
+    float abThreshold = 0.0f;
+    bool abHeatToThreshold = false;
+    AbMetric abMetric = AbMetric::Lit;
+    float abAngleThreshold = 1.0f;
+    std::optional<PassId> stopAfter;
+};
+LessonReturn captureLessonReturn(EditorState const& state);
+void applyLessonReturn(LessonReturn const& r, EditorState& state, glm::ivec2 frameSize);
+
 // The snapshot of the editor now (pixel left empty: the inspector's pixel is kept as is).
 LessonSnapshot captureLessonSnapshot(EditorState const& state);
 // Applies every field; `frameSize` turns the step's pixel into an inspector pixel.
@@ -119,7 +143,7 @@ bool predictionRight(LessonPrediction const& p, int choice, float typed);
 struct LessonState {
     int lesson = -1;  // index into the editor's lesson list; -1 = no lesson running
     int step = 0;
-    std::optional<LessonSnapshot> before;  // the editor before the lesson started
+    std::optional<LessonReturn> before;  // the editor before the lesson started
 
     // Requests from the window, carried out by the editor loop (it knows the frame size and undo).
     int startRequest = -1;  // a lesson was picked
