@@ -182,3 +182,30 @@ TEST(Glossary, TheShippedGlossaryCoversTheLessonsTerms) {
 }
 
 }  // namespace
+
+TEST(LessonReturn, LeavingPutsBackTheToolsUsedDuringTheLesson) {
+    gbl::ui::EditorState state;
+    state.lights.resize(3);
+    state.viewportTools.open = true;
+    gbl::ui::LessonReturn const r = gbl::ui::captureLessonReturn(state);
+    // What a student does during a lesson: tools closed, lit frame pinned and diffed, every light
+    // listed, the scrubber on, A/B's threshold moved, the frame stopped after a pass.
+    state.viewportTools.open = false;
+    state.litPin.pinned = gbl::FloatImage{};
+    state.litPin.showDiff = true;
+    state.inspector.everyLight = true;
+    state.accumulate.enabled = true;
+    state.accumulate.count = 2;
+    state.ab.threshold = 0.5f;
+    state.frame.stopAfter = gbl::PassId::Geometry;
+    state.lights.resize(1);
+    gbl::ui::applyLessonReturn(r, state, {64, 64});
+    EXPECT_TRUE(state.viewportTools.open);
+    EXPECT_FALSE(state.litPin.pinned);
+    EXPECT_FALSE(state.litPin.showDiff);
+    EXPECT_FALSE(state.inspector.everyLight);
+    EXPECT_FALSE(state.accumulate.enabled);
+    EXPECT_EQ(state.ab.threshold, r.abThreshold);
+    EXPECT_FALSE(state.frame.stopAfter);
+    EXPECT_EQ(state.lights.size(), 3u);
+}

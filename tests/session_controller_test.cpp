@@ -232,3 +232,34 @@ TEST(SessionController, KnowsWhenEditsAreUnsaved) {
     EXPECT_FALSE(c.hasUnsavedEdits(f.state)) << "opened: what is shown is what the file holds";
     EXPECT_EQ(f.state.pipeline.exposure, 1.0f);
 }
+
+TEST(SessionController, ALessonsStepsAreNotEditsButEditsBeforeAndDuringOneAre) {
+    Fixture f("controller_lesson");
+    SessionController c(f.clock(), std::nullopt, 5007);
+    c.start(f.state, 32);
+    EditorState const before = f.state;
+    // A lesson opens: its step changes the lights and the pipeline, and that is not an edit.
+    c.lessonStarting(f.state);
+    f.state.lights.resize(1);
+    f.state.pipeline.mode = LightingMode::Volumes;
+    c.lessonStepShown(f.state);
+    EXPECT_FALSE(c.hasUnsavedEdits(f.state)) << "only a lesson step is shown";
+    // Auto-fit refitting a viewer's range is not an edit either.
+    f.state.gbuffer.viewers[0].autoFit = true;
+    c.lessonStepShown(f.state);
+    f.state.gbuffer.viewers[0].rangeMax = 7.0f;
+    EXPECT_FALSE(c.hasUnsavedEdits(f.state)) << "an auto-fitted range";
+    // The student's own change during the step is.
+    f.state.lights[0].intensity = 4.0f;
+    EXPECT_TRUE(c.hasUnsavedEdits(f.state));
+    // Leaving restores the editor: nothing unsaved again.
+    f.state = before;
+    c.lessonLeft();
+    EXPECT_FALSE(c.hasUnsavedEdits(f.state));
+    // Edits made before a lesson stay unsaved while it runs (they wait in its return state).
+    f.state.lights[1].intensity = 4.0f;
+    c.lessonStarting(f.state);
+    f.state.lights.resize(1);
+    c.lessonStepShown(f.state);
+    EXPECT_TRUE(c.hasUnsavedEdits(f.state));
+}
