@@ -27,9 +27,11 @@ void writeExr(std::string const& path, int channels, std::vector<float> const& v
     out->close();
 }
 
-// A plane z = 0 facing +z seen from (0, 0, 5); the top 4 rows are cleared background.
+// A surface in front of the camera at (0, 0, 5), facing it; the top 4 rows are cleared background.
 // `normalScale` plants the not-unit bug when it is not 1.
-std::string writeGBuffer(std::string const& name, float normalScale = 1.0f) {
+enum class Bug { None, FacingAway, NoBackground, AlbedoOver1, DepthFlipped };
+
+std::string writeGBuffer(std::string const& name, float normalScale = 1.0f, Bug bug = Bug::None) {
     std::string const dir = test::freshTempDir(name);
     char const* camera =
         R"({"position": [0, 0, 5], "target": [0, 0, 0], "fov_y_degrees": 60, "near": 0.1, "far": 100})";
@@ -46,19 +48,23 @@ std::string writeGBuffer(std::string const& name, float normalScale = 1.0f) {
     CameraMatrices const c = cameraForSize(*cam.manifest->camera, kW, kH);
     glm::mat4 const iv = glm::inverse(c.view), ip = glm::inverse(c.projection);
     std::vector<float> pos, nrm, alb, dep;
-    float const n = 0.1f, f = 100.0f, z = 5.0f;
+    float const n = 0.1f, f = 100.0f;
     for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x) {
-            bool const bg = y < 4;
+            bool const bg = y < 4 && bug != Bug::NoBackground;
+            float const z = 4.0f + 0.1f * float(y);  // a surface whose distance changes down the frame
             glm::vec3 const p = worldFromDistance(c, iv, ip, kW, kH, float(x), float(y), z);
             pos.insert(pos.end(), {bg ? 0 : p.x, bg ? 0 : p.y, bg ? 0 : p.z, bg ? 0.0f : 1.0f});
-            nrm.insert(nrm.end(), {0, 0, bg ? 0 : normalScale});
-            alb.insert(alb.end(), {0.3f, 0.2f, 0.1f});
+            nrm.insert(nrm.end(), {0, 0, bg ? 0 : normalScale * (bug == Bug::FacingAway ? -1.0f : 1.0f)});
+            alb.insert(alb.end(), {bug == Bug::AlbedoOver1 ? 1.5f : 0.3f, 0.2f, 0.1f});
             dep.push_back(bg ? 1.0f : (f - n * f / z) / (f - n));
         }
     writeExr(dir + "/position.exr", 4, pos);
     writeExr(dir + "/normal.exr", 3, nrm);
     writeExr(dir + "/albedo.exr", 3, alb);
+    if (bug == Bug::DepthFlipped)  // the depth rows bottom-up, the other attachments top-down
+        for (int y = 0; y < kH / 2; ++y)
+            std::swap_ranges(dep.begin() + y * kW, dep.begin() + (y + 1) * kW, dep.begin() + (kH - 1 - y) * kW);
     writeExr(dir + "/depth.exr", 1, dep);
     return dir;
 }
@@ -128,4 +134,29 @@ TEST(GBufferImport, PresetsParse) {
     EXPECT_EQ(lo.manifest->normal.image.path, "/x/gNormal.exr");
     EXPECT_EQ(lo.manifest->specular->channels, std::vector<int>{3});
     EXPECT_EQ(lo.manifest->shininess, 16.0f);
+}
+
+// Each planted bug gives its own finding and only it (the flipped depth also moves the background).
+TEST(GBufferImport, EachPlantedBugIsFound) {
+    struct Case {
+        Bug bug;
+        char const* check;
+        char const* causeWord;
+    };
+    for (Case const& c :
+         {Case{Bug::FacingAway, "normal_facing_away", "normal matrix"},
+          Case{Bug::NoBackground, "no_background", "clear"}, Case{Bug::AlbedoOver1, "albedo_range", "reflectance"},
+          Case{Bug::DepthFlipped, "position_depth_mismatch", "upside down"}}) {
+        GBufferCheckReport const r = check(writeGBuffer(std::string("gbi_") + c.check, 1.0f, c.bug));
+        bool found = false;
+        for (auto const& f : r.findings)
+            if (f.check == c.check) {
+                found = true;
+                EXPECT_GT(f.pixels, 0u) << c.check;
+                EXPECT_NE(f.cause.find(c.causeWord), std::string::npos) << f.cause;
+            } else if (c.bug != Bug::DepthFlipped) {
+                ADD_FAILURE() << c.check << " also gave " << f.check << ": " << f.cause;
+            }
+        EXPECT_TRUE(found) << c.check;
+    }
 }

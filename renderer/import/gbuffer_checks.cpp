@@ -201,9 +201,8 @@ GBufferCheckReport checkGBuffer(ImportedGBuffer const& g) {
                 int x, y;
                 at(p, x, y);
                 std::size_t const q = std::size_t(h - 1 - y) * std::size_t(g.width) + std::size_t(x);
-                return near(
-                    worldFromDistance(cam, invView, invProj, g.width, h, float(x), float(h - 1 - y), g.viewDistance[q]),
-                    g.position[p], g.viewDistance[q]);
+                return near(worldFromDistance(cam, invView, invProj, g.width, h, float(x), float(y), g.viewDistance[q]),
+                            g.position[p], g.viewDistance[q]);
             });
             double const otherSpace = matchShare(bad, [&](std::size_t p) {
                 int x, y;
