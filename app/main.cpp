@@ -1,6 +1,7 @@
 // gbuffer-lab entry point: the editor by default, `render` and `bench` as sub-commands.
 #include "bench_command.h"
 #include "bench_layouts.h"
+#include "check_command.h"
 #include "cli_options.h"
 #include "cli_values.h"
 #include "compare_command.h"
@@ -58,6 +59,9 @@ int main(int argc, char** argv) {
     gbl::CompareOptions compareOptions;
     CLI::App* compare = app.add_subcommand("compare", "Render two session files and diff their lit frames");
     gbl::addCompareOptions(*compare, compareOptions);
+    gbl::CheckOptions checkOptions;
+    CLI::App* check = app.add_subcommand("check", "Open another program's G-buffer and list what looks wrong in it");
+    gbl::addCheckOptions(*check, checkOptions);
 
     try {
         app.parse(argc, argv);
@@ -70,6 +74,7 @@ int main(int argc, char** argv) {
     if (render->parsed()) return gbl::runRender(renderOptions);
     if (lessons->parsed()) return gbl::runLessons(lessonsOptions);
     if (compare->parsed()) return gbl::runCompare(compareOptions);
+    if (check->parsed()) return gbl::runCheck(checkOptions);
     if (bench->parsed()) {
         benchOptions.lightsGiven = bench->count(gbl::cli::kLights.name) > 0;
         return gbl::runBenchLayouts(benchOptions);

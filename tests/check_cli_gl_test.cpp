@@ -1,0 +1,27 @@
+// `gbuffer-lab check` end to end: our own `render --out` folder opens as a G-buffer with no
+// findings, and bad input is refused with exit code 2 and the field named.
+#include "run_command.h"
+#include "test_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+using gbl::test::runGbufferLab;
+
+TEST(CheckCommand, OwnRenderFolderHasNoFindings) {
+    std::string const out = gbl::test::freshTempDir("check_render");
+    auto const r = runGbufferLab({"render", "--out", out, "--size", "160x90", "--lights", "8"});
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto const c = runGbufferLab({"check", out, "--json"});
+    EXPECT_EQ(c.exitCode, 0) << c.output;
+    EXPECT_NE(c.output.find("\"findings\": []"), std::string::npos) << c.output;
+}
+
+TEST(CheckCommand, BadManifestIsRefusedNamingTheField) {
+    std::string const dir = gbl::test::freshTempDir("check_bad");
+    std::ofstream(dir + "/manifest.json")
+        << R"({"format": "gbuffer-lab-gbuffer", "version": 1, "preset": "learnopengl", "normal": {"encoding": "polar"}})";
+    gbl::test::expectRefused({"check", dir + "/manifest.json"}, "normal.encoding must be one of");
+    gbl::test::expectRefused({"check", dir + "/none.json"}, "cannot read the manifest");
+}
