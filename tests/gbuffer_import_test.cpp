@@ -160,3 +160,38 @@ TEST(GBufferImport, EachPlantedBugIsFound) {
         EXPECT_TRUE(found) << c.check;
     }
 }
+
+// As session files (session_test's EveryTruncationAndByteFlipFailsCleanly): whatever is cut off or
+// overwritten, reading ends with a manifest or one message, never a crash (the sanitizer build
+// runs this too).
+TEST(GBufferImport, EveryTruncationAndByteFlipFailsCleanly) {
+    std::string const text = R"({"format": "gbuffer-lab-gbuffer", "version": 1, "flip_y": true,
+      "position": {"file": "p.exr", "channels": "rgb", "space": "world", "coverage": "a"},
+      "normal": {"file": "n.png", "channels": "rgb", "encoding": "biased", "space": "view"},
+      "albedo": {"file": "a.png", "encoding": "srgb"}, "specular": {"file": "a.png", "channel": "a"},
+      "depth": {"file": "d.exr", "convention": "window", "near": 0.1, "far": 100},
+      "camera": {"position": [0, 1, 5], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y_degrees": 60,
+                 "near": 0.1, "far": 100},
+      "lights": {"positions": [[0, 1, 2], [3, 1, 0]], "colors": [[1, 1, 1], [1, 0.5, 0]],
+                 "linear": 0.7, "quadratic": [1.8, 0.44]}})";
+    ManifestLoad const whole = parseManifest(text, "m.json", "/x");
+    ASSERT_TRUE(whole.manifest) << whole.error;
+    for (std::size_t n = 0; n + 1 < text.size(); n += 5) {
+        ManifestLoad const r = parseManifest(std::string_view(text).substr(0, n), "m.json", "/x");
+        EXPECT_FALSE(r.manifest) << n;
+        EXPECT_FALSE(r.error.empty()) << n;
+    }
+    int accepted = 0, refused = 0;
+    for (std::size_t i = 0; i < text.size(); i += 3)
+        for (char c : {'\0', '-', '9', '"', '}', 'e', 'x'}) {
+            std::string t = text;
+            t[i] = c;
+            ManifestLoad const r = parseManifest(t, "m.json", "/x");
+            EXPECT_NE(bool(r.manifest), !r.error.empty()) << i << " " << int(c);
+            accepted += bool(r.manifest);
+            refused += !r.manifest;
+        }
+    // Some flips stay valid (a digit for a digit); most must not.
+    EXPECT_GT(accepted, 0);
+    EXPECT_GT(refused, accepted);
+}

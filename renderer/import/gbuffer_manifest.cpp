@@ -2,6 +2,7 @@
 // with a message naming it (the same phrasing as session files, docs/sessions.md).
 #include "import/gbuffer_manifest.h"
 
+#include "core/json_fields.h"
 #include "core/light_math.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -22,111 +23,7 @@ using nlohmann::json;
 
 namespace {
 
-// Thrown inside the parser only; parseManifest turns it into the returned message.
-struct FieldError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-[[noreturn]] void fail(std::string const& field, std::string const& what) {
-    throw FieldError(field + " " + what);
-}
-
-std::string typeName(json const& j) {
-    if (j.is_number()) return "a number";
-    if (j.is_boolean()) return "true/false";
-    if (j.is_null()) return "null";
-    if (j.is_object()) return "an object";
-    if (j.is_array()) return "an array";
-    return "a string";
-}
-
-template <std::size_t N>
-std::string joinNames(std::array<std::string_view, N> const& names) {
-    std::string s;
-    for (std::size_t i = 0; i < N; ++i) {
-        if (i) s += i + 1 == N ? " or " : ", ";
-        s += names[i];
-    }
-    return s;
-}
-
-// One JSON object being read; a field outside `known` is reported as the unknown field it is.
-class Object {
-public:
-    Object(json const& j, std::string path, std::vector<std::string_view> const& known)
-        : j_(j), path_(std::move(path)) {
-        if (!j_.is_object()) fail(path_, "must be an object (got " + typeName(j_) + ")");
-        for (auto it = j_.begin(); it != j_.end(); ++it)
-            if (std::find(known.begin(), known.end(), std::string_view(it.key())) == known.end())
-                fail(field(it.key()), "is not a known field");
-    }
-    std::string field(std::string_view key) const {
-        return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
-    }
-    json const& required(std::string_view key) const {
-        auto it = j_.find(key);
-        if (it == j_.end()) fail(field(key), "is missing");
-        return *it;
-    }
-    json const* optional(std::string_view key) const {
-        auto it = j_.find(key);
-        return it == j_.end() ? nullptr : &*it;
-    }
-
-private:
-    json const& j_;
-    std::string path_;
-};
-
-enum class Bound { Any, NonNegative, Positive };
-
-float number(json const& j, std::string const& field, Bound bound = Bound::Any) {
-    char const* const want = bound == Bound::NonNegative ? "must be a finite number >= 0"
-                             : bound == Bound::Positive  ? "must be a finite number > 0"
-                                                         : "must be a finite number";
-    if (!j.is_number()) fail(field, std::string(want) + " (got " + typeName(j) + ")");
-    double const d = j.get<double>();
-    if (!std::isfinite(d) || std::abs(d) > double(std::numeric_limits<float>::max()) ||
-        (bound == Bound::NonNegative && d < 0.0) || (bound == Bound::Positive && float(d) <= 0.0f))
-        fail(field, std::string(want) + " (got " + j.dump() + ")");
-    return float(d);
-}
-
-int integer(json const& j, std::string const& field, int lo, int hi) {
-    std::string const want = "must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi);
-    if (!j.is_number_integer()) fail(field, want + " (got " + (j.is_number() ? j.dump() : typeName(j)) + ")");
-    auto const v = j.get<long long>();
-    if (v < lo || v > hi) fail(field, want + " (got " + j.dump() + ")");
-    return int(v);
-}
-
-bool boolean(json const& j, std::string const& field) {
-    if (!j.is_boolean()) fail(field, "must be true or false (got " + typeName(j) + ")");
-    return j.get<bool>();
-}
-
-std::string string(json const& j, std::string const& field) {
-    if (!j.is_string()) fail(field, "must be a string (got " + typeName(j) + ")");
-    return j.get<std::string>();
-}
-
-template <class Enum, std::size_t N>
-Enum enumeration(json const& j, std::string const& field, std::array<std::string_view, N> const& names) {
-    std::string const want = "must be one of " + joinNames(names);
-    if (!j.is_string()) fail(field, want + " (got " + typeName(j) + ")");
-    auto const it = std::find(names.begin(), names.end(), j.get<std::string>());
-    if (it == names.end()) fail(field, want + " (got " + j.dump() + ")");
-    return static_cast<Enum>(it - names.begin());
-}
-
-template <int N>
-glm::vec<N, float> vector(json const& j, std::string const& field, Bound bound = Bound::Any) {
-    if (!j.is_array() || j.size() != std::size_t(N))
-        fail(field, "must be an array of " + std::to_string(N) + " numbers");
-    glm::vec<N, float> v;
-    for (int i = 0; i < N; ++i) v[i] = number(j[std::size_t(i)], field + "[" + std::to_string(i) + "]", bound);
-    return v;
-}
+using namespace json_fields;  // the field readers and FieldError, shared with session files
 
 // "rgb", "a", "xy": channel letters, each naming an index of the file's channels.
 std::vector<int> channelList(json const& j, std::string const& field, std::size_t count) {
@@ -257,31 +154,6 @@ CameraMatrices readCamera(json const& j) {
     if (*c.farPlane <= *c.nearPlane) fail(o.field("far"), "must be greater than camera.near");
     c.view = glm::lookAt(c.position, target, up);
     return c;
-}
-
-// A light of a session file's light list (docs/sessions.md).
-PointLight readSessionLight(json const& j, std::string const& path) {
-    Object o(j, path,
-             {"name", "position", "color", "intensity", "kc", "kl", "kq", "threshold", "kind", "direction",
-              "inner_cone_deg", "outer_cone_deg"});
-    PointLight l;
-    if (json const* name = o.optional("name")) l.name = string(*name, o.field("name"));
-    l.position = vector<3>(o.required("position"), o.field("position"));
-    l.color = vector<3>(o.required("color"), o.field("color"), Bound::NonNegative);
-    l.intensity = number(o.required("intensity"), o.field("intensity"), Bound::NonNegative);
-    l.kc = number(o.required("kc"), o.field("kc"), Bound::NonNegative);
-    l.kl = number(o.required("kl"), o.field("kl"), Bound::NonNegative);
-    l.kq = number(o.required("kq"), o.field("kq"), Bound::NonNegative);
-    l.threshold = number(o.required("threshold"), o.field("threshold"), Bound::Positive);
-    if (json const* kind = o.optional("kind")) l.kind = enumeration<LightKind>(*kind, o.field("kind"), kLightKindNames);
-    if (json const* d = o.optional("direction")) {
-        l.direction = vector<3>(*d, o.field("direction"));
-        if (glm::dot(l.direction, l.direction) <= 0.0f) fail(o.field("direction"), "must not be the zero vector");
-    }
-    if (json const* a = o.optional("inner_cone_deg")) l.innerConeDeg = number(*a, o.field("inner_cone_deg"));
-    if (json const* a = o.optional("outer_cone_deg")) l.outerConeDeg = number(*a, o.field("outer_cone_deg"));
-    if (auto err = validateLight(l)) fail(path + ":", *err);
-    return l;
 }
 
 // The arrays a LearnOpenGL-style program uploads: lightPositions, lightColors and per light (or
@@ -468,7 +340,7 @@ GBufferManifest readManifest(json j, std::string const& dir) {
                 fail("lights",
                      "holds " + std::to_string(l->size()) + " lights; the limit is " + std::to_string(kMaxLights));
             for (std::size_t i = 0; i < l->size(); ++i)
-                m.lights.push_back(readSessionLight((*l)[i], "lights[" + std::to_string(i) + "]"));
+                m.lights.push_back(readLight((*l)[i], "lights[" + std::to_string(i) + "]"));
         } else {
             fail("lights", "must be a session light list (an array) or LearnOpenGL-style arrays (an object) (got " +
                                typeName(*l) + ")");

@@ -1,6 +1,7 @@
 // Session JSON: writing, and reading with a full validation that names the offending field.
 #include "session/session.h"
 
+#include "core/json_fields.h"
 #include "core/light_math.h"
 #include "core/pipeline_fields.h"
 #include "session/atomic_file.h"
@@ -21,6 +22,8 @@ using nlohmann::json;
 
 namespace {
 
+using namespace json_fields;  // the field readers, FieldError and joinNames
+
 constexpr std::array<std::string_view, 2> kNormalDisplayNames{"biased", "absolute"};
 // The overlay bits by name, in bit order (kOverlayNaN = 1 ... kOverlayClip = 8).
 constexpr std::array<std::string_view, 4> kOverlayNames{"nan", "inf", "negative", "clip"};
@@ -37,15 +40,6 @@ ojson vec(glm::vec3 v) {
 }
 ojson vec(glm::vec2 v) {
     return {v.x, v.y};
-}
-
-std::string joinNames(std::span<std::string_view const> names) {
-    std::string s;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-        if (i) s += i + 1 == names.size() ? " or " : ", ";
-        s += names[i];
-    }
-    return s;
 }
 
 ojson toolsJson(ViewerState const& v) {
@@ -129,120 +123,6 @@ ojson sessionJson(Session const& s) {
 
 // --- reading ------------------------------------------------------------------------------
 
-// Thrown inside the parser only; parseSession turns it into the returned message.
-struct FieldError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-[[noreturn]] void fail(std::string const& field, std::string const& what) {
-    throw FieldError(field + " " + what);
-}
-
-std::string typeName(json const& j) {
-    if (j.is_number()) return "a number";
-    if (j.is_boolean()) return "true/false";
-    if (j.is_null()) return "null";
-    if (j.is_object()) return "an object";
-    if (j.is_array()) return "an array";
-    return "a string";
-}
-
-// One JSON object being read. Every field must be one of `known`: a typo ("intesity") is
-// reported as the unknown field it is, before the "missing" message it would also cause.
-class Object {
-public:
-    Object(json const& j, std::string path, std::vector<std::string_view> const& known)
-        : j_(j), path_(std::move(path)) {
-        if (!j_.is_object()) fail(path_, "must be an object (got " + typeName(j_) + ")");
-        for (auto it = j_.begin(); it != j_.end(); ++it)
-            if (std::find(known.begin(), known.end(), std::string_view(it.key())) == known.end())
-                fail(field(it.key()), "is not a known field");
-    }
-    std::string field(std::string_view key) const {
-        return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
-    }
-    json const& required(std::string_view key) const {
-        auto it = j_.find(key);
-        if (it == j_.end()) fail(field(key), "is missing");
-        return *it;
-    }
-    json const* optional(std::string_view key) const {
-        auto it = j_.find(key);
-        return it == j_.end() ? nullptr : &*it;
-    }
-
-private:
-    json const& j_;
-    std::string path_;
-};
-
-enum class Bound { Any, NonNegative, Positive };
-
-float number(json const& j, std::string const& field, Bound bound = Bound::Any) {
-    char const* const want = bound == Bound::NonNegative ? "must be a finite number >= 0"
-                             : bound == Bound::Positive  ? "must be a finite number > 0"
-                                                         : "must be a finite number";
-    if (!j.is_number()) fail(field, std::string(want) + " (got " + typeName(j) + ")");
-    // The renderer works in float: 1e300 is a finite double but no finite float (and narrowing
-    // it would be undefined behaviour), so the range is checked in double first.
-    double const d = j.get<double>();
-    if (!std::isfinite(d) || std::abs(d) > double(std::numeric_limits<float>::max()) ||
-        (bound == Bound::NonNegative && d < 0.0) || (bound == Bound::Positive && float(d) <= 0.0f))
-        fail(field, std::string(want) + " (got " + j.dump() + ")");
-    return float(d);
-}
-
-float numberIn(json const& j, std::string const& field, float lo, float hi) {
-    float const v = number(j, field);
-    if (v < lo || v > hi) {
-        std::ostringstream s;
-        s << "must be between " << lo << " and " << hi << " (got " << j.dump() << ")";
-        fail(field, s.str());
-    }
-    return v;
-}
-
-int integer(json const& j, std::string const& field, int lo, int hi) {
-    std::string const want = "must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi);
-    if (!j.is_number_integer()) fail(field, want + " (got " + (j.is_number() ? j.dump() : typeName(j)) + ")");
-    auto const v = j.get<long long>();
-    if (v < lo || v > hi) fail(field, want + " (got " + j.dump() + ")");
-    return int(v);
-}
-
-bool boolean(json const& j, std::string const& field) {
-    if (!j.is_boolean()) fail(field, "must be true or false (got " + typeName(j) + ")");
-    return j.get<bool>();
-}
-
-std::string string(json const& j, std::string const& field) {
-    if (!j.is_string()) fail(field, "must be a string (got " + typeName(j) + ")");
-    return j.get<std::string>();
-}
-
-// The index of the name `j` holds among `names`.
-std::size_t choiceIndex(json const& j, std::string const& field, std::span<std::string_view const> names) {
-    std::string const want = "must be one of " + joinNames(names);
-    if (!j.is_string()) fail(field, want + " (got " + typeName(j) + ")");
-    auto const it = std::find(names.begin(), names.end(), j.get<std::string>());
-    if (it == names.end()) fail(field, want + " (got " + j.dump() + ")");
-    return std::size_t(it - names.begin());
-}
-
-template <class Enum, std::size_t N>
-Enum enumeration(json const& j, std::string const& field, std::array<std::string_view, N> const& names) {
-    return static_cast<Enum>(choiceIndex(j, field, names));
-}
-
-template <int N>
-glm::vec<N, float> vector(json const& j, std::string const& field, Bound bound = Bound::Any) {
-    if (!j.is_array() || j.size() != std::size_t(N))
-        fail(field, "must be an array of " + std::to_string(N) + " numbers");
-    glm::vec<N, float> v;
-    for (int i = 0; i < N; ++i) v[i] = number(j[std::size_t(i)], field + "[" + std::to_string(i) + "]", bound);
-    return v;
-}
-
 Camera readCamera(json const& j) {
     Object o(j, "camera", {"position", "yaw_degrees", "pitch_degrees", "fov_y_degrees", "near", "far"});
     Camera c;
@@ -255,35 +135,6 @@ Camera readCamera(json const& j) {
     c.farPlane = number(o.required("far"), o.field("far"), Bound::Positive);
     if (c.farPlane <= c.nearPlane) fail(o.field("far"), "must be greater than camera.near");
     return c;
-}
-
-PointLight readLight(json const& j, std::string const& path) {
-    Object o(j, path,
-             {"name", "position", "color", "intensity", "kc", "kl", "kq", "threshold", "kind", "direction",
-              "inner_cone_deg", "outer_cone_deg"});
-    PointLight l;
-    if (json const* name = o.optional("name")) l.name = string(*name, o.field("name"));
-    l.position = vector<3>(o.required("position"), o.field("position"));
-    l.color = vector<3>(o.required("color"), o.field("color"), Bound::NonNegative);
-    l.intensity = number(o.required("intensity"), o.field("intensity"), Bound::NonNegative);
-    l.kc = number(o.required("kc"), o.field("kc"), Bound::NonNegative);
-    l.kl = number(o.required("kl"), o.field("kl"), Bound::NonNegative);
-    l.kq = number(o.required("kq"), o.field("kq"), Bound::NonNegative);
-    l.threshold = number(o.required("threshold"), o.field("threshold"), Bound::Positive);
-    // Optional (sessions written before light kinds load as point lights with the defaults).
-    if (json const* kind = o.optional("kind")) l.kind = enumeration<LightKind>(*kind, o.field("kind"), kLightKindNames);
-    if (json const* d = o.optional("direction")) {
-        l.direction = vector<3>(*d, o.field("direction"));
-        if (glm::dot(l.direction, l.direction) <= 0.0f) fail(o.field("direction"), "must not be the zero vector");
-    }
-    if (json const* a = o.optional("inner_cone_deg"))
-        l.innerConeDeg = numberIn(*a, o.field("inner_cone_deg"), 0.0f, kMaxSpotConeDeg);
-    if (json const* a = o.optional("outer_cone_deg"))
-        l.outerConeDeg = numberIn(*a, o.field("outer_cone_deg"), 0.0f, kMaxSpotConeDeg);
-    // The rules that involve more than one field (Kc = Kl = Kq = 0) come from the one validator
-    // the editor and the renderer use too.
-    if (auto err = validateLight(l)) fail(path + ":", *err);
-    return l;
 }
 
 std::vector<PointLight> readLights(json const& j) {
