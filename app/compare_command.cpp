@@ -19,7 +19,7 @@
 namespace gbl {
 
 namespace fs = std::filesystem;
-using json = nlohmann::ordered_json;
+using ordered_json = nlohmann::ordered_json;
 
 namespace {
 
@@ -48,8 +48,8 @@ std::optional<std::string> loadSide(std::string const& path, bool allowOutsideUr
     return std::nullopt;
 }
 
-json passTimes(FrameStats const& stats) {
-    json j = json::object();
+ordered_json passTimes(FrameStats const& stats) {
+    ordered_json j = ordered_json::object();
     for (auto const& p : stats.passes) j[p.name] = p.gpuMs;
     j["total"] = stats.gpuFrameMs;
     return j;
@@ -126,7 +126,7 @@ int runCompare(CompareOptions const& o) {
     for (std::size_t i = 0; i < rgba.size(); ++i) heat.pixels[i] = float(rgba[i]) / 255.0f;
     if (auto e = writePng((out / "diff.png").string(), heat, 3)) return badArgument(*e);
 
-    json j;
+    ordered_json j;
     j["a"] = o.sessionA;
     j["b"] = o.sessionB;
     j["width"] = size->width;

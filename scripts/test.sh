@@ -6,6 +6,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/check-format.sh
+# Mesa's shader cache: a fresh one per run in the build folder, so that a run's time does not depend on
+# what earlier runs left in ~/.cache, while the test processes of this run share the programs they build.
+export MESA_SHADER_CACHE_DIR="$PWD/build/mesa-shader-cache"
+rm -rf "$MESA_SHADER_CACHE_DIR"
+unset MESA_SHADER_CACHE_DISABLE
 start=$SECONDS
 scripts/build.sh --debian-imgui -DGBL_WERROR=ON
 built=$SECONDS

@@ -2,6 +2,7 @@
 // stored, read from versioned JSON and validated with a message naming the first bad field.
 #pragma once
 
+#include "core/gbuffer_layout.h"  // NormalEncoding, the same three encodings the layouts store
 #include "core/point_light.h"
 
 #include <glm/glm.hpp>
@@ -19,7 +20,6 @@ inline constexpr std::string_view kManifestFormat = "gbuffer-lab-gbuffer";
 inline constexpr int kManifestVersion = 1;
 
 enum class Space { World, View };
-enum class NormalEncoding { Float, Biased, Octahedral };
 enum class ColorEncoding { Linear, Srgb };
 enum class DepthConvention { Window, Ndc, Linear };
 enum class RawType { Float, Half, Uint8 };

@@ -1,5 +1,6 @@
 // The lesson claim kinds, each checked once over read-back images (see lesson_claims.h).
 #include "model/lesson_claims.h"
+#include "model/lesson_text.h"
 
 #include "core/depth.h"
 #include "core/light_math.h"
@@ -13,14 +14,8 @@ namespace gbl::ui {
 
 namespace {
 
-std::string num(float v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", double(v));
-    return buf;
-}
-
 std::string vecText(glm::vec3 v) {
-    return "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")";
+    return "(" + lessonNumber(v.x) + ", " + lessonNumber(v.y) + ", " + lessonNumber(v.z) + ")";
 }
 
 glm::vec4 texel(FloatImage const& img, glm::ivec2 p) {
@@ -85,8 +80,8 @@ ClaimResult sameImage(LessonClaim const& c, ClaimImages const& im) {
                     where = {x, y};
                 }
             }
-    return {maxAbs <= c.bound, "largest difference " + num(maxAbs) + " at (" + std::to_string(where.x) + ", " +
-                                   std::to_string(where.y) + "), bound " + num(c.bound)};
+    return {maxAbs <= c.bound, "largest difference " + lessonNumber(maxAbs) + " at (" + std::to_string(where.x) + ", " +
+                                   std::to_string(where.y) + "), bound " + lessonNumber(c.bound)};
 }
 
 ClaimResult differsFrom(LessonClaim const& c, ClaimImages const& im) {
@@ -105,8 +100,8 @@ ClaimResult differsFrom(LessonClaim const& c, ClaimImages const& im) {
         }
     float const share = covered > 0 ? float(differing) / float(covered) : 0.0f;
     return {covered > 0 && share >= c.minFraction, std::to_string(differing) + " of " + std::to_string(covered) +
-                                                       " pixels differ by more than " + num(c.bound) + " (" +
-                                                       num(100.0f * share) + " %)"};
+                                                       " pixels differ by more than " + lessonNumber(c.bound) + " (" +
+                                                       lessonNumber(100.0f * share) + " %)"};
 }
 
 ClaimResult fewerLitPixels(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
@@ -118,7 +113,7 @@ ClaimResult fewerLitPixels(LessonClaim const& c, ClaimFrame const& f, ClaimImage
         litPixelCount(*im.referenceLighting, im, c.reference ? c.reference->ambient : f.pipeline.ambient, kEpsilon);
     float const lost = ref > 0 ? float(ref - step) / float(ref) : 0.0f;
     return {ref > 0 && lost >= c.minFraction, std::to_string(step) + " lit pixels against " + std::to_string(ref) +
-                                                  " in the reference: " + num(100.0f * lost) + " % lost"};
+                                                  " in the reference: " + lessonNumber(100.0f * lost) + " % lost"};
 }
 
 ClaimResult positionError(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
@@ -137,8 +132,8 @@ ClaimResult positionError(LessonClaim const& c, ClaimFrame const& f, ClaimImages
             glm::vec3 const stored = glm::vec3(texel(im.position, {x, y}));
             worst = std::max(worst, glm::length(glm::vec3(world) / world.w - stored));
         }
-    return {covered > 0 && worst < c.bound, "largest |stored - rebuilt| " + num(worst) + " over " +
-                                                std::to_string(covered) + " pixels, bound " + num(c.bound)};
+    return {covered > 0 && worst < c.bound, "largest |stored - rebuilt| " + lessonNumber(worst) + " over " +
+                                                std::to_string(covered) + " pixels, bound " + lessonNumber(c.bound)};
 }
 
 ClaimResult tileCount(ClaimFrame const& f, ClaimImages const& im) {
@@ -153,7 +148,7 @@ ClaimResult tileCount(ClaimFrame const& f, ClaimImages const& im) {
 ClaimResult executedExceedsLit(ClaimFrame const& f, ClaimImages const& im) {
     if (im.coverage.channels < 2 || !inside(im.coverage, f.pixel)) return {false, "no coverage image (show heatmap)"};
     float const executed = im.coverage.at(f.pixel.x, f.pixel.y, 0), lit = im.coverage.at(f.pixel.x, f.pixel.y, 1);
-    return {executed > lit, num(executed) + " lights evaluated, " + num(lit) + " lit the pixel"};
+    return {executed > lit, lessonNumber(executed) + " lights evaluated, " + lessonNumber(lit) + " lit the pixel"};
 }
 
 ClaimResult attachmentEquals(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
@@ -169,9 +164,10 @@ ClaimResult attachmentEquals(LessonClaim const& c, ClaimFrame const& f, ClaimIma
     for (int i = 0; i < 4; ++i) {
         if (!(c.compare & (1u << i))) continue;
         ok = ok && std::abs(v[i] - c.value[i]) <= c.tolerance;
-        got += std::string(got.empty() ? "" : ", ") + "xyzw"[i] + " " + num(v[i]) + " (want " + num(c.value[i]) + ")";
+        got += std::string(got.empty() ? "" : ", ") + "xyzw"[i] + " " + lessonNumber(v[i]) + " (want " +
+               lessonNumber(c.value[i]) + ")";
     }
-    return {ok, "stored (" + got + "), expected within " + num(c.tolerance)};
+    return {ok, "stored (" + got + "), expected within " + lessonNumber(c.tolerance)};
 }
 
 }  // namespace

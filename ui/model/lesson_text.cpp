@@ -12,14 +12,8 @@ namespace gbl::ui {
 
 namespace {
 
-std::string num(float v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", double(v));
-    return buf;
-}
-
 std::string vec3Text(glm::vec3 v) {
-    return "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")";
+    return "(" + lessonNumber(v.x) + ", " + lessonNumber(v.y) + ", " + lessonNumber(v.z) + ")";
 }
 
 bool known(std::string_view name) {
@@ -38,7 +32,7 @@ std::string value(std::string_view name, LessonValues const& v) {
         if (name == "frame.pixels") return std::to_string(pixels);
         if (name == "frame.evaluations") return std::to_string(pixels * v.lightCount);
         if (name == "frame.gbuffer_mb")
-            return num(float(layoutMegabytes(layoutDesc(v.pipeline.layout), v.frameSize.x, v.frameSize.y)));
+            return lessonNumber(float(layoutMegabytes(layoutDesc(v.pipeline.layout), v.frameSize.x, v.frameSize.y)));
     }
     if (name == "pipeline.cull") return std::string(enumName(kCullModeNames, v.pipeline.cull));
     if (name.starts_with("light.")) {
@@ -46,21 +40,21 @@ std::string value(std::string_view name, LessonValues const& v) {
         PointLight const& l = *v.light;
         if (name == "light.index") return std::to_string(v.lightIndex);
         if (name == "light.name") return l.name.empty() ? "light " + std::to_string(v.lightIndex) : l.name;
-        if (name == "light.kc") return num(l.kc);
-        if (name == "light.kl") return num(l.kl);
-        if (name == "light.kq") return num(l.kq);
-        if (name == "light.intensity") return num(l.intensity);
-        if (name == "light.threshold") return num(l.threshold);
-        if (name == "light.imax") return num(lightImax(l));
-        if (name == "light.imax_256_5") return num(lightImax(l) / l.threshold);
-        if (name == "light.radius") return num(lightRadius(l).radius);
+        if (name == "light.kc") return lessonNumber(l.kc);
+        if (name == "light.kl") return lessonNumber(l.kl);
+        if (name == "light.kq") return lessonNumber(l.kq);
+        if (name == "light.intensity") return lessonNumber(l.intensity);
+        if (name == "light.threshold") return lessonNumber(l.threshold);
+        if (name == "light.imax") return lessonNumber(lightImax(l));
+        if (name == "light.imax_256_5") return lessonNumber(lightImax(l) / l.threshold);
+        if (name == "light.radius") return lessonNumber(lightRadius(l).radius);
     }
     if (name == "pixel.x") return v.pixel ? std::to_string(v.pixel->x) : na;
     if (name == "pixel.y") return v.pixel ? std::to_string(v.pixel->y) : na;
     if (!v.sample) return na;
     PixelSample const& s = *v.sample;
     if (name == "pixel.lit") return vec3Text(glm::vec3(s.lighting));
-    if (name == "pixel.depth") return num(s.depth);
+    if (name == "pixel.depth") return lessonNumber(s.depth);
     // The heat map's or tile view's counts at the pixel: lights evaluated, lights that reached it.
     if (name == "pixel.evaluated" || name == "pixel.reached") {
         if (!s.coverageView) return na;
@@ -69,7 +63,7 @@ std::string value(std::string_view name, LessonValues const& v) {
     if (!s.covered) return "(no geometry)";
     if (name == "pixel.position") return vec3Text(glm::vec3(s.position));
     if (name == "pixel.normal") return vec3Text(glm::vec3(s.normal));
-    if (name == "pixel.error") return num(glm::length(glm::vec3(s.position) - s.reconstructedPosition));
+    if (name == "pixel.error") return lessonNumber(glm::length(glm::vec3(s.position) - s.reconstructedPosition));
     return na;
 }
 

@@ -9,11 +9,19 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <string_view>
 
 namespace gbl::ui {
+
+// v with four significant digits, as lesson text and the claims' details print numbers.
+inline std::string lessonNumber(float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", double(v));
+    return buf;
+}
 
 // Every placeholder a lesson may use, once: validation refuses others, substitution fills these.
 inline constexpr std::array<std::string_view, 27> kLessonPlaceholders{

@@ -171,7 +171,7 @@ std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointL
     float const aspect = float(in.frameSize.x) / float(in.frameSize.y);
     TileGrid const grid = tileGrid(in.frameSize.x, in.frameSize.y);
     int const glY = in.frameSize.y - 1 - in.pixel.y;
-    PixelRect const rect =
+    gbl::PixelRect const rect =
         tilePixelRect(grid, in.frameSize.x, in.frameSize.y, in.pixel.x / grid.tileSize, glY / grid.tileSize);
     TileFrustum const tile =
         tileFrustum(glm::inverse(in.camera.projection(aspect)), in.frameSize.x, in.frameSize.y, rect);
@@ -277,7 +277,8 @@ std::optional<TileDepthBounds> tileDepthBounds(FloatImage const& depth, glm::ive
     if (depth.width <= 0 || depth.height <= 0 || depth.channels < 1) return std::nullopt;
     TileGrid const grid = tileGrid(depth.width, depth.height);
     int const glY = depth.height - 1 - pixel.y;
-    PixelRect const r = tilePixelRect(grid, depth.width, depth.height, pixel.x / grid.tileSize, glY / grid.tileSize);
+    gbl::PixelRect const r =
+        tilePixelRect(grid, depth.width, depth.height, pixel.x / grid.tileSize, glY / grid.tileSize);
     std::optional<TileDepthBounds> b;
     for (int y = r.y0; y < r.y1; ++y) {
         int const row = depth.height - 1 - y;  // the image's rows run top to bottom

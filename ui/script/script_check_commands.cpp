@@ -135,7 +135,7 @@ void whySumsCommand(CommandCall const& c) {
     c.check(ok, detail);
 }
 
-constexpr ScriptCommandSpec kCommands[] = {
+constexpr ScriptCommandSpec kCheckCommands[] = {
     {"capture", "NAME", "keep the renderer's final image under NAME",
      [](CommandCall const& c) {
          FloatImage& image = c.run.captures[c.w[1]] = c.host.renderer.readAttachment(Attachment::Final);
@@ -251,7 +251,7 @@ constexpr ScriptCommandSpec kCommands[] = {
 }  // namespace
 
 std::span<ScriptCommandSpec const> checkCommands() {
-    return kCommands;
+    return kCheckCommands;
 }
 
 }  // namespace gbl::ui

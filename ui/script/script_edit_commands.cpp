@@ -122,7 +122,7 @@ void shaderFixCommand(CommandCall const& c) {
     c.run.brokenShaders.erase(it);
 }
 
-constexpr ScriptCommandSpec kCommands[] = {
+constexpr ScriptCommandSpec kEditCommands[] = {
     {"frames", "N", "run N frames before the next command",
      [](CommandCall const& c) { c.run.wait = std::max(std::atoi(c.w[1].c_str()), 1); }},
     {"set", "KEY VALUE",
@@ -200,7 +200,7 @@ constexpr ScriptCommandSpec kCommands[] = {
 }  // namespace
 
 std::span<ScriptCommandSpec const> editCommands() {
-    return kCommands;
+    return kEditCommands;
 }
 
 }  // namespace gbl::ui

@@ -22,7 +22,7 @@ void exportViewerCommand(CommandCall const& c) {
 
 constexpr auto kSession = CommandNeeds::Session;
 
-constexpr ScriptCommandSpec kCommands[] = {
+constexpr ScriptCommandSpec kSessionCommands[] = {
     {"save-session", "FILE", "File > Save as (the check fails when saving fails)",
      [](CommandCall const& c) { expectOk(c, c.host.saveSession(c.w[1])); }, kSession},
     {"open-session", "FILE", "File > Open; fails the check when the file is refused",
@@ -57,7 +57,7 @@ constexpr ScriptCommandSpec kCommands[] = {
 }  // namespace
 
 std::span<ScriptCommandSpec const> sessionCommands() {
-    return kCommands;
+    return kSessionCommands;
 }
 
 }  // namespace gbl::ui

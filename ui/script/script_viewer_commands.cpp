@@ -165,7 +165,7 @@ void litDiffModeCommand(CommandCall const& c) {
     c.host.state.litPin.diffMode = c.w[1] == "rel" ? DiffMode::Relative : DiffMode::Absolute;
 }
 
-constexpr ScriptCommandSpec kCommands[] = {
+constexpr ScriptCommandSpec kViewerCommands[] = {
     {"viewer-tool", "VIEWER TOOL on|off",
      "a viewer's tool (VIEWER: position normal albedo specular depth, or viewport for the\n"
      "viewport's tools): histogram nan inf negative clip stencil (depth) diff magnifier",
@@ -224,7 +224,7 @@ constexpr ScriptCommandSpec kCommands[] = {
 }  // namespace
 
 std::span<ScriptCommandSpec const> viewerCommands() {
-    return kCommands;
+    return kViewerCommands;
 }
 
 }  // namespace gbl::ui

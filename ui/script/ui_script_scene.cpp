@@ -92,7 +92,7 @@ SceneLoadingState& loading(CommandCall const& c) {
 
 constexpr auto kLoads = CommandNeeds::SceneLoading;
 
-constexpr ScriptCommandSpec kCommands[] = {
+constexpr ScriptCommandSpec kSceneCommands[] = {
     {"skip-unless-exists", "PATH...", "end the script as skipped (\"ui-test SKIP\") when PATH is absent",
      skipUnlessExistsCommand},
     {"open-scene", "PATH...", "File > Open scene: starts loading on the worker",
@@ -165,7 +165,7 @@ constexpr ScriptCommandSpec kCommands[] = {
 }  // namespace
 
 std::span<ScriptCommandSpec const> sceneCommands() {
-    return kCommands;
+    return kSceneCommands;
 }
 
 }  // namespace gbl::ui
