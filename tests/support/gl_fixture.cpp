@@ -22,6 +22,10 @@ void GlTest::SetUpTestSuite() {
     }
 }
 
+void GlTest::TearDownTestSuite() {
+    gContext.reset();
+}
+
 void GlTest::SetUp() {
     // A missing context is a failure, not a skip: every machine this runs on has EGL or a display.
     ASSERT_TRUE(gContext) << "no headless GL context: " << gError;
