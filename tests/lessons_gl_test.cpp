@@ -79,6 +79,24 @@ TEST_F(LessonsGlTest, EveryStepsClaimHoldsOnTheRealFrame) {
     EXPECT_GE(checked, 30);
 }
 
+// position_from_depth:2 asks the student to lock a pixel where the reconstruction error is largest:
+// the frame's largest error lies in the task's region, and the step's own pixel does not.
+TEST_F(LessonsGlTest, ThePixelTaskRegionHoldsTheLargestPositionError) {
+    ui::Lesson const& l = lesson("position_from_depth");
+    ui::LessonStep const& step = l.steps.at(1);
+    ASSERT_EQ(step.tasks.size(), 1u);
+    ASSERT_EQ(step.tasks[0].kind, ui::TaskKind::Pixel);
+    LessonStepFrame const f = render(l, step);
+    ASSERT_TRUE(f.claim && f.claim->worst) << (f.claim ? f.claim->detail : "no claim");
+    ui::TaskContext ctx;
+    ctx.pixelLocked = true;
+    ctx.frameSize = ctx.lessonSize = {l.width, l.height};
+    ctx.pixel = *f.claim->worst;
+    EXPECT_TRUE(ui::taskMet(step.tasks[0], ctx)) << f.claim->detail;
+    ctx.pixel = f.pixel;
+    EXPECT_FALSE(ui::taskMet(step.tasks[0], ctx));
+}
+
 // --- each claim kind fails when its statement is false ------------------------------------------
 
 ui::LessonStep withClaim(ui::LessonStep step, std::function<void(ui::LessonClaim&)> const& change) {
