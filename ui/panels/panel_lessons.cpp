@@ -129,9 +129,11 @@ void drawTasks(LessonState const& state, LessonStep const& step, LessonValues co
         }
         wrappedText("[ ] %s", goal.c_str());
         if (progress.hint) {
+            ImGui::Indent();
             ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-            wrappedText("    Hint: %s", substituteLessonText(step.tasks[i].hint, values).c_str());
+            wrappedText("Hint: %s", substituteLessonText(step.tasks[i].hint, values).c_str());
             ImGui::PopStyleColor();
+            ImGui::Unindent();
         }
     }
 }
@@ -202,6 +204,7 @@ void drawStep(LessonState& state, Lesson const& lesson, LessonValues const& valu
         ImGui::Spacing();
         ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.45f, 1.0f), "Question");
         wrappedText("%s", substituteLessonText(step.text.question, values).c_str());
+        drawTasks(state, step, values);  // what to do with the tools, before the answer is revealed
         if (ImGui::Button(state.answerShown ? "Hide answer" : "Show answer")) {
             state.answerShown = !state.answerShown;
             state.scrollToResult = state.answerShown;
@@ -212,7 +215,6 @@ void drawStep(LessonState& state, Lesson const& lesson, LessonValues const& valu
             ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "Answer");
             wrappedText("%s", substituteLessonText(step.text.answer, values).c_str());
         }
-        drawTasks(state, step, values);
     }
     drawTerms(state, step, glossary);
     if (step.claim)
