@@ -1,5 +1,6 @@
 // Every step of every shipped lesson rendered headlessly, its claim checked on real read-back
 // values; and each claim kind shown to fail when what it says is false.
+#include "core/pipeline_fields.h"
 #include "gl_fixture.h"
 #include "lesson_render.h"
 #include "scene/default_scene.h"
@@ -8,6 +9,7 @@
 
 #include <epoxy/gl.h>
 
+#include <functional>
 #include <map>
 
 using namespace gbl;
@@ -77,6 +79,75 @@ TEST_F(LessonsGlTest, EveryStepsClaimHoldsOnTheRealFrame) {
         }
     }
     EXPECT_GE(checked, 30);
+}
+
+// position_from_depth:2 asks the student to lock a pixel where the reconstruction error is largest:
+// the frame's largest error lies in the task's region, and the step's own pixel does not.
+TEST_F(LessonsGlTest, ThePixelTaskRegionHoldsTheLargestPositionError) {
+    ui::Lesson const& l = lesson("position_from_depth");
+    ui::LessonStep const& step = l.steps.at(1);
+    ASSERT_EQ(step.tasks.size(), 1u);
+    ASSERT_EQ(step.tasks[0].kind, ui::TaskKind::Pixel);
+    LessonStepFrame const f = render(l, step);
+    ASSERT_TRUE(f.claim && f.claim->worst) << (f.claim ? f.claim->detail : "no claim");
+    ui::TaskContext ctx;
+    ctx.pixelLocked = true;
+    ctx.frameSize = ctx.lessonSize = {l.width, l.height};
+    ctx.pixel = *f.claim->worst;
+    EXPECT_TRUE(ui::taskMet(step.tasks[0], ctx)) << f.claim->detail;
+    ctx.pixel = f.pixel;
+    EXPECT_FALSE(ui::taskMet(step.tasks[0], ctx));
+}
+
+// The shipped setting tasks, done on the real frame: the step's state with the task's value shows
+// what the task is about (a light lost, cubes through walls, no light cut off).
+TEST_F(LessonsGlTest, SettingTasksShowTheirPointOnTheRealFrame) {
+    // step, what the done task's frame must show against `reference` (the done state, changed)
+    struct Case {
+        std::string lesson;
+        int step;
+        std::function<void(ui::LessonClaim&, PipelineSettings&)> claim;
+    };
+    std::vector<Case> const cases{
+        {"camera_inside", 3,  // cull back loses light 0: the light is back with cull front
+         [](ui::LessonClaim& c, PipelineSettings& ref) {
+             c.kind = ui::ClaimKind::LosesLight;
+             c.light = 0;
+             c.tolerance = 0.03f;
+             ref.cull = CullMode::Front;
+         }},
+        {"depth_blit", 3,  // the copy off: cubes over walls the blit hides
+         [](ui::LessonClaim& c, PipelineSettings& ref) {
+             c.kind = ui::ClaimKind::DiffersFrom;
+             c.bound = 0.05f;
+             c.minFraction = 0.0001f;
+             ref.depthCopy = DepthCopy::Blit;
+         }},
+        {"light_volumes", 1,  // the enclosing scale loses nothing: the full-screen pass's image
+         [](ui::LessonClaim& c, PipelineSettings& ref) {
+             c.kind = ui::ClaimKind::SameImage;
+             c.bound = 0.01f;
+             ref.mode = LightingMode::Quad;
+         }},
+    };
+    for (Case const& k : cases) {
+        ui::Lesson const& l = lesson(k.lesson);
+        ui::LessonStep step = l.steps.at(std::size_t(k.step));
+        ASSERT_EQ(step.tasks.size(), 1u) << k.lesson;
+        ui::LessonTask const& t = step.tasks[0];
+        ASSERT_EQ(t.kind, ui::TaskKind::Setting) << k.lesson;
+        PipelineField const* field = findPipelineField(t.setting);
+        ASSERT_TRUE(field) << t.setting;
+        field->set(step.state.pipeline, t.value);  // the task done
+        PipelineSettings reference = step.state.pipeline;
+        step.claim = ui::LessonClaim{};
+        k.claim(*step.claim, reference);
+        step.claim->reference = reference;
+        LessonStepFrame const f = render(l, step);
+        ASSERT_TRUE(f.claim);
+        EXPECT_TRUE(f.claim->holds) << k.lesson << ":" << k.step + 1 << " with " << t.setting
+                                    << " done: " << f.claim->detail;
+    }
 }
 
 // --- each claim kind fails when its statement is false ------------------------------------------

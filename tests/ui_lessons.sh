@@ -2,7 +2,8 @@
 # The Lessons window driven by real X clicks (xdotool): Start opens the first lesson at step 1,
 # Next and Back step through it (each step sets its pipeline view and one undo entry), Leave
 # returns the editor to the camera and view it had before and drops the lit pin and diff made
-# during the lesson; Ctrl+Q in a lesson quits without an unsaved-edits question. Every check reads --log-frames; the
+# during the lesson; Ctrl+Q in a lesson quits without an unsaved-edits question; a pixel task ticks
+# when the inspector is locked (L) inside its region, not elsewhere. Every check reads --log-frames; the
 # screenshots at 1280x720 and 1600x900 with a lesson open are kept in WORK_DIR to look at.
 # usage: ui_lessons.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
 set -eu
@@ -148,6 +149,37 @@ done
 pid=""
 echo "Ctrl+Q in the lesson quit at once"
 # The editor was ended with changes: its autosave would offer recovery over the screenshots below.
+rm -f "$GBL_RECOVERY_DIR"/*
+
+# A task ticked by real input (issue 27): position_from_depth:2 asks to lock the inspector where the
+# reconstruction error is largest (the top fifth of the frame). The step starts locked on the near
+# floor: unlocked, hovered near the bottom and locked again with L, the task stays unticked; hovered
+# at the far galleries and locked, it ticks.
+log="$work/task.jsonl"
+"$bin" --size 1280x720 --no-vsync --lesson position_from_depth:2 --log-frames "$log" > "$work/task.log" 2>&1 &
+pid=$!
+wait_frames 4
+ui_window
+wait_frames 2
+[ "$(field lesson)" = '"position_from_depth:2"' ] || fail "--lesson position_from_depth:2 did not open that step"
+[ "$(field lessonTasks)" = '"0"' ] || fail "the pixel task is not shown unticked at the step's start: $(field lessonTasks)"
+# lock_at FX FY: unlock (L), hover that point of the viewport, lock (L).
+lock_at() {
+    set -- $(rect_point viewport "$1" "$2")
+    xdotool key --delay 30 l
+    wait_frames 2
+    xdotool mousemove --window "$wid" "$1" "$2"
+    wait_frames 4
+    xdotool key --delay 30 l
+    wait_frames 4
+}
+lock_at 0.5 0.85
+[ "$(field lessonTasks)" = '"0"' ] || fail "locking the near floor ticked the task: $(field lessonTasks)"
+lock_at 0.5 0.12
+[ "$(field lessonTasks)" = '"1"' ] || fail "locking a pixel of the far galleries did not tick the task: $(field lessonTasks)"
+echo "task: ticked after locking the far galleries, not the near floor"
+shot task-ticked
+ui_stop
 rm -f "$GBL_RECOVERY_DIR"/*
 
 # Screenshots with a lesson step open, for a person to look at (no clipped text).

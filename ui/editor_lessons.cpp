@@ -7,6 +7,7 @@
 #include "panels/panel_glossary.h"
 #include "panels/panel_lessons.h"
 
+#include <chrono>
 #include <filesystem>
 
 namespace gbl {
@@ -26,6 +27,31 @@ glm::ivec2 frameSize(Editor const& editor) {
     return {editor.renderer->width(), editor.renderer->height()};
 }
 
+// Seconds on the editor's clock, for the tasks' hint timing.
+double nowSeconds() {
+    return std::chrono::duration<double>(EditorClock::now().time_since_epoch()).count();
+}
+
+// The step's checklist against the editor now: ticks what is met, and shows the hint of a task
+// left unmet for kTaskHintSeconds. A step waiting for its prediction has not shown its change
+// yet, so its tasks wait too.
+void checkTasks(Editor& editor) {
+    LessonState& l = editor.lessons;
+    if (l.lesson < 0) return;
+    ui::Lesson const& lesson = editor.lessonLibrary.lessons[std::size_t(l.lesson)];
+    ui::LessonStep const& s = lesson.steps[std::size_t(l.step)];
+    if (s.tasks.empty() || (s.predict && !l.predicted)) return;
+    ui::TaskContext ctx;
+    ctx.lights = editor.state.lights;
+    ctx.stepLights = s.state.lights;
+    ctx.pipeline = &editor.state.pipeline;
+    ctx.pixelLocked = editor.state.inspector.locked;
+    ctx.pixel = editor.state.inspector.pixel;
+    ctx.frameSize = frameSize(editor);
+    ctx.lessonSize = {lesson.width, lesson.height};
+    ui::updateTasks(l.tasks, s.tasks, ctx, nowSeconds());
+}
+
 void showStep(Editor& editor, int step) {
     LessonState& l = editor.lessons;
     ui::Lesson const& lesson = editor.lessonLibrary.lessons[std::size_t(l.lesson)];
@@ -37,6 +63,7 @@ void showStep(Editor& editor, int step) {
     l.predictedRight = false;
     l.predictRequested = false;
     l.answerShown = false;
+    l.tasks = ui::startTasks(s.tasks.size(), nowSeconds());
     // A step that asks for a prediction first shows the state before its change.
     bool const before = s.predict && s.predict->before;
     ui::LessonSnapshot shown = before ? *s.predict->before : s.state;
@@ -87,6 +114,7 @@ void checkPrediction(Editor& editor) {
     if (!s.predict || l.predicted) return;
     l.predictedRight = ui::predictionRight(*s.predict, l.predictChoice, l.predictNumber);
     l.predicted = true;
+    l.tasks = ui::startTasks(s.tasks.size(), nowSeconds());  // the tasks start with the step's change
     if (s.predict->before) {
         ui::applyLessonSnapshot(s.state, editor.state, frameSize(editor));
         editor.sessions->commitLessonStep(editor.state);
@@ -105,6 +133,7 @@ void leave(Editor& editor) {
     l.before.reset();
     l.lesson = -1;
     l.step = 0;
+    l.tasks.clear();
     report(editor, "left the lesson; the editor is as it was before", false);
 }
 
@@ -165,6 +194,8 @@ void lessonLogFields(Editor const& editor, ui::FrameLogLine& line) {
     line.lessonButtons.assign(l.buttonCentres.begin(), l.buttonCentres.end());
     line.lessonPrediction = l.predicted ? (l.predictedRight ? "right" : "wrong") : "";
     line.lessonAnswer = l.answerShown;
+    line.lessonTasks.clear();
+    for (ui::TaskProgress const& t : l.tasks) line.lessonTasks += t.met ? '1' : '0';
     line.lessonGlossary = editor.glossaryWindow.open;
     line.lessonGlossaryTerm = editor.glossaryWindow.shownTerm;
     line.view = std::string(enumName(kDebugViewNames, editor.state.pipeline.view));
@@ -188,6 +219,7 @@ void drawLessons(Editor& editor) {
             }
         }
     }
+    checkTasks(editor);
     ui::EditorState const& state = editor.state;
     ui::LessonValues values;
     int const sel = state.lightsPanel.selected;

@@ -81,6 +81,7 @@ std::string frameLogJson(FrameLogLine const& l) {
         out += (i ? "," : "") + number(l.lessonButtons[i].x) + "," + number(l.lessonButtons[i].y);
     out += "],\"lessonPrediction\":" + quoted(l.lessonPrediction);
     out += std::string(",\"lessonAnswer\":") + (l.lessonAnswer ? "true" : "false");
+    out += ",\"lessonTasks\":" + quoted(l.lessonTasks);
     out += std::string(",\"lessonGlossary\":") + (l.lessonGlossary ? "true" : "false");
     out += ",\"lessonGlossaryTerm\":" + quoted(l.lessonGlossaryTerm);
     out += ",\"view\":" + quoted(l.view);

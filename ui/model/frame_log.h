@@ -49,6 +49,7 @@ struct FrameLogLine {
     std::string lesson;
     std::string lessonPrediction;
     bool lessonAnswer = false;
+    std::string lessonTasks;         // the step's checklist: one '1' (met) or '0' per task
     bool lessonGlossary = false;     // the Glossary window is open
     std::string lessonGlossaryTerm;  // the term it last opened at ("" = none)
     std::vector<glm::vec2> lessonButtons;

@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace gbl::ui {
 
@@ -120,6 +119,7 @@ ClaimResult positionError(LessonClaim const& c, ClaimFrame const& f, ClaimImages
     int const w = im.depth.width, h = im.depth.height;
     glm::mat4 const inv = glm::inverse(f.camera.projection(float(w) / float(h)) * f.camera.view());
     float worst = 0.0f;
+    glm::ivec2 at{0};
     int covered = 0;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
@@ -130,10 +130,17 @@ ClaimResult positionError(LessonClaim const& c, ClaimFrame const& f, ClaimImages
                                 2.0f * im.depth.at(x, y, 0) - 1.0f, 1.0f);
             glm::vec4 const world = inv * ndc;
             glm::vec3 const stored = glm::vec3(texel(im.position, {x, y}));
-            worst = std::max(worst, glm::length(glm::vec3(world) / world.w - stored));
+            float const error = glm::length(glm::vec3(world) / world.w - stored);
+            if (error > worst) {
+                worst = error;
+                at = {x, y};
+            }
         }
-    return {covered > 0 && worst < c.bound, "largest |stored - rebuilt| " + lessonNumber(worst) + " over " +
-                                                std::to_string(covered) + " pixels, bound " + lessonNumber(c.bound)};
+    ClaimResult out{covered > 0 && worst < c.bound, "largest |stored - rebuilt| " + lessonNumber(worst) + " at pixel (" +
+                                                        std::to_string(at.x) + ", " + std::to_string(at.y) + ") over " +
+                                                        std::to_string(covered) + " pixels, bound " + lessonNumber(c.bound)};
+    if (covered > 0) out.worst = at;
+    return out;
 }
 
 ClaimResult tileCount(ClaimFrame const& f, ClaimImages const& im) {

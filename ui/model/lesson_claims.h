@@ -14,6 +14,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 
 namespace gbl::ui {
 
@@ -37,8 +38,13 @@ struct ClaimFrame {
 };
 
 struct ClaimResult {
+    ClaimResult() = default;
+    ClaimResult(bool holds_, std::string detail_) : holds(holds_), detail(std::move(detail_)) {}
     bool holds = false;
     std::string detail;  // what was measured, in one sentence ("lit 0.0170 vs CPU 0.0532 ...")
+    // position_error_below: the pixel with the largest error (top-left origin), which a step's
+    // pixel task may ask the student to find.
+    std::optional<glm::ivec2> worst;
 };
 
 // Whether the frame's images need the coverage attachment (a heat-map or tile view) and a

@@ -9,6 +9,7 @@
 #include "core/pipeline_settings.h"
 #include "core/point_light.h"
 #include "model/editor_state.h"
+#include "model/lesson_tasks.h"
 #include "model/lights_state.h"
 #include "model/viewer_state.h"
 
@@ -162,10 +163,11 @@ struct LessonState {
     float predictNumber = 0.0f;  // the typed number
     bool predicted = false;      // the prediction was made; the step's state is shown
     bool predictedRight = false;
-    bool predictRequested = false;   // "Check my prediction" was pressed: the loop applies the step
-    bool answerShown = false;        // "Show answer" was pressed
-    bool scrollToResult = false;     // scroll the verdict or the answer into view once drawn
-    bool glossaryRequested = false;  // open the glossary (glossaryTerm: at that term, or "")
+    bool predictRequested = false;    // "Check my prediction" was pressed: the loop applies the step
+    bool answerShown = false;         // "Show answer" was pressed
+    std::vector<TaskProgress> tasks;  // the step's checklist: ticked live, hints after kTaskHintSeconds
+    bool scrollToResult = false;      // scroll the verdict or the answer into view once drawn
+    bool glossaryRequested = false;   // open the glossary (glossaryTerm: at that term, or "")
     std::string glossaryTerm;
     glm::ivec2 pixelFrameSize{0};  // the frame size the step's pixel was placed for; a resize re-places it
     // Window centres of the Start, Back, Next, Leave, Show answer, Check my prediction, first

@@ -110,6 +110,34 @@ void drawPrediction(LessonState& state, LessonPrediction const& p, LessonValues 
     wrappedText("%s", substituteLessonText(p.explain, values).c_str());
 }
 
+// The step's tasks as a checklist, ticked live by the editor loop (model/lesson_tasks.h); a task
+// left unmet for a while shows its hint, which names the tool to use.
+void drawTasks(LessonState const& state, LessonStep const& step, LessonValues const& values) {
+    if (step.tasks.empty()) return;
+    ImGui::Spacing();
+    std::size_t done = 0;
+    for (std::size_t i = 0; i < step.tasks.size(); ++i) done += i < state.tasks.size() && state.tasks[i].met;
+    ImGui::TextColored(ImVec4(0.55f, 0.9f, 0.8f, 1.0f), "Tasks (%zu of %zu done)", done, step.tasks.size());
+    for (std::size_t i = 0; i < step.tasks.size(); ++i) {
+        TaskProgress const progress = i < state.tasks.size() ? state.tasks[i] : TaskProgress{};
+        std::string const goal = substituteLessonText(step.tasks[i].goal, values);
+        if (progress.met) {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.5f, 0.9f, 0.5f, 1.0f));
+            wrappedText("[x] %s", goal.c_str());
+            ImGui::PopStyleColor();
+            continue;
+        }
+        wrappedText("[ ] %s", goal.c_str());
+        if (progress.hint) {
+            ImGui::Indent();
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+            wrappedText("Hint: %s", substituteLessonText(step.tasks[i].hint, values).c_str());
+            ImGui::PopStyleColor();
+            ImGui::Unindent();
+        }
+    }
+}
+
 // "Terms: NDC, window-space depth": the glossary's terms the step's text uses; hover for the
 // definition, click to open the glossary there.
 void drawTerms(LessonState& state, LessonStep const& step, Glossary const& glossary) {
@@ -176,6 +204,7 @@ void drawStep(LessonState& state, Lesson const& lesson, LessonValues const& valu
         ImGui::Spacing();
         ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.45f, 1.0f), "Question");
         wrappedText("%s", substituteLessonText(step.text.question, values).c_str());
+        drawTasks(state, step, values);  // what to do with the tools, before the answer is revealed
         if (ImGui::Button(state.answerShown ? "Hide answer" : "Show answer")) {
             state.answerShown = !state.answerShown;
             state.scrollToResult = state.answerShown;

@@ -2,7 +2,9 @@
 // folder. Every message names the file and the field. Writing: lesson_file_write.cpp.
 #include "session/lesson_file.h"
 
+#include "core/pipeline_fields.h"
 #include "model/lesson_claims.h"
+#include "model/lesson_tasks.h"
 #include "model/lesson_text.h"
 #include "scene/default_scene.h"
 #include "session/atomic_file.h"
@@ -306,10 +308,117 @@ LessonPrediction readPrediction(json const& j, std::string const& path, json con
     return p;
 }
 
-LessonStep readStep(json const& j, std::string const& path, json const& setup, std::string const& lessonId) {
+// "tasks": [{"kind", "goal", "hint", ...the kind's fields (taskKinds())}]: goals the editor
+// checks live. A task already met in the step's own state asks for nothing and is refused.
+std::vector<LessonTask> readTasks(json const& j, std::string const& path, LessonStep const& step,
+                                  glm::ivec2 lessonSize) {
+    if (!j.is_array() || j.empty()) fail(path, "must be an array of at least one task");
+    std::vector<LessonTask> tasks;
+    for (std::size_t i = 0; i < j.size(); ++i) {
+        std::string const at = path + "[" + std::to_string(i) + "]";
+        json const& t = j[i];
+        if (!t.is_object()) fail(at, "must be an object");
+        std::string kinds;
+        for (TaskKindInfo const& k : taskKinds()) kinds += (kinds.empty() ? "" : ", ") + std::string(k.name);
+        auto kindIt = t.find("kind");
+        if (kindIt == t.end()) fail(at + ".kind", "is missing (one of " + kinds + ")");
+        TaskKindInfo const* info = kindIt->is_string() ? findTaskKind(kindIt->get<std::string>()) : nullptr;
+        if (!info) fail(at + ".kind", "must be one of " + kinds + " (got " + kindIt->dump() + ")");
+        for (auto it = t.begin(); it != t.end(); ++it) {
+            std::string_view const key = it.key();
+            bool const known =
+                key == "kind" || key == "goal" || key == "hint" ||
+                std::find(info->fields.begin(), info->fields.end(), key) != info->fields.end() ||
+                std::find(info->optionalFields.begin(), info->optionalFields.end(), key) != info->optionalFields.end();
+            if (!known) fail(at + "." + it.key(), "is not a field of a " + std::string(info->name) + " task");
+        }
+        for (std::string_view key : info->fields)
+            if (!t.contains(key))
+                fail(at + "." + std::string(key), "is missing (a " + std::string(info->name) + " task needs it)");
+        LessonTask task;
+        task.kind = info->kind;
+        task.goal = text(t, "goal", at);
+        task.hint = text(t, "hint", at);
+        switch (info->kind) {
+            case TaskKind::LightField: {
+                task.light = integer(t["light"], at + ".light", 0, int(step.state.lights.size()) - 1);
+                std::string names;
+                for (LightField const& f : kLightFields) names += std::string(f.name) + ", ";
+                names += "radius";
+                json const& field = t["field"];
+                if (!field.is_string() || !isTaskLightField(field.get<std::string>()))
+                    fail(at + ".field", "must be one of " + names + " (got " + field.dump() + ")");
+                task.field = field.get<std::string>();
+                task.value = number(t["value"], at + ".value", -1e6f, 1e6f);
+                task.tolerance = number(t["tolerance"], at + ".tolerance", 0.0f, 1e6f);
+                if (auto only = t.find("only_changed"); only != t.end()) {
+                    if (!only->is_array() || only->empty())
+                        fail(at + ".only_changed", "must be an array of at least one light field name");
+                    for (std::size_t k = 0; k < only->size(); ++k) {
+                        json const& n = (*only)[k];
+                        if (!n.is_string() || !findLightField(n.get<std::string>()))
+                            fail(at + ".only_changed[" + std::to_string(k) + "]",
+                                 "must be a field of kLightFields (got " + n.dump() + ")");
+                        task.onlyChanged.push_back(n.get<std::string>());
+                    }
+                }
+                break;
+            }
+            case TaskKind::Setting: {
+                json const& name = t["setting"];
+                PipelineField const* f = name.is_string() ? findPipelineField(name.get<std::string>()) : nullptr;
+                if (!f) {
+                    std::string names;
+                    for (PipelineField const& p : pipelineFields())
+                        names += (names.empty() ? "" : ", ") + std::string(p.name);
+                    fail(at + ".setting", "must be a pipeline setting: one of " + names + " (got " + name.dump() + ")");
+                }
+                task.setting = name.get<std::string>();
+                json const& v = t["value"];
+                std::string const value = v.is_string()    ? v.get<std::string>()
+                                          : v.is_boolean() ? (v.get<bool>() ? "1" : "0")
+                                                           : v.dump();
+                auto const parsed = parseFieldValue(*f, value);
+                if (!parsed) fail(at + ".value", v.dump() + " is not a value of " + task.setting);
+                task.value = *parsed;
+                if (auto tol = t.find("tolerance"); tol != t.end()) {
+                    if (f->kind != SettingKind::Number) fail(at + ".tolerance", "is only for a number setting");
+                    task.tolerance = number(*tol, at + ".tolerance", 0.0f, 1e6f);
+                }
+                break;
+            }
+            case TaskKind::Pixel: {
+                json const& r = t["region"];
+                if (!r.is_array() || r.size() != 4) fail(at + ".region", "must be [x0, y0, x1, y1] in frame pixels");
+                glm::vec2 const hi = glm::vec2(lessonSize) - 1.0f;
+                for (int c = 0; c < 4; ++c)
+                    task.region[c] = float(integer(r[std::size_t(c)], at + ".region[" + std::to_string(c) + "]", 0,
+                                                   int(c % 2 == 0 ? hi.x : hi.y)));
+                if (task.region.x > task.region.z || task.region.y > task.region.w)
+                    fail(at + ".region", "must have x0 <= x1 and y0 <= y1 (got " + r.dump() + ")");
+                break;
+            }
+        }
+        // The step as it is shown, at the lesson's own size: the goal must still be ahead.
+        TaskContext ctx;
+        ctx.lights = step.state.lights;
+        ctx.stepLights = step.state.lights;
+        ctx.pipeline = &step.state.pipeline;
+        ctx.pixelLocked = step.state.pixel.has_value();
+        if (step.state.pixel) ctx.pixel = lessonPixel(*step.state.pixel, lessonSize);
+        ctx.frameSize = lessonSize;
+        ctx.lessonSize = lessonSize;
+        if (taskMet(task, ctx)) fail(at, "is already met in the step's own state: a task must ask for a change");
+        tasks.push_back(std::move(task));
+    }
+    return tasks;
+}
+
+LessonStep readStep(json const& j, std::string const& path, json const& setup, std::string const& lessonId,
+                    glm::ivec2 lessonSize) {
     knownFields(j, path,
-                {"title", "look", "equation", "question", "answer", "predict", "scene", "lights", "camera", "pipeline",
-                 "viewers", "selected_light", "viewer", "pixel", "claim", "ab"});
+                {"title", "look", "equation", "question", "answer", "predict", "tasks", "scene", "lights", "camera",
+                 "pipeline", "viewers", "selected_light", "viewer", "pixel", "claim", "ab"});
     LessonStep step;
     step.text.title = text(j, "title", path);
     step.text.look = text(j, "look", path);
@@ -324,6 +433,10 @@ LessonStep readStep(json const& j, std::string const& path, json const& setup, s
     if (auto it = j.find("ab"); it != j.end()) step.state.ab = readAb(*it, path + ".ab", step.state.pipeline);
     if (auto it = j.find("claim"); it != j.end()) step.claim = readClaim(*it, path + ".claim", state, step);
     if (auto it = j.find("predict"); it != j.end()) step.predict = readPrediction(*it, path + ".predict", state);
+    if (auto it = j.find("tasks"); it != j.end()) {
+        step.tasks = readTasks(*it, path + ".tasks", step, lessonSize);
+        step.tasksJson = it->dump();
+    }
     return step;
 }
 
@@ -408,7 +521,8 @@ Lesson readLesson(json const& j) {
     if (steps == j.end()) fail("steps", "is missing");
     if (!steps->is_array() || steps->empty()) fail("steps", "must be an array of at least one step");
     for (std::size_t i = 0; i < steps->size(); ++i)
-        lesson.steps.push_back(readStep((*steps)[i], "steps[" + std::to_string(i) + "]", setup, lesson.id));
+        lesson.steps.push_back(
+            readStep((*steps)[i], "steps[" + std::to_string(i) + "]", setup, lesson.id, {lesson.width, lesson.height}));
     return lesson;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "model/lesson_state.h"
+#include "model/lesson_tasks.h"
 #include "session/session.h"
 
 #include <optional>
@@ -24,6 +25,8 @@ struct LessonStep {
     int defaultSceneLights = 32;
     std::optional<LessonClaim> claim;
     std::optional<LessonPrediction> predict;
+    std::vector<LessonTask> tasks;  // the checklist the editor ticks live
+    std::string tasksJson;          // `tasks` as written in the file, for writing it back
 };
 
 struct Lesson {

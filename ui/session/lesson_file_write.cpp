@@ -69,6 +69,7 @@ nlohmann::ordered_json stepJson(LessonStep const& step) {
         if (!p.beforeJson.empty()) pj["before"] = nlohmann::ordered_json::parse(p.beforeJson);
         j["predict"] = pj;
     }
+    if (!step.tasksJson.empty()) j["tasks"] = nlohmann::ordered_json::parse(step.tasksJson);
     return j;
 }
 
