@@ -136,9 +136,10 @@ ClaimResult positionError(LessonClaim const& c, ClaimFrame const& f, ClaimImages
                 at = {x, y};
             }
         }
-    ClaimResult out{covered > 0 && worst < c.bound, "largest |stored - rebuilt| " + lessonNumber(worst) + " at pixel (" +
-                                                        std::to_string(at.x) + ", " + std::to_string(at.y) + ") over " +
-                                                        std::to_string(covered) + " pixels, bound " + lessonNumber(c.bound)};
+    ClaimResult out{covered > 0 && worst < c.bound, "largest |stored - rebuilt| " + lessonNumber(worst) +
+                                                        " at pixel (" + std::to_string(at.x) + ", " +
+                                                        std::to_string(at.y) + ") over " + std::to_string(covered) +
+                                                        " pixels, bound " + lessonNumber(c.bound)};
     if (covered > 0) out.worst = at;
     return out;
 }
