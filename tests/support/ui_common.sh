@@ -31,7 +31,19 @@ fail() {
 
 # --- reading the frame log --------------------------------------------------------------------
 lines() { [ -f "$log" ] && wc -l < "$log" || echo 0; }
-last() { tail -n 1 "$log"; }
+# last: the newest complete line. The editor may be writing a line while it is read, so a last
+# line without its newline is left for the next read.
+nl='
+'
+last() {
+    t=$(tail -n 2 "$log"; printf x)
+    t=${t%x}
+    case "$t" in
+        *"$nl") t=${t%"$nl"} ;;
+        *) t=${t%"$nl"*} ;;
+    esac
+    printf '%s\n' "${t##*"$nl"}"
+}
 # field NAME [LINE]: the raw value of a number, boolean, "string" or [..] array field.
 field() {
     line="${2:-$(last)}"

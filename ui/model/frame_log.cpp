@@ -108,6 +108,10 @@ std::string frameLogJson(FrameLogLine const& l) {
 std::optional<std::string> FrameLog::open(std::string const& path) {
     file_.reset(std::fopen(path.c_str(), "w"));
     if (!file_) return "Cannot write the frame log " + path + ": " + std::strerror(errno) + ".";
+    // One line, one write(): a buffer larger than any line, flushed after each, so a test reading
+    // the log while the editor runs seldom sees half a line (tests/support/ui_common.sh's `last`
+    // skips one all the same).
+    std::setvbuf(file_.get(), nullptr, _IOFBF, std::size_t{1} << 16);
     return std::nullopt;
 }
 
