@@ -3,6 +3,7 @@
 
 #include "core/depth.h"
 #include "core/gbuffer_layout.h"
+#include "core/json_fields.h"
 #include "core/light_math.h"
 #include "image_io.h"
 
@@ -110,20 +111,11 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
     json lightsJson = json::array();
     for (auto const& l : frame.lights) {
         LightRadius const r = lightRadius(l);
-        lightsJson.push_back({{"name", l.name},
-                              {"kind", lightKindName(l.kind)},
-                              {"position", toJson(l.position)},
-                              {"direction", toJson(l.direction)},
-                              {"inner_cone_deg", l.innerConeDeg},
-                              {"outer_cone_deg", l.outerConeDeg},
-                              {"color", toJson(l.color)},
-                              {"intensity", l.intensity},
-                              {"kc", l.kc},
-                              {"kl", l.kl},
-                              {"kq", l.kq},
-                              {"threshold", l.threshold},
-                              {"radius", r.radius},
-                              {"radius_kind", radiusKindName(r.kind)}});
+        // The light as session files write it (core/json_fields.h), and what the renderer made of it.
+        json entry = json_fields::lightJson<json>(l);
+        entry["radius"] = r.radius;
+        entry["radius_kind"] = radiusKindName(r.kind);
+        lightsJson.push_back(std::move(entry));
     }
     int const width = renderer.width(), height = renderer.height();
     Camera const& cam = frame.camera;

@@ -1,5 +1,6 @@
 // Session files: exact round trips, one clear message per kind of bad field, atomic writes.
 #include "session/session.h"
+#include "core/json_fields.h"
 #include "run_command.h"
 #include "session/atomic_file.h"
 
@@ -277,6 +278,37 @@ TEST(Session, LightKindsAreSavedAndOldFilesLoadAsPoints) {
         EXPECT_EQ(l.kind, LightKind::Point);
         EXPECT_EQ(l.direction, PointLight{}.direction);
         EXPECT_EQ(l.outerConeDeg, PointLight{}.outerConeDeg);
+    }
+}
+
+TEST(Session, EveryLightFieldOfTheTableIsWrittenAndReadUnderItsKey) {
+    // The light's keys in the file are exactly the table's (core/json_fields.h lightFileKeys), in
+    // its order; each entry edited alone survives the round trip under its own key.
+    auto const j = nlohmann::ordered_json::parse(sessionToJson(richSession()));
+    std::vector<std::string> keys;
+    for (auto const& [key, value] : j["lights"][1].items()) keys.push_back(key);
+    std::vector<std::string> expected;
+    for (std::string_view k : json_fields::lightFileKeys()) expected.emplace_back(k);
+    EXPECT_EQ(keys, expected);
+    for (LightField const& f : kLightFields) {
+        Session s = richSession();
+        f.of(s.lights[1]) += f.range == LightFieldRange::ConeAngle ? -1.0f : 0.25f;
+        json const written = json::parse(sessionToJson(s));
+        json const& v = written["lights"][1][std::string(f.fileKey)];
+        EXPECT_EQ(f.vector ? v[std::size_t(f.component)].get<float>() : v.get<float>(), f.of(s.lights[1])) << f.name;
+        SessionLoad const back = parseSession(written.dump(), "s.json");
+        ASSERT_TRUE(back.session) << f.name << ": " << back.error;
+        EXPECT_EQ(f.of(back.session->lights[1]), f.of(s.lights[1])) << f.name;
+        // A required key missing is named; an optional one leaves the default.
+        json without = written;
+        without["lights"][1].erase(std::string(f.fileKey));
+        SessionLoad const older = parseSession(without.dump(), "s.json");
+        if (f.optionalInFiles) {
+            ASSERT_TRUE(older.session) << f.name << ": " << older.error;
+            EXPECT_EQ(f.of(older.session->lights[1]), f.of(PointLight{})) << f.name;
+        } else {
+            EXPECT_EQ(older.error, "s.json: lights[1]." + std::string(f.fileKey) + " is missing") << f.name;
+        }
     }
 }
 

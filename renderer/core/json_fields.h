@@ -1,7 +1,8 @@
 // Reading a parsed JSON document field by field, each error naming the field it is about
 // ("lights[2].kq must be a finite number >= 0 (got -1)"): the phrasing session files
-// (docs/sessions.md) and G-buffer manifests (docs/import.md) share. Header-only and included by
-// the readers alone, which link nlohmann-json themselves; gbl_core itself reads no JSON.
+// (docs/sessions.md) and G-buffer manifests (docs/import.md) share, and the one writer of a light
+// (lightJson). Header-only and included by the readers and writers alone, which link nlohmann-json
+// themselves; gbl_core itself reads no JSON.
 #pragma once
 
 #include "core/light_math.h"
@@ -151,34 +152,61 @@ glm::vec<N, float> vector(json const& j, std::string const& field, Bound bound =
     return v;
 }
 
-// One light as session files write it (docs/sessions.md), at `path` ("lights[3]").
+// The keys of a light in session files, in the order they are written: its name, its kind, then
+// kLightFields' file keys (a vector's three components share one key).
+inline std::vector<std::string_view> lightFileKeys() {
+    std::vector<std::string_view> keys{"name", "kind"};
+    for (LightField const& f : kLightFields)
+        if (keys.back() != f.fileKey) keys.push_back(f.fileKey);
+    return keys;
+}
+
+// One light as session files write it (docs/sessions.md), at `path` ("lights[3]"). The numbers
+// come from kLightFields: its file key, its range, whether older files may leave it out.
 inline PointLight readLight(json const& j, std::string const& path) {
-    Object o(j, path,
-             {"name", "position", "color", "intensity", "kc", "kl", "kq", "threshold", "kind", "direction",
-              "inner_cone_deg", "outer_cone_deg"});
+    Object o(j, path, lightFileKeys());
     PointLight l;
     if (json const* name = o.optional("name")) l.name = string(*name, o.field("name"));
-    l.position = vector<3>(o.required("position"), o.field("position"));
-    l.color = vector<3>(o.required("color"), o.field("color"), Bound::NonNegative);
-    l.intensity = number(o.required("intensity"), o.field("intensity"), Bound::NonNegative);
-    l.kc = number(o.required("kc"), o.field("kc"), Bound::NonNegative);
-    l.kl = number(o.required("kl"), o.field("kl"), Bound::NonNegative);
-    l.kq = number(o.required("kq"), o.field("kq"), Bound::NonNegative);
-    l.threshold = number(o.required("threshold"), o.field("threshold"), Bound::Positive);
     // Optional (sessions written before light kinds load as point lights with the defaults).
     if (json const* kind = o.optional("kind")) l.kind = enumeration<LightKind>(*kind, o.field("kind"), kLightKindNames);
-    if (json const* d = o.optional("direction")) {
-        l.direction = vector<3>(*d, o.field("direction"));
-        if (glm::dot(l.direction, l.direction) <= 0.0f) fail(o.field("direction"), "must not be the zero vector");
+    for (std::size_t i = 0; i < kLightFields.size(); i += kLightFields[i].vector ? 3 : 1) {
+        LightField const& f = kLightFields[i];
+        json const* v = f.optionalInFiles ? o.optional(f.fileKey) : &o.required(f.fileKey);
+        if (!v) continue;
+        std::string const at = o.field(f.fileKey);
+        Bound const bound = f.positive                                ? Bound::Positive
+                            : f.range == LightFieldRange::NonNegative ? Bound::NonNegative
+                                                                      : Bound::Any;
+        if (f.vector) {
+            l.*f.vector = vector<3>(*v, at, bound);
+            if (f.range == LightFieldRange::Direction && glm::dot(l.*f.vector, l.*f.vector) <= 0.0f)
+                fail(at, "must not be the zero vector");
+        } else if (f.range == LightFieldRange::ConeAngle) {
+            l.*f.scalar = numberIn(*v, at, 0.0f, kMaxSpotConeDeg);
+        } else {
+            l.*f.scalar = number(*v, at, bound);
+        }
     }
-    if (json const* a = o.optional("inner_cone_deg"))
-        l.innerConeDeg = numberIn(*a, o.field("inner_cone_deg"), 0.0f, kMaxSpotConeDeg);
-    if (json const* a = o.optional("outer_cone_deg"))
-        l.outerConeDeg = numberIn(*a, o.field("outer_cone_deg"), 0.0f, kMaxSpotConeDeg);
     // The rules that involve more than one field (Kc = Kl = Kq = 0) come from the one validator
     // the editor and the renderer use too.
     if (auto err = validateLight(l)) fail(path + ":", *err);
     return l;
+}
+
+// One light as session files write it: readLight's keys in lightFileKeys' order.
+template <class Json>
+Json lightJson(PointLight const& l) {
+    Json out = Json::object();
+    out["name"] = l.name;
+    out["kind"] = lightKindName(l.kind);
+    for (LightField const& f : kLightFields) {
+        std::string const key(f.fileKey);
+        if (f.vector)
+            out[key][std::size_t(f.component)] = f.of(l);
+        else
+            out[key] = f.of(l);
+    }
+    return out;
 }
 
 }  // namespace gbl::json_fields

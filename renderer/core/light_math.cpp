@@ -35,7 +35,8 @@ std::optional<std::string> validateLight(PointLight const& light) {
         return "light parameter inner_cone_deg must not exceed outer_cone_deg (" + std::to_string(light.innerConeDeg) +
                " > " + std::to_string(light.outerConeDeg) + ")";
     if (light.outerConeDeg <= 0.0f) return "light parameter outer_cone_deg must be greater than 0";
-    if (light.threshold <= 0.0f) return "light threshold must be greater than 0";
+    for (LightField const& f : kLightFields)
+        if (f.positive && f.of(light) <= 0.0f) return "light " + std::string(f.label) + " must be greater than 0";
     if (light.kc <= 0.0f && light.kl <= 0.0f && light.kq <= 0.0f)
         return "light attenuation Kc, Kl and Kq cannot all be 0 (infinite brightness at the light)";
     return std::nullopt;

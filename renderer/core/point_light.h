@@ -78,33 +78,43 @@ struct LightField {
     float PointLight::*scalar = nullptr;
     glm::vec3 PointLight::*vector = nullptr;
     int component = 0;
+    // Session files and G-buffer manifests (docs/sessions.md): the key, shared by a vector's three
+    // components ("position": [x, y, z]), and whether files written before the field existed may
+    // leave it out (then the light keeps its default).
+    std::string_view fileKey;
+    bool optionalInFiles = false;
+    bool positive = false;  // zero is refused too (the threshold: Imax / 0 has no radius)
 
     float& of(PointLight& l) const { return scalar ? l.*scalar : (l.*vector)[component]; }
     float of(PointLight const& l) const { return scalar ? l.*scalar : (l.*vector)[component]; }
 };
 
-// Every number of PointLight, once: validateLight() checks these and the UI script's `light` and
+// Every number of PointLight, once: validateLight() checks these, session files and G-buffer
+// manifests read and write them (core/json_fields.h), and the UI script's `light` and
 // `expect-light` commands read and write them. tests/light_math_test.cpp fails to compile when
 // PointLight gains a member (a structured binding of all members) and fails when an entry does
 // not change the light it edits. `kind` is not a number: the script's `light N kind NAME` and the
 // panel's combo set it.
 inline constexpr std::array<LightField, 16> kLightFields{{
-    {"x", "position.x", LightFieldRange::Finite, nullptr, &PointLight::position, 0},
-    {"y", "position.y", LightFieldRange::Finite, nullptr, &PointLight::position, 1},
-    {"z", "position.z", LightFieldRange::Finite, nullptr, &PointLight::position, 2},
-    {"r", "color.r", LightFieldRange::NonNegative, nullptr, &PointLight::color, 0},
-    {"g", "color.g", LightFieldRange::NonNegative, nullptr, &PointLight::color, 1},
-    {"b", "color.b", LightFieldRange::NonNegative, nullptr, &PointLight::color, 2},
-    {"intensity", "intensity", LightFieldRange::NonNegative, &PointLight::intensity},
-    {"kc", "Kc", LightFieldRange::NonNegative, &PointLight::kc},
-    {"kl", "Kl", LightFieldRange::NonNegative, &PointLight::kl},
-    {"kq", "Kq", LightFieldRange::NonNegative, &PointLight::kq},
-    {"threshold", "threshold", LightFieldRange::NonNegative, &PointLight::threshold},
-    {"dx", "direction.x", LightFieldRange::Direction, nullptr, &PointLight::direction, 0},
-    {"dy", "direction.y", LightFieldRange::Direction, nullptr, &PointLight::direction, 1},
-    {"dz", "direction.z", LightFieldRange::Direction, nullptr, &PointLight::direction, 2},
-    {"inner", "inner_cone_deg", LightFieldRange::ConeAngle, &PointLight::innerConeDeg},
-    {"outer", "outer_cone_deg", LightFieldRange::ConeAngle, &PointLight::outerConeDeg},
+    {"x", "position.x", LightFieldRange::Finite, nullptr, &PointLight::position, 0, "position"},
+    {"y", "position.y", LightFieldRange::Finite, nullptr, &PointLight::position, 1, "position"},
+    {"z", "position.z", LightFieldRange::Finite, nullptr, &PointLight::position, 2, "position"},
+    {"r", "color.r", LightFieldRange::NonNegative, nullptr, &PointLight::color, 0, "color"},
+    {"g", "color.g", LightFieldRange::NonNegative, nullptr, &PointLight::color, 1, "color"},
+    {"b", "color.b", LightFieldRange::NonNegative, nullptr, &PointLight::color, 2, "color"},
+    {"intensity", "intensity", LightFieldRange::NonNegative, &PointLight::intensity, nullptr, 0, "intensity"},
+    {"kc", "Kc", LightFieldRange::NonNegative, &PointLight::kc, nullptr, 0, "kc"},
+    {"kl", "Kl", LightFieldRange::NonNegative, &PointLight::kl, nullptr, 0, "kl"},
+    {"kq", "Kq", LightFieldRange::NonNegative, &PointLight::kq, nullptr, 0, "kq"},
+    {"threshold", "threshold", LightFieldRange::NonNegative, &PointLight::threshold, nullptr, 0, "threshold", false,
+     true},
+    {"dx", "direction.x", LightFieldRange::Direction, nullptr, &PointLight::direction, 0, "direction", true},
+    {"dy", "direction.y", LightFieldRange::Direction, nullptr, &PointLight::direction, 1, "direction", true},
+    {"dz", "direction.z", LightFieldRange::Direction, nullptr, &PointLight::direction, 2, "direction", true},
+    {"inner", "inner_cone_deg", LightFieldRange::ConeAngle, &PointLight::innerConeDeg, nullptr, 0, "inner_cone_deg",
+     true},
+    {"outer", "outer_cone_deg", LightFieldRange::ConeAngle, &PointLight::outerConeDeg, nullptr, 0, "outer_cone_deg",
+     true},
 }};
 
 // The entry of kLightFields called `name`, or nullptr.

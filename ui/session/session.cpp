@@ -85,19 +85,7 @@ ojson pipelineJson(PipelineSettings const& p) {
 
 ojson sessionJson(Session const& s) {
     ojson lights = ojson::array();
-    for (auto const& l : s.lights)
-        lights.push_back({{"name", l.name},
-                          {"position", vec(l.position)},
-                          {"color", vec(l.color)},
-                          {"intensity", l.intensity},
-                          {"kc", l.kc},
-                          {"kl", l.kl},
-                          {"kq", l.kq},
-                          {"threshold", l.threshold},
-                          {"kind", lightKindName(l.kind)},
-                          {"direction", vec(l.direction)},
-                          {"inner_cone_deg", l.innerConeDeg},
-                          {"outer_cone_deg", l.outerConeDeg}});
+    for (auto const& l : s.lights) lights.push_back(lightJson<ojson>(l));
     ojson viewers = ojson::object();
     for (std::size_t i = 0; i < s.viewers.size(); ++i) viewers[std::string(kViewerNames[i])] = viewerJson(s.viewers[i]);
     return {
