@@ -274,25 +274,6 @@ FrameStats RendererImpl::render(FrameInput const& input) {
         forwardPass({scene, lights, shaders.get(ProgramId::Forward), litTarget()},
                     {MaterialFilter::Blended, f.viewProj, shading, s.normalMaps});
     }
-    if (runs() && s.lightCubes) {
-        PassScope const pass = timed(PassId::LightCubes);
-        lightCubesPass({lights, shaders.get(ProgramId::LightCube), cubeVao, litTarget()},
-                       {f.viewProj, lightCubeHalfSize()});
-    }
-    if (runs() && wireframes) {
-        PassScope const pass = timed(PassId::Wireframes);
-        // Forward mode leaves the G-buffer empty, so its own depth (in litFbo) is the scene's.
-        LitTarget const target =
-            s.mode == LightingMode::Forward ? litTarget() : LitTarget{targets.wireframeFbo, targets.lighting};
-        WireframesConfig wire{f.viewProj};
-        if (outline >= 0) {
-            auto const slot = volumeInstanceSlot(f.lights, outline, f.camera, f.aspect, volumes.enclosingScale,
-                                                 volumes.coneRadialScale, volumes.volumeScale);
-            wire.firstInstance = slot.value_or(0);
-            wire.count = slot ? 1 : 0;
-        }
-        wireframesPass({lights, volumes, shaders.get(ProgramId::LightVolumeWire), target}, wire);
-    }
     // Debug counts for the heat map and tile views, only when one of them is shown.
     if (runs() && viewNeedsCoverage(s.view)) {
         PassScope const pass = timed(PassId::Coverage);
@@ -306,6 +287,35 @@ FrameStats RendererImpl::render(FrameInput const& input) {
                   shaders.get(ProgramId::View), triangle, targets.displayFbo},
                  {display, s.tonemap, s.exposure, f.camera.nearPlane, f.camera.farPlane, targets.width, targets.height,
                   shading.inverseViewProj});
+    }
+    // The overlays, drawn onto the display image so the lit image stays the light sum (what
+    // lighting.exr exports and light-by-light accumulation adds up). Only on the views of the lit
+    // image (viewShowsOverlays); the tonemap is the display pass's, so they look as they did when
+    // they were drawn into the lit image.
+    bool const overlays = viewShowsOverlays(s.view);
+    DisplayTonemap const tonemap{s.tonemap, s.exposure};
+    if (runs() && overlays && s.lightCubes) {
+        PassScope const pass = timed(PassId::LightCubes);
+        // Against the lit target's depth: the scene's only when the depth-copy step filled it (the
+        // depth_blit lesson: without it, the cubes show through walls).
+        lightCubesPass({lights, shaders.get(ProgramId::LightCube), cubeVao, targets.overlayFbo},
+                       {f.viewProj, lightCubeHalfSize(), tonemap});
+    }
+    if (runs() && overlays && wireframes) {
+        PassScope const pass = timed(PassId::Wireframes);
+        // The G-buffer's depth is the scene's with or without the copy step; forward mode leaves the
+        // G-buffer empty, so its own depth (litDepth) is the scene's there.
+        gl::Framebuffer const& target =
+            s.mode == LightingMode::Forward ? targets.overlayFbo : targets.overlayGBufferDepthFbo;
+        WireframesConfig wire{f.viewProj};
+        wire.tonemap = tonemap;
+        if (outline >= 0) {
+            auto const slot = volumeInstanceSlot(f.lights, outline, f.camera, f.aspect, volumes.enclosingScale,
+                                                 volumes.coneRadialScale, volumes.volumeScale);
+            wire.firstInstance = slot.value_or(0);
+            wire.count = slot ? 1 : 0;
+        }
+        wireframesPass({lights, volumes, shaders.get(ProgramId::LightVolumeWire), target}, wire);
     }
 #ifndef NDEBUG
     checkFrameRan(declared, passesRun);
