@@ -369,14 +369,30 @@ void RendererImpl::clearForStop() {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-// A view of the frame `frame` describes (the last one rendered): coverage views recount from
-// it, so nothing here depends on what the last render() happened to compute.
-void RendererImpl::drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target) {
-    if (targets.empty()) return;
+// Allocates `target` at the frame size when it is not already.
+void RendererImpl::sizeViewTarget(ViewTarget& target) const {
     if (!target.texture || target.texture.width() != targets.width || target.texture.height() != targets.height) {
         target.texture = gl::Texture::create2D(GL_RGBA8, targets.width, targets.height, "view");
         target.fbo = gl::Framebuffer::create({&target.texture}, nullptr, "view");
     }
+}
+
+void RendererImpl::copyDisplay(ViewTarget& target) {
+    if (targets.empty()) return;
+    sizeViewTarget(target);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.displayFbo.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.fbo.id());
+    glBlitFramebuffer(0, 0, targets.width, targets.height, 0, 0, targets.width, targets.height, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+// A view of the frame `frame` describes (the last one rendered): coverage views recount from
+// it, so nothing here depends on what the last render() happened to compute. No overlays: they
+// belong to the frame's own display image (copyDisplay).
+void RendererImpl::drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target) {
+    if (targets.empty()) return;
+    sizeViewTarget(target);
     FrameContext f = frameContext(frame);
     if (modeUnavailable(f.settings.mode)) f.settings.mode = LightingMode::Quad;  // as render() ran it
     if (viewNeedsCoverage(params.view)) {
@@ -439,6 +455,10 @@ std::optional<std::string> Renderer::modeUnavailable(LightingMode mode) {
 
 void Renderer::drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target) {
     impl_->drawView(params, frame, target);
+}
+
+void Renderer::copyDisplay(ViewTarget& target) {
+    impl_->copyDisplay(target);
 }
 
 std::vector<std::string> Renderer::reloadChangedShaders() {
