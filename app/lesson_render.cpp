@@ -12,10 +12,12 @@ LessonStepFrame renderLessonStep(Renderer& renderer, ui::LessonStep const& step)
     if (step.claim && step.claim->reference) {
         renderer.render({s.camera, s.lights, *step.claim->reference, true});
         images.referenceLighting = renderer.readAttachment(Attachment::Lighting);
+        images.referenceDisplay = renderer.readAttachment(Attachment::Final);
     }
     out.stats = renderer.render({s.camera, s.lights, s.pipeline, true});
     if (!step.claim) return out;
     images.lighting = renderer.readAttachment(Attachment::Lighting);
+    images.display = renderer.readAttachment(Attachment::Final);
     images.position = renderer.readAttachment(Attachment::Position);
     images.normal = renderer.readAttachment(Attachment::Normal);
     images.albedoSpec = renderer.readAttachment(Attachment::AlbedoSpec);

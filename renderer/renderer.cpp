@@ -274,25 +274,6 @@ FrameStats RendererImpl::render(FrameInput const& input) {
         forwardPass({scene, lights, shaders.get(ProgramId::Forward), litTarget()},
                     {MaterialFilter::Blended, f.viewProj, shading, s.normalMaps});
     }
-    if (runs() && s.lightCubes) {
-        PassScope const pass = timed(PassId::LightCubes);
-        lightCubesPass({lights, shaders.get(ProgramId::LightCube), cubeVao, litTarget()},
-                       {f.viewProj, lightCubeHalfSize()});
-    }
-    if (runs() && wireframes) {
-        PassScope const pass = timed(PassId::Wireframes);
-        // Forward mode leaves the G-buffer empty, so its own depth (in litFbo) is the scene's.
-        LitTarget const target =
-            s.mode == LightingMode::Forward ? litTarget() : LitTarget{targets.wireframeFbo, targets.lighting};
-        WireframesConfig wire{f.viewProj};
-        if (outline >= 0) {
-            auto const slot = volumeInstanceSlot(f.lights, outline, f.camera, f.aspect, volumes.enclosingScale,
-                                                 volumes.coneRadialScale, volumes.volumeScale);
-            wire.firstInstance = slot.value_or(0);
-            wire.count = slot ? 1 : 0;
-        }
-        wireframesPass({lights, volumes, shaders.get(ProgramId::LightVolumeWire), target}, wire);
-    }
     // Debug counts for the heat map and tile views, only when one of them is shown.
     if (runs() && viewNeedsCoverage(s.view)) {
         PassScope const pass = timed(PassId::Coverage);
@@ -306,6 +287,35 @@ FrameStats RendererImpl::render(FrameInput const& input) {
                   shaders.get(ProgramId::View), triangle, targets.displayFbo},
                  {display, s.tonemap, s.exposure, f.camera.nearPlane, f.camera.farPlane, targets.width, targets.height,
                   shading.inverseViewProj});
+    }
+    // The overlays, drawn onto the display image so the lit image stays the light sum (what
+    // lighting.exr exports and light-by-light accumulation adds up). Only on the views of the lit
+    // image (viewShowsOverlays); the tonemap is the display pass's, so they look as they did when
+    // they were drawn into the lit image.
+    bool const overlays = viewShowsOverlays(s.view);
+    DisplayTonemap const tonemap{s.tonemap, s.exposure};
+    if (runs() && overlays && s.lightCubes) {
+        PassScope const pass = timed(PassId::LightCubes);
+        // Against the lit target's depth: the scene's only when the depth-copy step filled it (the
+        // depth_blit lesson: without it, the cubes show through walls).
+        lightCubesPass({lights, shaders.get(ProgramId::LightCube), cubeVao, targets.overlayFbo},
+                       {f.viewProj, lightCubeHalfSize(), tonemap});
+    }
+    if (runs() && overlays && wireframes) {
+        PassScope const pass = timed(PassId::Wireframes);
+        // The G-buffer's depth is the scene's with or without the copy step; forward mode leaves the
+        // G-buffer empty, so its own depth (litDepth) is the scene's there.
+        gl::Framebuffer const& target =
+            s.mode == LightingMode::Forward ? targets.overlayFbo : targets.overlayGBufferDepthFbo;
+        WireframesConfig wire{f.viewProj};
+        wire.tonemap = tonemap;
+        if (outline >= 0) {
+            auto const slot = volumeInstanceSlot(f.lights, outline, f.camera, f.aspect, volumes.enclosingScale,
+                                                 volumes.coneRadialScale, volumes.volumeScale);
+            wire.firstInstance = slot.value_or(0);
+            wire.count = slot ? 1 : 0;
+        }
+        wireframesPass({lights, volumes, shaders.get(ProgramId::LightVolumeWire), target}, wire);
     }
 #ifndef NDEBUG
     checkFrameRan(declared, passesRun);
@@ -359,14 +369,30 @@ void RendererImpl::clearForStop() {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-// A view of the frame `frame` describes (the last one rendered): coverage views recount from
-// it, so nothing here depends on what the last render() happened to compute.
-void RendererImpl::drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target) {
-    if (targets.empty()) return;
+// Allocates `target` at the frame size when it is not already.
+void RendererImpl::sizeViewTarget(ViewTarget& target) const {
     if (!target.texture || target.texture.width() != targets.width || target.texture.height() != targets.height) {
         target.texture = gl::Texture::create2D(GL_RGBA8, targets.width, targets.height, "view");
         target.fbo = gl::Framebuffer::create({&target.texture}, nullptr, "view");
     }
+}
+
+void RendererImpl::copyDisplay(ViewTarget& target) {
+    if (targets.empty()) return;
+    sizeViewTarget(target);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.displayFbo.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.fbo.id());
+    glBlitFramebuffer(0, 0, targets.width, targets.height, 0, 0, targets.width, targets.height, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+// A view of the frame `frame` describes (the last one rendered): coverage views recount from
+// it, so nothing here depends on what the last render() happened to compute. No overlays: they
+// belong to the frame's own display image (copyDisplay).
+void RendererImpl::drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target) {
+    if (targets.empty()) return;
+    sizeViewTarget(target);
     FrameContext f = frameContext(frame);
     if (modeUnavailable(f.settings.mode)) f.settings.mode = LightingMode::Quad;  // as render() ran it
     if (viewNeedsCoverage(params.view)) {
@@ -429,6 +455,10 @@ std::optional<std::string> Renderer::modeUnavailable(LightingMode mode) {
 
 void Renderer::drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target) {
     impl_->drawView(params, frame, target);
+}
+
+void Renderer::copyDisplay(ViewTarget& target) {
+    impl_->copyDisplay(target);
 }
 
 std::vector<std::string> Renderer::reloadChangedShaders() {

@@ -102,7 +102,12 @@ public:
     // `target`, allocating it at the frame size. `frame` is that frame's input: its settings
     // (tonemap, exposure, mode) and camera (clip planes of the depth views) shape the view, and
     // the heat-map and tile views recount their coverage from it. The editor's viewers use this.
+    // The views carry no overlays (light cubes, wireframes): those are drawn onto the frame's own
+    // display image only (copyDisplay).
     void drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target);
+    // Copies the last frame's display image, with its overlays, into `target` (allocated at the frame
+    // size): the A/B split keeps side B's picture this way before side A's frame replaces it.
+    void copyDisplay(ViewTarget& target);
     FloatImage readViewTarget(ViewTarget const& target) const;
 
     // Recompiles shaders whose source files in the source tree changed. Returns one message per

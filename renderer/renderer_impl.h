@@ -76,6 +76,8 @@ public:
     // GBL_SHADER_CHECKS in the shader-checks build.
     std::vector<std::string> shaderDefines(GBufferLayout layout) const;
     void drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target);
+    void copyDisplay(ViewTarget& target);
+    void sizeViewTarget(ViewTarget& target) const;
     std::optional<std::string> modeUnavailable(LightingMode mode);
     std::vector<PassDecl> framePasses(FrameInput const& input);
     float lightCubeHalfSize() const;

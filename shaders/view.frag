@@ -5,6 +5,7 @@
 
 #include "view_constants.glsl"
 #include "gbuffer_read.glsl"
+#include "tonemap.glsl"
 
 uniform sampler2D uLighting;
 uniform sampler2D uCoverage;
@@ -12,8 +13,6 @@ uniform sampler2D uDiffuseLight;   // accumulation split's targets
 uniform sampler2D uSpecularLight;
 
 uniform int uView;
-uniform int uTonemap;
-uniform float uExposure;
 uniform vec4 uChannelMask;   // 1 for each shown channel
 uniform float uRangeMin;
 uniform float uRangeMax;
@@ -26,14 +25,6 @@ in vec2 vUV;
 out vec4 fragColor;
 
 #include "view_tools.glsl"
-
-vec3 tonemap(vec3 hdr) {
-    vec3 c = hdr * uExposure;
-    if (uTonemap == TONEMAP_EXPOSURE) c = vec3(1.0) - exp(-c);
-    else if (uTonemap == TONEMAP_REINHARD) c = c / (vec3(1.0) + c);
-    else c = clamp(c, 0.0, 1.0);
-    return pow(c, vec3(1.0 / 2.2));
-}
 
 #include "depth.glsl"
 

@@ -61,7 +61,7 @@ protected:
     }
 
     FloatImage lighting(PipelineSettings const& s, std::optional<int> k, bool contribution = false,
-                        bool outline = false) {
+                        bool outline = false, Attachment read = Attachment::Lighting) {
         FrameInput in{camera_, lights_, s, true};
         in.accumulateLights = k;
         in.lightContribution = contribution;
@@ -69,7 +69,11 @@ protected:
         FrameStats const st = renderer_->render(in);
         EXPECT_EQ(st.modeUsed, s.mode) << st.fallbackReason;
         EXPECT_EQ(st.glErrors, 0u);
-        return renderer_->readAttachment(Attachment::Lighting);
+        return renderer_->readAttachment(read);
+    }
+    // The display image (the tonemapped lit image with the overlays drawn on it).
+    FloatImage display(PipelineSettings const& s, std::optional<int> k, bool outline = false) {
+        return lighting(s, k, false, outline, Attachment::Final);
     }
 
     // Light `index` alone on the CPU at every covered pixel, against `gpu` (a difference of two
@@ -168,6 +172,7 @@ TEST_F(AccumulateGlTest, EachStepAddsTheCpuEvaluationOfThatLight) {
 }
 
 TEST_F(AccumulateGlTest, TheKthVolumeIsOutlinedAndOnlyIt) {
+    // The outline is an overlay: it is on the display image, not in the lit image (the next test).
     PipelineSettings s = settings(LightingMode::Quad);
     int const k = 3;
     auto changed = [](FloatImage const& a, FloatImage const& b) {
@@ -176,26 +181,55 @@ TEST_F(AccumulateGlTest, TheKthVolumeIsOutlinedAndOnlyIt) {
             n += std::abs(a.pixels[i] - b.pixels[i]) + std::abs(a.pixels[i + 1] - b.pixels[i + 1]) > 1e-3f;
         return n;
     };
-    int const outline = changed(lighting(s, k, false, true), lighting(s, k));
+    int const outline = changed(display(s, k, true), display(s, k));
     EXPECT_GT(outline, 20) << "light 3's sphere should draw lines";
     // Accumulating outlines light k only, even with every wireframe switched on.
     s.volumeWireframes = true;
-    EXPECT_EQ(changed(lighting(s, k, false, true), lighting(settings(LightingMode::Quad), k)), outline);
+    EXPECT_EQ(changed(display(s, k, true), display(settings(LightingMode::Quad), k)), outline);
     // Without accumulation: all 32 volumes, a tangle of many more lines...
-    FloatImage const full = lighting(settings(LightingMode::Quad), std::nullopt);
-    int const all = changed(lighting(s, std::nullopt), full);
+    FloatImage const full = display(settings(LightingMode::Quad), std::nullopt);
+    int const all = changed(display(s, std::nullopt), full);
     EXPECT_GT(all, 3 * outline);
     // ...or the selected light's alone: the same sphere as light k's outline.
     FrameInput in{camera_, lights_, s, true};
     in.wireframeLight = k - 1;
     renderer_->render(in);
-    int const selected = changed(renderer_->readAttachment(Attachment::Lighting), full);
+    int const selected = changed(renderer_->readAttachment(Attachment::Final), full);
     EXPECT_GE(selected, outline * 8 / 10);
     EXPECT_LE(selected, outline * 12 / 10);
     // An index past the list draws none (not all of them).
     in.wireframeLight = 1000;
     renderer_->render(in);
-    EXPECT_EQ(changed(renderer_->readAttachment(Attachment::Lighting), full), 0);
+    EXPECT_EQ(changed(renderer_->readAttachment(Attachment::Final), full), 0);
+}
+
+TEST_F(AccumulateGlTest, AccumulatingEveryLightWithOutlinesGivesTheFullFramesLitImage) {
+    // Issue 24: the lit image is the light sum, whatever overlays are on. With the wireframes, the
+    // light-by-light outline and the cubes drawn into it (the old wiring), stepping k = 1..N left light
+    // N's outline and cube in lit(N) while the full frame held every light's wireframe: `render
+    // --accumulate 16` of 16 lights differed from the full frame by 2.0 (the lines' HDR intensity)
+    // on light 16's outline. Now both are the light sum: bit-identical, the same passes over the same
+    // lights, and every step equals the same step without the outline.
+    for (LightingMode mode : modes()) {
+        SCOPED_TRACE(std::string(enumName(kLightingModeNames, mode)));
+        PipelineSettings s = settings(mode);
+        s.lightCubes = true;
+        s.volumeWireframes = true;
+        FloatImage const full = lighting(s, std::nullopt);
+        PipelineSettings plain = settings(mode);  // no overlay at all
+        EXPECT_EQ(maxAbsDiff(full, lighting(plain, std::nullopt)), 0.0) << "the full frame's lit image";
+        FloatImage last;
+        for (int k = 1; k <= int(lights_.size()); ++k) {
+            last = lighting(s, k, false, true);
+            // A few steps against the same step without outline, wireframes or cubes.
+            if (k == 1 || k == 7 || k == int(lights_.size())) {
+                EXPECT_EQ(maxAbsDiff(last, lighting(plain, k)), 0.0) << "k = " << k;
+            }
+        }
+        EXPECT_EQ(maxAbsDiff(last, full), 0.0) << "lit(N), outline on, against the full frame";
+        // The outline is still drawn: on the display image.
+        EXPECT_GT(maxAbsDiff(display(plain, int(lights_.size()), true), display(plain, int(lights_.size()))), 0.1);
+    }
 }
 
 TEST(VolumeInstanceSlot, FollowsThePartitionOfThePreparedInstances) {

@@ -51,13 +51,14 @@ TEST(FrameDiagram, QuadEdges) {
         "geometry -> depth_copy via gbuffer.depth",
         "depth_copy -> forward via lighting.depth",
         "lighting -> forward via lighting",
-        "depth_copy -> light_cubes via lighting.depth",
         "geometry -> display via gbuffer.position",
         "geometry -> display via gbuffer.normal",
         "geometry -> display via gbuffer.albedo_spec",
         "geometry -> display via gbuffer.emissive",
         "geometry -> display via gbuffer.depth",
-        "light_cubes -> display via lighting",
+        "forward -> display via lighting",
+        // The cubes draw over the display image after the display pass, against the copied depth.
+        "depth_copy -> light_cubes via lighting.depth",
     };
     EXPECT_EQ(edgeList(settings(LightingMode::Quad)), expected);
 }
@@ -69,10 +70,10 @@ TEST(FrameDiagram, VolumesEdges) {
         "geometry -> lighting via gbuffer.albedo_spec", "geometry -> lighting via gbuffer.emissive",
         "geometry -> lighting via gbuffer.depth",       "geometry -> depth_copy via gbuffer.depth",
         "depth_copy -> forward via lighting.depth",     "lighting -> forward via lighting",
-        "depth_copy -> light_cubes via lighting.depth", "geometry -> display via gbuffer.position",
-        "geometry -> display via gbuffer.normal",       "geometry -> display via gbuffer.albedo_spec",
-        "geometry -> display via gbuffer.emissive",     "geometry -> display via gbuffer.depth",
-        "light_cubes -> display via lighting",
+        "geometry -> display via gbuffer.position",     "geometry -> display via gbuffer.normal",
+        "geometry -> display via gbuffer.albedo_spec",  "geometry -> display via gbuffer.emissive",
+        "geometry -> display via gbuffer.depth",        "forward -> display via lighting",
+        "depth_copy -> light_cubes via lighting.depth",
     };
     EXPECT_EQ(edgeList(settings(LightingMode::Volumes)), expected);
 
@@ -86,33 +87,26 @@ TEST(FrameDiagram, VolumesEdges) {
 
 TEST(FrameDiagram, TiledEdges) {
     std::vector<std::string> const expected{
-        "geometry -> light_lists via gbuffer.depth",
-        "geometry -> lighting via gbuffer.position",
-        "geometry -> lighting via gbuffer.normal",
-        "geometry -> lighting via gbuffer.albedo_spec",
-        "geometry -> lighting via gbuffer.emissive",
-        "light_lists -> lighting via tile_bins",
-        "geometry -> depth_copy via gbuffer.depth",
-        "depth_copy -> forward via lighting.depth",
-        "lighting -> forward via lighting",
-        "depth_copy -> light_cubes via lighting.depth",
-        "geometry -> display via gbuffer.position",
-        "geometry -> display via gbuffer.normal",
-        "geometry -> display via gbuffer.albedo_spec",
-        "geometry -> display via gbuffer.emissive",
-        "geometry -> display via gbuffer.depth",
-        "light_cubes -> display via lighting",
+        "geometry -> light_lists via gbuffer.depth", "geometry -> lighting via gbuffer.position",
+        "geometry -> lighting via gbuffer.normal",   "geometry -> lighting via gbuffer.albedo_spec",
+        "geometry -> lighting via gbuffer.emissive", "light_lists -> lighting via tile_bins",
+        "geometry -> depth_copy via gbuffer.depth",  "depth_copy -> forward via lighting.depth",
+        "lighting -> forward via lighting",          "geometry -> display via gbuffer.position",
+        "geometry -> display via gbuffer.normal",    "geometry -> display via gbuffer.albedo_spec",
+        "geometry -> display via gbuffer.emissive",  "geometry -> display via gbuffer.depth",
+        "forward -> display via lighting",           "depth_copy -> light_cubes via lighting.depth",
     };
     EXPECT_EQ(edgeList(settings(LightingMode::Tiled)), expected);
 }
 
 TEST(FrameDiagram, ForwardEdges) {
-    // No G-buffer: forward shading writes the lit image and its depth, the rest draw over them.
+    // No G-buffer: forward shading writes the lit image and its depth, the blended pass draws over
+    // them, and the cubes test against that depth on the display image.
     std::vector<std::string> const expected{
         "forward_shading -> forward via lighting.depth",
         "forward_shading -> forward via lighting",
+        "forward -> display via lighting",
         "forward_shading -> light_cubes via lighting.depth",
-        "light_cubes -> display via lighting",
     };
     EXPECT_EQ(edgeList(settings(LightingMode::Forward)), expected);
 }
@@ -147,59 +141,61 @@ TEST(FrameDiagram, PassStateInPlainWords) {
 }
 
 TEST(FrameDiagram, BoxesLabelsAndLanesDoNotOverlap) {
-    for (LightingMode mode : {LightingMode::Quad, LightingMode::Volumes, LightingMode::Tiled, LightingMode::Forward,
-                              LightingMode::Clustered}) {
-        PipelineSettings s = settings(mode);
-        s.volumeWireframes = true;
-        s.view = DebugView::Heatmap;  // the coverage pass too
-        std::vector<PassDecl> const passes = framePasses(s);
-        std::vector<PassBoxText> const text = measured(passes);
-        DiagramMetrics const m;
-        DiagramLayout const d = layoutDiagram(passes, text, m);
-        ASSERT_EQ(d.boxes.size(), passes.size());
-        float lowest = 0.0f;
-        for (std::size_t i = 0; i < d.boxes.size(); ++i) {
-            BoxPlace const& b = d.boxes[i];
-            SCOPED_TRACE(std::string(kLightingModeNames[std::size_t(mode)]) + " " + std::string(passes[i].name()));
-            if (i > 0) {
-                EXPECT_GE(b.pos.x, d.boxes[i - 1].pos.x + d.boxes[i - 1].size.x + m.columnGap - 0.01f);
+    // The heat map adds the coverage pass; the final view adds the overlays after the display pass.
+    for (DebugView view : {DebugView::Heatmap, DebugView::Final})
+        for (LightingMode mode : {LightingMode::Quad, LightingMode::Volumes, LightingMode::Tiled, LightingMode::Forward,
+                                  LightingMode::Clustered}) {
+            PipelineSettings s = settings(mode);
+            s.volumeWireframes = true;
+            s.view = view;
+            std::vector<PassDecl> const passes = framePasses(s);
+            std::vector<PassBoxText> const text = measured(passes);
+            DiagramMetrics const m;
+            DiagramLayout const d = layoutDiagram(passes, text, m);
+            ASSERT_EQ(d.boxes.size(), passes.size());
+            float lowest = 0.0f;
+            for (std::size_t i = 0; i < d.boxes.size(); ++i) {
+                BoxPlace const& b = d.boxes[i];
+                SCOPED_TRACE(std::string(kLightingModeNames[std::size_t(mode)]) + " " + std::string(passes[i].name()));
+                if (i > 0) {
+                    EXPECT_GE(b.pos.x, d.boxes[i - 1].pos.x + d.boxes[i - 1].size.x + m.columnGap - 0.01f);
+                }
+                EXPECT_GE(b.size.x, text[i].header + 2.0f * m.pad);
+                // Input labels end before output labels start, on every row.
+                float widestIn = 0.0f, widestOut = 0.0f;
+                for (float w : text[i].inputs) widestIn = std::max(widestIn, w);
+                for (float w : text[i].outputs) widestOut = std::max(widestOut, w);
+                EXPECT_LE(b.inputLabelX + widestIn, b.outputLabelRight - widestOut + 0.01f);
+                EXPECT_GE(b.inputLabelX, b.pos.x);
+                EXPECT_LE(b.outputLabelRight, b.pos.x + b.size.x);
+                // Pins below the header, inside the box.
+                for (glm::vec2 p : b.inputs) {
+                    EXPECT_EQ(p.x, b.pos.x);
+                    EXPECT_GE(p.y, b.pos.y + m.pad + float(m.headerLines) * m.line);
+                    EXPECT_LE(p.y, b.pos.y + b.size.y);
+                }
+                EXPECT_EQ(b.inputs.size(), passInputs(passes[i]).size());
+                EXPECT_EQ(b.outputs.size(), passOutputs(passes[i]).size());
+                EXPECT_GE(d.size.x, b.pos.x + b.size.x);
+                lowest = std::max(lowest, b.pos.y + b.size.y);
             }
-            EXPECT_GE(b.size.x, text[i].header + 2.0f * m.pad);
-            // Input labels end before output labels start, on every row.
-            float widestIn = 0.0f, widestOut = 0.0f;
-            for (float w : text[i].inputs) widestIn = std::max(widestIn, w);
-            for (float w : text[i].outputs) widestOut = std::max(widestOut, w);
-            EXPECT_LE(b.inputLabelX + widestIn, b.outputLabelRight - widestOut + 0.01f);
-            EXPECT_GE(b.inputLabelX, b.pos.x);
-            EXPECT_LE(b.outputLabelRight, b.pos.x + b.size.x);
-            // Pins below the header, inside the box.
-            for (glm::vec2 p : b.inputs) {
-                EXPECT_EQ(p.x, b.pos.x);
-                EXPECT_GE(p.y, b.pos.y + m.pad + float(m.headerLines) * m.line);
-                EXPECT_LE(p.y, b.pos.y + b.size.y);
+            EXPECT_EQ(d.routes.size(), frameEdges(passes).size());
+            // Arrows start on an output pin and end on an input pin; those that skip passes run below
+            // every box, and their legs stay in the gaps between boxes.
+            for (EdgeRoute const& r : d.routes) {
+                ASSERT_GE(r.points.size(), 4u);
+                BoxPlace const& from = d.boxes[std::size_t(r.edge.from)];
+                BoxPlace const& to = d.boxes[std::size_t(r.edge.to)];
+                EXPECT_EQ(r.points.front().x, from.pos.x + from.size.x);
+                EXPECT_EQ(r.points.back().x, to.pos.x);
+                if (r.curve) continue;
+                EXPECT_GT(r.points[2].y, lowest);
+                EXPECT_LE(r.points[2].y, d.size.y);
+                EXPECT_GT(r.points[1].x, from.pos.x + from.size.x);
+                EXPECT_LT(r.points[1].x, d.boxes[std::size_t(r.edge.from) + 1].pos.x);
+                EXPECT_LT(r.points[4].x, to.pos.x);
+                EXPECT_GT(r.points[4].x,
+                          d.boxes[std::size_t(r.edge.to) - 1].pos.x + d.boxes[std::size_t(r.edge.to) - 1].size.x);
             }
-            EXPECT_EQ(b.inputs.size(), passInputs(passes[i]).size());
-            EXPECT_EQ(b.outputs.size(), passOutputs(passes[i]).size());
-            EXPECT_GE(d.size.x, b.pos.x + b.size.x);
-            lowest = std::max(lowest, b.pos.y + b.size.y);
         }
-        EXPECT_EQ(d.routes.size(), frameEdges(passes).size());
-        // Arrows start on an output pin and end on an input pin; those that skip passes run below
-        // every box, and their legs stay in the gaps between boxes.
-        for (EdgeRoute const& r : d.routes) {
-            ASSERT_GE(r.points.size(), 4u);
-            BoxPlace const& from = d.boxes[std::size_t(r.edge.from)];
-            BoxPlace const& to = d.boxes[std::size_t(r.edge.to)];
-            EXPECT_EQ(r.points.front().x, from.pos.x + from.size.x);
-            EXPECT_EQ(r.points.back().x, to.pos.x);
-            if (r.curve) continue;
-            EXPECT_GT(r.points[2].y, lowest);
-            EXPECT_LE(r.points[2].y, d.size.y);
-            EXPECT_GT(r.points[1].x, from.pos.x + from.size.x);
-            EXPECT_LT(r.points[1].x, d.boxes[std::size_t(r.edge.from) + 1].pos.x);
-            EXPECT_LT(r.points[4].x, to.pos.x);
-            EXPECT_GT(r.points[4].x,
-                      d.boxes[std::size_t(r.edge.to) - 1].pos.x + d.boxes[std::size_t(r.edge.to) - 1].size.x);
-        }
-    }
 }

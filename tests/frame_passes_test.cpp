@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 using namespace gbl;
@@ -40,7 +41,8 @@ TEST(FramePasses, NoCombinationSamplesWhatItDrawsInto) {
             for (std::size_t cull = 0; cull < kCullModeNames.size(); ++cull)
                 for (std::size_t acc = 0; acc < kLightAccumulationNames.size(); ++acc)
                     for (std::size_t copy = 0; copy < kDepthCopyNames.size(); ++copy)
-                        for (DebugView view : {DebugView::Final, DebugView::Heatmap, DebugView::TileLights})
+                        for (DebugView view :  // the overlays are drawn on the first two only
+                             {DebugView::Final, DebugView::Lighting, DebugView::Heatmap, DebugView::TileLights})
                             for (bool overlays : {false, true}) {
                                 PipelineSettings s;
                                 s.mode = LightingMode(mode);
@@ -57,7 +59,7 @@ TEST(FramePasses, NoCombinationSamplesWhatItDrawsInto) {
                                     << kDepthCopyNames[copy];
                                 ++frames;
                             }
-    EXPECT_EQ(frames, 5 * 4 * 5 * 2 * 3 * 3 * 2);
+    EXPECT_EQ(frames, 5 * 4 * 5 * 2 * 3 * 4 * 2);
 }
 
 TEST(FramePasses, TheOldVolumeWiringIsALoop) {
@@ -120,13 +122,17 @@ TEST(FramePasses, VolumesCopyDepthOnlyWhereTheLightingSamplesIt) {
 TEST(FramePasses, SequencesFollowTheSettings) {
     PipelineSettings s;  // quad, cubes on
     EXPECT_EQ(names(framePasses(s)),
-              (std::vector<std::string>{"geometry", "lighting", "depth_copy", "forward", "light_cubes", "display"}));
+              (std::vector<std::string>{"geometry", "lighting", "depth_copy", "forward", "display", "light_cubes"}));
     s.mode = LightingMode::Tiled;
     s.accumulation = LightAccumulation::Split;
-    s.view = DebugView::Heatmap;
+    s.view = DebugView::Lighting;
     EXPECT_EQ(names(framePasses(s, true)),
               (std::vector<std::string>{"geometry", "light_lists", "lighting", "light_combine", "depth_copy", "forward",
-                                        "light_cubes", "wireframes", "coverage", "display"}));
+                                        "display", "light_cubes", "wireframes"}));
+    s.view = DebugView::Heatmap;  // a view of counts, not of the lit image: no overlays on it
+    EXPECT_EQ(names(framePasses(s, true)),
+              (std::vector<std::string>{"geometry", "light_lists", "lighting", "light_combine", "depth_copy", "forward",
+                                        "coverage", "display"}));
     s.mode = LightingMode::Forward;  // split is refused there
     s.view = DebugView::Final;
     s.lightCubes = false;
@@ -167,8 +173,55 @@ TEST(FramePasses, StoppingKeepsThePassesUpToTheStopThenTheDisplay) {
     std::vector<PassDecl> const all = framePasses(s, false);
     EXPECT_EQ(names(passesUntil(all, PassId::Geometry)), (std::vector<std::string>{"geometry", "display"}));
     EXPECT_EQ(names(passesUntil(all, PassId::Lighting)), (std::vector<std::string>{"geometry", "lighting", "display"}));
-    EXPECT_EQ(passesUntil(all, PassId::Display), all);
+    // The overlays follow the display pass: stopping after it leaves them out, after one keeps the display.
+    EXPECT_EQ(names(passesUntil(all, PassId::Display)),
+              (std::vector<std::string>{"geometry", "lighting", "depth_copy", "forward", "display"}));
+    EXPECT_EQ(passesUntil(all, PassId::LightCubes), all);
     EXPECT_EQ(passesUntil(all, PassId::Wireframes), all) << "a pass the frame does not run stops nothing";
+    std::vector<PassDecl> const wired = framePasses(s, true);
+    EXPECT_EQ(names(passesUntil(wired, PassId::LightCubes)),
+              (std::vector<std::string>{"geometry", "lighting", "depth_copy", "forward", "display", "light_cubes"}));
+}
+
+TEST(FramePasses, OverlaysDrawOnTheDisplayAgainstTheSceneDepthAndLeaveTheLitImageTheLightSum) {
+    // Issue 24: the cubes and wireframes used to draw into the lit image, so lighting.exr and the
+    // light-by-light sum held them. Now only shading draws into the lit image; the overlays draw
+    // into the display image, after the display pass, against the depth they tested before.
+    for (std::size_t mode = 0; mode < kLightingModeNames.size(); ++mode)
+        for (std::size_t copy = 0; copy < kDepthCopyNames.size(); ++copy) {
+            PipelineSettings s;
+            s.mode = LightingMode(mode);
+            s.depthCopy = DepthCopy(copy);
+            s.lightCubes = true;
+            std::vector<PassDecl> const passes = framePasses(s, true);
+            std::string const name = std::string(kLightingModeNames[mode]) + " " + std::string(kDepthCopyNames[copy]);
+            ASSERT_GE(passes.size(), 3u) << name;
+            EXPECT_EQ(passes[passes.size() - 3].id, PassId::Display) << name;
+            PassDecl const& cubes = find(passes, PassId::LightCubes);
+            PassDecl const& wires = find(passes, PassId::Wireframes);
+            for (PassDecl const* p : {&cubes, &wires}) {
+                EXPECT_EQ(p->color, std::vector<Resource>{Resource::Display}) << name << " " << p->name();
+                EXPECT_TRUE(p->depthRead) << name << " " << p->name();
+            }
+            // The cubes test against the lit target's depth: the depth-copy step's copy of the scene
+            // (none when it is off: they show through walls), or forward mode's own depth.
+            EXPECT_EQ(cubes.depthStencil, Resource::LitDepth) << name;
+            EXPECT_TRUE(cubes.depthWrite) << name;
+            // The wireframes test against the scene's depth with or without the copy step.
+            bool const forward = s.mode == LightingMode::Forward;
+            EXPECT_EQ(wires.depthStencil, forward ? Resource::LitDepth : Resource::GBufferDepth) << name;
+            EXPECT_FALSE(wires.depthWrite) << name;
+            for (PassDecl const& p : passes) {
+                bool const lit = std::find(p.color.begin(), p.color.end(), Resource::Lighting) != p.color.end();
+                EXPECT_FALSE(lit && (p.id == PassId::LightCubes || p.id == PassId::Wireframes)) << name;
+            }
+        }
+    // The G-buffer and count views show data, not the lit image: no overlays over them.
+    PipelineSettings s;
+    s.view = DebugView::Normal;
+    s.lightCubes = true;
+    EXPECT_EQ(names(framePasses(s, true)),
+              (std::vector<std::string>{"geometry", "lighting", "depth_copy", "forward", "display"}));
 }
 
 TEST(FramePasses, AStopOutsideTheFrameIsOneSentenceNamingItsPasses) {

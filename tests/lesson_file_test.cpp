@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -143,6 +144,27 @@ TEST(LessonFile, EveryShippedQuestionHasAnAnswer) {
     EXPECT_GE(questions, 37);
     // The raw files too: a step with a question and no "answer" field fails to load (above), so
     // a lesson dropped from the library would show up as an error, not as a missing answer.
+}
+
+// The depth_blit lesson is about the light cubes, which are an overlay on the display image (not in
+// the lit image): its claims compare the final image; a bad "image" names the field.
+TEST(LessonFile, TheDepthBlitClaimsCompareTheDisplayImage) {
+    LessonLibrary const lib = loadLessonDir(defaultLessonDir());
+    auto const it =
+        std::find_if(lib.lessons.begin(), lib.lessons.end(), [](Lesson const& l) { return l.id == "depth_blit"; });
+    ASSERT_NE(it, lib.lessons.end());
+    int claims = 0;
+    for (LessonStep const& step : it->steps)
+        if (step.claim) {
+            EXPECT_EQ(step.claim->image, Attachment::Final);
+            ++claims;
+        }
+    EXPECT_EQ(claims, 4);
+    json j = minimal();
+    j["steps"][0]["claim"] = {
+        {"kind", "same_image"}, {"reference", {{"blit", "off"}}}, {"bound", 0.0}, {"image", "hdr"}};
+    std::string const e = errorOf(j);
+    EXPECT_EQ(e.rfind("demo.json: steps[0].claim.image must be lighting or final", 0), 0u) << e;
 }
 
 TEST(LessonFile, PlaceholdersAreSubstitutedWithLiveValues) {

@@ -116,9 +116,10 @@ TEST_F(LessonsGlTest, SettingTasksShowTheirPointOnTheRealFrame) {
              c.tolerance = 0.03f;
              ref.cull = CullMode::Front;
          }},
-        {"depth_blit", 3,  // the copy off: cubes over walls the blit hides
+        {"depth_blit", 3,  // the copy off: cubes over walls the blit hides (on the display: an overlay)
          [](ui::LessonClaim& c, PipelineSettings& ref) {
              c.kind = ui::ClaimKind::DiffersFrom;
+             c.image = Attachment::Final;
              c.bound = 0.05f;
              c.minFraction = 0.0001f;
              ref.depthCopy = DepthCopy::Blit;

@@ -119,11 +119,12 @@ protected:
         return c;
     }
 
-    FloatImage render(PipelineSettings const& s, std::span<PointLight const> lights) {
+    FloatImage render(PipelineSettings const& s, std::span<PointLight const> lights,
+                      Attachment read = Attachment::Lighting) {
         FrameStats const st = renderer_->render({camera_, lights, s, true});
         EXPECT_EQ(st.modeUsed, s.mode) << st.fallbackReason;
         EXPECT_EQ(st.glErrors, 0u);
-        return renderer_->readAttachment(Attachment::Lighting);
+        return renderer_->readAttachment(read);
     }
 
     std::vector<std::pair<std::string, PipelineSettings>> everyMode(bool cameraInside) const {
@@ -211,12 +212,13 @@ TEST_F(LightKindsGlTest, WireframesDrawTheSpotsConeAndTheDirectionalArrow) {
     std::vector<PointLight> const sunOnly{sun};
     std::vector<PointLight> const spotOnly{
         spot({0.0f, 3.0f, -2.0f}, {0.0f, -1.0f, 0.0f}, 10.0f, 25.0f, {1.0f, 1.0f, 1.0f})};
-    // Pixels the wireframe pass changes in the lit image (lines are drawn at HDR brightness 2).
+    // Pixels the wireframe pass changes on the display image (lines are drawn at HDR brightness 2,
+    // tonemapped; the wireframes are an overlay there, not in the lit image).
     auto linePixels = [&](std::vector<PointLight> const& lights) {
         PipelineSettings s = settings(LightingMode::Quad);
-        FloatImage const plain = render(s, lights);
+        FloatImage const plain = render(s, lights, Attachment::Final);
         s.volumeWireframes = true;
-        FloatImage const wired = render(s, lights);
+        FloatImage const wired = render(s, lights, Attachment::Final);
         int changed = 0;
         for (int y = 0; y < kH; ++y)
             for (int x = 0; x < kW; ++x) changed += std::abs(wired.at(x, y, 0) - plain.at(x, y, 0)) > 0.05f ? 1 : 0;

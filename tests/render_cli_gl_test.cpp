@@ -130,7 +130,7 @@ TEST(RenderCommand, BadArgumentsExitWithCodeTwoAndOneSentence) {
         {{"render", "--out", out, "--accumulation", "double"}, "--accumulation"},
         {{"render", "--out", out, "--view", "xray"}, "--view"},
         {{"render", "--out", out, "--size", "16x16", "--until", "tonemap"},
-         "this frame's passes are geometry, lighting, depth_copy, forward, light_cubes and display"},
+         "this frame's passes are geometry, lighting, depth_copy, forward, display and light_cubes"},
         {{"render", "--out", out, "--size", "16x16", "--until", "light_lists"}, "this frame does not run it"},
         {{"render", "--out", "/proc/gbuffer-lab-cannot-write-here"}, "/proc/gbuffer-lab-cannot-write-here"},
         {{"render"}, "--out"},

@@ -197,20 +197,32 @@ TEST_F(RendererGlTest, PixelsBeyondRadiusGetOnlyAmbient) {
 }
 
 namespace {
-// HDR value at the pixel where the light's centre projects, after a frame with light cubes on.
+// Where a world point projects, in pixels (y from the top).
+glm::ivec2 projectedPixel(Renderer const& r, Camera const& cam, glm::vec3 p) {
+    glm::vec4 const clip = cam.projection(float(r.width()) / float(r.height())) * cam.view() * glm::vec4(p, 1.0f);
+    glm::vec3 const ndc = glm::vec3(clip) / clip.w;
+    return {int((ndc.x * 0.5f + 0.5f) * float(r.width())), int((0.5f - ndc.y * 0.5f) * float(r.height()))};
+}
+
+glm::vec3 rgbAt(FloatImage const& img, glm::ivec2 px) {
+    return {img.at(px.x, px.y, 0), img.at(px.x, px.y, 1), img.at(px.x, px.y, 2)};
+}
+
+// The display's default tonemap (`exposure`, exposure 1) on the CPU: pow(1 - exp(-x), 1/2.2), as
+// shaders/tonemap.glsl computes it (docs/lighting.md, Tonemap and display).
+glm::vec3 tonemapExposure(glm::vec3 hdr) {
+    return glm::pow(glm::vec3(1.0f) - glm::exp(-hdr), glm::vec3(1.0f / 2.2f));
+}
+
+// The display image (0..1) at the pixel where the light's centre projects, after a frame with
+// light cubes on: the cubes are an overlay on the display, not part of the lit image.
 glm::vec3 cubePixel(Renderer& r, Camera const& cam, PointLight const& light, DepthCopy copy) {
     PipelineSettings s = plainSettings();
     s.lightCubes = true;
     s.depthCopy = copy;
     std::vector<PointLight> const lights{light};
     r.render({cam, lights, s});
-    glm::vec4 clip =
-        cam.projection(float(r.width()) / float(r.height())) * cam.view() * glm::vec4(light.position, 1.0f);
-    glm::vec3 const ndc = glm::vec3(clip) / clip.w;
-    int const x = int((ndc.x * 0.5f + 0.5f) * float(r.width()));
-    int const y = int((0.5f - ndc.y * 0.5f) * float(r.height()));
-    PixelSample const s2 = r.samplePixel(x, y, cam);
-    return glm::vec3(s2.lighting);
+    return rgbAt(r.readAttachment(Attachment::Final), projectedPixel(r, cam, light.position));
 }
 }  // namespace
 
@@ -221,16 +233,72 @@ TEST_F(RendererGlTest, BlitStepHidesLightCubeBehindWall) {
     PointLight light;
     light.position = {0.0f, 2.0f, -2.0f};  // behind the wall (front face at z = 0)
     light.color = {0.0f, 1.0f, 0.0f};
-    // The cube is emissive: colour x kLightCubeEmissive in HDR, unlit. The wall (lit by
-    // the ambient term only) is nowhere near that green.
-    glm::vec3 const cube = light.color * kLightCubeEmissive;
+    // The cube is emissive: colour x kLightCubeEmissive in HDR, unlit, tonemapped as the lit image
+    // is: (0, 0.88, 0) on the display. The wall (lit by the ambient term only) is nowhere near that
+    // green.
+    glm::vec3 const cube = tonemapExposure(light.color * kLightCubeEmissive);
     glm::vec3 const off = cubePixel(*r, cam, light, DepthCopy::Off);
     glm::vec3 const blit = cubePixel(*r, cam, light, DepthCopy::Blit);
     glm::vec3 const shader = cubePixel(*r, cam, light, DepthCopy::Shader);
-    EXPECT_NEAR(glm::length(off - cube), 0.0f, 1e-2f) << "without the blit step the cube shows through the wall";
-    EXPECT_GT(glm::length(blit - cube), 1.0f) << "with glBlitFramebuffer the wall hides the cube";
-    EXPECT_GT(glm::length(shader - cube), 1.0f) << "with the shader copy the wall hides the cube";
+    // RGBA8 display: one step (1/255) of rounding per channel, plus one for GPU exp/pow against the CPU's.
+    EXPECT_NEAR(glm::length(off - cube), 0.0f, 2.0f / 255.0f)
+        << "without the blit step the cube shows through the wall";
+    EXPECT_GT(glm::length(blit - cube), 0.5f) << "with glBlitFramebuffer the wall hides the cube";
+    EXPECT_GT(glm::length(shader - cube), 0.5f) << "with the shader copy the wall hides the cube";
     EXPECT_NEAR(glm::length(blit - shader), 0.0f, 1e-3f) << "both copies give the same depth";
+}
+
+TEST_F(RendererGlTest, OverlaysDrawOnTheDisplayAndLeaveTheLitImageAlone) {
+    // Issue 24: the light cubes and the volume wireframes are drawn onto the display image after the
+    // display pass, so toggling them changes the display where they are drawn and never the lit image
+    // (the light sum that lighting.exr exports); the G-buffer views show none of them.
+    auto r = makeRenderer(96, 64);
+    ASSERT_FALSE(r->setScene(test::floorScene()));
+    Camera const cam = lookingAt({0.0f, 3.0f, 5.0f}, {0.0f, 0.0f, 0.0f});
+    PointLight light;
+    light.position = {0.0f, 0.5f, 0.0f};  // above the floor, its cube and sphere in view
+    light.color = {1.0f, 0.5f, 0.0f};
+    std::vector<PointLight> const lights{light};
+    glm::ivec2 const centre = projectedPixel(*r, cam, light.position);
+    for (LightingMode mode : {LightingMode::Quad, LightingMode::Volumes, LightingMode::Forward}) {
+        std::string const name(enumName(kLightingModeNames, mode));
+        auto frame = [&](bool cubes, bool wires, DebugView view) {
+            PipelineSettings s = plainSettings();
+            s.mode = mode;
+            s.lightCubes = cubes;
+            s.volumeWireframes = wires;
+            s.view = view;
+            FrameStats const st = r->render({cam, lights, s});
+            EXPECT_EQ(st.glErrors, 0u) << name;
+            return std::pair{r->readAttachment(Attachment::Lighting), r->readAttachment(Attachment::Final)};
+        };
+        auto const [lit, display] = frame(false, false, DebugView::Final);
+        // Pixels of the display that changed (any channel by more than one RGBA8 step).
+        auto changed = [&](FloatImage const& other) {
+            int n = 0;
+            for (int y = 0; y < other.height; ++y)
+                for (int x = 0; x < other.width; ++x)
+                    n += glm::length(rgbAt(other, {x, y}) - rgbAt(display, {x, y})) > 1.5f / 255.0f;
+            return n;
+        };
+        auto const [litCubes, displayCubes] = frame(true, false, DebugView::Final);
+        EXPECT_EQ(litCubes.pixels, lit.pixels) << name << ": the cubes are not in the lit image";
+        // The cube at the light's centre, tonemapped (RGBA8 rounding and GPU exp/pow: 2 steps).
+        EXPECT_NEAR(glm::length(rgbAt(displayCubes, centre) - tonemapExposure(light.color * kLightCubeEmissive)), 0.0f,
+                    2.0f / 255.0f)
+            << name;
+        int const cubePixels = changed(displayCubes);
+        EXPECT_GT(cubePixels, 0) << name;
+        EXPECT_LT(cubePixels, 40) << name << ": a small cube, not the whole image";  // 0.6 % of the scene radius
+        auto const [litWires, displayWires] = frame(false, true, DebugView::Final);
+        EXPECT_EQ(litWires.pixels, lit.pixels) << name << ": the wireframes are not in the lit image";
+        EXPECT_GT(changed(displayWires), 20) << name << ": the sphere's lines are on the display";
+        // A view of the G-buffer shows data the overlays would hide: none are drawn over it.
+        if (mode != LightingMode::Forward) {
+            FloatImage const normals = frame(false, false, DebugView::Normal).second;
+            EXPECT_EQ(frame(true, true, DebugView::Normal).second.pixels, normals.pixels) << name;
+        }
+    }
 }
 
 TEST_F(RendererGlTest, ResizeToZeroAndBackKeepsWorking) {
@@ -387,6 +455,13 @@ TEST_F(RendererGlTest, StoppingAfterLightingGivesTheLightSumWithoutCubes) {
     light.position = {0.0f, 1.0f, 0.0f};
     std::vector<PointLight> const lights{light};
     Camera const cam = lookingAt({0, 5, 5}, {0, 0, 0});
+    // The largest difference of the colour channels (alpha is not part of the light sum).
+    auto maxDiff = [](FloatImage const& a, FloatImage const& b) {
+        float m = 0.0f;
+        for (std::size_t i = 0; i < a.pixels.size(); ++i)
+            if (i % 4 != 3) m = std::max(m, std::abs(a.pixels[i] - b.pixels[i]));
+        return m;
+    };
     for (LightingMode mode :
          {LightingMode::Quad, LightingMode::Volumes, LightingMode::Tiled, LightingMode::Clustered}) {
         std::string const name(enumName(kLightingModeNames, mode));
@@ -395,26 +470,27 @@ TEST_F(RendererGlTest, StoppingAfterLightingGivesTheLightSumWithoutCubes) {
         s.lightCubes = false;
         r->render({cam, lights, s});
         FloatImage const withoutCubes = r->readAttachment(Attachment::Lighting);
+        FloatImage const displayWithoutCubes = r->readAttachment(Attachment::Final);
         s.lightCubes = true;
         r->render({cam, lights, s});
         FloatImage const withCubes = r->readAttachment(Attachment::Lighting);
+        FloatImage const displayWithCubes = r->readAttachment(Attachment::Final);
         FrameInput input{cam, lights, s};
         input.stopAfter = PassId::Lighting;
         FrameStats const st = r->render(input);
         EXPECT_EQ(st.stoppedAfter, PassId::Lighting) << name;
         FloatImage const stopped = r->readAttachment(Attachment::Lighting);
         ASSERT_EQ(stopped.pixels.size(), withoutCubes.pixels.size());
-        float diffNoCubes = 0.0f, diffCubes = 0.0f;
-        for (std::size_t i = 0; i < stopped.pixels.size(); ++i) {
-            if (i % 4 == 3) continue;  // alpha: not part of the light sum
-            diffNoCubes = std::max(diffNoCubes, std::abs(stopped.pixels[i] - withoutCubes.pixels[i]));
-            diffCubes = std::max(diffCubes, std::abs(stopped.pixels[i] - withCubes.pixels[i]));
-        }
         EXPECT_GT(maxAbs(stopped, 3), 0.0f) << name << ": the light sum is there";
-        // The same passes drew the same light into the same target: equal to the bit.
-        EXPECT_EQ(diffNoCubes, 0.0f) << name << ": stopped after lighting = a whole frame without cubes";
-        // The cube is drawn at kLightCubeEmissive x white where the floor is far dimmer.
-        EXPECT_GT(diffCubes, 0.5f) << name << ": the full frame with cubes differs by the cube";
+        // The same passes drew the same light into the same target: equal to the bit. The cubes are an
+        // overlay on the display image, so the whole frame's lit image is the same with them.
+        EXPECT_EQ(maxDiff(stopped, withoutCubes), 0.0f) << name << ": stopped after lighting = a frame without cubes";
+        EXPECT_EQ(maxDiff(stopped, withCubes), 0.0f) << name << ": the lit image holds no cube";
+        // On the display, the stopped frame shows no cube: the cube (kLightCubeEmissive x white,
+        // tonemapped to 0.88) is far brighter than the floor there.
+        FloatImage const stoppedDisplay = r->readAttachment(Attachment::Final);
+        EXPECT_EQ(maxDiff(stoppedDisplay, displayWithoutCubes), 0.0f) << name;
+        EXPECT_GT(maxDiff(stoppedDisplay, displayWithCubes), 0.3f) << name << ": the full frame shows the cube";
         EXPECT_EQ(st.glErrors, 0u) << name;
     }
 }

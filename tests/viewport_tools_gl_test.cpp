@@ -167,8 +167,8 @@ TEST_F(ViewportToolsGlTest, LightingViewToolsWorkOnTheHdrValues) {
     state_.viewportTools.viewer.showHistogram = true;
     unsigned const autoTex = ui::serviceViewportTools(state_, *renderer_, frame, 1, true, gpu_);
     ASSERT_NE(autoTex, 0u);
-    // The lit frame's own auto-fit stops at the 99th percentile, below the light cubes and the
-    // brightest highlights, so lit surfaces are not left almost black.
+    // The lit frame's own auto-fit stops at the 99th percentile, below the brightest highlights, so
+    // lit surfaces are not left almost black.
     float const autoMax = state_.viewportTools.viewer.rangeMax;
     // Fit takes the whole range.
     state_.viewportTools.viewer.fitRequested = true;

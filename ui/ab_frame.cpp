@@ -52,9 +52,8 @@ FrameStats renderEditorFrame(EditorState& state, Renderer& renderer, FrameInput 
     ab.pin.diffThreshold = ab.threshold;
     ab.pin.pinRequested = true;
     setLitValues(ab.pin, renderer.readAttachment(Attachment::Lighting), frame);
-    ViewParams shown;
-    shown.view = b.settings.view;
-    renderer.drawView(shown, b, gpu.b);
+    // B's own display image: its view, with the overlays (light cubes, wireframes) drawn on it.
+    renderer.copyDisplay(gpu.b);
     // The normal angle needs B's decoded normals: read before A's frame replaces the G-buffer.
     bool const angle = ab.view == AbView::Diff && ab.metric == AbMetric::NormalAngle;
     FloatImage const normalsB = angle ? renderer.readAttachment(Attachment::Normal) : FloatImage{};

@@ -108,6 +108,19 @@ PassDecl litPass(PassId id, std::vector<Resource> samples, DrawState drawn) {
     return p;
 }
 
+// An overlay (core/frame_passes.h, viewShowsOverlays): drawn onto the display image after the view
+// pass, depth-tested against `depth` (RenderTargets::overlayFbo or overlayGBufferDepthFbo).
+PassDecl overlayPass(PassId id, std::vector<Resource> samples, Resource depth, DrawState drawn) {
+    PassDecl p = declare(id);
+    p.samples = std::move(samples);
+    p.color = {R::Display};
+    p.depthStencil = depth;
+    p.depthRead = drawn.depthTest != DepthTest::Off;
+    p.depthWrite = drawn.depthWrite;
+    p.states = {drawn};
+    return p;
+}
+
 PassDecl lightingPass(PipelineSettings const& s, bool split) {
     GBufferLayoutDesc const& d = layoutDesc(s.layout);
     std::vector<Resource> const lit = split ? std::vector{R::DiffuseLight, R::SpecularLight} : std::vector{R::Lighting};
@@ -205,15 +218,6 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes) {
     }
     out.push_back(litPass(PassId::Forward, {R::Materials, R::Lights},
                           state("blended surfaces", DepthTest::Less, false, Blend::Alpha, FaceCull::Material)));
-    if (s.lightCubes)
-        out.push_back(litPass(PassId::LightCubes, {R::Lights},
-                              state("cubes", DepthTest::Less, true, Blend::Off, FaceCull::Back)));
-    if (wireframes) {
-        PassDecl w = litPass(PassId::Wireframes, {R::Lights, R::VolumeInstances},
-                             state("lines", DepthTest::LessEqual, false, Blend::Off, FaceCull::Off));
-        if (!forward) w.depthStencil = R::GBufferDepth;  // wireframeFbo: the scene's depth without the blit step
-        out.push_back(std::move(w));
-    }
     if (viewNeedsCoverage(s.view)) out.push_back(coveragePass(s));
     PassDecl v = declare(PassId::Display);
     for (GBufferAttachmentDesc const& a : d.attachments()) v.samples.push_back(slotResource(a.slot));  // raw views
@@ -221,15 +225,32 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes) {
     v.color = {R::Display};
     v.states = {fullScreen("view")};
     out.push_back(std::move(v));
+    // The overlays, onto the display image: the lit image stays the light sum.
+    if (!viewShowsOverlays(s.view)) return out;
+    if (s.lightCubes)  // overlayFbo: the lit target's depth, the scene's only after the depth-copy step
+        out.push_back(overlayPass(PassId::LightCubes, {R::Lights}, R::LitDepth,
+                                  state("cubes", DepthTest::Less, true, Blend::Off, FaceCull::Back)));
+    if (wireframes)  // the scene's depth without the depth-copy step: the G-buffer's (forward: its own)
+        out.push_back(overlayPass(PassId::Wireframes, {R::Lights, R::VolumeInstances},
+                                  forward ? R::LitDepth : R::GBufferDepth,
+                                  state("lines", DepthTest::LessEqual, false, Blend::Off, FaceCull::Off)));
     return out;
 }
 
 std::vector<PassDecl> passesUntil(std::vector<PassDecl> passes, PassId stop) {
-    auto const last = std::find_if(passes.begin(), passes.end(), [stop](PassDecl const& p) { return p.id == stop; });
-    if (last == passes.end() || last->id == PassId::Display) return passes;
-    PassDecl display = std::move(passes.back());  // always last (framePasses)
+    auto const at = [&](PassId id) {
+        return std::find_if(passes.begin(), passes.end(), [id](PassDecl const& p) { return p.id == id; });
+    };
+    auto const last = at(stop);
+    if (last == passes.end()) return passes;
+    auto const display = at(PassId::Display);  // always there (framePasses); only overlays follow it
+    if (last >= display) {                     // the display itself or an overlay: nothing after it runs
+        passes.erase(last + 1, passes.end());
+        return passes;
+    }
+    PassDecl shown = std::move(*display);
     passes.erase(last + 1, passes.end());
-    passes.push_back(std::move(display));
+    passes.push_back(std::move(shown));
     return passes;
 }
 

@@ -26,10 +26,10 @@ enum class PassId {
     LightCombine,    // accumulation split: the two light targets into the lit image
     DepthCopy,       // the blit step: the G-buffer depth into the lit target
     Forward,         // blended surfaces, forward-lit over the lit image
-    LightCubes,      // a small unlit cube at each light
-    Wireframes,      // light-volume outlines
+    LightCubes,      // overlay: a small unlit cube at each light, on the display image
+    Wireframes,      // overlay: light-volume outlines, on the display image
     Coverage,        // the counts behind the heat map and lights-per-tile views
-    Display,         // tonemap or debug view into the display image
+    Display,         // tonemap or debug view into the display image (the overlays follow it)
 };
 inline constexpr std::array<std::string_view, 12> kPassNames{
     "forward_shading", "geometry", "light_lists", "volume_depth", "lighting", "light_combine",
@@ -138,16 +138,26 @@ constexpr bool viewNeedsCoverage(DebugView v) {
     return v == DebugView::Heatmap || v == DebugView::TileLights;
 }
 
+// Whether the display shows the overlays (light cubes, volume wireframes): only on the views of the
+// lit image, the final picture and the HDR lighting view, where they appeared when they were drawn
+// into the lit image. The G-buffer and count views show data the overlays would hide, so they get
+// none; the lit image itself never holds them (it is the light sum, what lighting.exr exports).
+constexpr bool viewShowsOverlays(DebugView v) {
+    return v == DebugView::Final || v == DebugView::Lighting;
+}
+
 // The passes RendererImpl::render runs, in order, for a frame with `settings` as it ran (the mode
 // after any fallback; split accumulation is ignored in forward mode, as the renderer does).
-// `wireframes`: whether the volume outlines are drawn (the setting, or an accumulation outline).
+// `wireframes`: whether the volume outlines are asked for (the setting, or an accumulation outline);
+// they, and the light cubes, run after the display pass, and only when viewShowsOverlays(view).
 std::vector<PassDecl> framePasses(PipelineSettings const& settings, bool wireframes);
 inline std::vector<PassDecl> framePasses(PipelineSettings const& settings) {
     return framePasses(settings, settings.volumeWireframes);
 }
 
 // Stopping after a pass (FrameInput::stopAfter): the passes up to and including `stop`, then the
-// display pass, which shows the frame as it stands. `passes` unchanged when `stop` is not among them.
+// display pass if `stop` came before it, which shows the frame as it stands (an overlay after it
+// keeps the display and the overlays before it). `passes` unchanged when `stop` is not among them.
 std::vector<PassDecl> passesUntil(std::vector<PassDecl> passes, PassId stop);
 // Why the frame of `passes` cannot stop after the pass called `name` (no pass has that name, or this
 // frame does not run it), in one sentence naming the passes it runs; nullopt when it can.

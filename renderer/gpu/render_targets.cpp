@@ -1,4 +1,4 @@
-// Allocation of the G-buffer, the HDR target and the display target.
+// Allocation of the G-buffer, the HDR target, the display target and the overlays' framebuffers.
 #include "gpu/render_targets.h"
 
 #include <string>
@@ -50,7 +50,6 @@ std::optional<std::string> createRenderTargets(int width, int height, GBufferLay
         out.volumeDepth = Texture::create2D(glInternalFormat(desc.depthFormat()), width, height, "volumes.depth");
     Texture const* volumeDepth = &out.volumeDepthStencil();
     out.volumeFbo = Framebuffer::create({&out.lighting}, volumeDepth, "lighting.volumes");
-    out.wireframeFbo = Framebuffer::create({&out.lighting}, &g.depth, "lighting.wireframes");
     out.diffuseLight = Texture::create2D(GL_RGBA16F, width, height, "lighting.diffuse");
     out.specularLight = Texture::create2D(GL_RGBA16F, width, height, "lighting.specular");
     out.splitFbo = Framebuffer::create({&out.diffuseLight, &out.specularLight}, nullptr, "lighting.split");
@@ -60,9 +59,11 @@ std::optional<std::string> createRenderTargets(int width, int height, GBufferLay
     out.coverageFbo = Framebuffer::create({&out.coverage}, volumeDepth, "coverage");
     out.display = Texture::create2D(GL_RGBA8, width, height, "display");
     out.displayFbo = Framebuffer::create({&out.display}, nullptr, "display");
+    out.overlayFbo = Framebuffer::create({&out.display}, &out.litDepth, "display.overlays");
+    out.overlayGBufferDepthFbo = Framebuffer::create({&out.display}, &g.depth, "display.overlays.gbuffer_depth");
 
-    for (Framebuffer const* fb : {&g.fbo, &out.litFbo, &out.volumeFbo, &out.wireframeFbo, &out.splitFbo,
-                                  &out.splitVolumeFbo, &out.coverageFbo, &out.displayFbo})
+    for (Framebuffer const* fb : {&g.fbo, &out.litFbo, &out.volumeFbo, &out.splitFbo, &out.splitVolumeFbo,
+                                  &out.coverageFbo, &out.displayFbo, &out.overlayFbo, &out.overlayGBufferDepthFbo})
         if (fb->error()) return fb->error();
     return std::nullopt;
 }

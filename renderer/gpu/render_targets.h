@@ -55,9 +55,6 @@ struct RenderTargets {
     // lighting + volumeDepthStencil(): the light volumes test against the scene depth (and use its
     // stencil) without needing the blit step.
     gl::Framebuffer volumeFbo;
-    // lighting + the G-buffer's depth-stencil: the wireframes test against the scene depth; they
-    // sample nothing of the G-buffer.
-    gl::Framebuffer wireframeFbo;
     // Accumulation targets of `accumulation: split` (RGBA16F each): diffuse light (N.L * att *
     // colour, no albedo) and specular light; the combine pass turns them into `lighting`.
     gl::Texture diffuseLight;
@@ -67,7 +64,17 @@ struct RenderTargets {
     gl::Texture coverage;            // RG32F: x = volumes that covered the pixel, y = lights that lit it
     gl::Framebuffer coverageFbo;     // coverage + volumeDepthStencil(): the volume counts
     gl::Texture display;             // RGBA8 final image
-    gl::Framebuffer displayFbo;
+    gl::Framebuffer displayFbo;      // display alone: the view pass
+    // The overlays (light cubes, volume wireframes) are drawn onto the display image after the view
+    // pass, so the lit image stays the light sum. Each framebuffer pairs the display with a scene
+    // depth to test against; neither depth is sampled by the overlays, and the display image is
+    // sampled by nothing, so there is no feedback loop.
+    // display + litDepth: the cubes (and forward mode's wireframes). In deferred modes litDepth
+    // holds the scene only when the depth-copy step ran, so without it the cubes show through walls.
+    gl::Framebuffer overlayFbo;
+    // display + the G-buffer's depth-stencil: the deferred modes' wireframes, which test against
+    // the scene's depth whether or not the depth-copy step ran.
+    gl::Framebuffer overlayGBufferDepthFbo;
 
     bool empty() const { return width == 0 || height == 0; }
     // What volumeFbo, splitVolumeFbo and coverageFbo attach as depth-stencil.

@@ -1,4 +1,4 @@
-// Light cubes pass.
+// Light cubes pass: an overlay on the display image.
 #include "passes/light_cubes.h"
 
 #include "core/frame_types.h"
@@ -7,7 +7,7 @@ namespace gbl {
 
 void lightCubesPass(LightCubesInput const& in, LightCubesConfig const& config) {
     if (in.lights.count == 0) return;
-    glBindFramebuffer(GL_FRAMEBUFFER, in.target.fbo.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, in.target.id());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
@@ -18,6 +18,7 @@ void lightCubesPass(LightCubesInput const& in, LightCubesConfig const& config) {
     in.program.set("uViewProj", config.viewProj);
     in.program.set("uCubeSize", config.halfSize);
     in.program.set("uEmissive", kLightCubeEmissive);
+    setTonemapUniforms(in.program, config.tonemap);
     bindLights(in.program, in.lights);
     glBindVertexArray(in.cube.id());
     glDrawArraysInstanced(GL_TRIANGLES, 0, 36, in.lights.count);

@@ -1,4 +1,5 @@
-// Light cubes: one small emissive cube per light, drawn unlit into the HDR image.
+// Light cubes: one small emissive cube per light, an overlay drawn unlit onto the display image
+// (after the view pass, tonemapped as the lit image is), depth-tested against the scene.
 #pragma once
 
 #include "gl/vertex_array.h"
@@ -10,11 +11,14 @@ struct LightCubesInput {
     LightBuffer const& lights;
     gl::Program const& program;   // ProgramId::LightCube
     gl::VertexArray const& cube;  // 36 vertices of a unit cube
-    LitTarget target;             // depth-tested against its depth (the blit step's copy)
+    // RenderTargets::overlayFbo: the display image with the lit target's depth, which holds the
+    // G-buffer's depth only when the depth-copy step ran (forward mode: its own depth).
+    gl::Framebuffer const& target;
 };
 struct LightCubesConfig {
     glm::mat4 viewProj{1.0f};
     float halfSize = 0.05f;
+    DisplayTonemap tonemap{};  // the display pass's, so a cube looks as it would in the lit image
 };
 
 void lightCubesPass(LightCubesInput const& in, LightCubesConfig const& config);

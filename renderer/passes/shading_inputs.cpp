@@ -36,6 +36,11 @@ void setShadingUniforms(gl::Program const& p, ShadingUniforms const& s) {
     p.set("uSplitAccumulation", s.splitAccumulation ? 1 : 0);
 }
 
+void setTonemapUniforms(gl::Program const& p, DisplayTonemap const& t) {
+    p.set("uTonemap", int(t.tonemap));
+    p.set("uExposure", t.exposure);
+}
+
 void bindLightImages(gl::Texture const& lit, gl::Texture const& specular, gl::Texture const& coverage) {
     glBindImageTexture(slot::BIND_IMAGE_LIGHTING, lit.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glBindImageTexture(slot::BIND_IMAGE_SPECULAR_LIGHT, specular.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);

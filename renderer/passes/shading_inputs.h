@@ -2,6 +2,7 @@
 // the uniforms of shaders/lighting.glsl, bound to the slots of shaders/bindings.glsl.
 #pragma once
 
+#include "core/pipeline_settings.h"
 #include "gl/framebuffer.h"
 #include "gl/program.h"
 #include "gpu/light_buffer.h"
@@ -34,6 +35,14 @@ void bindGBuffer(GBuffer const& gbuffer);
 // The light buffer on BIND_LIGHTS, and uLightCount.
 void bindLights(gl::Program const& program, LightBuffer const& lights);
 void setShadingUniforms(gl::Program const& program, ShadingUniforms const& shading);
+
+// The display's tonemap (the uniforms of shaders/tonemap.glsl): the view pass applies it to the lit
+// image, and the overlays drawn on the display image after it apply it to their HDR colour.
+struct DisplayTonemap {
+    Tonemap tonemap = Tonemap::Exposure;
+    float exposure = 1.0f;
+};
+void setTonemapUniforms(gl::Program const& program, DisplayTonemap const& tonemap);
 
 // The images a compute lighting pass writes: the lit (or diffuse) image on BIND_IMAGE_LIGHTING,
 // split accumulation's specular light on BIND_IMAGE_SPECULAR_LIGHT, the counts on

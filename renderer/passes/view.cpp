@@ -23,8 +23,7 @@ void viewPass(ViewInput const& in, ViewConfig const& c) {
     bindTextureUnit(slot::BIND_SPECULAR_LIGHT, GL_TEXTURE_2D, in.specularLight.id());
     ViewParams const& v = c.params;
     p.set("uView", int(v.view));
-    p.set("uTonemap", int(c.tonemap));
-    p.set("uExposure", c.exposure);
+    setTonemapUniforms(p, {c.tonemap, c.exposure});
     p.set("uChannelMask", glm::vec4(v.channelMask & 1 ? 1 : 0, v.channelMask & 2 ? 1 : 0, v.channelMask & 4 ? 1 : 0,
                                     v.channelMask & 8 ? 1 : 0));
     p.set("uRangeMin", v.rangeMin);

@@ -1,4 +1,4 @@
-// Light-volume wireframes pass.
+// Light-volume wireframes pass: an overlay on the display image.
 #include "passes/wireframes.h"
 
 #include "core/light_math.h"
@@ -40,7 +40,7 @@ void wireframesPass(WireframesInput const& in, WireframesConfig const& config) {
     int const total = config.count < 0 ? prepared - first : std::min(config.count, prepared - first);
     int const arrows = config.count < 0 ? int(in.lights.directional.size()) : 0;
     if (total <= 0 && arrows == 0) return;
-    glBindFramebuffer(GL_FRAMEBUFFER, in.target.fbo.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, in.target.id());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
@@ -55,6 +55,7 @@ void wireframesPass(WireframesInput const& in, WireframesConfig const& config) {
     p.set("uConeRadialScale", v.coneRadialScale);
     p.set("uVolumeScale", v.volumeScale);
     p.set("uWireIntensity", config.intensity);
+    setTonemapUniforms(p, config.tonemap);
     // The requested range split at the sphere/cone boundary: spheres first, then cones (the spot's
     // cone is its direction and angle drawn in the viewport).
     int const sphereEnd = v.sphereCount(), end = first + total;

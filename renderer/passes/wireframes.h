@@ -1,5 +1,6 @@
 // Light-volume wireframes: each light's enclosing sphere or cone (the very mesh the volumes pass draws)
-// as lines in the light's colour, depth-tested against the scene and drawn into the HDR image.
+// as lines in the light's colour, depth-tested against the scene: an overlay drawn onto the display
+// image after the view pass (tonemapped as the lit image is), so the lit image stays the light sum.
 #pragma once
 
 #include "core/camera.h"
@@ -16,13 +17,15 @@ struct WireframesInput {
     LightBuffer const& lights;
     LightVolumeGpu const& volumes;  // instances prepared for this frame
     gl::Program const& program;     // ProgramId::LightVolumeWire
-    // Holds the scene's depth: wireframeFbo (G-buffer depth), or litFbo in forward mode.
-    LitTarget target;
+    // The display image with the scene's depth: overlayGBufferDepthFbo (the G-buffer's depth, so
+    // the lines need no depth-copy step), or overlayFbo in forward mode (forward's own depth).
+    gl::Framebuffer const& target;
 };
 struct WireframesConfig {
     glm::mat4 viewProj{1.0f};
-    float intensity = 2.0f;  // HDR brightness, so the lines survive tonemapping
-    int firstInstance = 0;   // a range of the prepared instances; count -1 = all of them
+    float intensity = 2.0f;    // HDR brightness, so the lines survive tonemapping
+    DisplayTonemap tonemap{};  // the display pass's
+    int firstInstance = 0;     // a range of the prepared instances; count -1 = all of them
     int count = -1;
     // With every instance drawn (count -1), each directional light also gets an arrow this long
     // from its position along its direction.

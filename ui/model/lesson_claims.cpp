@@ -63,10 +63,21 @@ ClaimResult losesLight(LessonClaim const& c, ClaimFrame const& f, ClaimImages co
                     " on the CPU" + (visible ? "" : " (too faint to show)")};
 }
 
+// The step's and the reference's image a comparing claim reads (LessonClaim::image), or nullopt
+// without a reference frame.
+std::optional<std::pair<FloatImage const*, FloatImage const*>> comparedImages(LessonClaim const& c,
+                                                                              ClaimImages const& im) {
+    bool const final = c.image == Attachment::Final;
+    std::optional<FloatImage> const& reference = final ? im.referenceDisplay : im.referenceLighting;
+    if (!reference) return std::nullopt;
+    return std::pair{final ? &im.display : &im.lighting, &*reference};
+}
+
 ClaimResult sameImage(LessonClaim const& c, ClaimImages const& im) {
-    if (!im.referenceLighting) return {false, "no reference frame"};
-    FloatImage const& a = im.lighting;
-    FloatImage const& b = *im.referenceLighting;
+    auto const images = comparedImages(c, im);
+    if (!images) return {false, "no reference frame"};
+    FloatImage const& a = *images->first;
+    FloatImage const& b = *images->second;
     if (a.width != b.width || a.height != b.height) return {false, "the frames differ in size"};
     float maxAbs = 0.0f;
     glm::ivec2 where{0};
@@ -84,9 +95,10 @@ ClaimResult sameImage(LessonClaim const& c, ClaimImages const& im) {
 }
 
 ClaimResult differsFrom(LessonClaim const& c, ClaimImages const& im) {
-    if (!im.referenceLighting) return {false, "no reference frame"};
-    FloatImage const& a = im.lighting;
-    FloatImage const& b = *im.referenceLighting;
+    auto const images = comparedImages(c, im);
+    if (!images) return {false, "no reference frame"};
+    FloatImage const& a = *images->first;
+    FloatImage const& b = *images->second;
     if (a.width != b.width || a.height != b.height) return {false, "the frames differ in size"};
     int covered = 0, differing = 0;
     for (int y = 0; y < a.height; ++y)

@@ -19,15 +19,17 @@
 namespace gbl::ui {
 
 // The images of the step's frame (rows top to bottom, as Renderer::readAttachment returns
-// them) and, for claims with a reference, the reference frame's lit image.
+// them) and, for claims with a reference, the reference frame's lit and display images.
 struct ClaimImages {
     FloatImage lighting;
+    FloatImage display;  // the final image, with the overlays (same_image / differs_from on "final")
     FloatImage position;
     FloatImage normal;
     FloatImage albedoSpec;
     FloatImage depth;
     FloatImage coverage;  // filled only when the step shows the heat map or the tile view
     std::optional<FloatImage> referenceLighting;
+    std::optional<FloatImage> referenceDisplay;
 };
 
 struct ClaimFrame {

@@ -109,6 +109,9 @@ struct LessonClaim {
     Attachment attachment = Attachment::Normal;  // attachment_equals
     glm::vec4 value{0.0f};                       // attachment_equals
     unsigned compare = 0x7;                      // attachment_equals: bit i = component i is compared
+    // same_image, differs_from: which image is compared, the lit image (the light sum) or the display
+    // image (Attachment::Final), which alone shows the overlays (light cubes, wireframes).
+    Attachment image = Attachment::Lighting;
 };
 
 // --- text ------------------------------------------------------------------------------------

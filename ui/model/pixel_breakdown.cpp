@@ -119,7 +119,7 @@ ValueCheck checkStoredValue(glm::vec3 stored, PixelBreakdown const& b, PipelineS
     } else {
         check.cause =
             "stored is above the sum of the lights: something else is drawn into the lit image here "
-            "(light cubes, wireframes, a blended object)";
+            "(a blended object; the light cubes and wireframes are drawn on the display image, not into it)";
     }
     return check;
 }

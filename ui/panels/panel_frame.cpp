@@ -212,7 +212,8 @@ void drawDetails(FramePanelState& state, FrameStats const& last) {
     ImGui::Text("%s", p.name().data());
     ImGui::SameLine();
     bool const stopsHere = state.stopAfter == p.id;
-    bool const last_ = p.id == PassId::Display;
+    // The last pass: the display, or the last overlay drawn on it after the display pass.
+    bool const last_ = selected + 1 == state.passes.end();
     if (last_) ImGui::BeginDisabled();
     if (ImGui::SmallButton(stopsHere ? "Run whole frame" : "Stop here")) {
         if (stopsHere)
@@ -224,7 +225,7 @@ void drawDetails(FramePanelState& state, FrameStats const& last) {
     ImVec2 const bmin = ImGui::GetItemRectMin(), bsize = ImGui::GetItemRectSize();
     state.stopButton = glm::vec4(bmin.x, bmin.y, bsize.x, bsize.y);
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("%s", last_ ? "the display pass is the last: the whole frame runs"
+        ImGui::SetTooltip("%s", last_ ? "the frame's last pass: the whole frame runs"
                                 : stopsHere
                                     ? "run every pass again"
                                     : "skip the passes after this one; the viewport shows the frame as it stands");

@@ -151,8 +151,19 @@ Attachment attachmentNamed(json const& j, std::string const& field) {
     fail(field, "must be one of position, normal, albedo_spec, depth or lighting (got " + j.dump() + ")");
 }
 
+// A comparing claim's optional "image": "lighting" (the default, the light sum) or "final" (the display
+// image, which alone shows the light cubes and wireframes).
+Attachment comparedImage(json const& c, std::string const& path) {
+    auto it = c.find("image");
+    if (it == c.end()) return Attachment::Lighting;
+    if (it->is_string() && it->get<std::string>() == "lighting") return Attachment::Lighting;
+    if (it->is_string() && it->get<std::string>() == "final") return Attachment::Final;
+    fail(path + ".image", "must be lighting or final (got " + it->dump() + ")");
+}
+
 LessonClaim readClaim(json const& c, std::string const& path, json const& state, LessonStep const& step) {
-    knownFields(c, path, {"kind", "light", "reference", "tolerance", "bound", "min_fraction", "attachment", "value"});
+    knownFields(c, path,
+                {"kind", "light", "reference", "tolerance", "bound", "min_fraction", "attachment", "value", "image"});
     auto kindIt = c.find("kind");
     if (kindIt == c.end()) fail(path + ".kind", "is missing");
     std::string names;
@@ -183,6 +194,7 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
             break;
         case ClaimKind::SameImage:
             claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
+            claim.image = comparedImage(c, path);
             break;
         case ClaimKind::FewerLitPixels:
             claim.minFraction = number(need("min_fraction"), path + ".min_fraction", 0.0f, 1.0f);
@@ -215,6 +227,7 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
         case ClaimKind::DiffersFrom:
             claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
             claim.minFraction = number(need("min_fraction"), path + ".min_fraction", 0.0f, 1.0f);
+            claim.image = comparedImage(c, path);
             break;
         case ClaimKind::MatchesCpu:
             break;
