@@ -67,7 +67,9 @@ void drawCourse(LessonState& state, std::span<Lesson const> lessons, std::span<L
         wrappedText("No lessons were found.");
         return;
     }
-    ImGui::TextDisabled("Course: %zu lessons. Click one to open it where you left it.", lessons.size());
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    wrappedText("%zu lessons: click one to open it where you left it.", lessons.size());
+    ImGui::PopStyleColor();
     float const restartWidth = ImGui::CalcTextSize("Restart").x + ImGui::GetStyle().FramePadding.x * 2.0f;
     state.courseRows.assign(lessons.size(), glm::vec4(0.0f));
     state.courseRestart.assign(lessons.size(), glm::vec4(0.0f));
