@@ -5,7 +5,8 @@
 # steps seen are counted and written to the progress file in the config folder; after the editor
 # quits and starts again with the same XDG_CONFIG_HOME the course shows the same progress and the
 # lesson reopens at the step left; "Next lesson" at the last step opens the next lesson; Restart
-# clears that lesson's progress only. Every check reads --log-frames; screenshots stay in WORK_DIR.
+# clears that lesson's progress only; a progress file that cannot be read gives no progress and is
+# moved aside (.broken) at the first new progress. Every check reads --log-frames; screenshots stay in WORK_DIR.
 # usage: ui_course.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
 set -eu
 bin="$1"
@@ -116,6 +117,21 @@ grep -q '"position_from_depth"' "$progress_file" && fail "the progress file stil
 grep -q '"fullscreen_pass"' "$progress_file" || fail "the progress file lost another lesson's progress"
 shot course-restarted
 echo "Restart: position_from_depth $(progress position_from_depth), fullscreen_pass $(progress fullscreen_pass)"
+ui_stop
+rm -f "$GBL_RECOVERY_DIR"/*
+
+# --- a progress file that cannot be read: no progress, and the file is kept until new progress ----
+printf 'not json' > "$progress_file"
+start_editor broken
+[ "$(progress fullscreen_pass)" = "0/3 0/0 0/0" ] || fail "a broken progress file gave progress: $(field courseProgress)"
+[ "$(cat "$progress_file")" = "not json" ] || fail "the broken progress file was written over before any progress"
+[ "$(grep -c "progress file not read" "$work/broken.log")" = 1 ] ||
+    fail "not one message about the broken progress file: $(cat "$work/broken.log")"
+click_row courseRows 3
+[ "$(field lesson)" = '"fullscreen_pass:1"' ] || fail "the third row did not open fullscreen_pass:1 ($(field lesson))"
+[ "$(cat "$progress_file.broken" 2>/dev/null)" = "not json" ] || fail "the broken file was not moved aside to .broken"
+grep -q '"fullscreen_pass"' "$progress_file" || fail "no new progress file after the broken one"
+echo "broken file: no progress at start, kept as $progress_file.broken at the first progress"
 ui_stop
 rm -f "$GBL_RECOVERY_DIR"/*
 echo "ui_course: PASS"

@@ -145,8 +145,8 @@ void start(Editor& editor, int index, std::optional<int> step = std::nullopt) {
     showStep(editor, step.value_or(ui::resumeStep(editor.progress, lesson.id, int(lesson.steps.size()))));
 }
 
-// "Restart": that lesson's progress is forgotten (a running lesson keeps running; the step shown
-// counts as seen again when the student moves on).
+// "Restart" in the course view: that lesson's progress, and only that lesson's, is forgotten; the
+// lesson then opens at its first step.
 void restart(Editor& editor, int index) {
     if (index < 0 || index >= int(editor.lessonLibrary.lessons.size())) return;
     ui::Lesson const& lesson = editor.lessonLibrary.lessons[std::size_t(index)];

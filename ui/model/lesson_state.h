@@ -170,7 +170,7 @@ struct LessonState {
     bool glossaryRequested = false;   // open the glossary (glossaryTerm: at that term, or "")
     std::string glossaryTerm;
     glm::ivec2 pixelFrameSize{0};  // the frame size the step's pixel was placed for; a resize re-places it
-    // Window centres of the Start, Back, Next, Leave, Show answer, Check my prediction, first
+    // Window centres of the course's first row, Back, Next, Leave, Show answer, Check my prediction, first
     // choice (or the number field), Glossary and first "Terms:" buttons as last drawn (0, 0 = not
     // drawn or not wholly in view), for UI tests that click them.
     std::array<glm::vec2, 9> buttonCentres{};
