@@ -115,16 +115,21 @@ void drawPrediction(LessonState& state, LessonPrediction const& p, LessonValues 
         if (!p.choices.empty()) {
             for (std::size_t i = 0; i < p.choices.size(); ++i) {
                 ImGui::PushID(int(i));
-                if (ImGui::RadioButton(p.choices[i].c_str(), state.predictChoice == int(i)))
-                    state.predictChoice = int(i);
+                // The choice's text wraps beside its button (a RadioButton's own label does not).
+                if (ImGui::RadioButton("##choice", state.predictChoice == int(i))) state.predictChoice = int(i);
                 if (i == 0) state.buttonCentres[6] = itemCentre();
+                ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+                ImGui::BeginGroup();  // its second line starts under its first, not under the button
+                wrappedText("%s", p.choices[i].c_str());
+                ImGui::EndGroup();
+                if (ImGui::IsItemClicked()) state.predictChoice = int(i);
                 ImGui::PopID();
             }
             // The button beside the last choice where it fits: one line less in a short window.
             float const button = ImGui::CalcTextSize("Check my prediction").x + ImGui::GetStyle().FramePadding.x * 2.0f;
-            if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x * 4.0f + button <
+            if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + button <
                 ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x)
-                ImGui::SameLine(0.0f, ImGui::GetStyle().ItemSpacing.x * 4.0f);
+                ImGui::SameLine();
         } else {
             ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
             ImGui::InputFloat("your number", &state.predictNumber, 0.0f, 0.0f, "%.3g");
@@ -247,14 +252,15 @@ void drawStep(LessonState& state, std::span<Lesson const> lessons, LessonValues 
     // The step's title only: the lesson's is in the course the student opened it from, and a
     // second line here would push the checklist or the prediction's button below the fold.
     wrappedText("%s", step.text.title.c_str());
-    if (state.step >= n - 1 && state.lesson + 1 < int(lessons.size())) {
+    bool const waiting = step.predict && !state.predicted;  // the step's change is not shown yet
+    // At the end of the last step (its prediction made), the course goes on.
+    if (!waiting && state.step >= n - 1 && state.lesson + 1 < int(lessons.size())) {
         std::string const label = "Next lesson: " + lessons[std::size_t(state.lesson) + 1].title;
         if (ImGui::Button(label.c_str())) state.startRequest = state.lesson + 1;
         state.nextLessonButton = itemRect();
     }
     ImGui::Separator();
-    bool const waiting = step.predict && !state.predicted;  // the step's change is not shown yet
-    if (!waiting) drawTasks(state, step, values);           // what to do with the tools, before the answer is revealed
+    if (!waiting) drawTasks(state, step, values);  // what to do with the tools, before the answer is revealed
     if (step.predict) drawPrediction(state, *step.predict, values);
     if (!waiting) {
         if (ImGui::Button(state.answerShown ? "Hide answer" : "Show answer")) {
