@@ -1,5 +1,5 @@
 #!/bin/sh
-# The Lessons window driven by real X clicks (xdotool): Start opens the first lesson at step 1,
+# The Lessons window driven by real X clicks (xdotool): the course view's first row opens the first lesson at step 1,
 # Next and Back step through it (each step sets its pipeline view and one undo entry), Leave
 # returns the editor to the camera and view it had before and drops the lit pin and diff made
 # during the lesson; Ctrl+Q in a lesson quits without an unsaved-edits question; a pixel task ticks
@@ -16,7 +16,7 @@ log="$work/frames.jsonl"
 ui_require_xdotool
 ui_fresh_work
 
-# button N: window coordinates of Lessons button N (1 Start, 2 Back, 3 Next, 4 Leave, 5 Show answer,
+# button N: window coordinates of Lessons button N (1 the course's first row, 2 Back, 3 Next, 4 Leave, 5 Show answer,
 # 6 Check my prediction, 7 the prediction's first choice, 8 Glossary, 9 the first term under the step).
 button() {
     field lessonButtons | tr -d '[]' | awk -F, -v n="$1" '{ printf "%d %d", $(2 * n - 1), $(2 * n) }'

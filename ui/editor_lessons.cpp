@@ -1,11 +1,12 @@
-// The Lessons window in the editor: the lesson files, the text's live values, and carrying out
-// what the window asked for (start, step, leave, save a step, open a file) with one undo entry
-// per step.
+// The Lessons window in the editor: the lesson files, the course progress file, the text's live
+// values, and carrying out what the window asked for (start, step, leave, restart, save a step,
+// open a file) with one undo entry per step.
 #include "editor_loop.h"
 
 #include "model/lesson_text.h"
 #include "panels/panel_glossary.h"
 #include "panels/panel_lessons.h"
+#include "session/lesson_progress_file.h"
 
 #include <chrono>
 #include <filesystem>
@@ -25,6 +26,38 @@ void report(Editor& editor, std::string message, bool error) {
 
 glm::ivec2 frameSize(Editor const& editor) {
     return {editor.renderer->width(), editor.renderer->height()};
+}
+
+// Reads the progress file once, with the lessons. A file that cannot be read gives one message and
+// no progress; it stays as it is until there is new progress, and is then moved aside (.broken).
+void loadProgress(Editor& editor) {
+    std::string why;
+    std::optional<std::string> const path = ui::progressFilePath(&why);
+    if (!path) {
+        ui::logMessage(editor.state.log, "lessons: progress is not kept: " + why, true);
+        return;
+    }
+    editor.progressPath = *path;
+    ui::ProgressLoad load = ui::loadProgress(*path);
+    if (!load.error.empty()) {
+        editor.progressBroken = true;
+        ui::logMessage(editor.state.log,
+                       "lessons: progress file not read, starting with no progress (" + load.error +
+                           "); the file is kept as " + *path + ".broken when new progress is saved",
+                       true);
+        return;
+    }
+    editor.progress = std::move(load.progress);
+}
+
+// Writes the progress file; called whenever the progress changed.
+void saveProgress(Editor& editor) {
+    if (editor.progressPath.empty()) return;
+    if (std::exchange(editor.progressBroken, false))
+        if (auto error = ui::keepBrokenProgress(editor.progressPath))
+            ui::logMessage(editor.state.log, "lessons: " + *error, true);
+    if (auto error = ui::saveProgress(editor.progressPath, editor.progress))
+        ui::logMessage(editor.state.log, "lessons: progress not saved: " + *error, true);
 }
 
 // Seconds on the editor's clock, for the tasks' hint timing.
@@ -50,6 +83,10 @@ void checkTasks(Editor& editor) {
     ctx.frameSize = frameSize(editor);
     ctx.lessonSize = {lesson.width, lesson.height};
     ui::updateTasks(l.tasks, s.tasks, ctx, nowSeconds());
+    bool changed = false;
+    for (std::size_t i = 0; i < l.tasks.size(); ++i)
+        if (l.tasks[i].met) changed |= ui::markTaskDone(editor.progress, lesson.id, l.step, int(i));
+    if (changed) saveProgress(editor);
 }
 
 void showStep(Editor& editor, int step) {
@@ -74,6 +111,7 @@ void showStep(Editor& editor, int step) {
     editor.actionLog.push_back("lesson " + lesson.id + " step " + std::to_string(l.step + 1));
     l.message.clear();
     l.pixelFrameSize = frameSize(editor);
+    if (ui::markStepSeen(editor.progress, lesson.id, l.step)) saveProgress(editor);
 }
 
 // The step's pixel is a fraction of the frame: when the viewport (and so the frame) changes
@@ -86,7 +124,8 @@ void keepStepPixel(Editor& editor) {
     l.pixelFrameSize = frameSize(editor);
 }
 
-void start(Editor& editor, int index) {
+// Opens lesson `index` at `step`, or where the student left it.
+void start(Editor& editor, int index, std::optional<int> step = std::nullopt) {
     LessonState& l = editor.lessons;
     if (index < 0 || index >= int(editor.lessonLibrary.lessons.size())) return;
     if (!editor.state.sceneSource.empty() && editor.state.sceneSource != "default") {
@@ -102,7 +141,19 @@ void start(Editor& editor, int index) {
         ui::applyLessonReturn(*l.before, editor.state, frameSize(editor));
     }
     l.lesson = index;
-    showStep(editor, 0);
+    ui::Lesson const& lesson = editor.lessonLibrary.lessons[std::size_t(index)];
+    showStep(editor, step.value_or(ui::resumeStep(editor.progress, lesson.id, int(lesson.steps.size()))));
+}
+
+// "Restart" in the course view: that lesson's progress, and only that lesson's, is forgotten; the
+// lesson then opens at its first step.
+void restart(Editor& editor, int index) {
+    if (index < 0 || index >= int(editor.lessonLibrary.lessons.size())) return;
+    ui::Lesson const& lesson = editor.lessonLibrary.lessons[std::size_t(index)];
+    if (!ui::restartLesson(editor.progress, lesson.id)) return;
+    saveProgress(editor);
+    editor.actionLog.push_back("lesson " + lesson.id + " restarted");
+    report(editor, "progress of \"" + lesson.title + "\" cleared", false);
 }
 
 // The student's prediction: right or wrong, then the step's own state (its change) is applied.
@@ -121,6 +172,7 @@ void checkPrediction(Editor& editor) {
         editor.sessions->lessonStepShown(editor.state);
     }
     editor.actionLog.push_back(std::string("lesson prediction ") + (l.predictedRight ? "right" : "wrong"));
+    if (ui::markPrediction(editor.progress, lesson.id, l.step, l.predictedRight)) saveProgress(editor);
 }
 
 void leave(Editor& editor) {
@@ -199,6 +251,17 @@ void lessonLogFields(Editor const& editor, ui::FrameLogLine& line) {
     line.lessonGlossary = editor.glossaryWindow.open;
     line.lessonGlossaryTerm = editor.glossaryWindow.shownTerm;
     line.view = std::string(enumName(kDebugViewNames, editor.state.pipeline.view));
+    line.courseRows = l.courseRows;
+    line.courseRestart = l.courseRestart;
+    line.nextLesson = l.nextLessonButton;
+    line.courseProgress.clear();
+    for (ui::Lesson const& lesson : editor.lessonLibrary.lessons) {
+        ui::LessonCounts const c = ui::countProgress(editor.progress, lesson.id, ui::lessonShape(lesson));
+        if (!line.courseProgress.empty()) line.courseProgress += '|';
+        line.courseProgress += lesson.id + " " + std::to_string(c.stepsSeen) + "/" + std::to_string(c.steps) + " " +
+                               std::to_string(c.tasksDone) + "/" + std::to_string(c.tasks) + " " +
+                               std::to_string(c.predictionsRight) + "/" + std::to_string(c.predictionsAsked);
+    }
 }
 
 void drawLessons(Editor& editor) {
@@ -206,6 +269,7 @@ void drawLessons(Editor& editor) {
         editor.lessonLibrary = ui::loadLessonDir(ui::defaultLessonDir());
         editor.lessonsLoaded = true;
         for (auto const& e : editor.lessonLibrary.errors) ui::logMessage(editor.state.log, e, true);
+        loadProgress(editor);
         editor.glossary = ui::loadGlossary(ui::defaultGlossaryPath());
         if (!editor.glossary.error.empty()) ui::logMessage(editor.state.log, editor.glossary.error, true);
         if (editor.options.lesson) {
@@ -214,8 +278,7 @@ void drawLessons(Editor& editor) {
                 report(editor, "--lesson: " + ref.error, true);
             } else {
                 editor.lessons.picked = ref.lesson;
-                start(editor, ref.lesson);
-                if (editor.lessons.lesson == ref.lesson) showStep(editor, ref.step);
+                start(editor, ref.lesson, ref.step);
             }
         }
     }
@@ -232,10 +295,14 @@ void drawLessons(Editor& editor) {
     values.pipeline = state.pipeline;
     values.lightCount = int(state.lights.size());
     values.frameSize = frameSize(editor);
-    ui::drawLessonsPanel(editor.lessons, editor.lessonLibrary.lessons, editor.lessonLibrary.errors, values,
+    std::vector<ui::LessonCounts> counts;
+    for (ui::Lesson const& lesson : editor.lessonLibrary.lessons)
+        counts.push_back(ui::countProgress(editor.progress, lesson.id, ui::lessonShape(lesson)));
+    ui::drawLessonsPanel(editor.lessons, editor.lessonLibrary.lessons, counts, editor.lessonLibrary.errors, values,
                          editor.lessonBrowser, editor.glossary);
 
     LessonState& l = editor.lessons;
+    if (l.restartRequest >= 0) restart(editor, std::exchange(l.restartRequest, -1));
     if (l.startRequest >= 0) start(editor, std::exchange(l.startRequest, -1));
     if (l.stepRequest >= 0) {
         int const to = std::exchange(l.stepRequest, -1);

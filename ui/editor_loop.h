@@ -12,6 +12,7 @@
 #include "model/editor_state.h"
 #include "model/file_browser.h"
 #include "model/frame_log.h"
+#include "model/lesson_progress.h"
 #include "model/lesson_state.h"
 #include "model/render_inputs.h"
 #include "model/scene_loading.h"
@@ -141,6 +142,12 @@ struct Editor {
     ui::FileBrowserState lessonBrowser;
     ui::Glossary glossary;  // assets/glossary.json, read with the lessons
     ui::GlossaryWindowState glossaryWindow;
+    // The course progress (model/lesson_progress.h), read with the lessons from the config folder
+    // and written there whenever it changes; no path = not kept (no config folder). A file that
+    // could not be read is moved aside to .broken before the first write over it.
+    ui::CourseProgress progress;
+    std::string progressPath;
+    bool progressBroken = false;
     long frame = 0;
     int exitCode = 0;
     EditorClock::time_point lastFrame = EditorClock::now();

@@ -84,6 +84,15 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"lessonTasks\":" + quoted(l.lessonTasks);
     out += std::string(",\"lessonGlossary\":") + (l.lessonGlossary ? "true" : "false");
     out += ",\"lessonGlossaryTerm\":" + quoted(l.lessonGlossaryTerm);
+    auto rects = [&](std::vector<glm::vec4> const& rs) {
+        std::string a = "[";
+        for (std::size_t i = 0; i < rs.size(); ++i)
+            a += (i ? "," : "") + number(rs[i].x) + "," + number(rs[i].y) + "," + number(rs[i].z) + "," +
+                 number(rs[i].w);
+        return a + "]";
+    };
+    out += ",\"courseRows\":" + rects(l.courseRows) + ",\"courseRestart\":" + rects(l.courseRestart);
+    out += ",\"courseProgress\":" + quoted(l.courseProgress) + ",\"nextLesson\":" + rect(l.nextLesson);
     out += ",\"view\":" + quoted(l.view);
     out += ",\"layout\":" + quoted(l.layout) + ",\"pipelineWindow\":" + rect(l.pipelineWindow) +
            ",\"layoutCombo\":" + rect(l.layoutCombo) + ",\"layoutItems\":[";

@@ -53,6 +53,14 @@ struct FrameLogLine {
     bool lessonGlossary = false;     // the Glossary window is open
     std::string lessonGlossaryTerm;  // the term it last opened at ("" = none)
     std::vector<glm::vec2> lessonButtons;
+    // The course view (issue 27): each lesson's row and its Restart button, x, y, width, height in
+    // window coordinates as flat arrays (0 while not wholly in view); each lesson's progress as
+    // "ID steps/steps tasks/tasks right/asked", lessons joined by '|'; the "Next lesson" button at
+    // a lesson's last step (0 while not drawn).
+    std::vector<glm::vec4> courseRows;
+    std::vector<glm::vec4> courseRestart;
+    std::string courseProgress;
+    glm::vec4 nextLesson{0.0f};
     std::string view;
     // The G-buffer layout in use, the Pipeline window, its layout combo (0 while not visible) and,
     // while its list is open, the centre of each entry (kGBufferLayoutNames order).

@@ -173,10 +173,18 @@ struct LessonState {
     bool glossaryRequested = false;   // open the glossary (glossaryTerm: at that term, or "")
     std::string glossaryTerm;
     glm::ivec2 pixelFrameSize{0};  // the frame size the step's pixel was placed for; a resize re-places it
-    // Window centres of the Start, Back, Next, Leave, Show answer, Check my prediction, first
+    // Window centres of the course's first row, Back, Next, Leave, Show answer, Check my prediction, first
     // choice (or the number field), Glossary and first "Terms:" buttons as last drawn (0, 0 = not
     // drawn or not wholly in view), for UI tests that click them.
     std::array<glm::vec2, 9> buttonCentres{};
+    // The course view (shown while no lesson runs): a row's click opens that lesson where the
+    // student left it; its Restart clears that lesson's progress. Each row's and each Restart's
+    // rectangle (x, y, width, height in window coordinates; 0 unless wholly in view) and the
+    // "Next lesson" button at a lesson's last step, as last drawn, for UI tests.
+    int restartRequest = -1;
+    std::vector<glm::vec4> courseRows;
+    std::vector<glm::vec4> courseRestart;
+    glm::vec4 nextLessonButton{0.0f};
 };
 
 }  // namespace gbl::ui

@@ -44,44 +44,92 @@ glm::vec2 itemCentre() {
     return {(a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f};
 }
 
-void drawPicker(LessonState& state, std::span<Lesson const> lessons) {
+// The last item's rectangle (x, y, width, height) in window coordinates; 0 unless wholly in view.
+glm::vec4 itemRect() {
+    if (itemCentre() == glm::vec2(0.0f)) return glm::vec4(0.0f);
+    ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    return {a.x, a.y, b.x - a.x, b.y - a.y};
+}
+
+std::string countsLine(LessonCounts const& c) {
+    std::string line = "steps " + std::to_string(c.stepsSeen) + "/" + std::to_string(c.steps);
+    if (c.tasks > 0) line += ", tasks " + std::to_string(c.tasksDone) + "/" + std::to_string(c.tasks);
+    if (c.predictionsAsked > 0)
+        line +=
+            ", predictions " + std::to_string(c.predictionsRight) + "/" + std::to_string(c.predictionsAsked) + " right";
+    return line;
+}
+
+// The course: every lesson in order with the student's progress. A row opens its lesson where the
+// student left it; Restart forgets that lesson's progress.
+void drawCourse(LessonState& state, std::span<Lesson const> lessons, std::span<LessonCounts const> counts) {
     if (lessons.empty()) {
         wrappedText("No lessons were found.");
         return;
     }
-    state.picked = std::clamp(state.picked, 0, int(lessons.size()) - 1);
-    Lesson const& picked = lessons[std::size_t(state.picked)];
-    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Start").x - ImGui::GetStyle().FramePadding.x * 2.0f -
-                            ImGui::GetStyle().ItemSpacing.x);
-    if (ImGui::BeginCombo("##lesson", picked.title.c_str())) {
-        for (std::size_t i = 0; i < lessons.size(); ++i) {
-            bool const sel = int(i) == state.picked;
-            std::string const label = std::to_string(i + 1) + ". " + lessons[i].title;
-            if (ImGui::Selectable(label.c_str(), sel)) state.picked = int(i);
-            if (sel) ImGui::SetItemDefaultFocus();
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    wrappedText("%zu lessons: click one to open it where you left it.", lessons.size());
+    ImGui::PopStyleColor();
+    float const restartWidth = ImGui::CalcTextSize("Restart").x + ImGui::GetStyle().FramePadding.x * 2.0f;
+    state.courseRows.assign(lessons.size(), glm::vec4(0.0f));
+    state.courseRestart.assign(lessons.size(), glm::vec4(0.0f));
+    for (std::size_t i = 0; i < lessons.size(); ++i) {
+        LessonCounts const c = i < counts.size() ? counts[i] : LessonCounts{};
+        ImGui::PushID(int(i));
+        std::string const label = std::to_string(i + 1) + ". " + lessons[i].title;
+        float const rowWidth =
+            std::max(1.0f, ImGui::GetContentRegionAvail().x - restartWidth - ImGui::GetStyle().ItemSpacing.x);
+        bool const started = c.stepsSeen > 0;
+        ImGui::PushStyleColor(ImGuiCol_Text,
+                              started ? ImGui::GetStyleColorVec4(ImGuiCol_Text) : ImVec4(0.8f, 0.8f, 0.8f, 1.0f));
+        if (ImGui::Selectable(label.c_str(), int(i) == state.picked, 0, ImVec2(rowWidth, 0.0f))) {
+            state.picked = int(i);
+            state.startRequest = int(i);
         }
-        ImGui::EndCombo();
+        ImGui::PopStyleColor();
+        state.courseRows[i] = itemRect();
+        if (i == 0) state.buttonCentres[0] = itemCentre();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", lessons[i].summary.c_str());
+        ImGui::SameLine();
+        ImGui::BeginDisabled(!started);
+        if (ImGui::SmallButton("Restart")) state.restartRequest = int(i);
+        ImGui::EndDisabled();
+        state.courseRestart[i] = itemRect();
+        ImGui::Indent();
+        ImGui::PushStyleColor(ImGuiCol_Text, c.stepsSeen == c.steps && c.tasksDone == c.tasks && c.steps > 0
+                                                 ? ImVec4(0.5f, 0.9f, 0.5f, 1.0f)
+                                                 : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        wrappedText("%s", countsLine(c).c_str());
+        ImGui::PopStyleColor();
+        ImGui::Unindent();
+        ImGui::PopID();
     }
-    ImGui::SameLine();
-    if (ImGui::Button("Start")) state.startRequest = state.picked;
-    state.buttonCentres[0] = itemCentre();
-    wrappedText("%s (%zu steps)", picked.summary.c_str(), picked.steps.size());
 }
 
-// The prediction the step asks for before it reveals, then whether it was right and why.
+// The prediction the step asks for before it reveals: its prompt and choices, then whether it was
+// right (the explanation follows in the step's text).
 void drawPrediction(LessonState& state, LessonPrediction const& p, LessonValues const& values) {
-    ImGui::Spacing();
-    ImGui::TextColored(ImVec4(0.75f, 0.6f, 1.0f, 1.0f), "Predict first");
-    wrappedText("%s", substituteLessonText(p.prompt, values).c_str());
     if (!state.predicted) {
+        ImGui::TextColored(ImVec4(0.75f, 0.6f, 1.0f, 1.0f), "Predict first");
+        wrappedText("%s", substituteLessonText(p.prompt, values).c_str());
         if (!p.choices.empty()) {
             for (std::size_t i = 0; i < p.choices.size(); ++i) {
                 ImGui::PushID(int(i));
-                if (ImGui::RadioButton(p.choices[i].c_str(), state.predictChoice == int(i)))
-                    state.predictChoice = int(i);
+                // The choice's text wraps beside its button (a RadioButton's own label does not).
+                if (ImGui::RadioButton("##choice", state.predictChoice == int(i))) state.predictChoice = int(i);
                 if (i == 0) state.buttonCentres[6] = itemCentre();
+                ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+                ImGui::BeginGroup();  // its second line starts under its first, not under the button
+                wrappedText("%s", p.choices[i].c_str());
+                ImGui::EndGroup();
+                if (ImGui::IsItemClicked()) state.predictChoice = int(i);
                 ImGui::PopID();
             }
+            // The button beside the last choice where it fits: one line less in a short window.
+            float const button = ImGui::CalcTextSize("Check my prediction").x + ImGui::GetStyle().FramePadding.x * 2.0f;
+            if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + button <
+                ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x)
+                ImGui::SameLine();
         } else {
             ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
             ImGui::InputFloat("your number", &state.predictNumber, 0.0f, 0.0f, "%.3g");
@@ -99,7 +147,6 @@ void drawPrediction(LessonState& state, LessonPrediction const& p, LessonValues 
     std::string const right = p.choices.empty()
                                   ? formatNumber(p.number) + " (within " + formatNumber(p.tolerance) + ")"
                                   : p.choices[std::size_t(std::clamp(p.correct, 0, int(p.choices.size()) - 1))];
-    if (std::exchange(state.scrollToResult, false)) ImGui::SetScrollHereY(0.0f);  // the verdict in view
     if (state.predictedRight)
         ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "Right: %s", right.c_str());
     else {
@@ -107,14 +154,12 @@ void drawPrediction(LessonState& state, LessonPrediction const& p, LessonValues 
         wrappedText("Not quite: the answer is %s", right.c_str());
         ImGui::PopStyleColor();
     }
-    wrappedText("%s", substituteLessonText(p.explain, values).c_str());
 }
 
 // The step's tasks as a checklist, ticked live by the editor loop (model/lesson_tasks.h); a task
 // left unmet for a while shows its hint, which names the tool to use.
 void drawTasks(LessonState const& state, LessonStep const& step, LessonValues const& values) {
     if (step.tasks.empty()) return;
-    ImGui::Spacing();
     std::size_t done = 0;
     for (std::size_t i = 0; i < step.tasks.size(); ++i) done += i < state.tasks.size() && state.tasks[i].met;
     ImGui::TextColored(ImVec4(0.55f, 0.9f, 0.8f, 1.0f), "Tasks (%zu of %zu done)", done, step.tasks.size());
@@ -165,7 +210,25 @@ void drawTerms(LessonState& state, LessonStep const& step, Glossary const& gloss
     ImGui::PopStyleVar();
 }
 
-void drawStep(LessonState& state, Lesson const& lesson, LessonValues const& values, Glossary const& glossary) {
+// The height the window keeps below the step's text: the message, the load errors and the
+// authoring header, each as drawn after the step.
+float footerHeight(LessonState const& state, std::span<std::string const> loadErrors) {
+    ImGuiStyle const& style = ImGui::GetStyle();
+    float const width = ImGui::GetContentRegionAvail().x;
+    float h = style.ItemSpacing.y * 3.0f + ImGui::GetFrameHeight();
+    auto text = [&](std::string const& t) {
+        h += ImGui::CalcTextSize(t.c_str(), nullptr, false, width).y + style.ItemSpacing.y;
+    };
+    if (!state.message.empty()) text(state.message);
+    for (auto const& e : loadErrors) text(e);
+    return h;
+}
+
+// A step: its controls, title, checklist, prediction and answer button stay at the top, in view at
+// any window size the layout gives (1280x720 included); the long text below them scrolls on its own.
+void drawStep(LessonState& state, std::span<Lesson const> lessons, LessonValues const& values, Glossary const& glossary,
+              std::span<std::string const> loadErrors) {
+    Lesson const& lesson = lessons[std::size_t(state.lesson)];
     int const n = int(lesson.steps.size());
     LessonStep const& step = lesson.steps[std::size_t(std::clamp(state.step, 0, n - 1))];
     ImGui::BeginDisabled(state.step <= 0);
@@ -185,16 +248,46 @@ void drawStep(LessonState& state, Lesson const& lesson, LessonValues const& valu
     state.buttonCentres[7] = itemCentre();
     ImGui::SameLine();
     ImGui::TextDisabled("%d / %d", state.step + 1, n);
-    wrappedText("%s: %s", lesson.title.c_str(), step.text.title.c_str());
-    ImGui::Separator();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s, step %d of %d", lesson.title.c_str(), state.step + 1, n);
+    // The step's title only: the lesson's is in the course the student opened it from, and a
+    // second line here would push the checklist or the prediction's button below the fold.
+    wrappedText("%s", step.text.title.c_str());
     bool const waiting = step.predict && !state.predicted;  // the step's change is not shown yet
+    // At the end of the last step (its prediction made), the course goes on.
+    if (!waiting && state.step >= n - 1 && state.lesson + 1 < int(lessons.size())) {
+        std::string const label = "Next lesson: " + lessons[std::size_t(state.lesson) + 1].title;
+        if (ImGui::Button(label.c_str())) state.startRequest = state.lesson + 1;
+        state.nextLessonButton = itemRect();
+    }
+    ImGui::Separator();
+    if (!waiting) drawTasks(state, step, values);  // what to do with the tools, before the answer is revealed
+    if (step.predict) drawPrediction(state, *step.predict, values);
+    if (!waiting) {
+        if (ImGui::Button(state.answerShown ? "Hide answer" : "Show answer")) {
+            state.answerShown = !state.answerShown;
+            state.scrollToResult = state.answerShown;
+        }
+        state.buttonCentres[4] = itemCentre();
+    }
+    drawTerms(state, step, glossary);
+
+    float const height = std::max(ImGui::GetContentRegionAvail().y - footerHeight(state, loadErrors),
+                                  ImGui::GetTextLineHeightWithSpacing() * 3.0f);
+    ImGui::BeginChild("step text", ImVec2(0.0f, height));
     if (!waiting) {
         wrappedText("%s", substituteLessonText(step.text.look, values).c_str());
         ImGui::Spacing();
         ImGui::TextColored(ImVec4(0.55f, 0.8f, 1.0f, 1.0f), "Equation");
         wrappedText("%s", substituteLessonText(step.text.equation, values).c_str());
     }
-    if (step.predict) drawPrediction(state, *step.predict, values);
+    if (step.predict && state.predicted) {
+        ImGui::Spacing();
+        if (!state.answerShown && std::exchange(state.scrollToResult, false))
+            ImGui::SetScrollHereY(0.0f);  // the explanation in view
+        ImGui::TextColored(ImVec4(0.75f, 0.6f, 1.0f, 1.0f), "Your prediction");
+        wrappedText("%s", substituteLessonText(step.predict->prompt, values).c_str());
+        wrappedText("%s", substituteLessonText(step.predict->explain, values).c_str());
+    }
     if (waiting) {
         // The question and its answer would give the prediction away: they follow it.
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
@@ -204,21 +297,15 @@ void drawStep(LessonState& state, Lesson const& lesson, LessonValues const& valu
         ImGui::Spacing();
         ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.45f, 1.0f), "Question");
         wrappedText("%s", substituteLessonText(step.text.question, values).c_str());
-        drawTasks(state, step, values);  // what to do with the tools, before the answer is revealed
-        if (ImGui::Button(state.answerShown ? "Hide answer" : "Show answer")) {
-            state.answerShown = !state.answerShown;
-            state.scrollToResult = state.answerShown;
-        }
-        state.buttonCentres[4] = itemCentre();
         if (state.answerShown) {
             if (std::exchange(state.scrollToResult, false)) ImGui::SetScrollHereY(0.0f);  // the answer in view
             ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1.0f), "Answer");
             wrappedText("%s", substituteLessonText(step.text.answer, values).c_str());
         }
     }
-    drawTerms(state, step, glossary);
     if (step.claim)
         ImGui::TextDisabled("checked claim: %s", std::string(enumName(kClaimKindNames, step.claim->kind)).c_str());
+    ImGui::EndChild();
 }
 
 void drawAuthoring(LessonState& state, FileBrowserState& browser) {
@@ -242,15 +329,19 @@ void drawAuthoring(LessonState& state, FileBrowserState& browser) {
 
 }  // namespace
 
-void drawLessonsPanel(LessonState& state, std::span<Lesson const> lessons, std::span<std::string const> loadErrors,
-                      LessonValues const& values, FileBrowserState& browser, Glossary const& glossary) {
+void drawLessonsPanel(LessonState& state, std::span<Lesson const> lessons, std::span<LessonCounts const> counts,
+                      std::span<std::string const> loadErrors, LessonValues const& values, FileBrowserState& browser,
+                      Glossary const& glossary) {
     state.buttonCentres = {};
+    state.courseRows.clear();
+    state.courseRestart.clear();
+    state.nextLessonButton = glm::vec4(0.0f);
     placeWindow(EditorWindow::Lessons);
     if (ImGui::Begin(windowName(EditorWindow::Lessons), nullptr, editorWindowFlags())) {
         if (state.lesson >= 0 && state.lesson < int(lessons.size()))
-            drawStep(state, lessons[std::size_t(state.lesson)], values, glossary);
+            drawStep(state, lessons, values, glossary, loadErrors);
         else
-            drawPicker(state, lessons);
+            drawCourse(state, lessons, counts);
         if (!state.message.empty()) {
             ImVec4 const colour =
                 state.messageIsError ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.6f, 0.9f, 0.6f, 1.0f);

@@ -1,8 +1,10 @@
-// The Lessons window: pick a lesson, step through it, read its text with live values, leave it;
-// and save the editor's state as a new lesson step, or open a lesson file.
+// The Lessons window: the course (every lesson with the student's progress), a lesson's steps with
+// their text's live values, leaving it; and saving the editor's state as a new lesson step, or
+// opening a lesson file.
 #pragma once
 
 #include "model/file_browser.h"
+#include "model/lesson_progress.h"
 #include "model/lesson_state.h"
 #include "model/lesson_text.h"
 #include "session/glossary_file.h"
@@ -14,9 +16,10 @@
 namespace gbl::ui {
 
 // Requests go into `state` (startRequest, stepRequest, leaveRequested, saveStepRequested,
-// openRequested, predictRequested, glossaryRequested); the editor loop carries them out. `values` fill the text's
-// placeholders.
-void drawLessonsPanel(LessonState& state, std::span<Lesson const> lessons, std::span<std::string const> loadErrors,
-                      LessonValues const& values, FileBrowserState& browser, Glossary const& glossary);
+// openRequested, predictRequested, glossaryRequested, restartRequest); the editor loop carries them out. `values` fill
+// the text's placeholders. `counts` is each lesson's progress, in the order of `lessons`.
+void drawLessonsPanel(LessonState& state, std::span<Lesson const> lessons, std::span<LessonCounts const> counts,
+                      std::span<std::string const> loadErrors, LessonValues const& values, FileBrowserState& browser,
+                      Glossary const& glossary);
 
 }  // namespace gbl::ui
