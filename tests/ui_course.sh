@@ -51,16 +51,6 @@ start_editor() {
     ui_window
     wait_frames 2
 }
-# lock_at FX FY: unlock (L), hover that point of the viewport, lock (L).
-lock_at() {
-    set -- $(rect_point viewport "$1" "$2")
-    xdotool key --delay 30 l
-    wait_frames 2
-    xdotool mousemove --window "$wid" "$1" "$2"
-    wait_frames 4
-    xdotool key --delay 30 l
-    wait_frames 4
-}
 
 # --- a first run: no progress yet; open position_from_depth by its row, do its task ---------------
 start_editor first

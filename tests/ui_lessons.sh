@@ -163,16 +163,6 @@ ui_window
 wait_frames 2
 [ "$(field lesson)" = '"position_from_depth:2"' ] || fail "--lesson position_from_depth:2 did not open that step"
 [ "$(field lessonTasks)" = '"0"' ] || fail "the pixel task is not shown unticked at the step's start: $(field lessonTasks)"
-# lock_at FX FY: unlock (L), hover that point of the viewport, lock (L).
-lock_at() {
-    set -- $(rect_point viewport "$1" "$2")
-    xdotool key --delay 30 l
-    wait_frames 2
-    xdotool mousemove --window "$wid" "$1" "$2"
-    wait_frames 4
-    xdotool key --delay 30 l
-    wait_frames 4
-}
 lock_at 0.5 0.85
 [ "$(field lessonTasks)" = '"0"' ] || fail "locking the near floor ticked the task: $(field lessonTasks)"
 lock_at 0.5 0.12

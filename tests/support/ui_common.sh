@@ -81,6 +81,16 @@ ui_window() {
 }
 # click_at X Y: move there, wait 0.1 s, press and release with a 50 ms dwell.
 click_at() { xdotool mousemove --window "$wid" "$1" "$2" sleep 0.1 mousedown 1 sleep 0.05 mouseup 1; }
+# lock_at FX FY: the Pixel inspector locked on that point of the viewport: unlock (L), hover, lock (L).
+lock_at() {
+    set -- $(rect_point viewport "$1" "$2")
+    xdotool key --delay 30 l
+    wait_frames 2
+    xdotool mousemove --window "$wid" "$1" "$2"
+    wait_frames 4
+    xdotool key --delay 30 l
+    wait_frames 4
+}
 # shot NAME: a screenshot of the window into $work/NAME.png (ImageMagick) or .xwd; where neither
 # tool is installed it says so and the test goes on (a screenshot is for a person, not a check).
 shot() {
