@@ -5,7 +5,7 @@
 #include "cli_options.h"
 #include "cli_values.h"
 #include "compare_command.h"
-#include "editor.h"
+#include "editor/editor.h"
 #include "lesson_command.h"
 #include "render_command.h"
 

@@ -13,7 +13,7 @@ namespace gbl {
 
 // The scene a session names (the default courtyard, or its glTF file), with the session's
 // camera and its lights placed as the editor shows them: orbited by animation.time about the
-// courtyard centre (default scene) or the scene bounds' centre (glTF), as ui/editor.cpp does.
+// courtyard centre (default scene) or the scene bounds' centre (glTF), as ui/editor/editor.cpp does.
 // On failure nullopt and one sentence naming the session file.
 std::optional<PreparedScene> prepareSessionScene(ui::Session const& session, std::string const& sessionPath,
                                                  bool allowOutsideUris, std::string* error);

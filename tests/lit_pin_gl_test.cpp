@@ -2,7 +2,7 @@
 // light to a positive difference, and the heat map texture is the diff's size.
 #include "gl_fixture.h"
 #include "scene/default_scene.h"
-#include "viewer_tools_service.h"
+#include "editor/viewer_tools_service.h"
 
 #include <epoxy/gl.h>
 

@@ -1,6 +1,6 @@
 // The editor's session life cycle without a window: autosave timing on a fake clock, the
 // recovery offer after an unclean exit, all-or-nothing opening, undo through the controller.
-#include "session_controller.h"
+#include "editor/session_controller.h"
 #include "run_command.h"
 #include "session/atomic_file.h"
 #include "session/editor_session.h"

@@ -3,7 +3,7 @@
 #include "image_io.h"
 #include "run_command.h"
 #include "test_scenes.h"
-#include "viewer_export.h"
+#include "editor/viewer_export.h"
 
 #include <gtest/gtest.h>
 

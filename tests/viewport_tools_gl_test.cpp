@@ -4,7 +4,7 @@
 #include "gl_fixture.h"
 #include "model/colormap.h"
 #include "scene/default_scene.h"
-#include "viewer_tools_service.h"
+#include "editor/viewer_tools_service.h"
 
 #include <epoxy/gl.h>
 
