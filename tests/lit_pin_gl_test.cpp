@@ -1,8 +1,8 @@
 // The viewport's lit-frame pin on real frames: an unchanged frame diffs to exactly 0, a brighter
 // light to a positive difference, and the heat map texture is the diff's size.
+#include "editor/viewer_tools_service.h"
 #include "gl_fixture.h"
 #include "scene/default_scene.h"
-#include "editor/viewer_tools_service.h"
 
 #include <epoxy/gl.h>
 

@@ -1,10 +1,10 @@
 // The viewer tools' service on real frames: the depth viewer's stencil picture (the integers the
 // stencil holds, coloured on the CPU) and the pixel sample's stencil, and the viewport's tools
 // drawing an attachment with their own range and fitting it.
+#include "editor/viewer_tools_service.h"
 #include "gl_fixture.h"
 #include "model/colormap.h"
 #include "scene/default_scene.h"
-#include "editor/viewer_tools_service.h"
 
 #include <epoxy/gl.h>
 
