@@ -132,6 +132,13 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
                              {"matrix_layout", "row-major: view[r][c]"}};
     json passes = json::object();
     for (auto const& p : frame.stats.passes) passes[p.name] = p.gpuMs;
+    // Per pass, what it issued: {"draws": N, "dispatches": M} (gl/draw_count.h).
+    json calls = json::object();
+    for (PassCalls const& c : frame.stats.calls) {
+        json& entry = calls[c.name];
+        entry["draws"] = entry.value("draws", std::uint64_t(0)) + c.draws;
+        entry["dispatches"] = entry.value("dispatches", std::uint64_t(0)) + c.dispatches;
+    }
     GlCaps const& caps = renderer.caps();
     PipelineSettings const& s = frame.settings;
     json statsJson = {{"gl_vendor", caps.vendor},
@@ -149,6 +156,7 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
                       {"accumulation", enumName(kLightAccumulationNames, frame.stats.accumulationUsed)},
                       {"gpu_ms", passes},
                       {"gpu_frame_ms", frame.stats.gpuFrameMs},
+                      {"calls", calls},
                       {"timing", frame.stats.timingSource},
                       {"timing_reason", frame.stats.timingReason},
                       {"triangles", frame.triangles},

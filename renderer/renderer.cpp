@@ -208,6 +208,7 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     // The frame as declared (core/frame_passes.h): checked for feedback loops, and against the
     // passes that ran, in debug builds.
     passesRun.clear();
+    passCalls.clear();
     std::optional<PassId> stop = input.stopAfter;
     if (stop) {
         std::vector<PassDecl> const all = gbl::framePasses(s, wireframes);
@@ -327,6 +328,7 @@ FrameStats RendererImpl::render(FrameInput const& input) {
         stats.passes.push_back({name, ms});
         stats.gpuFrameMs += ms;
     }
+    stats.calls = passCalls;
     // Interactive frames read the count only when it is ready, so they never wait on the GPU.
     bool const counted = std::find(passesRun.begin(), passesRun.end(),
                                    s.mode == LightingMode::Forward ? PassId::ForwardShading : PassId::Lighting) !=

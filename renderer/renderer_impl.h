@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/frame_passes.h"
+#include "gl/draw_count.h"
 #include "gl/fullscreen_triangle.h"
 #include "gl/gpu_timer.h"
 #include "gl/query.h"
@@ -46,16 +47,24 @@ ShadingUniforms shadingUniforms(FrameContext const& f);
 // Times one pass under its declared name (core/frame_passes.h) and records that it ran.
 class PassScope {
 public:
-    PassScope(GpuTimer& timer, std::vector<PassId>& ran, PassId id) : timer_(timer) {
-        timer.begin(std::string(passName(id)));
+    PassScope(GpuTimer& timer, std::vector<PassId>& ran, std::vector<PassCalls>& calls, PassId id)
+        : timer_(timer), calls_(calls), name_(passName(id)), before_(gl::drawCount()) {
+        timer.begin(std::string(name_));
         ran.push_back(id);
     }
-    ~PassScope() { timer_.end(); }
+    ~PassScope() {
+        timer_.end();
+        gl::DrawCount const& now = gl::drawCount();
+        calls_.push_back({std::string(name_), now.draws - before_.draws, now.dispatches - before_.dispatches});
+    }
     PassScope(PassScope const&) = delete;
     PassScope& operator=(PassScope const&) = delete;
 
 private:
     GpuTimer& timer_;
+    std::vector<PassCalls>& calls_;
+    std::string_view name_;
+    gl::DrawCount before_;
 };
 
 // An optional group of programs (and, for volumes, the sphere mesh), built on first use.
@@ -94,9 +103,10 @@ public:
     gl::Buffer cubeVertices;
     LightVolumeGpu volumes;
     GpuTimer timer;
-    ShaderChecks shaderChecks;      // the shader-checks build's report (gl/shader_checks.h); empty when off
-    std::vector<PassId> passesRun;  // this frame's passes so far, in order (PassScope)
-    gl::Query fragmentQuery;        // GL_FRAGMENT_SHADER_INVOCATIONS_ARB when available
+    ShaderChecks shaderChecks;         // the shader-checks build's report (gl/shader_checks.h); empty when off
+    std::vector<PassId> passesRun;     // this frame's passes so far, in order (PassScope)
+    std::vector<PassCalls> passCalls;  // and what each issued (PassScope)
+    gl::Query fragmentQuery;           // GL_FRAGMENT_SHADER_INVOCATIONS_ARB when available
     std::uint64_t glErrorsAtStart = 0;
     glm::mat4 frameInverseViewProj{1.0f};  // of the last frame rendered: decodes its G-buffer
     // What the coverage target counts now (runCoverage), for the pixel inspector; none before a
@@ -115,7 +125,7 @@ private:
     FrameContext frameContext(FrameInput const& input) const;
     DeferredInputs deferredInputs(FrameContext const& f) const;
     LitTarget litTarget() const { return {targets.litFbo, targets.lighting}; }
-    PassScope timed(PassId id) { return {timer, passesRun, id}; }
+    PassScope timed(PassId id) { return {timer, passesRun, passCalls, id}; }
     bool wireframesDrawn(FrameInput const& input);  // volume outlines: the setting, or an accumulated light's
     void clearForStop();                            // FrameInput::stopAfter: the targets later passes draw
     bool volumesReady();                            // builds the volume programs and mesh on first use

@@ -253,6 +253,44 @@ TEST(LightFields, ValidateLightChecksEveryEntry) {
     }
 }
 
+// The Lights panel's drags stay within lightFieldBounds(): validateLight accepts both ends and
+// refuses a step past a finite end, so the panel, the script and files accept the same numbers.
+TEST(LightFields, BoundsAreWhatValidateLightAccepts) {
+    PointLight base = makeLight(1.0f, 1.0f, 0.7f, 1.8f);
+    base.kind = LightKind::Spot;
+    base.innerConeDeg = 10.0f;
+    base.outerConeDeg = 30.0f;
+    constexpr float kMax = std::numeric_limits<float>::max();
+    for (LightField const& f : kLightFields) {
+        LightFieldBounds const b = lightFieldBounds(f, base);
+        EXPECT_LE(b.lo, f.of(base)) << f.name;
+        EXPECT_GE(b.hi, f.of(base)) << f.name;
+        for (float end : {b.lo, b.hi}) {
+            PointLight l = base;
+            f.of(l) = end;
+            EXPECT_FALSE(validateLight(l).has_value()) << f.name << " = " << end << ": " << *validateLight(l);
+        }
+        if (b.lo > -kMax) {
+            PointLight l = base;
+            f.of(l) = std::nextafter(b.lo, -kMax);
+            EXPECT_TRUE(validateLight(l).has_value()) << f.name << " just below " << b.lo;
+        }
+        if (b.hi < kMax) {
+            PointLight l = base;
+            f.of(l) = std::nextafter(b.hi, kMax);
+            EXPECT_TRUE(validateLight(l).has_value()) << f.name << " just above " << b.hi;
+        }
+        EXPECT_FALSE(f.row.empty()) << f.name << " has no row in the Lights panel";
+        EXPECT_FALSE(f.help.empty()) << f.name << " has no help line";
+        EXPECT_TRUE(f.usedBy(LightKind::Spot)) << f.name;  // a spot uses every number
+    }
+    // The cone's bounds follow the other angle: inner up to outer, outer down to inner.
+    EXPECT_EQ(lightFieldBounds(*findLightField("inner"), base).hi, 30.0f);
+    EXPECT_EQ(lightFieldBounds(*findLightField("outer"), base).lo, 10.0f);
+    EXPECT_FALSE(findLightField("dx")->usedBy(LightKind::Point));
+    EXPECT_FALSE(findLightField("outer")->usedBy(LightKind::Directional));
+}
+
 // --- windowed attenuation -------------------------------------------------------------------
 
 TEST(WindowedAttenuation, ZeroAtAndPastTheRadius) {

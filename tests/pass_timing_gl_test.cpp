@@ -3,9 +3,13 @@
 #include "gl_fixture.h"
 #include "renderer_test_access.h"
 #include "scene/default_scene.h"
+#include "test_paths.h"
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -136,3 +140,67 @@ TEST_F(PassTimingGlTest, TheFrameHookBetweenPassesIsBilledToNeither) {
 }
 
 }  // namespace
+
+// What each pass issued (gl/draw_count.h), per frame: the geometry pass one draw per mesh instance
+// whatever the light count; quad and volumes light with draws, tiled with compute dispatches; the
+// display pass one full-screen draw. The calls name the passes that ran, in order.
+TEST_F(PassTimingGlTest, EachPassCountsTheDrawsAndDispatchesItIssued) {
+    auto const callsOf = [](FrameStats const& s, std::string const& name) {
+        PassCalls sum{name};
+        bool found = false;
+        for (PassCalls const& c : s.calls) {
+            if (c.name != name) continue;
+            sum.draws += c.draws;
+            sum.dispatches += c.dispatches;
+            found = true;
+        }
+        EXPECT_TRUE(found) << "no calls for " << name;
+        return sum;
+    };
+    for (int count : {4, 32}) {
+        FrameStats const s = renderer_->render({camera_, lights(count), settings_, true});
+        ASSERT_EQ(s.calls.size(), s.passes.size());
+        for (std::size_t i = 0; i < s.calls.size(); ++i) EXPECT_EQ(s.calls[i].name, s.passes[i].name);
+        EXPECT_EQ(callsOf(s, "geometry").draws, scene_.instances.size()) << count << " lights";
+        EXPECT_EQ(callsOf(s, "geometry").dispatches, 0u);
+        EXPECT_GE(callsOf(s, "lighting").draws, 1u);
+        EXPECT_EQ(callsOf(s, "display").draws, 1u);
+    }
+    // Volumes: instanced, so the draws do not grow with the lights.
+    settings_.mode = LightingMode::Volumes;
+    std::uint64_t const few = callsOf(renderer_->render({camera_, lights(4), settings_, true}), "lighting").draws;
+    std::uint64_t const many = callsOf(renderer_->render({camera_, lights(64), settings_, true}), "lighting").draws;
+    EXPECT_GE(few, 1u);
+    EXPECT_EQ(few, many);
+    if (renderer_->caps().computeShaders) {
+        settings_.mode = LightingMode::Tiled;
+        FrameStats const s = renderer_->render({camera_, lights(32), settings_, true});
+        EXPECT_GE(callsOf(s, "light_lists").dispatches, 1u);
+        EXPECT_EQ(callsOf(s, "light_lists").draws, 0u);
+        EXPECT_GE(callsOf(s, "lighting").dispatches, 1u);
+    }
+}
+
+// Every draw and dispatch in renderer/ counts itself: the line after each glDraw* (not
+// glDrawBuffer[s]) or glDispatchCompute call is its gl::countDraw() / gl::countDispatch().
+TEST(DrawCount, EveryCallSiteInTheRendererCountsItself) {
+    std::regex const call(R"(\bgl(Draw(Arrays|Elements|RangeElements)\w*|DispatchCompute\w*)\s*\()");
+    int sites = 0;
+    for (auto const& entry : std::filesystem::recursive_directory_iterator(gbl::test::sourcePath("renderer"))) {
+        std::string const ext = entry.path().extension().string();
+        if (ext != ".cpp" && ext != ".h") continue;
+        std::ifstream in(entry.path());
+        std::vector<std::string> lines;
+        for (std::string line; std::getline(in, line);) lines.push_back(line);
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            std::smatch m;
+            if (!std::regex_search(lines[i], m, call)) continue;
+            ++sites;
+            bool const dispatch = m.str(1).rfind("Dispatch", 0) == 0;
+            std::string const next = i + 1 < lines.size() ? lines[i + 1] : "";
+            EXPECT_NE(next.find(dispatch ? "countDispatch()" : "countDraw()"), std::string::npos)
+                << entry.path().string() << ":" << i + 1 << " is not counted: " << lines[i];
+        }
+    }
+    EXPECT_GE(sites, 11);  // the renderer's call sites when this test was written
+}

@@ -47,10 +47,19 @@ struct PassTiming {
     double gpuMs = 0.0;
 };
 
+// What a pass issued this frame (gl/draw_count.h): glDraw* calls, an instanced draw counting one,
+// and compute dispatches.
+struct PassCalls {
+    std::string name;
+    std::uint64_t draws = 0;
+    std::uint64_t dispatches = 0;
+};
+
 struct FrameStats {
     int width = 0;
     int height = 0;
     std::vector<PassTiming> passes;  // in frame order
+    std::vector<PassCalls> calls;    // this frame's passes in order; the timings may be an earlier frame's
     double gpuFrameMs = 0.0;         // sum of the passes
     // How the pass times were measured (gpu_timestamps | cpu_finish, gl/gpu_timer.h) and why.
     std::string timingSource;

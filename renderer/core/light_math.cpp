@@ -1,7 +1,9 @@
 // Radius and attenuation of point lights: the one implementation all modes and the UI use.
 #include "core/light_math.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace gbl {
 
@@ -40,6 +42,23 @@ std::optional<std::string> validateLight(PointLight const& light) {
     if (light.kc <= 0.0f && light.kl <= 0.0f && light.kq <= 0.0f)
         return "light attenuation Kc, Kl and Kq cannot all be 0 (infinite brightness at the light)";
     return std::nullopt;
+}
+
+LightFieldBounds lightFieldBounds(LightField const& f, PointLight const& l) {
+    constexpr float kMax = std::numeric_limits<float>::max();
+    constexpr float kTiny = std::numeric_limits<float>::denorm_min();  // the least float > 0
+    switch (f.range) {
+        case LightFieldRange::Finite:
+        case LightFieldRange::Direction:
+            return {-kMax, kMax};
+        case LightFieldRange::NonNegative:
+            return {f.positive ? kTiny : 0.0f, kMax};
+        case LightFieldRange::ConeAngle:
+            // inner <= outer, outer > 0, both within [0, kMaxSpotConeDeg].
+            if (f.scalar == &PointLight::innerConeDeg) return {0.0f, l.outerConeDeg};
+            return {std::max(l.innerConeDeg, kTiny), kMaxSpotConeDeg};
+    }
+    return {-kMax, kMax};
 }
 
 LightRadius solveLightRadius(float imax, float kc, float kl, float kq, float threshold) {

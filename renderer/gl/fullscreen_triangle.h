@@ -2,6 +2,7 @@
 // shaders/fullscreen.vert. Core profile needs a bound vertex array even without attributes.
 #pragma once
 
+#include "gl/draw_count.h"
 #include "gl/vertex_array.h"
 
 namespace gbl::gl {
@@ -18,6 +19,7 @@ public:
     void draw() const {
         glBindVertexArray(vao_.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
+        countDraw();
         glBindVertexArray(0);
     }
 

@@ -1,5 +1,6 @@
 // Scene upload and the draw loop shared by the geometry and forward passes.
 #include "gpu/gpu_scene.h"
+#include "gl/draw_count.h"
 
 #include "gl/shader_bindings.h"
 
@@ -164,6 +165,7 @@ void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter
         glFrontFace(glm::determinant(glm::mat3(inst.model)) < 0.0f ? GL_CW : GL_CCW);
         glBindVertexArray(mesh.vao.id());
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+        gl::countDraw();
     }
     glBindVertexArray(0);
     glEnable(GL_CULL_FACE);

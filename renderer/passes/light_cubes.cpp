@@ -1,5 +1,6 @@
 // Light cubes pass: an overlay on the display image.
 #include "passes/light_cubes.h"
+#include "gl/draw_count.h"
 
 #include "core/frame_types.h"
 
@@ -22,6 +23,7 @@ void lightCubesPass(LightCubesInput const& in, LightCubesConfig const& config) {
     bindLights(in.program, in.lights);
     glBindVertexArray(in.cube.id());
     glDrawArraysInstanced(GL_TRIANGLES, 0, 36, in.lights.count);
+    gl::countDraw();
     glBindVertexArray(0);
 }
 

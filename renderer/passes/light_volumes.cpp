@@ -1,5 +1,6 @@
 // Light volumes: instance lists, the cull modes and the volumes lighting pass.
 #include "passes/light_volumes.h"
+#include "gl/draw_count.h"
 
 #include "core/light_math.h"
 #include "core/light_volume_cone.h"
@@ -94,6 +95,7 @@ void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, Cull
         prog.set("uFirstInstance", mesh->base + first);
         prog.set("uCone", mesh->cone ? 1 : 0);
         glDrawElementsInstanced(GL_TRIANGLES, mesh->indexCount, GL_UNSIGNED_INT, nullptr, count);
+        gl::countDraw();
     };
     auto frontFaces = [] {  // cull back faces: the front faces in front of the surface
         glEnable(GL_CULL_FACE);

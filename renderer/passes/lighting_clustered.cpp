@@ -1,5 +1,6 @@
 // Clustered lighting passes: list building and shading.
 #include "passes/lighting_clustered.h"
+#include "gl/draw_count.h"
 
 #include "gl/shader_bindings.h"
 
@@ -51,6 +52,7 @@ void clusterListsPass(LightingClusteredInput const& in, LightingClusteredConfig 
     setGridUniforms(p, in, c, g);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_CLUSTER_LIGHTS, in.lists.lights.id());  // written here
     glDispatchCompute(GLuint(g.tilesX), GLuint(g.tilesY), 1);  // one work group per tile, a slice per invocation
+    gl::countDispatch();
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_CLUSTER_LIGHTS, 0);
 }
@@ -71,6 +73,7 @@ LightingOutput clusterShadePass(LightingClusteredInput const& in, LightingCluste
     bindTextureUnit(slot::BIND_CLUSTER_LIST, GL_TEXTURE_BUFFER, in.lists.list.id());
     TileGrid const grid = tileGrid(c.width, c.height);
     glDispatchCompute(GLuint(grid.tilesX), GLuint(grid.tilesY), 1);
+    gl::countDispatch();
     // Later passes read the images as textures and framebuffer attachments.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     unbindLightImages();

@@ -1,5 +1,6 @@
 // Tiled lighting pass.
 #include "passes/lighting_tiled.h"
+#include "gl/draw_count.h"
 
 #include "core/tile_math.h"
 #include "gl/shader_bindings.h"
@@ -27,6 +28,7 @@ LightingOutput lightingTiledPass(LightingTiledInput const& in, LightingTiledConf
     bindLightImages(in.hdr, in.specular, in.coverage);
     TileGrid const grid = tileGrid(c.width, c.height);
     glDispatchCompute(GLuint(grid.tilesX), GLuint(grid.tilesY), 1);
+    gl::countDispatch();
     // Later passes read the images as textures and framebuffer attachments.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     unbindLightImages();

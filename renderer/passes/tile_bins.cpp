@@ -1,5 +1,6 @@
 // Light binning pass.
 #include "passes/tile_bins.h"
+#include "gl/draw_count.h"
 
 #include "gl/shader_bindings.h"
 #include "passes/shading_inputs.h"
@@ -39,6 +40,7 @@ void tileBinPass(TileBinInput const& in, TileBinConfig const& c) {
     d.set("uNear", c.nearPlane);
     d.set("uFar", c.farPlane);
     glDispatchCompute(GLuint(g.tilesX), GLuint(g.tilesY), 1);
+    gl::countDispatch();
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
     gl::Program const& p = in.programs.bin;
@@ -51,7 +53,10 @@ void tileBinPass(TileBinInput const& in, TileBinConfig const& c) {
     p.set("uBinCap", b.cap);
     p.set("uNear", c.nearPlane);
     p.set("uFar", c.farPlane);
-    if (in.lights.count > 0) glDispatchCompute(GLuint((in.lights.count + 63) / 64), 1, 1);
+    if (in.lights.count > 0) {
+        glDispatchCompute(GLuint((in.lights.count + 63) / 64), 1, 1);
+        gl::countDispatch();
+    }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_DEPTH, 0);
 }

@@ -1,5 +1,6 @@
 // Light-volume wireframes pass: an overlay on the display image.
 #include "passes/wireframes.h"
+#include "gl/draw_count.h"
 
 #include "core/light_math.h"
 #include "core/light_volume_mesh.h"
@@ -65,6 +66,7 @@ void wireframesPass(WireframesInput const& in, WireframesConfig const& config) {
         p.set("uCone", cone ? 1 : 0);
         glBindVertexArray(vao);
         glDrawElementsInstanced(GL_LINES, indexCount, GL_UNSIGNED_INT, nullptr, to - from);
+        gl::countDraw();
     };
     drawRange(v.lineVao.id(), v.lineIndexCount, first, std::min(end, sphereEnd), false);
     drawRange(v.coneLineVao.id(), v.coneLineIndexCount, std::max(first, sphereEnd), end, true);
@@ -74,6 +76,7 @@ void wireframesPass(WireframesInput const& in, WireframesConfig const& config) {
         p.set("uArrowLength", config.arrowLength);
         glBindVertexArray(v.arrowVao.id());
         glDrawElementsInstanced(GL_LINES, v.arrowLineIndexCount, GL_UNSIGNED_INT, nullptr, arrows);
+        gl::countDraw();
         p.set("uArrow", 0);
     }
     glBindVertexArray(0);

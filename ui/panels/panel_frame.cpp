@@ -34,17 +34,30 @@ ImU32 withAlpha(ImU32 c, float alpha) {
     return ImGui::ColorConvertFloat4ToU32(v);
 }
 
+// "1.234 ms, 3 draws": the pass's GPU time and what it issued in the last frame (a compute pass's
+// dispatches, a blit as such), then its fixed-function states.
 std::string timeLine(PassDecl const& p, FrameStats const& last) {
     auto const t = std::find_if(last.passes.begin(), last.passes.end(),
                                 [&](PassTiming const& timing) { return timing.name == p.name(); });
+    auto const c = std::find_if(last.calls.begin(), last.calls.end(),
+                                [&](PassCalls const& calls) { return calls.name == p.name(); });
     char text[64];
     if (t != last.passes.end())
         std::snprintf(text, sizeof text, "%.3f ms", t->gpuMs);
+    else if (c != last.calls.end())
+        std::snprintf(text, sizeof text, "ran");
     else
         std::snprintf(text, sizeof text, "not run");
     std::string out = text;
-    if (p.kind == PassKind::Compute) out += ", compute";
-    if (p.kind == PassKind::Blit) out += ", blit";
+    auto const count = [](std::uint64_t n, char const* one, char const* many) {
+        return std::to_string(n) + " " + (n == 1 ? one : many);
+    };
+    if (p.kind == PassKind::Compute)
+        out += c != last.calls.end() ? ", " + count(c->dispatches, "dispatch", "dispatches") : ", compute";
+    else if (p.kind == PassKind::Blit)
+        out += ", blit";
+    else if (c != last.calls.end())
+        out += ", " + count(c->draws, "draw", "draws");
     if (p.kind == PassKind::Raster && !p.states.empty())
         out += ", " + std::to_string(p.states.size()) + (p.states.size() == 1 ? " state" : " states");
     return out;

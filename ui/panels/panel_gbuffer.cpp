@@ -2,6 +2,7 @@
 // texels so zooming in shows exact stored pixels.
 #include "panels/panel_gbuffer.h"
 
+#include "model/viewer_fields.h"
 #include "model/viewer_tools.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
@@ -43,7 +44,8 @@ std::optional<glm::ivec2> viewerImage(ViewerState& v, unsigned texture, glm::ive
         ImVec2 const m = io.MousePos;
         ImVec2 const before = imageMin();
         glm::vec2 const p((m.x - before.x) / full.x, (m.y - before.y) / full.y);
-        float const newZoom = std::clamp(v.zoom * std::pow(1.25f, io.MouseWheel), 1.0f, 256.0f);
+        static ViewerField const& zoomField = *findViewerField("zoom");  // its range is the sessions' too
+        float const newZoom = std::clamp(v.zoom * std::pow(1.25f, io.MouseWheel), zoomField.min, zoomField.max);
         float const k = newZoom / v.zoom;
         v.zoom = newZoom;
         glm::vec2 const mouseFromCentre(m.x - cellCentre.x, m.y - cellCentre.y);

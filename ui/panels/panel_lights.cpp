@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace gbl::ui {
 
@@ -78,13 +79,77 @@ void drawList(LightsPanelState& state, std::vector<PointLight>& lights) {
     ImGui::EndChild();
 }
 
-void dragHelp() {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("drag: 2%% per pixel; Ctrl+click or double-click: type a value");
+// The field's help line as the hovered widget's tooltip, with how a log-speed drag moves.
+void fieldHelp(LightField const& f) {
+    if (!ImGui::IsItemHovered() || f.help.empty()) return;
+    std::string tip(f.help);
+    if (f.logDrag) tip += "\ndrag: 2% per pixel; Ctrl+click or double-click: type a value";
+    ImGui::SetTooltip("%s", tip.c_str());
 }
 
-// The kind combo, then what the kind adds: a direction for spot and directional lights, the
-// cone's inner and outer half-angles (degrees) for spots.
-bool drawKindFields(PointLight& edited) {
+// One row of the panel: the kLightFields entries whose row is `row`, with the bounds
+// lightFieldBounds() gives (those files and the UI script accept), then the row's name. A vector is
+// one widget (the colour a colour editor); scalars share the row. Nothing for a kind that does not
+// use the row.
+bool drawLightRow(std::string_view row, PointLight& edited) {
+    std::vector<LightField const*> fields;
+    for (LightField const& f : kLightFields)
+        if (f.row == row) fields.push_back(&f);
+    if (fields.empty() || !fields[0]->usedBy(edited.kind)) return false;
+    LightField const& first = *fields[0];
+    std::string const label(row);
+    bool changed = false;
+    if (first.vector) {
+        glm::vec3& v = edited.*first.vector;
+        if (first.range == LightFieldRange::NonNegative) {
+            changed = ImGui::ColorEdit3(label.c_str(), &v.x, ImGuiColorEditFlags_Float);
+        } else {
+            // Moves by 1% of the largest component per pixel, at least the field's step.
+            float const reach = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+            LightFieldBounds const b = lightFieldBounds(first, edited);
+            changed = ImGui::DragFloat3(label.c_str(), &v.x, proportionalDragSpeed(reach, first.dragStep), b.lo, b.hi,
+                                        std::string(first.format).c_str());
+        }
+        fieldHelp(first);
+        return changed;
+    }
+    float const spacing = ImGui::GetStyle().ItemInnerSpacing.x;
+    float const n = float(fields.size());
+    ImGui::PushItemWidth((ImGui::CalcItemWidth() - (n - 1.0f) * spacing) / n);
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+        LightField const& f = *fields[i];
+        if (i > 0) ImGui::SameLine(0, spacing);
+        float& value = f.of(edited);
+        // The speed follows the value (model/drag_speed.h); the attenuation terms differ by orders of
+        // magnitude, so theirs is a share per pixel: 0.001 to 2 is a few hundred pixels.
+        float const speed = f.logDrag ? proportionalDragSpeed(value, f.dragStep, kLogDragShare)
+                                      : proportionalDragSpeed(value, f.dragStep);
+        LightFieldBounds const b = lightFieldBounds(f, edited);
+        changed |= ImGui::DragFloat(("##" + std::string(f.name)).c_str(), &value, speed, b.lo, b.hi,
+                                    std::string(f.format).c_str());
+        fieldHelp(f);
+    }
+    ImGui::PopItemWidth();
+    ImGui::SameLine(0, spacing);
+    ImGui::TextUnformatted(label.c_str());
+    return changed;
+}
+
+// The rows of kLightFields in table order: those only some kinds use first (they appear under the
+// Kind combo as the kind changes), then the rest.
+std::vector<std::string_view> lightRows() {
+    std::vector<std::string_view> kindRows, rows;
+    for (LightField const& f : kLightFields) {
+        auto& into = f.kinds == kAllLightKinds ? rows : kindRows;
+        if (std::find(kindRows.begin(), kindRows.end(), f.row) == kindRows.end() &&
+            std::find(rows.begin(), rows.end(), f.row) == rows.end())
+            into.push_back(f.row);
+    }
+    kindRows.insert(kindRows.end(), rows.begin(), rows.end());
+    return kindRows;
+}
+
+bool drawKindCombo(PointLight& edited) {
     bool changed = false;
     if (ImGui::BeginCombo("Kind", std::string(lightKindName(edited.kind)).c_str())) {
         for (std::size_t i = 0; i < kLightKindNames.size(); ++i) {
@@ -96,19 +161,6 @@ bool drawKindFields(PointLight& edited) {
         }
         ImGui::EndCombo();
     }
-    if (edited.kind == LightKind::Point) return changed;
-    changed |= ImGui::DragFloat3("Dir", &edited.direction.x, 0.01f, -1.0f, 1.0f, "%.3f");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("where the light shines (normalised when shading; not all zero)");
-    if (edited.kind != LightKind::Spot) return changed;
-    float const half = (ImGui::CalcItemWidth() - ImGui::GetStyle().ItemInnerSpacing.x) / 2.0f;
-    ImGui::PushItemWidth(half);
-    changed |= ImGui::DragFloat("##inner", &edited.innerConeDeg, 0.25f, 0.0f, edited.outerConeDeg, "in %.1f deg");
-    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
-    changed |= ImGui::DragFloat("##outer", &edited.outerConeDeg, 0.25f, std::max(edited.innerConeDeg, 0.1f),
-                                kMaxSpotConeDeg, "out %.1f deg");
-    ImGui::PopItemWidth();
-    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
-    ImGui::TextUnformatted("Cone");
     return changed;
 }
 
@@ -130,43 +182,9 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights, std:
         edited.name = name;
         changed = true;
     }
-    // Positions move by 1% of their distance from the origin per pixel, at least 0.01.
-    float const reach =
-        std::max({std::abs(edited.position.x), std::abs(edited.position.y), std::abs(edited.position.z)});
-    changed |= drawKindFields(edited);
-    changed |= ImGui::DragFloat3("Position", &edited.position.x, proportionalDragSpeed(reach, 0.01f));
-    changed |= ImGui::ColorEdit3("Colour", &edited.color.x, ImGuiColorEditFlags_Float);
-    // Three attenuation terms on one row, as in the formula Kc + Kl d + Kq d^2; each keeps its
-    // own drag speed because they differ by orders of magnitude.
-    float const third = (ImGui::CalcItemWidth() - 2.0f * ImGui::GetStyle().ItemInnerSpacing.x) / 3.0f;
-    ImGui::PushItemWidth(third);
-    // Speeds follow each value (model/drag_speed.h): a pixel changes Kc/Kl/Kq by 2%, so 0.001 to 2
-    // is a few hundred pixels; Ctrl+click or double-click types a value.
-    changed |= ImGui::DragFloat("##kc", &edited.kc, proportionalDragSpeed(edited.kc, 1e-3f, kLogDragShare), 0.0f,
-                                100.0f, "Kc %.3f");
-    dragHelp();
-    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
-    changed |= ImGui::DragFloat("##kl", &edited.kl, proportionalDragSpeed(edited.kl, 1e-4f, kLogDragShare), 0.0f,
-                                100.0f, "Kl %.4f");
-    dragHelp();
-    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
-    changed |= ImGui::DragFloat("##kq", &edited.kq, proportionalDragSpeed(edited.kq, 1e-5f, kLogDragShare), 0.0f,
-                                100.0f, "Kq %.5f");
-    dragHelp();
-    ImGui::PopItemWidth();
-    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
-    ImGui::TextUnformatted("Atten.");
-    float const half = (ImGui::CalcItemWidth() - ImGui::GetStyle().ItemInnerSpacing.x) / 2.0f;
-    ImGui::PushItemWidth(half);
-    changed |= ImGui::DragFloat("##intensity", &edited.intensity, proportionalDragSpeed(edited.intensity, 1e-3f), 0.0f,
-                                1000.0f, "I %.3f");
-    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
-    changed |= ImGui::DragFloat("##threshold", &edited.threshold, proportionalDragSpeed(edited.threshold, 1e-5f), 0.0f,
-                                1.0f, "cut %.5f");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("brightness below which the light counts as dark (5/256 by default)");
-    ImGui::PopItemWidth();
-    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
-    ImGui::TextUnformatted("I, cut");
+    changed |= drawKindCombo(edited);
+    static std::vector<std::string_view> const rows = lightRows();
+    for (std::string_view row : rows) changed |= drawLightRow(row, edited);
 
     // Presets are named by the radius they give this light (its brightness and cut-off included).
     int const preset = matchingPreset(edited);

@@ -136,7 +136,7 @@ constexpr ScriptCommandSpec kEditCommands[] = {
      setCommand},
     {"light", "I FIELD VALUE",
      "edit light I through the validated path the Lights panel uses;\n"
-     "FIELD = x y z r g b intensity kc kl kq threshold dx dy dz inner outer (kLightFields),\n"
+     "FIELD = x y z r g b kc kl kq intensity threshold dx dy dz inner outer (kLightFields),\n"
      "or kind point|spot|directional",
      lightCommand},
     {"select", "I", "select light I (as a click in the list does)",

@@ -1,6 +1,8 @@
 // Editor state <-> session and undo snapshots.
 #include "session/editor_session.h"
 
+#include "model/viewer_fields.h"
+
 #include <glm/glm.hpp>
 
 namespace gbl::ui {
@@ -20,21 +22,6 @@ Session captureSession(EditorState const& state, int defaultSceneLights) {
     return s;
 }
 
-namespace {
-// The viewer-tool settings a session holds (colormap, overlays, histogram, stencil).
-void copyToolSettings(ViewerState const& from, ViewerState& to) {
-    to.colormap = from.colormap;
-    to.overlays = from.overlays;
-    to.showHistogram = from.showHistogram;
-    if (from.showStencil && to.kind == ViewerKind::Depth) {
-        // The range read is the stencil's; the depth's comes back as the defaults.
-        ViewerState const depth = GBufferPanelState::defaultViewers()[std::size_t(ViewerKind::Depth)];
-        to.otherRange = glm::vec2(depth.rangeMin, depth.rangeMax);
-        to.showStencil = true;
-    }
-}
-}  // namespace
-
 void applySessionValues(Session const& session, EditorState& state) {
     state.camera = session.camera;
     resetTargetAhead(state.rig, state.camera, glm::length(state.camera.position - state.sceneBounds.center()));
@@ -44,35 +31,13 @@ void applySessionValues(Session const& session, EditorState& state) {
         // The session holds the settings; what the viewer learnt at run time (image size, when
         // it last fitted) starts afresh, as after opening the editor.
         ViewerState v = GBufferPanelState::defaultViewers()[i];
-        ViewerState const& from = session.viewers[i];
-        v.channelMask = from.channelMask;
-        v.rangeMin = from.rangeMin;
-        v.rangeMax = from.rangeMax;
-        v.autoFit = from.autoFit;
-        v.normalDisplay = from.normalDisplay;
-        v.linearDepth = from.linearDepth;
-        v.cameraClipPlanes = from.cameraClipPlanes;
-        v.nearPlane = from.nearPlane;
-        v.farPlane = from.farPlane;
-        v.zoom = from.zoom;
-        v.center = from.center;
-        copyToolSettings(from, v);
+        copyViewerSettings(session.viewers[i], v);
         state.gbuffer.viewers[i] = v;
     }
     state.gbuffer.syncViews = session.syncViews;
     state.viewportTools = ViewportTools{};
     state.viewportTools.open = session.viewportToolsOpen;
-    ViewerState& viewport = state.viewportTools.viewer;
-    ViewerState const& from = session.viewportViewer;
-    viewport.channelMask = from.channelMask;
-    viewport.rangeMin = from.rangeMin;
-    viewport.rangeMax = from.rangeMax;
-    viewport.autoFit = from.autoFit;
-    viewport.normalDisplay = from.normalDisplay;
-    viewport.cameraClipPlanes = from.cameraClipPlanes;
-    viewport.nearPlane = from.nearPlane;
-    viewport.farPlane = from.farPlane;
-    copyToolSettings(from, viewport);
+    copyViewerSettings(session.viewportViewer, state.viewportTools.viewer, /*viewport=*/true);
     state.animation = session.animation;
     int& selected = state.lightsPanel.selected;
     if (selected >= int(state.lights.size())) selected = state.lights.empty() ? -1 : 0;

@@ -4,6 +4,7 @@
 #include "core/json_fields.h"
 #include "core/light_math.h"
 #include "core/pipeline_fields.h"
+#include "model/viewer_fields.h"
 #include "session/atomic_file.h"
 
 #include <nlohmann/json.hpp>
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <optional>
 #include <span>
 #include <sstream>
 #include <stdexcept>
@@ -24,12 +26,6 @@ namespace {
 
 using namespace json_fields;  // the field readers, FieldError and joinNames
 
-constexpr std::array<std::string_view, 2> kNormalDisplayNames{"biased", "absolute"};
-// The overlay bits by name, in bit order (kOverlayNaN = 1 ... kOverlayClip = 8).
-constexpr std::array<std::string_view, 4> kOverlayNames{"nan", "inf", "negative", "clip"};
-static_assert(kOverlayNaN == 1 && kOverlayInf == 2 && kOverlayNegative == 4 && kOverlayClip == 8,
-              "kOverlayNames lists the overlay bits in order");
-
 // --- writing ------------------------------------------------------------------------------
 
 // Written in a fixed, readable order (format and version first); reading does not care.
@@ -38,33 +34,43 @@ using ojson = nlohmann::ordered_json;
 ojson vec(glm::vec3 v) {
     return {v.x, v.y, v.z};
 }
-ojson vec(glm::vec2 v) {
-    return {v.x, v.y};
-}
 
-ojson toolsJson(ViewerState const& v) {
-    ojson overlays = ojson::array();
-    for (std::size_t i = 0; i < kOverlayNames.size(); ++i)
-        if (v.overlays & (1u << i)) overlays.push_back(kOverlayNames[i]);
-    return {{"colormap", enumName(kColormapNames, v.colormap)},
-            {"overlays", overlays},
-            {"histogram", v.showHistogram},
-            {"stencil", v.showStencil}};
-}
-
+// One viewer's settings, field by field from model/viewer_fields.h: a vector's components in one
+// array, the tool fields in their own object.
 ojson viewerJson(ViewerState const& v) {
-    return {{"channel_mask", v.channelMask},
-            {"range_min", v.rangeMin},
-            {"range_max", v.rangeMax},
-            {"auto_fit", v.autoFit},
-            {"normal_display", enumName(kNormalDisplayNames, v.normalDisplay)},
-            {"linear_depth", v.linearDepth},
-            {"camera_clip_planes", v.cameraClipPlanes},
-            {"near", v.nearPlane},
-            {"far", v.farPlane},
-            {"zoom", v.zoom},
-            {"center", vec(v.center)},
-            {"tools", toolsJson(v)}};
+    ojson out = ojson::object();
+    ojson tools = ojson::object();
+    for (ViewerField const& f : viewerFields()) {
+        ojson& into = f.inTools ? tools : out;
+        std::string const key(f.key);
+        double const x = f.get(v);
+        switch (f.kind) {
+            case ViewerFieldKind::Mask:
+                into[key] = unsigned(x);
+                break;
+            case ViewerFieldKind::Number:
+                if (f.component < 0)
+                    into[key] = float(x);
+                else
+                    into[key][std::size_t(f.component)] = float(x);
+                break;
+            case ViewerFieldKind::Toggle:
+                into[key] = x != 0.0;
+                break;
+            case ViewerFieldKind::Choice:
+                into[key] = f.names[std::size_t(x)];
+                break;
+            case ViewerFieldKind::Flags: {
+                ojson names = ojson::array();
+                for (std::size_t i = 0; i < f.names.size(); ++i)
+                    if (unsigned(x) & (1u << i)) names.push_back(f.names[i]);
+                into[key] = names;
+                break;
+            }
+        }
+    }
+    out["tools"] = tools;
+    return out;
 }
 
 ojson pipelineJson(PipelineSettings const& p) {
@@ -167,55 +173,68 @@ PipelineSettings readPipeline(json const& j) {
     return p;
 }
 
-// The viewer's tool settings; every field optional (files from before the tools lack them).
-void readTools(json const& j, std::string const& path, ViewerState& v) {
-    Object o(j, path, {"colormap", "overlays", "histogram", "stencil"});
-    if (json const* map = o.optional("colormap"))
-        v.colormap = enumeration<Colormap>(*map, o.field("colormap"), kColormapNames);
-    if (json const* overlays = o.optional("overlays")) {
-        if (!overlays->is_array())
-            fail(o.field("overlays"),
-                 "must be an array of names out of " + joinNames(kOverlayNames) + " (got " + typeName(*overlays) + ")");
-        v.overlays = 0;
-        for (std::size_t i = 0; i < overlays->size(); ++i) {
-            auto const bit =
-                enumeration<int>((*overlays)[i], o.field("overlays") + "[" + std::to_string(i) + "]", kOverlayNames);
-            v.overlays |= 1u << unsigned(bit);
+// One field of a viewer from its file value `j` at `path`, checked against the field's range.
+void readViewerField(ViewerField const& f, json const& j, std::string const& path, ViewerState& v) {
+    switch (f.kind) {
+        case ViewerFieldKind::Mask:
+            f.set(v, double(integer(j, path, int(f.min), int(f.max))));
+            return;
+        case ViewerFieldKind::Number: {
+            float const x = f.positive ? number(j, path, Bound::Positive) : numberIn(j, path, f.min, f.max);
+            f.set(v, double(x));
+            return;
         }
-    }
-    if (json const* hist = o.optional("histogram")) v.showHistogram = boolean(*hist, o.field("histogram"));
-    if (json const* stencil = o.optional("stencil")) {
-        v.showStencil = boolean(*stencil, o.field("stencil"));
-        if (v.showStencil && v.kind != ViewerKind::Depth)
-            fail(o.field("stencil"), "must be false: only the depth viewer shows the stencil");
+        case ViewerFieldKind::Toggle:
+            f.set(v, boolean(j, path) ? 1.0 : 0.0);
+            return;
+        case ViewerFieldKind::Choice:
+            f.set(v, double(choiceIndex(j, path, f.names)));
+            return;
+        case ViewerFieldKind::Flags: {
+            if (!j.is_array())
+                fail(path, "must be an array of names out of " + joinNames(f.names) + " (got " + typeName(j) + ")");
+            unsigned bits = 0;
+            for (std::size_t i = 0; i < j.size(); ++i)
+                bits |= 1u << unsigned(choiceIndex(j[i], path + "[" + std::to_string(i) + "]", f.names));
+            f.set(v, double(bits));
+            return;
+        }
     }
 }
 
+// A viewer's settings, field by field from model/viewer_fields.h: the viewer's own fields are
+// required, the tool fields optional (files from before the tools lack them). Then what relates two
+// fields: range_max above range_min, far above near, the stencil on the depth viewer only.
 ViewerState readViewer(json const& j, std::string const& path, ViewerState v) {
-    Object o(j, path,
-             {"channel_mask", "range_min", "range_max", "auto_fit", "normal_display", "linear_depth",
-              "camera_clip_planes", "near", "far", "zoom", "center", "tools"});
-    v.channelMask = unsigned(integer(o.required("channel_mask"), o.field("channel_mask"), 0, 15));
-    v.rangeMin = number(o.required("range_min"), o.field("range_min"));
-    v.rangeMax = number(o.required("range_max"), o.field("range_max"));
+    Object o(j, path, {viewerFileKeys().begin(), viewerFileKeys().end()});
+    json const* toolsJson = o.optional("tools");
+    std::optional<Object> tools;
+    if (toolsJson)
+        tools.emplace(*toolsJson, o.field("tools"),
+                      std::vector<std::string_view>(viewerToolKeys().begin(), viewerToolKeys().end()));
+    for (ViewerField const& f : viewerFields()) {
+        json const* value = nullptr;
+        std::string at;
+        if (f.inTools) {
+            if (!tools) continue;
+            value = tools->optional(f.key);
+            at = tools->field(f.key);
+        } else {
+            value = &o.required(f.key);
+            at = o.field(f.key);
+        }
+        if (!value) continue;
+        if (f.component >= 0) {
+            if (!value->is_array() || value->size() != 2) fail(at, "must be an array of 2 numbers");
+            at += "[" + std::to_string(f.component) + "]";
+            value = &(*value)[std::size_t(f.component)];
+        }
+        readViewerField(f, *value, at, v);
+    }
     if (v.rangeMax <= v.rangeMin) fail(o.field("range_max"), "must be greater than " + o.field("range_min"));
-    v.autoFit = boolean(o.required("auto_fit"), o.field("auto_fit"));
-    v.normalDisplay =
-        enumeration<NormalDisplay>(o.required("normal_display"), o.field("normal_display"), kNormalDisplayNames);
-    v.linearDepth = boolean(o.required("linear_depth"), o.field("linear_depth"));
-    v.cameraClipPlanes = boolean(o.required("camera_clip_planes"), o.field("camera_clip_planes"));
-    v.nearPlane = number(o.required("near"), o.field("near"), Bound::Positive);
-    v.farPlane = number(o.required("far"), o.field("far"), Bound::Positive);
     if (v.farPlane <= v.nearPlane) fail(o.field("far"), "must be greater than " + o.field("near"));
-    // The viewer's own zoom limits (panel_gbuffer.cpp): 1 = whole image, 256 texels per pixel at most.
-    v.zoom = numberIn(o.required("zoom"), o.field("zoom"), 1.0f, 256.0f);
-    json const& center = o.required("center");
-    v.center = vector<2>(center, o.field("center"));
-    for (int i = 0; i < 2; ++i)
-        if (v.center[i] < 0.0f || v.center[i] > 1.0f)
-            fail(o.field("center") + "[" + std::to_string(i) + "]",
-                 "must be between 0 and 1 (got " + center[std::size_t(i)].dump() + ")");
-    if (json const* tools = o.optional("tools")) readTools(*tools, o.field("tools"), v);
+    if (v.showStencil && v.kind != ViewerKind::Depth)
+        fail(tools->field("stencil"), "must be false: only the depth viewer shows the stencil");
     return v;
 }
 
