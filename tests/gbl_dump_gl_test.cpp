@@ -429,6 +429,28 @@ TEST_F(GbufferDumpGlTest, DumpOpensWithTheGlValuesAndNoFinding) {
     for (auto const& f : cReport.findings) ADD_FAILURE() << "C build: " << f.check << ": " << f.cause;
 }
 
+// No attachment holds positions (as in G-buffers of depth, normal and colour): with depth and the camera
+// the manifest rebuilds them from depth, and they match the scene.
+TEST_F(GbufferDumpGlTest, PositionIsRebuiltFromDepthWhenNoAttachmentHoldsIt) {
+    renderGeometry();
+    glm::mat4 const view = viewMatrix(), projection = projectionMatrix();
+    gbl_dump_options o;
+    gbl_dump_options_learnopengl(&o);
+    o.position = -1;
+    gbl_dump_camera camera{};
+    camera.view = glm::value_ptr(view);
+    camera.projection = glm::value_ptr(projection);
+    o.camera = &camera;
+    std::string const dir = test::freshTempDir("gbl_dump_from_depth");
+    char message[512];
+    ASSERT_EQ(gbl_dump(gBuffer_.id(), kW, kH, dir.c_str(), &o, message, sizeof message), GBL_DUMP_OK) << message;
+    ImportedGBuffer const g = open(dir);
+    EXPECT_TRUE(g.manifest.positionFromDepth);
+    EXPECT_FALSE(g.image("position"));
+    expectSceneValues(g);
+    for (auto const& f : checkGBuffer(g).findings) ADD_FAILURE() << f.check << ": " << f.cause;
+}
+
 // Storage other than LearnOpenGL's: 16-bit unsigned position (written as float), sRGB albedo (the
 // manifest says so), two-channel normals (padded to three in the file).
 TEST_F(GbufferDumpGlTest, OtherStoragesAreWrittenInTheirOwnType) {
@@ -539,4 +561,22 @@ TEST_F(GbufferDumpGlTest, BadInputIsRefusedWithOneSentence) {
     EXPECT_NE(std::string(message).find("colour attachment 1 has integer storage"), std::string::npos) << message;
     EXPECT_EQ(gbl_dump(0, 4, 4, dir.c_str(), &o, message, sizeof message), GBL_DUMP_BAD_ARGUMENT);
     EXPECT_NE(std::string(message).find("framebuffer 0 is the window's"), std::string::npos) << message;
+
+    gbl_dump_options_learnopengl(&o);
+    gbl_dump_lights lights{};
+    float const lightPosition[3] = {0, 1, 0}, lightColor[3] = {1, 1, 1};
+    lights.count = 1;
+    lights.positions = lightPosition;
+    lights.colors = lightColor;
+    lights.linear = 0.7f;
+    lights.quadratic = -1.8f;
+    o.lights = &lights;
+    expectRefused(o, dir.c_str(), GBL_DUMP_BAD_ARGUMENT, "light 0 needs");
+
+    // An error the caller's code raised before the call is reported as such, not as the read's.
+    gbl_dump_options_learnopengl(&o);
+    glBindFramebuffer(GL_FRAMEBUFFER, 4000000);  // never generated: GL_INVALID_OPERATION in a core profile
+    expectRefused(o, dir.c_str(), GBL_DUMP_GL_ERROR, "GL_INVALID_OPERATION was raised before gbl_dump was called");
+    acceptGlErrors();
+    EXPECT_FALSE(std::filesystem::exists(dir + "/manifest.json"));
 }

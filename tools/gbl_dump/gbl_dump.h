@@ -3,8 +3,8 @@
  *
  * A single header for C99 and C++, depending on nothing but the caller's GL loader. It uses OpenGL 3.3
  * core calls only: glBindFramebuffer(GL_READ_FRAMEBUFFER), glReadBuffer, glReadPixels,
- * glGetFramebufferAttachmentParameteriv, glCheckFramebufferStatus, glPixelStorei, glClampColor,
- * glGetIntegerv and glGetError.
+ * glGetFramebufferAttachmentParameteriv, glCheckFramebufferStatus, glBindBuffer(GL_PIXEL_PACK_BUFFER),
+ * glPixelStorei, glClampColor, glGetIntegerv and glGetError.
  *
  * USE
  *   In exactly one C or C++ file, after the GL header (glad, GLEW, epoxy ...):
