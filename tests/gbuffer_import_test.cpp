@@ -43,13 +43,15 @@ enum class Bug {
     WrongNearFar,       // depth written with near 0.1, declared 0.5
     ViewLabelledWorld,  // view-space positions, declared world
     SrgbAlbedo,         // bright albedo, as sRGB bytes read as linear look
+    EightBitNormals,    // correctly biased normals in an 8-bit PNG, at shininess 64
 };
 
-// A 16-bit unsigned PNG of the floats (OpenImageIO clamps negative values to 0, as a UNORM target does).
-void writePng16(std::string const& path, int channels, std::vector<float> const& v) {
+// An 8- or 16-bit unsigned PNG of the floats (OpenImageIO clamps negative values to 0, as a UNORM
+// target does).
+void writePng(std::string const& path, int channels, std::vector<float> const& v, OIIO::TypeDesc type) {
     auto out = OIIO::ImageOutput::create(path);
     ASSERT_TRUE(out);
-    OIIO::ImageSpec spec(kW, kH, channels, OIIO::TypeDesc::UINT16);
+    OIIO::ImageSpec spec(kW, kH, channels, type);
     ASSERT_TRUE(out->open(path, spec));
     ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, v.data()));
     out->close();
@@ -74,6 +76,8 @@ std::string writeGBuffer(std::string const& name, float normalScale = 1.0f, Bug 
     std::string manifest = manifestWith(exrNormal, depth, fovCamera);
     if (bug == Bug::NormalUnbiased)
         manifest = manifestWith(R"({"file": "normal.png", "encoding": "biased"})", depth, fovCamera);
+    if (bug == Bug::EightBitNormals)  // (N.H)^64 is off by about 2.7 % of its peak at 8 bits' 0.32 degrees
+        manifest = manifestWith(R"({"file": "normal.png", "encoding": "biased"}, "shininess": 64)", depth, fovCamera);
     if (bug == Bug::WrongNearFar)
         manifest = manifestWith(exrNormal, R"({"file": "depth.exr", "convention": "window", "near": 0.5, "far": 100})",
                                 fovCamera);
@@ -110,6 +114,8 @@ std::string writeGBuffer(std::string const& name, float normalScale = 1.0f, Bug 
             if (bug == Bug::NaN && x == 3 && y == 8) p.y = std::nanf("");
             pos.insert(pos.end(), {bg ? 0 : p.x, bg ? 0 : p.y, bg ? 0 : p.z, bg ? 0.0f : 1.0f});
             nrm.insert(nrm.end(), {0, 0, bg ? 0 : normalScale * (bug == Bug::FacingAway ? -1.0f : 1.0f)});
+            if (bug == Bug::EightBitNormals && !bg)  // stored as 0.5 n + 0.5
+                for (auto it = nrm.end() - 3; it != nrm.end(); ++it) *it = 0.5f * *it + 0.5f;
             glm::vec3 const a = bug == Bug::AlbedoOver1  ? glm::vec3(1.5f, 0.2f, 0.1f)
                                 : bug == Bug::SrgbAlbedo ? glm::vec3(0.8f, 0.7f, 0.6f)
                                                          : glm::vec3(0.3f, 0.2f, 0.1f);
@@ -118,7 +124,9 @@ std::string writeGBuffer(std::string const& name, float normalScale = 1.0f, Bug 
         }
     writeExr(dir + "/position.exr", 4, pos);
     if (bug == Bug::NormalUnbiased)
-        writePng16(dir + "/normal.png", 3, nrm);
+        writePng(dir + "/normal.png", 3, nrm, OIIO::TypeDesc::UINT16);
+    else if (bug == Bug::EightBitNormals)
+        writePng(dir + "/normal.png", 3, nrm, OIIO::TypeDesc::UINT8);
     else
         writeExr(dir + "/normal.exr", 3, nrm);
     writeExr(dir + "/albedo.exr", 3, alb);
@@ -211,7 +219,8 @@ TEST(GBufferImport, EachPlantedBugIsFound) {
           Case{Bug::Transposed, "position_depth_mismatch", "transposed camera matrices"},
           Case{Bug::WrongNearFar, "position_depth_mismatch", "wrong near/far"},
           Case{Bug::ViewLabelledWorld, "position_depth_mismatch", "view-space positions labelled world"},
-          Case{Bug::SrgbAlbedo, "albedo_srgb", "sRGB-encoded"}}) {
+          Case{Bug::SrgbAlbedo, "albedo_srgb", "sRGB-encoded"},
+          Case{Bug::EightBitNormals, "normal_precision", "store normals in 16 bits"}}) {
         GBufferCheckReport const r = check(writeGBuffer("gbi_bug" + std::to_string(int(c.bug)), 1.0f, c.bug));
         bool found = false;
         for (auto const& f : r.findings)
