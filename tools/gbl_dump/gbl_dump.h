@@ -163,7 +163,7 @@ GBL_DUMP_DEF int gbl_dump(GLuint framebuffer, int width, int height, const char*
 #define GBL_DUMP_IMPLEMENTATION_DONE
 
 #include <errno.h>
-#include <math.h>
+#include <float.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -182,7 +182,8 @@ typedef struct gbl_dump_ctx_ {
     size_t message_size;
 } gbl_dump_ctx_;
 
-static int gbl_dump_fail_(gbl_dump_ctx_* c, int code, const char* fmt, ...) {
+/* Puts one sentence into the caller's message buffer and returns `code`. */
+static int gbl_dump_say_(gbl_dump_ctx_* c, int code, const char* fmt, ...) {
     if (c->message && c->message_size > 0) {
         va_list ap;
         va_start(ap, fmt);
@@ -255,12 +256,12 @@ static int gbl_dump_write_file_(gbl_dump_ctx_* c, const char* path, const void* 
     unsigned char* row = (unsigned char*)malloc(row_bytes);
     FILE* f;
     int y, x, k, ok = 1, swap = !gbl_dump_little_endian_();
-    if (!row) return gbl_dump_fail_(c, GBL_DUMP_OUT_OF_MEMORY, "gbl_dump: out of memory writing %s", path);
+    if (!row) return gbl_dump_say_(c, GBL_DUMP_OUT_OF_MEMORY, "gbl_dump: out of memory writing %s", path);
     f = fopen(path, "wb");
     if (!f) {
         int e = errno;
         free(row);
-        return gbl_dump_fail_(c, GBL_DUMP_WRITE_FAILED, "gbl_dump: cannot write %s (%s)", path, strerror(e));
+        return gbl_dump_say_(c, GBL_DUMP_WRITE_FAILED, "gbl_dump: cannot write %s (%s)", path, strerror(e));
     }
     if (kind == 0)
         ok = fprintf(f, "%s\n%d %d\n-1.0\n", out_channels == 1 ? "Pf" : "PF", width, height) > 0;
@@ -291,7 +292,7 @@ static int gbl_dump_write_file_(gbl_dump_ctx_* c, const char* path, const void* 
     }
     free(row);
     if (fclose(f) != 0) ok = 0;
-    if (!ok) return gbl_dump_fail_(c, GBL_DUMP_WRITE_FAILED, "gbl_dump: writing %s failed (disk full?)", path);
+    if (!ok) return gbl_dump_say_(c, GBL_DUMP_WRITE_FAILED, "gbl_dump: writing %s failed (disk full?)", path);
     return GBL_DUMP_OK;
 }
 
@@ -354,7 +355,7 @@ static void gbl_dump_json_image_(FILE* f, const gbl_dump_att_* a, const char* ke
 static int gbl_dump_finite_(const float* v, int n) {
     int i;
     for (i = 0; i < n; ++i)
-        if (!(v[i] == v[i]) || v[i] > 3.4e38f || v[i] < -3.4e38f) return 0;
+        if (!(v[i] <= FLT_MAX && v[i] >= -FLT_MAX)) return 0; /* NaN fails both */
     return 1;
 }
 
@@ -366,11 +367,11 @@ static int gbl_dump_write_manifest_(gbl_dump_ctx_* c, const char* dir, const gbl
     const gbl_dump_lights* l = o->lights;
     int i, ok, has_near_far = cam && cam->near_plane > 0.0f && cam->far_plane > cam->near_plane;
     if (!gbl_dump_path_(path, sizeof path, dir, "manifest", ".json"))
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: the folder name is too long");
+        return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: the folder name is too long");
     f = fopen(path, "wb");
     if (!f) {
         int e = errno;
-        return gbl_dump_fail_(c, GBL_DUMP_WRITE_FAILED, "gbl_dump: cannot write %s (%s)", path, strerror(e));
+        return gbl_dump_say_(c, GBL_DUMP_WRITE_FAILED, "gbl_dump: cannot write %s (%s)", path, strerror(e));
     }
     fputs("{\n  \"format\": \"gbuffer-lab-gbuffer\", \"version\": 1,\n", f);
     fputs("  \"flip_y\": false", f); /* every file is right way up by its format (see FILES above) */
@@ -468,7 +469,7 @@ static int gbl_dump_write_manifest_(gbl_dump_ctx_* c, const char* dir, const gbl
     fputs("\n}\n", f);
     ok = !ferror(f);
     if (fclose(f) != 0) ok = 0;
-    if (!ok) return gbl_dump_fail_(c, GBL_DUMP_WRITE_FAILED, "gbl_dump: writing %s failed (disk full?)", path);
+    if (!ok) return gbl_dump_say_(c, GBL_DUMP_WRITE_FAILED, "gbl_dump: writing %s failed (disk full?)", path);
     return GBL_DUMP_OK;
 }
 
@@ -483,98 +484,97 @@ static int gbl_dump_check_options_(gbl_dump_ctx_* c, const gbl_dump_options* o, 
     int i, j;
     const int roles[4] = {o->position, o->normal, o->albedo, o->specular};
     static const char* const role_names[4] = {"position", "normal", "albedo", "specular"};
-    if (!dir || !*dir) return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: dir must name an existing folder");
+    if (!dir || !*dir) return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: dir must name an existing folder");
     if (width <= 0 || height <= 0 || width > 65536 || height > 65536)
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: width and height must be 1 to 65536 (got %dx%d)",
-                              width, height);
+        return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: width and height must be 1 to 65536 (got %dx%d)",
+                             width, height);
     if (o->color_count < 1 || o->color_count > GBL_DUMP_MAX_COLOR)
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: options.color_count must be 1 to %d (got %d)",
-                              GBL_DUMP_MAX_COLOR, o->color_count);
+        return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: options.color_count must be 1 to %d (got %d)",
+                             GBL_DUMP_MAX_COLOR, o->color_count);
     for (i = 0; i < 4; ++i)
         if (roles[i] < -1 || roles[i] >= o->color_count)
-            return gbl_dump_fail_(
-                c, GBL_DUMP_BAD_ARGUMENT,
-                "gbl_dump: options.%s must be -1 or a colour attachment below color_count %d (got %d)", role_names[i],
-                o->color_count, roles[i]);
+            return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                                 "gbl_dump: options.%s must be -1 or a colour attachment below color_count %d (got %d)",
+                                 role_names[i], o->color_count, roles[i]);
     if (o->normal < 0)
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                              "gbl_dump: options.normal must name the colour attachment holding normals (the manifest "
-                              "needs one)");
+        return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                             "gbl_dump: options.normal must name the colour attachment holding normals (the manifest "
+                             "needs one)");
     if (o->position < 0 && !(o->depth && o->camera))
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                              "gbl_dump: options.position must name the colour attachment holding positions, or "
-                              "options.depth and options.camera be given to rebuild them (the manifest needs one)");
+        return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                             "gbl_dump: options.position must name the colour attachment holding positions, or "
+                             "options.depth and options.camera be given to rebuild them (the manifest needs one)");
     if (o->specular >= 0 && (o->specular_channel < 0 || o->specular_channel > 3))
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: options.specular_channel must be 0 to 3 (got %d)",
-                              o->specular_channel);
+        return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: options.specular_channel must be 0 to 3 (got %d)",
+                             o->specular_channel);
     if (!gbl_dump_one_of_(o->position_space, "world", "view", NULL) ||
         !gbl_dump_one_of_(o->normal_space, "world", "view", NULL))
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                              "gbl_dump: options.position_space and normal_space must be \"world\" or \"view\"");
+        return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                             "gbl_dump: options.position_space and normal_space must be \"world\" or \"view\"");
     if (!gbl_dump_one_of_(o->normal_encoding, "float", "biased", "octahedral"))
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                              "gbl_dump: options.normal_encoding must be \"float\", \"biased\" or \"octahedral\" "
-                              "(got \"%s\")",
-                              o->normal_encoding);
+        return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                             "gbl_dump: options.normal_encoding must be \"float\", \"biased\" or \"octahedral\" "
+                             "(got \"%s\")",
+                             o->normal_encoding);
     if (!gbl_dump_one_of_(o->shading, "learnopengl", "gbuffer-lab", NULL))
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                              "gbl_dump: options.shading must be \"learnopengl\", \"gbuffer-lab\" or NULL (got \"%s\")",
-                              o->shading);
+        return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                             "gbl_dump: options.shading must be \"learnopengl\", \"gbuffer-lab\" or NULL (got \"%s\")",
+                             o->shading);
     if (!(o->shininess >= 0.0f) || !gbl_dump_finite_(&o->shininess, 1))
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: options.shininess must be 0 or a positive number");
+        return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: options.shininess must be 0 or a positive number");
     for (i = 0; i < o->color_count; ++i) {
         const char* n = o->names[i];
         if (n && (!*n || strchr(n, '/') || strchr(n, '\\') || strlen(n) > 200))
-            return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                                  "gbl_dump: options.names[%d] must be a plain file name of 1 to 200 characters, "
-                                  "without a folder (got \"%s\")",
-                                  i, n);
+            return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                                 "gbl_dump: options.names[%d] must be a plain file name of 1 to 200 characters, "
+                                 "without a folder (got \"%s\")",
+                                 i, n);
         for (j = 0; j < i; ++j)
             if (n && o->names[j] && strcmp(n, o->names[j]) == 0)
-                return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                                      "gbl_dump: options.names[%d] and names[%d] are both \"%s\": one file would "
-                                      "overwrite the other",
-                                      j, i, n);
+                return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                                     "gbl_dump: options.names[%d] and names[%d] are both \"%s\": one file would "
+                                     "overwrite the other",
+                                     j, i, n);
         if (n && strcmp(n, "depth") == 0 && o->depth)
-            return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                                  "gbl_dump: options.names[%d] is \"depth\", the depth attachment's file name", i);
+            return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                                 "gbl_dump: options.names[%d] is \"depth\", the depth attachment's file name", i);
     }
     if (o->camera) {
         const gbl_dump_camera* cam = o->camera;
         if (cam->view && cam->projection) {
             if (!gbl_dump_finite_(cam->view, 16) || !gbl_dump_finite_(cam->projection, 16))
-                return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: camera.view or projection holds NaN or Inf");
+                return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: camera.view or projection holds NaN or Inf");
         } else {
             if (!gbl_dump_finite_(cam->position, 3) || !gbl_dump_finite_(cam->target, 3) ||
                 !gbl_dump_finite_(cam->up, 3))
-                return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                                      "gbl_dump: camera.position, target or up holds NaN or Inf");
+                return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                                     "gbl_dump: camera.position, target or up holds NaN or Inf");
             if (!(cam->fov_y_degrees >= 1.0f && cam->fov_y_degrees <= 179.0f))
-                return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                                      "gbl_dump: camera.fov_y_degrees must be 1 to 179 (got %g); or give view and "
-                                      "projection",
-                                      (double)cam->fov_y_degrees);
+                return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                                     "gbl_dump: camera.fov_y_degrees must be 1 to 179 (got %g); or give view and "
+                                     "projection",
+                                     (double)cam->fov_y_degrees);
             if (!(cam->near_plane > 0.0f && cam->far_plane > cam->near_plane) || !gbl_dump_finite_(&cam->far_plane, 1))
-                return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                                      "gbl_dump: camera.near_plane must be > 0 and far_plane greater (got %g and %g)",
-                                      (double)cam->near_plane, (double)cam->far_plane);
+                return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                                     "gbl_dump: camera.near_plane must be > 0 and far_plane greater (got %g and %g)",
+                                     (double)cam->near_plane, (double)cam->far_plane);
         }
     }
     if (o->lights && o->lights->count != 0) {
         const gbl_dump_lights* l = o->lights;
         if (l->count < 0 || !l->positions || !l->colors)
-            return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                                  "gbl_dump: lights.count must be >= 0, with positions and colors of count x 3 floats");
+            return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                                 "gbl_dump: lights.count must be >= 0, with positions and colors of count x 3 floats");
         for (i = 0; i < l->count; ++i) {
             const float lin = l->linear_each ? l->linear_each[i] : l->linear;
             const float quad = l->quadratic_each ? l->quadratic_each[i] : l->quadratic;
             if (!gbl_dump_finite_(l->positions + 3 * i, 3) || !gbl_dump_finite_(l->colors + 3 * i, 3) ||
                 l->colors[3 * i] < 0.0f || l->colors[3 * i + 1] < 0.0f || l->colors[3 * i + 2] < 0.0f ||
                 !(lin >= 0.0f) || !(quad >= 0.0f) || !gbl_dump_finite_(&lin, 1) || !gbl_dump_finite_(&quad, 1))
-                return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                                      "gbl_dump: light %d needs a finite position, a colour >= 0 and linear and "
-                                      "quadratic terms >= 0",
-                                      i);
+                return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                                     "gbl_dump: light %d needs a finite position, a colour >= 0 and linear and "
+                                     "quadratic terms >= 0",
+                                     i);
         }
     }
     return GBL_DUMP_OK;
@@ -591,7 +591,7 @@ static int gbl_dump_describe_(gbl_dump_ctx_* c, GLenum attachment, int index, gb
     glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE,
                                           &type);
     if (type == GL_NONE)
-        return gbl_dump_fail_(
+        return gbl_dump_say_(
             c, GBL_DUMP_BAD_FRAMEBUFFER,
             "gbl_dump: colour attachment %d has nothing attached (options.color_count is %d too many?)", index,
             index + 1);
@@ -606,17 +606,17 @@ static int gbl_dump_describe_(gbl_dump_ctx_* c, GLenum attachment, int index, gb
     }
     a->srgb = encoding == GL_SRGB;
     if (a->channels == 0)
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_FRAMEBUFFER, "gbl_dump: colour attachment %d has no colour channels",
-                              index);
+        return gbl_dump_say_(c, GBL_DUMP_BAD_FRAMEBUFFER, "gbl_dump: colour attachment %d has no colour channels",
+                             index);
     if (component == GL_UNSIGNED_NORMALIZED && widest <= 8)
         a->kind = 1;
     else if (component == GL_FLOAT || component == GL_SIGNED_NORMALIZED || component == GL_UNSIGNED_NORMALIZED)
         a->kind = 0;
     else
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_FRAMEBUFFER,
-                              "gbl_dump: colour attachment %d has integer storage, which this helper does not read "
-                              "(float and normalised formats only)",
-                              index);
+        return gbl_dump_say_(c, GBL_DUMP_BAD_FRAMEBUFFER,
+                             "gbl_dump: colour attachment %d has integer storage, which this helper does not read "
+                             "(float and normalised formats only)",
+                             index);
     return GBL_DUMP_OK;
 }
 
@@ -632,21 +632,21 @@ static int gbl_dump_read_write_(gbl_dump_ctx_* c, const char* dir, const gbl_dum
     int rc;
     const char* ext = a->kind == 0 ? ".pfm" : (a->channels == 1 ? ".pgm" : ".ppm");
     if (!pixels)
-        return gbl_dump_fail_(c, GBL_DUMP_OUT_OF_MEMORY, "gbl_dump: out of memory reading %s (%lu bytes)", a->stem,
-                              (unsigned long)bytes);
+        return gbl_dump_say_(c, GBL_DUMP_OUT_OF_MEMORY, "gbl_dump: out of memory reading %s (%lu bytes)", a->stem,
+                             (unsigned long)bytes);
     glReadPixels(0, 0, width, height, is_depth ? GL_DEPTH_COMPONENT : formats[a->channels - 1],
                  a->kind == 0 ? GL_FLOAT : GL_UNSIGNED_BYTE, pixels);
     err = glGetError();
     if (err != GL_NO_ERROR) {
         free(pixels);
-        return gbl_dump_fail_(
+        return gbl_dump_say_(
             c, GBL_DUMP_GL_ERROR, "gbl_dump: glReadPixels of %s raised %s%s", a->stem, gbl_dump_gl_error_name_(err),
             err == GL_INVALID_OPERATION ? " (a multisampled framebuffer? resolve it with glBlitFramebuffer first)"
                                         : "");
     }
     if (!gbl_dump_path_(path, sizeof path, dir, a->stem, ext)) {
         free(pixels);
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: the folder name is too long");
+        return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: the folder name is too long");
     }
     rc = gbl_dump_write_file_(c, path, pixels, a->kind, width, height, a->channels, 0,
                               a->channels == 4 ? 3 : a->channels);
@@ -654,7 +654,7 @@ static int gbl_dump_read_write_(gbl_dump_ctx_* c, const char* dir, const gbl_dum
         char stem[300];
         snprintf(stem, sizeof stem, "%s_a", a->stem);
         if (!gbl_dump_path_(path, sizeof path, dir, stem, a->kind == 0 ? ".pfm" : ".pgm"))
-            rc = gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: the folder name is too long");
+            rc = gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: the folder name is too long");
         else
             rc = gbl_dump_write_file_(c, path, pixels, a->kind, width, height, 4, 3, 1);
     }
@@ -700,23 +700,23 @@ static int gbl_dump_framebuffer_(gbl_dump_ctx_* c, GLuint framebuffer, int width
     GLenum status, err;
     int i, rc = GBL_DUMP_OK;
     if (framebuffer == 0)
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                              "gbl_dump: framebuffer 0 is the window's; pass the G-buffer's framebuffer object");
+        return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                             "gbl_dump: framebuffer 0 is the window's; pass the G-buffer's framebuffer object");
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
     err = glGetError();
     if (err != GL_NO_ERROR)
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                              "gbl_dump: framebuffer %u cannot be bound (%s): not a framebuffer name",
-                              (unsigned)framebuffer, gbl_dump_gl_error_name_(err));
+        return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                             "gbl_dump: framebuffer %u cannot be bound (%s): not a framebuffer name",
+                             (unsigned)framebuffer, gbl_dump_gl_error_name_(err));
     status = glCheckFramebufferStatus(GL_READ_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_FRAMEBUFFER, "gbl_dump: framebuffer %u is incomplete (%s)",
-                              (unsigned)framebuffer, gbl_dump_status_name_(status));
+        return gbl_dump_say_(c, GBL_DUMP_BAD_FRAMEBUFFER, "gbl_dump: framebuffer %u is incomplete (%s)",
+                             (unsigned)framebuffer, gbl_dump_status_name_(status));
     glGetIntegerv(GL_MAX_COLOR_ATTACHMENTS, &max_color);
     if (o->color_count > max_color)
-        return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                              "gbl_dump: options.color_count %d is more than GL_MAX_COLOR_ATTACHMENTS %d",
-                              o->color_count, (int)max_color);
+        return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                             "gbl_dump: options.color_count %d is more than GL_MAX_COLOR_ATTACHMENTS %d",
+                             o->color_count, (int)max_color);
     for (i = 0; i < o->color_count && rc == GBL_DUMP_OK; ++i)
         rc = gbl_dump_describe_(c, (GLenum)(GL_COLOR_ATTACHMENT0 + i), i, &att[i]);
     if (rc != GBL_DUMP_OK) return rc;
@@ -725,9 +725,9 @@ static int gbl_dump_framebuffer_(gbl_dump_ctx_* c, GLuint framebuffer, int width
         glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
                                               GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
         if (type == GL_NONE)
-            return gbl_dump_fail_(c, GBL_DUMP_BAD_FRAMEBUFFER,
-                                  "gbl_dump: framebuffer %u has no depth attachment (set options.depth to 0)",
-                                  (unsigned)framebuffer);
+            return gbl_dump_say_(c, GBL_DUMP_BAD_FRAMEBUFFER,
+                                 "gbl_dump: framebuffer %u has no depth attachment (set options.depth to 0)",
+                                 (unsigned)framebuffer);
     }
     for (i = 0; i < 4; ++i) {
         const int role[4] = {o->position, o->normal, o->albedo, o->specular};
@@ -736,9 +736,9 @@ static int gbl_dump_framebuffer_(gbl_dump_ctx_* c, GLuint framebuffer, int width
                    : (i == 1 && o->normal_encoding && strcmp(o->normal_encoding, "octahedral") == 0) ? 2
                                                                                                      : 3;
         if (role[i] >= 0 && att[role[i]].channels < need)
-            return gbl_dump_fail_(c, GBL_DUMP_BAD_ARGUMENT,
-                                  "gbl_dump: options.%s is colour attachment %d, which has %d channel(s); it needs %d",
-                                  names[i], role[i], att[role[i]].channels, need);
+            return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
+                                 "gbl_dump: options.%s is colour attachment %d, which has %d channel(s); it needs %d",
+                                 names[i], role[i], att[role[i]].channels, need);
     }
     /* Float storage is read unclamped whatever the caller set (GL_FIXED_ONLY: the default). */
     glGetIntegerv(GL_CLAMP_READ_COLOR, &clamp);
@@ -793,7 +793,7 @@ GBL_DUMP_DEF int gbl_dump(GLuint framebuffer, int width, int height, const char*
     c.message = message;
     c.message_size = message_size;
     if (message && message_size > 0) message[0] = '\0';
-    if (!o) return gbl_dump_fail_(&c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: options must not be NULL");
+    if (!o) return gbl_dump_say_(&c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: options must not be NULL");
     rc = gbl_dump_check_options_(&c, o, width, height, dir);
     if (rc != GBL_DUMP_OK) return rc;
     memset(att, 0, sizeof att);
@@ -806,17 +806,17 @@ GBL_DUMP_DEF int gbl_dump(GLuint framebuffer, int width, int height, const char*
     /* An error raised before the call would be reported as the read's own. */
     pending = glGetError();
     if (pending != GL_NO_ERROR)
-        return gbl_dump_fail_(&c, GBL_DUMP_GL_ERROR,
-                              "gbl_dump: %s was raised before gbl_dump was called (by the geometry pass or earlier); "
-                              "nothing was read",
-                              gbl_dump_gl_error_name_(pending));
+        return gbl_dump_say_(&c, GBL_DUMP_GL_ERROR,
+                             "gbl_dump: %s was raised before gbl_dump was called (by the geometry pass or earlier); "
+                             "nothing was read",
+                             gbl_dump_gl_error_name_(pending));
     gbl_dump_save_(&state);
     rc = gbl_dump_framebuffer_(&c, framebuffer, width, height, dir, o, att);
     gbl_dump_restore_(&state);
     if (rc != GBL_DUMP_OK) return rc;
     rc = gbl_dump_write_manifest_(&c, dir, o, att, &depth_listed);
     if (rc != GBL_DUMP_OK) return rc;
-    gbl_dump_fail_(
+    gbl_dump_say_(
         &c, GBL_DUMP_OK, "gbl_dump: wrote %d attachment(s)%s and manifest.json to %s%s", o->color_count,
         o->depth ? " and depth" : "", dir,
         o->depth && !depth_listed ? " (depth.pfm is not in the manifest: pass the camera for its near and far)" : "");
