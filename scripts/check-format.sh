@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Checks the project's C++ files against .clang-format without changing them; lists each offender.
+# Checks the project's C and C++ files against .clang-format without changing them; lists each offender.
 #
-#   scripts/check-format.sh              every tracked C++ file in app/ renderer/ ui/ tests/
+#   scripts/check-format.sh              every tracked C and C++ file in app/ renderer/ ui/ tests/ tools/
 #   scripts/check-format.sh FILE...      only the files named (for a quick check of an edit)
 #   scripts/check-format.sh --fix [FILE...]  reformats them in place instead
 #
@@ -21,11 +21,11 @@ else
     # Tracked and new (not ignored) files in a checkout, every file in an unpacked source archive. Seed corpora and test data
     # are inputs, not sources.
     if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
-        list() { git ls-files --cached --others --exclude-standard -- app renderer ui tests; }
+        list() { git ls-files --cached --others --exclude-standard -- app renderer ui tests tools; }
     else
-        list() { find app renderer ui tests -type f | sort; }
+        list() { find app renderer ui tests tools -type f | sort; }
     fi
-    mapfile -t files < <(list | grep -E '\.(cpp|h|hpp|cc|inl)$' | grep -v -E '^tests/(fuzz/corpus|data)/')
+    mapfile -t files < <(list | grep -E '\.(cpp|c|h|hpp|cc|inl)$' | grep -v -E '^tests/(fuzz/corpus|data)/')
 fi
 
 if [[ $fix -eq 1 ]]; then

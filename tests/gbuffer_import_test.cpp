@@ -8,6 +8,8 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -28,39 +30,105 @@ void writeExr(std::string const& path, int channels, std::vector<float> const& v
 }
 
 // A surface in front of the camera at (0, 0, 5), facing it; the top 4 rows are cleared background.
-// `normalScale` plants the not-unit bug when it is not 1.
-enum class Bug { None, FacingAway, NoBackground, AlbedoOver1, DepthFlipped };
+// `normalScale` plants the not-unit bug when it is not 1; `bug` plants one of the others.
+enum class Bug {
+    None,
+    FacingAway,
+    NoBackground,
+    AlbedoOver1,
+    DepthFlipped,
+    NaN,                // one position NaN
+    NormalUnbiased,     // (0, 0, 1) in a 16-bit PNG without the 0.5 n + 0.5 bias, declared biased
+    Transposed,         // camera matrices listed row by row, declared column-major
+    WrongNearFar,       // depth written with near 0.1, declared 0.5
+    ViewLabelledWorld,  // view-space positions, declared world
+    SrgbAlbedo,         // bright albedo, as sRGB bytes read as linear look
+    EightBitNormals,    // correctly biased normals in an 8-bit PNG, at shininess 64
+};
+
+// An 8- or 16-bit unsigned PNG of the floats (OpenImageIO clamps negative values to 0, as a UNORM
+// target does).
+void writePng(std::string const& path, int channels, std::vector<float> const& v, OIIO::TypeDesc type) {
+    auto out = OIIO::ImageOutput::create(path);
+    ASSERT_TRUE(out);
+    OIIO::ImageSpec spec(kW, kH, channels, type);
+    ASSERT_TRUE(out->open(path, spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, v.data()));
+    out->close();
+}
 
 std::string writeGBuffer(std::string const& name, float normalScale = 1.0f, Bug bug = Bug::None) {
     std::string const dir = test::freshTempDir(name);
-    char const* camera =
+    std::string const fovCamera =
         R"({"position": [0, 0, 5], "target": [0, 0, 0], "fov_y_degrees": 60, "near": 0.1, "far": 100})";
-    std::string manifest = R"({"format": "gbuffer-lab-gbuffer", "version": 1,
-      "position": {"file": "position.exr", "coverage": "a"},
-      "normal": {"file": "normal.exr", "encoding": "float"},
-      "albedo": {"file": "albedo.exr"},
-      "depth": {"file": "depth.exr", "convention": "window"},
-      "camera": )";
-    manifest.append(camera).append("}");
-    std::ofstream(dir + "/manifest.json") << manifest;
-    auto cam = parseManifest(manifest, "m.json", dir);
+    auto manifestWith = [](std::string const& normal, std::string const& depth, std::string const& camera) {
+        return R"({"format": "gbuffer-lab-gbuffer", "version": 1,
+          "position": {"file": "position.exr", "coverage": "a"},
+          "normal": )" +
+               normal + R"(, "albedo": {"file": "albedo.exr"}, "depth": )" + depth + R"(, "camera": )" + camera + "}";
+    };
+    std::string const exrNormal = R"({"file": "normal.exr", "encoding": "float"})";
+    std::string const depth = R"({"file": "depth.exr", "convention": "window"})";
+    auto cam = parseManifest(manifestWith(exrNormal, depth, fovCamera), "m.json", dir);
     EXPECT_TRUE(cam.manifest) << cam.error;
     CameraMatrices const c = cameraForSize(*cam.manifest->camera, kW, kH);
+
+    std::string manifest = manifestWith(exrNormal, depth, fovCamera);
+    if (bug == Bug::NormalUnbiased)
+        manifest = manifestWith(R"({"file": "normal.png", "encoding": "biased"})", depth, fovCamera);
+    if (bug == Bug::EightBitNormals)  // (N.H)^64 is off by about 2.7 % of its peak at 8 bits' 0.32 degrees
+        manifest = manifestWith(R"({"file": "normal.png", "encoding": "biased"}, "shininess": 64)", depth, fovCamera);
+    if (bug == Bug::WrongNearFar)
+        manifest = manifestWith(exrNormal, R"({"file": "depth.exr", "convention": "window", "near": 0.5, "far": 100})",
+                                fovCamera);
+    if (bug == Bug::Transposed) {
+        // Each matrix row by row (glm indexes [column][row]), labelled column-major. The transposed
+        // projection gives no near/far, so depth states them.
+        auto rows = [](glm::mat4 const& m) {
+            std::string t;
+            for (int r = 0; r < 4; ++r)
+                for (int k = 0; k < 4; ++k) {
+                    char number[32];
+                    std::snprintf(number, sizeof number, "%.9g", double(m[k][r]));
+                    t += (t.empty() ? "" : ", ") + std::string(number);
+                }
+            return "[" + t + "]";
+        };
+        manifest = manifestWith(exrNormal, R"({"file": "depth.exr", "convention": "window", "near": 0.1, "far": 100})",
+                                R"({"matrix_layout": "column-major", "view": )" + rows(c.view) + R"(, "projection": )" +
+                                    rows(c.projection) + "}");
+    }
+    std::ofstream(dir + "/manifest.json") << manifest;
     glm::mat4 const iv = glm::inverse(c.view), ip = glm::inverse(c.projection);
     std::vector<float> pos, nrm, alb, dep;
     float const n = 0.1f, f = 100.0f;
     for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x) {
             bool const bg = y < 4 && bug != Bug::NoBackground;
-            float const z = 4.0f + 0.1f * float(y);  // a surface whose distance changes down the frame
-            glm::vec3 const p = worldFromDistance(c, iv, ip, kW, kH, float(x), float(y), z);
+            // A surface whose distance changes down the frame. With transposed matrices the eye the
+            // manifest implies is the origin; 6 units and more keep the surface beyond it (z < 0), so
+            // that eye still sees its front and only the position/depth check speaks.
+            float const z = (bug == Bug::Transposed ? 6.0f : 4.0f) + 0.1f * float(y);
+            glm::vec3 p = worldFromDistance(c, iv, ip, kW, kH, float(x), float(y), z);
+            if (bug == Bug::ViewLabelledWorld) p = glm::vec3(c.view * glm::vec4(p, 1.0f));
+            if (bug == Bug::NaN && x == 3 && y == 8) p.y = std::nanf("");
             pos.insert(pos.end(), {bg ? 0 : p.x, bg ? 0 : p.y, bg ? 0 : p.z, bg ? 0.0f : 1.0f});
             nrm.insert(nrm.end(), {0, 0, bg ? 0 : normalScale * (bug == Bug::FacingAway ? -1.0f : 1.0f)});
-            alb.insert(alb.end(), {bug == Bug::AlbedoOver1 ? 1.5f : 0.3f, 0.2f, 0.1f});
+            if (bug == Bug::EightBitNormals && !bg)  // stored as 0.5 n + 0.5
+                for (auto it = nrm.end() - 3; it != nrm.end(); ++it) *it = 0.5f * *it + 0.5f;
+            glm::vec3 const a = bug == Bug::AlbedoOver1  ? glm::vec3(1.5f, 0.2f, 0.1f)
+                                : bug == Bug::SrgbAlbedo ? glm::vec3(0.8f, 0.7f, 0.6f)
+                                                         : glm::vec3(0.3f, 0.2f, 0.1f);
+            alb.insert(alb.end(), {a.r, a.g, a.b});
             dep.push_back(bg ? 1.0f : (f - n * f / z) / (f - n));
         }
     writeExr(dir + "/position.exr", 4, pos);
-    writeExr(dir + "/normal.exr", 3, nrm);
+    if (bug == Bug::NormalUnbiased)
+        writePng(dir + "/normal.png", 3, nrm, OIIO::TypeDesc::UINT16);
+    else if (bug == Bug::EightBitNormals)
+        writePng(dir + "/normal.png", 3, nrm, OIIO::TypeDesc::UINT8);
+    else
+        writeExr(dir + "/normal.exr", 3, nrm);
     writeExr(dir + "/albedo.exr", 3, alb);
     if (bug == Bug::DepthFlipped)  // the depth rows bottom-up, the other attachments top-down
         for (int y = 0; y < kH / 2; ++y)
@@ -146,8 +214,14 @@ TEST(GBufferImport, EachPlantedBugIsFound) {
     for (Case const& c :
          {Case{Bug::FacingAway, "normal_facing_away", "normal matrix"},
           Case{Bug::NoBackground, "no_background", "clear"}, Case{Bug::AlbedoOver1, "albedo_range", "reflectance"},
-          Case{Bug::DepthFlipped, "position_depth_mismatch", "upside down"}}) {
-        GBufferCheckReport const r = check(writeGBuffer(std::string("gbi_") + c.check, 1.0f, c.bug));
+          Case{Bug::DepthFlipped, "position_depth_mismatch", "upside down"}, Case{Bug::NaN, "nan_inf", "position"},
+          Case{Bug::NormalUnbiased, "normal_unbiased", "0.5·n + 0.5 bias"},
+          Case{Bug::Transposed, "position_depth_mismatch", "transposed camera matrices"},
+          Case{Bug::WrongNearFar, "position_depth_mismatch", "wrong near/far"},
+          Case{Bug::ViewLabelledWorld, "position_depth_mismatch", "view-space positions labelled world"},
+          Case{Bug::SrgbAlbedo, "albedo_srgb", "sRGB-encoded"},
+          Case{Bug::EightBitNormals, "normal_precision", "store normals in 16 bits"}}) {
+        GBufferCheckReport const r = check(writeGBuffer("gbi_bug" + std::to_string(int(c.bug)), 1.0f, c.bug));
         bool found = false;
         for (auto const& f : r.findings)
             if (f.check == c.check) {
