@@ -438,8 +438,8 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
     overview.buttonRect = itemRect();
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
-            "every attachment of the G-buffer layout and the lit frame at once;\n"
-            "click one to show it full size");
+            "the lit frame and the G-buffer's position, normal, albedo, specular and depth at once,\n"
+            "each auto-ranged; click one to show it full size (G toggles)");
     ImGui::SameLine();
     ImGui::TextDisabled("(?)");
     if (ImGui::IsItemHovered())
@@ -447,7 +447,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
             "left drag: orbit    right drag: look    middle drag: pan    wheel: dolly\n"
             "W A S D / Q E: fly (shift: faster)    F: frame the selection    Home: the scene's view\n"
             "click a light cube: select it    double-click: select and frame it\n"
-            "L: lock the pixel inspector    F1: every shortcut");
+            "L: lock the pixel inspector    G: attachment overview    F1: every shortcut");
     litPinRow(litPin, tools, settings.view);
     if (ab) teachingRow(*ab, settings);
 
