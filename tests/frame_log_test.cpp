@@ -31,6 +31,9 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     l.toolsImage = {1262, 611};
     l.toolsRegion = {10, 20, 120, 60};
     l.viewerImages = {{4, 520, 244, 140}, {260, 520, 244, 140}};
+    l.overview = true;
+    l.overviewButton = {750, 40, 80, 19};
+    l.overviewCells = {"final@307,178,211,133", "normal@737,178,211,133"};
     nlohmann::json const j = nlohmann::json::parse(frameLogJson(l));
     EXPECT_EQ(j["frame"], 41);
     EXPECT_EQ(j["rendered"], true);
@@ -58,6 +61,10 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     EXPECT_DOUBLE_EQ(j["layoutItems"][3].get<double>(), 450.5);
     EXPECT_EQ(j["toolsImage"][0], 1262);
     EXPECT_EQ(j["toolsRegion"][2], 120);
+    EXPECT_EQ(j["overview"], true);
+    EXPECT_DOUBLE_EQ(j["overviewButton"][2].get<double>(), 80.0);
+    ASSERT_EQ(j["overviewCells"].size(), 2u);
+    EXPECT_EQ(j["overviewCells"][1], "normal@737,178,211,133");
     EXPECT_EQ(j["toolsRegion"][3], 60);
 }
 

@@ -269,3 +269,51 @@ TEST(ViewerTools, ViewportToolsFollowTheViewportsView) {
     EXPECT_FALSE(tools.viewer.linearDepth);
     EXPECT_EQ(tools.viewer.lastFitFrame, -1);
 }
+
+TEST(ViewerTools, ReadableRangeLeavesOutTheOutliersTheBackgroundAndNonFiniteValues) {
+    ViewerState v;
+    v.kind = ViewerKind::Position;
+    v.channelMask = 0x1;
+    FloatImage img = positions();  // R = 1..100
+    // A NaN and an Inf on drawn pixels (R = 1, 2) and a background pixel (alpha 0) far outside
+    // (R = 100): none counts.
+    img.pixels[0] = std::numeric_limits<float>::quiet_NaN();
+    img.pixels[4] = std::numeric_limits<float>::infinity();
+    img.pixels[396] = -1000.0f;
+    img.pixels[399] = 0.0f;
+    ValueRange const r = readableRange(v, img);
+    EXPECT_EQ(r.samples, 97);  // 100 less NaN, Inf and the background
+    // Nearest rank over 3..99: the 1st percentile is the 1st value, the 99th the 97th of 97.
+    EXPECT_EQ(r.min, 3.0f);
+    EXPECT_EQ(r.max, 99.0f);
+    // The lit frame keeps its darkest values (0th percentile) and counts every pixel.
+    v.kind = ViewerKind::Lighting;
+    FloatImage lit = positions();
+    EXPECT_EQ(readableRange(v, lit).min, 1.0f);
+    EXPECT_EQ(readableRange(v, lit).max, 99.0f);
+}
+
+TEST(ViewerTools, AutoFitRefitsAtOnceWhenTheValuesMeanSomethingElse) {
+    ViewerState v = ViewportTools::defaultViewer();
+    v.kind = ViewerKind::Depth;
+    v.linearDepth = false;
+    ViewerData d;
+    glm::vec2 const planes(0.1f, 200.0f);
+    EXPECT_TRUE(autoFitDue(v, d, planes, 10, false));  // never fitted
+    v.lastFitFrame = 10;
+    d.autoFitFor = std::make_pair(viewerValuesKey(v), planes);
+    EXPECT_FALSE(autoFitDue(v, d, planes, 11, false));
+    EXPECT_FALSE(autoFitDue(v, d, planes, 69, true));  // its next turn is 60 frames on...
+    EXPECT_TRUE(autoFitDue(v, d, planes, 70, true));   // ... on a rendered frame
+    EXPECT_FALSE(autoFitDue(v, d, planes, 70, false));
+    // Raw window depth to linear depth: the range of one is meaningless for the other.
+    v.linearDepth = true;
+    EXPECT_TRUE(autoFitDue(v, d, planes, 11, false));
+    d.autoFitFor = std::make_pair(viewerValuesKey(v), planes);
+    EXPECT_FALSE(autoFitDue(v, d, planes, 11, false));
+    // A new far plane moves every linear depth.
+    EXPECT_TRUE(autoFitDue(v, d, glm::vec2(0.1f, 5000.0f), 11, false));
+    // Auto-fit off: never.
+    v.autoFit = false;
+    EXPECT_FALSE(autoFitDue(v, d, glm::vec2(0.1f, 5000.0f), 11, true));
+}

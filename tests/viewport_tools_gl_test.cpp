@@ -3,12 +3,15 @@
 // drawing an attachment with their own range and fitting it.
 #include "editor/viewer_tools_service.h"
 #include "gl_fixture.h"
+#include "model/attachment_overview.h"
 #include "model/colormap.h"
 #include "scene/default_scene.h"
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 #include <vector>
 
 using namespace gbl;
@@ -66,6 +69,38 @@ protected:
         glBindTexture(GL_TEXTURE_2D, 0);
         std::size_t const i = (std::size_t(kH - 1 - y) * kW + std::size_t(x)) * 4;
         return {rgba[i], rgba[i + 1], rgba[i + 2], rgba[i + 3]};
+    }
+    // The red bytes of a texture the views draw (v flipped), top-left origin, row by row.
+    std::vector<int> reds(unsigned texture) {
+        std::vector<std::uint8_t> rgba(std::size_t(kW) * kH * 4);
+        glBindTexture(GL_TEXTURE_2D, texture);
+        glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+        glBindTexture(GL_TEXTURE_2D, 0);
+        std::vector<int> out;
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < kW; ++x) out.push_back(rgba[(std::size_t(kH - 1 - y) * kW + std::size_t(x)) * 4]);
+        return out;
+    }
+    // How the drawn pixels (alpha of the position attachment) of a grey view spread: the share at
+    // 255, and the distance between the 10th and the 90th percentile of their bytes.
+    struct Spread {
+        float white = 0.0f;
+        int p10to90 = 0;
+    };
+    Spread spread(unsigned texture) {
+        FloatImage const drawn = renderer_->readAttachment(Attachment::Position);
+        std::vector<int> const all = reds(texture);
+        std::vector<int> bytes;
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < kW; ++x)
+                if (drawn.at(x, y, 3) != 0.0f) bytes.push_back(all[std::size_t(y) * kW + std::size_t(x)]);
+        if (bytes.empty()) return {};
+        std::sort(bytes.begin(), bytes.end());
+        Spread s;
+        s.white = float(std::count(bytes.begin(), bytes.end(), 255)) / float(bytes.size());
+        s.p10to90 = bytes[bytes.size() * 9 / 10] - bytes[bytes.size() / 10];
+        return s;
     }
 
     SceneData scene_;
@@ -207,6 +242,95 @@ TEST_F(ViewportToolsGlTest, LightingViewToolsWorkOnTheHdrValues) {
                 worst = std::max(worst, std::abs(texel(tex, x, y)[std::size_t(c)] - int(std::lround(t * 255.0f))));
             }
     EXPECT_LE(worst, 1);
+}
+
+// Issue 26: the viewport's depth views opened all white (eye distances in world units written to
+// an 8-bit target over 0..1) and positions as saturated blocks. By default, with the tools as the
+// editor opens them, each is fitted to its data and spreads over the grey scale.
+TEST_F(ViewportToolsGlTest, DefaultViewsOfTheDefaultSceneAreNotSaturated) {
+    long frame = 0;
+    for (DebugView const view : {DebugView::DepthLinear, DebugView::Depth, DebugView::Position}) {
+        SCOPED_TRACE(kDebugViewNames[std::size_t(view)].data());
+        state_.pipeline.view = view;
+        render();
+        FrameInput const input{state_.camera, scene_.lights, state_.pipeline, true};
+        // The raw values (what the renderer's own image shows, the tools closed): the depths and
+        // most positions are past 1, so the picture saturates. This is what the default avoids.
+        Spread const raw = spread(renderer_->texture(Attachment::Final));
+        if (view == DebugView::DepthLinear) {
+            EXPECT_GT(raw.white, 0.95f);
+        }
+        ++frame;
+        state_.viewportTools = ui::ViewportTools{};
+        // Depth is one channel (grey); of the position, x alone is read (the fit spans x, y and z).
+        if (view == DebugView::Position) state_.viewportTools.viewer.channelMask = 0x1;
+        unsigned const tex = ui::serviceViewportTools(state_, *renderer_, input, frame, true, gpu_);
+        ASSERT_NE(tex, 0u);
+        Spread const shown = spread(tex);
+        // The 1-99 % fit leaves about 1 % of the drawn pixels at white (nearest rank and ties on
+        // an 8-bit picture: allow 5 %), where the raw view had nearly all of them.
+        EXPECT_LT(shown.white, 0.05f);
+        // The middle 80 % of the drawn pixels spans at least a quarter of the grey scale: a picture,
+        // not a flat block (the default scene's depths and x span the frame from near to far).
+        EXPECT_GE(shown.p10to90, 64);
+    }
+}
+
+// A lesson going from raw depth to linear depth (or to another far plane) shows the same viewer
+// kind with values of another scale: auto-fit refits at once, not at its next turn a second later,
+// when render-on-change may draw no new frame for a long time.
+TEST_F(ViewportToolsGlTest, AutoFitRefitsWhenDepthTurnsLinearOrTheFarPlaneMoves) {
+    state_.pipeline.view = DebugView::Depth;
+    render();
+    FrameInput input{state_.camera, scene_.lights, state_.pipeline, true};
+    ASSERT_NE(ui::serviceViewportTools(state_, *renderer_, input, 1, true, gpu_), 0u);
+    ui::ViewerState const& v = state_.viewportTools.viewer;
+    EXPECT_LE(v.rangeMax, 1.0f);  // window depths
+    // The view changes, the frame does not (the depth attachment holds the same values).
+    state_.pipeline.view = DebugView::DepthLinear;
+    ASSERT_NE(ui::serviceViewportTools(state_, *renderer_, input, 2, false, gpu_), 0u);
+    EXPECT_EQ(v.lastFitFrame, 2);
+    EXPECT_GT(v.rangeMax, 1.0f);  // eye distances of the scene, metres away
+    EXPECT_GE(v.rangeMin, state_.camera.nearPlane);
+    float const max200 = v.rangeMax;
+    // A far plane of 5000 rendered on the next frame: the fit is redone for it at once.
+    state_.camera.farPlane = 5000.0f;
+    render();
+    input.camera = state_.camera;
+    ASSERT_NE(ui::serviceViewportTools(state_, *renderer_, input, 3, true, gpu_), 0u);
+    EXPECT_EQ(v.lastFitFrame, 3);
+    // The same surfaces at the same distances, rebuilt through another projection: close, not equal.
+    EXPECT_NEAR(v.rangeMax, max200, max200 * 0.05f);
+}
+
+// The overview's cells: each view drawn into its own texture, the attachments with their readable
+// range, none of them a flat picture.
+TEST_F(ViewportToolsGlTest, OverviewDrawsEveryCellWithItsReadableRange) {
+    render();
+    FrameInput const input{state_.camera, scene_.lights, state_.pipeline, true};
+    EXPECT_TRUE(ui::serviceOverview(state_, *renderer_, input, 1, true, gpu_).empty());  // off
+    state_.viewport.overview.on = true;
+    std::vector<unsigned> const textures = ui::serviceOverview(state_, *renderer_, input, 2, true, gpu_);
+    std::vector<DebugView> const views = ui::overviewViews();
+    ASSERT_EQ(textures.size(), views.size());
+    std::set<unsigned> const distinct(textures.begin(), textures.end());
+    EXPECT_EQ(distinct.size(), textures.size());
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        SCOPED_TRACE(kDebugViewNames[std::size_t(views[i])].data());
+        ASSERT_NE(textures[i], 0u);
+        std::vector<int> const r = reds(textures[i]);
+        auto const [lo, hi] = std::minmax_element(r.begin(), r.end());
+        EXPECT_GE(*hi - *lo, 64);  // a picture over a good part of the scale, not one colour
+        ui::ViewportTools const& cell = state_.viewport.overview.viewers[i];
+        if (views[i] == DebugView::Position || views[i] == DebugView::DepthLinear) {
+            // Fitted as the viewport's tools fit by default: the readable range of the cell's values.
+            ui::ValueRange const expected = ui::readableRange(cell.viewer, cell.data.values);
+            EXPECT_EQ(cell.viewer.rangeMin, expected.min);
+            EXPECT_EQ(cell.viewer.rangeMax, expected.max);
+            EXPECT_EQ(cell.viewer.lastFitFrame, 2);
+        }
+    }
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
 }  // namespace

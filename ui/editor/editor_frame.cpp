@@ -296,6 +296,9 @@ void renderScene(Editor& editor, FrameTimes& times) {
     times.viewportToolsTexture =
         ui::serviceViewportTools(state, renderer, FrameInput{state.camera, editor.drawn, state.pipeline}, editor.frame,
                                  times.rendered, editor.gpu.viewerTools);
+    times.overviewTextures =
+        ui::serviceOverview(state, renderer, FrameInput{state.camera, editor.drawn, state.pipeline}, editor.frame,
+                            times.rendered, editor.gpu.viewerTools);
     editor.gpu.timer.end();
     samplePixel(editor, times.rendered);
     finishIfMeasuring(times);

@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include <cstdio>
+
 namespace gbl {
 
 namespace {
@@ -85,6 +87,15 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.wireframesAll = state.viewport.allWireframesRect;
     line.litDiffShown = state.litPin.showDiff;
     line.everyLight = state.inspector.everyLight;
+    ui::OverviewState const& overview = state.viewport.overview;
+    line.overview = overview.on;
+    line.overviewButton = overview.buttonRect;
+    for (ui::OverviewCell const& c : overview.cells) {
+        char where[96];
+        std::snprintf(where, sizeof where, "@%d,%d,%d,%d", int(c.image.x), int(c.image.y), int(c.image.z),
+                      int(c.image.w));
+        line.overviewCells.push_back(std::string(kDebugViewNames[std::size_t(c.view)]) + where);
+    }
     editor.frameLog.write(line);
 }
 

@@ -85,8 +85,9 @@ struct FrameTimes {
     FrameStats frameStats;
     ui::EditorCost cost;  // the editor's own CPU and GPU costs, for the Stats window
     std::array<unsigned, 5> viewerTextures{};
-    unsigned litDiffTexture = 0;        // the viewport's lit-frame diff heat map while shown, else 0
-    unsigned viewportToolsTexture = 0;  // the viewport's attachment as its viewer tools show it, else 0
+    unsigned litDiffTexture = 0;             // the viewport's lit-frame diff heat map while shown, else 0
+    unsigned viewportToolsTexture = 0;       // the viewport's attachment as its viewer tools show it, else 0
+    std::vector<unsigned> overviewTextures;  // the attachment overview's cells while it is on
     int fbWidth = 0;
     int fbHeight = 0;
     float dt = 0.0f;

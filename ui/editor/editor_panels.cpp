@@ -167,7 +167,7 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
         state.stats.last.stoppedAfter ? std::string(passName(*state.stats.last.stoppedAfter)) : std::string();
     ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, state.viewportTools, viewportTexture,
                           {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer),
-                          &ab, state.inspector.locked ? state.inspector.pixel : std::nullopt);
+                          &ab, state.inspector.locked ? state.inspector.pixel : std::nullopt, times.overviewTextures);
     if (state.frame.open && !ui::kHasDocking) {
         // Tiled: the Frame window takes the strip's place while open.
         state.gbuffer.visible = false;

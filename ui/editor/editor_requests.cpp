@@ -208,6 +208,9 @@ void carryOut(Editor& editor, EditorAction action) {
         case EditorAction::NextDepthCopy:
             state.pipeline.depthCopy = DepthCopy((int(state.pipeline.depthCopy) + 1) % 3);
             break;
+        case EditorAction::ToggleOverview:
+            state.viewport.overview.on = !state.viewport.overview.on;
+            break;
         default:
             break;  // fly keys act through CameraInput::move
     }

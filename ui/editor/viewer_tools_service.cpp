@@ -87,6 +87,57 @@ unsigned serviceLitPin(LitPin& pin, Renderer& renderer, long frame, ViewerToolsG
     return gpu.litDiff.id();
 }
 
+namespace {
+
+// The clip planes a viewer's linear depth uses: its own or the camera's.
+glm::vec2 viewerClipPlanes(ViewerState const& v, Camera const& camera) {
+    bool const own = v.kind == ViewerKind::Depth && !v.cameraClipPlanes;
+    return own ? glm::vec2(v.nearPlane, v.farPlane) : glm::vec2(camera.nearPlane, camera.farPlane);
+}
+
+// Auto-fit and the Fit button of a viewer outside the G-buffer window (the viewport's, the
+// overview's cells), from its own read-back: auto-fit takes the readable range (readableRange),
+// Fit the whole min..max. Reads back when a fit, an open tool or `extraRead` needs the values.
+// Returns whether the diff changed (re-upload its heat map).
+bool fitOwnViewer(ViewerState& v, ViewerData& d, Renderer& renderer, Camera const& camera, long frame, bool rendered,
+                  bool extraRead) {
+    glm::vec2 const planes = viewerClipPlanes(v, camera);
+    bool const asked = v.fitRequested;
+    bool const fit = (asked || autoFitDue(v, d, planes, frame, rendered)) && viewerRemaps(v.kind);
+    v.fitRequested = false;
+    bool diffChanged = false;
+    if (fit || viewerToolsNeedData(v) || extraRead) diffChanged = serviceViewerData(v, d, renderer, camera, frame, fit);
+    if (!fit) return diffChanged;
+    ValueRange const r =
+        asked ? fitRange(d.values, viewerStatsMask(v), viewerSkip(v.kind)) : readableRange(v, d.values);
+    if (r.samples > 0) {
+        v.rangeMin = r.min;
+        v.rangeMax = r.max > r.min ? r.max : r.min + 1e-6f;
+        v.lastFitFrame = frame;
+        if (!asked) d.autoFitFor = std::make_pair(viewerValuesKey(v), planes);
+        updateViewerStats(v, d);
+    }
+    return diffChanged;
+}
+
+// Draws `params` into `target` when a new frame was rendered or the target is stale.
+void drawOwnView(Renderer& renderer, ViewParams const& params, ViewerState const* v, FrameInput const& frameInput,
+                 bool rendered, ViewTarget& target, std::optional<ViewParams>& drawn) {
+    bool const stale = !target.texture || target.texture.width() != renderer.width() ||
+                       target.texture.height() != renderer.height() || drawn != params;
+    if (!rendered && !stale) return;
+    FrameInput input = frameInput;
+    if (v && v->kind == ViewerKind::Depth && !v->cameraClipPlanes) {
+        input.camera.nearPlane = v->nearPlane;
+        input.camera.farPlane = v->farPlane;
+    }
+    renderer.drawView(params, input, target);
+    target.texture.setFilter(GL_NEAREST, GL_NEAREST);
+    drawn = params;
+}
+
+}  // namespace
+
 unsigned serviceViewportTools(EditorState& state, Renderer& renderer, FrameInput const& frameInput, long frame,
                               bool rendered, ViewerToolsGpu& gpu) {
     ViewportTools& tools = state.viewportTools;
@@ -95,49 +146,42 @@ unsigned serviceViewportTools(EditorState& state, Renderer& renderer, FrameInput
     ViewerState& v = tools.viewer;
     ViewerData& d = tools.data;
     v.imageSize = glm::ivec2(renderer.width(), renderer.height());
-
-    // Fits as the G-buffer viewers' (editor_frame.cpp), from this viewer's own read-back.
-    bool const autoDue = v.autoFit && (v.lastFitFrame < 0 || (rendered && frame - v.lastFitFrame >= 60));
-    bool const asked = v.fitRequested;
-    bool const fit = (asked || autoDue) && viewerRemaps(v.kind);
-    v.fitRequested = false;
-    bool diffChanged = false;
     bool const magnifier = state.gbuffer.showMagnifier && state.gbuffer.activeViewer == kViewportViewer;
-    if (fit || viewerToolsNeedData(v) || magnifier)
-        diffChanged = serviceViewerData(v, d, renderer, state.camera, frame, fit);
-    if (fit) {
-        // The lit frame's own auto-fit leaves out the 1 % brightest: the light cubes (drawn at 1.5)
-        // and highlights would otherwise leave the lit surfaces almost black.
-        bool const litAuto = !asked && v.kind == ViewerKind::Lighting;
-        ValueRange const r = litAuto
-                                 ? percentileRange(d.values, viewerStatsMask(v), 0.0f, 99.0f, {}, viewerSkip(v.kind))
-                                 : fitRange(d.values, viewerStatsMask(v), viewerSkip(v.kind));
-        if (r.samples > 0) {
-            v.rangeMin = r.min;
-            v.rangeMax = r.max > r.min ? r.max : r.min + 1e-6f;
-            v.lastFitFrame = frame;
-            updateViewerStats(v, d);
-        }
-    }
+    bool const diffChanged = fitOwnViewer(v, d, renderer, state.camera, frame, rendered, magnifier);
     if (v.showDiff && d.diff.comparable) {
         uploadDiff(gpu.viewportDiff, d.diff, v.diffThreshold, diffChanged);
         return gpu.viewportDiff.id();
     }
-    ViewParams const params = viewerParams(v);
-    ViewTarget& target = gpu.viewport;
-    bool const stale = !target.texture || target.texture.width() != renderer.width() ||
-                       target.texture.height() != renderer.height() || gpu.viewportParams != params;
-    if (rendered || stale) {
-        FrameInput input = frameInput;
-        if (v.kind == ViewerKind::Depth && !v.cameraClipPlanes) {
-            input.camera.nearPlane = v.nearPlane;
-            input.camera.farPlane = v.farPlane;
+    drawOwnView(renderer, viewerParams(v), &v, frameInput, rendered, gpu.viewport, gpu.viewportParams);
+    return gpu.viewport.texture.id();
+}
+
+std::vector<unsigned> serviceOverview(EditorState& state, Renderer& renderer, FrameInput const& frameInput, long frame,
+                                      bool rendered, ViewerToolsGpu& gpu) {
+    OverviewState& overview = state.viewport.overview;
+    std::vector<unsigned> textures;
+    if (!overview.on || renderer.width() <= 0 || renderer.height() <= 0) return textures;
+    std::vector<DebugView> const views = overviewViews();
+    overview.viewers.resize(views.size());
+    gpu.overview.resize(views.size());
+    gpu.overviewParams.resize(views.size());
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        ViewportTools& cell = overview.viewers[i];
+        ViewParams params;
+        params.view = views[i];
+        ViewerState const* viewer = nullptr;
+        // The attachments a viewer kind covers get its readable range; the lit frame is tonemapped
+        // as in the viewport, emission and occlusion are colours and fractions already.
+        if (followViewportView(cell, views[i])) {
+            cell.viewer.imageSize = glm::ivec2(renderer.width(), renderer.height());
+            fitOwnViewer(cell.viewer, cell.data, renderer, state.camera, frame, rendered, false);
+            params = viewerParams(cell.viewer);
+            viewer = &cell.viewer;
         }
-        renderer.drawView(params, input, target);
-        target.texture.setFilter(GL_NEAREST, GL_NEAREST);
-        gpu.viewportParams = params;
+        drawOwnView(renderer, params, viewer, frameInput, rendered, gpu.overview[i], gpu.overviewParams[i]);
+        textures.push_back(gpu.overview[i].texture.id());
     }
-    return target.texture.id();
+    return textures;
 }
 
 }  // namespace gbl::ui

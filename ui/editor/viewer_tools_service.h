@@ -9,6 +9,7 @@
 
 #include <array>
 #include <optional>
+#include <vector>
 
 namespace gbl::ui {
 
@@ -23,6 +24,9 @@ struct ViewerToolsGpu {
     ViewTarget viewport;
     std::optional<ViewParams> viewportParams;
     gl::Texture viewportDiff;
+    // The attachment overview's cells (model/attachment_overview.h), one view target each.
+    std::vector<ViewTarget> overview;
+    std::vector<std::optional<ViewParams>> overviewParams;
 };
 
 // Uploads a diff's heat map into tex, (re)making it at the diff's size; a new texture is always
@@ -43,5 +47,9 @@ unsigned serviceLitPin(LitPin& pin, Renderer& renderer, long frame, ViewerToolsG
 // last rendered; `rendered`: a new frame was rendered this iteration.
 unsigned serviceViewportTools(EditorState& state, Renderer& renderer, FrameInput const& frameInput, long frame,
                               bool rendered, ViewerToolsGpu& gpu);
+// The attachment overview's cells while it is on: each view of overviewViews drawn with its
+// readable range (the viewport tools' auto-fit), in cell order; empty while it is off.
+std::vector<unsigned> serviceOverview(EditorState& state, Renderer& renderer, FrameInput const& frameInput, long frame,
+                                      bool rendered, ViewerToolsGpu& gpu);
 
 }  // namespace gbl::ui

@@ -111,6 +111,8 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"wireframesToggle\":" + rect(l.wireframesToggle) + ",\"wireframesAll\":" + rect(l.wireframesAll);
     out += std::string(",\"litDiffShown\":") + (l.litDiffShown ? "true" : "false");
     out += std::string(",\"everyLight\":") + (l.everyLight ? "true" : "false");
+    out += std::string(",\"overview\":") + (l.overview ? "true" : "false");
+    out += ",\"overviewButton\":" + rect(l.overviewButton) + ",\"overviewCells\":" + strings(l.overviewCells);
     return out + "}";
 }
 

@@ -91,6 +91,11 @@ struct FrameLogLine {
     glm::vec4 wireframesAll{0.0f};
     bool litDiffShown = false;
     bool everyLight = false;
+    // The attachment overview: whether the viewport shows it, its toolbar button, and each cell's
+    // picture as "VIEW@X,Y,W,H" (kDebugViewNames name, window coordinates; empty while off).
+    bool overview = false;
+    glm::vec4 overviewButton{0.0f};
+    std::vector<std::string> overviewCells;
 };
 
 std::string frameLogJson(FrameLogLine const& line);

@@ -159,6 +159,8 @@ std::string_view actionName(EditorAction action) {
             return "next-cull-mode";
         case EditorAction::NextDepthCopy:
             return "next-depth-copy";
+        case EditorAction::ToggleOverview:
+            return "toggle-overview";
         case EditorAction::FlyForward:
             return "fly-forward";
         case EditorAction::FlyBack:

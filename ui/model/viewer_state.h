@@ -10,6 +10,7 @@
 #include <array>
 #include <optional>
 #include <string_view>
+#include <utility>
 
 namespace gbl::ui {
 
@@ -87,6 +88,10 @@ struct ViewerData {
     long pinnedFrame = -1;
     DiffStats diff;
     std::optional<StatsInputs> computedFor;
+    // What the last auto-fit was for: the values key (viewerValuesKey) and the clip planes that
+    // linearised depth. Either changing (raw to linear depth, a lesson's far plane) makes the
+    // range meaningless, so auto-fit refits at once instead of waiting for its next turn.
+    std::optional<std::pair<unsigned, glm::vec2>> autoFitFor;
 };
 
 struct GBufferPanelState {

@@ -36,6 +36,18 @@ bool viewerDataDue(ViewerState const& viewer, ViewerData const& data, long frame
     return data.frame < 0 || frame - data.frame >= kViewerDataInterval || data.key != viewerValuesKey(viewer);
 }
 
+ValueRange readableRange(ViewerState const& viewer, FloatImage const& values) {
+    float const low = viewer.kind == ViewerKind::Lighting ? 0.0f : 1.0f;
+    return percentileRange(values, viewerStatsMask(viewer), low, 99.0f, {}, viewerSkip(viewer.kind));
+}
+
+bool autoFitDue(ViewerState const& viewer, ViewerData const& data, glm::vec2 clipPlanes, long frame, bool rendered) {
+    if (!viewer.autoFit) return false;
+    if (viewer.lastFitFrame < 0) return true;
+    if (data.autoFitFor != std::make_pair(viewerValuesKey(viewer), clipPlanes)) return true;
+    return rendered && frame - viewer.lastFitFrame >= 60;
+}
+
 void setViewerValues(ViewerState& viewer, ViewerData& data, FloatImage values, long frame) {
     data.values = std::move(values);
     data.frame = frame;

@@ -25,6 +25,17 @@ bool viewerDataDue(ViewerState const& viewer, ViewerData const& data, long frame
 // What identifies the values of a viewer (kind, depth linearisation, clip planes in use).
 unsigned viewerValuesKey(ViewerState const& viewer);
 
+// The range that makes a viewer's values readable (issue 26): the 1st to 99th percentile of the
+// shown channels (the lit frame: 0th to 99th, so the light cubes and highlights do not leave the
+// surfaces black), NaN, Inf and the background (viewerSkip) left out. samples 0 when nothing is
+// drawn. What auto-fit shows by default; the Fit button takes the whole min..max instead.
+ValueRange readableRange(ViewerState const& viewer, FloatImage const& values);
+
+// Whether an auto-fitting viewer must refit now: never fitted, its values now mean something else
+// (viewerValuesKey, or the clip planes its linear depth uses), or, on a newly rendered frame,
+// about a second (60 frames) after the last fit.
+bool autoFitDue(ViewerState const& viewer, ViewerData const& data, glm::vec2 clipPlanes, long frame, bool rendered);
+
 // Takes a fresh read-back (already through viewerValues) and services the requests.
 void setViewerValues(ViewerState& viewer, ViewerData& data, FloatImage values, long frame);
 // Recomputes statistics, histogram, clipping and diff when their inputs changed; services the
@@ -67,6 +78,17 @@ struct LitPin {
 // Whether the lit frame must be read back this frame: a pin waits for it, a diff just turned on
 // is computed at once and then refreshes every kViewerDataInterval frames.
 bool litPinDue(LitPin const& pin, long frame);
+// The range that makes a viewer's values readable (issue 26): the 1st to 99th percentile of the
+// shown channels (the lit frame: 0th to 99th, so the light cubes and highlights do not leave the
+// surfaces black), NaN, Inf and the background (viewerSkip) left out. samples 0 when nothing is
+// drawn. What auto-fit shows by default; the Fit button takes the whole min..max instead.
+ValueRange readableRange(ViewerState const& viewer, FloatImage const& values);
+
+// Whether an auto-fitting viewer must refit now: never fitted, its values now mean something else
+// (viewerValuesKey, or the clip planes its linear depth uses), or, on a newly rendered frame,
+// about a second (60 frames) after the last fit.
+bool autoFitDue(ViewerState const& viewer, ViewerData const& data, glm::vec2 clipPlanes, long frame, bool rendered);
+
 // Takes a fresh read-back of the lit frame: pins it when asked, recomputes statistics and diff.
 void setLitValues(LitPin& pin, FloatImage lighting, long frame);
 

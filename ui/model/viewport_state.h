@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/pipeline_settings.h"
+#include "model/attachment_overview.h"
 
 #include <glm/glm.hpp>
 
@@ -30,6 +31,7 @@ struct ViewportState {
     // the frame log that real-input tests click by.
     glm::vec4 wireframesRect{0.0f};
     glm::vec4 allWireframesRect{0.0f};
+    OverviewState overview;  // the attachment overview (issue 26)
 };
 
 }  // namespace gbl::ui

@@ -342,11 +342,49 @@ void teachingRow(ViewportTeaching& t, PipelineSettings const& settings) {
     }
 }
 
+// The attachment overview: each view of overviewViews in a grid filling the image area, labelled
+// above its picture; records the cells for clicks and the frame log. A G-buffer cell in forward
+// mode says why it is empty, as the full-size view does.
+void drawOverview(OverviewState& overview, PipelineSettings const& settings, std::span<unsigned const> textures,
+                  ImVec2 origin, ImVec2 avail, glm::ivec2 textureSize) {
+    std::vector<DebugView> const views = overviewViews();
+    float const aspect = textureSize.x > 0 && textureSize.y > 0 ? float(textureSize.x) / float(textureSize.y)
+                                                                : avail.x / std::max(avail.y, 1.0f);
+    float const label = ImGui::GetTextLineHeight() + 4.0f;
+    std::vector<glm::vec4> const rects =
+        overviewImageRects(int(views.size()), glm::vec4(origin.x, origin.y, avail.x, avail.y), aspect, label, 4.0f);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddRectFilled(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), IM_COL32(16, 16, 18, 255));
+    for (std::size_t i = 0; i < rects.size(); ++i) {
+        glm::vec4 const r = rects[i];
+        ImVec2 const a(r.x, r.y), b(r.x + r.z, r.y + r.w);
+        overview.cells.push_back({views[i], r});
+        std::string_view const name = overviewLabel(views[i]);
+        dl->AddText(ImVec2(r.x + 2.0f, r.y - label + 1.0f), IM_COL32(235, 235, 235, 255), name.data(),
+                    name.data() + name.size());
+        if (settings.mode == LightingMode::Forward && views[i] != DebugView::Final)
+            centredMessage(a, b, "forward mode: no G-buffer");
+        else if (i < textures.size() && textures[i] != 0)
+            dl->AddImage(toImTexture(textures[i]), a, b, ImVec2(0, 1), ImVec2(1, 0));
+        else
+            centredMessage(a, b, "no frame yet");
+        // The cell under the mouse is outlined: a click shows it full size.
+        bool const hot =
+            ImGui::IsItemHovered() &&
+            overviewCellAt(overview.cells, glm::vec2(ImGui::GetIO().MousePos.x, ImGui::GetIO().MousePos.y)) == int(i);
+        dl->AddRect(ImVec2(a.x - 1.0f, a.y - 1.0f), ImVec2(b.x + 1.0f, b.y + 1.0f),
+                    hot ? IM_COL32(255, 230, 80, 255) : IM_COL32(70, 70, 78, 255), 0.0f, 0, hot ? 2.0f : 1.0f);
+    }
+    if (rects.empty())
+        centredMessage(origin, ImVec2(origin.x + avail.x, origin.y + avail.y), "too small for the overview");
+}
+
 }  // namespace
 
 void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin& litPin, ViewportTools& tools,
                        unsigned texture, glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight,
-                       ViewportTeaching* ab, std::optional<glm::ivec2> lockedPixel) {
+                       ViewportTeaching* ab, std::optional<glm::ivec2> lockedPixel,
+                       std::span<unsigned const> overviewTextures) {
     state.hovered = false;
     state.hoverPixel.reset();
     state.clickPixel.reset();
@@ -354,6 +392,8 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
     state.orbitDrag = state.lookDrag = state.panDrag = glm::vec2(0.0f);
     state.wheel = 0.0f;
     state.frameRequested = false;
+    OverviewState& overview = state.overview;
+    overview.cells.clear();
 
     placeWindow(EditorWindow::Viewport);
     // No padding: the image fills the window edge to edge.
@@ -392,13 +432,22 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
     ImGui::SameLine();
     if (ImGui::Button("Frame (F)")) state.frameRequested = true;
     ImGui::SameLine();
+    ImGui::PushStyleColor(ImGuiCol_Button, overview.on ? IM_COL32(70, 110, 170, 255) : IM_COL32(50, 50, 55, 255));
+    if (ImGui::Button("Overview (G)")) overview.on = !overview.on;
+    ImGui::PopStyleColor();
+    overview.buttonRect = itemRect();
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "the lit frame and the G-buffer's position, normal, albedo, specular and depth at once,\n"
+            "each auto-ranged; click one to show it full size (G toggles)");
+    ImGui::SameLine();
     ImGui::TextDisabled("(?)");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "left drag: orbit    right drag: look    middle drag: pan    wheel: dolly\n"
             "W A S D / Q E: fly (shift: faster)    F: frame the selection    Home: the scene's view\n"
             "click a light cube: select it    double-click: select and frame it\n"
-            "L: lock the pixel inspector    F1: every shortcut");
+            "L: lock the pixel inspector    G: attachment overview    F1: every shortcut");
     litPinRow(litPin, tools, settings.view);
     if (ab) teachingRow(*ab, settings);
 
@@ -412,14 +461,16 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
 
     ImVec2 const origin = ImGui::GetCursorScreenPos();
     state.imageRect = glm::vec4(origin.x, origin.y, avail.x, avail.y);
-    bool const abOn = ab && ab->ab.enabled;
+    bool const abOn = ab && ab->ab.enabled && !overview.on;
     if (abOn && ab->ab.view == AbView::Split) abDivider(ab->ab, origin, avail);
     ImGui::InvisibleButton(
         "viewport-image", avail,
         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
     ImVec2 const imageEnd(origin.x + avail.x, origin.y + avail.y);
     bool const noGBuffer = settings.mode == LightingMode::Forward && gbufferView(settings.view);
-    if (abOn && ab->ab.view == AbView::Diff && ab->diffTexture != 0) {
+    if (overview.on) {
+        drawOverview(overview, settings, overviewTextures, origin, avail, textureSize);
+    } else if (abOn && ab->ab.view == AbView::Diff && ab->diffTexture != 0) {
         ImGui::GetWindowDrawList()->AddImage(toImTexture(ab->diffTexture), origin, imageEnd, ImVec2(0, 1),
                                              ImVec2(1, 0));
         drawAbDiff(*ab, settings, origin, avail);
@@ -439,6 +490,30 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
                                             "no frame yet");
     }
 
+    if (overview.on) {
+        // A click (not a drag) on a cell shows that view full size and leaves the overview; the
+        // drags still move the camera, and nothing else of the full-size view applies.
+        ImGuiIO const& io = ImGui::GetIO();
+        state.hovered = ImGui::IsItemHovered();
+        if (state.hovered && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+            io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < kClickSlopSq) {
+            int const cell = overviewCellAt(overview.cells, glm::vec2(io.MousePos.x, io.MousePos.y));
+            if (cell >= 0) {
+                settings.view = overview.cells[std::size_t(cell)].view;
+                overview.on = false;
+                overview.cells.clear();
+            }
+        }
+        if (ImGui::IsItemActive()) {
+            glm::vec2 const delta(io.MouseDelta.x, io.MouseDelta.y);
+            if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) state.orbitDrag = delta;
+            if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) state.lookDrag = delta;
+            if (ImGui::IsMouseDown(ImGuiMouseButton_Middle)) state.panDrag = delta;
+        }
+        if (state.hovered) state.wheel = io.MouseWheel;
+        ImGui::End();
+        return;
+    }
     if (selectedLight && texture != 0) {
         ImVec2 const c(origin.x + selectedLight->x * avail.x, origin.y + selectedLight->y * avail.y);
         ImDrawList* dl = ImGui::GetWindowDrawList();

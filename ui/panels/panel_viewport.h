@@ -3,6 +3,7 @@
 
 #include <glm/glm.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include "model/ab_accumulate.h"
 #include "model/ab_compare.h"
@@ -30,8 +31,11 @@ struct ViewportTeaching {
 // tools: the viewer tools while the view is a G-buffer attachment; the caller passes their view
 // (serviceViewportTools) as texture while they are open.
 // lockedPixel: the pixel inspector's locked pixel (renderer pixels, top-left origin), marked.
+// overviewTextures: the attachment overview's cells (serviceOverview), shown instead of the frame
+// while state.overview is on.
 void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin& litPin, ViewportTools& tools,
                        unsigned texture, glm::ivec2 textureSize, std::optional<glm::vec2> selectedLight = std::nullopt,
-                       ViewportTeaching* ab = nullptr, std::optional<glm::ivec2> lockedPixel = std::nullopt);
+                       ViewportTeaching* ab = nullptr, std::optional<glm::ivec2> lockedPixel = std::nullopt,
+                       std::span<unsigned const> overviewTextures = {});
 
 }  // namespace gbl::ui
