@@ -18,6 +18,9 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
+
+#include <stdlib.h>
 
 using namespace gbl;
 using namespace gbl::ui;
@@ -239,6 +242,137 @@ TEST(LessonFile, ASavedStepReadsBackAsTheSameState) {
     auto const err = appendLessonStep(dir + "/notes.json", step);
     ASSERT_TRUE(err);
     EXPECT_NE(err->find("notes.json: format is missing"), std::string::npos) << *err;
+}
+
+// --- lessons on a glTF scene ------------------------------------------------------------------
+
+// A lesson on the test data's triangle: its own lights and camera, as a glTF lesson must have.
+json onScene(std::string const& scene) {
+    json j = minimal();
+    j["scene"] = scene;
+    j["setup"]["lights"] = json::parse(R"([{"position": [0, 1, 2], "color": [1, 1, 1], "intensity": 1,
+                                             "kc": 1, "kl": 0.35, "kq": 0.44, "threshold": 0.01953125}])");
+    j["setup"]["camera"] = json::parse(R"({"position": [0, 0, 3], "look_at": [0, 0, 0]})");
+    j["steps"][0].erase("claim");  // its light 1 is the default scene's
+    j["steps"][0]["selected_light"] = 0;
+    return j;
+}
+
+// Copies the test data's triangle (its .gltf and .bin) into `dir`.
+void copyTriangle(std::string const& dir) {
+    namespace fs = std::filesystem;
+    for (char const* f : {"triangle.gltf", "triangle.bin"})
+        fs::copy_file(fs::path(test::dataDir()) / "gltf" / f, fs::path(dir) / f, fs::copy_options::overwrite_existing);
+}
+
+// Sets an environment variable for one scope and puts the old value back.
+struct ScopedEnv {
+    std::string name;
+    std::optional<std::string> old;
+    ScopedEnv(std::string n, std::string const& value) : name(std::move(n)) {
+        if (char const* v = std::getenv(name.c_str())) old = v;
+        ::setenv(name.c_str(), value.c_str(), 1);
+    }
+    ~ScopedEnv() {
+        if (old)
+            ::setenv(name.c_str(), old->c_str(), 1);
+        else
+            ::unsetenv(name.c_str());
+    }
+};
+
+TEST(LessonScene, ASceneIsFoundBesideTheLessonThenInTheSharedModels) {
+    namespace fs = std::filesystem;
+    std::string const dir = test::freshTempDir("lesson_scene");
+    copyTriangle(dir);
+    std::ofstream(dir + "/tri.json") << onScene("triangle.gltf").dump();
+    LessonLoad const beside = loadLesson(dir + "/tri.json");
+    ASSERT_TRUE(beside.lesson) << beside.error;
+    EXPECT_EQ(beside.lesson->scene, "triangle.gltf");
+    EXPECT_TRUE(fs::equivalent(beside.lesson->scenePath, dir + "/triangle.gltf")) << beside.lesson->scenePath;
+    EXPECT_EQ(beside.lesson->steps[0].state.lights.size(), 1u);  // the setup's, not the default scene's 32
+
+    // Not beside the lesson: the shared models folder ($GBL_SHARED_GLTF_DIR here) is next.
+    std::string const models = test::freshTempDir("lesson_scene_models");
+    fs::create_directories(models + "/Tri");
+    copyTriangle(models + "/Tri");
+    std::string const lessons = test::freshTempDir("lesson_scene_lessons");
+    std::ofstream(lessons + "/tri.json") << onScene("Tri/triangle.gltf").dump();
+    {
+        ScopedEnv env("GBL_SHARED_GLTF_DIR", models);
+        EXPECT_EQ(sharedModelsDir(), models);
+        LessonLoad const shared = loadLesson(lessons + "/tri.json");
+        ASSERT_TRUE(shared.lesson) << shared.error;
+        EXPECT_TRUE(fs::equivalent(shared.lesson->scenePath, models + "/Tri/triangle.gltf"));
+    }
+    // Without it, the lesson is refused in one sentence naming the field and both places looked in,
+    // and the other lessons of the folder still load.
+    {
+        ScopedEnv env("GBL_SHARED_GLTF_DIR", dir + "/no_models");
+        std::ofstream(lessons + "/a.json") << minimal().dump();
+        LessonLibrary const lib = loadLessonDir(lessons);
+        ASSERT_EQ(lib.lessons.size(), 1u);
+        EXPECT_EQ(lib.lessons[0].id, "demo");
+        ASSERT_EQ(lib.errors.size(), 1u);
+        std::string const want = lessons + "/tri.json: scene \"Tri/triangle.gltf\" is not a file: neither " + lessons +
+                                 "/Tri/triangle.gltf nor " + dir + "/no_models/Tri/triangle.gltf exists";
+        EXPECT_NE(lib.errors[0].find(want), std::string::npos) << lib.errors[0];
+    }
+}
+
+TEST(LessonScene, TheSharedModelsFolderIsTheDefault) {
+    std::string const box = test::sharedGltfDir() + "/Box/Box.gltf";
+    if (!std::filesystem::exists(box)) GTEST_SKIP() << "needs the shared models: " << box << " is absent";
+    if (std::getenv("GBL_SHARED_GLTF_DIR")) GTEST_SKIP() << "GBL_SHARED_GLTF_DIR is set: the default is not used";
+    LessonLoad const l = parseLesson(onScene("Box/Box.gltf").dump(), test::freshTempDir("lesson_box") + "/box.json");
+    ASSERT_TRUE(l.lesson) << l.error;
+    EXPECT_TRUE(std::filesystem::equivalent(l.lesson->scenePath, box)) << l.lesson->scenePath;
+}
+
+TEST(LessonScene, BadScenesNameTheField) {
+    std::string const dir = test::freshTempDir("lesson_scene_bad");
+    copyTriangle(dir);
+    std::string const label = dir + "/x.json";
+    auto error = [&](json const& j) {
+        LessonLoad const l = parseLesson(j.dump(), label);
+        EXPECT_FALSE(l.lesson) << "parsed although broken";
+        return l.error;
+    };
+    EXPECT_EQ(error(onScene("")), label + ": scene must be the path of a glTF file (.gltf or .glb)");
+    json number = onScene("x");
+    number["scene"] = 3;
+    EXPECT_EQ(error(number), label + ": scene must be the path of a glTF file (.gltf or .glb)");
+    EXPECT_EQ(error(onScene("triangle.bin")), label + ": scene must name a .gltf or .glb file (got \"triangle.bin\")");
+    // The default scene's lights and camera do not fit another scene: a glTF lesson names its own.
+    json noLights = onScene("triangle.gltf");
+    noLights["setup"].erase("lights");
+    EXPECT_NE(error(noLights).find(label + ": steps[0].lights is missing: a lesson on a glTF scene"),
+              std::string::npos);
+    json noCamera = onScene("triangle.gltf");
+    noCamera["setup"].erase("camera");
+    noCamera["steps"][0].erase("camera");
+    EXPECT_NE(error(noCamera).find(label + ": steps[0].camera.position is missing: a lesson on a glTF scene"),
+              std::string::npos);
+}
+
+TEST(LessonScene, ASavedStepKeepsItsScene) {
+    namespace fs = std::filesystem;
+    std::string const dir = test::freshTempDir("lesson_scene_save");
+    copyTriangle(dir);
+    std::string const scene = dir + "/triangle.gltf";
+    LessonStep const step = parseLesson(minimal().dump(), "demo.json").lesson->steps[0];
+    std::string const path = dir + "/saved.json";
+    ASSERT_FALSE(appendLessonStep(path, step, scene));
+    ASSERT_FALSE(appendLessonStep(path, step, scene));
+    LessonLoad const back = loadLesson(path);
+    ASSERT_TRUE(back.lesson) << back.error;
+    EXPECT_EQ(back.lesson->steps.size(), 2u);
+    EXPECT_TRUE(fs::equivalent(back.lesson->scenePath, scene));
+    // A step set up on another scene is not added to it, and the file stays as it was.
+    auto const other = appendLessonStep(path, step);
+    ASSERT_TRUE(other);
+    EXPECT_NE(other->find("and the editor shows the default scene"), std::string::npos) << *other;
+    EXPECT_EQ(loadLesson(path).lesson->steps.size(), 2u);
 }
 
 TEST(LessonFile, ABrokenFileInTheFolderIsReportedAndTheOthersLoad) {

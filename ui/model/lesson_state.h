@@ -148,6 +148,7 @@ struct LessonState {
     int lesson = -1;  // index into the editor's lesson list; -1 = no lesson running
     int step = 0;
     std::optional<LessonReturn> before;  // the editor before the lesson started
+    std::string sceneBefore;             // its scene ("default" or the glTF path), reloaded on Leave
 
     // Requests from the window, carried out by the editor loop (it knows the frame size and undo).
     int startRequest = -1;  // a lesson was picked
@@ -158,7 +159,13 @@ struct LessonState {
     std::string openPath;
     std::string savePath = "my_lesson.json";  // where saved steps go
     LessonText draft;                         // text typed for the step being saved
-    std::string message;                      // the last request's outcome (or why it was refused)
+    // "Add tasks" when saving: the saved step shows the state remembered here (taskStartRequested
+    // remembers the editor's), and its tasks ask for the change from it to the editor's state now
+    // (tasksFromChange).
+    std::optional<LessonSnapshot> taskStart;
+    bool taskStartRequested = false;
+    bool saveWithTasks = false;
+    std::string message;  // the last request's outcome (or why it was refused)
     bool messageIsError = false;
     int picked = 0;  // the lesson the list shows selected
     // The step being shown: its prediction and its answer. Reset when the step changes.
