@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -81,6 +82,12 @@ TEST(LessonFile, BrokenFilesNameTheField) {
     };
     std::vector<Case> const cases{
         {[](json& j) { j["version"] = 3; }, "demo.json: version 3 is not supported"},
+        {[](json& j) { j["steps"][0]["claim"]["reached"] = 1; },
+         "demo.json: steps[0].claim.reached is only for a matches_cpu claim"},
+        {[](json& j) {
+             j["steps"][0]["claim"] = {{"kind", "matches_cpu"}, {"reached", 5}};
+         },
+         "demo.json: steps[0].claim.reached must be a whole number from 0 to 4 (got 5)"},
         {[](json& j) { j["version"] = 1; },
          "demo.json: version 1 is not supported; this program reads lesson version 2 (version 2 adds an \"answer\""},
         {[](json& j) { j["steps"][0].erase("answer"); },
@@ -151,6 +158,59 @@ TEST(LessonFile, EveryShippedQuestionHasAnAnswer) {
 
 // The depth_blit lesson is about the light cubes, which are an overlay on the display image (not in
 // the lit image): its claims compare the final image; a bad "image" names the field.
+// attenuation:2 states its numbers in text (the prediction's state has no placeholders for the light
+// before the change): each is computed here from the step's lights, so editing a light without the
+// text, or the text without the light, fails.
+TEST(LessonFile, TheAttenuationStepsNumbersAreItsLightsNumbers) {
+    LessonLibrary const lib = loadLessonDir(defaultLessonDir());
+    LessonRef const ref = findLessonStep(lib, "attenuation:2");
+    ASSERT_GE(ref.lesson, 0) << ref.error;
+    LessonStep const& step = lib.lessons[std::size_t(ref.lesson)].steps[std::size_t(ref.step)];
+    ASSERT_TRUE(step.predict && step.predict->before);
+    PointLight const& before = step.predict->before->lights.at(0);
+    PointLight const& after = step.state.lights.at(0);
+    auto fixed = [](double v, int digits) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+        return std::string(buf);
+    };
+    double const rBefore = lightRadius(before).radius;
+    double const rAfter = lightRadius(after).radius;
+    double const kqRatio = double(after.kq) / double(before.kq);
+    double const imax = double(std::max({before.color.r, before.color.g, before.color.b})) * before.intensity;
+    double const budget = imax / double(before.threshold);  // Imax·256/5
+    auto expectIn = [](std::string const& text, std::string const& part, char const* where) {
+        EXPECT_NE(text.find(part), std::string::npos) << where << " should say \"" << part << "\": " << text;
+    };
+    LessonText const& t = step.text;
+    expectIn(t.look, "Kq raised from " + fixed(before.kq, 2) + " to " + fixed(after.kq, 1), "look");
+    expectIn(t.look, "(" + fixed(kqRatio, 2) + " times)", "look");
+    expectIn(t.look, "shrinks from " + fixed(rBefore, 2) + " to {light.radius}", "look");
+    expectIn(t.question, "from " + fixed(rBefore, 2) + " to {light.radius}", "question");
+    expectIn(t.question, "Kq grew " + fixed(kqRatio, 2) + " times", "question");
+    expectIn(t.question, "the " + fixed(std::sqrt(kqRatio), 2) + " that 1/√" + fixed(kqRatio, 2) + " gives",
+             "question");
+    // "almost exactly half": the radii's ratio is 2 within 2 %.
+    EXPECT_NEAR(rBefore / rAfter, 2.0, 0.04);
+    expectIn(t.answer, fixed(rBefore / rAfter, 2) + " times smaller", "answer");
+    expectIn(t.answer,
+             "(Kq·d² = " + fixed(before.kq * rBefore * rBefore, 1) + " of " + fixed(budget, 1) +
+                 " at r = " + fixed(rBefore, 2) + ")",
+             "answer");
+    expectIn(t.answer,
+             "Kq × " + fixed(kqRatio, 2) + " gives r ÷ √" + fixed(kqRatio, 2) + " = ÷ " + fixed(std::sqrt(kqRatio), 2),
+             "answer");
+    expectIn(t.answer, "(" + fixed(before.kl * rBefore, 1) + " against " + fixed(after.kl * rAfter, 1) + ")", "answer");
+    expectIn(t.answer, "below " + fixed(std::sqrt(kqRatio), 2) + ", to " + fixed(rBefore / rAfter, 2), "answer");
+    // The linear term's larger share is why the factor is below √ratio: the text's explanation holds.
+    EXPECT_LT(rBefore / rAfter, std::sqrt(kqRatio));
+    // The prediction: the radius before, and the right number is the radius after.
+    expectIn(step.predict->prompt, "from " + fixed(before.kq, 2) + " to " + fixed(after.kq, 1), "prompt");
+    expectIn(step.predict->prompt, "The radius is " + fixed(rBefore, 2) + " now", "prompt");
+    EXPECT_NEAR(step.predict->number, rAfter, 0.005);
+    expectIn(step.predict->explain, fixed(rBefore, 2) + " → {light.radius}", "explain");
+}
+
 TEST(LessonFile, TheDepthBlitClaimsCompareTheDisplayImage) {
     LessonLibrary const lib = loadLessonDir(defaultLessonDir());
     auto const it =

@@ -72,7 +72,7 @@ TEST(LessonsCli, JsonListsTasksAndPredictions) {
     EXPECT_DOUBLE_EQ(scale["tolerance"].get<double>(), 0.025);
     // Predictions: a number one and a multiple-choice one, with their answers.
     nlohmann::json const& number = attenuation["steps"][1]["predict"];
-    EXPECT_DOUBLE_EQ(number["number"].get<double>(), 5.19);
+    EXPECT_DOUBLE_EQ(number["number"].get<double>(), 5.18);
     EXPECT_DOUBLE_EQ(number["tolerance"].get<double>(), 0.4);
     EXPECT_FALSE(number.contains("choices"));
     EXPECT_FALSE(number["explain"].get<std::string>().empty());
@@ -141,6 +141,31 @@ TEST(LessonsCli, ALessonOnAGltfSceneRendersThatScene) {
     EXPECT_NE(listed.output.find(dir + "/gone.json: scene \"Box/NoSuchBox.gltf\" is not a file"), std::string::npos)
         << listed.output;
     EXPECT_NE(listed.output.find("box:1  The box lit"), std::string::npos) << listed.output;
+}
+
+// forward_vs_deferred:3 says its one light lights the pixel (`reached`: 1): the claim holds there,
+// and fails on a pixel of the same frame the light does not reach.
+TEST(LessonsCli, TheReachedCountIsCheckedOnTheFrame) {
+    std::string const out = freshTempDir("lesson_reached_out");
+    CommandResult const shipped = runGbufferLab({"render", "--lesson", "forward_vs_deferred:3", "--out", out});
+    ASSERT_EQ(shipped.exitCode, 0) << shipped.output;
+    nlohmann::json const holds = readJsonFile(out + "/claim.json");
+    EXPECT_TRUE(holds["holds"].get<bool>()) << holds["detail"];
+    EXPECT_NE(holds["detail"].get<std::string>().find("1 of 1 lights reach the pixel"), std::string::npos)
+        << holds["detail"];
+
+    nlohmann::json lesson = readJsonFile(sourcePath("assets/lessons/10_forward_vs_deferred.json"));
+    lesson["steps"][2]["pixel"] = {0.2, 0.45};  // the far left of the court, outside the light's radius
+    std::string const dir = freshTempDir("lesson_reached_dir");
+    std::ofstream(dir + "/fvd.json") << lesson.dump();
+    CommandResult const moved =
+        runGbufferLab({"render", "--lesson", "forward_vs_deferred:3", "--lessons-dir", dir, "--out", out});
+    ASSERT_EQ(moved.exitCode, 0) << moved.output;
+    nlohmann::json const fails = readJsonFile(out + "/claim.json");
+    EXPECT_FALSE(fails["holds"].get<bool>()) << fails["detail"];
+    EXPECT_NE(fails["detail"].get<std::string>().find("0 of 1 lights reach the pixel (the step says 1)"),
+              std::string::npos)
+        << fails["detail"];
 }
 
 TEST(LessonsCli, RefusesBadLessonsInOneSentence) {

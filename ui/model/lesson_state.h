@@ -101,11 +101,12 @@ inline constexpr std::array<std::string_view, 9> kClaimKindNames{
 
 struct LessonClaim {
     ClaimKind kind = ClaimKind::MatchesCpu;
-    int light = -1;                              // loses_light
-    std::optional<PipelineSettings> reference;   // loses_light, same_image, fewer_lit_pixels, differs_from
-    float tolerance = 0.0f;                      // matches_cpu, loses_light, attachment_equals (relative + absolute)
-    float bound = 0.0f;                          // position_error_below, same_image and differs_from (abs difference)
-    float minFraction = 0.0f;                    // fewer_lit_pixels, differs_from
+    int light = -1;                             // loses_light
+    std::optional<PipelineSettings> reference;  // loses_light, same_image, fewer_lit_pixels, differs_from
+    float tolerance = 0.0f;                     // matches_cpu, loses_light, attachment_equals (relative + absolute)
+    float bound = 0.0f;                         // position_error_below, same_image and differs_from (abs difference)
+    float minFraction = 0.0f;                   // fewer_lit_pixels, differs_from
+    int reached = -1;  // matches_cpu (optional): how many lights add a visible amount at the pixel; -1 = unchecked
     Attachment attachment = Attachment::Normal;  // attachment_equals
     glm::vec4 value{0.0f};                       // attachment_equals
     unsigned compare = 0x7;                      // attachment_equals: bit i = component i is compared

@@ -164,7 +164,8 @@ Attachment comparedImage(json const& c, std::string const& path) {
 
 LessonClaim readClaim(json const& c, std::string const& path, json const& state, LessonStep const& step) {
     knownFields(c, path,
-                {"kind", "light", "reference", "tolerance", "bound", "min_fraction", "attachment", "value", "image"});
+                {"kind", "light", "reference", "tolerance", "bound", "min_fraction", "attachment", "value", "image",
+                 "reached"});
     auto kindIt = c.find("kind");
     if (kindIt == c.end()) fail(path + ".kind", "is missing");
     std::string names;
@@ -231,8 +232,12 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
             claim.image = comparedImage(c, path);
             break;
         case ClaimKind::MatchesCpu:
+            if (auto it = c.find("reached"); it != c.end())
+                claim.reached = integer(*it, path + ".reached", 0, int(step.state.lights.size()));
             break;
     }
+    if (*kind != ClaimKind::MatchesCpu && c.contains("reached"))
+        fail(path + ".reached", "is only for a matches_cpu claim");
     if (claimNeedsReference(claim)) {
         // The reference is the step's pipeline with these settings changed, read like the step.
         json const& ref = need("reference");
