@@ -37,17 +37,30 @@ int runLessons(LessonsOptions const& o) {
             nlohmann::ordered_json steps = nlohmann::ordered_json::array();
             for (std::size_t i = 0; i < l.steps.size(); ++i) {
                 auto const& st = l.steps[i];
-                steps.push_back(
-                    {{"step", i + 1},
-                     {"title", st.text.title},
-                     {"claim", st.claim ? std::string(enumName(ui::kClaimKindNames, st.claim->kind)) : ""}});
+                // Tasks and predictions as the lesson file writes them, so a tool reads one format.
+                nlohmann::ordered_json tasks = nlohmann::ordered_json::array();
+                for (ui::LessonTask const& t : st.tasks)
+                    tasks.push_back(nlohmann::ordered_json::parse(ui::taskToJson(t)));
+                nlohmann::ordered_json step = {
+                    {"step", i + 1},
+                    {"title", st.text.title},
+                    {"claim", st.claim ? std::string(enumName(ui::kClaimKindNames, st.claim->kind)) : ""},
+                    {"question", st.text.question},
+                    {"answer", st.text.answer},
+                    {"tasks", tasks}};
+                if (st.predict) step["predict"] = nlohmann::ordered_json::parse(ui::predictionToJson(*st.predict));
+                steps.push_back(step);
             }
-            out.push_back({{"id", l.id}, {"title", l.title}, {"file", l.path}, {"steps", steps}});
+            nlohmann::ordered_json lesson = {{"id", l.id}, {"title", l.title}, {"file", l.path}};
+            if (!l.scenePath.empty()) lesson["scene"] = l.scenePath;
+            lesson["steps"] = steps;
+            out.push_back(lesson);
         }
         std::printf("%s\n", out.dump(2).c_str());
     } else {
         for (auto const& l : lib.lessons) {
-            std::printf("%s  %s (%zu steps)\n", l.id.c_str(), l.title.c_str(), l.steps.size());
+            std::printf("%s  %s (%zu steps%s%s)\n", l.id.c_str(), l.title.c_str(), l.steps.size(),
+                        l.scenePath.empty() ? "" : ", scene ", l.scenePath.c_str());
             for (std::size_t i = 0; i < l.steps.size(); ++i)
                 std::printf("  %s:%zu  %s\n", l.id.c_str(), i + 1, l.steps[i].text.title.c_str());
         }
@@ -95,7 +108,17 @@ int runRenderLesson(RenderOptions const& o) {
     }
     Renderer& renderer = *headless->renderer;
     if (auto why = renderer.modeUnavailable(step.state.pipeline.mode)) return bad(*why);
-    SceneData const scene = makeDefaultScene({step.defaultSceneLights});
+    // The lesson's glTF scene (its lights and camera are the step's), or the default scene.
+    SceneData scene;
+    if (lesson.scenePath.empty()) {
+        scene = makeDefaultScene({step.defaultSceneLights});
+    } else {
+        SceneRequest request;
+        request.scenePath = lesson.scenePath;
+        auto prepared = prepareScene(request, &error);
+        if (!prepared) return bad("lesson " + lesson.id + ": " + error);
+        scene = std::move(prepared->scene);
+    }
     if (auto err = renderer.setScene(scene)) return bad(*err);
     LessonStepFrame const frame = renderLessonStep(renderer, step);
     FrameExport exported{step.state.camera, step.state.lights,     step.state.pipeline,

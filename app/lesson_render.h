@@ -17,7 +17,7 @@ struct LessonStepFrame {
 };
 
 // Renders the step (after its claim's reference frame, so the step is the frame the renderer
-// keeps for exportFrame). The renderer must already hold the default scene; its size is used.
+// keeps for exportFrame). The renderer must already hold the lesson's scene; its size is used.
 LessonStepFrame renderLessonStep(Renderer& renderer, ui::LessonStep const& step);
 
 }  // namespace gbl

@@ -14,10 +14,14 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
+
+#include <stdlib.h>
 
 using namespace gbl;
 using namespace gbl::ui;
@@ -78,6 +82,12 @@ TEST(LessonFile, BrokenFilesNameTheField) {
     };
     std::vector<Case> const cases{
         {[](json& j) { j["version"] = 3; }, "demo.json: version 3 is not supported"},
+        {[](json& j) { j["steps"][0]["claim"]["reached"] = 1; },
+         "demo.json: steps[0].claim.reached is only for a matches_cpu claim"},
+        {[](json& j) {
+             j["steps"][0]["claim"] = {{"kind", "matches_cpu"}, {"reached", 5}};
+         },
+         "demo.json: steps[0].claim.reached must be a whole number from 0 to 4 (got 5)"},
         {[](json& j) { j["version"] = 1; },
          "demo.json: version 1 is not supported; this program reads lesson version 2 (version 2 adds an \"answer\""},
         {[](json& j) { j["steps"][0].erase("answer"); },
@@ -148,6 +158,59 @@ TEST(LessonFile, EveryShippedQuestionHasAnAnswer) {
 
 // The depth_blit lesson is about the light cubes, which are an overlay on the display image (not in
 // the lit image): its claims compare the final image; a bad "image" names the field.
+// attenuation:2 states its numbers in text (the prediction's state has no placeholders for the light
+// before the change): each is computed here from the step's lights, so editing a light without the
+// text, or the text without the light, fails.
+TEST(LessonFile, TheAttenuationStepsNumbersAreItsLightsNumbers) {
+    LessonLibrary const lib = loadLessonDir(defaultLessonDir());
+    LessonRef const ref = findLessonStep(lib, "attenuation:2");
+    ASSERT_GE(ref.lesson, 0) << ref.error;
+    LessonStep const& step = lib.lessons[std::size_t(ref.lesson)].steps[std::size_t(ref.step)];
+    ASSERT_TRUE(step.predict && step.predict->before);
+    PointLight const& before = step.predict->before->lights.at(0);
+    PointLight const& after = step.state.lights.at(0);
+    auto fixed = [](double v, int digits) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+        return std::string(buf);
+    };
+    double const rBefore = lightRadius(before).radius;
+    double const rAfter = lightRadius(after).radius;
+    double const kqRatio = double(after.kq) / double(before.kq);
+    double const imax = double(std::max({before.color.r, before.color.g, before.color.b})) * before.intensity;
+    double const budget = imax / double(before.threshold);  // Imax·256/5
+    auto expectIn = [](std::string const& text, std::string const& part, char const* where) {
+        EXPECT_NE(text.find(part), std::string::npos) << where << " should say \"" << part << "\": " << text;
+    };
+    LessonText const& t = step.text;
+    expectIn(t.look, "Kq raised from " + fixed(before.kq, 2) + " to " + fixed(after.kq, 1), "look");
+    expectIn(t.look, "(" + fixed(kqRatio, 2) + " times)", "look");
+    expectIn(t.look, "shrinks from " + fixed(rBefore, 2) + " to {light.radius}", "look");
+    expectIn(t.question, "from " + fixed(rBefore, 2) + " to {light.radius}", "question");
+    expectIn(t.question, "Kq grew " + fixed(kqRatio, 2) + " times", "question");
+    expectIn(t.question, "the " + fixed(std::sqrt(kqRatio), 2) + " that 1/√" + fixed(kqRatio, 2) + " gives",
+             "question");
+    // "almost exactly half": the radii's ratio is 2 within 2 %.
+    EXPECT_NEAR(rBefore / rAfter, 2.0, 0.04);
+    expectIn(t.answer, fixed(rBefore / rAfter, 2) + " times smaller", "answer");
+    expectIn(t.answer,
+             "(Kq·d² = " + fixed(before.kq * rBefore * rBefore, 1) + " of " + fixed(budget, 1) +
+                 " at r = " + fixed(rBefore, 2) + ")",
+             "answer");
+    expectIn(t.answer,
+             "Kq × " + fixed(kqRatio, 2) + " gives r ÷ √" + fixed(kqRatio, 2) + " = ÷ " + fixed(std::sqrt(kqRatio), 2),
+             "answer");
+    expectIn(t.answer, "(" + fixed(before.kl * rBefore, 1) + " against " + fixed(after.kl * rAfter, 1) + ")", "answer");
+    expectIn(t.answer, "below " + fixed(std::sqrt(kqRatio), 2) + ", to " + fixed(rBefore / rAfter, 2), "answer");
+    // The linear term's larger share is why the factor is below √ratio: the text's explanation holds.
+    EXPECT_LT(rBefore / rAfter, std::sqrt(kqRatio));
+    // The prediction: the radius before, and the right number is the radius after.
+    expectIn(step.predict->prompt, "from " + fixed(before.kq, 2) + " to " + fixed(after.kq, 1), "prompt");
+    expectIn(step.predict->prompt, "The radius is " + fixed(rBefore, 2) + " now", "prompt");
+    EXPECT_NEAR(step.predict->number, rAfter, 0.005);
+    expectIn(step.predict->explain, fixed(rBefore, 2) + " → {light.radius}", "explain");
+}
+
 TEST(LessonFile, TheDepthBlitClaimsCompareTheDisplayImage) {
     LessonLibrary const lib = loadLessonDir(defaultLessonDir());
     auto const it =
@@ -239,6 +302,137 @@ TEST(LessonFile, ASavedStepReadsBackAsTheSameState) {
     auto const err = appendLessonStep(dir + "/notes.json", step);
     ASSERT_TRUE(err);
     EXPECT_NE(err->find("notes.json: format is missing"), std::string::npos) << *err;
+}
+
+// --- lessons on a glTF scene ------------------------------------------------------------------
+
+// A lesson on the test data's triangle: its own lights and camera, as a glTF lesson must have.
+json onScene(std::string const& scene) {
+    json j = minimal();
+    j["scene"] = scene;
+    j["setup"]["lights"] = json::parse(R"([{"position": [0, 1, 2], "color": [1, 1, 1], "intensity": 1,
+                                             "kc": 1, "kl": 0.35, "kq": 0.44, "threshold": 0.01953125}])");
+    j["setup"]["camera"] = json::parse(R"({"position": [0, 0, 3], "look_at": [0, 0, 0]})");
+    j["steps"][0].erase("claim");  // its light 1 is the default scene's
+    j["steps"][0]["selected_light"] = 0;
+    return j;
+}
+
+// Copies the test data's triangle (its .gltf and .bin) into `dir`.
+void copyTriangle(std::string const& dir) {
+    namespace fs = std::filesystem;
+    for (char const* f : {"triangle.gltf", "triangle.bin"})
+        fs::copy_file(fs::path(test::dataDir()) / "gltf" / f, fs::path(dir) / f, fs::copy_options::overwrite_existing);
+}
+
+// Sets an environment variable for one scope and puts the old value back.
+struct ScopedEnv {
+    std::string name;
+    std::optional<std::string> old;
+    ScopedEnv(std::string n, std::string const& value) : name(std::move(n)) {
+        if (char const* v = std::getenv(name.c_str())) old = v;
+        ::setenv(name.c_str(), value.c_str(), 1);
+    }
+    ~ScopedEnv() {
+        if (old)
+            ::setenv(name.c_str(), old->c_str(), 1);
+        else
+            ::unsetenv(name.c_str());
+    }
+};
+
+TEST(LessonScene, ASceneIsFoundBesideTheLessonThenInTheSharedModels) {
+    namespace fs = std::filesystem;
+    std::string const dir = test::freshTempDir("lesson_scene");
+    copyTriangle(dir);
+    std::ofstream(dir + "/tri.json") << onScene("triangle.gltf").dump();
+    LessonLoad const beside = loadLesson(dir + "/tri.json");
+    ASSERT_TRUE(beside.lesson) << beside.error;
+    EXPECT_EQ(beside.lesson->scene, "triangle.gltf");
+    EXPECT_TRUE(fs::equivalent(beside.lesson->scenePath, dir + "/triangle.gltf")) << beside.lesson->scenePath;
+    EXPECT_EQ(beside.lesson->steps[0].state.lights.size(), 1u);  // the setup's, not the default scene's 32
+
+    // Not beside the lesson: the shared models folder ($GBL_SHARED_GLTF_DIR here) is next.
+    std::string const models = test::freshTempDir("lesson_scene_models");
+    fs::create_directories(models + "/Tri");
+    copyTriangle(models + "/Tri");
+    std::string const lessons = test::freshTempDir("lesson_scene_lessons");
+    std::ofstream(lessons + "/tri.json") << onScene("Tri/triangle.gltf").dump();
+    {
+        ScopedEnv env("GBL_SHARED_GLTF_DIR", models);
+        EXPECT_EQ(sharedModelsDir(), models);
+        LessonLoad const shared = loadLesson(lessons + "/tri.json");
+        ASSERT_TRUE(shared.lesson) << shared.error;
+        EXPECT_TRUE(fs::equivalent(shared.lesson->scenePath, models + "/Tri/triangle.gltf"));
+    }
+    // Without it, the lesson is refused in one sentence naming the field and both places looked in,
+    // and the other lessons of the folder still load.
+    {
+        ScopedEnv env("GBL_SHARED_GLTF_DIR", dir + "/no_models");
+        std::ofstream(lessons + "/a.json") << minimal().dump();
+        LessonLibrary const lib = loadLessonDir(lessons);
+        ASSERT_EQ(lib.lessons.size(), 1u);
+        EXPECT_EQ(lib.lessons[0].id, "demo");
+        ASSERT_EQ(lib.errors.size(), 1u);
+        std::string const want = lessons + "/tri.json: scene \"Tri/triangle.gltf\" is not a file: neither " + lessons +
+                                 "/Tri/triangle.gltf nor " + dir + "/no_models/Tri/triangle.gltf exists";
+        EXPECT_NE(lib.errors[0].find(want), std::string::npos) << lib.errors[0];
+    }
+}
+
+TEST(LessonScene, TheSharedModelsFolderIsTheDefault) {
+    std::string const box = test::sharedGltfDir() + "/Box/Box.gltf";
+    if (!std::filesystem::exists(box)) GTEST_SKIP() << "needs the shared models: " << box << " is absent";
+    if (std::getenv("GBL_SHARED_GLTF_DIR")) GTEST_SKIP() << "GBL_SHARED_GLTF_DIR is set: the default is not used";
+    LessonLoad const l = parseLesson(onScene("Box/Box.gltf").dump(), test::freshTempDir("lesson_box") + "/box.json");
+    ASSERT_TRUE(l.lesson) << l.error;
+    EXPECT_TRUE(std::filesystem::equivalent(l.lesson->scenePath, box)) << l.lesson->scenePath;
+}
+
+TEST(LessonScene, BadScenesNameTheField) {
+    std::string const dir = test::freshTempDir("lesson_scene_bad");
+    copyTriangle(dir);
+    std::string const label = dir + "/x.json";
+    auto error = [&](json const& j) {
+        LessonLoad const l = parseLesson(j.dump(), label);
+        EXPECT_FALSE(l.lesson) << "parsed although broken";
+        return l.error;
+    };
+    EXPECT_EQ(error(onScene("")), label + ": scene must be the path of a glTF file (.gltf or .glb)");
+    json number = onScene("x");
+    number["scene"] = 3;
+    EXPECT_EQ(error(number), label + ": scene must be the path of a glTF file (.gltf or .glb)");
+    EXPECT_EQ(error(onScene("triangle.bin")), label + ": scene must name a .gltf or .glb file (got \"triangle.bin\")");
+    // The default scene's lights and camera do not fit another scene: a glTF lesson names its own.
+    json noLights = onScene("triangle.gltf");
+    noLights["setup"].erase("lights");
+    EXPECT_NE(error(noLights).find(label + ": steps[0].lights is missing: a lesson on a glTF scene"),
+              std::string::npos);
+    json noCamera = onScene("triangle.gltf");
+    noCamera["setup"].erase("camera");
+    noCamera["steps"][0].erase("camera");
+    EXPECT_NE(error(noCamera).find(label + ": steps[0].camera.position is missing: a lesson on a glTF scene"),
+              std::string::npos);
+}
+
+TEST(LessonScene, ASavedStepKeepsItsScene) {
+    namespace fs = std::filesystem;
+    std::string const dir = test::freshTempDir("lesson_scene_save");
+    copyTriangle(dir);
+    std::string const scene = dir + "/triangle.gltf";
+    LessonStep const step = parseLesson(minimal().dump(), "demo.json").lesson->steps[0];
+    std::string const path = dir + "/saved.json";
+    ASSERT_FALSE(appendLessonStep(path, step, scene));
+    ASSERT_FALSE(appendLessonStep(path, step, scene));
+    LessonLoad const back = loadLesson(path);
+    ASSERT_TRUE(back.lesson) << back.error;
+    EXPECT_EQ(back.lesson->steps.size(), 2u);
+    EXPECT_TRUE(fs::equivalent(back.lesson->scenePath, scene));
+    // A step set up on another scene is not added to it, and the file stays as it was.
+    auto const other = appendLessonStep(path, step);
+    ASSERT_TRUE(other);
+    EXPECT_NE(other->find("and the editor shows the default scene"), std::string::npos) << *other;
+    EXPECT_EQ(loadLesson(path).lesson->steps.size(), 2u);
 }
 
 TEST(LessonFile, ABrokenFileInTheFolderIsReportedAndTheOthersLoad) {

@@ -6,6 +6,7 @@
 #include "core/light_math.h"
 #include "core/pipeline_fields.h"
 #include "model/lesson_state.h"
+#include "model/lesson_text.h"
 #include "run_command.h"
 #include "session/lesson_file.h"
 #include "test_paths.h"
@@ -274,6 +275,145 @@ TEST(LessonTasks, ASavedLessonKeepsItsTasks) {
     EXPECT_EQ(back.lesson->steps[0].tasks[0].onlyChanged, std::vector<std::string>{"kq"});
     ASSERT_EQ(back.lesson->steps[1].tasks.size(), 2u);
     EXPECT_EQ(back.lesson->steps[1].tasks[1].setting, "blit");
+}
+
+// --- tasks from an author's change ("Save this state as a step" with "Add tasks") ---------------
+
+// What the editor would check a task against: `lights` and `pipeline` now, the step's lights.
+TaskContext contextOf(std::vector<PointLight> const& lights, PipelineSettings const& pipeline,
+                      std::vector<PointLight> const& stepLights) {
+    TaskContext c;
+    c.lights = lights;
+    c.stepLights = stepLights;
+    c.pipeline = &pipeline;
+    c.frameSize = c.lessonSize = {480, 270};
+    return c;
+}
+
+TEST(LessonTasks, AChangeBecomesOneTaskPerChangedSettingAndLightField) {
+    Lesson const l = load(lesson());
+    LessonStep const& start = l.steps[0];
+    std::vector<PointLight> lights = start.state.lights;
+    PipelineSettings pipeline = start.state.pipeline;
+    EXPECT_TRUE(tasksFromChange(pipeline, pipeline, lights, lights).empty());  // nothing changed, nothing asked
+
+    lights[0].kq = kqForRadius(lights[0], 5.0f);
+    pipeline.cull = pipeline.cull == CullMode::Back ? CullMode::Front : CullMode::Back;
+    pipeline.volumeScale = pipeline.volumeScale + 0.2f;
+    std::vector<LessonTask> const tasks = tasksFromChange(start.state.pipeline, pipeline, start.state.lights, lights);
+    ASSERT_EQ(tasks.size(), 3u);
+    // Settings first, in pipelineFields() order, then the lights' fields.
+    EXPECT_EQ(tasks[0].kind, TaskKind::Setting);
+    EXPECT_EQ(tasks[0].setting, "cull");
+    EXPECT_EQ(tasks[0].value, double(int(pipeline.cull)));
+    EXPECT_EQ(tasks[0].tolerance, 0.0);  // a choice is exact
+    EXPECT_NE(tasks[0].goal.find(pipeline.cull == CullMode::Back ? "to back" : "to front"), std::string::npos)
+        << tasks[0].goal;
+    EXPECT_EQ(tasks[1].setting, "volume_scale");
+    EXPECT_NEAR(tasks[1].value, pipeline.volumeScale, 1e-6);
+    PipelineField const* scale = findPipelineField("volume_scale");
+    EXPECT_NEAR(tasks[1].tolerance, 0.01 * double(scale->max - scale->min), 1e-6);
+    EXPECT_EQ(tasks[2].kind, TaskKind::LightField);
+    EXPECT_EQ(tasks[2].light, 0);
+    EXPECT_EQ(tasks[2].field, "kq");
+    EXPECT_NEAR(tasks[2].value, lights[0].kq, 1e-7);
+    EXPECT_EQ(tasks[2].onlyChanged, std::vector<std::string>{"kq"});
+    for (LessonTask const& t : tasks) {
+        EXPECT_FALSE(t.goal.empty());
+        EXPECT_FALSE(t.hint.empty());
+        EXPECT_FALSE(unknownPlaceholder(t.goal)) << t.goal;
+        EXPECT_FALSE(unknownPlaceholder(t.hint)) << t.hint;
+        // Unmet where the step starts, met once the change is made.
+        EXPECT_FALSE(taskMet(t, contextOf(start.state.lights, start.state.pipeline, start.state.lights))) << t.goal;
+        EXPECT_TRUE(taskMet(t, contextOf(lights, pipeline, start.state.lights))) << t.goal;
+    }
+    // The right Kq reached by also changing Kl does not count: only the changed fields may differ.
+    std::vector<PointLight> wrong = lights;
+    wrong[0].kl += 0.1f;
+    EXPECT_FALSE(taskMet(tasks[2], contextOf(wrong, pipeline, start.state.lights)));
+}
+
+TEST(LessonTasks, AToleranceStaysBelowHalfTheChange) {
+    PipelineSettings from;
+    PipelineSettings to = from;
+    to.volumeScale = from.volumeScale + 0.004f;  // smaller than 1 % of the range
+    std::vector<LessonTask> const tasks = tasksFromChange(from, to, {}, {});
+    ASSERT_EQ(tasks.size(), 1u);
+    EXPECT_LT(tasks[0].tolerance, 0.002);
+    std::vector<PointLight> const none;
+    EXPECT_FALSE(taskMet(tasks[0], contextOf(none, from, none)));
+    EXPECT_TRUE(taskMet(tasks[0], contextOf(none, to, none)));
+}
+
+TEST(LessonTasks, AStepSavedWithTasksFromAChangeReadsBackAndValidates) {
+    Lesson const l = load(lesson());
+    LessonStep step = l.steps[1];  // cull front, volumes; its own tasks dropped: the change makes new ones
+    step.tasks.clear();
+    step.tasksJson.clear();
+    PipelineSettings to = step.state.pipeline;
+    to.cull = CullMode::Flip;
+    to.lightCubes = !to.lightCubes;
+    std::vector<PointLight> lights = step.state.lights;
+    lights[3].intensity = 2.5f;
+    lights[3].position.x += 1.0f;
+    step.tasks = tasksFromChange(step.state.pipeline, to, step.state.lights, lights);
+    ASSERT_EQ(step.tasks.size(), 4u);  // cull, light_cubes, light 3's x and intensity
+
+    std::string const path = test::freshTempDir("lesson_tasks_change") + "/authored.json";
+    ASSERT_FALSE(appendLessonStep(path, step));
+    LessonLoad const back = loadLesson(path);
+    ASSERT_TRUE(back.lesson) << back.error;
+    LessonStep const& s = back.lesson->steps[0];
+    ASSERT_EQ(s.tasks.size(), step.tasks.size());
+    for (std::size_t i = 0; i < s.tasks.size(); ++i) {
+        LessonTask const& a = step.tasks[i];
+        LessonTask const& b = s.tasks[i];
+        EXPECT_EQ(b.kind, a.kind);
+        EXPECT_EQ(b.goal, a.goal);
+        EXPECT_EQ(b.hint, a.hint);
+        EXPECT_EQ(b.setting, a.setting);
+        EXPECT_EQ(b.light, a.light);
+        EXPECT_EQ(b.field, a.field);
+        EXPECT_EQ(b.onlyChanged, a.onlyChanged);
+        EXPECT_NEAR(b.value, a.value, 1e-5 * std::max(1.0, std::abs(a.value))) << a.goal;
+        EXPECT_NEAR(b.tolerance, a.tolerance, 1e-6) << a.goal;
+        EXPECT_FALSE(taskMet(b, contextOf(s.state.lights, s.state.pipeline, s.state.lights))) << b.goal;
+        EXPECT_TRUE(taskMet(b, contextOf(lights, to, s.state.lights))) << b.goal;
+    }
+    EXPECT_EQ(s.tasks[1].setting, "light_cubes");
+    EXPECT_EQ(s.tasks[2].onlyChanged, (std::vector<std::string>{"x", "intensity"}));
+    // The file writes a setting's value as a session does.
+    std::ifstream in(path);
+    json const file = json::parse(in);
+    EXPECT_EQ(file["steps"][0]["tasks"][0]["value"], "flip");
+    EXPECT_EQ(file["steps"][0]["tasks"][1]["value"], to.lightCubes);
+
+    // A task already met where the step starts is refused before anything is written.
+    LessonStep met = step;
+    met.tasks = tasksFromChange(step.state.pipeline, to, step.state.lights, lights);
+    met.tasks[0].value = double(int(step.state.pipeline.cull));
+    auto const refused = appendLessonStep(path, met);
+    ASSERT_TRUE(refused);
+    EXPECT_NE(refused->find("step not saved: " + path + ": steps[1].tasks[0] is already met"), std::string::npos)
+        << *refused;
+    EXPECT_EQ(loadLesson(path).lesson->steps.size(), 1u);
+}
+
+// Every shipped task, written by taskToJson, is the task its file holds (`lessons --json` prints
+// these), and reads back to the same task.
+TEST(LessonTasks, TaskToJsonWritesEachShippedTaskAsItsFileDoes) {
+    LessonLibrary const lib = loadLessonDir(defaultLessonDir());
+    ASSERT_TRUE(lib.errors.empty()) << lib.errors.front();
+    int count = 0;
+    for (Lesson const& l : lib.lessons)
+        for (LessonStep const& s : l.steps) {
+            if (s.tasks.empty()) continue;
+            json const file = json::parse(s.tasksJson);
+            ASSERT_EQ(file.size(), s.tasks.size());
+            for (std::size_t i = 0; i < s.tasks.size(); ++i, ++count)
+                EXPECT_EQ(json::parse(taskToJson(s.tasks[i])), file[i]) << l.id << ": " << file[i].dump();
+        }
+    EXPECT_GE(count, 5);
 }
 
 // --- the shipped lessons ---------------------------------------------------------------------

@@ -124,20 +124,41 @@ void keepStepPixel(Editor& editor) {
     l.pixelFrameSize = frameSize(editor);
 }
 
-// Opens lesson `index` at `step`, or where the student left it.
+std::string currentScene(Editor const& editor) {
+    return editor.state.sceneSource.empty() ? "default" : editor.state.sceneSource;
+}
+
+// Makes `scene` ("default" or a glTF path) the editor's scene unless it already is; the error
+// sentence when it cannot be loaded (the editor keeps the scene it had).
+std::optional<std::string> useScene(Editor& editor, std::string const& scene) {
+    if (scene == currentScene(editor)) return std::nullopt;
+    return editor.sceneLoader(scene, editor.defaultLightCount);
+}
+
+// Opens lesson `index` at `step`, or where the student left it. The lesson's scene (its glTF file
+// or the default scene) replaces the editor's; Leave loads the editor's again.
 void start(Editor& editor, int index, std::optional<int> step = std::nullopt) {
     LessonState& l = editor.lessons;
     if (index < 0 || index >= int(editor.lessonLibrary.lessons.size())) return;
-    if (!editor.state.sceneSource.empty() && editor.state.sceneSource != "default") {
-        report(editor, "lessons use the default scene: open it first (File > New session)", true);
-        return;
-    }
+    ui::Lesson const& next = editor.lessonLibrary.lessons[std::size_t(index)];
+    std::string const scene = next.scenePath.empty() ? "default" : next.scenePath;
     if (l.lesson < 0) {
-        editor.sessions->lessonStarting(editor.state);
-        l.before = ui::captureLessonReturn(editor.state);
+        std::string const sceneBefore = currentScene(editor);
+        ui::LessonReturn before = ui::captureLessonReturn(editor.state);
+        editor.sessions->lessonStarting(editor.state);  // before the scene changes: were there edits?
+        if (auto error = useScene(editor, scene)) {
+            report(editor, "lesson " + next.id + " not opened: its scene could not be loaded: " + *error, true);
+            return;
+        }
+        l.before = std::move(before);
+        l.sceneBefore = sceneBefore;
     } else if (l.before) {
         // Another lesson: it starts from the editor as it was before any, not from the tools the
         // last one left open.
+        if (auto error = useScene(editor, scene)) {
+            report(editor, "lesson " + next.id + " not opened: its scene could not be loaded: " + *error, true);
+            return;
+        }
         ui::applyLessonReturn(*l.before, editor.state, frameSize(editor));
     }
     l.lesson = index;
@@ -178,6 +199,9 @@ void checkPrediction(Editor& editor) {
 void leave(Editor& editor) {
     LessonState& l = editor.lessons;
     if (l.lesson < 0) return;
+    // The scene first: loading one resets the lights and camera, which the return then puts back.
+    std::optional<std::string> sceneError;
+    if (!l.sceneBefore.empty()) sceneError = useScene(editor, l.sceneBefore);
     if (l.before) ui::applyLessonReturn(*l.before, editor.state, frameSize(editor));
     editor.sessions->commitLessonStep(editor.state);
     editor.sessions->lessonLeft();
@@ -186,7 +210,25 @@ void leave(Editor& editor) {
     l.lesson = -1;
     l.step = 0;
     l.tasks.clear();
-    report(editor, "left the lesson; the editor is as it was before", false);
+    if (sceneError) {
+        report(editor,
+               "left the lesson, but its scene stays: " + l.sceneBefore + " could not be loaded again: " + *sceneError,
+               true);
+    } else {
+        report(editor, "left the lesson; the editor is as it was before", false);
+    }
+    l.sceneBefore.clear();
+}
+
+// The editor's state as a step shows it: no animation, the inspector's pixel as frame fractions.
+ui::LessonSnapshot currentSnapshot(Editor const& editor) {
+    ui::LessonSnapshot s = ui::captureLessonSnapshot(editor.state);
+    s.animation = {};
+    if (editor.state.inspector.pixel) {
+        glm::ivec2 const size = frameSize(editor);
+        s.pixel = (glm::vec2(*editor.state.inspector.pixel) + 0.5f) / glm::vec2(glm::max(size, glm::ivec2(1)));
+    }
+    return s;
 }
 
 void saveStep(Editor& editor) {
@@ -199,14 +241,25 @@ void saveStep(Editor& editor) {
             report(editor, "type a title, what to look at, an equation, a question and its answer first", true);
             return;
         }
-    step.state = ui::captureLessonSnapshot(editor.state);
-    step.state.animation = {};
-    if (editor.state.inspector.pixel) {
-        glm::ivec2 const size = frameSize(editor);
-        step.state.pixel = (glm::vec2(*editor.state.inspector.pixel) + 0.5f) / glm::vec2(glm::max(size, glm::ivec2(1)));
+    step.state = currentSnapshot(editor);
+    if (l.saveWithTasks) {
+        // The step shows the remembered start; its tasks ask for the change made since.
+        if (!l.taskStart) {
+            report(editor, "remember the task start first, then make the change the task asks for", true);
+            return;
+        }
+        step.tasks =
+            ui::tasksFromChange(l.taskStart->pipeline, step.state.pipeline, l.taskStart->lights, step.state.lights);
+        if (step.tasks.empty()) {
+            report(editor, "no task to add: no pipeline setting and no light field changed since the remembered start",
+                   true);
+            return;
+        }
+        step.state = *l.taskStart;
     }
     step.defaultSceneLights = editor.defaultLightCount;
-    if (auto err = ui::appendLessonStep(l.savePath, step)) {
+    std::string const scene = currentScene(editor) == "default" ? std::string() : currentScene(editor);
+    if (auto err = ui::appendLessonStep(l.savePath, step, scene)) {
         report(editor, *err, true);
         return;
     }
@@ -216,7 +269,10 @@ void saveStep(Editor& editor) {
         report(editor, load.error, true);
         return;
     }
-    report(editor, "saved step " + std::to_string(load.lesson->steps.size()) + " to " + l.savePath, false);
+    report(editor,
+           "saved step " + std::to_string(load.lesson->steps.size()) + " to " + l.savePath +
+               (step.tasks.empty() ? "" : " with " + std::to_string(step.tasks.size()) + " task(s)"),
+           false);
 }
 
 void open(Editor& editor, std::string const& path) {
@@ -309,6 +365,11 @@ void drawLessons(Editor& editor) {
         if (l.lesson >= 0) showStep(editor, to);
     }
     if (std::exchange(l.leaveRequested, false)) leave(editor);
+    if (std::exchange(l.taskStartRequested, false)) {
+        l.taskStart = currentSnapshot(editor);
+        l.saveWithTasks = true;
+        report(editor, "remembered the task start: change what the task should ask for, then save the step", false);
+    }
     if (std::exchange(l.saveStepRequested, false)) saveStep(editor);
     if (std::exchange(l.openRequested, false)) open(editor, l.openPath);
     if (std::exchange(l.predictRequested, false)) checkPrediction(editor);

@@ -44,8 +44,21 @@ ClaimResult matchesCpu(LessonClaim const& c, ClaimFrame const& f, ClaimImages co
     if (!s) return {false, "no geometry at the lesson pixel"};
     glm::vec3 const cpu = shadePointCpu(f.lights, *s, f.pipeline.ambient);
     glm::vec3 const lit = glm::vec3(texel(im.lighting, f.pixel));
-    bool const ok = close(lit, cpu, c.tolerance, kLitAbsolute);
-    return {ok, "lit " + vecText(lit) + " vs CPU " + vecText(cpu)};
+    bool ok = close(lit, cpu, c.tolerance, kLitAbsolute);
+    std::string detail = "lit " + vecText(lit) + " vs CPU " + vecText(cpu);
+    if (c.reached >= 0) {
+        // A step whose text says the pixel is lit by its lights checks how many do, on the CPU: a
+        // light "reaches" the pixel when it adds what loses_light calls visible.
+        int reached = 0;
+        for (PointLight const& l : f.lights) {
+            glm::vec3 const own = shadeLightCpu(l, *s).total();
+            if (std::max({own.r, own.g, own.b}) > 10.0f * kLitAbsolute) ++reached;
+        }
+        ok = ok && reached == c.reached;
+        detail += "; " + std::to_string(reached) + " of " + std::to_string(f.lights.size()) +
+                  " lights reach the pixel (the step says " + std::to_string(c.reached) + ")";
+    }
+    return {ok, detail};
 }
 
 ClaimResult losesLight(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {

@@ -101,11 +101,12 @@ inline constexpr std::array<std::string_view, 9> kClaimKindNames{
 
 struct LessonClaim {
     ClaimKind kind = ClaimKind::MatchesCpu;
-    int light = -1;                              // loses_light
-    std::optional<PipelineSettings> reference;   // loses_light, same_image, fewer_lit_pixels, differs_from
-    float tolerance = 0.0f;                      // matches_cpu, loses_light, attachment_equals (relative + absolute)
-    float bound = 0.0f;                          // position_error_below, same_image and differs_from (abs difference)
-    float minFraction = 0.0f;                    // fewer_lit_pixels, differs_from
+    int light = -1;                             // loses_light
+    std::optional<PipelineSettings> reference;  // loses_light, same_image, fewer_lit_pixels, differs_from
+    float tolerance = 0.0f;                     // matches_cpu, loses_light, attachment_equals (relative + absolute)
+    float bound = 0.0f;                         // position_error_below, same_image and differs_from (abs difference)
+    float minFraction = 0.0f;                   // fewer_lit_pixels, differs_from
+    int reached = -1;  // matches_cpu (optional): how many lights add a visible amount at the pixel; -1 = unchecked
     Attachment attachment = Attachment::Normal;  // attachment_equals
     glm::vec4 value{0.0f};                       // attachment_equals
     unsigned compare = 0x7;                      // attachment_equals: bit i = component i is compared
@@ -148,6 +149,7 @@ struct LessonState {
     int lesson = -1;  // index into the editor's lesson list; -1 = no lesson running
     int step = 0;
     std::optional<LessonReturn> before;  // the editor before the lesson started
+    std::string sceneBefore;             // its scene ("default" or the glTF path), reloaded on Leave
 
     // Requests from the window, carried out by the editor loop (it knows the frame size and undo).
     int startRequest = -1;  // a lesson was picked
@@ -158,7 +160,13 @@ struct LessonState {
     std::string openPath;
     std::string savePath = "my_lesson.json";  // where saved steps go
     LessonText draft;                         // text typed for the step being saved
-    std::string message;                      // the last request's outcome (or why it was refused)
+    // "Add tasks" when saving: the saved step shows the state remembered here (taskStartRequested
+    // remembers the editor's), and its tasks ask for the change from it to the editor's state now
+    // (tasksFromChange).
+    std::optional<LessonSnapshot> taskStart;
+    bool taskStartRequested = false;
+    bool saveWithTasks = false;
+    std::string message;  // the last request's outcome (or why it was refused)
     bool messageIsError = false;
     int picked = 0;  // the lesson the list shows selected
     // The step being shown: its prediction and its answer. Reset when the step changes.

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace gbl::ui {
 
@@ -94,6 +95,70 @@ std::optional<float> taskLightFieldValue(PointLight const& light, std::string_vi
 
 bool taskMet(LessonTask const& task, TaskContext const& ctx) {
     return taskKindInfo(task.kind).met(task, ctx);
+}
+
+namespace {
+
+// A number as the goal text shows it: "%g" with a float's digits.
+std::string shown(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", v);
+    return buf;
+}
+
+// The tolerance of a number goal: `wanted`, but below half the change so the start stays unmet.
+double toleranceFor(double wanted, double change) {
+    double const half = std::abs(change) * 0.5;
+    return wanted < half ? wanted : half * 0.5;
+}
+
+}  // namespace
+
+std::vector<LessonTask> tasksFromChange(PipelineSettings const& from, PipelineSettings const& to,
+                                        std::span<PointLight const> fromLights, std::span<PointLight const> toLights) {
+    std::vector<LessonTask> tasks;
+    for (PipelineField const& f : pipelineFields()) {
+        double const a = f.get(from);
+        double const b = f.get(to);
+        if (a == b) continue;
+        LessonTask t;
+        t.kind = TaskKind::Setting;
+        t.setting = std::string(f.name);
+        t.value = b;
+        if (f.kind == SettingKind::Number) t.tolerance = toleranceFor(0.01 * double(f.max - f.min), b - a);
+        std::string const value = fieldScriptText(f, to);
+        t.goal = "Set " + t.setting + " to " +
+                 (f.kind == SettingKind::Number ? shown(b) + " ± " + shown(t.tolerance) : value) + ".";
+        t.hint = "Pipeline window: " + std::string(f.help);
+        tasks.push_back(std::move(t));
+    }
+    std::size_t const lights = std::min(fromLights.size(), toLights.size());
+    for (std::size_t i = 0; i < lights; ++i) {
+        std::vector<LightField const*> changed;
+        for (LightField const& f : kLightFields)
+            if (f.of(fromLights[i]) != f.of(toLights[i])) changed.push_back(&f);
+        std::vector<std::string> names;
+        for (LightField const* f : changed) names.emplace_back(f->name);
+        std::string list;
+        for (LightField const* f : changed) list += (list.empty() ? "" : ", ") + std::string(f->label);
+        for (LightField const* f : changed) {
+            double const a = f->of(fromLights[i]);
+            double const b = f->of(toLights[i]);
+            LessonTask t;
+            t.kind = TaskKind::LightField;
+            t.light = int(i);
+            t.field = std::string(f->name);
+            t.value = b;
+            t.tolerance = toleranceFor(std::max(0.01, 0.02 * std::abs(b)), b - a);
+            t.onlyChanged = names;
+            t.goal = "Make light " + std::to_string(i) + "'s " + std::string(f->label) + " " + shown(b) + " ± " +
+                     shown(t.tolerance) + ", changing only its " + list + ".";
+            t.hint = "Lights window: select light " + std::to_string(i) + " and change its " + std::string(f->label) +
+                     " (drag, or Ctrl+click to type).";
+            tasks.push_back(std::move(t));
+        }
+    }
+    return tasks;
 }
 
 std::vector<TaskProgress> startTasks(std::size_t count, double now) {

@@ -76,6 +76,18 @@ std::optional<float> taskLightFieldValue(PointLight const& light, std::string_vi
 // Whether the task's goal holds in `ctx`.
 bool taskMet(LessonTask const& task, TaskContext const& ctx);
 
+// --- tasks made from an author's change -------------------------------------------------------
+
+// The tasks that ask a student to make the change an author made from `from` to `to` ("Save this
+// state as a step" with "Add tasks"): one `setting` task per pipeline setting that differs, and one
+// `light_field` task per light field that differs (lights matched by index, only the lights both
+// have), whose `only_changed` lists that light's changed fields. A number's tolerance is 1 % of the
+// setting's range (2 % of the light field's value, at least 0.01), and always less than half the
+// change, so the task is unmet in `from` and met in `to`. Goal and hint are written out (no
+// placeholders). Empty when nothing the tasks can check changed.
+std::vector<LessonTask> tasksFromChange(PipelineSettings const& from, PipelineSettings const& to,
+                                        std::span<PointLight const> fromLights, std::span<PointLight const> toLights);
+
 // --- progress and hints ----------------------------------------------------------------------
 
 // About this long unmet (since the step showed, or since the task was last met) before its hint shows.

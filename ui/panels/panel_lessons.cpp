@@ -320,6 +320,13 @@ void drawAuthoring(LessonState& state, FileBrowserState& browser) {
     inputText("##question", state.draft.question, true);
     ImGui::TextUnformatted("Answer (revealed after trying)");
     inputText("##answer", state.draft.answer, true);
+    // A task from a change: remember the start, make the change, save. The step shows the start.
+    if (ImGui::Button("Remember this state as the task start")) state.taskStartRequested = true;
+    ImGui::SameLine();
+    ImGui::TextDisabled(state.taskStart ? "(remembered)" : "(none yet)");
+    ImGui::BeginDisabled(!state.taskStart);
+    ImGui::Checkbox("Add tasks: the step shows the start and asks for the change to this state", &state.saveWithTasks);
+    ImGui::EndDisabled();
     ImGui::TextUnformatted("Lesson file (appended to)");
     inputText("##savepath", state.savePath, false);
     if (ImGui::Button("Save step")) state.saveStepRequested = true;

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -163,7 +164,8 @@ Attachment comparedImage(json const& c, std::string const& path) {
 
 LessonClaim readClaim(json const& c, std::string const& path, json const& state, LessonStep const& step) {
     knownFields(c, path,
-                {"kind", "light", "reference", "tolerance", "bound", "min_fraction", "attachment", "value", "image"});
+                {"kind", "light", "reference", "tolerance", "bound", "min_fraction", "attachment", "value", "image",
+                 "reached"});
     auto kindIt = c.find("kind");
     if (kindIt == c.end()) fail(path + ".kind", "is missing");
     std::string names;
@@ -230,8 +232,12 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
             claim.image = comparedImage(c, path);
             break;
         case ClaimKind::MatchesCpu:
+            if (auto it = c.find("reached"); it != c.end())
+                claim.reached = integer(*it, path + ".reached", 0, int(step.state.lights.size()));
             break;
     }
+    if (*kind != ClaimKind::MatchesCpu && c.contains("reached"))
+        fail(path + ".reached", "is only for a matches_cpu claim");
     if (claimNeedsReference(claim)) {
         // The reference is the step's pipeline with these settings changed, read like the step.
         json const& ref = need("reference");
@@ -428,7 +434,7 @@ std::vector<LessonTask> readTasks(json const& j, std::string const& path, Lesson
 }
 
 LessonStep readStep(json const& j, std::string const& path, json const& setup, std::string const& lessonId,
-                    glm::ivec2 lessonSize) {
+                    glm::ivec2 lessonSize, bool gltfScene) {
     knownFields(j, path,
                 {"title", "look", "equation", "question", "answer", "predict", "tasks", "scene", "lights", "camera",
                  "pipeline", "viewers", "selected_light", "viewer", "pixel", "claim", "ab"});
@@ -442,6 +448,17 @@ LessonStep readStep(json const& j, std::string const& path, json const& setup, s
                                    " asks a question and every question needs an answer the student can reveal");
     step.text.answer = text(j, "answer", path);
     json const state = mergedState(setup, j);
+    if (gltfScene) {
+        // The default scene's lights and camera are placed for the default scene, not for another.
+        if (!state.contains("lights"))
+            fail(path + ".lights",
+                 "is missing: a lesson on a glTF scene (\"scene\") names its lights, in setup or "
+                 "in each step");
+        if (!state.contains("camera") || !state["camera"].is_object() || !state["camera"].contains("position"))
+            fail(path + ".camera.position",
+                 "is missing: a lesson on a glTF scene (\"scene\") places its camera, in "
+                 "setup or in each step");
+    }
     step.state = snapshotOf(state, path, &step.defaultSceneLights);
     if (auto it = j.find("ab"); it != j.end()) step.state.ab = readAb(*it, path + ".ab", step.state.pipeline);
     if (auto it = j.find("claim"); it != j.end()) step.claim = readClaim(*it, path + ".claim", state, step);
@@ -491,7 +508,33 @@ LessonSnapshot snapshotOf(json const& state, std::string const& path, int* defau
     return out;
 }
 
-Lesson readLesson(json const& j) {
+// "scene": a glTF file, found in the lesson's folder first, then in the shared models folder.
+std::string findLessonScene(json const& j, fs::path const& folder) {
+    if (!j.is_string() || j.get<std::string>().empty())
+        fail("scene", "must be the path of a glTF file (.gltf or .glb)");
+    std::string const name = j.get<std::string>();
+    std::string ext = fs::path(name).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext != ".gltf" && ext != ".glb") fail("scene", "must name a .gltf or .glb file (got " + j.dump() + ")");
+    std::vector<fs::path> tried;
+    if (fs::path(name).is_absolute()) {
+        tried.push_back(name);
+    } else {
+        tried.push_back(folder / name);
+        tried.push_back(fs::path(sharedModelsDir()) / name);
+    }
+    std::error_code ec;
+    for (fs::path const& p : tried)
+        if (fs::is_regular_file(p, ec)) return p.lexically_normal().string();
+    std::string where;
+    for (fs::path const& p : tried) where += (where.empty() ? "" : " nor ") + p.lexically_normal().string();
+    fail("scene", j.dump() + " is not a file: neither " + where + " exists" +
+                      (tried.size() > 1 ? " (a scene is looked for in the lesson's folder, then in the shared models "
+                                          "folder; GBL_SHARED_GLTF_DIR names another)"
+                                        : ""));
+}
+
+Lesson readLesson(json const& j, fs::path const& folder) {
     if (!j.is_object()) fail("the file", "must hold a JSON object");
     auto fmt = j.find("format");
     if (fmt == j.end()) fail("format", "is missing");
@@ -506,7 +549,7 @@ Lesson readLesson(json const& j) {
                             (ver->is_number_integer() && ver->get<long long>() == 1
                                  ? " (version 2 adds an \"answer\" to every step: add one and set \"version\": 2)"
                                  : ""));
-    knownFields(j, "", {"format", "version", "id", "title", "summary", "size", "setup", "steps"});
+    knownFields(j, "", {"format", "version", "id", "title", "summary", "scene", "size", "setup", "steps"});
     Lesson lesson;
     auto id = j.find("id");
     if (id == j.end()) fail("id", "is missing");
@@ -521,6 +564,10 @@ Lesson readLesson(json const& j) {
         lesson.width = integer((*size)[0], "size[0]", 16, 8192);
         lesson.height = integer((*size)[1], "size[1]", 16, 8192);
     }
+    if (auto scene = j.find("scene"); scene != j.end()) {
+        lesson.scene = scene->is_string() ? scene->get<std::string>() : "";
+        lesson.scenePath = findLessonScene(*scene, folder);
+    }
     json setup = json::object();
     if (auto s = j.find("setup"); s != j.end()) {
         knownFields(*s, "setup",
@@ -534,8 +581,8 @@ Lesson readLesson(json const& j) {
     if (steps == j.end()) fail("steps", "is missing");
     if (!steps->is_array() || steps->empty()) fail("steps", "must be an array of at least one step");
     for (std::size_t i = 0; i < steps->size(); ++i)
-        lesson.steps.push_back(
-            readStep((*steps)[i], "steps[" + std::to_string(i) + "]", setup, lesson.id, {lesson.width, lesson.height}));
+        lesson.steps.push_back(readStep((*steps)[i], "steps[" + std::to_string(i) + "]", setup, lesson.id,
+                                        {lesson.width, lesson.height}, !lesson.scenePath.empty()));
     return lesson;
 }
 
@@ -554,7 +601,7 @@ LessonLoad parseLesson(std::string_view source, std::string const& fileLabel) {
         return out;
     }
     try {
-        out.lesson = readLesson(j);
+        out.lesson = readLesson(j, fs::path(fileLabel).parent_path());
     } catch (FieldError const& e) {
         std::string what = e.what();
         while (!what.empty() && what.back() == ' ') what.pop_back();

@@ -33,6 +33,10 @@ struct Lesson {
     std::string id;  // letters, digits, '_' and '-': what `render --lesson ID:STEP` names
     std::string title;
     std::string summary;
+    // A glTF scene the lesson is about (its "scene" field, as written), and that file found (the
+    // lesson's folder first, then sharedModelsDir()); both empty: the default scene.
+    std::string scene;
+    std::string scenePath;
     int width = 640;  // the frame size the lesson's pixels and claims were measured at
     int height = 360;
     std::vector<LessonStep> steps;
@@ -44,6 +48,7 @@ struct LessonLoad {
     std::string error;  // "<file>: <field> <what is wrong>" when lesson is empty
 };
 
+// fileLabel names the file in messages; its folder is where a relative "scene" is looked for first.
 LessonLoad parseLesson(std::string_view text, std::string const& fileLabel);
 LessonLoad loadLesson(std::string const& path);
 
@@ -56,6 +61,9 @@ struct LessonLibrary {
 LessonLibrary loadLessonDir(std::string const& dir);
 // assets/lessons of the source tree, or $GBL_LESSONS_DIR when set.
 std::string defaultLessonDir();
+// Where a lesson's "scene" is looked for after the lesson's own folder: ../shared/gltf beside the
+// source tree, or $GBL_SHARED_GLTF_DIR when set. The folder may be absent.
+std::string sharedModelsDir();
 
 // "ID" or "ID:STEP" (STEP counted from 1) to the lesson's index and the step's index; an
 // error sentence listing the lessons otherwise.
@@ -68,8 +76,17 @@ LessonRef findLessonStep(LessonLibrary const& library, std::string_view ref);
 
 // The lesson as JSON, every step written in full (camera, lights, pipeline, viewers).
 std::string lessonToJson(Lesson const& lesson);
+// One task as a lesson file writes it: kind, goal, hint and its kind's fields, a setting's value
+// as a session file writes it ("off", true, 0.6). parseLesson reads it back to the same task.
+std::string taskToJson(LessonTask const& task);
+// A prediction as a lesson file writes it (prompt, choices and correct or number and tolerance,
+// explain, before).
+std::string predictionToJson(LessonPrediction const& prediction);
 // Appends `step` to the lesson in `path` (creating it, with the id taken from the file name,
 // when the file does not exist); the error sentence on failure. The file is written atomically.
-std::optional<std::string> appendLessonStep(std::string const& path, LessonStep const& step);
+// scenePath: the glTF file the step was set up on ("" for the default scene): a new lesson names
+// it as its "scene"; an existing lesson on another scene is refused.
+std::optional<std::string> appendLessonStep(std::string const& path, LessonStep const& step,
+                                            std::string const& scenePath = {});
 
 }  // namespace gbl::ui

@@ -14,6 +14,11 @@ std::string defaultLessonDir() {
     return GBL_LESSONS_DIR;
 }
 
+std::string sharedModelsDir() {
+    if (char const* env = std::getenv("GBL_SHARED_GLTF_DIR"); env && *env) return env;
+    return GBL_SHARED_MODELS_DIR;
+}
+
 LessonLibrary loadLessonDir(std::string const& dir) {
     LessonLibrary lib;
     std::error_code ec;
