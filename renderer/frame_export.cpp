@@ -136,8 +136,9 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
     json calls = json::object();
     for (PassCalls const& c : frame.stats.calls) {
         json& entry = calls[c.name];
-        entry["draws"] = entry.value("draws", std::uint64_t(0)) + c.draws;
-        entry["dispatches"] = entry.value("dispatches", std::uint64_t(0)) + c.dispatches;
+        if (entry.is_null()) entry = {{"draws", std::uint64_t(0)}, {"dispatches", std::uint64_t(0)}};
+        entry["draws"] = entry["draws"].get<std::uint64_t>() + c.draws;
+        entry["dispatches"] = entry["dispatches"].get<std::uint64_t>() + c.dispatches;
     }
     GlCaps const& caps = renderer.caps();
     PipelineSettings const& s = frame.settings;
