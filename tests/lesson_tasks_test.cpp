@@ -206,7 +206,7 @@ TEST(LessonTasks, BrokenTasksNameTheField) {
         {[&](json& j) { task(j, 0, 0)["light"] = 1; },
          "t.json: steps[0].tasks[0].light must be a whole number from 0 to 0"},
         {[&](json& j) { task(j, 0, 0)["field"] = "Kq"; },
-         "t.json: steps[0].tasks[0].field must be one of x, y, z, r, g, b, intensity, kc, kl, kq"},
+         "t.json: steps[0].tasks[0].field must be one of x, y, z, r, g, b, kc, kl, kq, intensity"},
         {[&](json& j) {
              task(j, 0, 0)["only_changed"] = {"kq", "radius"};
          },
