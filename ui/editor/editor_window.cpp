@@ -112,7 +112,6 @@ void readViewSettingsLine(ImGuiContext*, ImGuiSettingsHandler* handler, void*, c
     if (!scale) {
         std::string const sentence =
             error + "; the UI stays at scale " + ui::uiScaleText(editor.state.layout.scale.current) + ".";
-        std::fprintf(stderr, "gbuffer-lab: %s\n", sentence.c_str());
         ui::logMessage(editor.state.log, sentence, true);
         return;
     }
@@ -141,7 +140,6 @@ void addViewSettingsHandler(Editor& editor) {
 void setUiScale(Editor& editor, float scale) {
     editor.state.layout.scale.current = scale;
     if (auto warning = ui::applyUiScale(editor.baseStyle, scale, editor.contentScale, ui::uiFontPath())) {
-        std::fprintf(stderr, "gbuffer-lab: %s\n", warning->c_str());
         ui::logMessage(editor.state.log, *warning);
     }
 }
