@@ -7,6 +7,7 @@
 #include "compare_command.h"
 #include "editor/editor.h"
 #include "lesson_command.h"
+#include "model/ui_scale.h"
 #include "render_command.h"
 
 #include <CLI/CLI.hpp>
@@ -42,6 +43,8 @@ int main(int argc, char** argv) {
     app.add_option("--frame-warn-seconds", editor.frameWarnSeconds,
                    "Switch to a faster mode, with a message, before a frame estimated to take longer than this")
         ->check(CLI::NonNegativeNumber);
+    app.add_option("--ui-scale", editor.uiScale,
+                   "Scale text and controls, 0.75 to 3 (1.5 for a projector); kept with the window layout otherwise");
     app.add_flag("--continuous", editor.continuousRender,
                  "Run the renderer every frame even when nothing changed (for timing)");
 
@@ -91,6 +94,13 @@ int main(int argc, char** argv) {
         }
         editor.width = size->width;
         editor.height = size->height;
+    }
+    if (editor.uiScale) {
+        std::string error;
+        if (!gbl::ui::parseUiScale(*editor.uiScale, "--ui-scale", &error)) {
+            std::fprintf(stderr, "gbuffer-lab: %s.\n", error.c_str());
+            return 2;
+        }
     }
     if (editor.lightCount && (*editor.lightCount < 0 || *editor.lightCount > gbl::kMaxLights)) {
         std::fprintf(stderr, "gbuffer-lab: --lights must be between 0 and %d\n", gbl::kMaxLights);

@@ -34,6 +34,7 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     l.overview = true;
     l.overviewButton = {750, 40, 80, 19};
     l.overviewCells = {"final@307,178,211,133", "normal@737,178,211,133"};
+    l.uiScale = 1.25f;
     nlohmann::json const j = nlohmann::json::parse(frameLogJson(l));
     EXPECT_EQ(j["frame"], 41);
     EXPECT_EQ(j["rendered"], true);
@@ -65,6 +66,7 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     EXPECT_DOUBLE_EQ(j["overviewButton"][2].get<double>(), 80.0);
     ASSERT_EQ(j["overviewCells"].size(), 2u);
     EXPECT_EQ(j["overviewCells"][1], "normal@737,178,211,133");
+    EXPECT_DOUBLE_EQ(j["uiScale"].get<double>(), 1.25);
     EXPECT_EQ(j["toolsRegion"][3], 60);
 }
 

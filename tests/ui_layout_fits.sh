@@ -6,6 +6,9 @@
 # The images are the point (issue 26): in every run the frame log's rectangles must show each
 # G-buffer viewer's image at least 240 px wide at 1280x720 (280 px at 1600x900) and the viewport's
 # image at least 40 % of the window's width and of its height, whatever tools are open.
+# UI scale (issue 26): the same runs at 1600x900 with --ui-scale 1.5 (a projector) assert the same
+# (280 px viewers: the side columns and the strip grow with the scale, the strip's cells keep a
+# fifth of the width) and that the frame log reports scale 1.5.
 # usage: ui_layout_fits.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
 set -eu
 bin="$1"
@@ -65,21 +68,32 @@ image_sizes() {
     }'
 }
 status=0
-for size in 1280x720 1600x900; do
+for setting in 1280x720@1 1600x900@1 1600x900@1.5; do
+    size=${setting%@*}
+    scale=${setting#*@}
+    where=$size
+    [ "$scale" = 1 ] || where="$size at scale $scale"
     for run in start tools heat; do
-        log="$work/frames-$size-$run.jsonl"
+        log="$work/frames-$setting-$run.jsonl"
         set -- --frames 8
         [ "$run" = tools ] && set -- --ui-test "$work/tools.txt"
         [ "$run" = heat ] && set -- --ui-test "$work/heat.txt"
-        "$bin" --size "$size" --no-vsync "$@" --log-frames "$log" > "$work/editor-$size-$run.log" 2>&1 ||
-            { cat "$work/editor-$size-$run.log"; echo "ui_layout_fits: FAIL: the editor failed at $size ($run)"; exit 1; }
+        [ "$scale" = 1 ] || set -- "$@" --ui-scale "$scale"
+        "$bin" --size "$size" --no-vsync "$@" --log-frames "$log" > "$work/editor-$setting-$run.log" 2>&1 ||
+            { cat "$work/editor-$setting-$run.log"; echo "ui_layout_fits: FAIL: the editor failed at $where ($run)"; exit 1; }
+        logged=$(field uiScale "$(tail -n 1 "$log")")
+        echo "$where ($run): the log's uiScale: $logged"
+        if ! awk -v a="$logged" -v b="$scale" 'BEGIN { exit !(a != "" && a + 0 == b + 0) }'; then
+            echo "ui_layout_fits: FAIL: the frame log reports scale '$logged', not $scale ($run)"
+            status=1
+        fi
         sizes=$(image_sizes "$(tail -n 1 "$log")" "$size")
-        echo "$size ($run): $sizes"
-        case "$sizes" in *FAIL*) echo "ui_layout_fits: FAIL: images too small at $size ($run)"; status=1 ;; esac
+        echo "$where ($run): $sizes"
+        case "$sizes" in *FAIL*) echo "ui_layout_fits: FAIL: images too small at $where ($run)"; status=1 ;; esac
         clipped=$(clipped_list "$(tail -n 1 "$log")")
-        echo "$size ($run): cut off: ${clipped:-nothing}"
+        echo "$where ($run): cut off: ${clipped:-nothing}"
         if [ -n "$clipped" ]; then
-            echo "ui_layout_fits: FAIL: content cut off at $size ($run)"
+            echo "ui_layout_fits: FAIL: content cut off at $where ($run)"
             status=1
         fi
     done

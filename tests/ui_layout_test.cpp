@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 using namespace gbl::ui;
 
@@ -16,26 +17,28 @@ float overlap(TileRect const& a, TileRect const& b) {
 }  // namespace
 
 TEST(UiLayout, TilesCoverTheWorkAreaWithoutOverlap) {
-    for (glm::vec2 size : {glm::vec2(1600, 881), glm::vec2(1280, 701), glm::vec2(1023, 767), glm::vec2(640, 461)}) {
-        glm::vec2 const pos(0, 19);  // below the main menu bar
-        float area = 0.0f;
-        std::vector<TileRect> rects;
-        for (std::size_t i = 0; i < kEditorWindowNames.size(); ++i) {
-            TileRect const r = tiledRect(EditorWindow(i), pos, size);
-            EXPECT_GT(r.size.x, 0.0f) << kEditorWindowNames[i];
-            EXPECT_GT(r.size.y, 0.0f) << kEditorWindowNames[i];
-            EXPECT_GE(r.pos.x, pos.x);
-            EXPECT_GE(r.pos.y, pos.y);
-            EXPECT_LE(r.pos.x + r.size.x, pos.x + size.x);
-            EXPECT_LE(r.pos.y + r.size.y, pos.y + size.y);
-            area += r.size.x * r.size.y;
-            rects.push_back(r);
+    for (float scale : {1.0f, 1.5f, 3.0f})
+        for (glm::vec2 size : {glm::vec2(1600, 881), glm::vec2(1280, 701), glm::vec2(1023, 767), glm::vec2(640, 461)}) {
+            glm::vec2 const pos(0, 19);  // below the main menu bar
+            float area = 0.0f;
+            std::vector<TileRect> rects;
+            for (std::size_t i = 0; i < kEditorWindowNames.size(); ++i) {
+                TileRect const r = tiledRect(EditorWindow(i), pos, size, scale);
+                EXPECT_GT(r.size.x, 0.0f) << kEditorWindowNames[i];
+                EXPECT_GT(r.size.y, 0.0f) << kEditorWindowNames[i];
+                EXPECT_GE(r.pos.x, pos.x);
+                EXPECT_GE(r.pos.y, pos.y);
+                EXPECT_LE(r.pos.x + r.size.x, pos.x + size.x);
+                EXPECT_LE(r.pos.y + r.size.y, pos.y + size.y);
+                area += r.size.x * r.size.y;
+                rects.push_back(r);
+            }
+            EXPECT_FLOAT_EQ(area, size.x * size.y) << size.x << "x" << size.y << " at scale " << scale;
+            for (std::size_t i = 0; i < rects.size(); ++i)
+                for (std::size_t j = i + 1; j < rects.size(); ++j)
+                    EXPECT_EQ(overlap(rects[i], rects[j]), 0.0f)
+                        << kEditorWindowNames[i] << " / " << kEditorWindowNames[j];
         }
-        EXPECT_FLOAT_EQ(area, size.x * size.y) << size.x << "x" << size.y;
-        for (std::size_t i = 0; i < rects.size(); ++i)
-            for (std::size_t j = i + 1; j < rects.size(); ++j)
-                EXPECT_EQ(overlap(rects[i], rects[j]), 0.0f) << kEditorWindowNames[i] << " / " << kEditorWindowNames[j];
-    }
 }
 
 TEST(UiLayout, ViewportIsTheLargestWindow) {
@@ -61,4 +64,26 @@ TEST(UiLayout, EachViewerGetsAFifthOfTheWidth) {
         EXPECT_GE(v.size.x, 0.4f * size.x);
         EXPECT_GE(v.size.y, 0.4f * (size.y + 19.0f));
     }
+}
+
+// UI scale (issue 26): at 1.5 the side columns and the strip grow with the text from their
+// least sizes at scale 1, and the viewport keeps at least kViewportLeast of the width.
+TEST(UiLayout, ColumnsGrowWithTheUiScale) {
+    glm::vec2 const pos(0, 19);
+    glm::vec2 const size(1600, 881);
+    TileRect const lights = tiledRect(EditorWindow::Lights, pos, size, 1.5f);
+    TileRect const inspector = tiledRect(EditorWindow::PixelInspector, pos, size, 1.5f);
+    TileRect const strip = tiledRect(EditorWindow::GBuffer, pos, size, 1.5f);
+    TileRect const viewport = tiledRect(EditorWindow::Viewport, pos, size, 1.5f);
+    EXPECT_EQ(lights.size.x, 450.0f);     // 300 px at scale 1, times 1.5
+    EXPECT_EQ(inspector.size.x, 480.0f);  // 320 px times 1.5
+    EXPECT_EQ(strip.size.y, 312.0f);      // 208 px times 1.5
+    EXPECT_EQ(viewport.size.x, 1600.0f - 450.0f - 480.0f);
+    // At scale 3 the columns would leave the viewport too little: they share what it leaves.
+    TileRect const wide = tiledRect(EditorWindow::Viewport, pos, size, 3.0f);
+    EXPECT_GE(wide.size.x, std::floor(kViewportLeast * size.x));
+    // At scale 1 the fractions hold, whatever the size (a small window's columns are not widened).
+    glm::vec2 const small(640, 461);
+    EXPECT_EQ(tiledRect(EditorWindow::Lights, pos, small, 1.0f).size.x, std::floor(640.0f * kLeftColumn));
+    EXPECT_EQ(tiledRect(EditorWindow::GBuffer, pos, small, 1.0f).size.y, std::floor(461.0f * kViewerStrip));
 }

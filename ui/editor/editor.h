@@ -25,11 +25,14 @@ struct EditorOptions {
     // A frame estimated above this many seconds (core/frame_cost.h) switches to the mode that gives
     // the same image sooner, with a message, instead of freezing the editor.
     double frameWarnSeconds = 2.0;
+    // --ui-scale as given ("1.5"), checked by runEditor (model/ui_scale.h); it wins over the scale
+    // kept with the window layout.
+    std::optional<std::string> uiScale;
 };
 
 // Opens the window and runs until it is closed, the frame count is reached or the test script
 // ends. Returns the process exit code: 0 success, 1 no display / GL failure / failed test,
-// 2 bad input (unreadable scene or session file, unwritable screenshot path).
+// 2 bad input (unreadable scene or session file, unwritable screenshot path, --ui-scale out of range).
 int runEditor(EditorOptions const& options);
 
 }  // namespace gbl

@@ -89,6 +89,7 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.everyLight = state.inspector.everyLight;
     ui::OverviewState const& overview = state.viewport.overview;
     line.overview = overview.on;
+    line.uiScale = state.layout.scale.current;
     line.overviewButton = overview.buttonRect;
     for (ui::OverviewCell const& c : overview.cells) {
         char where[96];

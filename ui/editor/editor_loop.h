@@ -26,6 +26,7 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <imgui.h>
 
 #include <array>
 #include <chrono>
@@ -112,7 +113,9 @@ struct Editor {
     std::optional<ui::SessionController> sessions;
     ui::SceneLoadingState loading;
     std::optional<ui::ScriptHost> host;
-    std::string iniPath;  // imgui.ini in the user's config folder; ImGui keeps a pointer to it
+    std::string iniPath;        // imgui.ini in the user's config folder; ImGui keeps a pointer to it
+    ImGuiStyle baseStyle;       // the style at UI scale 1, which each scale change scales afresh
+    float contentScale = 1.0f;  // the monitor's content scale (1 under Xvfb)
 
     EditorGpu gpu;
     EditorInput input;                       // GLFW's events, queued (editor_input.h)
@@ -166,6 +169,9 @@ std::optional<int> openWindow(Editor& editor);
 std::optional<int> startEditor(Editor& editor);
 // Creates the ImGui context and backends; imgui.ini goes to the user's config folder.
 void initImGui(Editor& editor);
+// Applies a UI scale asked for during the last frame (View > UI scale): style, font atlas and the
+// backend's font texture. Called before the frame's ImGui::NewFrame.
+void applyRequestedUiScale(Editor& editor);
 // Answers the UI test script's questions about this editor (ui/script/ui_script.h, ScriptHost).
 void connectScriptHost(Editor& editor);
 // Reports the script's outcome, ends the session cleanly and releases ImGui and GL objects; the exit code.

@@ -78,6 +78,15 @@ EditRequest drawMainMenu(Editor& editor) {
         if (ImGui::MenuItem("Home view", keysFor(ui::EditorAction::HomeView))) edit.homeView = true;
         if (ImGui::MenuItem("Frame the whole scene")) ui::frameBounds(state.rig, state.camera, state.sceneBounds);
         ImGui::Separator();
+        // UI scale: bigger text and controls for a projector; applied before the next frame.
+        if (ImGui::BeginMenu("UI scale")) {
+            ui::UiScaleState& scale = state.layout.scale;
+            for (ui::UiScaleChoice const& choice : ui::kUiScaleChoices)
+                if (ImGui::MenuItem(choice.label, nullptr, scale.current == choice.scale))
+                    scale.requested = choice.scale;
+            ImGui::EndMenu();
+        }
+        ImGui::Separator();
         // The Frame window: the frame's passes as a diagram (over the G-buffer strip while open).
         ImGui::MenuItem("Frame diagram", nullptr, &state.frame.open);
         std::vector<ui::NamedView> const fileViews =
@@ -132,6 +141,7 @@ std::string windowProblem(ui::EditorWindow which) {
 EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     EditorState& state = editor.state;
     Renderer const& renderer = *editor.renderer;
+    applyRequestedUiScale(editor);  // a scale chosen in the last frame's View menu
     ImGui_ImplOpenGL3_NewFrame();
     feedImGuiBeforeBackendNewFrame(editor.input, editor.window());
     ImGui_ImplGlfw_NewFrame();

@@ -18,6 +18,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <string_view>
 
 #include <unistd.h>
 
@@ -94,7 +95,70 @@ std::string layoutFilePath(ui::LogState& log) {
     return {};
 }
 
+// The UI scale's entry in imgui.ini, "[gbuffer-lab][View]" with a line "UiScale=1.5": kept with the
+// window layout, read before the first frame, written whenever ImGui saves the layout.
+void* readViewSettingsOpen(ImGuiContext*, ImGuiSettingsHandler*, char const* name) {
+    return std::string_view(name) == "View" ? reinterpret_cast<void*>(1) : nullptr;
+}
+
+void readViewSettingsLine(ImGuiContext*, ImGuiSettingsHandler* handler, void*, char const* line) {
+    auto& editor = *static_cast<Editor*>(handler->UserData);
+    std::string_view const text(line);
+    std::string const key = std::string(ui::kUiScaleKey) + "=";
+    if (text.substr(0, key.size()) != key) return;
+    std::string error;
+    auto const scale =
+        ui::parseUiScale(text.substr(key.size()), editor.iniPath + ": " + key.substr(0, key.size() - 1), &error);
+    if (!scale) {
+        std::string const sentence =
+            error + "; the UI stays at scale " + ui::uiScaleText(editor.state.layout.scale.current) + ".";
+        ui::logMessage(editor.state.log, sentence, true);
+        return;
+    }
+    ui::UiScaleState& state = editor.state.layout.scale;
+    state.saved = *scale;
+    if (!state.fromCommandLine) state.current = *scale;
+}
+
+void writeViewSettings(ImGuiContext*, ImGuiSettingsHandler* handler, ImGuiTextBuffer* out) {
+    auto const& editor = *static_cast<Editor const*>(handler->UserData);
+    out->appendf("[gbuffer-lab][View]\n%s\n\n", ui::uiScaleLine(editor.state.layout.scale.saved).c_str());
+}
+
+void addViewSettingsHandler(Editor& editor) {
+    ImGuiSettingsHandler handler;
+    handler.TypeName = "gbuffer-lab";
+    handler.TypeHash = ImHashStr("gbuffer-lab");
+    handler.ReadOpenFn = readViewSettingsOpen;
+    handler.ReadLineFn = readViewSettingsLine;
+    handler.WriteAllFn = writeViewSettings;
+    handler.UserData = &editor;
+    ImGui::GetCurrentContext()->SettingsHandlers.push_back(handler);
+}
+
+// Sets the UI scale's style and font; logs the font's warning, if any.
+void setUiScale(Editor& editor, float scale) {
+    editor.state.layout.scale.current = scale;
+    if (auto warning = ui::applyUiScale(editor.baseStyle, scale, editor.contentScale, ui::uiFontPath())) {
+        ui::logMessage(editor.state.log, *warning);
+    }
+}
+
 }  // namespace
+
+void applyRequestedUiScale(Editor& editor) {
+    ui::UiScaleState& scale = editor.state.layout.scale;
+    if (!scale.requested) return;
+    float const wanted = *scale.requested;
+    scale.requested.reset();
+    if (scale.saved != wanted) ImGui::MarkIniSettingsDirty();
+    scale.saved = wanted;  // a choice from the menu is kept with the layout, --ui-scale or not
+    if (wanted == scale.current) return;
+    setUiScale(editor, wanted);
+    // The font atlas changed: the backend makes its texture (and other objects) again at the next NewFrame.
+    ImGui_ImplOpenGL3_DestroyDeviceObjects();
+    ui::logMessage(editor.state.log, "UI scale " + ui::uiScaleText(wanted) + "x");
+}
 
 double msSince(EditorClock::time_point t0) {
     return std::chrono::duration<double, std::milli>(EditorClock::now() - t0).count();
@@ -206,6 +270,7 @@ std::optional<int> startEditor(Editor& editor) {
 }
 
 void initImGui(Editor& editor) {
+    EditorOptions const& options = editor.options;
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
@@ -215,13 +280,20 @@ void initImGui(Editor& editor) {
     io.IniFilename = editor.iniPath.empty() ? nullptr : editor.iniPath.c_str();
     ui::enableConfigFlags(io);
     ImGui::StyleColorsDark();
-    if (auto warning = ui::loadUiFont(ui::uiFontPath())) {
-        std::fprintf(stderr, "gbuffer-lab: %s\n", warning->c_str());
-        ui::logMessage(editor.state.log, *warning);
+    editor.baseStyle = ImGui::GetStyle();
+    // The UI scale: --ui-scale (checked in runEditor), else the one kept with the layout, else 1.
+    // The layout file is read now, not at the first frame, so the first frame has the right font.
+    ui::UiScaleState& scale = editor.state.layout.scale;
+    if (options.uiScale) {
+        scale.current = ui::parseUiScale(*options.uiScale, "--ui-scale").value_or(1.0f);
+        scale.fromCommandLine = true;
     }
+    addViewSettingsHandler(editor);
+    if (io.IniFilename) ImGui::LoadIniSettingsFromDisk(io.IniFilename);
     float xscale = 1.0f, yscale = 1.0f;
     glfwGetWindowContentScale(editor.window(), &xscale, &yscale);
-    ui::applyContentScale(xscale);
+    editor.contentScale = xscale > 0.0f ? xscale : 1.0f;
+    setUiScale(editor, scale.current);
     // ImGui's backend installs no callbacks: the editor's own queue every event and feed ImGui
     // at a pace it can follow (editor_input.h), with 1.86 and 1.87+ alike.
     ImGui_ImplGlfw_InitForOpenGL(editor.window(), false);

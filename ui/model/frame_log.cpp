@@ -113,6 +113,7 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += std::string(",\"everyLight\":") + (l.everyLight ? "true" : "false");
     out += std::string(",\"overview\":") + (l.overview ? "true" : "false");
     out += ",\"overviewButton\":" + rect(l.overviewButton) + ",\"overviewCells\":" + strings(l.overviewCells);
+    out += ",\"uiScale\":" + number(l.uiScale);
     return out + "}";
 }
 

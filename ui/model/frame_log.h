@@ -96,6 +96,7 @@ struct FrameLogLine {
     bool overview = false;
     glm::vec4 overviewButton{0.0f};
     std::vector<std::string> overviewCells;
+    float uiScale = 1.0f;  // the UI scale in use (model/ui_scale.h: View > UI scale, --ui-scale)
 };
 
 std::string frameLogJson(FrameLogLine const& line);

@@ -1,16 +1,35 @@
 // Rectangles of the tiled layout.
 #include "model/layout_state.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace gbl::ui {
 
-TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize) {
+LayoutShares layoutShares(glm::vec2 workSize, float uiScale) {
+    LayoutShares s;
+    // At scale 1 (or smaller) the fractions hold at every size, as before there was a scale.
+    if (uiScale <= 1.0f || workSize.x <= 0.0f || workSize.y <= 0.0f) return s;
+    s.left = std::max(kLeftColumn, scaledPixels(kLeftColumnLeastPx, uiScale) / workSize.x);
+    s.right = std::max(kRightColumn, scaledPixels(kRightColumnLeastPx, uiScale) / workSize.x);
+    // Both columns give up width in proportion when the viewport would get less than its least.
+    float const sides = 1.0f - kViewportLeast;
+    if (s.left + s.right > sides) {
+        float const f = sides / (s.left + s.right);
+        s.left = std::max(kLeftColumn, s.left * f);
+        s.right = std::max(kRightColumn, s.right * f);
+    }
+    s.strip = std::clamp(scaledPixels(kViewerStripLeastPx, uiScale) / workSize.y, kViewerStrip, 0.45f);
+    return s;
+}
+
+TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize, float uiScale) {
+    LayoutShares const shares = layoutShares(workSize, uiScale);
     // Whole pixels, so neighbouring windows share edges exactly.
-    float const leftW = std::floor(workSize.x * kLeftColumn);
-    float const rightW = std::floor(workSize.x * kRightColumn);
+    float const leftW = std::floor(workSize.x * shares.left);
+    float const rightW = std::floor(workSize.x * shares.right);
     float const centreW = workSize.x - leftW - rightW;
-    float const stripH = std::floor(workSize.y * kViewerStrip);
+    float const stripH = std::floor(workSize.y * shares.strip);
     float const h = workSize.y - stripH;  // the band above the strip
     float const leftTopH = std::floor(h * kLightsShare);
     float const inspectorH = std::floor(h * kInspectorShare);

@@ -1,6 +1,8 @@
 // The editor's windows and the tiled layout's rectangles: pure geometry, no ImGui.
 #pragma once
 
+#include "model/ui_scale.h"
+
 #include <glm/glm.hpp>
 
 #include <array>
@@ -21,6 +23,7 @@ inline char const* windowName(EditorWindow w) {
 struct LayoutState {
     bool resetRequested = false;  // "Reset layout" in the View menu
     bool dockBuilt = false;       // the dock tree exists (from imgui.ini or built this session)
+    UiScaleState scale;           // the View menu's UI scale, kept in imgui.ini with the layout
 };
 
 struct TileRect {
@@ -48,10 +51,28 @@ inline constexpr float kInspectorShare = 0.28f;
 inline constexpr float kLessonsShare = 0.46f;
 inline constexpr float kStatsShare = 0.15f;
 
+// The narrowest side columns and strip at UI scale 1, in pixels (what the fractions give at
+// 1280x720). At a larger scale the text grows, so these grow with it and the columns take a
+// larger share of the window; the viewport keeps at least kViewportLeast of the width.
+inline constexpr float kLeftColumnLeastPx = 300.0f;
+inline constexpr float kRightColumnLeastPx = 320.0f;
+inline constexpr float kViewerStripLeastPx = 208.0f;
+inline constexpr float kViewportLeast = 0.40f;
+
+// The shares of the work area the side columns and the strip take at this size and UI scale:
+// kLeftColumn, kRightColumn and kViewerStrip, or more where those are narrower than the least
+// widths above times the scale (at scale 1 the fractions, whatever the size).
+struct LayoutShares {
+    float left = kLeftColumn;
+    float right = kRightColumn;
+    float strip = kViewerStrip;
+};
+LayoutShares layoutShares(glm::vec2 workSize, float uiScale);
+
 // Where a window sits in the tiled arrangement (no docking): the G-buffer strip along the
 // bottom; above it lights over pipeline on the left, the viewport in the centre, pixel
 // inspector over lessons over stats over log on the right. The rectangles cover the work area
 // exactly, without overlap.
-TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize);
+TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize, float uiScale = 1.0f);
 
 }  // namespace gbl::ui

@@ -9,6 +9,15 @@
 
 namespace gbl::ui {
 
+namespace {
+// ImGui's built-in font, at `pixels` (it is drawn for 13: other sizes are scaled, blurrier).
+void addDefaultFont(ImFontAtlas& atlas, float pixels) {
+    ImFontConfig config;
+    config.SizePixels = pixels;
+    atlas.AddFontDefault(&config);
+}
+}  // namespace
+
 char const* uiFontPath() {
     return GBL_UI_FONT_PATH;
 }
@@ -37,14 +46,36 @@ std::optional<std::string> loadUiFont(char const* path, float pixels) {
         config.OversampleH = 2;  // the 1.86 default is 3: a smaller atlas, the same look at 1x
         if (atlas->AddFontFromFileTTF(path, pixels, &config, uiGlyphRanges())) return std::nullopt;
         atlas->Clear();
-        atlas->AddFontDefault();
+        addDefaultFont(*atlas, pixels);
         return "The UI font " + std::string(path) +
                " could not be read; using ImGui's built-in font, which shows non-ASCII characters as \"?\".";
     }
-    atlas->AddFontDefault();
+    addDefaultFont(*atlas, pixels);
     return "The UI font " + std::string(path) +
            " is missing (apt install fonts-dejavu-core); using ImGui's built-in font, which shows non-ASCII "
            "characters as \"?\".";
+}
+
+std::optional<std::string> applyUiScale(ImGuiStyle const& base, float uiScale, float contentScale, char const* path) {
+    float const scale = uiScale * (contentScale > 0.0f ? contentScale : 1.0f);
+    ImGuiStyle style = base;  // a fresh copy: scaling the current style again would compound
+    if (scale != 1.0f) style.ScaleAllSizes(scale);
+#if IMGUI_VERSION_NUM >= 19200
+    style.FontScaleMain = uiScale;
+    style.FontScaleDpi = contentScale;
+    ImGui::GetStyle() = style;
+    (void)path;
+    return std::nullopt;
+#else
+    ImGui::GetStyle() = style;
+    ImGui::GetIO().FontGlobalScale = contentScale > 0.0f ? contentScale : 1.0f;
+    ImGui::GetIO().Fonts->Clear();
+    return loadUiFont(path, kUiFontPixels * uiScale);
+#endif
+}
+
+float uiScaleFactor() {
+    return ImGui::GetFontSize() / kUiFontPixels;
 }
 
 }  // namespace gbl::ui

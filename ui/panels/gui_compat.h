@@ -35,18 +35,6 @@ inline void enableConfigFlags(ImGuiIO& io) {
 #endif
 }
 
-// Scales the whole UI for a monitor content scale (1 on a classic display and under Xvfb).
-// 1.86 scales the baked default font; 1.92 rasterises fonts at the scaled size on demand.
-inline void applyContentScale(float scale) {
-    if (!(scale > 0.0f) || scale == 1.0f) return;
-    ImGui::GetStyle().ScaleAllSizes(scale);
-#if IMGUI_VERSION_NUM >= 19200
-    ImGui::GetStyle().FontScaleDpi = scale;
-#else
-    ImGui::GetIO().FontGlobalScale = scale;
-#endif
-}
-
 // A framed child region: 1.86 takes `bool border`, 1.90+ takes ImGuiChildFlags.
 inline bool beginFramedChild(char const* id, ImVec2 size, ImGuiWindowFlags flags = 0) {
 #if IMGUI_VERSION_NUM >= 19000

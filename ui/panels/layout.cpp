@@ -1,6 +1,7 @@
 // Default dock layout (DockBuilder) and the tiled fallback for ImGui builds without docking.
 #include "panels/layout.h"
 
+#include "panels/fonts.h"
 #include "panels/gui_compat.h"
 #include "panels/panel_frame.h"
 
@@ -19,17 +20,18 @@ namespace {
 constexpr char const* kDockSpaceName = "gbl-dockspace";
 
 void buildDefaultDockLayout(ImGuiID dockspace, ImGuiViewport const* viewport) {
+    LayoutShares const shares = layoutShares({viewport->WorkSize.x, viewport->WorkSize.y}, uiScaleFactor());
     ImGui::DockBuilderRemoveNode(dockspace);
     ImGui::DockBuilderAddNode(dockspace, ImGuiDockNodeFlags_DockSpace);
     ImGui::DockBuilderSetNodeSize(dockspace, viewport->WorkSize);
 
     // The G-buffer strip first, along the whole bottom; the columns split what is above it.
     ImGuiID centre = dockspace;
-    ImGuiID const strip = ImGui::DockBuilderSplitNode(centre, ImGuiDir_Down, kViewerStrip, nullptr, &centre);
-    ImGuiID const left = ImGui::DockBuilderSplitNode(centre, ImGuiDir_Left, kLeftColumn, nullptr, &centre);
+    ImGuiID const strip = ImGui::DockBuilderSplitNode(centre, ImGuiDir_Down, shares.strip, nullptr, &centre);
+    ImGuiID const left = ImGui::DockBuilderSplitNode(centre, ImGuiDir_Left, shares.left, nullptr, &centre);
     // The right column is a share of what is left after the left column was taken.
     ImGuiID const right =
-        ImGui::DockBuilderSplitNode(centre, ImGuiDir_Right, kRightColumn / (1.0f - kLeftColumn), nullptr, &centre);
+        ImGui::DockBuilderSplitNode(centre, ImGuiDir_Right, shares.right / (1.0f - shares.left), nullptr, &centre);
     ImGuiID leftTop = left;
     ImGuiID const leftBottom =
         ImGui::DockBuilderSplitNode(leftTop, ImGuiDir_Down, 1.0f - kLightsShare, nullptr, &leftTop);
@@ -91,8 +93,8 @@ void beginLayout(LayoutState& state) {
 
 void placeWindow(EditorWindow window) {
     ImGuiViewport const* viewport = ImGui::GetMainViewport();
-    TileRect const r =
-        tiledRect(window, {viewport->WorkPos.x, viewport->WorkPos.y}, {viewport->WorkSize.x, viewport->WorkSize.y});
+    TileRect const r = tiledRect(window, {viewport->WorkPos.x, viewport->WorkPos.y},
+                                 {viewport->WorkSize.x, viewport->WorkSize.y}, uiScaleFactor());
     ImGui::SetNextWindowPos(ImVec2(r.pos.x, r.pos.y), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(r.size.x, r.size.y), ImGuiCond_Always);
 }

@@ -410,13 +410,18 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
     }
 
     ImGui::SetCursorPos(ImVec2(ImGui::GetCursorPosX() + 6, ImGui::GetCursorPosY() + 3));
+    // The toolbar wraps where the window is too narrow for it (a large UI scale, a narrow dock).
+    float const rightEdge = rowRightEdge();
+    auto const buttonWidth = [](char const* label) {
+        return ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+    };
     viewCombo(settings);
-    ImGui::SameLine();
+    sameLineIfFits(checkItemWidth("Cubes"), false, rightEdge);
     ImGui::Checkbox("Cubes", &settings.lightCubes);
-    ImGui::SameLine();
+    sameLineIfFits(checkItemWidth("Wireframes"), false, rightEdge);
     ImGui::Checkbox("Wireframes", &settings.volumeWireframes);
     state.wireframesRect = itemRect();
-    ImGui::SameLine();
+    sameLineIfFits(checkItemWidth("all"), false, rightEdge);
     // The selected light's volume by default (32 outlines bury the frame); every light's one click
     // away, which also turns the wireframes on.
     bool every = !settings.wireframesSelectedOnly;
@@ -429,9 +434,9 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         ImGui::SetTooltip(
             "Outline every light's volume, not only the selected light's (Wireframes outlines the "
             "selected one)");
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("Frame (F)"), false, rightEdge);
     if (ImGui::Button("Frame (F)")) state.frameRequested = true;
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("Overview (G)"), false, rightEdge);
     ImGui::PushStyleColor(ImGuiCol_Button, overview.on ? IM_COL32(70, 110, 170, 255) : IM_COL32(50, 50, 55, 255));
     if (ImGui::Button("Overview (G)")) overview.on = !overview.on;
     ImGui::PopStyleColor();
@@ -440,7 +445,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         ImGui::SetTooltip(
             "the lit frame and the G-buffer's position, normal, albedo, specular and depth at once,\n"
             "each auto-ranged; click one to show it full size (G toggles)");
-    ImGui::SameLine();
+    sameLineIfFits(ImGui::CalcTextSize("(?)").x, false, rightEdge);
     ImGui::TextDisabled("(?)");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(

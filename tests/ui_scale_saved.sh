@@ -1,0 +1,64 @@
+#!/bin/sh
+# The UI scale is kept with the window layout (issue 26). Interactive editors (no --frames, so they
+# read and write imgui.ini in $XDG_CONFIG_HOME/gbuffer-lab) are started over a layout file and quit
+# with Ctrl+Q; the frame log says the scale in use:
+# - a saved UiScale=1.25 comes back, and is written back on quitting;
+# - --ui-scale 2 wins over it for that run and leaves the saved value alone;
+# - a bad saved value (UiScale=abc) gets one message naming the file, and the editor runs at 1.
+# usage: ui_scale_saved.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
+set -eu
+bin="$1"
+work="$2"
+ui_name=ui_scale_saved
+log=""
+pid=""
+. "$(dirname "$0")/support/ui_common.sh"
+ui_require_xdotool
+ui_fresh_work
+ini="$XDG_CONFIG_HOME/gbuffer-lab/imgui.ini"
+mkdir -p "$(dirname "$ini")"
+
+# run NAME [ARGS...]: starts an editor, waits for its frames, checks it is still up.
+run() {
+    name=$1
+    shift
+    log="$work/$name.jsonl"
+    "$bin" --size 800x600 --no-vsync --log-frames "$log" "$@" > "$work/$name.log" 2>&1 &
+    pid=$!
+    wait_frames 4
+    ui_window
+    wait_frames 2
+}
+# quit: Ctrl+Q, and the editor ends (saving imgui.ini on the way).
+quit() {
+    xdotool key --delay 30 ctrl+q
+    i=0
+    while kill -0 "$pid" 2>/dev/null; do
+        i=$((i + 1))
+        [ "$i" -le 100 ] || fail "Ctrl+Q did not quit"
+        sleep 0.1
+    done
+    pid=""
+}
+
+printf '[gbuffer-lab][View]\nUiScale=1.25\n\n' > "$ini"
+run saved
+[ "$(field uiScale)" = 1.2500 ] || fail "the saved scale 1.25 did not come back: uiScale $(field uiScale)"
+quit
+grep -qx 'UiScale=1.25' "$ini" || fail "imgui.ini lost the scale on quitting: $(cat "$ini")"
+echo "saved: uiScale 1.25 read and written back"
+
+run override --ui-scale 2
+[ "$(field uiScale)" = 2.0000 ] || fail "--ui-scale 2 did not win over the saved 1.25: uiScale $(field uiScale)"
+quit
+grep -qx 'UiScale=1.25' "$ini" || fail "--ui-scale 2 replaced the saved scale: $(cat "$ini")"
+echo "override: uiScale 2 for the run, 1.25 still saved"
+
+printf '[gbuffer-lab][View]\nUiScale=abc\n\n' > "$ini"
+run bad
+[ "$(field uiScale)" = 1.0000 ] || fail "a bad saved scale did not leave scale 1: uiScale $(field uiScale)"
+grep -c "UiScale must be a number between 0.75 and 3" "$work/bad.log" | grep -qx 1 ||
+    fail "no single message about the bad saved scale: $(cat "$work/bad.log")"
+quit
+echo "bad: $(grep 'UiScale must' "$work/bad.log")"
+echo "ui_scale_saved: PASS"
