@@ -139,14 +139,7 @@ shot glossary
 # unsaved edits (issue 26).
 xdotool mousemove --window "$wid" "$(rect_point viewport 0.5 0.5 | cut -d' ' -f1)" "$(rect_point viewport 0.5 0.5 | cut -d' ' -f2)"
 wait_frames 2
-xdotool key --delay 30 ctrl+q
-i=0
-while kill -0 "$pid" 2>/dev/null; do
-    i=$((i + 1))
-    [ "$i" -le 100 ] || fail "Ctrl+Q after only opening a lesson did not quit (an unsaved-edits question?)"
-    sleep 0.1
-done
-pid=""
+ui_quit "Ctrl+Q after only opening a lesson did not quit (an unsaved-edits question?)"
 echo "Ctrl+Q in the lesson quit at once"
 # The editor was ended with changes: its autosave would offer recovery over the screenshots below.
 rm -f "$GBL_RECOVERY_DIR"/*

@@ -29,28 +29,17 @@ run() {
     ui_window
     wait_frames 2
 }
-# quit: Ctrl+Q, and the editor ends (saving imgui.ini on the way).
-quit() {
-    xdotool key --delay 30 ctrl+q
-    i=0
-    while kill -0 "$pid" 2>/dev/null; do
-        i=$((i + 1))
-        [ "$i" -le 100 ] || fail "Ctrl+Q did not quit"
-        sleep 0.1
-    done
-    pid=""
-}
 
 printf '[gbuffer-lab][View]\nUiScale=1.25\n\n' > "$ini"
 run saved
 [ "$(field uiScale)" = 1.2500 ] || fail "the saved scale 1.25 did not come back: uiScale $(field uiScale)"
-quit
+ui_quit
 grep -qx 'UiScale=1.25' "$ini" || fail "imgui.ini lost the scale on quitting: $(cat "$ini")"
 echo "saved: uiScale 1.25 read and written back"
 
 run override --ui-scale 2
 [ "$(field uiScale)" = 2.0000 ] || fail "--ui-scale 2 did not win over the saved 1.25: uiScale $(field uiScale)"
-quit
+ui_quit
 grep -qx 'UiScale=1.25' "$ini" || fail "--ui-scale 2 replaced the saved scale: $(cat "$ini")"
 echo "override: uiScale 2 for the run, 1.25 still saved"
 
@@ -59,6 +48,6 @@ run bad
 [ "$(field uiScale)" = 1.0000 ] || fail "a bad saved scale did not leave scale 1: uiScale $(field uiScale)"
 grep -c "UiScale must be a number between 0.75 and 3" "$work/bad.log" | grep -qx 1 ||
     fail "no single message about the bad saved scale: $(cat "$work/bad.log")"
-quit
+ui_quit
 echo "bad: $(grep 'UiScale must' "$work/bad.log")"
 echo "ui_scale_saved: PASS"

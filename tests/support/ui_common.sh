@@ -97,6 +97,18 @@ shot() {
     import -window "$wid" "$work/$1.png" 2>/dev/null || xwd -id "$wid" -out "$work/$1.xwd" 2>/dev/null ||
         echo "$ui_name: no screenshot of $1: neither import (ImageMagick) nor xwd works here"
 }
+# ui_quit [WHY]: Ctrl+Q, and the editor ($pid) ends within 10 s (saving imgui.ini on the way);
+# WHY names what a hang would mean.
+ui_quit() {
+    xdotool key --delay 30 ctrl+q
+    i=0
+    while kill -0 "$pid" 2>/dev/null; do
+        i=$((i + 1))
+        [ "$i" -le 100 ] || fail "${1:-Ctrl+Q did not quit}"
+        sleep 0.1
+    done
+    pid=""
+}
 # ui_stop: ends the editor this script started, if it still runs.
 ui_stop() {
     [ -n "$pid" ] && kill "$pid" 2>/dev/null || true

@@ -90,6 +90,9 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     ui::OverviewState const& overview = state.viewport.overview;
     line.overview = overview.on;
     line.uiScale = state.layout.scale.current;
+    if (!ui::kHasDocking)
+        for (ui::TileRect const& h : state.layout.handles)
+            line.splitHandles.emplace_back(h.pos.x, h.pos.y, h.size.x, h.size.y);
     line.overviewButton = overview.buttonRect;
     for (ui::OverviewCell const& c : overview.cells) {
         char where[96];

@@ -194,7 +194,8 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     ui::drawStatsPanel(state.stats, editor.caps, int(state.lights.size()), &editor.render, editor.renderReason,
                        &state.frame);
     ui::drawLogPanel(state.log);
-    drawLessons(editor);  // the Lessons window; applies the step it asks for (editor_lessons.cpp)
+    drawLessons(editor);                 // the Lessons window; applies the step it asks for (editor_lessons.cpp)
+    ui::drawSplitHandles(state.layout);  // after every tiled window, so the handles lie over their edges
     ui::drawSceneLoadingUi(editor.loading);
     ui::drawShortcutsWindow(editor.showShortcuts);
     ui::drawDiscardConfirmation(editor.discard);

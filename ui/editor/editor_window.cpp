@@ -104,6 +104,17 @@ void* readViewSettingsOpen(ImGuiContext*, ImGuiSettingsHandler*, char const* nam
 void readViewSettingsLine(ImGuiContext*, ImGuiSettingsHandler* handler, void*, char const* line) {
     auto& editor = *static_cast<Editor*>(handler->UserData);
     std::string_view const text(line);
+    std::string const splitsKey = std::string(ui::kSplitsKey) + "=";
+    if (text.substr(0, splitsKey.size()) == splitsKey) {
+        std::string error;
+        auto splits =
+            ui::parseSplits(text.substr(splitsKey.size()), editor.iniPath + ": " + std::string(ui::kSplitsKey), &error);
+        if (splits)
+            editor.state.layout.splits = splits;
+        else
+            ui::logMessage(editor.state.log, error + "; the windows keep the default layout.", true);
+        return;
+    }
     std::string const key = std::string(ui::kUiScaleKey) + "=";
     if (text.substr(0, key.size()) != key) return;
     std::string error;
@@ -122,7 +133,9 @@ void readViewSettingsLine(ImGuiContext*, ImGuiSettingsHandler* handler, void*, c
 
 void writeViewSettings(ImGuiContext*, ImGuiSettingsHandler* handler, ImGuiTextBuffer* out) {
     auto const& editor = *static_cast<Editor const*>(handler->UserData);
-    out->appendf("[gbuffer-lab][View]\n%s\n\n", ui::uiScaleLine(editor.state.layout.scale.saved).c_str());
+    out->appendf("[gbuffer-lab][View]\n%s\n", ui::uiScaleLine(editor.state.layout.scale.saved).c_str());
+    if (auto const& splits = editor.state.layout.splits) out->appendf("%s\n", ui::splitsLine(*splits).c_str());
+    out->append("\n");
 }
 
 void addViewSettingsHandler(Editor& editor) {

@@ -55,12 +55,15 @@ std::string frameLogJson(FrameLogLine const& l) {
     auto rect = [&](glm::vec4 r) {
         return "[" + number(r.x) + "," + number(r.y) + "," + number(r.z) + "," + number(r.w) + "]";
     };
-    out += ",\"viewerImages\":[";
-    for (std::size_t i = 0; i < l.viewerImages.size(); ++i) {
-        glm::vec4 const r = l.viewerImages[i];
-        out += (i ? "," : "") + number(r.x) + "," + number(r.y) + "," + number(r.z) + "," + number(r.w);
-    }
-    out += "]";
+    // Rectangles as one flat array of numbers, four per rectangle.
+    auto flatRects = [&](std::vector<glm::vec4> const& rs) {
+        std::string a = "[";
+        for (std::size_t i = 0; i < rs.size(); ++i)
+            a += (i ? "," : "") + number(rs[i].x) + "," + number(rs[i].y) + "," + number(rs[i].z) + "," +
+                 number(rs[i].w);
+        return a + "]";
+    };
+    out += ",\"viewerImages\":" + flatRects(l.viewerImages);
     out += ",\"accumulate\":" + std::to_string(l.accumulate);
     out += ",\"scrubber\":" + rect(l.scrubber);
     out += ",\"abToggle\":" + rect(l.abToggle);
@@ -84,14 +87,7 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"lessonTasks\":" + quoted(l.lessonTasks);
     out += std::string(",\"lessonGlossary\":") + (l.lessonGlossary ? "true" : "false");
     out += ",\"lessonGlossaryTerm\":" + quoted(l.lessonGlossaryTerm);
-    auto rects = [&](std::vector<glm::vec4> const& rs) {
-        std::string a = "[";
-        for (std::size_t i = 0; i < rs.size(); ++i)
-            a += (i ? "," : "") + number(rs[i].x) + "," + number(rs[i].y) + "," + number(rs[i].z) + "," +
-                 number(rs[i].w);
-        return a + "]";
-    };
-    out += ",\"courseRows\":" + rects(l.courseRows) + ",\"courseRestart\":" + rects(l.courseRestart);
+    out += ",\"courseRows\":" + flatRects(l.courseRows) + ",\"courseRestart\":" + flatRects(l.courseRestart);
     out += ",\"courseProgress\":" + quoted(l.courseProgress) + ",\"nextLesson\":" + rect(l.nextLesson);
     out += ",\"view\":" + quoted(l.view);
     out += ",\"layout\":" + quoted(l.layout) + ",\"pipelineWindow\":" + rect(l.pipelineWindow) +
@@ -114,6 +110,7 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += std::string(",\"overview\":") + (l.overview ? "true" : "false");
     out += ",\"overviewButton\":" + rect(l.overviewButton) + ",\"overviewCells\":" + strings(l.overviewCells);
     out += ",\"uiScale\":" + number(l.uiScale);
+    out += ",\"splitHandles\":" + flatRects(l.splitHandles);
     return out + "}";
 }
 

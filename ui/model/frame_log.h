@@ -97,6 +97,9 @@ struct FrameLogLine {
     glm::vec4 overviewButton{0.0f};
     std::vector<std::string> overviewCells;
     float uiScale = 1.0f;  // the UI scale in use (model/ui_scale.h: View > UI scale, --ui-scale)
+    // Tiled builds: each boundary's drag handle, x, y, width, height in window coordinates as one
+    // flat array in Split order (model/layout_state.h); empty with docking.
+    std::vector<glm::vec4> splitHandles;
 };
 
 std::string frameLogJson(FrameLogLine const& line);

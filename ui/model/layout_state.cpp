@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace gbl::ui {
 
@@ -23,40 +25,191 @@ LayoutShares layoutShares(glm::vec2 workSize, float uiScale) {
     return s;
 }
 
-TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize, float uiScale) {
+LayoutSplits defaultSplits(glm::vec2 workSize, float uiScale) {
     LayoutShares const shares = layoutShares(workSize, uiScale);
-    // Whole pixels, so neighbouring windows share edges exactly.
-    float const leftW = std::floor(workSize.x * shares.left);
-    float const rightW = std::floor(workSize.x * shares.right);
-    float const centreW = workSize.x - leftW - rightW;
-    float const stripH = std::floor(workSize.y * shares.strip);
-    float const h = workSize.y - stripH;  // the band above the strip
-    float const leftTopH = std::floor(h * kLightsShare);
-    float const inspectorH = std::floor(h * kInspectorShare);
-    float const lessonsH = std::floor(h * kLessonsShare);
-    float const statsH = std::floor(h * kStatsShare);
+    LayoutSplits s;
+    s.left = shares.left;
+    s.right = shares.right;
+    s.strip = shares.strip;
+    s.lights = kLightsShare;
+    s.rightRows = {kInspectorShare, kInspectorShare + kLessonsShare, kInspectorShare + kLessonsShare + kStatsShare};
+    return s;
+}
+
+namespace {
+
+// A share held in [lo, hi]; where the area is too small for both least sizes, the middle.
+float holdShare(float v, float lo, float hi) {
+    return lo <= hi ? std::clamp(v, lo, hi) : 0.5f * (lo + hi);
+}
+
+struct Least {
+    float x = 0.0f;     // of the work area's width
+    float y = 0.0f;     // of its height
+    float band = 0.0f;  // of the band above the strip
+};
+
+// Where the area is too small for every least size (a small window at a large scale), the tiles
+// share what there is: three across, the strip and four rows down, four rows in the band.
+Least leastShares(LayoutSplits const& s, glm::vec2 size, float uiScale) {
+    float const px = scaledPixels(kTileLeastPx, std::max(uiScale, 1.0f));
+    float const band = size.y - std::floor(size.y * s.strip);
+    return {std::min(px / size.x, 1.0f / 3.0f), std::min(px / size.y, 0.2f),
+            band > 0.0f ? std::min(px / band, 0.25f) : 0.25f};
+}
+
+// Every tile at least its least size, the columns leaving the viewport room, the rows in order.
+LayoutSplits held(LayoutSplits s, glm::vec2 size, float uiScale) {
+    if (size.x <= 0.0f || size.y <= 0.0f) return s;
+    Least m = leastShares(s, size, uiScale);
+    s.strip = holdShare(s.strip, m.y, 1.0f - 4.0f * m.y);  // the right column's four rows above it
+    m = leastShares(s, size, uiScale);
+    s.right = holdShare(s.right, m.x, 1.0f - 2.0f * m.x);
+    s.left = holdShare(s.left, m.x, 1.0f - s.right - m.x);
+    s.lights = holdShare(s.lights, m.band, 1.0f - m.band);
+    s.rightRows[0] = holdShare(s.rightRows[0], m.band, 1.0f - 3.0f * m.band);
+    s.rightRows[1] = holdShare(s.rightRows[1], s.rightRows[0] + m.band, 1.0f - 2.0f * m.band);
+    s.rightRows[2] = holdShare(s.rightRows[2], s.rightRows[1] + m.band, 1.0f - m.band);
+    return s;
+}
+
+// The boundaries in whole pixels from the work area's corner, so neighbouring tiles share edges.
+struct Edges {
+    float leftW = 0.0f;
+    float rightW = 0.0f;
+    float band = 0.0f;     // the height above the strip
+    float lightsH = 0.0f;  // the Lights tile's height
+    std::array<float, 3> rows{};
+};
+
+Edges edges(glm::vec2 size, float uiScale, std::optional<LayoutSplits> const& splits) {
+    LayoutSplits const s = held(splits ? *splits : defaultSplits(size, uiScale), size, uiScale);
+    Edges e;
+    e.leftW = std::floor(size.x * s.left);
+    e.rightW = std::floor(size.x * s.right);
+    e.band = size.y - std::floor(size.y * s.strip);
+    e.lightsH = std::floor(e.band * s.lights);
+    for (std::size_t i = 0; i < e.rows.size(); ++i) e.rows[i] = std::floor(e.band * s.rightRows[i]);
+    return e;
+}
+
+}  // namespace
+
+TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize, float uiScale,
+                   std::optional<LayoutSplits> const& splits) {
+    Edges const e = edges(workSize, uiScale, splits);
     glm::vec2 const p = workPos;
-    float const rightX = leftW + centreW;
+    float const rightX = workSize.x - e.rightW;
+    float const centreW = rightX - e.leftW;
     switch (window) {
         case EditorWindow::Lights:
-            return {p, {leftW, leftTopH}};
+            return {p, {e.leftW, e.lightsH}};
         case EditorWindow::Pipeline:
-            return {p + glm::vec2(0, leftTopH), {leftW, h - leftTopH}};
+            return {p + glm::vec2(0, e.lightsH), {e.leftW, e.band - e.lightsH}};
         case EditorWindow::Viewport:
-            return {p + glm::vec2(leftW, 0), {centreW, h}};
+            return {p + glm::vec2(e.leftW, 0), {centreW, e.band}};
         case EditorWindow::GBuffer:
-            return {p + glm::vec2(0, h), {workSize.x, stripH}};
+            return {p + glm::vec2(0, e.band), {workSize.x, workSize.y - e.band}};
         case EditorWindow::PixelInspector:
-            return {p + glm::vec2(rightX, 0), {rightW, inspectorH}};
+            return {p + glm::vec2(rightX, 0), {e.rightW, e.rows[0]}};
         case EditorWindow::Lessons:
-            return {p + glm::vec2(rightX, inspectorH), {rightW, lessonsH}};
+            return {p + glm::vec2(rightX, e.rows[0]), {e.rightW, e.rows[1] - e.rows[0]}};
         case EditorWindow::Stats:
-            return {p + glm::vec2(rightX, inspectorH + lessonsH), {rightW, statsH}};
+            return {p + glm::vec2(rightX, e.rows[1]), {e.rightW, e.rows[2] - e.rows[1]}};
         case EditorWindow::Log:
-            return {p + glm::vec2(rightX, inspectorH + lessonsH + statsH),
-                    {rightW, h - inspectorH - lessonsH - statsH}};
+            return {p + glm::vec2(rightX, e.rows[2]), {e.rightW, e.band - e.rows[2]}};
     }
     return {};
+}
+
+std::array<TileRect, kSplitCount> splitHandles(glm::vec2 workPos, glm::vec2 workSize, float uiScale,
+                                               std::optional<LayoutSplits> const& splits) {
+    Edges const e = edges(workSize, uiScale, splits);
+    float const half = 0.5f * kSplitHandlePx;
+    float const rightX = workSize.x - e.rightW;
+    glm::vec2 const p = workPos;
+    glm::vec2 const across(kSplitHandlePx, e.band);  // a column boundary, the band's height
+    auto row = [&](float x, float y, float w) { return TileRect{p + glm::vec2(x, y - half), {w, kSplitHandlePx}}; };
+    return {TileRect{p + glm::vec2(e.leftW - half, 0), across},
+            TileRect{p + glm::vec2(rightX - half, 0), across},
+            row(0, e.band, workSize.x),
+            row(0, e.lightsH, e.leftW),
+            row(rightX, e.rows[0], e.rightW),
+            row(rightX, e.rows[1], e.rightW),
+            row(rightX, e.rows[2], e.rightW)};
+}
+
+LayoutSplits dragSplit(std::optional<LayoutSplits> const& splits, Split split, glm::vec2 mouse, glm::vec2 workPos,
+                       glm::vec2 workSize, float uiScale) {
+    LayoutSplits s = held(splits ? *splits : defaultSplits(workSize, uiScale), workSize, uiScale);
+    if (workSize.x <= 0.0f || workSize.y <= 0.0f) return s;
+    glm::vec2 const m = mouse - workPos;
+    Least const least = leastShares(s, workSize, uiScale);
+    float const band = workSize.y - std::floor(workSize.y * s.strip);
+    // The dragged boundary moves alone: its neighbours stay and stop it at their least sizes.
+    switch (split) {
+        case Split::LeftColumn:
+            s.left = holdShare(m.x / workSize.x, least.x, 1.0f - s.right - least.x);
+            break;
+        case Split::RightColumn:
+            s.right = holdShare((workSize.x - m.x) / workSize.x, least.x, 1.0f - s.left - least.x);
+            break;
+        case Split::Strip:
+            s.strip = holdShare((workSize.y - m.y) / workSize.y, least.y, 1.0f - 4.0f * least.y);
+            break;
+        case Split::LightsRow:
+            s.lights = holdShare(m.y / band, least.band, 1.0f - least.band);
+            break;
+        case Split::InspectorRow:
+        case Split::LessonsRow:
+        case Split::StatsRow: {
+            std::size_t const i = std::size_t(split) - std::size_t(Split::InspectorRow);
+            float const above = i == 0 ? 0.0f : s.rightRows[i - 1];
+            float const below = i + 1 == s.rightRows.size() ? 1.0f : s.rightRows[i + 1];
+            s.rightRows[i] = holdShare(m.y / band, above + least.band, below - least.band);
+            break;
+        }
+    }
+    return held(s, workSize, uiScale);
+}
+
+std::string splitsLine(LayoutSplits const& s) {
+    char text[160];
+    std::snprintf(text, sizeof text, "%s=%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f", kSplitsKey.data(), double(s.left),
+                  double(s.right), double(s.strip), double(s.lights), double(s.rightRows[0]), double(s.rightRows[1]),
+                  double(s.rightRows[2]));
+    return text;
+}
+
+std::optional<LayoutSplits> parseSplits(std::string_view text, std::string_view what, std::string* error) {
+    std::string const s(text);
+    std::array<float, kSplitCount> v{};
+    std::size_t n = 0;
+    char const* at = s.c_str();
+    bool ok = !s.empty();
+    while (ok && n < v.size()) {
+        char* end = nullptr;
+        v[n] = std::strtof(at, &end);
+        ok = end != at && std::isfinite(v[n]) && v[n] > 0.0f && v[n] < 1.0f;
+        ++n;
+        at = end;
+        if (ok && n < v.size()) ok = *at == ',' && (++at, true);
+    }
+    ok = ok && n == v.size() && *at == '\0';
+    LayoutSplits splits;
+    if (ok) {
+        splits = {v[0], v[1], v[2], v[3], {v[4], v[5], v[6]}};
+        ok = splits.left + splits.right < 1.0f && splits.rightRows[0] < splits.rightRows[1] &&
+             splits.rightRows[1] < splits.rightRows[2];
+    }
+    if (ok) return splits;
+    if (error) {
+        *error = std::string(what) +
+                 " must be seven shares between 0 and 1 (left column, right column, strip, Lights row, then the "
+                 "right column's rows in order), got '" +
+                 s + "'";
+    }
+    return std::nullopt;
 }
 
 }  // namespace gbl::ui

@@ -6,6 +6,8 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <optional>
+#include <string>
 #include <string_view>
 
 namespace gbl::ui {
@@ -20,15 +22,34 @@ inline char const* windowName(EditorWindow w) {
     return kEditorWindowNames[std::size_t(w)].data();
 }
 
+struct TileRect {
+    glm::vec2 pos{0.0f};
+    glm::vec2 size{0.0f};
+};
+
+// The tiled layout's boundaries (Debian's ImGui 1.86 has no docking, so the editor draws a handle
+// on each boundary and the user drags it): the columns' widths and the strip's height as shares of
+// the work area, the Lights row and the right column's three row boundaries (from the top) as
+// shares of the band above the strip.
+enum class Split { LeftColumn, RightColumn, Strip, LightsRow, InspectorRow, LessonsRow, StatsRow };
+inline constexpr std::size_t kSplitCount = 7;
+struct LayoutSplits {
+    float left = 0.0f;
+    float right = 0.0f;
+    float strip = 0.0f;
+    float lights = 0.0f;
+    std::array<float, 3> rightRows{};  // below Pixel inspector, Lessons, Stats
+};
+
 struct LayoutState {
     bool resetRequested = false;  // "Reset layout" in the View menu
     bool dockBuilt = false;       // the dock tree exists (from imgui.ini or built this session)
     UiScaleState scale;           // the View menu's UI scale, kept in imgui.ini with the layout
-};
-
-struct TileRect {
-    glm::vec2 pos{0.0f};
-    glm::vec2 size{0.0f};
+    // Tiled builds: the boundaries as the user dragged them (none = the defaults for the size and
+    // scale), kept in imgui.ini; the boundary being dragged (-1 = none).
+    std::optional<LayoutSplits> splits;
+    int draggingSplit = -1;
+    std::array<TileRect, kSplitCount> handles{};  // the handles as last drawn (Split order; the frame log's)
 };
 
 // Fractions of the work area. The G-buffer strip spans the whole width below the others, so
@@ -46,9 +67,10 @@ inline constexpr float kViewerStrip = 0.29f;
 inline constexpr float kLightsShare = 0.50f;
 inline constexpr float kInspectorShare = 0.28f;
 // A step's text and equation, and a prediction's question and choices, without scrolling (about
-// 230 px at 1280x720; a three-choice prediction's Check button still needs a scroll); the Log
-// keeps what is left, about 55 px, and the Stats window keeps its Frame diagram button in view.
-inline constexpr float kLessonsShare = 0.46f;
+// 215 px at 1280x720; a three-choice prediction's Check button still needs a scroll); the Stats
+// window keeps its two lines and the Frame diagram button in view (about 75 px) and the Log what
+// is left (about 70 px: its Clear button and the newest lines). Every boundary can be dragged.
+inline constexpr float kLessonsShare = 0.43f;
 inline constexpr float kStatsShare = 0.15f;
 
 // The narrowest side columns and strip at UI scale 1, in pixels (what the fractions give at
@@ -73,6 +95,33 @@ LayoutShares layoutShares(glm::vec2 workSize, float uiScale);
 // bottom; above it lights over pipeline on the left, the viewport in the centre, pixel
 // inspector over lessons over stats over log on the right. The rectangles cover the work area
 // exactly, without overlap.
-TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize, float uiScale = 1.0f);
+// `splits` replaces the default boundaries; every tile keeps a least size (kTileLeastPx) as far as
+// the work area allows.
+TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize, float uiScale = 1.0f,
+                   std::optional<LayoutSplits> const& splits = std::nullopt);
+
+// The boundaries the fractions above (and the least sizes at this scale) give.
+LayoutSplits defaultSplits(glm::vec2 workSize, float uiScale);
+
+// The smallest width or height a tile keeps while a boundary is dragged, at scale 1.
+inline constexpr float kTileLeastPx = 48.0f;
+
+// Each boundary's handle: a band kSplitHandlePx wide centred on it, in window coordinates
+// (Split order).
+inline constexpr float kSplitHandlePx = 6.0f;
+std::array<TileRect, kSplitCount> splitHandles(glm::vec2 workPos, glm::vec2 workSize, float uiScale,
+                                               std::optional<LayoutSplits> const& splits);
+
+// The splits with boundary `split` moved to the mouse (window coordinates), held so that every
+// tile keeps its least size.
+LayoutSplits dragSplit(std::optional<LayoutSplits> const& splits, Split split, glm::vec2 mouse, glm::vec2 workPos,
+                       glm::vec2 workSize, float uiScale);
+
+// The splits' line in the layout file ("Splits=0.24,0.26,...", seven shares in Split order) and
+// its reading: seven numbers in (0, 1), the columns leaving room for the viewport and the right
+// column's rows in order; otherwise nullopt and one sentence naming `what`.
+inline constexpr std::string_view kSplitsKey = "Splits";
+std::string splitsLine(LayoutSplits const& splits);
+std::optional<LayoutSplits> parseSplits(std::string_view text, std::string_view what, std::string* error = nullptr);
 
 }  // namespace gbl::ui

@@ -11,6 +11,8 @@
 #endif
 
 #include <cmath>
+#include <cstdio>
+#include <optional>
 
 namespace gbl::ui {
 
@@ -72,6 +74,8 @@ void beginLayout(LayoutState& state) {
 
 void placeWindow(EditorWindow) {}
 
+void drawSplitHandles(LayoutState&) {}
+
 void placeFrameWindow() {
     // Docked beside the strip by the default layout; a layout restored from an older imgui.ini has
     // no place for it, so it floats at a size that shows a few passes until docked.
@@ -86,15 +90,72 @@ int editorWindowFlags() {
 
 #else
 
+namespace {
+// The boundaries this frame places windows by (beginLayout copies them from the LayoutState).
+std::optional<LayoutSplits> tiledSplits;
+
+glm::vec2 workPos() {
+    ImGuiViewport const* viewport = ImGui::GetMainViewport();
+    return {viewport->WorkPos.x, viewport->WorkPos.y};
+}
+glm::vec2 workSize() {
+    ImGuiViewport const* viewport = ImGui::GetMainViewport();
+    return {viewport->WorkSize.x, viewport->WorkSize.y};
+}
+}  // namespace
+
 void beginLayout(LayoutState& state) {
-    // Tiled windows are re-placed every frame, so a reset has nothing to restore.
+    // Tiled windows are re-placed every frame: a reset puts the boundaries back to the defaults.
+    if (state.resetRequested && state.splits) {
+        state.splits.reset();
+        ImGui::MarkIniSettingsDirty();
+    }
     state.resetRequested = false;
+    tiledSplits = state.splits;
+}
+
+void drawSplitHandles(LayoutState& state) {
+    auto const handles = splitHandles(workPos(), workSize(), uiScaleFactor(), state.splits);
+    ImGuiWindowFlags const flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
+    for (std::size_t i = 0; i < handles.size(); ++i) {
+        TileRect const& r = handles[i];
+        bool const across = r.size.y > r.size.x;  // a column boundary: dragged left and right
+        char name[32];
+        std::snprintf(name, sizeof name, "##split%zu", i);
+        ImGui::SetNextWindowPos(ImVec2(r.pos.x, r.pos.y), ImGuiCond_Always);
+        ImGui::SetNextWindowSize(ImVec2(r.size.x, r.size.y), ImGuiCond_Always);
+        ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0.0f, 0.0f));
+        ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1.0f, 1.0f));
+        ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+        ImGui::Begin(name, nullptr, flags);
+        ImGui::InvisibleButton("handle", ImVec2(r.size.x, r.size.y));
+        bool const hovered = ImGui::IsItemHovered(), active = ImGui::IsItemActive();
+        if (hovered || active) {
+            ImGui::SetMouseCursor(across ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
+            ImVec2 const a(r.pos.x, r.pos.y), b(r.pos.x + r.size.x, r.pos.y + r.size.y);
+            ImGui::GetForegroundDrawList()->AddRectFilled(
+                a, b, ImGui::GetColorU32(active ? ImGuiCol_SeparatorActive : ImGuiCol_SeparatorHovered));
+        }
+        if (active && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
+            ImVec2 const mouse = ImGui::GetIO().MousePos;
+            state.splits =
+                dragSplit(state.splits, Split(i), {mouse.x, mouse.y}, workPos(), workSize(), uiScaleFactor());
+            state.draggingSplit = int(i);
+        }
+        if (ImGui::IsItemDeactivated() && state.draggingSplit == int(i)) {
+            state.draggingSplit = -1;
+            ImGui::MarkIniSettingsDirty();  // imgui.ini keeps the boundaries with the UI scale
+        }
+        ImGui::End();
+        ImGui::PopStyleVar(3);
+    }
+    state.handles = handles;
 }
 
 void placeWindow(EditorWindow window) {
-    ImGuiViewport const* viewport = ImGui::GetMainViewport();
-    TileRect const r = tiledRect(window, {viewport->WorkPos.x, viewport->WorkPos.y},
-                                 {viewport->WorkSize.x, viewport->WorkSize.y}, uiScaleFactor());
+    TileRect const r = tiledRect(window, workPos(), workSize(), uiScaleFactor(), tiledSplits);
     ImGui::SetNextWindowPos(ImVec2(r.pos.x, r.pos.y), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(r.size.x, r.size.y), ImGuiCond_Always);
 }

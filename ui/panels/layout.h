@@ -18,6 +18,11 @@ void placeWindow(EditorWindow window);
 // tab beside the strip in the default layout.
 void placeFrameWindow();
 
+// Tiled builds: a handle on each boundary between windows; dragging one moves it (the model's
+// dragSplit) and marks the layout file for saving. Called after every editor window, so the
+// handles lie over their edges. Docking builds have the dock splitters and do nothing here.
+void drawSplitHandles(LayoutState& state);
+
 // Window flags for editor windows in this build (tiled windows cannot be moved or resized).
 int editorWindowFlags();
 

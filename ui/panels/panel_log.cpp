@@ -17,8 +17,7 @@ void drawLogPanel(LogState& log) {
             log.lines.clear();
             log.errorCount = 0;
         }
-        ImGui::Separator();
-        ImGui::BeginChild("log-lines");
+        ImGui::BeginChild("log-lines");  // no separator: the short default window keeps a line more
         for (auto const& line : log.lines) wrappedText("%s", line.c_str());
         if (log.scrollToBottom) ImGui::SetScrollHereY(1.0f);
         log.scrollToBottom = false;

@@ -31,9 +31,9 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
         double const frameMs = stats.costAverage.frameCpuMs;
         ImGui::Text("Frame %.2f ms (%.0f fps)", frameMs, frameMs > 0.0 ? 1000.0 / frameMs : 0.0);
         float const right = rowRightEdge();
-        ImGui::Text("Renderer GPU %.2f ms at %dx%d", f.gpuFrameMs, f.width, f.height);
         if (frame) {
-            // One click to the frame's passes as a diagram (View > Frame diagram does the same).
+            // One click to the frame's passes as a diagram (View > Frame diagram does the same),
+            // beside the first line, the shorter one, so the short default window shows it.
             char const* label = frame->open ? "Hide diagram" : "Frame diagram";
             sameLineIfFits(ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x, false, right);
             if (ImGui::SmallButton(label)) frame->open = !frame->open;
@@ -42,6 +42,7 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
             ImVec2 const min = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
             frame->openButton = glm::vec4(min.x, min.y, size.x, size.y);
         }
+        ImGui::Text("Renderer GPU %.2f ms at %dx%d", f.gpuFrameMs, f.width, f.height);
         if (render) {
             // Render on change: an idle editor shows the last frame again instead of re-rendering it.
             if (render->renderedLastFrame) {
