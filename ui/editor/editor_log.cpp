@@ -90,6 +90,12 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     ui::OverviewState const& overview = state.viewport.overview;
     line.overview = overview.on;
     line.uiScale = state.layout.scale.current;
+    line.lightsWindow = state.lightsPanel.window;
+    line.plotRect = state.lightsPanel.plotRect;
+    line.kqField = state.lightsPanel.kqFieldRect;
+    line.plotRadius = state.lightsPanel.plotRadius;
+    line.plotGhostRadius = state.lightsPanel.plotGhostRadius;
+    line.plotLight = state.lightsPanel.plotLight;
     line.overviewButton = overview.buttonRect;
     for (ui::OverviewCell const& c : overview.cells) {
         char where[96];
