@@ -35,6 +35,12 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     l.overviewButton = {750, 40, 80, 19};
     l.overviewCells = {"final@307,178,211,133", "normal@737,178,211,133"};
     l.uiScale = 1.25f;
+    l.lightsWindow = {0, 380, 320, 250};
+    l.plotRect = {8, 400, 300, 160};
+    l.kqField = {120, 300, 60, 19};
+    l.plotRadius = 2.5f;
+    l.plotGhostRadius = 3.25f;
+    l.plotLight = {1.0f, 0.7f, 0.0075f, 2.0f, 5.0f / 256.0f};
     nlohmann::json const j = nlohmann::json::parse(frameLogJson(l));
     EXPECT_EQ(j["frame"], 41);
     EXPECT_EQ(j["rendered"], true);
@@ -67,6 +73,14 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     ASSERT_EQ(j["overviewCells"].size(), 2u);
     EXPECT_EQ(j["overviewCells"][1], "normal@737,178,211,133");
     EXPECT_DOUBLE_EQ(j["uiScale"].get<double>(), 1.25);
+    EXPECT_EQ(j["lightsWindow"], nlohmann::json::parse("[0,380,320,250]"));
+    EXPECT_EQ(j["plotRect"], nlohmann::json::parse("[8,400,300,160]"));
+    EXPECT_EQ(j["kqField"], nlohmann::json::parse("[120,300,60,19]"));
+    EXPECT_DOUBLE_EQ(j["plotRadius"].get<double>(), 2.5);
+    EXPECT_DOUBLE_EQ(j["plotGhostRadius"].get<double>(), 3.25);
+    ASSERT_EQ(j["plotLight"].size(), 5u);
+    EXPECT_FLOAT_EQ(j["plotLight"][2].get<float>(), 0.0075f);
+    EXPECT_FLOAT_EQ(j["plotLight"][4].get<float>(), 5.0f / 256.0f);
     EXPECT_EQ(j["toolsRegion"][3], 60);
 }
 

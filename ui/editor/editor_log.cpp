@@ -93,6 +93,12 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     if (!ui::kHasDocking)
         for (ui::TileRect const& h : state.layout.handles)
             line.splitHandles.emplace_back(h.pos.x, h.pos.y, h.size.x, h.size.y);
+    line.lightsWindow = state.lightsPanel.window;
+    line.plotRect = state.lightsPanel.plotRect;
+    line.kqField = state.lightsPanel.kqFieldRect;
+    line.plotRadius = state.lightsPanel.plotRadius;
+    line.plotGhostRadius = state.lightsPanel.plotGhostRadius;
+    line.plotLight = state.lightsPanel.plotLight;
     line.overviewButton = overview.buttonRect;
     for (ui::OverviewCell const& c : overview.cells) {
         char where[96];

@@ -111,6 +111,16 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"overviewButton\":" + rect(l.overviewButton) + ",\"overviewCells\":" + strings(l.overviewCells);
     out += ",\"uiScale\":" + number(l.uiScale);
     out += ",\"splitHandles\":" + flatRects(l.splitHandles);
+    out += ",\"lightsWindow\":" + rect(l.lightsWindow) + ",\"plotRect\":" + rect(l.plotRect) +
+           ",\"kqField\":" + rect(l.kqField);
+    out += ",\"plotRadius\":" + number(l.plotRadius) + ",\"plotGhostRadius\":" + number(l.plotGhostRadius);
+    out += ",\"plotLight\":[";
+    for (std::size_t i = 0; i < l.plotLight.size(); ++i) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.9g", double(l.plotLight[i]));  // every digit of a float
+        out += (i ? "," : "") + std::string(text);
+    }
+    out += "]";
     return out + "}";
 }
 

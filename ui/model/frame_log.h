@@ -100,6 +100,17 @@ struct FrameLogLine {
     // Tiled builds: each boundary's drag handle, x, y, width, height in window coordinates as one
     // flat array in Split order (model/layout_state.h); empty with docking.
     std::vector<glm::vec4> splitHandles;
+    // The Lights window's attenuation plot (issue 26): its rectangle and the Kq field's (x, y, width,
+    // height in window coordinates; 0 unless drawn and wholly in view), the radius it marks and
+    // its ghost's, the radius before the current drag (-1 when not drawn / no ghost).
+    glm::vec4 lightsWindow{0.0f};  // the Lights window (0 while collapsed or hidden)
+    glm::vec4 plotRect{0.0f};
+    glm::vec4 kqField{0.0f};
+    float plotRadius = -1.0f;
+    float plotGhostRadius = -1.0f;
+    // The plotted light's inputs to its radius, Kc, Kl, Kq, Imax (intensity times the largest
+    // colour channel) and the cut-off, so a test can solve the radius itself (empty when not drawn).
+    std::vector<float> plotLight;
 };
 
 std::string frameLogJson(FrameLogLine const& line);

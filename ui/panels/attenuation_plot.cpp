@@ -54,16 +54,28 @@ void polyline(ImDrawList* dl, Axes const& axes, AttenuationCurve const& c, std::
 }
 }  // namespace
 
-void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size, float fixedMaxDistance,
-                         std::optional<float> pixelDistance) {
-    AttenuationCurve const c = sampleAttenuationCurve(light, 128, fixedMaxDistance);
+float attenuationPlotAxis(PointLight const& light, float fixedMaxDistance, PointLight const* ghost) {
+    if (fixedMaxDistance > 0.0f) return fixedMaxDistance;
+    if (!ghost) return 0.0f;
+    float const r = std::max(lightRadius(light).radius, lightRadius(*ghost).radius);
+    return r > 0.0f ? r * 1.25f : 0.0f;
+}
+
+AttenuationPlotMarks drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size, float fixedMaxDistance,
+                                         std::optional<float> pixelDistance, PointLight const* ghost) {
+    float const axisMax = attenuationPlotAxis(light, fixedMaxDistance, ghost);
+    AttenuationCurve const c = sampleAttenuationCurve(light, 128, axisMax);
+    std::optional<AttenuationCurve> g;
+    if (ghost) g = sampleAttenuationCurve(*ghost, 128, c.maxDistance);
+    AttenuationPlotMarks marks{c.radius, g ? g->radius : -1.0f};
     ImDrawList* dl = ImGui::GetWindowDrawList();
     ImVec2 const p0 = ImGui::GetCursorScreenPos();
     ImVec2 const p1(p0.x + size.x, p0.y + size.y);
     ImGui::InvisibleButton("attenuation-plot", size);
     bool const hovered = ImGui::IsItemHovered();
 
-    float const peak = std::max(c.classic.empty() ? 1.0f : c.classic.front(), light.threshold * 2.0f);
+    float peak = std::max(c.classic.empty() ? 1.0f : c.classic.front(), light.threshold * 2.0f);
+    if (g && !g->classic.empty()) peak = std::max(peak, g->classic.front());
     Axes const axes{ImVec2(p0.x + 4, p0.y + 14),
                     ImVec2(p1.x - 4, p1.y - 14),
                     c.maxDistance,
@@ -77,12 +89,32 @@ void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size, fl
     ImVec2 const t0 = axes.at(0.0f, light.threshold), t1 = axes.at(c.maxDistance, light.threshold);
     dl->AddLine(t0, t1, IM_COL32(230, 180, 60, 200), 1.0f);
     dl->AddText(ImVec2(t1.x - 70, t1.y - 14), IM_COL32(230, 180, 60, 255), "threshold");
+    if (ghost && ghost->threshold != light.threshold) {
+        ImVec2 const g0 = axes.at(0.0f, ghost->threshold), g1 = axes.at(c.maxDistance, ghost->threshold);
+        dl->AddLine(g0, g1, IM_COL32(230, 180, 60, 80), 1.0f);
+    }
+    if (g && g->radius > 0.0f && g->radius <= c.maxDistance) {
+        // The ghost's radius: a dashed, faint line where the radius was when the drag began.
+        ImVec2 const r0 = axes.at(g->radius, axes.yTop), r1 = axes.at(g->radius, axes.yBottom);
+        for (float y = r0.y; y < r1.y; y += 8.0f)
+            dl->AddLine(ImVec2(r0.x, y), ImVec2(r0.x, std::min(y + 4.0f, r1.y)), IM_COL32(90, 200, 255, 110), 1.5f);
+    }
     if (c.radius > 0.0f && c.radius <= c.maxDistance) {
         ImVec2 const r0 = axes.at(c.radius, axes.yTop), r1 = axes.at(c.radius, axes.yBottom);
         dl->AddLine(r0, r1, IM_COL32(90, 200, 255, 220), 1.5f);
-        char label[48];
-        std::snprintf(label, sizeof label, "r = %.2f", c.radius);
-        dl->AddText(ImVec2(std::min(r0.x + 3, p1.x - 70), p0.y + 1), IM_COL32(90, 200, 255, 255), label);
+    }
+    if (c.radius > 0.0f && (c.radius <= c.maxDistance || g)) {
+        // Beside the radius mark, or while a ghost is shown "r = OLD → NEW" at the right end of the
+        // row when it does not fit beside it.
+        char label[64];
+        if (g)
+            std::snprintf(label, sizeof label, "r = %.2f → %.2f", g->radius, c.radius);
+        else
+            std::snprintf(label, sizeof label, "r = %.2f", c.radius);
+        float const w = ImGui::CalcTextSize(label).x;
+        float const x = axes.at(std::min(c.radius, c.maxDistance), axes.yTop).x;
+        dl->AddText(ImVec2(std::clamp(x + 3, p0.x + 2, std::max(p0.x + 2, p1.x - w - 4)), p0.y + 1),
+                    IM_COL32(90, 200, 255, 255), label);
     }
     if (pixelDistance && *pixelDistance > c.maxDistance) {
         // Past the axis: said at its end, so the user knows the light adds nothing there.
@@ -99,11 +131,14 @@ void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size, fl
         float const w = ImGui::CalcTextSize(label).x;
         dl->AddText(ImVec2(std::clamp(q0.x + 3, p0.x + 2, p1.x - w - 2), p1.y - 28), IM_COL32(255, 160, 0, 255), label);
     }
+    // The ghost under the curve: the applied curve as it was when the drag began.
+    if (g) polyline(dl, axes, *g, g->applied, IM_COL32(255, 255, 255, 80), 2.0f);
     polyline(dl, axes, c, c.classic, IM_COL32(150, 150, 150, 160), 1.0f);
     polyline(dl, axes, c, c.applied, IM_COL32(255, 255, 255, 255), 2.0f);
     // Legend, top left: the bright curve is what the renderer adds, the faint one the textbook form.
     dl->AddText(ImVec2(p0.x + 6, p0.y + 16), IM_COL32(255, 255, 255, 255), "applied");
     dl->AddText(ImVec2(p0.x + 6, p0.y + 30), IM_COL32(150, 150, 150, 255), "1/(Kc+Kl d+Kq d²)");
+    if (g) dl->AddText(ImVec2(p0.x + 6, p0.y + 44), IM_COL32(255, 255, 255, 110), "before the drag");
     char axisLabel[64];
     std::snprintf(axisLabel, sizeof axisLabel, "0 .. %.2f units%s%s", c.maxDistance, logScale ? "  (log)" : "",
                   fixedMaxDistance > 0.0f ? "  (fixed)" : "");
@@ -118,6 +153,7 @@ void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size, fl
                           d, imax * attenuation(light.kc, light.kl, light.kq, d),
                           imax * windowedAttenuation(light, c.radius, d), light.threshold);
     }
+    return marks;
 }
 
 ConeCurve sampleConeCurve(PointLight const& light, int samples) {

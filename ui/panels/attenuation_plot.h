@@ -23,11 +23,25 @@ struct AttenuationCurve {
 // (a fixed axis).
 AttenuationCurve sampleAttenuationCurve(PointLight const& light, int samples, float maxDistance = 0.0f);
 
+// What drawAttenuationPlot marked: the light's radius and its ghost's (-1 without a ghost).
+struct AttenuationPlotMarks {
+    float radius = 0.0f;
+    float ghostRadius = -1.0f;
+};
+
 // Draws into a box of `size` at the cursor with ImDrawList; hovering shows the values there.
 // fixedMaxDistance > 0 holds the distance axis there instead of a quarter past the radius;
 // pixelDistance (the inspected pixel's distance from the light) is marked where it is on the axis.
-void drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size, float fixedMaxDistance = 0.0f,
-                         std::optional<float> pixelDistance = std::nullopt);
+// ghost (the light before the current drag) is drawn faint behind, its radius marked too and
+// "r = OLD → NEW" beside the radius; a following axis then reaches past both radii.
+AttenuationPlotMarks drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size,
+                                         float fixedMaxDistance = 0.0f,
+                                         std::optional<float> pixelDistance = std::nullopt,
+                                         PointLight const* ghost = nullptr);
+
+// The distance axis the plot uses: fixedMaxDistance when above 0, else a quarter past the larger
+// of the light's and the ghost's radius (0 = sampleAttenuationCurve's own choice).
+float attenuationPlotAxis(PointLight const& light, float fixedMaxDistance, PointLight const* ghost);
 
 // A spot's cone factor (gbl::spotConeFactor) against the angle from its axis, 0 to a little
 // past the outer angle, with the inner and outer angles marked.

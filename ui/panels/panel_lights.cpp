@@ -87,11 +87,39 @@ void fieldHelp(LightField const& f) {
     ImGui::SetTooltip("%s", tip.c_str());
 }
 
+// The last item's rectangle (x, y, width, height) in window coordinates; 0 unless it is wholly in
+// view (a test's click at a point of it must land on it, not on the next window).
+glm::vec4 visibleItemRect() {
+    ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    float const top = ImGui::GetWindowPos().y + ImGui::GetFrameHeight();
+    float const bottom = ImGui::GetWindowPos().y + ImGui::GetWindowHeight() - ImGui::GetStyle().WindowPadding.y * 0.5f;
+    if (!ImGui::IsItemVisible() || a.y < top || b.y > bottom) return glm::vec4(0.0f);
+    return {a.x, a.y, b.x - a.x, b.y - a.y};
+}
+
+// The fields the attenuation curve follows (sameAttenuation): a drag of one leaves a ghost.
+bool attenuationField(LightField const& f) {
+    return f.vector == &PointLight::color || f.name == "kc" || f.name == "kl" || f.name == "kq" ||
+           f.name == "intensity" || f.name == "threshold";
+}
+
+// What the rows saw this frame: whether an attenuation field is held (or was released this frame,
+// whose edit still belongs to the drag) and where the Kq field is (visibleItemRect).
+struct RowsSeen {
+    bool attenuationHeld = false;
+    glm::vec4 kqRect{0.0f};
+};
+
+void noteField(LightField const& f, RowsSeen& seen) {
+    if (attenuationField(f) && (ImGui::IsItemActive() || ImGui::IsItemDeactivated())) seen.attenuationHeld = true;
+    if (f.name == "kq") seen.kqRect = visibleItemRect();
+}
+
 // One row of the panel: the kLightFields entries whose row is `row`, with the bounds
 // lightFieldBounds() gives (those files and the UI script accept), then the row's name. A vector is
 // one widget (the colour a colour editor); scalars share the row. Nothing for a kind that does not
 // use the row.
-bool drawLightRow(std::string_view row, PointLight& edited) {
+bool drawLightRow(std::string_view row, PointLight& edited, RowsSeen& seen) {
     std::vector<LightField const*> fields;
     for (LightField const& f : kLightFields)
         if (f.row == row) fields.push_back(&f);
@@ -110,6 +138,7 @@ bool drawLightRow(std::string_view row, PointLight& edited) {
             changed = ImGui::DragFloat3(label.c_str(), &v.x, proportionalDragSpeed(reach, first.dragStep), b.lo, b.hi,
                                         std::string(first.format).c_str());
         }
+        noteField(first, seen);
         fieldHelp(first);
         return changed;
     }
@@ -127,6 +156,7 @@ bool drawLightRow(std::string_view row, PointLight& edited) {
         LightFieldBounds const b = lightFieldBounds(f, edited);
         changed |= ImGui::DragFloat(("##" + std::string(f.name)).c_str(), &value, speed, b.lo, b.hi,
                                     std::string(f.format).c_str());
+        noteField(f, seen);
         fieldHelp(f);
     }
     ImGui::PopItemWidth();
@@ -174,7 +204,9 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights, std:
     // Short labels on the right, values fill the rest of the narrow side column.
     ImGui::PushItemWidth(-(ImGui::CalcTextSize("Position").x + ImGui::GetStyle().ItemInnerSpacing.x));
     // Widgets edit a copy; the copy replaces the light only when validateLight accepts it.
-    PointLight edited = lights[std::size_t(state.selected)];
+    PointLight const before = lights[std::size_t(state.selected)];
+    PointLight edited = before;
+    RowsSeen seen;
     bool changed = false;
     char name[64];
     std::snprintf(name, sizeof name, "%s", edited.name.c_str());
@@ -184,7 +216,8 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights, std:
     }
     changed |= drawKindCombo(edited);
     static std::vector<std::string_view> const rows = lightRows();
-    for (std::string_view row : rows) changed |= drawLightRow(row, edited);
+    for (std::string_view row : rows) changed |= drawLightRow(row, edited, seen);
+    state.kqFieldRect = seen.kqRect;
 
     // Presets are named by the radius they give this light (its brightness and cut-off included).
     int const preset = matchingPreset(edited);
@@ -210,6 +243,7 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights, std:
     }
 
     PointLight const& light = lights[std::size_t(state.selected)];
+    trackPlotGhost(state, seen.attenuationHeld, before, light);
     if (light.kind == LightKind::Directional) {
         ImGui::TextWrapped(
             "Directional: no attenuation and no radius; every mode shades it in its full-screen "
@@ -238,8 +272,13 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights, std:
     float const coneH = light.kind == LightKind::Spot ? ImGui::GetFontSize() * 5.0f : 0.0f;
     float const plotH = std::clamp(ImGui::GetContentRegionAvail().y - 4.0f - coneH, 160.0f,
                                    std::max(160.0f, ImGui::GetFontSize() * 18.0f));
-    drawAttenuationPlot(light, state.plotLogScale, ImVec2(ImGui::GetContentRegionAvail().x, plotH),
-                        state.plotFixedAxis ? state.plotAxisMax : 0.0f, pixelDistance);
+    AttenuationPlotMarks const marks = drawAttenuationPlot(
+        light, state.plotLogScale, ImVec2(ImGui::GetContentRegionAvail().x, plotH),
+        state.plotFixedAxis ? state.plotAxisMax : 0.0f, pixelDistance, shownPlotGhost(state, light));
+    state.plotRect = visibleItemRect();
+    state.plotRadius = marks.radius;
+    state.plotGhostRadius = marks.ghostRadius;
+    state.plotLight = {light.kc, light.kl, light.kq, lightImax(light), light.threshold};
     if (light.kind == LightKind::Spot) drawConePlot(light, ImVec2(ImGui::GetContentRegionAvail().x, coneH));
 }
 
@@ -247,9 +286,14 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights, std:
 
 void drawLightsPanel(LightsPanelState& state, std::vector<PointLight>& lights, LightAnimation& animation,
                      Bounds const& sceneBounds, std::optional<float> pixelDistance) {
+    state.window = state.plotRect = state.kqFieldRect = glm::vec4(0.0f);
+    state.plotRadius = state.plotGhostRadius = -1.0f;
+    state.plotLight.clear();
     placeWindow(EditorWindow::Lights);
     if (ImGui::Begin(windowName(EditorWindow::Lights), nullptr, editorWindowFlags())) {
         if (state.selected >= int(lights.size())) state.selected = int(lights.size()) - 1;
+        ImVec2 const pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+        state.window = {pos.x, pos.y, size.x, size.y};
         if (ImGui::Button("Add")) {
             auto const r = addLight(lights, sceneBounds.center() + glm::vec3(0, 1, 0));
             state.message = r.message;
