@@ -23,7 +23,8 @@ int badArgument(std::string const& message) {
     return 2;
 }
 
-// The directory exists (or was created) and a file can be written into it.
+}  // namespace
+
 std::optional<std::string> prepareOutDir(std::string const& dir) {
     std::error_code ec;
     fs::create_directories(dir, ec);
@@ -36,7 +37,33 @@ std::optional<std::string> prepareOutDir(std::string const& dir) {
     return std::nullopt;
 }
 
-}  // namespace
+std::optional<PipelineSettings> renderSettings(RenderOptions const& o, std::string* error) {
+    PipelineSettings settings;
+    auto const mode = enumFromName<LightingMode>(kLightingModeNames, o.mode);
+    auto const cull = enumFromName<CullMode>(kCullModeNames, o.cull);
+    auto const blit = enumFromName<DepthCopy>(kDepthCopyNames, o.blit);
+    auto const layout = enumFromName<GBufferLayout>(kGBufferLayoutNames, o.layout);
+    auto const accumulation = enumFromName<LightAccumulation>(kLightAccumulationNames, o.accumulation);
+    if (!mode)
+        *error = "--mode must be quad, volumes, tiled, forward or clustered, got '" + o.mode + "'";
+    else if (!cull)
+        *error = "--cull must be back, front, none, flip or stencil, got '" + o.cull + "'";
+    else if (!blit)
+        *error = "--blit must be blit, shader or off, got '" + o.blit + "'";
+    else if (!layout)
+        *error = "--layout must be classic, packed, naive8 or rgb10a2, got '" + o.layout + "'";
+    else if (!accumulation)
+        *error = "--accumulation must be single or split, got '" + o.accumulation + "'";
+    else {
+        settings.mode = *mode;
+        settings.cull = *cull;
+        settings.depthCopy = *blit;
+        settings.layout = *layout;
+        settings.accumulation = *accumulation;
+        return settings;
+    }
+    return std::nullopt;
+}
 
 void addRenderOptions(CLI::App& sub, RenderOptions& o) {
     cli::addShared(sub, cli::kOut, o.outDir)->required();
@@ -69,11 +96,13 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
                    "Say so before a frame estimated to take longer than this, with a faster mode")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
+    sub.add_option("--gbuffer", o.gbuffer,
+                   "Re-light another program's G-buffer (a manifest, or a `render --out` folder) instead of a scene");
     sub.add_option("--until", o.until,
                    "Stop after pass PASS (e.g. geometry, lighting, depth_copy) and write the frame as it stands");
     sub.parse_complete_callback([&sub, &o] {
         for (char const* name : {cli::kScene.name, cli::kLights.name, "--time", "--blit", "--mode", "--layout",
-                                 "--accumulation", "--cull", cli::kSize.name})
+                                 "--accumulation", "--cull", cli::kSize.name, cli::kSession.name, "--camera"})
             if (sub.count(name) > 0) o.given.insert(name);
     });
 }
@@ -93,6 +122,7 @@ void warnOfLongFrame(Renderer& renderer, FrameInput const& input, double warnSec
 }  // namespace
 
 int runRender(RenderOptions const& o) {
+    if (o.gbuffer) return runRenderImported(o);
     if (o.lesson) return runRenderLesson(o);
     std::string error;
     auto const size = parseSize(o.size, &error);
@@ -105,17 +135,9 @@ int runRender(RenderOptions const& o) {
     if (o.lights && *o.lights > kMaxLights)
         return badArgument("--lights is limited to " + std::to_string(kMaxLights) + ", got " +
                            std::to_string(*o.lights));
-    PipelineSettings settings;
-    auto const mode = enumFromName<LightingMode>(kLightingModeNames, o.mode);
-    auto const cull = enumFromName<CullMode>(kCullModeNames, o.cull);
-    auto const blit = enumFromName<DepthCopy>(kDepthCopyNames, o.blit);
-    if (!mode) return badArgument("--mode must be quad, volumes, tiled, forward or clustered, got '" + o.mode + "'");
-    if (!cull) return badArgument("--cull must be back, front, none, flip or stencil, got '" + o.cull + "'");
-    if (!blit) return badArgument("--blit must be blit, shader or off, got '" + o.blit + "'");
-    auto const layout = enumFromName<GBufferLayout>(kGBufferLayoutNames, o.layout);
-    if (!layout) return badArgument("--layout must be classic, packed, naive8 or rgb10a2, got '" + o.layout + "'");
-    auto const accumulation = enumFromName<LightAccumulation>(kLightAccumulationNames, o.accumulation);
-    if (!accumulation) return badArgument("--accumulation must be single or split, got '" + o.accumulation + "'");
+    auto const parsed = renderSettings(o, &error);
+    if (!parsed) return badArgument(error);
+    PipelineSettings settings = *parsed;
     std::vector<DebugView> views;
     for (auto const& name : o.views) {
         auto v = enumFromName<DebugView>(kDebugViewNames, name);
@@ -126,11 +148,6 @@ int runRender(RenderOptions const& o) {
         }
         views.push_back(*v);
     }
-    settings.mode = *mode;
-    settings.cull = *cull;
-    settings.depthCopy = *blit;
-    settings.layout = *layout;
-    settings.accumulation = *accumulation;
     if (auto err = prepareOutDir(o.outDir)) return badArgument(*err);
     if (o.saveSessionPath) {
         // Refuse before rendering rather than after a long frame (the write itself is checked too).

@@ -39,11 +39,22 @@ struct RenderOptions {
     // A frame estimated above this many seconds (core/frame_cost.h) is announced before it starts,
     // with the mode that gives the same image sooner.
     double warnSeconds = 5.0;
+    // Re-light this G-buffer (a manifest or a `render --out` folder, docs/import.md) instead of
+    // drawing a scene (app/relight_command.cpp).
+    std::optional<std::string> gbuffer;
 };
 
 void addRenderOptions(CLI::App& sub, RenderOptions& options);
 // Returns the process exit code: 0 on success, 2 for bad arguments or unwritable output, 1 when
 // no GL context can be had.
 int runRender(RenderOptions const& options);
+
+// The frame settings of --mode, --cull, --blit, --layout and --accumulation; nullopt with the
+// one-sentence error in `error` when one is not a known name.
+std::optional<PipelineSettings> renderSettings(RenderOptions const& options, std::string* error);
+// Creates `dir` and checks it can be written into; the error otherwise.
+std::optional<std::string> prepareOutDir(std::string const& dir);
+// `render --gbuffer MANIFEST --out DIR` (app/relight_command.cpp).
+int runRenderImported(RenderOptions const& options);
 
 }  // namespace gbl

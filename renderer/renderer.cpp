@@ -10,6 +10,7 @@
 #include "passes/depth_copy.h"
 #include "passes/forward.h"
 #include "passes/geometry.h"
+#include "passes/import.h"
 #include "passes/light_cubes.h"
 #include "passes/light_volumes.h"
 #include "passes/view.h"
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
@@ -148,7 +150,18 @@ FrameContext RendererImpl::frameContext(FrameInput const& input) const {
     f.projection = input.camera.projection(f.aspect);
     f.viewProj = f.projection * f.view;
     f.lights = shadedLights(input);
-    f.settings = input.settings;
+    f.settings = imported ? importedSettings(input.settings) : input.settings;
+    if (imported) {  // the imported G-buffer's own camera
+        ImportedFrame const& c = imported->camera;
+        f.view = c.view;
+        f.projection = c.projection;
+        f.viewProj = f.projection * f.view;
+        f.camera.position = c.eye;
+        f.camera.nearPlane = c.nearPlane;
+        f.camera.farPlane = c.farPlane;
+        f.camera.fovYDegrees = glm::degrees(2.0f * std::atan(1.0f / c.projection[1][1]));
+        f.aspect = c.projection[1][1] / c.projection[0][0];
+    }
     // A light's own contribution: nothing else, not even the ambient term.
     f.lightAlone = input.accumulateLights && input.lightContribution && !f.lights.empty();
     if (f.lightAlone) f.settings.ambient = glm::vec3(0.0f);
@@ -179,9 +192,15 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     coverageView.reset();  // counts of an earlier frame
     if (shaderChecks) shaderChecks.begin();
     FrameContext f = frameContext(input);
+    if (imported) {
+        std::string why;
+        importedSettings(input.settings, &why);
+        stats.fallbackReason = why;
+    }
     if (auto why = modeUnavailable(f.settings.mode)) {
         f.settings.mode = LightingMode::Quad;
-        stats.fallbackReason = *why + "; the full-screen (quad) pass ran instead";
+        stats.fallbackReason +=
+            (stats.fallbackReason.empty() ? "" : "; ") + *why + "; the full-screen (quad) pass ran instead";
     }
     stats.modeUsed = f.settings.mode;
     stats.accumulationUsed = splitAccumulation(f) ? LightAccumulation::Split : LightAccumulation::Single;
@@ -211,7 +230,7 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     passCalls.clear();
     std::optional<PassId> stop = input.stopAfter;
     if (stop) {
-        std::vector<PassDecl> const all = gbl::framePasses(s, wireframes);
+        std::vector<PassDecl> const all = gbl::framePasses(s, wireframes, bool(imported));
         if (auto why = stopAfterError(passName(*stop), all)) {
             stats.fallbackReason += (stats.fallbackReason.empty() ? "" : "; ") + *why + ", so the whole frame ran";
             stop.reset();
@@ -223,8 +242,8 @@ FrameStats RendererImpl::render(FrameInput const& input) {
     // Whether the frame goes on to its next pass: not once its stop pass has run.
     auto const runs = [&] { return !stop || std::find(passesRun.begin(), passesRun.end(), *stop) == passesRun.end(); };
 #ifndef NDEBUG
-    std::vector<PassDecl> const declared =
-        stop ? passesUntil(gbl::framePasses(s, wireframes), *stop) : gbl::framePasses(s, wireframes);
+    std::vector<PassDecl> const declared = stop ? passesUntil(gbl::framePasses(s, wireframes, bool(imported)), *stop)
+                                                : gbl::framePasses(s, wireframes, bool(imported));
     checkNoFeedbackLoops(declared);
 #endif
 
@@ -241,7 +260,11 @@ FrameStats RendererImpl::render(FrameInput const& input) {
                     {MaterialFilter::Opaque, f.viewProj, shading, s.normalMaps});
         if (fragmentQuery) fragmentQuery.end();
     } else {
-        {
+        if (imported) {
+            PassScope const pass = timed(PassId::Import);
+            importPass({*imported, shaders.get(ProgramId::Import), triangle, targets.gbuffer},
+                       {targets.width, targets.height});
+        } else {
             PassScope const pass = timed(PassId::Geometry);
             geometryPass({scene, shaders.get(ProgramId::Geometry), targets.gbuffer}, {f.viewProj, s.normalMaps});
         }
@@ -270,7 +293,7 @@ FrameStats RendererImpl::render(FrameInput const& input) {
                           {s.depthCopy, targets.width, targets.height});
         }
     }
-    if (runs()) {
+    if (runs() && !imported) {  // an imported G-buffer comes without a scene to draw
         PassScope const pass = timed(PassId::Forward);
         forwardPass({scene, lights, shaders.get(ProgramId::Forward), litTarget()},
                     {MaterialFilter::Blended, f.viewProj, shading, s.normalMaps});
@@ -348,9 +371,9 @@ bool RendererImpl::wireframesDrawn(FrameInput const& input) {
 }
 
 std::vector<PassDecl> RendererImpl::framePasses(FrameInput const& input) {
-    PipelineSettings s = input.settings;
+    PipelineSettings s = imported ? importedSettings(input.settings) : input.settings;
     if (modeUnavailable(s.mode)) s.mode = LightingMode::Quad;  // as render() runs it
-    return gbl::framePasses(s, wireframesDrawn(input));
+    return gbl::framePasses(s, wireframesDrawn(input), bool(imported));
 }
 
 // A frame that stops early skips the passes that would overwrite these targets: clear them, so the

@@ -4,6 +4,7 @@
 
 #include "core/camera.h"
 #include "core/frame_types.h"
+#include "core/imported_frame.h"
 #include "core/pipeline_settings.h"
 #include "core/point_light.h"
 #include "gl/caps.h"
@@ -74,6 +75,15 @@ public:
     // Uploads a scene, replacing the current one. On failure the current scene stays and the
     // error is returned.
     std::optional<std::string> setScene(SceneData const& scene);
+
+    // Re-lighting (docs/import.md): uploads another program's G-buffer, resizes the targets to it,
+    // and from now on every frame runs the import pass in the geometry pass's place, with the
+    // frame's camera (FrameInput::camera is ignored) and no scene drawn; forward mode runs the quad
+    // pass and the light cubes are off (core/frame_passes.h, importedSettings), as fallbackReason
+    // says. An error (one sentence) leaves the renderer as it was.
+    std::optional<std::string> setImportedGBuffer(ImportedFrame const& frame);
+    void clearImportedGBuffer();
+    bool hasImportedGBuffer() const;
 
     // A mode that is unavailable (modeUnavailable) runs the quad pass instead, and the stats'
     // fallbackReason says why.

@@ -15,6 +15,7 @@
 #include "gpu/light_volume_gpu.h"
 #include "gpu/render_targets.h"
 #include "gpu/view_target.h"
+#include "passes/import.h"
 #include "passes/lighting_clustered.h"
 #include "passes/shading_inputs.h"
 #include "renderer.h"
@@ -120,6 +121,8 @@ public:
     TileBins tileBins;                    // the tiled and clustered list passes' candidates, rebuilt by each
     bool splitTargetsWritten = false;     // the light targets hold an earlier split frame's sums
     std::function<void()> frameTestHook;  // renderer_test_access.h
+    // Set: frames re-light this imported G-buffer with its camera (Renderer::setImportedGBuffer).
+    std::optional<ImportedTextures> imported;
 
 private:
     FrameContext frameContext(FrameInput const& input) const;

@@ -21,6 +21,9 @@
 #define BIND_DIFFUSE_LIGHT 11       // sampler uDiffuseLight
 #define BIND_SPECULAR_LIGHT 12      // sampler uSpecularLight
 #define BIND_CLUSTER_LIST 13        // sampler uClusterList
+#define BIND_IMPORT_POSITION_DEPTH 0  // sampler uImportPositionDepth
+#define BIND_IMPORT_NORMAL 1          // sampler uImportNormal
+#define BIND_IMPORT_ALBEDO_SPEC 2     // sampler uImportAlbedoSpec
 // Image units of the tiled compute pass (declared with layout(binding = ...) in the shader).
 #define BIND_IMAGE_LIGHTING 0
 #define BIND_IMAGE_COVERAGE 1

@@ -43,23 +43,51 @@ TEST(FramePasses, NoCombinationSamplesWhatItDrawsInto) {
                     for (std::size_t copy = 0; copy < kDepthCopyNames.size(); ++copy)
                         for (DebugView view :  // the overlays are drawn on the first two only
                              {DebugView::Final, DebugView::Lighting, DebugView::Heatmap, DebugView::TileLights})
-                            for (bool overlays : {false, true}) {
-                                PipelineSettings s;
-                                s.mode = LightingMode(mode);
-                                s.layout = GBufferLayout(layout);
-                                s.cull = CullMode(cull);
-                                s.accumulation = LightAccumulation(acc);
-                                s.depthCopy = DepthCopy(copy);
-                                s.view = view;
-                                s.lightCubes = s.volumeWireframes = overlays;
-                                auto const passes = framePasses(s);
-                                EXPECT_EQ(describe(feedbackLoops(passes)), "")
-                                    << kLightingModeNames[mode] << " " << kGBufferLayoutNames[layout] << " "
-                                    << kCullModeNames[cull] << " " << kLightAccumulationNames[acc] << " "
-                                    << kDepthCopyNames[copy];
-                                ++frames;
-                            }
-    EXPECT_EQ(frames, 5 * 4 * 5 * 2 * 3 * 4 * 2);
+                            for (bool overlays : {false, true})
+                                for (bool imported : {false, true}) {
+                                    PipelineSettings s;
+                                    s.mode = LightingMode(mode);
+                                    s.layout = GBufferLayout(layout);
+                                    s.cull = CullMode(cull);
+                                    s.accumulation = LightAccumulation(acc);
+                                    s.depthCopy = DepthCopy(copy);
+                                    s.view = view;
+                                    s.lightCubes = s.volumeWireframes = overlays;
+                                    if (imported) s = importedSettings(s);
+                                    auto const passes = framePasses(s, s.volumeWireframes, imported);
+                                    EXPECT_EQ(describe(feedbackLoops(passes)), "")
+                                        << kLightingModeNames[mode] << " " << kGBufferLayoutNames[layout] << " "
+                                        << kCullModeNames[cull] << " " << kLightAccumulationNames[acc] << " "
+                                        << kDepthCopyNames[copy] << (imported ? " imported" : "");
+                                    ++frames;
+                                }
+    EXPECT_EQ(frames, 5 * 4 * 5 * 2 * 3 * 4 * 2 * 2);
+}
+
+// Re-lighting an imported G-buffer: the import pass writes the layout's targets in the geometry
+// pass's place, no scene is drawn (no blended forward pass), forward mode becomes the quad pass and
+// the light cubes go, each with its reason.
+TEST(FramePasses, AnImportedFrameRunsTheImportPassInsteadOfTheGeometry) {
+    PipelineSettings s;
+    s.layout = GBufferLayout::Packed;
+    s.mode = LightingMode::Volumes;
+    auto const passes = framePasses(importedSettings(s), false, true);
+    EXPECT_EQ(names(passes), (std::vector<std::string>{"import", "volume_depth", "lighting", "depth_copy", "display"}));
+    PassDecl const& imp = find(passes, PassId::Import);
+    EXPECT_EQ(imp.samples, std::vector<Resource>{Resource::Imported});
+    EXPECT_EQ(imp.color, (std::vector<Resource>{Resource::GBufferNormal, Resource::GBufferAlbedoSpec}));
+    EXPECT_EQ(imp.depthStencil, Resource::GBufferDepth);
+    ASSERT_EQ(imp.states.size(), 1u);
+    EXPECT_EQ(imp.states[0].depthTest, DepthTest::Always);
+    EXPECT_TRUE(imp.states[0].depthWrite);
+    std::string why;
+    s.mode = LightingMode::Forward;
+    s.lightCubes = true;
+    PipelineSettings const r = importedSettings(s, &why);
+    EXPECT_EQ(r.mode, LightingMode::Quad);
+    EXPECT_FALSE(r.lightCubes);
+    EXPECT_NE(why.find("forward shading draws the scene's meshes"), std::string::npos) << why;
+    EXPECT_NE(why.find("light cubes"), std::string::npos) << why;
 }
 
 TEST(FramePasses, TheOldVolumeWiringIsALoop) {

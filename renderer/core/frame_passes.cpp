@@ -178,7 +178,22 @@ PassDecl coveragePass(PipelineSettings const& s) {
 
 }  // namespace
 
-std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes) {
+PipelineSettings importedSettings(PipelineSettings s, std::string* why) {
+    std::string reasons;
+    if (s.mode == LightingMode::Forward) {
+        s.mode = LightingMode::Quad;
+        reasons = "forward shading draws the scene's meshes and an imported G-buffer has none, so the quad pass ran";
+    }
+    if (s.lightCubes) {
+        s.lightCubes = false;
+        if (!reasons.empty()) reasons += "; ";
+        reasons += "the light cubes are sized to a scene, which an imported G-buffer lacks, so none were drawn";
+    }
+    if (why) *why = reasons;
+    return s;
+}
+
+std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bool imported) {
     GBufferLayoutDesc const& d = layoutDesc(s.layout);
     bool const forward = s.mode == LightingMode::Forward;
     bool const split = s.accumulation == LightAccumulation::Split && !forward;
@@ -188,12 +203,13 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes) {
         out.push_back(litPass(PassId::ForwardShading, {R::Materials, R::Lights}, opaque));
         out.back().stencilWrite = true;  // cleared with the rest
     } else {
-        PassDecl g = declare(PassId::Geometry);
-        g.samples = {R::Materials};
+        PassDecl g = declare(imported ? PassId::Import : PassId::Geometry);
+        g.samples = {imported ? R::Imported : R::Materials};
         for (GBufferAttachmentDesc const& a : d.colorAttachments()) g.color.push_back(slotResource(a.slot));
         g.depthStencil = R::GBufferDepth;
         g.depthRead = g.depthWrite = g.stencilWrite = true;  // stencil cleared
-        g.states = {opaque};
+        // The import pass writes each covered pixel's depth (gl_FragDepth) whatever is there.
+        g.states = {imported ? state("imported surfaces", DepthTest::Always, true, Blend::Off, FaceCull::Off) : opaque};
         out.push_back(std::move(g));
         if (s.mode == LightingMode::Tiled)
             out.push_back(computePass(PassId::LightLists, {R::GBufferDepth, R::Lights}, {R::TileBins}));
@@ -216,8 +232,9 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes) {
         }
         out.push_back(depthCopyPass(s.depthCopy));
     }
-    out.push_back(litPass(PassId::Forward, {R::Materials, R::Lights},
-                          state("blended surfaces", DepthTest::Less, false, Blend::Alpha, FaceCull::Material)));
+    if (!imported)
+        out.push_back(litPass(PassId::Forward, {R::Materials, R::Lights},
+                              state("blended surfaces", DepthTest::Less, false, Blend::Alpha, FaceCull::Material)));
     if (viewNeedsCoverage(s.view)) out.push_back(coveragePass(s));
     PassDecl v = declare(PassId::Display);
     for (GBufferAttachmentDesc const& a : d.attachments()) v.samples.push_back(slotResource(a.slot));  // raw views

@@ -30,10 +30,11 @@ enum class PassId {
     Wireframes,      // overlay: light-volume outlines, on the display image
     Coverage,        // the counts behind the heat map and lights-per-tile views
     Display,         // tonemap or debug view into the display image (the overlays follow it)
+    Import,          // re-lighting: an imported G-buffer written into the layout's targets, instead of geometry
 };
-inline constexpr std::array<std::string_view, 12> kPassNames{
-    "forward_shading", "geometry", "light_lists", "volume_depth", "lighting", "light_combine",
-    "depth_copy",      "forward",  "light_cubes", "wireframes",   "coverage", "display"};
+inline constexpr std::array<std::string_view, 13> kPassNames{
+    "forward_shading", "geometry",    "light_lists", "volume_depth", "lighting", "light_combine", "depth_copy",
+    "forward",         "light_cubes", "wireframes",  "coverage",     "display",  "import"};
 
 inline std::string_view passName(PassId id) {
     return enumName(kPassNames, id);
@@ -68,11 +69,12 @@ enum class Resource {
     Materials,        // the scene's material textures
     TileBins,         // storage buffers: tile depth bounds and candidate lists
     ClusterLists,     // storage buffers and list texture of the clustered mode
+    Imported,         // the textures of an imported G-buffer (Renderer::setImportedGBuffer)
 };
-inline constexpr std::array<std::string_view, 17> kResourceNames{
+inline constexpr std::array<std::string_view, 18> kResourceNames{
     "gbuffer.position", "gbuffer.normal",   "gbuffer.albedo_spec", "gbuffer.emissive", "gbuffer.depth", "volumes.depth",
     "lighting",         "lighting.depth",   "diffuse_light",       "specular_light",   "coverage",      "display",
-    "lights",           "volume_instances", "materials",           "tile_bins",        "cluster_lists"};
+    "lights",           "volume_instances", "materials",           "tile_bins",        "cluster_lists", "imported"};
 
 inline std::string_view resourceName(Resource r) {
     return enumName(kResourceNames, r);
@@ -150,10 +152,17 @@ constexpr bool viewShowsOverlays(DebugView v) {
 // after any fallback; split accumulation is ignored in forward mode, as the renderer does).
 // `wireframes`: whether the volume outlines are asked for (the setting, or an accumulation outline);
 // they, and the light cubes, run after the display pass, and only when viewShowsOverlays(view).
-std::vector<PassDecl> framePasses(PipelineSettings const& settings, bool wireframes);
+// `imported`: the frame re-lights an imported G-buffer (importedSettings applied): the import pass
+// takes the geometry pass's place, and no scene is drawn (no blended surfaces).
+std::vector<PassDecl> framePasses(PipelineSettings const& settings, bool wireframes, bool imported = false);
 inline std::vector<PassDecl> framePasses(PipelineSettings const& settings) {
     return framePasses(settings, settings.volumeWireframes);
 }
+
+// What a frame that re-lights an imported G-buffer runs with: what needs the scene's meshes
+// (forward shading) becomes the quad pass, and the light cubes, sized to a scene, are off. `why`
+// gets one sentence per change.
+PipelineSettings importedSettings(PipelineSettings settings, std::string* why = nullptr);
 
 // Stopping after a pass (FrameInput::stopAfter): the passes up to and including `stop`, then the
 // display pass if `stop` came before it, which shows the frame as it stands (an overlay after it

@@ -23,6 +23,7 @@ enum class ProgramId {
     CoverageAllLights,
     GBufferDecode,
     LightCombine,  // accumulation split: the two light targets into the lit image
+    Import,        // re-lighting: an imported G-buffer into the layout's targets
     // volumes mode
     LightVolume,
     LightVolumeCoverage,

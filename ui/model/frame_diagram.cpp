@@ -158,6 +158,7 @@ std::optional<DebugView> resourceView(Resource r) {
         case Resource::VolumeInstances:
         case Resource::Materials:
         case Resource::ClusterLists:
+        case Resource::Imported:
             break;
     }
     return std::nullopt;

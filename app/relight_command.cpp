@@ -1,0 +1,95 @@
+// `gbuffer-lab render --gbuffer MANIFEST --out DIR`: another program's G-buffer re-lit on the GPU
+// (docs/import.md, "Re-lighting"), written out as `render --out` writes a frame.
+#include "render_command.h"
+
+#include "frame_export.h"
+#include "import/gbuffer_manifest.h"
+#include "import/imported_gbuffer.h"
+#include "import/relight_frame.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace gbl {
+
+namespace {
+
+int refuse(std::string const& message) {
+    std::fprintf(stderr, "gbuffer-lab render: %s\n", message.c_str());
+    return 2;
+}
+
+// The yaw/pitch camera nearest the frame's matrices, for camera.json and the depth views (exact for
+// a view matrix built with up (0, 1, 0), as gbuffer-lab's own cameras are).
+Camera cameraOf(ImportedFrame const& f) {
+    Camera c;
+    c.position = f.eye;
+    glm::vec3 const forward = -glm::normalize(glm::vec3(f.view[0][2], f.view[1][2], f.view[2][2]));
+    c.pitchDegrees = glm::degrees(std::asin(glm::clamp(forward.y, -1.0f, 1.0f)));
+    c.yawDegrees = glm::degrees(std::atan2(forward.z, forward.x));
+    c.fovYDegrees = glm::degrees(2.0f * std::atan(1.0f / f.projection[1][1]));
+    c.nearPlane = f.nearPlane;
+    c.farPlane = f.farPlane;
+    return c;
+}
+
+}  // namespace
+
+int runRenderImported(RenderOptions const& o) {
+    // What a G-buffer replaces: the scene, its camera and lights, and the frame size.
+    for (char const* name : {"--scene", "--lights", "--session", "--camera", "--size"})
+        if (o.given.count(name))
+            return refuse(std::string(name) + " cannot be combined with --gbuffer (the G-buffer brings its own " +
+                          (std::string(name) == "--size" ? "size" : "surfaces, camera and lights") + ")");
+    if (o.lesson) return refuse("--lesson cannot be combined with --gbuffer (a lesson renders its own scene)");
+    if (o.accumulate || o.contribution || o.saveSessionPath)
+        return refuse("--accumulate, --contribution and --save-session need a scene, which --gbuffer replaces");
+    std::string error;
+    auto const parsed = renderSettings(o, &error);
+    if (!parsed) return refuse(error);
+    PipelineSettings settings = *parsed;
+    if (settings.mode == LightingMode::Forward)
+        return refuse("--mode forward draws the scene's meshes, and a G-buffer has none: use a deferred mode");
+    std::vector<DebugView> views;
+    for (auto const& name : o.views) {
+        auto v = enumFromName<DebugView>(kDebugViewNames, name);
+        if (!v) return refuse("--view '" + name + "' is not a debug view (see render --help)");
+        views.push_back(*v);
+    }
+
+    ManifestLoad const manifest = loadManifest(*o.gbuffer);
+    if (!manifest.manifest) return refuse(manifest.error);
+    GBufferLoad loaded = loadGBuffer(*manifest.manifest);
+    if (!loaded.gbuffer) return refuse(loaded.error);
+    RelightFrame const relight = relightFrame(*loaded.gbuffer);
+    if (!relight.frame) return refuse(relight.error);
+    ImportedFrame const& frame = *relight.frame;
+    std::vector<PointLight> const lights = loaded.gbuffer->manifest.lights;
+    settings.shininess = loaded.gbuffer->manifest.shininess;
+    settings.lightCubes = false;  // sized to a scene (importedSettings)
+    if (auto err = prepareOutDir(o.outDir)) return refuse(*err);
+
+    auto headless = createHeadlessRenderer(frame.width, frame.height, o.glLimit, &error);
+    if (!headless) {
+        std::fprintf(stderr, "gbuffer-lab render: %s\n", error.c_str());
+        return 1;
+    }
+    Renderer& renderer = *headless->renderer;
+    if (auto const why = renderer.modeUnavailable(settings.mode)) return refuse(*why);
+    if (auto err = renderer.setImportedGBuffer(frame)) return refuse(*err);
+    Camera const camera = cameraOf(frame);
+    FrameInput input{camera, lights, settings, true};
+    if (o.until) {
+        if (auto why = stopAfterError(*o.until, renderer.framePasses(input))) return refuse("--until " + *why);
+        input.stopAfter = passFromName(*o.until);
+    }
+    FrameStats const stats = renderer.render(input);
+    FrameExport exported{camera, lights, settings, stats, 0, views};
+    if (auto err = exportFrame(renderer, exported, o.outDir)) return refuse(*err);
+    std::printf("wrote %s (%dx%d re-lit from %s, %d lights, %.2f GPU ms, %llu GL errors)\n", o.outDir.c_str(),
+                frame.width, frame.height, o.gbuffer->c_str(), stats.lightsSubmitted, stats.gpuFrameMs,
+                (unsigned long long)renderer.glErrorCount());
+    return 0;
+}
+
+}  // namespace gbl

@@ -1,0 +1,24 @@
+// An imported G-buffer as the renderer re-lights it (core/imported_frame.h): world position with the
+// window depth through the manifest's camera, normal, albedo and specular, rows turned bottom-up for
+// GL. No GL here: Renderer::setImportedGBuffer uploads the result.
+#pragma once
+
+#include "core/imported_frame.h"
+#include "import/imported_gbuffer.h"
+
+#include <optional>
+#include <string>
+
+namespace gbl {
+
+struct RelightFrame {
+    std::optional<ImportedFrame> frame;
+    std::string error;  // "<manifest>: <field> ..." in one sentence when frame is empty
+};
+
+// Refused, naming the field: no camera (the lighting needs the eye and the matrices), no albedo.
+// A manifest without specular re-lights with specular 0. Background and NaN/Inf pixels get depth 1,
+// which the import pass leaves at the clear values.
+RelightFrame relightFrame(ImportedGBuffer const& g);
+
+}  // namespace gbl
