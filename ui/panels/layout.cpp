@@ -121,7 +121,8 @@ void drawSplitHandles(LayoutState& state) {
                                    ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
     for (std::size_t i = 0; i < handles.size(); ++i) {
         TileRect const& r = handles[i];
-        bool const across = r.size.y > r.size.x;  // a column boundary: dragged left and right
+        if (r.size.x < 1.0f || r.size.y < 1.0f) continue;  // a minimised or zero-sized window has no edges
+        bool const across = r.size.y > r.size.x;           // a column boundary: dragged left and right
         char name[32];
         std::snprintf(name, sizeof name, "##split%zu", i);
         ImGui::SetNextWindowPos(ImVec2(r.pos.x, r.pos.y), ImGuiCond_Always);
