@@ -43,14 +43,7 @@ click_row() {
 }
 # progress ID: that lesson's "steps/steps tasks/tasks right/asked" from courseProgress.
 progress() { field courseProgress | tr -d '"' | tr '|' '\n' | sed -n "s/^$1 //p"; }
-start_editor() {
-    log="$work/$1.jsonl"
-    "$bin" --size 1280x720 --no-vsync --log-frames "$log" > "$work/$1.log" 2>&1 &
-    pid=$!
-    wait_frames 4
-    ui_window
-    wait_frames 2
-}
+start_editor() { ui_start "$1" --size 1280x720; }
 
 # --- a first run: no progress yet; open position_from_depth by its row, do its task ---------------
 start_editor first

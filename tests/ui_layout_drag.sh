@@ -20,15 +20,8 @@ ui_fresh_work
 ini="$XDG_CONFIG_HOME/gbuffer-lab/imgui.ini"
 mkdir -p "$(dirname "$ini")"
 
-# run NAME: an interactive editor at 1280x720 (reads and writes imgui.ini), its frames logged.
-run() {
-    log="$work/$1.jsonl"
-    "$bin" --size 1280x720 --no-vsync --log-frames "$log" > "$work/$1.log" 2>&1 &
-    pid=$!
-    wait_frames 4
-    ui_window
-    wait_frames 2
-}
+# run NAME: an editor at 1280x720 (ui_common.sh's ui_start).
+run() { ui_start "$1" --size 1280x720; }
 # handle N: "x y" of the centre of boundary N's handle (Split order: left column, right column,
 # strip, Lights row, then the right column's rows).
 handle() {

@@ -18,16 +18,11 @@ ui_fresh_work
 ini="$XDG_CONFIG_HOME/gbuffer-lab/imgui.ini"
 mkdir -p "$(dirname "$ini")"
 
-# run NAME [ARGS...]: starts an editor, waits for its frames, checks it is still up.
+# run NAME [ARGS...]: an editor at 800x600 (ui_common.sh's ui_start).
 run() {
     name=$1
     shift
-    log="$work/$name.jsonl"
-    "$bin" --size 800x600 --no-vsync --log-frames "$log" "$@" > "$work/$name.log" 2>&1 &
-    pid=$!
-    wait_frames 4
-    ui_window
-    wait_frames 2
+    ui_start "$name" --size 800x600 "$@"
 }
 
 printf '[gbuffer-lab][View]\nUiScale=1.25\n\n' > "$ini"

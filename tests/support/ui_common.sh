@@ -97,6 +97,18 @@ shot() {
     import -window "$wid" "$work/$1.png" 2>/dev/null || xwd -id "$wid" -out "$work/$1.xwd" 2>/dev/null ||
         echo "$ui_name: no screenshot of $1: neither import (ImageMagick) nor xwd works here"
 }
+# ui_start NAME [ARGS...]: an interactive editor (it reads and writes imgui.ini) with its frames
+# logged to $work/NAME.jsonl and its output in $work/NAME.log; waits for its window and frames.
+ui_start() {
+    log="$work/$1.jsonl"
+    out="$work/$1.log"
+    shift
+    "$bin" --no-vsync --log-frames "$log" "$@" > "$out" 2>&1 &
+    pid=$!
+    wait_frames 4
+    ui_window
+    wait_frames 2
+}
 # ui_quit [WHY]: Ctrl+Q, and the editor ($pid) ends within 10 s (saving imgui.ini on the way);
 # WHY names what a hang would mean.
 ui_quit() {
