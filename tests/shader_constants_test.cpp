@@ -168,7 +168,10 @@ TEST(ShaderConstants, GeneratedBindingsHeaderMatchesBindingsGlsl) {
                                          {"BIND_SSBO_TILE_BIN_LIGHTS", slot::BIND_SSBO_TILE_BIN_LIGHTS},
                                          {"BIND_SSBO_TILE_DEPTH", slot::BIND_SSBO_TILE_DEPTH},
                                          {"BIND_SSBO_SHADER_CHECKS", slot::BIND_SSBO_SHADER_CHECKS},
-                                         {"BIND_CLUSTER_LIST", slot::BIND_CLUSTER_LIST}};
+                                         {"BIND_CLUSTER_LIST", slot::BIND_CLUSTER_LIST},
+                                         {"BIND_IMPORT_POSITION_DEPTH", slot::BIND_IMPORT_POSITION_DEPTH},
+                                         {"BIND_IMPORT_NORMAL", slot::BIND_IMPORT_NORMAL},
+                                         {"BIND_IMPORT_ALBEDO_SPEC", slot::BIND_IMPORT_ALBEDO_SPEC}};
     EXPECT_EQ(all, cpp);
     // Each sampler uniform has exactly one unit, and the G-buffer samplers, the lights, every
     // texture the view pass reads and the combine pass's light targets are distinct (they are
