@@ -153,10 +153,12 @@ int run() {
     std::printf("gbuffer-lab (web): %s; %s; GLSL %s\n", caps.renderer.c_str(), caps.version.c_str(),
                 caps.glslVersion.c_str());
     if (!gbl::gl::hasExtension("GL_EXT_color_buffer_float"))
-        std::fprintf(stderr, "gbuffer-lab (web): EXT_color_buffer_float is missing: the float G-buffer cannot be drawn\n");
+        std::fprintf(stderr,
+                     "gbuffer-lab (web): EXT_color_buffer_float is missing: the float G-buffer cannot be drawn\n");
     app.renderer = std::make_unique<gbl::Renderer>(caps, width, height);
     app.scene = gbl::makeDefaultScene();
-    if (auto error = app.renderer->setScene(app.scene)) std::fprintf(stderr, "gbuffer-lab (web): scene: %s\n", error->c_str());
+    if (auto error = app.renderer->setScene(app.scene))
+        std::fprintf(stderr, "gbuffer-lab (web): scene: %s\n", error->c_str());
     app.initialLights = app.scene.lights;
     app.lights = app.initialLights;
     app.camera = app.scene.camera.value_or(gbl::Camera{});

@@ -4,6 +4,7 @@
 
 #ifdef __EMSCRIPTEN__
 #include <GLES3/gl3.h>
+
 #include <GLES2/gl2ext.h>
 // Entry points and constants of desktop GL 4.x that WebGL2 lacks. The renderer only reaches them
 // behind a capability GlCaps reports absent here (compute, KHR_debug, buffer textures, timer

@@ -16,11 +16,21 @@ void missing(char const* name) {
 }  // namespace
 
 extern "C" {
-void glDispatchCompute(GLuint, GLuint, GLuint) { missing("glDispatchCompute"); }
-void glMemoryBarrier(GLbitfield) { missing("glMemoryBarrier"); }
-void glBindImageTexture(GLuint, GLuint, GLint, GLboolean, GLint, GLenum, GLenum) { missing("glBindImageTexture"); }
-void glTexBuffer(GLenum, GLenum, GLuint) { missing("glTexBuffer"); }
-void glQueryCounter(GLuint, GLenum) { missing("glQueryCounter"); }
+void glDispatchCompute(GLuint, GLuint, GLuint) {
+    missing("glDispatchCompute");
+}
+void glMemoryBarrier(GLbitfield) {
+    missing("glMemoryBarrier");
+}
+void glBindImageTexture(GLuint, GLuint, GLint, GLboolean, GLint, GLenum, GLenum) {
+    missing("glBindImageTexture");
+}
+void glTexBuffer(GLenum, GLenum, GLuint) {
+    missing("glTexBuffer");
+}
+void glQueryCounter(GLuint, GLenum) {
+    missing("glQueryCounter");
+}
 void glGetQueryObjectui64v(GLuint, GLenum, GLuint64* params) {
     missing("glGetQueryObjectui64v");
     if (params) *params = 0;
@@ -30,15 +40,27 @@ void glGetQueryObjectiv(GLuint id, GLenum pname, GLint* params) {
     glGetQueryObjectuiv(id, pname, &v);
     if (params) *params = GLint(v);
 }
-void glGetBufferSubData(GLenum, GLintptr, GLsizeiptr, void*) { missing("glGetBufferSubData"); }
-void glClearBufferData(GLenum, GLenum, GLenum, GLenum, void const*) { missing("glClearBufferData"); }
+void glGetBufferSubData(GLenum, GLintptr, GLsizeiptr, void*) {
+    missing("glGetBufferSubData");
+}
+void glClearBufferData(GLenum, GLenum, GLenum, GLenum, void const*) {
+    missing("glClearBufferData");
+}
 void glObjectLabel(GLenum, GLuint, GLsizei, GLchar const*) {}
-void glDebugMessageCallback(GLDEBUGPROC, void const*) { missing("glDebugMessageCallback"); }
+void glDebugMessageCallback(GLDEBUGPROC, void const*) {
+    missing("glDebugMessageCallback");
+}
 void glDebugMessageControl(GLenum, GLenum, GLenum, GLsizei, GLuint const*, GLboolean) {
     missing("glDebugMessageControl");
 }
-void glDrawBuffer(GLenum buf) { glDrawBuffers(1, &buf); }
-void glPolygonMode(GLenum, GLenum) { missing("glPolygonMode"); }
-void glClearDepth(double depth) { glClearDepthf(float(depth)); }
+void glDrawBuffer(GLenum buf) {
+    glDrawBuffers(1, &buf);
+}
+void glPolygonMode(GLenum, GLenum) {
+    missing("glPolygonMode");
+}
+void glClearDepth(double depth) {
+    glClearDepthf(float(depth));
+}
 }
 #endif

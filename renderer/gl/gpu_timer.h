@@ -34,8 +34,9 @@ inline std::string_view timingSourceName(TimingSource s) {
 // build times passes on the CPU too.
 inline TimingMethod chooseTimingMethod(std::string_view glRenderer) {
     if (gl::kWebGL2)
-        return {TimingSource::CpuFinish, "WebGL2 has no GL_TIMESTAMP queries: each pass is bracketed by glFinish "
-                                         "and timed on the CPU"};
+        return {TimingSource::CpuFinish,
+                "WebGL2 has no GL_TIMESTAMP queries: each pass is bracketed by glFinish "
+                "and timed on the CPU"};
     for (std::string_view soft : {"llvmpipe", "softpipe", "SwiftShader", "swrast"})
         if (glRenderer.find(soft) != std::string_view::npos)
             return {TimingSource::CpuFinish, std::string(soft) +

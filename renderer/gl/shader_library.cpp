@@ -89,9 +89,10 @@ std::optional<std::string> ShaderLibrary::stageSource(ProgramId id, std::string 
         text->insert(0, "#version 300 es\n");
         at = std::string_view("#version 300 es\n").size();
         defs += "#define GBL_NO_BUFFER_TEXTURES\n";
-        defs += "precision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
-                "precision highp sampler3D;\nprecision highp samplerCube;\nprecision highp sampler2DArray;\n"
-                "precision highp sampler2DShadow;\nprecision highp isampler2D;\nprecision highp usampler2D;\n";
+        defs +=
+            "precision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
+            "precision highp sampler3D;\nprecision highp samplerCube;\nprecision highp sampler2DArray;\n"
+            "precision highp sampler2DShadow;\nprecision highp isampler2D;\nprecision highp usampler2D;\n";
     }
     text->insert(at, defs);
     return text;

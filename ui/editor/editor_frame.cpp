@@ -13,6 +13,7 @@
 #include "script/screenshot.h"
 
 #include "gl/gl_api.h"
+
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 
