@@ -40,7 +40,7 @@ float sliceNear(int slice) { return uNear * pow(uFar / uNear, float(slice) / flo
 // Whether light `index` may reach the tile between the near and far planes: its sphere lies on the
 // inner side of (or crosses) the four side planes (the tile test of lighting_tiled.comp).
 bool lightTouchesTile(int index, vec3 left, vec3 right, vec3 bottom, vec3 top) {
-    vec4 pr = texelFetch(uLights, index * 4);
+    vec4 pr = lightTexel(index * 4);
     float r = pr.w;
     vec3 c = (uView * vec4(pr.xyz, 1.0)).xyz;
     float depth = -c.z;
@@ -50,7 +50,7 @@ bool lightTouchesTile(int index, vec3 left, vec3 right, vec3 bottom, vec3 top) {
 
 // Whether light `index` (already in the tile's list) reaches the cluster's view-space box.
 bool lightTouchesCluster(int index, vec3 boxLo, vec3 boxHi) {
-    vec4 pr = texelFetch(uLights, index * 4);
+    vec4 pr = lightTexel(index * 4);
     vec3 c = (uView * vec4(pr.xyz, 1.0)).xyz;
     // A hair larger than the radius: a pixel on a slice boundary, put in the neighbouring slice by
     // rounding, still finds every light that reaches it.

@@ -18,7 +18,7 @@ uniform int uLightCount;
 out vec4 fragColor;
 
 vec3 shadeNear(int i, SurfacePoint s, vec3 albedo, float spec) {
-    vec4 pr = texelFetch(uLights, i * 4);
+    vec4 pr = lightTexel(i * 4);
     return distance(pr.xyz, s.p) < pr.w ? shadeLight(fetchLight(i), s, albedo, spec) : vec3(0.0);
 }
 

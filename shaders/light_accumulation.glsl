@@ -46,7 +46,7 @@ bool accumulateListedLight(inout LightSum sum, int i, bool listed, SurfacePoint 
     l.color *= listed ? 1.0 : 0.0;
     return accumulateLight(sum, l, s, specularIntensity);
 #else
-    if (!listed || !lightMayLight(texelFetch(uLights, i * 4), s)) return false;
+    if (!listed || !lightMayLight(lightTexel(i * 4), s)) return false;
     return accumulateLight(sum, fetchLight(i), s, specularIntensity);
 #endif
 }

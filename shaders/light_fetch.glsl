@@ -1,6 +1,6 @@
 // Reads one light from the light buffer texture (layout in renderer/gpu/light_buffer.h).
 #include "shader_checks.glsl"
-uniform samplerBuffer uLights;
+#include "light_texels.glsl"
 
 // Directional lights, shaded by every mode's full-screen loop (shadeGlobalLights below): their
 // indices in the light buffer, set by bindLights() (renderer/passes/shading_inputs.cpp).
@@ -29,11 +29,11 @@ vec3 lightDirectionDecode(vec2 e) {
 #define FOR_EVERY_LIGHT(count, STEP) { int i_ = 0; for (; i_ + LIGHTS_PER_ITERATION <= (count); i_ += LIGHTS_PER_ITERATION) { STEP(i_); STEP(i_ + 1); STEP(i_ + 2); STEP(i_ + 3); STEP(i_ + 4); STEP(i_ + 5); STEP(i_ + 6); STEP(i_ + 7); } for (; i_ < (count); ++i_) STEP(i_); }
 
 Light fetchLight(int i) {
-    i = CHECKED(CHECK_SITE_LIGHT_TEXEL, i, textureSize(uLights) / 4);
-    vec4 a = texelFetch(uLights, i * 4 + 0);
-    vec4 b = texelFetch(uLights, i * 4 + 1);
-    vec4 c = texelFetch(uLights, i * 4 + 2);
-    vec4 d = texelFetch(uLights, i * 4 + 3);
+    i = CHECKED(CHECK_SITE_LIGHT_TEXEL, i, lightTexelCount() / 4);
+    vec4 a = lightTexel(i * 4 + 0);
+    vec4 b = lightTexel(i * 4 + 1);
+    vec4 c = lightTexel(i * 4 + 2);
+    vec4 d = lightTexel(i * 4 + 3);
     return Light(a.xyz, b.xyz, c.xyz, a.w, b.w, lightDirectionDecode(d.yz), c.w, d.w);
 }
 
@@ -47,7 +47,7 @@ vec3 unpackLightWireColor(float bits) {
     c.b = floor(v / 256.0);
     return c / 255.0;
 }
-vec3 fetchLightColor(int i) { return unpackLightWireColor(texelFetch(uLights, i * 4 + 3).x); }
+vec3 fetchLightColor(int i) { return unpackLightWireColor(lightTexel(i * 4 + 3).x); }
 
 // Every directional light at a surface point: the "global lights in one full-screen pass" half
 // of the split (local lights are culled by radius, volumes or tiles; these reach every pixel).
@@ -62,9 +62,9 @@ vec3 shadeGlobalLights(vec3 p, vec3 n, vec3 albedo, float specular) {
 // pixels cannot meet light i's cone (apex at its view-space position, along its direction, outer
 // angle); always true for point lights. Run after the sphere test, which bounds the range.
 bool coneMayTouchSphere(int i, mat3 view, vec3 apexView, vec3 s, float sr) {
-    vec4 c = texelFetch(uLights, i * 4 + 2);
+    vec4 c = lightTexel(i * 4 + 2);
     if (c.w < -1.5) return true;  // no cone
-    vec3 axis = view * lightDirectionDecode(texelFetch(uLights, i * 4 + 3).yz);
+    vec3 axis = view * lightDirectionDecode(lightTexel(i * 4 + 3).yz);
     vec3 v = s - apexView;
     float along = dot(v, axis);
     float across = length(v - along * axis);

@@ -21,7 +21,7 @@ void main() {
     // The mesh is a little larger than the light's sphere: surfaces between the two, and the
     // background, get nothing (the same zero the other modes compute past the radius). The
     // test needs only the first texel of the light, so most rejected fragments stop here.
-    vec4 positionRadius = texelFetch(uLights, vLight * 4);
+    vec4 positionRadius = lightTexel(vLight * 4);
     bool inside = drawn && distance(positionRadius.xyz, pos) < positionRadius.w;
 #ifndef COVERAGE
     // Adding zero instead of discarding: a shader that may discard makes llvmpipe (and many

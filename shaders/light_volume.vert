@@ -31,7 +31,7 @@ void coneBasis(vec3 axis, out vec3 x, out vec3 y) {
 
 void main() {
     int light = uArrow ? uDirectionalLights[gl_InstanceID] : texelFetch(uInstances, uFirstInstance + gl_InstanceID).r;
-    vec4 positionRadius = texelFetch(uLights, light * 4);
+    vec4 positionRadius = lightTexel(light * 4);
     vLight = light;
     vec3 world;
     if (uArrow) {

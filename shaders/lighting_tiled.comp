@@ -45,7 +45,7 @@ shared uint sWordCount;
 // pass (the binned and the every-light paths both call it).
 bool lightTouchesTile(int index, float minDepth, float maxDepth, vec3 left, vec3 right, vec3 bottom, vec3 top,
                       vec3 tileCentre, float tileRadius) {
-    vec4 positionRadius = texelFetch(uLights, index * 4);
+    vec4 positionRadius = lightTexel(index * 4);
     float r = positionRadius.w;
     vec3 c = (uView * vec4(positionRadius.xyz, 1.0)).xyz;
     float depth = -c.z;

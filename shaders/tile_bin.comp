@@ -27,7 +27,7 @@ uniform float uFar;
 void main() {
     int i = int(gl_GlobalInvocationID.x);
     if (i >= uLightCount) return;
-    vec4 pr = texelFetch(uLights, i * 4);
+    vec4 pr = lightTexel(i * 4);
     float r = pr.w;
     vec3 c = (uView * vec4(pr.xyz, 1.0)).xyz;
     float depth = -c.z;

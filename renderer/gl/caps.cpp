@@ -1,7 +1,7 @@
 // Capability detection for the current context.
 #include "gl/caps.h"
 
-#include <epoxy/gl.h>
+#include "gl/gl_api.h"
 
 #include <cstdlib>
 
@@ -37,7 +37,7 @@ GlCaps detectGlCaps(int limitMajor, int limitMinor) {
     }
     // Under a version limit, extensions that bring a newer version's feature are ignored too, so
     // the limit shows what a real context of that version would offer.
-    auto has = [&](char const* ext) { return !limited && epoxy_has_gl_extension(ext); };
+    auto has = [&](char const* ext) { return !limited && gl::hasExtension(ext); };
     caps.khrDebug = caps.atLeast(4, 3) || has("GL_KHR_debug");
     caps.computeShaders =
         caps.atLeast(4, 3) || (has("GL_ARB_compute_shader") && has("GL_ARB_shader_storage_buffer_object") &&

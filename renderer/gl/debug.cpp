@@ -1,7 +1,7 @@
 // GL debug output and error counting.
 #include "gl/debug.h"
 
-#include <epoxy/gl.h>
+#include "gl/gl_api.h"
 
 #include <atomic>
 #include <cstdio>

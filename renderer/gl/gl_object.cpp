@@ -9,7 +9,7 @@ namespace {
 std::atomic<int> gLive{0};
 bool labelsSupported() {
     // Queried per call: cheap, and correct if several contexts of different versions exist.
-    return epoxy_gl_version() >= 43 || epoxy_has_gl_extension("GL_KHR_debug");
+    return contextVersion() >= 43 || hasExtension("GL_KHR_debug");
 }
 }  // namespace
 

@@ -1,7 +1,7 @@
 // Move-only ownership of one GL object name; the per-type headers build on this.
 #pragma once
 
-#include <epoxy/gl.h>
+#include "gl/gl_api.h"
 
 #include <string_view>
 #include <utility>

@@ -1,6 +1,7 @@
 // Time per pass: GL timestamps on drivers that attribute them, finish-bracketed CPU time on those that do not.
 #pragma once
 
+#include "gl/gl_api.h"
 #include "gl/query.h"
 
 #include <chrono>
@@ -29,7 +30,13 @@ inline std::string_view timingSourceName(TimingSource s) {
 // the query's bracket rather than the work issued inside it (a 58 s process once reported 55 s
 // for geometry and 55 s for lighting). There the GL's "GPU" is the CPU, so a glFinish on each
 // side of a pass makes the CPU wall time between them that pass's cost, and nothing else's.
+// WebGL2 has no GL_TIMESTAMP queries (EXT_disjoint_timer_query_webgl2 is not used yet), so the browser
+// build times passes on the CPU too.
 inline TimingMethod chooseTimingMethod(std::string_view glRenderer) {
+    if (gl::kWebGL2)
+        return {TimingSource::CpuFinish,
+                "WebGL2 has no GL_TIMESTAMP queries: each pass is bracketed by glFinish "
+                "and timed on the CPU"};
     for (std::string_view soft : {"llvmpipe", "softpipe", "SwiftShader", "swrast"})
         if (glRenderer.find(soft) != std::string_view::npos)
             return {TimingSource::CpuFinish, std::string(soft) +

@@ -2,7 +2,7 @@
 // build costs: a core program is fatal, an optional one takes its lighting mode away.
 #pragma once
 
-#include <epoxy/gl.h>
+#include "gl/gl_api.h"
 
 #include <cstddef>
 #include <span>

@@ -3,12 +3,14 @@
 
 #include "core/tile_math.h"
 #include "gl/embedded_shaders.h"
+#include "gl/gl_api.h"
 #include "gl/shader_bindings.h"
 
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <utility>
 
 namespace gbl {
@@ -75,7 +77,24 @@ std::optional<std::string> ShaderLibrary::stageSource(ProgramId id, std::string 
     defs += "#define GBL_TILE_SIZE " + std::to_string(kTileSize) + "\n";
     for (auto const& d : programInfo(id).desc.defines) defs += "#define " + d + "\n";
     for (auto const& d : globalDefines_) defs += "#define " + d + "\n";
-    text->insert(eol == std::string::npos ? text->size() : eol + 1, defs);
+    // The light buffer's row width where it is a 2D texture (shaders/light_texels.glsl).
+    defs += "#define GBL_LIGHT_TEXELS_PER_ROW " + std::to_string(gl::kLightTexelsPerRow) + "\n";
+    std::size_t at = eol == std::string::npos ? text->size() : eol + 1;
+    static constexpr std::string_view kCore = "#version 330 core";
+    if (esProfile_ && version != std::string::npos && text->compare(version, kCore.size(), kCore) == 0) {
+        // WebGL2: GLSL ES 3.00, whose #version must be the very first line (the file's header
+        // comment moves below it). Precision statements are declarations, so they follow the
+        // defines; ES gives the 3D, array, integer and shadow samplers no default precision.
+        text->erase(version, eol + 1 - version);
+        text->insert(0, "#version 300 es\n");
+        at = std::string_view("#version 300 es\n").size();
+        defs += "#define GBL_NO_BUFFER_TEXTURES\n";
+        defs +=
+            "precision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
+            "precision highp sampler3D;\nprecision highp samplerCube;\nprecision highp sampler2DArray;\n"
+            "precision highp sampler2DShadow;\nprecision highp isampler2D;\nprecision highp usampler2D;\n";
+    }
+    text->insert(at, defs);
     return text;
 }
 

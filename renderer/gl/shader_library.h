@@ -52,6 +52,12 @@ public:
     // reference-compiler test (tests/shader_compile_test.cpp) reads it too.
     std::optional<std::string> stageSource(ProgramId id, std::string const& file, std::string* error = nullptr) const;
     std::vector<std::string> const& globalDefines() const { return globalDefines_; }
+    // Whether stages are emitted as GLSL ES 3.00 for WebGL2 (gl::kGlslEs: on in the browser build):
+    // `#version 330 core` becomes `#version 300 es` with precision statements and
+    // GBL_NO_BUFFER_TEXTURES; compute stages (430) are left as they are, never built there. Settable
+    // so the reference-compiler test checks the web's text natively too.
+    void setEsProfile(bool on) { esProfile_ = on; }
+    bool esProfile() const { return esProfile_; }
 
 private:
     std::optional<gl::Program> build(ProgramId id, std::string* log) const;
@@ -59,6 +65,7 @@ private:
 
     std::filesystem::path sourceDir_;
     std::vector<std::string> globalDefines_;
+    bool esProfile_ = gl::kGlslEs;
     std::array<gl::Program, kProgramCount> programs_;
     std::size_t builds_ = 0;
     // Programs built for other global defines; dropped when a shader file changes on disk.

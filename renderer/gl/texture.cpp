@@ -62,9 +62,11 @@ Texture Texture::create2D(GLenum internalFormat, int width, int height, std::str
     glBindTexture(GL_TEXTURE_2D, id);
     GLenum format = 0, type = 0;
     formatAndType(internalFormat, format, type);
-    // glTexStorage2D is GL 4.2; glTexImage2D per level keeps the 3.3 floor.
+    // glTexStorage2D is GL 4.2; glTexImage2D per level keeps the 3.3 floor. WebGL2 (ES 3.0) has
+    // glTexStorage2D and accepts only exact format/type pairs in glTexImage2D, so it takes that.
     int w = std::max(width, 1), h = std::max(height, 1);
-    for (int level = 0; level < levels; ++level) {
+    if (kWebGL2) glTexStorage2D(GL_TEXTURE_2D, levels, internalFormat, w, h);
+    for (int level = 0; level < levels && !kWebGL2; ++level) {
         glTexImage2D(GL_TEXTURE_2D, level, GLint(internalFormat), w, h, 0, format, type, nullptr);
         w = std::max(w / 2, 1);
         h = std::max(h / 2, 1);

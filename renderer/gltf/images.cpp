@@ -3,15 +3,62 @@
 
 #include "gltf/mapping.h"
 
+#ifdef __EMSCRIPTEN__
+#include <stb_image.h>  // the browser build has no OpenImageIO (compiled in web/tinygltf_impl.cpp)
+#else
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace gbl {
 
+#ifdef __EMSCRIPTEN__
+DecodedImage decodeImage(std::span<std::uint8_t const> bytes, std::string name, std::string_view,
+                         std::size_t maxPixels) {
+    DecodedImage out;
+    if (bytes.empty()) {
+        out.error = "the image data is empty";
+        return out;
+    }
+    if (bytes.size() > std::size_t(std::numeric_limits<int>::max())) {
+        out.error = "the image data is too large";
+        return out;
+    }
+    int width = 0, height = 0, fileChannels = 0;
+    int const size = int(bytes.size());
+    if (!stbi_info_from_memory(bytes.data(), size, &width, &height, &fileChannels)) {
+        out.error = std::string("the image could not be decoded (") + stbi_failure_reason() + ")";
+        return out;
+    }
+    std::size_t const pixels = std::size_t(width) * std::size_t(height);
+    if (pixels > maxPixels || width > (1 << 16) || height > (1 << 16)) {
+        out.overLimit = true;
+        out.error = "an image is " + std::to_string(width) + " x " + std::to_string(height) +
+                    " pixels, more than the limit of " + std::to_string(maxPixels) + " pixels";
+        return out;
+    }
+    int const channels = std::clamp(fileChannels, 1, 4);
+    stbi_uc* data = stbi_load_from_memory(bytes.data(), size, &width, &height, &fileChannels, channels);
+    if (!data) {
+        out.error = std::string("the image data is corrupt (") + stbi_failure_reason() + ")";
+        return out;
+    }
+    ImageData img;
+    img.name = std::move(name);
+    img.width = width;
+    img.height = height;
+    img.channels = channels;
+    img.pixels.assign(data, data + pixels * std::size_t(channels));
+    stbi_image_free(data);
+    out.image = std::move(img);
+    return out;
+}
+#else
 namespace {
 
 // The file name OpenImageIO sees picks the reader; signatures are more reliable than names.
@@ -77,6 +124,8 @@ DecodedImage decodeImage(std::span<std::uint8_t const> bytes, std::string name, 
     out.image = std::move(img);
     return out;
 }
+
+#endif
 
 ImageData placeholderImage(std::string name) {
     ImageData img;

@@ -62,10 +62,12 @@ gl::Texture uploadImage(ImageData const& img) {
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, img.width, img.height, kFormats[img.channels - 1], GL_UNSIGNED_BYTE,
                     img.pixels.data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+#ifdef GL_TEXTURE_SWIZZLE_RGBA  // not in WebGL2, where a grey image still reads as red (issue 29)
     if (img.channels == 1) {
         GLint const swizzle[] = {GL_RED, GL_RED, GL_RED, GL_ONE};
         glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
     }
+#endif
     glGenerateMipmap(GL_TEXTURE_2D);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);

@@ -4,9 +4,26 @@
 #include "core/light_math.h"
 #include "core/octahedral.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace gbl {
+
+namespace {
+// The texels into the rows of a 2D texture kLightTexelsPerRow wide (no buffer textures: WebGL2).
+void uploadRowsTo(gl::Texture& texture, std::vector<glm::vec4>& texels) {
+    int const rows = int((texels.size() + kLightTexelsPerRow - 1) / kLightTexelsPerRow);
+    texels.resize(std::size_t(rows) * kLightTexelsPerRow, glm::vec4(0.0f));
+    if (!texture || texture.height() < rows) {
+        texture = gl::Texture::create2D(GL_RGBA32F, kLightTexelsPerRow, rows, "lights.rows");
+        texture.setFilter(GL_NEAREST, GL_NEAREST);
+    }
+    glBindTexture(GL_TEXTURE_2D, texture.id());
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kLightTexelsPerRow, rows, GL_RGBA, GL_FLOAT, texels.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+}  // namespace
 
 float packWireColor(glm::vec3 color) {
     glm::vec3 const c = glm::round(glm::clamp(color, 0.0f, 1.0f) * 255.0f);
@@ -34,7 +51,14 @@ std::vector<glm::vec4> packLights(std::span<PointLight const> lights) {
 
 std::optional<std::string> LightBuffer::upload(std::span<PointLight const> lights) {
     GLint maxTexels = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    if (gl::kBufferTextures) {
+        glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    } else {
+        GLint maxSize = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+        maxTexels = GLint(std::min<long long>(std::numeric_limits<GLint>::max(),
+                                              (long long)kLightTexelsPerRow * std::max(maxSize, 1)));
+    }
     int const fits = lightsInTexels(maxTexels);
     std::optional<std::string> why;
     if (int(lights.size()) > fits) {
@@ -46,8 +70,9 @@ std::optional<std::string> LightBuffer::upload(std::span<PointLight const> light
     std::vector<glm::vec4> texels = packLights(lights);
     // A buffer texture over an empty buffer is invalid, so keep at least one light's worth.
     if (texels.empty()) texels.resize(kTexelsPerLight, glm::vec4(0.0f));
-    std::size_t const bytes = texels.size() * sizeof(glm::vec4);
-    if (!buffer || buffer.size() < bytes) {
+    if (!gl::kBufferTextures) {
+        uploadRowsTo(texture, texels);
+    } else if (std::size_t const bytes = texels.size() * sizeof(glm::vec4); !buffer || buffer.size() < bytes) {
         buffer = gl::Buffer::create(GL_TEXTURE_BUFFER, bytes, texels.data(), GL_DYNAMIC_DRAW, "lights");
         texture = gl::Texture::createBuffer(GL_RGBA32F, buffer.id(), "lights.tbo");
     } else {

@@ -11,6 +11,7 @@
 
 #include "core/point_light.h"
 #include "gl/buffer.h"
+#include "gl/gl_api.h"
 #include "gl/texture.h"
 
 #include <glm/glm.hpp>
@@ -25,6 +26,9 @@
 namespace gbl {
 
 inline constexpr int kTexelsPerLight = 4;
+// Where buffer textures are missing (gl::kBufferTextures, WebGL2) the texels fill the rows of a 2D
+// RGBA32F texture gl::kLightTexelsPerRow wide, left to right and top to bottom (shaders/light_texels.glsl).
+inline constexpr int kLightTexelsPerRow = gl::kLightTexelsPerRow;
 
 // The wire colour of texel 3: each channel rounded to 8 bits, packed as r + 256 g + 65536 b.
 float packWireColor(glm::vec3 color);
@@ -35,7 +39,7 @@ std::vector<glm::vec4> packLights(std::span<PointLight const> lights);
 
 struct LightBuffer {
     gl::Buffer buffer;
-    gl::Texture texture;  // GL_TEXTURE_BUFFER over `buffer`, RGBA32F
+    gl::Texture texture;  // GL_TEXTURE_BUFFER over `buffer`, RGBA32F (or the 2D texture, above)
     int count = 0;
     std::vector<int> directional;  // indices of the directional lights shaded, in list order
 

@@ -20,7 +20,7 @@ void bindGBuffer(GBuffer const& g) {
 }
 
 void bindLights(gl::Program const& p, LightBuffer const& lights) {
-    bindTextureUnit(slot::BIND_LIGHTS, GL_TEXTURE_BUFFER, lights.texture.id());
+    bindTextureUnit(slot::BIND_LIGHTS, lights.texture.target(), lights.texture.id());
     p.set("uLightCount", lights.count);
     p.set("uDirectionalCount", int(lights.directional.size()));
     if (!lights.directional.empty())

@@ -3,7 +3,7 @@
 
 #include "model/normal_angle.h"
 
-#include <epoxy/gl.h>
+#include "gl/gl_api.h"
 
 namespace gbl::ui {
 

@@ -12,7 +12,8 @@
 #include "scene/default_scene.h"
 #include "script/screenshot.h"
 
-#include <epoxy/gl.h>
+#include "gl/gl_api.h"
+
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 

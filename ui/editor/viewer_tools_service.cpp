@@ -4,7 +4,7 @@
 #include "model/image_range.h"
 #include "model/viewer_tools.h"
 
-#include <epoxy/gl.h>
+#include "gl/gl_api.h"
 
 namespace gbl::ui {
 

@@ -2,7 +2,7 @@
 #include "script/screenshot.h"
 
 #include <OpenImageIO/imageio.h>
-#include <epoxy/gl.h>
+#include "gl/gl_api.h"
 
 #include <algorithm>
 #include <cstdlib>

@@ -1,0 +1,33 @@
+# The libraries of the browser build (issue 29; scripts/build-web.sh configures it with emcmake).
+# Emscripten's CMake toolchain searches only its own sysroot, so Debian's header-only packages (GLM,
+# nlohmann-json, tinygltf, stb) are linked into a folder of the build tree and offered as targets of
+# the names the native build finds; /usr/include itself would bring glibc's headers with it.
+set(GBL_WEB_INCLUDE ${CMAKE_BINARY_DIR}/web-include)
+file(MAKE_DIRECTORY ${GBL_WEB_INCLUDE})
+foreach(entry glm nlohmann stb tiny_gltf.h)
+  if(NOT EXISTS /usr/include/${entry})
+    message(FATAL_ERROR "/usr/include/${entry} is missing: scripts/build-web.sh installs the packages")
+  endif()
+  if(NOT EXISTS ${GBL_WEB_INCLUDE}/${entry})
+    file(CREATE_LINK /usr/include/${entry} ${GBL_WEB_INCLUDE}/${entry} SYMBOLIC)
+  endif()
+endforeach()
+
+add_library(glm::glm INTERFACE IMPORTED)
+target_include_directories(glm::glm SYSTEM INTERFACE ${GBL_WEB_INCLUDE})
+add_library(nlohmann_json::nlohmann_json INTERFACE IMPORTED)
+target_include_directories(nlohmann_json::nlohmann_json SYSTEM INTERFACE ${GBL_WEB_INCLUDE})
+# tinygltf and stb_image are compiled here (Debian ships libtinygltf.so for the host only); stb_image
+# also decodes the glTF textures, as OpenImageIO does natively.
+add_library(gbl_web_tinygltf STATIC ${CMAKE_SOURCE_DIR}/web/tinygltf_impl.cpp)
+target_include_directories(gbl_web_tinygltf SYSTEM PUBLIC ${GBL_WEB_INCLUDE} ${GBL_WEB_INCLUDE}/stb)
+add_library(TinyGLTF::TinyGLTF ALIAS gbl_web_tinygltf)
+# Emscripten's own GLFW 3 port (its header is in the sysroot; the port is a link setting).
+add_library(glfw INTERFACE IMPORTED)
+target_link_options(glfw INTERFACE -sUSE_GLFW=3)
+add_library(Threads::Threads INTERFACE IMPORTED)
+# The code catches exceptions (json parsing, scene loading); Emscripten compiles them away unless asked.
+add_compile_options(-fexceptions)
+add_link_options(-fexceptions)
+set(GBL_GL_LIBS "")
+set(GBL_IMAGE_LIBS gbl_web_tinygltf)
