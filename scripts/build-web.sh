@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds gbuffer-lab for the browser (WebGL2, Emscripten) into build-web/ (issue 29):
-# index.html (ours, web/index.html), gbuffer-lab.js and gbuffer-lab.wasm. Serve with
+# index.html (ours, app/web/index.html), gbuffer-lab.js and gbuffer-lab.wasm. Serve with
 #   python3 -m http.server -d build-web
 # Toolchain and libraries come from Debian, as scripts/install-deps.sh installs the native ones;
 # Dear ImGui's sources come from Debian's source package, fetched under build-web/ with a private
@@ -61,6 +61,6 @@ echo "Dear ImGui sources: $imgui_dir"
 export NODE_PATH="${NODE_PATH:-/usr/share/nodejs}"
 emcmake cmake -S "$root" -B "$out" -DCMAKE_BUILD_TYPE="$build_type" -DIMGUI_DIR="$imgui_dir" -DGBL_BUILD_TESTS=OFF
 emmake make -C "$out" -j"$jobs" gbuffer-lab-web
-cp "$root/web/index.html" "$out/index.html"
+cp "$root/app/web/index.html" "$out/index.html"
 echo "Built $out (index.html, gbuffer-lab.js, gbuffer-lab.wasm) in $(( $(date +%s) - start )) s"
 echo "Serve with: python3 -m http.server -d $out"

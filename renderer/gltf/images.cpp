@@ -4,7 +4,7 @@
 #include "gltf/mapping.h"
 
 #ifdef __EMSCRIPTEN__
-#include <stb_image.h>  // the browser build has no OpenImageIO (compiled in web/tinygltf_impl.cpp)
+#include <stb_image.h>  // the browser build has no OpenImageIO (compiled in app/web/tinygltf_impl.cpp)
 #else
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
