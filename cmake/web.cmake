@@ -19,7 +19,7 @@ add_library(nlohmann_json::nlohmann_json INTERFACE IMPORTED)
 target_include_directories(nlohmann_json::nlohmann_json SYSTEM INTERFACE ${GBL_WEB_INCLUDE})
 # tinygltf and stb_image are compiled here (Debian ships libtinygltf.so for the host only); stb_image
 # also decodes the glTF textures, as OpenImageIO does natively.
-add_library(gbl_web_tinygltf STATIC ${CMAKE_SOURCE_DIR}/web/tinygltf_impl.cpp)
+add_library(gbl_web_tinygltf STATIC ${CMAKE_SOURCE_DIR}/app/web/tinygltf_impl.cpp)
 target_include_directories(gbl_web_tinygltf SYSTEM PUBLIC ${GBL_WEB_INCLUDE} ${GBL_WEB_INCLUDE}/stb)
 add_library(TinyGLTF::TinyGLTF ALIAS gbl_web_tinygltf)
 # Emscripten's own GLFW 3 port (its header is in the sysroot; the port is a link setting).
