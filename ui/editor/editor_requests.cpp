@@ -37,6 +37,7 @@ ui::CameraInput gatherCameraInput(Editor const& editor, float dt) {
 // F: the selected light, or the scene from its home view when that is inside it.
 void frameSelection(Editor& editor) {
     EditorState& state = editor.state;
+    if (!state.viewport.importedFrame.empty()) return;  // the imported frame's camera is fixed
     int const i = state.lightsPanel.selected;
     if (i >= 0 && i < int(editor.drawn.size())) {
         PointLight const& light = editor.drawn[std::size_t(i)];
@@ -47,6 +48,7 @@ void frameSelection(Editor& editor) {
 }
 
 void homeView(Editor& editor) {
+    if (!editor.state.viewport.importedFrame.empty()) return;
     editor.state.camera = editor.home.camera;
     editor.state.rig = editor.home.rig;
 }
@@ -77,13 +79,15 @@ void handleViewRequests(Editor& editor, float dt) {
         }
     }
     if (state.viewport.frameRequested) frameSelection(editor);
-    ui::applyCameraInput(state.rig, state.camera, gatherCameraInput(editor, dt));
+    // An imported G-buffer was drawn from one camera: the editor cannot look at it from another.
+    if (state.viewport.importedFrame.empty())
+        ui::applyCameraInput(state.rig, state.camera, gatherCameraInput(editor, dt));
 }
 
 // Whether an action that replaces the session must ask first. Scripted runs never ask: a
 // script sets state directly and would wait for an answer forever.
 bool mustAsk(Editor const& editor) {
-    return !editor.script && editor.sessions->hasUnsavedEdits(editor.state);
+    return !editor.script && editor.sessions->hasUnsavedEdits(ui::sceneBehind(editor.state, editor.loading.gbuffer));
 }
 
 // Scene opens and session opens wait for the answer when edits would be lost.
