@@ -191,7 +191,6 @@ void centredMessage(ImVec2 min, ImVec2 max, char const* text) {
     dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), p, IM_COL32(235, 235, 235, 255), text, nullptr, wrap);
 }
 
-// Text with a dark box behind it, so it reads over any frame.
 // A file's or folder's last name ("frame" for "/tmp/frame/").
 std::string shortName(std::string const& path) {
     std::filesystem::path p(path);
@@ -199,6 +198,7 @@ std::string shortName(std::string const& path) {
     return p.filename().string();
 }
 
+// Text with a dark box behind it, so it reads over any frame.
 void boxedText(ImVec2 p, std::string const& text) {
     ImDrawList* dl = ImGui::GetWindowDrawList();
     ImVec2 const size = ImGui::CalcTextSize(text.c_str());
