@@ -30,6 +30,9 @@ int main(int argc, char** argv) {
     gbl::cli::addShared(app, gbl::cli::kSize, windowSize);
     gbl::cli::addShared(app, gbl::cli::kLights, editor.lightCount);
     gbl::cli::addShared(app, gbl::cli::kSession, editor.sessionPath);
+    app.add_option("--gbuffer", editor.gbufferPath,
+                   "Open another program's G-buffer (a manifest, a folder holding one, or a `render --out` folder) "
+                   "and re-light it live (docs/import.md)");
     app.add_option("--ui-test", editor.uiTestScript, "Run a UI test script and exit 0 when every check passes");
     gbl::cli::addShared(app, gbl::cli::kGl, editor.glLimit);
     app.add_flag("--no-vsync", noVsync, "Render as fast as possible");

@@ -7,7 +7,6 @@
 #include "import/imported_gbuffer.h"
 #include "import/relight_frame.h"
 
-#include <cmath>
 #include <cstdio>
 
 namespace gbl {
@@ -17,20 +16,6 @@ namespace {
 int refuse(std::string const& message) {
     std::fprintf(stderr, "gbuffer-lab render: %s\n", message.c_str());
     return 2;
-}
-
-// The yaw/pitch camera nearest the frame's matrices, for camera.json and the depth views (exact for
-// a view matrix built with up (0, 1, 0), as gbuffer-lab's own cameras are).
-Camera cameraOf(ImportedFrame const& f) {
-    Camera c;
-    c.position = f.eye;
-    glm::vec3 const forward = -glm::normalize(glm::vec3(f.view[0][2], f.view[1][2], f.view[2][2]));
-    c.pitchDegrees = glm::degrees(std::asin(glm::clamp(forward.y, -1.0f, 1.0f)));
-    c.yawDegrees = glm::degrees(std::atan2(forward.z, forward.x));
-    c.fovYDegrees = glm::degrees(2.0f * std::atan(1.0f / f.projection[1][1]));
-    c.nearPlane = f.nearPlane;
-    c.farPlane = f.farPlane;
-    return c;
 }
 
 }  // namespace
@@ -77,7 +62,7 @@ int runRenderImported(RenderOptions const& o) {
     Renderer& renderer = *headless->renderer;
     if (auto const why = renderer.modeUnavailable(settings.mode)) return refuse(*why);
     if (auto err = renderer.setImportedGBuffer(frame)) return refuse(*err);
-    Camera const camera = cameraOf(frame);
+    Camera const camera = cameraOfFrame(frame);
     FrameInput input{camera, lights, settings, true};
     if (o.until) {
         if (auto why = stopAfterError(*o.until, renderer.framePasses(input))) return refuse("--until " + *why);

@@ -67,4 +67,16 @@ RelightFrame relightFrame(ImportedGBuffer const& g) {
     return out;
 }
 
+Camera cameraOfFrame(ImportedFrame const& f) {
+    Camera c;
+    c.position = f.eye;
+    glm::vec3 const forward = -glm::normalize(glm::vec3(f.view[0][2], f.view[1][2], f.view[2][2]));
+    c.pitchDegrees = glm::degrees(std::asin(glm::clamp(forward.y, -1.0f, 1.0f)));
+    c.yawDegrees = glm::degrees(std::atan2(forward.z, forward.x));
+    c.fovYDegrees = glm::degrees(2.0f * std::atan(1.0f / f.projection[1][1]));
+    c.nearPlane = f.nearPlane;
+    c.farPlane = f.farPlane;
+    return c;
+}
+
 }  // namespace gbl

@@ -3,6 +3,7 @@
 // GL. No GL here: Renderer::setImportedGBuffer uploads the result.
 #pragma once
 
+#include "core/camera.h"
 #include "core/imported_frame.h"
 #include "import/imported_gbuffer.h"
 
@@ -20,5 +21,9 @@ struct RelightFrame {
 // A manifest without specular re-lights with specular 0. Background and NaN/Inf pixels get depth 1,
 // which the import pass leaves at the clear values.
 RelightFrame relightFrame(ImportedGBuffer const& g);
+
+// The yaw/pitch camera nearest the frame's matrices, for camera.json, the depth views and the
+// editor's (fixed) camera; exact for a view matrix built with up (0, 1, 0), as gbuffer-lab's own are.
+Camera cameraOfFrame(ImportedFrame const& frame);
 
 }  // namespace gbl

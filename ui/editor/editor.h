@@ -14,6 +14,7 @@ struct EditorOptions {
     int width = 1600;                           // window size in screen coordinates
     int height = 900;
     std::optional<std::string> sessionPath;    // session file to open (issue 6)
+    std::optional<std::string> gbufferPath;    // another program's G-buffer to re-light (issue 28)
     std::optional<std::string> uiTestScript;   // run a UI test script (see ui/ui_script.h), exit 0 if it passes
     bool allowOutsideUris = false;             // glTF files may read files outside their folder
     std::string glLimit;                       // "3.3": pretend the context is at most that version
@@ -32,7 +33,7 @@ struct EditorOptions {
 
 // Opens the window and runs until it is closed, the frame count is reached or the test script
 // ends. Returns the process exit code: 0 success, 1 no display / GL failure / failed test,
-// 2 bad input (unreadable scene or session file, unwritable screenshot path, --ui-scale out of range).
+// 2 bad input (unreadable scene, session or G-buffer, unwritable screenshot path, --ui-scale out of range).
 int runEditor(EditorOptions const& options);
 
 }  // namespace gbl

@@ -189,7 +189,8 @@ bool beginFrame(Editor& editor, FrameTimes& times) {
     glfwPollEvents();
     takeFrameInput(editor.input);
     // The window's close button asks first too when edits would be lost.
-    if (glfwWindowShouldClose(editor.window()) && !editor.script && editor.sessions->hasUnsavedEdits(editor.state)) {
+    if (glfwWindowShouldClose(editor.window()) && !editor.script &&
+        editor.sessions->hasUnsavedEdits(ui::sceneBehind(editor.state, editor.loading.gbuffer))) {
         glfwSetWindowShouldClose(editor.window(), GLFW_FALSE);
         ui::mayDiscard(editor.discard, ui::DiscardingAction::Quit, true);
     }
@@ -246,6 +247,21 @@ void dropStaleStop(Editor& editor) {
     }
 }
 
+// File > Open G-buffer, drops and --gbuffer (model/gbuffer_opening.h): the imported frame replaces
+// the scene's geometry pass until closed. Every change is a new frame to render.
+void openOrCloseGBuffer(Editor& editor) {
+    Renderer& renderer = *editor.renderer;
+    ui::GBufferChange const change = ui::updateGBufferOpening(
+        editor.loading.gbuffer, editor.state,
+        [&](ImportedFrame const& frame) { return renderer.setImportedGBuffer(frame); },
+        [&] { renderer.clearImportedGBuffer(); });
+    if (change == ui::GBufferChange::Opened || change == ui::GBufferChange::Closed) {
+        ++editor.sceneGeneration;
+        // Undo steps of the scene's lights do not apply to the G-buffer's, nor the other way round.
+        editor.sessions->sceneChanged(editor.state);
+    }
+}
+
 }  // namespace
 
 void renderScene(Editor& editor, FrameTimes& times) {
@@ -254,12 +270,18 @@ void renderScene(Editor& editor, FrameTimes& times) {
     // A finished load becomes the scene before this frame renders; requested ones start.
     if (ui::updateSceneLoading(editor.loading, editor.defaultLightCount, state,
                                [&](SceneData const& scene) { return renderer.setScene(scene); })) {
+        // A scene opened over a G-buffer replaces it, with the scene's own camera and lights.
+        if (ui::gbufferOpen(editor.loading.gbuffer)) {
+            renderer.clearImportedGBuffer();
+            ui::forgetGBuffer(editor.loading.gbuffer, state);
+        }
         editor.sessions->sceneChanged(state);
         rememberHomeView(editor);
     }
+    openOrCloseGBuffer(editor);
 
-    // The deferred frame, at the size the viewport had last frame.
-    if (state.viewport.size != glm::ivec2(renderer.width(), renderer.height()))
+    // The deferred frame, at the size the viewport had last frame; an imported G-buffer keeps its own.
+    if (!renderer.hasImportedGBuffer() && state.viewport.size != glm::ivec2(renderer.width(), renderer.height()))
         renderer.resizeTargets(state.viewport.size.x, state.viewport.size.y);
     if (state.animation.enabled) state.animation.time += times.dt * state.animation.speed;
     editor.drawn = animatedLights(state);

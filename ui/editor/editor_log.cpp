@@ -106,6 +106,8 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
                       int(c.image.w));
         line.overviewCells.push_back(std::string(kDebugViewNames[std::size_t(c.view)]) + where);
     }
+    line.gbuffer = editor.loading.gbuffer.path;
+    line.frameSize = glm::ivec2(editor.renderer->width(), editor.renderer->height());
     editor.frameLog.write(line);
 }
 

@@ -37,6 +37,7 @@ ui::CameraInput gatherCameraInput(Editor const& editor, float dt) {
 // F: the selected light, or the scene from its home view when that is inside it.
 void frameSelection(Editor& editor) {
     EditorState& state = editor.state;
+    if (!state.viewport.importedFrame.empty()) return;  // the imported frame's camera is fixed
     int const i = state.lightsPanel.selected;
     if (i >= 0 && i < int(editor.drawn.size())) {
         PointLight const& light = editor.drawn[std::size_t(i)];
@@ -47,6 +48,7 @@ void frameSelection(Editor& editor) {
 }
 
 void homeView(Editor& editor) {
+    if (!editor.state.viewport.importedFrame.empty()) return;
     editor.state.camera = editor.home.camera;
     editor.state.rig = editor.home.rig;
 }
@@ -77,13 +79,24 @@ void handleViewRequests(Editor& editor, float dt) {
         }
     }
     if (state.viewport.frameRequested) frameSelection(editor);
-    ui::applyCameraInput(state.rig, state.camera, gatherCameraInput(editor, dt));
+    // An imported G-buffer was drawn from one camera: the editor cannot look at it from another.
+    if (state.viewport.importedFrame.empty())
+        ui::applyCameraInput(state.rig, state.camera, gatherCameraInput(editor, dt));
+}
+
+// A session opened, restored or started afresh brings its own scene: an open G-buffer is closed
+// first, so the session lands on the scene's state and the renderer draws the scene again.
+void closeGBufferForSession(Editor& editor) {
+    if (!ui::gbufferOpen(editor.loading.gbuffer)) return;
+    editor.renderer->clearImportedGBuffer();
+    ui::closeGBuffer(editor.loading.gbuffer, editor.state);
+    ++editor.sceneGeneration;
 }
 
 // Whether an action that replaces the session must ask first. Scripted runs never ask: a
 // script sets state directly and would wait for an answer forever.
 bool mustAsk(Editor const& editor) {
-    return !editor.script && editor.sessions->hasUnsavedEdits(editor.state);
+    return !editor.script && editor.sessions->hasUnsavedEdits(ui::sceneBehind(editor.state, editor.loading.gbuffer));
 }
 
 // Scene opens and session opens wait for the answer when edits would be lost.
@@ -124,6 +137,7 @@ void releaseConfirmed(Editor& editor, ui::SessionRequest& request) {
             editor.state.quitRequested = true;
             break;
         case ui::DiscardingAction::NewSession:
+            closeGBufferForSession(editor);
             if (auto error = editor.sessions->newSession(editor.state, editor.sceneLoader))
                 ui::logMessage(editor.state.log, *error, true);
             break;
@@ -163,9 +177,11 @@ void carryOut(Editor& editor, EditorAction action) {
                                 editor.loading.recent.empty() ? std::string() : editor.loading.recent.front());
             break;
         case EditorAction::NewSession:
-            if (ui::mayDiscard(editor.discard, ui::DiscardingAction::NewSession, mustAsk(editor)))
+            if (ui::mayDiscard(editor.discard, ui::DiscardingAction::NewSession, mustAsk(editor))) {
+                closeGBufferForSession(editor);
                 if (auto error = sessions.newSession(state, editor.sceneLoader))
                     ui::logMessage(state.log, *error, true);
+            }
             break;
         case EditorAction::Quit:
             if (ui::mayDiscard(editor.discard, ui::DiscardingAction::Quit, mustAsk(editor))) state.quitRequested = true;
@@ -223,6 +239,8 @@ void handleSessionRequests(Editor& editor, FrameTimes const& times) {
     ui::SessionRequest request = ui::drawSessionDialogs(sessions.panel);
     holdDiscardingRequests(editor, request);
     releaseConfirmed(editor, request);
+    if (request.kind == ui::SessionRequestKind::Open || request.kind == ui::SessionRequestKind::Restore)
+        closeGBufferForSession(editor);
     if (request.kind != ui::SessionRequestKind::None) {
         FrameExport exported{state.camera, editor.drawn, state.pipeline, times.frameStats, state.sceneTriangles, {}};
         sessions.handle(request, state, *editor.renderer, exported, editor.sceneLoader);

@@ -273,6 +273,20 @@ std::optional<int> startEditor(Editor& editor) {
             return 2;
         }
     }
+    if (options.gbufferPath) {
+        // --gbuffer: the G-buffer over the scene, as File > Open G-buffer opens it; refused as a
+        // bad --session is, one sentence and exit code 2.
+        ui::GBufferRead const read = ui::readGBuffer(*options.gbufferPath);
+        Renderer& renderer = *editor.renderer;
+        if (auto error = ui::installGBuffer(editor.loading.gbuffer, *options.gbufferPath, read, state,
+                                            [&](ImportedFrame const& f) { return renderer.setImportedGBuffer(f); })) {
+            std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
+            sessions.endCleanly();
+            return 2;
+        }
+        ++editor.sceneGeneration;
+        sessions.sceneChanged(state);
+    }
     editor.render.continuous = options.continuousRender;
     // Scenes opened from the menu, by drag-and-drop or by scripts load on a worker thread.
     editor.loading.allowOutsideUris = options.allowOutsideUris;

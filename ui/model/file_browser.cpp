@@ -36,6 +36,7 @@ std::vector<std::string> extensionsFor(FileBrowserPurpose purpose) {
         case FileBrowserPurpose::OpenSession:
         case FileBrowserPurpose::SaveSession:
         case FileBrowserPurpose::OpenLesson:
+        case FileBrowserPurpose::OpenGBuffer:
             return {".json"};
     }
     return {};
@@ -51,6 +52,8 @@ char const* browserTitle(FileBrowserPurpose purpose) {
             return "Save session as";
         case FileBrowserPurpose::OpenLesson:
             return "Open lesson";
+        case FileBrowserPurpose::OpenGBuffer:
+            return "Open G-buffer";
     }
     return "";
 }
@@ -140,6 +143,13 @@ void openFileBrowser(FileBrowserState& state, FileBrowserPurpose purpose, std::s
 }
 
 std::optional<std::string> confirmFileBrowser(FileBrowserState& state) {
+    // A G-buffer may be a folder (a `render --out` folder, or one holding manifest.json).
+    bool const folderOk = state.purpose == FileBrowserPurpose::OpenGBuffer;
+    if (state.fileName.empty() && folderOk) {
+        state.error.clear();
+        rememberPlace(state.recentPlaces, state.folder);
+        return state.folder;
+    }
     if (state.fileName.empty()) {
         state.error = "Choose a file in the list or type a name.";
         return std::nullopt;
@@ -147,6 +157,11 @@ std::optional<std::string> confirmFileBrowser(FileBrowserState& state) {
     fs::path const typed(state.fileName);
     fs::path const path = (typed.is_absolute() ? typed : fs::path(state.folder) / typed).lexically_normal();
     std::error_code ec;
+    if (fs::is_directory(path, ec) && folderOk) {
+        state.error.clear();
+        rememberPlace(state.recentPlaces, path.string());
+        return path.string();
+    }
     if (fs::is_directory(path, ec)) {
         state.error = path.string() + " is a folder; choose a file in it.";
         return std::nullopt;

@@ -11,7 +11,8 @@
 
 namespace gbl::ui {
 
-enum class FileBrowserPurpose { OpenScene, OpenSession, SaveSession, OpenLesson };
+// OpenGBuffer takes a manifest or a folder (an empty name opens the folder shown).
+enum class FileBrowserPurpose { OpenScene, OpenSession, SaveSession, OpenLesson, OpenGBuffer };
 
 struct FileEntry {
     std::string name;

@@ -121,6 +121,8 @@ std::string frameLogJson(FrameLogLine const& l) {
         out += (i ? "," : "") + std::string(text);
     }
     out += "]";
+    out += ",\"gbuffer\":" + quoted(l.gbuffer);
+    out += ",\"frameSize\":[" + std::to_string(l.frameSize.x) + "," + std::to_string(l.frameSize.y) + "]";
     return out + "}";
 }
 

@@ -111,6 +111,10 @@ struct FrameLogLine {
     // The plotted light's inputs to its radius, Kc, Kl, Kq, Imax (intensity times the largest
     // colour channel) and the cut-off, so a test can solve the radius itself (empty when not drawn).
     std::vector<float> plotLight;
+    // The imported G-buffer shown instead of the scene ("" = the scene; model/gbuffer_opening.h)
+    // and the size of the frame the renderer drew, which is that G-buffer's while it is open.
+    std::string gbuffer;
+    glm::ivec2 frameSize{0};
 };
 
 std::string frameLogJson(FrameLogLine const& line);

@@ -139,6 +139,7 @@ bool updateSceneLoading(SceneLoadingState& loading, int defaultLightCount, Edito
                         SceneUploader const& upload) {
     // Requests start in order; while a load runs the others are refused with a message, so
     // two scenes never race to become current.
+    takeGBufferDrops(loading.dropped, loading.gbuffer);
     if (!loading.dropped.empty()) {
         std::vector<std::string> const dropped = std::exchange(loading.dropped, {});
         if (dropped.size() > 1)

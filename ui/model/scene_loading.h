@@ -4,6 +4,7 @@
 #include "gltf/loader.h"
 #include "model/editor_state.h"
 #include "model/file_browser.h"
+#include "model/gbuffer_opening.h"
 #include "scene/scene_data.h"
 
 #include <array>
@@ -66,6 +67,9 @@ struct SceneLoadingState {
     std::vector<std::string> recent;
     FileBrowserState browser;  // File > Open scene
 
+    // File > Open G-buffer, and dropped manifests and folders (model/gbuffer_opening.h).
+    GBufferOpenState gbuffer;
+
     // The last finished load, for the error dialog and for tests.
     SceneLoadOutcome lastOutcome = SceneLoadOutcome::None;
     std::string lastError;
@@ -107,8 +111,8 @@ std::optional<GltfLoadResult> takeFinishedLoad(SceneLoadingState& state);
 std::optional<std::string> installScene(SceneData const& scene, bool fromFile, int defaultLightCount,
                                         EditorState& state, SceneUploader const& upload);
 
-// Render thread, once per frame: starts requested loads (a drop opens its first file) and
-// installs a finished one. Errors
+// Render thread, once per frame: hands dropped G-buffers (folders, .json) to loading.gbuffer,
+// starts requested loads (a drop opens its first scene file) and installs a finished one. Errors
 // and cancellations are logged; errors also open the error dialog. Returns true when a new
 // scene became current.
 bool updateSceneLoading(SceneLoadingState& loading, int defaultLightCount, EditorState& state,

@@ -32,6 +32,11 @@ struct ViewportState {
     glm::vec4 wireframesRect{0.0f};
     glm::vec4 allWireframesRect{0.0f};
     OverviewState overview;  // the attachment overview (issue 26)
+    // An imported G-buffer shown instead of the scene (model/gbuffer_opening.h): its path ("" =
+    // none) and frame size. The frame keeps its size and camera: the image is letterboxed and the
+    // camera does not move.
+    std::string importedFrame;
+    glm::ivec2 importedSize{0};
 };
 
 }  // namespace gbl::ui

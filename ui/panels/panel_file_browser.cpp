@@ -114,6 +114,8 @@ std::optional<std::string> drawFileBrowser(FileBrowserState& state) {
     if (ImGui::InputText("Name", name, sizeof name, ImGuiInputTextFlags_EnterReturnsTrue)) confirm = true;
     state.fileName = name;
     ImGui::TextDisabled("shows folders and %s files", extensions.empty() ? "all" : extensions.c_str());
+    if (state.purpose == FileBrowserPurpose::OpenGBuffer)
+        ImGui::TextDisabled("Open with no name opens the folder shown (a render --out folder)");
     if (!state.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.35f, 1.0f));
         ImGui::TextWrapped("%s", state.error.c_str());

@@ -23,6 +23,7 @@ void requestOpen(SceneLoadingState& state, std::string const& path) {
 // The file browser for .gltf/.glb; the chosen file is requested like any other open.
 void drawOpenDialog(SceneLoadingState& state) {
     if (auto const path = drawFileBrowser(state.browser)) requestOpen(state, *path);
+    if (auto const path = drawFileBrowser(state.gbuffer.browser)) state.gbuffer.requests.push_back(*path);
 }
 
 void drawProgressWindow(SceneLoadingState& state) {
@@ -90,6 +91,18 @@ void drawSceneMenuItems(SceneLoadingState& state) {
         ImGui::EndMenu();
     }
     if (state.job && ImGui::MenuItem("Cancel scene loading")) cancelSceneLoad(state);
+    ImGui::Separator();
+    GBufferOpenState& gbuffer = state.gbuffer;
+    if (ImGui::MenuItem("Open G-buffer...")) openGBufferDialog(gbuffer);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "Another program's G-buffer: a manifest (docs/import.md) or a folder holding one,\n"
+            "or a `gbuffer-lab render --out` folder. It is re-lit live with its own lights.");
+    if (ImGui::MenuItem("Close G-buffer", nullptr, false, gbufferOpen(gbuffer))) gbuffer.closeRequested = true;
+}
+
+void openGBufferDialog(GBufferOpenState& state) {
+    openFileBrowser(state.browser, FileBrowserPurpose::OpenGBuffer, state.path);
 }
 
 void drawSceneLoadingUi(SceneLoadingState& state) {

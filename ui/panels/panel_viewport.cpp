@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 namespace gbl::ui {
@@ -188,6 +189,13 @@ void centredMessage(ImVec2 min, ImVec2 max, char const* text) {
     ImVec2 const size = ImGui::CalcTextSize(text, nullptr, false, wrap);
     ImVec2 const p((min.x + max.x - size.x) * 0.5f, (min.y + max.y - size.y) * 0.5f);
     dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), p, IM_COL32(235, 235, 235, 255), text, nullptr, wrap);
+}
+
+// A file's or folder's last name ("frame" for "/tmp/frame/").
+std::string shortName(std::string const& path) {
+    std::filesystem::path p(path);
+    if (p.filename().empty()) p = p.parent_path();
+    return p.filename().string();
 }
 
 // Text with a dark box behind it, so it reads over any frame.
@@ -416,8 +424,14 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         return ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
     };
     viewCombo(settings);
+    // An imported G-buffer has no scene: no cubes sized to one, and its camera cannot be moved.
+    bool const fixedFrame = !state.importedFrame.empty();
     sameLineIfFits(checkItemWidth("Cubes"), false, rightEdge);
+    ImGui::BeginDisabled(fixedFrame);
     ImGui::Checkbox("Cubes", &settings.lightCubes);
+    ImGui::EndDisabled();
+    if (fixedFrame && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("the light cubes are sized to a scene, which an imported G-buffer lacks");
     sameLineIfFits(checkItemWidth("Wireframes"), false, rightEdge);
     ImGui::Checkbox("Wireframes", &settings.volumeWireframes);
     state.wireframesRect = itemRect();
@@ -435,7 +449,9 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
             "Outline every light's volume, not only the selected light's (Wireframes outlines the "
             "selected one)");
     sameLineIfFits(buttonWidth("Frame (F)"), false, rightEdge);
+    ImGui::BeginDisabled(fixedFrame);
     if (ImGui::Button("Frame (F)")) state.frameRequested = true;
+    ImGui::EndDisabled();
     sameLineIfFits(buttonWidth("Overview (G)"), false, rightEdge);
     ImGui::PushStyleColor(ImGuiCol_Button, overview.on ? IM_COL32(70, 110, 170, 255) : IM_COL32(50, 50, 55, 255));
     if (ImGui::Button("Overview (G)")) overview.on = !overview.on;
@@ -456,7 +472,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
     litPinRow(litPin, tools, settings.view);
     if (ab) teachingRow(*ab, settings);
 
-    ImVec2 const avail = ImGui::GetContentRegionAvail();
+    ImVec2 avail = ImGui::GetContentRegionAvail();
     ImVec2 const scale = ImGui::GetIO().DisplayFramebufferScale;
     state.size = glm::ivec2(std::max(0, int(avail.x * scale.x)), std::max(0, int(avail.y * scale.y)));
     if (avail.x < 1.0f || avail.y < 1.0f) {
@@ -464,7 +480,18 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         return;
     }
 
-    ImVec2 const origin = ImGui::GetCursorScreenPos();
+    ImVec2 origin = ImGui::GetCursorScreenPos();
+    bool const imported = !state.importedFrame.empty() && textureSize.x > 0 && textureSize.y > 0;
+    if (imported) {
+        // An imported G-buffer keeps its size: letterboxed in the window, never stretched.
+        float const fit = std::min(avail.x / float(textureSize.x), avail.y / float(textureSize.y));
+        ImVec2 const shown(std::max(1.0f, std::floor(float(textureSize.x) * fit)),
+                           std::max(1.0f, std::floor(float(textureSize.y) * fit)));
+        origin = ImVec2(std::floor(origin.x + (avail.x - shown.x) * 0.5f),
+                        std::floor(origin.y + (avail.y - shown.y) * 0.5f));
+        avail = shown;
+        ImGui::SetCursorScreenPos(origin);
+    }
     state.imageRect = glm::vec4(origin.x, origin.y, avail.x, avail.y);
     bool const abOn = ab && ab->ab.enabled && !overview.on;
     if (abOn && ab->ab.view == AbView::Split) abDivider(ab->ab, origin, avail);
@@ -540,8 +567,13 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         boxedText(ImVec2(origin.x + 8, notesY), "stopped after " + state.stoppedAfter);
         notesY += ImGui::GetTextLineHeightWithSpacing() + 4.0f;
     }
-    if (!state.cameraInside.empty() && texture != 0)
+    if (!state.cameraInside.empty() && texture != 0) {
         boxedText(ImVec2(origin.x + 8, notesY), cameraInsideText(state.cameraInside));
+        notesY += ImGui::GetTextLineHeightWithSpacing() + 4.0f;
+    }
+    if (imported)
+        boxedText(ImVec2(origin.x + 8, notesY), "G-buffer " + shortName(state.importedFrame) +
+                                                    ": camera fixed to the imported frame; lights editable");
     // The tools' Shift+drag and Shift+right-click are theirs, not the camera's.
     bool const toolsMouse = viewportToolsImage(tools, origin, avail, textureSize);
     if (settings.view == DebugView::Heatmap || settings.view == DebugView::TileLights)

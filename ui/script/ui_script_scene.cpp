@@ -160,6 +160,28 @@ constexpr ScriptCommandSpec kSceneCommands[] = {
      kLoads},
     {"dismiss-load-error", "", "press OK in the load error dialog",
      [](CommandCall const& c) { loading(c).errorDialogDismissed = true; }, kLoads},
+    // --- another program's G-buffer (model/gbuffer_opening.h); opened at the next frame ---
+    {"open-gbuffer", "PATH...", "File > Open G-buffer of a manifest or folder",
+     [](CommandCall const& c) { loading(c).gbuffer.requests.push_back(joinWords(c.w, 1)); }, kLoads},
+    {"close-gbuffer", "", "File > Close G-buffer",
+     [](CommandCall const& c) { loading(c).gbuffer.closeRequested = true; }, kLoads},
+    {"expect-gbuffer", "none|PATH...", "no G-buffer is shown, or the one shown is PATH, at its own frame size",
+     [](CommandCall const& c) {
+         GBufferOpenState const& g = loading(c).gbuffer;
+         std::string const want = joinWords(c.w, 1);
+         std::string const got = g.path.empty() ? std::string("none") : g.path;
+         glm::ivec2 const frame(c.host.renderer.width(), c.host.renderer.height());
+         bool const sized = g.path.empty() || frame == g.size;
+         c.check(got == want && sized && c.host.renderer.hasImportedGBuffer() == !g.path.empty(),
+                 "shown: " + got + ", frame " + std::to_string(frame.x) + "x" + std::to_string(frame.y));
+     },
+     kLoads},
+    {"expect-gbuffer-error", "TEXT...", "the last refused G-buffer's sentence contains TEXT",
+     [](CommandCall const& c) {
+         std::string const& error = loading(c).gbuffer.lastError;
+         c.check(!error.empty() && error.find(joinWords(c.w, 1)) != std::string::npos, "\"" + error + "\"");
+     },
+     kLoads},
 };
 
 }  // namespace

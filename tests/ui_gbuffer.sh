@@ -1,0 +1,124 @@
+#!/bin/sh
+# Opening another program's G-buffer in the real editor under Xvfb at 1280x720 (issue 28). The
+# G-buffer is written by `gbuffer-lab render --out`, the folder `render --gbuffer` also opens.
+#  1. A UI test script drops the folder on the window (the drop path GLFW's callback feeds): the
+#     viewport shows the re-lit frame at the G-buffer's size, a light edit changes it, bad inputs
+#     (missing file, bad manifest, size mismatch, unreadable image) are each refused with one
+#     sentence while what was shown stays, and Close G-buffer gives back the scene's frame.
+#  2. `--gbuffer DIR` with real X input (xdotool): the frame log names the G-buffer and its size,
+#     and a mouse drag over the viewport leaves the fixed camera where it was.
+#  3. `--gbuffer` of a bad manifest: exit code 2 and one sentence.
+# usage: ui_gbuffer.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
+set -eu
+bin="$1"
+work="$2"
+
+ui_name=ui_gbuffer
+log=""
+. "$(dirname "$0")/support/ui_common.sh"
+ui_require_xdotool
+ui_fresh_work
+
+# --- the G-buffers: one good export, and one of each bad kind --------------------------------
+"$bin" render --out "$work/export" --size 480x270 --lights 6 > "$work/render.log" 2>&1 ||
+    fail "render --out failed: $(tail -n 2 "$work/render.log")"
+"$bin" render --out "$work/small" --size 240x135 --lights 6 >> "$work/render.log" 2>&1 ||
+    fail "render --out (small) failed"
+mkdir -p "$work/bad"
+printf '{"format": "gbuffer-lab-gbuffer", "version": 1, "preset": "learnopengl", "normal": {"encoding": "spherical"}}\n' \
+    > "$work/bad/manifest.json"
+cp -r "$work/export" "$work/mismatch"
+cp "$work/small/albedo.png" "$work/mismatch/albedo.png"
+cp -r "$work/export" "$work/unreadable"
+echo "not an image" > "$work/unreadable/normal.exr"
+lights=$(grep -o '"position"' "$work/export/lights.json" | wc -l)
+[ "$lights" -ge 1 ] || fail "the export has no lights in lights.json"
+
+# --- 1. the drop path and bad inputs, driven by a UI test script ------------------------------
+cat > "$work/script.txt" <<SCRIPT
+frames 3
+expect-scene default
+expect-gbuffer none
+capture scene
+# Bad inputs before anything is open: one sentence each, the scene stays.
+open-gbuffer $work/nowhere/manifest.json
+frames 2
+expect-gbuffer none
+expect-gbuffer-error cannot read the manifest
+expect-log The scene stays shown.
+drop-files $work/bad/manifest.json
+frames 2
+expect-gbuffer none
+expect-gbuffer-error manifest.json: normal.encoding
+# The folder dropped as GLFW hands it over: the re-lit G-buffer replaces the scene's frame.
+drop-files $work/export
+frames 4
+expect-gbuffer $work/export
+expect-lights $lights
+expect-log re-lit from its own camera
+expect-no-gl-errors
+capture relit
+expect-different scene relit 0.02
+screenshot $work/gbuffer_open.png
+# The lights stay editable over it: light 0 off changes the frame.
+light 0 intensity 0
+frames 3
+capture dimmer
+expect-different relit dimmer 0.0005
+light 0 intensity 1
+# Bad inputs while it is open: refused, the G-buffer stays.
+drop-files $work/mismatch
+frames 2
+expect-gbuffer $work/export
+expect-gbuffer-error every attachment must have the frame's size
+expect-log stays shown.
+open-gbuffer $work/unreadable
+frames 2
+expect-gbuffer $work/export
+expect-gbuffer-error normal.file
+expect-no-gl-errors
+# Close G-buffer: the scene's frame again, as it was.
+close-gbuffer
+frames 4
+expect-gbuffer none
+expect-lights 32
+capture back
+expect-same scene back 0.002
+expect-no-gl-errors
+SCRIPT
+"$bin" --ui-test "$work/script.txt" --size 1280x720 --no-vsync --log-frames "$work/script.jsonl" \
+    > "$work/script.log" 2>&1 || fail "the UI test script failed: $(grep -m 3 'FAIL' "$work/script.log")"
+grep -q "ui-test FAIL" "$work/script.log" && fail "$(grep -m 3 'ui-test FAIL' "$work/script.log")"
+# The frame log of the script run: the G-buffer's frame size while open, the window's viewport after.
+log="$work/script.jsonl"
+grep -q "\"gbuffer\":\"$work/export\".*\"frameSize\":\[480,270\]" "$log" ||
+    fail "no frame logged the G-buffer at 480x270"
+[ "$(field gbuffer)" = '""' ] || fail "the last frame still shows G-buffer $(field gbuffer)"
+
+# --- 2. --gbuffer and real X input: the camera stays fixed ------------------------------------
+ui_start gbuffer --gbuffer "$work/export" --size 1280x720 --frame-sleep-ms 20
+[ "$(field gbuffer)" = "\"$work/export\"" ] || fail "the frame log names G-buffer $(field gbuffer)"
+[ "$(field frameSize)" = "[480,270]" ] || fail "the frame is $(field frameSize), not the G-buffer's 480x270"
+set -- $(field viewport | tr -d '[]' | tr ',' ' ')
+# Letterboxed at the G-buffer's aspect (16:9): width / height within a pixel of it.
+awk -v w="$3" -v h="$4" 'BEGIN { exit !(w > 100 && h > 50 && (w / h - 480 / 270) ^ 2 < 0.01) }' ||
+    fail "the viewport image is $3x$4, not letterboxed at 480:270"
+camera=$(field camera)
+set -- $(rect_point viewport 0.5 0.5)
+xdotool mousemove --window "$wid" "$1" "$2" sleep 0.1 mousedown 1 mousemove_relative --sync 60 30 \
+    sleep 0.1 mousemove_relative --sync 60 30 sleep 0.1 mouseup 1
+wait_frames 4
+[ "$(field camera)" = "$camera" ] || fail "a drag moved the fixed camera from $camera to $(field camera)"
+[ "$(field gbuffer)" = "\"$work/export\"" ] || fail "the G-buffer closed during the drag"
+shot gbuffer_live
+ui_quit "Ctrl+Q did not quit the editor showing a G-buffer"
+
+# --- 3. --gbuffer of a bad manifest: one sentence, exit code 2 --------------------------------
+set +e
+"$bin" --gbuffer "$work/bad/manifest.json" --frames 3 --size 320x200 > "$work/bad.log" 2>&1
+rc=$?
+set -e
+[ "$rc" = 2 ] || fail "--gbuffer of a bad manifest exited with $rc, not 2"
+[ "$(grep -c 'normal.encoding' "$work/bad.log")" = 1 ] || fail "not one sentence: $(cat "$work/bad.log")"
+
+echo "$ui_name: PASS (screenshot $work/gbuffer_open.png)"
