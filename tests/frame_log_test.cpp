@@ -40,6 +40,8 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     l.kqField = {120, 300, 60, 19};
     l.plotRadius = 2.5f;
     l.plotGhostRadius = 3.25f;
+    l.plotPopup = {400, 320, 280, 168};
+    l.plotPopupRadius = 2.0f;
     l.plotLight = {1.0f, 0.7f, 0.0075f, 2.0f, 5.0f / 256.0f};
     nlohmann::json const j = nlohmann::json::parse(frameLogJson(l));
     EXPECT_EQ(j["frame"], 41);
@@ -78,6 +80,8 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     EXPECT_EQ(j["kqField"], nlohmann::json::parse("[120,300,60,19]"));
     EXPECT_DOUBLE_EQ(j["plotRadius"].get<double>(), 2.5);
     EXPECT_DOUBLE_EQ(j["plotGhostRadius"].get<double>(), 3.25);
+    EXPECT_EQ(j["plotPopup"], nlohmann::json::parse("[400,320,280,168]"));
+    EXPECT_DOUBLE_EQ(j["plotPopupRadius"].get<double>(), 2.0);
     ASSERT_EQ(j["plotLight"].size(), 5u);
     EXPECT_FLOAT_EQ(j["plotLight"][2].get<float>(), 0.0075f);
     EXPECT_FLOAT_EQ(j["plotLight"][4].get<float>(), 5.0f / 256.0f);

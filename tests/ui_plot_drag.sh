@@ -82,6 +82,15 @@ for step in 1 2 3 4 5 6; do
     wait_frames 2
 done
 wait_frames 3
+# The plot is still below the fold: during the drag it follows the pointer in a tooltip, marking the
+# radius of the light as the drag has made it.
+drawn plotPopup || { xdotool mouseup 1; fail "no plot beside the pointer while Kq is dragged ($(field plotPopup))"; }
+popup=$(num plotPopupRadius)
+echo "during the drag, plot beside the pointer at $(field plotPopup): r = $popup"
+shot drag_popup
+awk -v a="$popup" -v b="$old" 'BEGIN { exit !(a < b - 0.01) }' ||
+    { xdotool mouseup 1; fail "the plot beside the pointer marks r = $popup, not below the old $old"; }
+near "$popup" "$(solved)" 0.01 || { xdotool mouseup 1; fail "the plot beside the pointer marks r = $popup, solved here $(solved)"; }
 # Still holding the button, the wheel scrolls the window down until the plot is wholly in view (the
 # drag follows the pointer's motion, which the wheel does not move).
 n=0
@@ -92,6 +101,7 @@ while ! drawn plotRect; do
     wait_frames 3
 done
 echo "during the drag, after $n more wheel steps: plot $(field plotRect)"
+drawn plotPopup && { xdotool mouseup 1; fail "the plot is in view and still shown beside the pointer too"; }
 during=$(num plotRadius)
 ghost=$(num plotGhostRadius)
 shot drag

@@ -98,6 +98,8 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.kqField = state.lightsPanel.kqFieldRect;
     line.plotRadius = state.lightsPanel.plotRadius;
     line.plotGhostRadius = state.lightsPanel.plotGhostRadius;
+    line.plotPopup = state.lightsPanel.plotPopupRect;
+    line.plotPopupRadius = state.lightsPanel.plotPopupRadius;
     line.plotLight = state.lightsPanel.plotLight;
     line.overviewButton = overview.buttonRect;
     for (ui::OverviewCell const& c : overview.cells) {

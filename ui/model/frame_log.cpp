@@ -114,6 +114,7 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"lightsWindow\":" + rect(l.lightsWindow) + ",\"plotRect\":" + rect(l.plotRect) +
            ",\"kqField\":" + rect(l.kqField);
     out += ",\"plotRadius\":" + number(l.plotRadius) + ",\"plotGhostRadius\":" + number(l.plotGhostRadius);
+    out += ",\"plotPopup\":" + rect(l.plotPopup) + ",\"plotPopupRadius\":" + number(l.plotPopupRadius);
     out += ",\"plotLight\":[";
     for (std::size_t i = 0; i < l.plotLight.size(); ++i) {
         char text[32];

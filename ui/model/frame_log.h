@@ -108,6 +108,8 @@ struct FrameLogLine {
     glm::vec4 kqField{0.0f};
     float plotRadius = -1.0f;
     float plotGhostRadius = -1.0f;
+    glm::vec4 plotPopup{0.0f};      // the plot beside the pointer during a drag (LightsPanelState::plotPopupRect)
+    float plotPopupRadius = -1.0f;  // the radius it marks
     // The plotted light's inputs to its radius, Kc, Kl, Kq, Imax (intensity times the largest
     // colour channel) and the cut-off, so a test can solve the radius itself (empty when not drawn).
     std::vector<float> plotLight;

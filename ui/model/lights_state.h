@@ -46,6 +46,10 @@ struct LightsPanelState {
     float plotRadius = -1.0f;
     float plotGhostRadius = -1.0f;
     std::vector<float> plotLight;  // the plotted light's Kc, Kl, Kq, Imax, cut-off (empty when not drawn)
+    // The plot shown beside the pointer while an attenuation field is dragged with the plot out of
+    // view (window coordinates; 0 when not shown) and the radius it marks (-1 when not shown).
+    glm::vec4 plotPopupRect{0.0f};
+    float plotPopupRadius = -1.0f;
 };
 
 // Whether two lights have the same attenuation curve inputs: kind, Kc, Kl, Kq, intensity, cut-off

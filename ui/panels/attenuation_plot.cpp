@@ -117,11 +117,11 @@ AttenuationPlotMarks drawAttenuationPlot(PointLight const& light, bool logScale,
                     IM_COL32(90, 200, 255, 255), label);
     }
     if (pixelDistance && *pixelDistance > c.maxDistance) {
-        // Past the axis: said at its end, so the user knows the light adds nothing there.
+        // Past the axis: said at its end, below the legend (the threshold's label holds the bottom).
         char label[48];
         std::snprintf(label, sizeof label, "pixel at %.2f: past the axis", *pixelDistance);
         float const w = ImGui::CalcTextSize(label).x;
-        dl->AddText(ImVec2(std::max(p1.x - w - 4, p0.x + 2), p1.y - 28), IM_COL32(255, 160, 0, 255), label);
+        dl->AddText(ImVec2(std::max(p1.x - w - 6, p0.x + 2), p0.y + 58), IM_COL32(255, 160, 0, 255), label);
     } else if (pixelDistance && *pixelDistance >= 0.0f) {
         // The inspected pixel: where it sits on the curve is what the light adds there.
         ImVec2 const q0 = axes.at(*pixelDistance, axes.yTop), q1 = axes.at(*pixelDistance, axes.yBottom);
@@ -129,16 +129,20 @@ AttenuationPlotMarks drawAttenuationPlot(PointLight const& light, bool logScale,
         char label[48];
         std::snprintf(label, sizeof label, "pixel %.2f", *pixelDistance);
         float const w = ImGui::CalcTextSize(label).x;
-        dl->AddText(ImVec2(std::clamp(q0.x + 3, p0.x + 2, p1.x - w - 2), p1.y - 28), IM_COL32(255, 160, 0, 255), label);
+        dl->AddText(ImVec2(std::clamp(q0.x + 3, p0.x + 2, p1.x - w - 2), p0.y + 58), IM_COL32(255, 160, 0, 255), label);
     }
     // The ghost under the curve: the applied curve as it was when the drag began.
     if (g) polyline(dl, axes, *g, g->applied, IM_COL32(255, 255, 255, 80), 2.0f);
     polyline(dl, axes, c, c.classic, IM_COL32(150, 150, 150, 160), 1.0f);
     polyline(dl, axes, c, c.applied, IM_COL32(255, 255, 255, 255), 2.0f);
-    // Legend, top left: the bright curve is what the renderer adds, the faint one the textbook form.
-    dl->AddText(ImVec2(p0.x + 6, p0.y + 16), IM_COL32(255, 255, 255, 255), "applied");
-    dl->AddText(ImVec2(p0.x + 6, p0.y + 30), IM_COL32(150, 150, 150, 255), "1/(Kc+Kl d+Kq d²)");
-    if (g) dl->AddText(ImVec2(p0.x + 6, p0.y + 44), IM_COL32(255, 255, 255, 110), "before the drag");
+    // Legend, top right, where a falling curve leaves room: the bright curve is what the renderer
+    // adds, the faint one the textbook form.
+    auto legend = [&](float y, ImU32 colour, char const* text) {
+        dl->AddText(ImVec2(std::max(p0.x + 2, p1.x - ImGui::CalcTextSize(text).x - 6), p0.y + y), colour, text);
+    };
+    legend(16, IM_COL32(255, 255, 255, 255), "applied");
+    legend(30, IM_COL32(150, 150, 150, 255), "1/(Kc+Kl d+Kq d²)");
+    if (g) legend(44, IM_COL32(255, 255, 255, 110), "before the drag");
     char axisLabel[64];
     std::snprintf(axisLabel, sizeof axisLabel, "0 .. %.2f units%s%s", c.maxDistance, logScale ? "  (log)" : "",
                   fixedMaxDistance > 0.0f ? "  (fixed)" : "");

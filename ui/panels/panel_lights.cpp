@@ -87,6 +87,23 @@ void fieldHelp(LightField const& f) {
     ImGui::SetTooltip("%s", tip.c_str());
 }
 
+// While an attenuation field is dragged and the plot is not wholly in view (at 1280x720 it lies
+// below the Lights window's fold, or its section is closed), the plot follows the pointer in a
+// tooltip, ghost included: the curve a drag of Kq changes is on screen during the drag.
+void drawPlotPopup(LightsPanelState& state, PointLight const& light, std::optional<float> pixelDistance, bool active) {
+    if (!active || state.plotRect.z > 0.0f) return;
+    ImGui::BeginTooltip();
+    ImGui::TextUnformatted("Attenuation plot (scroll down for the full one)");
+    float const w = std::max(280.0f, ImGui::GetFontSize() * 20.0f);
+    AttenuationPlotMarks const marks = drawAttenuationPlot(light, state.plotLogScale, ImVec2(w, w * 0.6f),
+                                                           state.plotFixedAxis ? state.plotAxisMax : 0.0f,
+                                                           pixelDistance, shownPlotGhost(state, light));
+    ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    state.plotPopupRect = {a.x, a.y, b.x - a.x, b.y - a.y};
+    state.plotPopupRadius = marks.radius;
+    ImGui::EndTooltip();
+}
+
 // The last item's rectangle (x, y, width, height) in window coordinates; 0 unless it is wholly in
 // view (a test's click at a point of it must land on it, not on the next window).
 glm::vec4 visibleItemRect() {
@@ -107,11 +124,13 @@ bool attenuationField(LightField const& f) {
 // whose edit still belongs to the drag) and where the Kq field is (visibleItemRect).
 struct RowsSeen {
     bool attenuationHeld = false;
+    bool attenuationActive = false;  // held now (the drag goes on), not just released
     glm::vec4 kqRect{0.0f};
 };
 
 void noteField(LightField const& f, RowsSeen& seen) {
     if (attenuationField(f) && (ImGui::IsItemActive() || ImGui::IsItemDeactivated())) seen.attenuationHeld = true;
+    if (attenuationField(f) && ImGui::IsItemActive()) seen.attenuationActive = true;
     if (f.name == "kq") seen.kqRect = visibleItemRect();
 }
 
@@ -251,6 +270,14 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights, std:
         return;
     }
     LightRadius const r = lightRadius(light);
+    // Drawn after the section below, which tells whether the plot is in view.
+    struct PlotPopup {
+        LightsPanelState& state;
+        PointLight const& light;
+        std::optional<float> pixelDistance;
+        bool active;
+        ~PlotPopup() { drawPlotPopup(state, light, pixelDistance, active); }
+    } const popup{state, light, pixelDistance, seen.attenuationActive};
     // The plot is a section of its own, open by default and never squeezed below 160 px: the
     // curve is what the attenuation terms above are for.
     if (!ImGui::CollapsingHeader("Attenuation plot", ImGuiTreeNodeFlags_DefaultOpen)) return;
@@ -286,8 +313,8 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights, std:
 
 void drawLightsPanel(LightsPanelState& state, std::vector<PointLight>& lights, LightAnimation& animation,
                      Bounds const& sceneBounds, std::optional<float> pixelDistance) {
-    state.window = state.plotRect = state.kqFieldRect = glm::vec4(0.0f);
-    state.plotRadius = state.plotGhostRadius = -1.0f;
+    state.window = state.plotRect = state.kqFieldRect = state.plotPopupRect = glm::vec4(0.0f);
+    state.plotRadius = state.plotGhostRadius = state.plotPopupRadius = -1.0f;
     state.plotLight.clear();
     placeWindow(EditorWindow::Lights);
     if (ImGui::Begin(windowName(EditorWindow::Lights), nullptr, editorWindowFlags())) {
