@@ -1,6 +1,7 @@
 // The editor's session life cycle without a window: autosave timing on a fake clock, the
 // recovery offer after an unclean exit, all-or-nothing opening, undo through the controller.
 #include "editor/session_controller.h"
+#include "model/gbuffer_opening.h"
 #include "run_command.h"
 #include "session/atomic_file.h"
 #include "session/editor_session.h"
@@ -262,4 +263,42 @@ TEST(SessionController, ALessonsStepsAreNotEditsButEditsBeforeAndDuringOneAre) {
     f.state.lights.resize(1);
     c.lessonStepShown(f.state);
     EXPECT_TRUE(c.hasUnsavedEdits(f.state));
+}
+
+// With another program's G-buffer open the lights shown are the G-buffer's: saving, autosaving
+// and the unsaved-edits question still speak of the scene behind it (model/gbuffer_opening.h).
+TEST(SessionController, WithAGBufferOpenSessionsStoreTheSceneBehindIt) {
+    Fixture f("controller_gbuffer");
+    SessionController c(f.clock(), RecoveryDir(f.dir), 5008, {3.0, 20.0});
+    for (std::size_t i = 0; i < f.state.lights.size(); ++i) f.state.lights[i].intensity = 1.0f + float(i);
+    c.start(f.state, 32);
+    GBufferOpenState gbuffer;
+    c.setSceneBehind([&gbuffer](EditorState const& s) -> std::optional<EditorState> {
+        if (!gbufferOpen(gbuffer)) return std::nullopt;
+        return sceneBehind(s, gbuffer);
+    });
+    // Open by hand, as installGBuffer leaves things: the scene kept, the G-buffer's two lights shown.
+    gbuffer.path = "/x/their_gbuffer";
+    gbuffer.scene = SceneViewSnapshot{f.state.camera, f.state.rig, f.state.lights, 1, f.state.pipeline.shininess};
+    f.state.lights.assign(2, PointLight{});
+    f.state.lights[0].intensity = 9.0f;
+    EXPECT_FALSE(c.hasUnsavedEdits(f.state)) << "the G-buffer's lights are not an edit of the scene";
+    f.state.lights[1].intensity = 7.0f;  // a light of the G-buffer tweaked
+    f.run(c, 10.0);
+    EXPECT_EQ(c.autosaves(), 0) << "the scene did not change";
+
+    std::string const path = f.dir + "/saved.json";
+    ASSERT_EQ(c.saveSession(path, f.state), std::nullopt);
+    SessionLoad const saved = loadSession(path);
+    ASSERT_TRUE(saved.session) << saved.error;
+    ASSERT_EQ(saved.session->lights.size(), 4u) << "the scene's lights, not the G-buffer's two";
+    for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(saved.session->lights[i].intensity, 1.0f + float(i));
+    EXPECT_EQ(saved.session->scene, "default");
+
+    // Closed: the scene's lights are shown again and sessions speak of what is shown.
+    closeGBuffer(gbuffer, f.state);
+    EXPECT_EQ(f.state.lights.size(), 4u);
+    f.state.lights[3].intensity = 0.5f;
+    EXPECT_TRUE(c.hasUnsavedEdits(f.state));
+    c.endCleanly();
 }

@@ -66,6 +66,8 @@ frames 3
 capture dimmer
 expect-different relit dimmer 0.0005
 light 0 intensity 1
+# A session saved while it is open stores the scene behind it (its 32 lights), not the G-buffer's.
+save-session $work/while_open.json
 # Bad inputs while it is open: refused, the G-buffer stays.
 drop-files $work/mismatch
 frames 2
@@ -94,6 +96,9 @@ log="$work/script.jsonl"
 grep -q "\"gbuffer\":\"$work/export\".*\"frameSize\":\[480,270\]" "$log" ||
     fail "no frame logged the G-buffer at 480x270"
 [ "$(field gbuffer)" = '""' ] || fail "the last frame still shows G-buffer $(field gbuffer)"
+saved=$(grep -o '"kq"' "$work/while_open.json" | wc -l)
+[ "$saved" = 32 ] || fail "the session saved with the G-buffer open holds $saved lights, not the scene's 32"
+grep -q '"source": *"default"' "$work/while_open.json" || fail "the session saved with the G-buffer open names no default scene"
 
 # --- 2. --gbuffer and real X input: the camera stays fixed ------------------------------------
 ui_start gbuffer --gbuffer "$work/export" --size 1280x720 --frame-sleep-ms 20
@@ -111,6 +116,14 @@ wait_frames 4
 [ "$(field camera)" = "$camera" ] || fail "a drag moved the fixed camera from $camera to $(field camera)"
 [ "$(field gbuffer)" = "\"$work/export\"" ] || fail "the G-buffer closed during the drag"
 shot gbuffer_live
+# A lesson brings its own scene: a real click on the course's first row starts it, which closes the
+# G-buffer, so the lesson shows on the scene and Leave returns to the scene.
+set -- $(rect_point courseRows 0.5 0.5)
+[ "${1:-0}" -gt 0 ] || fail "the course's first row is not wholly in view: $(field courseRows)"
+click_at "$1" "$2"
+wait_frames 6
+[ "$(field gbuffer)" = '""' ] || fail "starting a lesson left G-buffer $(field gbuffer) shown"
+[ "$(field lesson)" != '""' ] || fail "the click on the course's first row opened no lesson"
 ui_quit "Ctrl+Q did not quit the editor showing a G-buffer"
 
 # --- 3. --gbuffer of a bad manifest: one sentence, exit code 2 --------------------------------

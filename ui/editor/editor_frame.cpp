@@ -189,8 +189,7 @@ bool beginFrame(Editor& editor, FrameTimes& times) {
     glfwPollEvents();
     takeFrameInput(editor.input);
     // The window's close button asks first too when edits would be lost.
-    if (glfwWindowShouldClose(editor.window()) && !editor.script &&
-        editor.sessions->hasUnsavedEdits(ui::sceneBehind(editor.state, editor.loading.gbuffer))) {
+    if (glfwWindowShouldClose(editor.window()) && !editor.script && editor.sessions->hasUnsavedEdits(editor.state)) {
         glfwSetWindowShouldClose(editor.window(), GLFW_FALSE);
         ui::mayDiscard(editor.discard, ui::DiscardingAction::Quit, true);
     }

@@ -143,6 +143,7 @@ void start(Editor& editor, int index, std::optional<int> step = std::nullopt) {
     ui::Lesson const& next = editor.lessonLibrary.lessons[std::size_t(index)];
     std::string const scene = next.scenePath.empty() ? "default" : next.scenePath;
     if (l.lesson < 0) {
+        closeImportedGBuffer(editor);  // the lesson returns to the scene, not to a G-buffer
         std::string const sceneBefore = currentScene(editor);
         ui::LessonReturn before = ui::captureLessonReturn(editor.state);
         editor.sessions->lessonStarting(editor.state);  // before the scene changes: were there edits?

@@ -205,6 +205,9 @@ void rememberHomeView(Editor& editor);
 EditRequest drawPanels(Editor& editor, FrameTimes const& times);
 // What the panels asked for and the shortcuts: picking, inspector, camera, sessions, undo.
 void handleRequests(Editor& editor, FrameTimes const& times, EditRequest const& edit);
+// Closes an open imported G-buffer, giving back the scene's camera and lights: a session opened,
+// restored or started afresh, or a lesson started, brings its own scene and lands on the scene's state.
+void closeImportedGBuffer(Editor& editor);
 // The Lessons window and what it asked for (ui/editor_lessons.cpp).
 void drawLessons(Editor& editor);
 // The lesson shown and the Lessons window's buttons, for --log-frames.

@@ -84,19 +84,10 @@ void handleViewRequests(Editor& editor, float dt) {
         ui::applyCameraInput(state.rig, state.camera, gatherCameraInput(editor, dt));
 }
 
-// A session opened, restored or started afresh brings its own scene: an open G-buffer is closed
-// first, so the session lands on the scene's state and the renderer draws the scene again.
-void closeGBufferForSession(Editor& editor) {
-    if (!ui::gbufferOpen(editor.loading.gbuffer)) return;
-    editor.renderer->clearImportedGBuffer();
-    ui::closeGBuffer(editor.loading.gbuffer, editor.state);
-    ++editor.sceneGeneration;
-}
-
 // Whether an action that replaces the session must ask first. Scripted runs never ask: a
 // script sets state directly and would wait for an answer forever.
 bool mustAsk(Editor const& editor) {
-    return !editor.script && editor.sessions->hasUnsavedEdits(ui::sceneBehind(editor.state, editor.loading.gbuffer));
+    return !editor.script && editor.sessions->hasUnsavedEdits(editor.state);
 }
 
 // Scene opens and session opens wait for the answer when edits would be lost.
@@ -137,7 +128,7 @@ void releaseConfirmed(Editor& editor, ui::SessionRequest& request) {
             editor.state.quitRequested = true;
             break;
         case ui::DiscardingAction::NewSession:
-            closeGBufferForSession(editor);
+            closeImportedGBuffer(editor);
             if (auto error = editor.sessions->newSession(editor.state, editor.sceneLoader))
                 ui::logMessage(editor.state.log, *error, true);
             break;
@@ -178,7 +169,7 @@ void carryOut(Editor& editor, EditorAction action) {
             break;
         case EditorAction::NewSession:
             if (ui::mayDiscard(editor.discard, ui::DiscardingAction::NewSession, mustAsk(editor))) {
-                closeGBufferForSession(editor);
+                closeImportedGBuffer(editor);
                 if (auto error = sessions.newSession(state, editor.sceneLoader))
                     ui::logMessage(state.log, *error, true);
             }
@@ -240,7 +231,7 @@ void handleSessionRequests(Editor& editor, FrameTimes const& times) {
     holdDiscardingRequests(editor, request);
     releaseConfirmed(editor, request);
     if (request.kind == ui::SessionRequestKind::Open || request.kind == ui::SessionRequestKind::Restore)
-        closeGBufferForSession(editor);
+        closeImportedGBuffer(editor);
     if (request.kind != ui::SessionRequestKind::None) {
         FrameExport exported{state.camera, editor.drawn, state.pipeline, times.frameStats, state.sceneTriangles, {}};
         sessions.handle(request, state, *editor.renderer, exported, editor.sceneLoader);
@@ -250,6 +241,14 @@ void handleSessionRequests(Editor& editor, FrameTimes const& times) {
 }
 
 }  // namespace
+
+void closeImportedGBuffer(Editor& editor) {
+    if (!ui::gbufferOpen(editor.loading.gbuffer)) return;
+    editor.renderer->clearImportedGBuffer();
+    ui::closeGBuffer(editor.loading.gbuffer, editor.state);
+    ++editor.sceneGeneration;
+    editor.sessions->sceneChanged(editor.state);  // the G-buffer's light edits are not undone into the scene
+}
 
 void handleRequests(Editor& editor, FrameTimes const& times, EditRequest const& edit) {
     EditorState& state = editor.state;

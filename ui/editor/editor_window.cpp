@@ -256,6 +256,12 @@ std::optional<int> startEditor(Editor& editor) {
     char const* recoveryEnv = std::getenv("GBL_RECOVERY_DIR");
     if (!editor.unattended || (recoveryEnv && *recoveryEnv)) recoveryDir.emplace(ui::defaultRecoveryDir());
     ui::SessionController& sessions = editor.sessions.emplace(ui::steadyClock(), recoveryDir, long(::getpid()));
+    // With a G-buffer open, a session still stores the scene behind it.
+    sessions.setSceneBehind(
+        [&gbuffer = editor.loading.gbuffer](ui::EditorState const& s) -> std::optional<ui::EditorState> {
+            if (!ui::gbufferOpen(gbuffer)) return std::nullopt;
+            return ui::sceneBehind(s, gbuffer);
+        });
     sessions.start(state, editor.defaultLightCount);
     if (options.sessionPath) {
         if (auto error = sessions.openSession(*options.sessionPath, state, editor.sceneLoader)) {

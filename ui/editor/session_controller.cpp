@@ -24,7 +24,7 @@ SessionController::SessionController(Clock clock, std::optional<RecoveryDir> rec
 void SessionController::start(EditorState& state, int defaultSceneLights) {
     defaultSceneLights_ = defaultSceneLights;
     undo_.reset(undoSnapshot(state));
-    lastSeen_ = lastSaved_ = sessionToJson(captureSession(state, defaultSceneLights_));
+    lastSeen_ = lastSaved_ = sessionToJson(captured(state));
     savedEdits_ = editsText(state);
     if (!recovery_) return;
     // Look before marking: our own marker must not count as a crash.
@@ -56,7 +56,7 @@ void SessionController::afterFrame(EditorState& state, bool editing) {
         return;
     }
     lastCheck_ = now;
-    std::string text = sessionToJson(captureSession(state, defaultSceneLights_));
+    std::string text = sessionToJson(captured(state));
     if (text != lastSeen_) {
         lastSeen_ = std::move(text);
         if (lastSeen_ != lastSaved_) autosave_.changed();
@@ -66,7 +66,7 @@ void SessionController::afterFrame(EditorState& state, bool editing) {
 
 bool SessionController::autosaveNow(EditorState const& state) {
     if (!recovery_ || !autosave_.pending()) return false;
-    std::string const text = sessionToJson(captureSession(state, defaultSceneLights_));
+    std::string const text = sessionToJson(captured(state));
     if (auto err = writeFileAtomically(recovery_->sessionPath(pid_), text)) {
         autosave_.failed();
         return false;
@@ -136,8 +136,16 @@ std::optional<std::string> SessionController::newSession(EditorState& state, Sce
     return std::nullopt;
 }
 
+Session SessionController::captured(EditorState const& state) const {
+    if (sceneBehind_) {
+        if (std::optional<EditorState> const scene = sceneBehind_(state))
+            return captureSession(*scene, defaultSceneLights_);
+    }
+    return captureSession(state, defaultSceneLights_);
+}
+
 std::string SessionController::editsText(EditorState const& state) const {
-    Session session = captureSession(state, defaultSceneLights_);
+    Session session = captured(state);
     session.camera = Camera{};
     session.animation.time = 0.0f;
     // Nor is a range that auto-fit refits from the data, or what a viewer last read.
@@ -184,7 +192,7 @@ std::optional<std::string> SessionController::openSession(std::string const& pat
 }
 
 std::optional<std::string> SessionController::saveSession(std::string const& path, EditorState const& state) {
-    if (auto err = ui::saveSession(path, captureSession(state, defaultSceneLights_))) return err;
+    if (auto err = ui::saveSession(path, captured(state))) return err;
     panel.currentPath = path;
     savedEdits_ = editsText(state);
     if (lessonBaseline_) {  // saved mid-lesson: what is shown is in the file now

@@ -74,6 +74,13 @@ public:
     // would discard. Looking around is not an edit: the camera and the animation clock are left out.
     bool hasUnsavedEdits(EditorState const& state) const;
 
+    // What a session stores when the editor shows something in place of the scene (an imported
+    // G-buffer, model/gbuffer_opening.h): the state with the scene's camera and lights put back, or
+    // nullopt when the scene is shown. Saving, autosaving and the unsaved-edits question then speak of
+    // the scene, never of the G-buffer's lights.
+    using SceneBehind = std::function<std::optional<EditorState>(EditorState const&)>;
+    void setSceneBehind(SceneBehind f) { sceneBehind_ = std::move(f); }
+
     int autosaves() const { return autosaves_; }
     std::optional<RecoveryDir> const& recovery() const { return recovery_; }
     std::string recoveryPath() const { return recovery_ ? recovery_->sessionPath(pid_) : std::string(); }
@@ -84,6 +91,8 @@ public:
 private:
     std::optional<std::string> applyLoaded(Session const& session, EditorState& state, SceneLoader const& load);
     std::string editsText(EditorState const& state) const;
+    Session captured(EditorState const& state) const;  // captureSession of the scene behind (sceneBehind_)
+    SceneBehind sceneBehind_;
     std::optional<std::string> lessonBaseline_;  // the edits text of the lesson step shown
     bool editsBeforeLesson_ = false;
 
