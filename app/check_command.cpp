@@ -59,6 +59,8 @@ int runCheck(CheckOptions const& o) {
             std::printf("%s (%s): %zu pixels, %.2f%%%s\n  %s\n", f.check.c_str(), f.attachment.c_str(), f.pixels,
                         f.share * 100.0, f.heuristic ? ", heuristic" : "", f.cause.c_str());
         if (r.findings.empty()) std::printf("no findings\n");
+        std::printf("precision (what each attachment's storage can hold):\n");
+        for (auto const& p : r.precision) std::printf("  %s\n", precisionLine(p).c_str());
     }
     if (o.time)
         std::fprintf(stderr, "check: open %.3f s, checks %.3f s\n",

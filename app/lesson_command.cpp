@@ -5,6 +5,7 @@
 #include "cli_values.h"
 #include "frame_export.h"
 #include "lesson_render.h"
+#include "model/lesson_claims.h"
 #include "scene/default_scene.h"
 #include "scene_setup.h"
 
@@ -44,7 +45,7 @@ int runLessons(LessonsOptions const& o) {
                 nlohmann::ordered_json step = {
                     {"step", i + 1},
                     {"title", st.text.title},
-                    {"claim", st.claim ? std::string(enumName(ui::kClaimKindNames, st.claim->kind)) : ""},
+                    {"claim", st.claim ? std::string(ui::claimKindInfo(st.claim->kind).name) : ""},
                     {"question", st.text.question},
                     {"answer", st.text.answer},
                     {"tasks", tasks}};
@@ -130,7 +131,7 @@ int runRenderLesson(RenderOptions const& o) {
                                     {"title", step.text.title},
                                     {"pixel", {frame.pixel.x, frame.pixel.y}}};
     if (frame.claim) {
-        claim["claim"] = std::string(enumName(ui::kClaimKindNames, step.claim->kind));
+        claim["claim"] = std::string(ui::claimKindInfo(step.claim->kind).name);
         claim["holds"] = frame.claim->holds;
         claim["detail"] = frame.claim->detail;
     }

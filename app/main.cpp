@@ -97,6 +97,7 @@ int main(int argc, char** argv) {
         }
         editor.width = size->width;
         editor.height = size->height;
+        editor.sizeGiven = true;
     }
     if (editor.uiScale) {
         std::string error;

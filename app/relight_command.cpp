@@ -50,7 +50,9 @@ int runRenderImported(RenderOptions const& o) {
     if (!relight.frame) return refuse(relight.error);
     ImportedFrame const& frame = *relight.frame;
     std::vector<PointLight> const lights = loaded.gbuffer->manifest.lights;
-    settings.shininess = loaded.gbuffer->manifest.shininess;
+    // The manifest's shading, unless --shading names one.
+    ShadingModel const shading = o.given.count("--shading") ? settings.shading : loaded.gbuffer->manifest.shading;
+    applyManifestShading(loaded.gbuffer->manifest.shininess, shading, settings);
     settings.lightCubes = false;  // sized to a scene (importedSettings)
     if (auto err = prepareOutDir(o.outDir)) return refuse(*err);
 

@@ -44,6 +44,7 @@ std::optional<PipelineSettings> renderSettings(RenderOptions const& o, std::stri
     auto const blit = enumFromName<DepthCopy>(kDepthCopyNames, o.blit);
     auto const layout = enumFromName<GBufferLayout>(kGBufferLayoutNames, o.layout);
     auto const accumulation = enumFromName<LightAccumulation>(kLightAccumulationNames, o.accumulation);
+    auto const shading = enumFromName<ShadingModel>(kShadingModelNames, o.shading);
     if (!mode)
         *error = "--mode must be quad, volumes, tiled, forward or clustered, got '" + o.mode + "'";
     else if (!cull)
@@ -54,12 +55,15 @@ std::optional<PipelineSettings> renderSettings(RenderOptions const& o, std::stri
         *error = "--layout must be classic, packed, naive8 or rgb10a2, got '" + o.layout + "'";
     else if (!accumulation)
         *error = "--accumulation must be single or split, got '" + o.accumulation + "'";
+    else if (!shading)
+        *error = "--shading must be gbuffer-lab or learnopengl, got '" + o.shading + "'";
     else {
         settings.mode = *mode;
         settings.cull = *cull;
         settings.depthCopy = *blit;
         settings.layout = *layout;
         settings.accumulation = *accumulation;
+        settings.shading = *shading;
         return settings;
     }
     return std::nullopt;
@@ -77,9 +81,15 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
     sub.add_option("--accumulation", o.accumulation,
                    "Lights into one lit target (single) or diffuse and specular targets plus a combine pass (split)")
         ->capture_default_str();
+    sub.add_option("--shading", o.shading,
+                   "Lighting equation: gbuffer-lab (docs/lighting.md) or learnopengl (LearnOpenGL's deferred shader: "
+                   "no attenuation window; with --gbuffer it overrides the manifest's)")
+        ->capture_default_str();
     sub.add_option("--cull", o.cull, "Light volume cull mode: back, front, none, flip or stencil")
         ->capture_default_str();
-    sub.add_option("--view", o.views, "Extra debug view(s) to write as view_NAME.png");
+    sub.add_option("--view", o.views,
+                   "Extra debug view(s) to write as view_NAME.png (position, depth and depth_linear with the 1-99 % "
+                   "range of the drawn pixels; the EXRs hold the values)");
     cli::addShared(sub, cli::kScene, o.scene);
     sub.add_option("--camera", o.camera,
                    "View from the glTF file's camera N (0, 1, ... as the editor's View menu lists them)");
@@ -101,8 +111,9 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
     sub.add_option("--until", o.until,
                    "Stop after pass PASS (e.g. geometry, lighting, depth_copy) and write the frame as it stands");
     sub.parse_complete_callback([&sub, &o] {
-        for (char const* name : {cli::kScene.name, cli::kLights.name, "--time", "--blit", "--mode", "--layout",
-                                 "--accumulation", "--cull", cli::kSize.name, cli::kSession.name, "--camera"})
+        for (char const* name :
+             {cli::kScene.name, cli::kLights.name, "--time", "--blit", "--mode", "--layout", "--accumulation",
+              "--shading", "--cull", cli::kSize.name, cli::kSession.name, "--camera"})
             if (sub.count(name) > 0) o.given.insert(name);
     });
 }
@@ -175,6 +186,7 @@ int runRender(RenderOptions const& o) {
         if (o.given.count("--cull")) settings.cull = fromOptions.cull;
         if (o.given.count("--layout")) settings.layout = fromOptions.layout;
         if (o.given.count("--accumulation")) settings.accumulation = fromOptions.accumulation;
+        if (o.given.count("--shading")) settings.shading = fromOptions.shading;
         if (o.given.count("--blit")) settings.depthCopy = fromOptions.depthCopy;
         session->pipeline = settings;
         prepared = prepareSessionScene(*session, *o.sessionPath, o.allowOutsideUris, &error);

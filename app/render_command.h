@@ -22,6 +22,7 @@ struct RenderOptions {
     std::string mode = "quad";
     std::string layout = "classic";       // G-buffer layout (core/gbuffer_layout.h)
     std::string accumulation = "single";  // light targets: single or split (docs/lighting.md)
+    std::string shading = "gbuffer-lab";  // the lighting equation (docs/lighting.md, kShadingModelNames)
     std::string cull = "front";
     std::vector<std::string> views;  // extra debug views written as view_<name>.png
     std::optional<std::string> scene;
@@ -49,7 +50,7 @@ void addRenderOptions(CLI::App& sub, RenderOptions& options);
 // no GL context can be had.
 int runRender(RenderOptions const& options);
 
-// The frame settings of --mode, --cull, --blit, --layout and --accumulation; nullopt with the
+// The frame settings of --mode, --cull, --blit, --layout, --accumulation and --shading; nullopt with the
 // one-sentence error in `error` when one is not a known name.
 std::optional<PipelineSettings> renderSettings(RenderOptions const& options, std::string* error);
 // Creates `dir` and checks it can be written into; the error otherwise.

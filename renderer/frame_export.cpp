@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -65,6 +67,34 @@ FloatImage specularImage(FloatImage const& albedo) {
     return s;
 }
 
+std::optional<std::pair<float, float>> readableViewRange(DebugView view, FloatImage const& position,
+                                                         FloatImage const& depth, Camera const& camera) {
+    std::vector<float> values;
+    if (view == DebugView::Position && position.channels == 4) {
+        for (std::size_t i = 0; i + 3 < position.pixels.size(); i += 4) {
+            if (position.pixels[i + 3] == 0.0f) continue;  // alpha 0: nothing drawn there
+            for (std::size_t c = 0; c < 3; ++c)
+                if (std::isfinite(position.pixels[i + c])) values.push_back(position.pixels[i + c]);
+        }
+    } else if ((view == DebugView::Depth || view == DebugView::DepthLinear) && depth.channels == 1) {
+        for (float const d : depth.pixels) {
+            if (!(d < 1.0f)) continue;  // the cleared far plane: background
+            float const v = view == DebugView::Depth ? d : linearDepth(d, camera.nearPlane, camera.farPlane);
+            if (std::isfinite(v)) values.push_back(v);
+        }
+    }
+    if (values.empty()) return std::nullopt;
+    std::sort(values.begin(), values.end());
+    // Nearest rank: the smallest value with at least p % of the values at or below it.
+    auto rank = [&](double p) {
+        std::size_t const n = values.size();
+        std::size_t const k = std::size_t(std::ceil(p / 100.0 * double(n)));
+        return values[std::clamp<std::size_t>(k, 1, n) - 1];
+    };
+    float const low = rank(1.0), high = rank(99.0);
+    return std::make_pair(low, high > low ? high : low + 1e-6f);
+}
+
 std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& frame, std::string const& dir) {
     fs::path const out(dir);
     auto path = [&](std::string const& name) { return (out / name).string(); };
@@ -76,7 +106,8 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
     FloatImage const depth = renderer.readAttachment(Attachment::Depth);
     check(writePng(path("final.png"), renderer.readAttachment(Attachment::Final), 3));
     check(writeExr(path("lighting.exr"), renderer.readAttachment(Attachment::Lighting)));
-    check(writeExr(path("position.exr"), renderer.readAttachment(Attachment::Position)));
+    FloatImage const position = renderer.readAttachment(Attachment::Position);
+    check(writeExr(path("position.exr"), position));
     check(writeExr(path("normal.exr"), renderer.readAttachment(Attachment::Normal)));
     check(writePng(path("albedo.png"), albedo, 3));
     check(writePng(path("specular.png"), specularImage(albedo)));
@@ -102,6 +133,10 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
         ViewTarget target;
         ViewParams params;
         params.view = v;
+        if (auto const range = readableViewRange(v, position, depth, frame.camera)) {
+            params.rangeMin = range->first;
+            params.rangeMax = range->second;
+        }
         renderer.drawView(params, {frame.camera, frame.lights, frame.settings}, target);
         check(writePng(path("view_" + std::string(enumName(kDebugViewNames, v)) + ".png"),
                        renderer.readViewTarget(target), 3));

@@ -11,6 +11,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gbl {
@@ -35,6 +36,13 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
 // Eye-space distances from a read-back depth attachment (the inverse of the perspective depth
 // mapping with the camera's near and far planes), as depth_linear.exr stores them.
 FloatImage linearDepthImage(FloatImage depth, Camera const& camera);
+
+// The range a remapped extra view (position, depth, depth_linear) is written with: the 1st to 99th
+// percentile (nearest rank) of the drawn pixels' values as that view shows them, as the editor's
+// auto-fit does, so that view_depth_linear.png is not all white. nullopt for the views that do not
+// remap, or when nothing is drawn. `position` and `depth` are read-back attachments.
+std::optional<std::pair<float, float>> readableViewRange(DebugView view, FloatImage const& position,
+                                                         FloatImage const& depth, Camera const& camera);
 
 // The alpha channel of the albedo/specular attachment as a one-channel image (specular.png).
 FloatImage specularImage(FloatImage const& albedoSpec);

@@ -17,9 +17,12 @@ uniform int uLightCount;
 
 out vec4 fragColor;
 
+// Light i where it can add anything: within its radius, or anywhere with the learnopengl shading
+// (its attenuation has no window; forward does not cut it, as quad does not).
 vec3 shadeNear(int i, SurfacePoint s, vec3 albedo, float spec) {
     vec4 pr = lightTexel(i * 4);
-    return distance(pr.xyz, s.p) < pr.w ? shadeLight(fetchLight(i), s, albedo, spec) : vec3(0.0);
+    bool near = distance(pr.xyz, s.p) < pr.w || (uShadingModel == SHADING_LEARNOPENGL && pr.w > 0.0);
+    return near ? shadeLight(fetchLight(i), s, albedo, spec) : vec3(0.0);
 }
 
 void main() {

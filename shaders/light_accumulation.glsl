@@ -28,8 +28,12 @@ bool accumulateLight(inout LightSum sum, Light l, SurfacePoint s, float specular
 // at the surface point: the point lies within its radius (windowedAttenuation is zero from the
 // radius on) and in front of the surface (Blinn-Phong adds neither diffuse nor specular light
 // where N.L <= 0). Where it is false, shading the light adds exactly zero, so skipping it is exact.
+// The learnopengl shading lights beyond the radius (unless the mode cuts there) and behind the
+// surface (its specular term is not gated by N.L).
 bool lightMayLight(vec4 positionRadius, SurfacePoint s) {
     vec3 toLight = positionRadius.xyz - s.p;
+    if (uShadingModel == SHADING_LEARNOPENGL)
+        return positionRadius.w > 0.0 && (!uCutAtRadius || length(toLight) < positionRadius.w);
     return length(toLight) < positionRadius.w && dot(s.n, toLight) > 0.0;
 }
 

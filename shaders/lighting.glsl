@@ -12,6 +12,15 @@ struct Light {
 
 uniform vec3 uViewPos;
 uniform float uShininess;
+// gbl::ShadingModel (core/pipeline_settings.h): docs/lighting.md's model, or LearnOpenGL's deferred
+// lighting shader (docs/lighting.md, "The learnopengl shading"): attenuation 1/(Kc + Kl d + Kq d^2)
+// with no window, specular not gated by N.L. uCutAtRadius: the mode lights only inside the
+// radius (volumes, tiled, clustered), so that shading ends there too rather than at a tile's or a
+// volume mesh's edge.
+#define SHADING_GBUFFER_LAB 0
+#define SHADING_LEARNOPENGL 1
+uniform int uShadingModel;
+uniform bool uCutAtRadius;
 
 // A surface point as the light loops see it: position, unit normal, and the unit direction to the
 // eye, which is the same for every light and so is worked out once per pixel, not once per light.
@@ -24,9 +33,12 @@ struct SurfacePoint {
 SurfacePoint surfacePoint(vec3 p, vec3 n) { return SurfacePoint(p, n, normalize(uViewPos - p)); }
 
 // Windowed attenuation: the classic 1/(Kc + Kl d + Kq d^2) minus its value at the radius, so
-// the contribution is exactly zero at and beyond the radius in every mode.
+// the contribution is exactly zero at and beyond the radius in every mode. The learnopengl
+// shading takes the classic term as it is.
 float windowedAttenuation(Light l, float d) {
     float att = 1.0 / (l.attenuation.x + l.attenuation.y * d + l.attenuation.z * d * d);
+    // A light of radius 0 (too dim to reach the threshold, or invalid) adds nothing in either.
+    if (uShadingModel == SHADING_LEARNOPENGL) return l.radius > 0.0 && !(uCutAtRadius && d >= l.radius) ? att : 0.0;
     return d < l.radius ? max(att - l.cutoff, 0.0) : 0.0;
 }
 
@@ -43,7 +55,7 @@ float spotConeFactor(Light l, vec3 L) {
 void blinnPhongSplit(vec3 L, vec3 radiance, SurfacePoint s, out vec3 diffuseLight, out vec3 specularLight) {
     vec3 H = normalize(L + s.V);
     float diff = max(dot(s.n, L), 0.0);
-    float spec = diff > 0.0 ? pow(max(dot(s.n, H), 0.0), uShininess) : 0.0;
+    float spec = diff > 0.0 || uShadingModel == SHADING_LEARNOPENGL ? pow(max(dot(s.n, H), 0.0), uShininess) : 0.0;
     diffuseLight = diff * radiance;
     specularLight = spec * radiance;
 }

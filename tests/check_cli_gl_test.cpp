@@ -16,6 +16,13 @@ TEST(CheckCommand, OwnRenderFolderHasNoFindings) {
     auto const c = runGbufferLab({"check", out, "--json"});
     EXPECT_EQ(c.exitCode, 0) << c.output;
     EXPECT_NE(c.output.find("\"findings\": []"), std::string::npos) << c.output;
+    // Without --json: the same verdict, and a precision line per attachment.
+    auto const t = runGbufferLab({"check", out});
+    EXPECT_EQ(t.exitCode, 0) << t.output;
+    EXPECT_NE(t.output.find("no findings"), std::string::npos) << t.output;
+    EXPECT_NE(t.output.find("precision (what each attachment's storage can hold):"), std::string::npos) << t.output;
+    EXPECT_NE(t.output.find("  normal: "), std::string::npos) << t.output;
+    EXPECT_NE(t.output.find("a highlight of shininess"), std::string::npos) << t.output;
 }
 
 TEST(CheckCommand, BadManifestIsRefusedNamingTheField) {

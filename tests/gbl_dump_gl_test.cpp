@@ -2,6 +2,7 @@
 // wall, seen from above one side, the sky above them) is rendered into an FBO, dumped by the header
 // compiled as C++ here and as C in gbl_dump_c.c, and opened with the importer: the values the GL holds
 // come back at the same pixels, match the scene's analytic values, and `check` finds nothing.
+#include "core/light_math.h"
 #include "gl/framebuffer.h"
 #include "gl/program.h"
 #include "gl/texture.h"
@@ -10,6 +11,8 @@
 #include "import/gbuffer_checks.h"
 #include "import/gbuffer_manifest.h"
 #include "import/imported_gbuffer.h"
+#include "import/relight_frame.h"
+#include "renderer.h"
 #include "run_command.h"
 
 #define GBL_DUMP_STATIC
@@ -331,6 +334,28 @@ std::array<float, 6> const kLightPositions{0.0f, 1.0f, 2.0f, -2.0f, 0.5f, -4.0f}
 std::array<float, 6> const kLightColors{1.0f, 0.5f, 0.2f, 0.1f, 0.3f, 0.9f};
 std::array<float, 2> const kLinear{0.7f, 0.35f};
 
+// The dump options a LearnOpenGL reader passes: the learnopengl preset, the camera's matrices and
+// the two lights above (the options point into this object, so it outlives the gbl_dump call).
+struct LearnOpenGlDump {
+    LearnOpenGlDump(glm::mat4 const& view, glm::mat4 const& projection) {
+        gbl_dump_options_learnopengl(&options);
+        camera.view = glm::value_ptr(view);
+        camera.projection = glm::value_ptr(projection);
+        lights.count = 2;
+        lights.positions = kLightPositions.data();
+        lights.colors = kLightColors.data();
+        lights.linear_each = kLinear.data();
+        lights.quadratic = 1.8f;
+        options.camera = &camera;
+        options.lights = &lights;
+    }
+    LearnOpenGlDump(LearnOpenGlDump const&) = delete;
+    LearnOpenGlDump& operator=(LearnOpenGlDump const&) = delete;
+    gbl_dump_options options;
+    gbl_dump_camera camera{};
+    gbl_dump_lights lights{};
+};
+
 }  // namespace
 
 TEST_F(GbufferDumpGlTest, DumpOpensWithTheGlValuesAndNoFinding) {
@@ -338,19 +363,8 @@ TEST_F(GbufferDumpGlTest, DumpOpensWithTheGlValuesAndNoFinding) {
     GlReadBack const gl = readBack();
     glm::mat4 const view = viewMatrix(), projection = projectionMatrix();
 
-    gbl_dump_options o;
-    gbl_dump_options_learnopengl(&o);
-    gbl_dump_camera camera{};
-    camera.view = glm::value_ptr(view);
-    camera.projection = glm::value_ptr(projection);
-    gbl_dump_lights lights{};
-    lights.count = 2;
-    lights.positions = kLightPositions.data();
-    lights.colors = kLightColors.data();
-    lights.linear_each = kLinear.data();
-    lights.quadratic = 1.8f;
-    o.camera = &camera;
-    o.lights = &lights;
+    LearnOpenGlDump dump(view, projection);
+    gbl_dump_options& o = dump.options;
 
     // The caller's read state, which the dump must leave as it found it.
     GLuint other = 0;
@@ -395,7 +409,7 @@ TEST_F(GbufferDumpGlTest, DumpOpensWithTheGlValuesAndNoFinding) {
         EXPECT_EQ(l.kq, 1.8f);
     }
     EXPECT_EQ(g.manifest.shininess, 16.0f);
-    EXPECT_EQ(g.manifest.shading, ShadingPreset::LearnOpenGl);
+    EXPECT_EQ(g.manifest.shading, ShadingModel::LearnOpenGl);
 
     // The command a reader runs on the folder.
     auto const c = test::runGbufferLab({"check", dir, "--json"});
@@ -427,6 +441,136 @@ TEST_F(GbufferDumpGlTest, DumpOpensWithTheGlValuesAndNoFinding) {
         }
     GBufferCheckReport const cReport = checkGBuffer(gc);
     for (auto const& f : cReport.findings) ADD_FAILURE() << "C build: " << f.check << ": " << f.cause;
+}
+
+// A lighting pass as LearnOpenGL's deferred chapter describes it, written for this test: full screen
+// over the three targets, ambient 0.1 * albedo, per light Lambert diffuse and a Blinn-Phong highlight
+// of exponent 16 (not gated by N.L), both times 1 / (1 + Kl d + Kq d^2); the sky (normal 0) stays 0.
+char const* const kLightingVertex = R"(#version 330 core
+void main() {
+    vec2 corner = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
+    gl_Position = vec4(corner, 0.0, 1.0);
+})";
+char const* const kLightingFragment = R"(#version 330 core
+uniform sampler2D gPosition;
+uniform sampler2D gNormal;
+uniform sampler2D gAlbedoSpec;
+uniform vec3 lightPos[2];
+uniform vec3 lightColor[2];
+uniform float lightLinear[2];
+uniform float lightQuadratic;
+uniform vec3 viewPos;
+out vec4 lit;
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    vec3 p = texelFetch(gPosition, px, 0).rgb;
+    vec3 n = texelFetch(gNormal, px, 0).rgb;
+    vec4 as = texelFetch(gAlbedoSpec, px, 0);
+    if (dot(n, n) == 0.0) { lit = vec4(0.0); return; }
+    vec3 toEye = normalize(viewPos - p);
+    vec3 sum = 0.1 * as.rgb;
+    for (int i = 0; i < 2; ++i) {
+        vec3 toLight = normalize(lightPos[i] - p);
+        float d = length(lightPos[i] - p);
+        float fall = 1.0 / (1.0 + lightLinear[i] * d + lightQuadratic * d * d);
+        vec3 diffuse = max(dot(n, toLight), 0.0) * as.rgb * lightColor[i];
+        vec3 highlight = lightColor[i] * pow(max(dot(n, normalize(toLight + toEye)), 0.0), 16.0) * as.a;
+        sum += (diffuse + highlight) * fall;
+    }
+    lit = vec4(sum, 1.0);
+})";
+
+// A program of that text, end to end: its G-buffer is dumped with the header (learnopengl preset) and
+// lit by its own lighting pass; `gbuffer-lab` re-lights the dump in quad mode with the manifest's
+// shading and gets the program's image, within the RGBA16F target's rounding. With gbuffer-lab's
+// windowed model the same comparison fails (so it can fail): the program lights past the radii.
+TEST_F(GbufferDumpGlTest, ALearnOpenGlLightingPassIsReLitToTheSameImage) {
+    renderGeometry();
+    gl::Texture litTexture = gl::Texture::create2D(GL_RGBA32F, kW, kH, "dump test lit");
+    gl::Framebuffer litTarget = gl::Framebuffer::create({&litTexture}, nullptr, "dump test lighting");
+    ASSERT_FALSE(litTarget.error()) << *litTarget.error();
+    std::string log;
+    auto program = gl::Program::build({{GL_VERTEX_SHADER, "dump_lighting.vs", kLightingVertex},
+                                       {GL_FRAGMENT_SHADER, "dump_lighting.fs", kLightingFragment}},
+                                      "dump test lighting", &log);
+    ASSERT_TRUE(program) << log;
+    glBindFramebuffer(GL_FRAMEBUFFER, litTarget.id());
+    glViewport(0, 0, kW, kH);
+    program->use();
+    for (int unit = 0; unit < 3; ++unit) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+        glBindTexture(GL_TEXTURE_2D, std::array{position_.id(), normal_.id(), albedoSpec_.id()}[std::size_t(unit)]);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    program->set("gPosition", 0);
+    program->set("gNormal", 1);
+    program->set("gAlbedoSpec", 2);
+    for (int i = 0; i < 2; ++i) {
+        std::string const at = "[" + std::to_string(i) + "]";
+        program->set("lightPos" + at, glm::make_vec3(kLightPositions.data() + 3 * i));
+        program->set("lightColor" + at, glm::make_vec3(kLightColors.data() + 3 * i));
+        program->set("lightLinear" + at, kLinear[std::size_t(i)]);
+    }
+    program->set("lightQuadratic", 1.8f);
+    program->set("viewPos", kEye);
+    glBindVertexArray(vao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    std::vector<float> theirs(std::size_t(kW) * kH * 4);
+    glReadPixels(0, 0, kW, kH, GL_RGBA, GL_FLOAT, theirs.data());  // rows bottom-up
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+    glm::mat4 const view = viewMatrix(), projection = projectionMatrix();
+    LearnOpenGlDump dump(view, projection);
+    gbl_dump_options& o = dump.options;
+    std::string const dir = test::freshTempDir("gbl_dump_relight");
+    char message[1024];
+    ASSERT_EQ(gbl_dump(gBuffer_.id(), kW, kH, dir.c_str(), &o, message, sizeof message), GBL_DUMP_OK) << message;
+    ImportedGBuffer const g = open(dir);
+    ASSERT_EQ(g.manifest.shading, ShadingModel::LearnOpenGl);
+    RelightFrame const frame = relightFrame(g);
+    ASSERT_TRUE(frame.frame) << frame.error;
+    // The lights lie well inside the floor's reach: most of it is past their radii.
+    for (PointLight const& l : g.manifest.lights) ASSERT_LT(lightRadius(l).radius, 6.0f);
+
+    auto relit = [&](ShadingModel shading) {
+        auto r = makeRenderer(kW, kH);
+        EXPECT_FALSE(r->setImportedGBuffer(*frame.frame));
+        PipelineSettings s;
+        s.mode = LightingMode::Quad;
+        s.lightCubes = false;
+        applyManifestShading(g.manifest.shininess, shading, s);
+        s.ambient = glm::vec3(kLearnOpenGlAmbient);  // the program's ambient in both, so only the equation differs
+        FrameStats const st = r->render({cameraOfFrame(*frame.frame), g.manifest.lights, s, true});
+        EXPECT_EQ(st.glErrors, 0u);
+        return r->readAttachment(Attachment::Lighting);
+    };
+    auto over = [&](FloatImage const& ours, double* maxErr) {
+        int n = 0, covered = 0;
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < kW; ++x) {
+                // readAttachment's rows run top-down, glReadPixels' bottom-up.
+                float const* t = &theirs[(std::size_t(kH - 1 - y) * kW + std::size_t(x)) * 4];
+                if (t[3] == 0.0f) continue;  // the sky
+                ++covered;
+                bool bad = false;
+                for (int c = 0; c < 3; ++c) {
+                    double const e = std::abs(double(ours.at(x, y, c)) - t[c]);
+                    *maxErr = std::max(*maxErr, e);
+                    bad |= e > 2.0 / 2048.0 * std::abs(t[c]) + 1e-4;  // RGBA16F rounding, pow() across GLSL builds
+                }
+                n += bad;
+            }
+        EXPECT_GT(covered, kW * kH / 2);
+        return n;
+    };
+    double maxSame = 0.0, maxWindowed = 0.0;
+    EXPECT_EQ(over(relit(ShadingModel::LearnOpenGl), &maxSame), 0) << "max |ours - theirs| " << maxSame;
+    EXPECT_GT(over(relit(ShadingModel::GbufferLab), &maxWindowed), kW * kH / 4)
+        << "gbuffer-lab's windowed model should not match that program (max " << maxWindowed << ")";
+    std::printf(
+        "learnopengl re-light against the program's own lighting: max |difference| %.3g (windowed model: %.3g)\n",
+        maxSame, maxWindowed);
 }
 
 // No attachment holds positions (as in G-buffers of depth, normal and colour): with depth and the camera

@@ -188,6 +188,15 @@ TEST(GBufferImport, BadFieldsAreNamed) {
         std::string::npos);
 }
 
+// A number beyond double's range is refused like any other bad JSON (the manifest fuzzer found it
+// ending the process: nlohmann throws out_of_range for it, not parse_error).
+TEST(GBufferImport, ANumberTooLargeForADoubleIsRefusedNotACrash) {
+    ManifestLoad const m = parseManifest(R"({"format": "gbuffer-lab-gbuffer", "version": 1e400})", "m.json", ".");
+    EXPECT_FALSE(m.manifest);
+    EXPECT_EQ(m.error.rfind("m.json: not valid JSON", 0), 0u) << m.error;
+    EXPECT_NE(m.error.find("1e400"), std::string::npos) << m.error;
+}
+
 TEST(GBufferImport, PresetsParse) {
     for (char const* preset : {"learnopengl", "newcastle"}) {
         ManifestLoad const m = parseManifest(
@@ -202,6 +211,38 @@ TEST(GBufferImport, PresetsParse) {
     EXPECT_EQ(lo.manifest->normal.image.path, "/x/gNormal.exr");
     EXPECT_EQ(lo.manifest->specular->channels, std::vector<int>{3});
     EXPECT_EQ(lo.manifest->shininess, 16.0f);
+    EXPECT_EQ(lo.manifest->shading, ShadingModel::LearnOpenGl);
+}
+
+// "shading": "learnopengl" alone brings that shader's exponent (16) unless "shininess" is given;
+// applied to the re-light's settings it also brings the shader's ambient 0.1.
+TEST(GBufferImport, TheLearnOpenGlShadingSetsItsConstants) {
+    std::string const head = R"({"format": "gbuffer-lab-gbuffer", "version": 1, "preset": "newcastle",
+        "camera": {"position": [0, 0, 5], "target": [0, 0, 0], "fov_y_degrees": 45, "near": 0.1, "far": 100}, )";
+    ManifestLoad const plain = parseManifest(head + R"("shading": "learnopengl"})", "m.json", "/x");
+    ASSERT_TRUE(plain.manifest) << plain.error;
+    EXPECT_EQ(plain.manifest->shininess, kLearnOpenGlShininess);
+    ManifestLoad const given = parseManifest(head + R"("shading": "learnopengl", "shininess": 40})", "m.json", "/x");
+    ASSERT_TRUE(given.manifest) << given.error;
+    EXPECT_EQ(given.manifest->shininess, 40.0f);
+    ManifestLoad const ours = parseManifest(head + R"("shininess": 40})", "m.json", "/x");
+    ASSERT_TRUE(ours.manifest) << ours.error;
+    EXPECT_EQ(ours.manifest->shading, ShadingModel::GbufferLab);
+
+    PipelineSettings s;
+    s.ambient = glm::vec3(0.03f);
+    applyManifestShading(given.manifest->shininess, given.manifest->shading, s);
+    EXPECT_EQ(s.shading, ShadingModel::LearnOpenGl);
+    EXPECT_EQ(s.shininess, 40.0f);
+    EXPECT_EQ(s.ambient, glm::vec3(kLearnOpenGlAmbient));
+    PipelineSettings kept;
+    kept.ambient = glm::vec3(0.05f);
+    applyManifestShading(32.0f, ShadingModel::GbufferLab, kept);
+    EXPECT_EQ(kept.ambient, glm::vec3(0.05f)) << "gbuffer-lab's shading keeps the editor's ambient";
+
+    ManifestLoad const bad = parseManifest(head + R"("shading": "phong"})", "m.json", "/x");
+    EXPECT_FALSE(bad.manifest);
+    EXPECT_NE(bad.error.find("shading"), std::string::npos) << bad.error;
 }
 
 // Each planted bug gives its own finding and only it (the flipped depth also moves the background).
@@ -233,6 +274,32 @@ TEST(GBufferImport, EachPlantedBugIsFound) {
             }
         EXPECT_TRUE(found) << c.check;
     }
+}
+
+// Every attachment gets a precision note; the normal's names the manifest's shininess and the
+// highlight error, which is what fires normal_precision on 8-bit normals at shininess 64.
+TEST(GBufferImport, PrecisionNotesNameStorageStepAndHighlightError) {
+    GBufferCheckReport const r = check(writeGBuffer("gbi_precision", 1.0f, Bug::EightBitNormals));
+    PrecisionNote const* normal = nullptr;
+    for (PrecisionNote const& p : r.precision)
+        if (p.attachment == "normal") normal = &p;
+    ASSERT_NE(normal, nullptr);
+    EXPECT_EQ(normal->shininess, 64.0);
+    EXPECT_NEAR(normal->step, 1.0 / 255.0, 1e-9);
+    EXPECT_GT(normal->highlightError, 2.0 / 255.0);
+    std::string const line = precisionLine(*normal);
+    EXPECT_EQ(
+        line.rfind("normal: " + normal->storage + ", step 0.00392; a highlight of shininess 64 moves by up to ", 0), 0u)
+        << line;
+    char percent[32];
+    std::snprintf(percent, sizeof percent, "%.2g %% of its peak", normal->highlightError * 100.0);
+    EXPECT_NE(line.find(percent), std::string::npos) << line;
+
+    PrecisionNote other;
+    other.attachment = "albedo";
+    other.storage = "16-bit float";
+    other.step = 0.0009765625;
+    EXPECT_EQ(precisionLine(other), "albedo: 16-bit float, step 0.000977");
 }
 
 // As session files (session_test's EveryTruncationAndByteFlipFailsCleanly): whatever is cut off or

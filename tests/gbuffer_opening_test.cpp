@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 using namespace gbl;
 using namespace gbl::ui;
@@ -49,6 +50,20 @@ std::string writeGBuffer(std::string const& name, int albedoHeight = kH, std::st
     return dir + "/manifest.json";
 }
 
+// Adds `fields` (ending in ", ") to writeGBuffer's manifest at `path`, before its shininess.
+bool addToManifest(std::string const& path, std::string const& fields) {
+    std::string text;
+    {
+        std::ifstream in(path);
+        text.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    std::size_t const at = text.find(R"("shininess": 16,)");
+    if (at == std::string::npos) return false;
+    text.insert(at, fields);
+    std::ofstream(path) << text;
+    return true;
+}
+
 // The editor showing a scene: a camera, three lights and shininess 32 that a G-buffer replaces.
 EditorState sceneState() {
     EditorState s;
@@ -60,6 +75,7 @@ EditorState sceneState() {
     s.lights[2].position = {7.0f, 8.0f, 9.0f};
     s.lightsPanel.selected = 2;
     s.pipeline.shininess = 32.0f;
+    s.pipeline.ambient = glm::vec3(0.05f);
     return s;
 }
 
@@ -97,6 +113,8 @@ void expectSceneIntact(EditorState const& s) {
     EXPECT_EQ(s.lights[2].position, scene.lights[2].position);
     EXPECT_EQ(s.lightsPanel.selected, 2);
     EXPECT_EQ(s.pipeline.shininess, 32.0f);
+    EXPECT_EQ(s.pipeline.shading, ShadingModel::GbufferLab);
+    EXPECT_EQ(s.pipeline.ambient, glm::vec3(0.05f));
     EXPECT_TRUE(s.viewport.importedFrame.empty());
 }
 
@@ -162,6 +180,8 @@ TEST(GBufferOpening, OpenTakesTheManifestsCameraLightsAndShininessAndCloseGivesT
     EXPECT_EQ(s.lights[1].position, glm::vec3(1.0f, 0.0f, 2.0f));
     EXPECT_EQ(s.lightsPanel.selected, 0);
     EXPECT_EQ(s.pipeline.shininess, 16.0f);
+    EXPECT_EQ(s.pipeline.shading, ShadingModel::GbufferLab) << "no \"shading\" in the manifest";
+    EXPECT_EQ(s.pipeline.ambient, glm::vec3(0.05f));
 
     // What a session's unsaved edits are judged on: the scene behind the G-buffer.
     EditorState const behind = sceneBehind(s, g);
@@ -237,4 +257,114 @@ TEST(GBufferOpening, ARefusedOpenKeepsTheGBufferShownAndAFailedUploadChangesNoth
     EXPECT_NE(h.lastError.find("could not be uploaded: the texture is too large"), std::string::npos) << h.lastError;
     EXPECT_FALSE(gbufferOpen(h));
     expectSceneIntact(t);
+}
+
+// A manifest with "shading": "learnopengl" re-lights with that text's equation and its ambient
+// 0.1 (docs/lighting.md); closing gives back the scene's equation and ambient, and so does the
+// scene behind the G-buffer that a session's unsaved edits are judged on.
+TEST(GBufferOpening, TheLearnOpenGlShadingIsTakenAndGivenBack) {
+    std::string const path = writeGBuffer("gbopen_learnopengl");
+    ASSERT_TRUE(addToManifest(path, R"("shading": "learnopengl", )"));
+
+    EditorState s = sceneState();
+    GBufferOpenState g;
+    FakeRenderer r;
+    g.requests.push_back(path);
+    ASSERT_EQ(updateGBufferOpening(g, s, r.upload(), r.clear()), GBufferChange::Opened)
+        << (s.log.lines.empty() ? std::string() : s.log.lines.back());
+    EXPECT_EQ(s.pipeline.shading, ShadingModel::LearnOpenGl);
+    EXPECT_EQ(s.pipeline.ambient, glm::vec3(kLearnOpenGlAmbient));
+    EXPECT_EQ(s.pipeline.shininess, 16.0f);
+    EditorState const behind = sceneBehind(s, g);
+    EXPECT_EQ(behind.pipeline.shading, ShadingModel::GbufferLab);
+    EXPECT_EQ(behind.pipeline.ambient, glm::vec3(0.05f));
+    g.closeRequested = true;
+    EXPECT_EQ(updateGBufferOpening(g, s, r.upload(), r.clear()), GBufferChange::Closed);
+    expectSceneIntact(s);
+}
+
+// A manifest with the program's own lit image: opening pins it in the viewport under its file's name
+// (Diff then compares our re-light with it); Close takes that pin away, while a pin of our own frames
+// made before opening a G-buffer without one stays.
+TEST(GBufferOpening, TheirLitImageIsPinnedAndClosingUnpinsIt) {
+    std::string const path = writeGBuffer("gbopen_lit");
+    std::string const dir = std::filesystem::path(path).parent_path().string();
+    writeRaw(dir + "/lit.raw", kW, kH, 3, {0.25f, 0.5f, 2.0f});
+    ASSERT_TRUE(addToManifest(path, R"("lit": )" + raw("lit.raw", kW, kH, 3) + "}, "));
+
+    EditorState s = sceneState();
+    GBufferOpenState g;
+    FakeRenderer r;
+    g.requests.push_back(path);
+    ASSERT_EQ(updateGBufferOpening(g, s, r.upload(), r.clear()), GBufferChange::Opened)
+        << (s.log.lines.empty() ? std::string() : s.log.lines.back());
+    ASSERT_TRUE(s.litPin.pinned);
+    FloatImage const& pinned = *s.litPin.pinned;
+    ASSERT_EQ(pinned.width, kW);
+    ASSERT_EQ(pinned.height, kH);
+    ASSERT_EQ(pinned.channels, 4);
+    EXPECT_EQ(pinned.at(kW - 1, kH - 1, 0), 0.25f);
+    EXPECT_EQ(pinned.at(0, 0, 2), 2.0f) << "HDR values kept as they are";
+    EXPECT_EQ(pinned.at(3, 2, 3), 1.0f);
+    EXPECT_EQ(s.litPin.pinnedName, "their lit image (lit.raw)");
+    EXPECT_NE(s.log.lines.back().find("lit.raw is pinned"), std::string::npos) << s.log.lines.back();
+    g.closeRequested = true;
+    EXPECT_EQ(updateGBufferOpening(g, s, r.upload(), r.clear()), GBufferChange::Closed);
+    EXPECT_FALSE(s.litPin.pinned);
+    EXPECT_TRUE(s.litPin.pinnedName.empty());
+    EXPECT_FALSE(s.litPin.showDiff);
+
+    // A pin of our own frame stays through a G-buffer that brings no lit image.
+    s.litPin.pinned = FloatImage{2, 2, 4, std::vector<float>(16, 0.5f)};
+    s.litPin.pinnedFrame = 40;
+    g.requests.push_back(writeGBuffer("gbopen_nolit"));
+    ASSERT_EQ(updateGBufferOpening(g, s, r.upload(), r.clear()), GBufferChange::Opened);
+    g.closeRequested = true;
+    EXPECT_EQ(updateGBufferOpening(g, s, r.upload(), r.clear()), GBufferChange::Closed);
+    ASSERT_TRUE(s.litPin.pinned);
+    EXPECT_EQ(s.litPin.pinnedFrame, 40);
+}
+
+// Opening runs the checks of `gbuffer-lab check`: a G-buffer whose normals are half length has the
+// normal_not_unit finding, listed for the viewport's Checks button and named in the Log; closing
+// clears the list. The handmade frame has no background (every pixel sees the wall), which
+// no_background reports in both.
+TEST(GBufferOpening, TheChecksRunOnOpeningAndTheirFindingsAreListed) {
+    EditorState s = sceneState();
+    GBufferOpenState g;
+    FakeRenderer r;
+    g.requests.push_back(
+        writeGBuffer("gbopen_checks", kH, raw("short_normal.raw", kW, kH, 3) + R"(, "encoding": "float"})"));
+    writeRaw(std::filesystem::path(g.requests.back()).parent_path().string() + "/short_normal.raw", kW, kH, 3,
+             {0.0f, 0.0f, 0.5f});
+    ASSERT_EQ(updateGBufferOpening(g, s, r.upload(), r.clear()), GBufferChange::Opened)
+        << (s.log.lines.empty() ? std::string() : s.log.lines.back());
+    ASSERT_FALSE(g.checks.findings.empty());
+    ASSERT_EQ(s.viewport.findings.size(), g.checks.findings.size());
+    EXPECT_EQ(s.viewport.findings[0].check, "normal_not_unit");
+    EXPECT_EQ(s.viewport.findings[0].pixels, std::size_t(kW * kH));
+    EXPECT_FALSE(s.viewport.findings[0].cause.empty());
+    EXPECT_EQ(g.checks.findings[0].mask.size(), std::size_t(kW * kH));
+    EXPECT_TRUE(s.viewport.findings[0].mask.empty());  // the viewport's list holds no copy of a mask
+    ASSERT_EQ(s.viewport.precision.size(), g.checks.precision.size());
+    for (std::size_t i = 0; i < g.checks.precision.size(); ++i)
+        EXPECT_EQ(s.viewport.precision[i], gbl::precisionLine(g.checks.precision[i]));
+    EXPECT_EQ(s.viewport.markedFinding, -1);
+    EXPECT_NE(s.log.lines.back().find("checks: 2 findings (normal_not_unit 100 %, no_background 100 %)"),
+              std::string::npos)
+        << s.log.lines.back();
+    s.viewport.markedFinding = 0;
+    g.closeRequested = true;
+    EXPECT_EQ(updateGBufferOpening(g, s, r.upload(), r.clear()), GBufferChange::Closed);
+    EXPECT_TRUE(g.checks.findings.empty());
+    EXPECT_TRUE(s.viewport.findings.empty());
+    EXPECT_TRUE(s.viewport.precision.empty());
+    EXPECT_EQ(s.viewport.markedFinding, -1);
+
+    g.requests.push_back(writeGBuffer("gbopen_clean"));
+    ASSERT_EQ(updateGBufferOpening(g, s, r.upload(), r.clear()), GBufferChange::Opened);
+    ASSERT_EQ(s.viewport.findings.size(), 1u);
+    EXPECT_EQ(s.viewport.findings[0].check, "no_background");
+    EXPECT_NE(s.log.lines.back().find("checks: 1 finding (no_background 100 %)"), std::string::npos)
+        << s.log.lines.back();
 }

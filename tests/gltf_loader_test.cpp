@@ -377,6 +377,12 @@ TEST(GltfBadInput, MalformedJson) {
     expectRefused(localFile("malformed.gltf"), "malformed (at line 3");
 }
 
+// A number beyond double's range: malformed JSON, said as such (was "unexpected failure").
+TEST(GltfBadInput, NumberTooLargeForADouble) {
+    std::string const text = R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": []}], "x": 1e400})";
+    expectRefused(loadGltfFromMemory(bytesOf(text), "/nonexistent/huge.gltf"), "huge.gltf", "malformed");
+}
+
 TEST(GltfBadInput, WrongJsonTypes) {
     expectRefused(localFile("wrong_types.gltf"), "nodes[0].mesh must be a non-negative integer but is string");
 }

@@ -83,7 +83,9 @@ TEST(LessonFile, BrokenFilesNameTheField) {
     std::vector<Case> const cases{
         {[](json& j) { j["version"] = 3; }, "demo.json: version 3 is not supported"},
         {[](json& j) { j["steps"][0]["claim"]["reached"] = 1; },
-         "demo.json: steps[0].claim.reached is only for a matches_cpu claim"},
+         "demo.json: steps[0].claim.reached is not a field of a loses_light claim"},
+        {[](json& j) { j["steps"][0]["claim"]["bound"] = 0.1; },  // same_image's, not loses_light's
+         "demo.json: steps[0].claim.bound is not a field of a loses_light claim"},
         {[](json& j) {
              j["steps"][0]["claim"] = {{"kind", "matches_cpu"}, {"reached", 5}};
          },

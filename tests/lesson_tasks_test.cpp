@@ -5,6 +5,7 @@
 #include "model/lesson_tasks.h"
 #include "core/light_math.h"
 #include "core/pipeline_fields.h"
+#include "model/lesson_claims.h"
 #include "model/lesson_state.h"
 #include "model/lesson_text.h"
 #include "run_command.h"
@@ -16,6 +17,7 @@
 
 #include <fstream>
 #include <functional>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -479,33 +481,64 @@ TEST(LessonTasks, ShippedTasksAreMetByTheIntendedActionOnly) {
     EXPECT_FALSE(taskMet(s->tasks[0], px.context(*s, *l)));
 }
 
-// docs/lessons.md's task table lists exactly the kinds of taskKinds(), each with its fields.
-TEST(LessonTasks, DocsDocumentExactlyTheTaskKinds) {
+// The rows of docs/lessons.md's table under `heading`: kind name -> the rest of its row.
+std::map<std::string, std::string> documentedKinds(std::string const& heading) {
     std::ifstream in(test::sourcePath("docs/lessons.md"));
-    ASSERT_TRUE(in) << "cannot read docs/lessons.md";
+    EXPECT_TRUE(in) << "cannot read docs/lessons.md";
     std::stringstream ss;
     ss << in.rdbuf();
     std::string const doc = ss.str();
-    auto const start = doc.find("### Tasks");
-    ASSERT_NE(start, std::string::npos) << "docs/lessons.md has no \"### Tasks\" section";
+    auto const start = doc.find(heading);
+    EXPECT_NE(start, std::string::npos) << "docs/lessons.md has no \"" << heading << "\" section";
+    if (start == std::string::npos) return {};
     auto const end = doc.find("\n#", start + 1);
     std::string const section = doc.substr(start, end == std::string::npos ? std::string::npos : end - start);
     std::regex const row(R"(\n\| `([a-z_]+)` \|([^\n]*))");
+    std::map<std::string, std::string> rows;
+    for (auto it = std::sregex_iterator(section.begin(), section.end(), row); it != std::sregex_iterator(); ++it)
+        rows[(*it)[1]] = (*it)[2];
+    return rows;
+}
+
+// Each documented row names every field of its kind, and the table lists exactly the kinds.
+template <class Kinds, class Find>
+void expectDocumented(std::string const& heading, Kinds const& kinds, Find find) {
     std::set<std::string> documented;
-    for (auto it = std::sregex_iterator(section.begin(), section.end(), row); it != std::sregex_iterator(); ++it) {
-        std::string const name = (*it)[1];
+    for (auto const& [name, rest] : documentedKinds(heading)) {
         documented.insert(name);
-        TaskKindInfo const* k = findTaskKind(name);
-        ASSERT_TRUE(k) << "docs/lessons.md documents a task kind the table does not have: " << name;
-        std::string const rest = (*it)[2];
+        auto const* k = find(name);
+        ASSERT_TRUE(k) << "docs/lessons.md documents a kind its table does not have: " << name;
         for (auto f : k->fields)
             EXPECT_NE(rest.find("`" + std::string(f) + "`"), std::string::npos) << name << " row lacks " << f;
         for (auto f : k->optionalFields)
             EXPECT_NE(rest.find("`" + std::string(f) + "`"), std::string::npos) << name << " row lacks " << f;
     }
-    std::set<std::string> kinds;
-    for (TaskKindInfo const& k : taskKinds()) kinds.insert(std::string(k.name));
-    EXPECT_EQ(documented, kinds);
+    std::set<std::string> names;
+    for (auto const& k : kinds) names.insert(std::string(k.name));
+    EXPECT_EQ(documented, names) << heading;
+}
+
+// docs/lessons.md's task table lists exactly the kinds of taskKinds(), each with its fields.
+TEST(LessonTasks, DocsDocumentExactlyTheTaskKinds) {
+    expectDocumented("### Tasks", taskKinds(), findTaskKind);
+}
+
+// The same for the claim kinds (claimKinds(), issue 24's one table per kind).
+TEST(LessonClaims, DocsDocumentExactlyTheClaimKinds) {
+    expectDocumented("### Claims", claimKinds(), findClaimKind);
+}
+
+// The table's rows are the enum's values, once each, and each kind checks through its own row.
+TEST(LessonClaims, EveryKindHasOneRow) {
+    std::set<int> kinds;
+    for (ClaimKindInfo const& k : claimKinds()) {
+        EXPECT_TRUE(kinds.insert(int(k.kind)).second) << k.name;
+        EXPECT_EQ(&claimKindInfo(k.kind), &k) << k.name;
+        EXPECT_EQ(findClaimKind(k.name), &k) << k.name;
+        EXPECT_TRUE(k.check) << k.name;
+        EXPECT_FALSE(k.doc.empty()) << k.name;
+    }
+    EXPECT_EQ(kinds.size(), std::size_t(ClaimKind::DiffersFrom) + 1);
 }
 
 }  // namespace

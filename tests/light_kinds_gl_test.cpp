@@ -97,7 +97,7 @@ protected:
                 in.albedo = {a.at(x, y, 0), a.at(x, y, 1), a.at(x, y, 2)};
                 in.specular = a.at(x, y, 3);
                 in.viewPosition = camera_.position;
-                in.shininess = s.shininess;
+                shadingOf(s, in);
                 std::vector<LightContribution> parts;
                 glm::vec3 const expected = shadePointCpu(lights, in, s.ambient, &parts);
                 for (LightContribution const& part : parts)
@@ -202,6 +202,60 @@ TEST_F(LightKindsGlTest, CameraInsideASpotConeMatchesTheCpu) {
             sumFront += front.at(x, y, 0);
         }
     EXPECT_LT(sumBack, 0.5 * sumFront);
+}
+
+// LearnOpenGL's lighting shader (the learnopengl shading) in every mode against the CPU: quad and
+// forward light every pixel with every light, the others stop at the radius. The lights are small
+// (radius about 5) so that most of the courtyard lies beyond them: there quad is lit and
+// gbuffer-lab's windowed model is not.
+TEST_F(LightKindsGlTest, LearnOpenGlShadingMatchesTheCpuInEveryMode) {
+    std::vector<PointLight> lights = mixedLights();
+    for (PointLight& l : lights) {
+        l.kl = 0.7f;
+        l.kq = 1.8f;
+        l.intensity = 1.0f;
+    }
+    PointLight const& point = lights.back();
+    ASSERT_LT(lightRadius(point).radius, 6.0f);
+    for (auto [name, s] : everyMode(false)) {
+        s.shading = ShadingModel::LearnOpenGl;
+        s.shininess = kLearnOpenGlShininess;
+        s.ambient = glm::vec3(kLearnOpenGlAmbient);
+        Check const c = compareWithCpu(s, lights);
+        EXPECT_GT(c.covered, kW * kH / 2) << name;
+        EXPECT_EQ(c.over, 0) << name << ": max error " << c.maxErr;
+        std::printf("learnopengl %-16s max |GPU - CPU| %.3g\n", name.c_str(), c.maxErr);
+    }
+    PipelineSettings fwd = settings(LightingMode::Forward);
+    fwd.shading = ShadingModel::LearnOpenGl;
+    Check const f = compareWithCpu(fwd, lights);
+    EXPECT_LT(f.over, kW * kH / 200) << "forward: max error " << f.maxErr;
+
+    // Quad lights pixels beyond every point light's radius with the point light alone; the
+    // windowed model leaves them at the ambient term.
+    std::vector<PointLight> const one{point};
+    PipelineSettings classic = settings(LightingMode::Quad);
+    classic.ambient = glm::vec3(0.0f);
+    classic.shading = ShadingModel::LearnOpenGl;
+    PipelineSettings windowed = classic;
+    windowed.shading = ShadingModel::GbufferLab;
+    FloatImage const lo = render(classic, one);
+    FloatImage const ours = render(windowed, one);
+    FloatImage const pos = renderer_->readAttachment(Attachment::Position);
+    float const radius = lightRadius(point).radius;
+    int beyond = 0, litBeyond = 0, oursBeyond = 0;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            if (pos.at(x, y, 3) == 0.0f) continue;
+            glm::vec3 const p(pos.at(x, y, 0), pos.at(x, y, 1), pos.at(x, y, 2));
+            if (glm::distance(p, point.position) <= radius * 1.01f) continue;
+            ++beyond;
+            litBeyond += lo.at(x, y, 0) + lo.at(x, y, 1) + lo.at(x, y, 2) > 0.0f;
+            oursBeyond += ours.at(x, y, 0) + ours.at(x, y, 1) + ours.at(x, y, 2) > 0.0f;
+        }
+    EXPECT_GT(beyond, kW * kH / 4);
+    EXPECT_GT(litBeyond, beyond / 2) << "the learnopengl shading lights past the radius in quad mode";
+    EXPECT_EQ(oursBeyond, 0) << "gbuffer-lab's windowed attenuation is zero past the radius";
 }
 
 TEST_F(LightKindsGlTest, WireframesDrawTheSpotsConeAndTheDirectionalArrow) {

@@ -477,3 +477,92 @@ TEST(LightKinds, CpuShadingOfEachKindMatchesHandComputedValues) {
     ASSERT_EQ(list.size(), 1u);
     EXPECT_EQ(list[0].lightIndex, 1);
 }
+
+// The learnopengl shading against LearnOpenGL's deferred lighting shader written out here as that
+// text gives it: ambient 0.1 * albedo, then per light diffuse max(N.L, 0) * albedo * colour and
+// specular colour * (max(N.H, 0))^16 * specular, both times 1 / (1 + Kl d + Kq d^2); no window,
+// no radius, and no N.L gate on the highlight.
+TEST(ShadingModel, LearnOpenGlMatchesThatTextsLightingShader) {
+    auto textShader = [](PointLight const& l, ShadingInputs const& s) {
+        glm::vec3 const L = glm::normalize(l.position - s.position);
+        glm::vec3 const V = glm::normalize(s.viewPosition - s.position);
+        glm::vec3 const H = glm::normalize(L + V);
+        float const d = glm::length(l.position - s.position);
+        float const att = 1.0f / (1.0f + l.kl * d + l.kq * d * d);
+        glm::vec3 const diffuse = std::max(glm::dot(s.normal, L), 0.0f) * s.albedo * l.color;
+        glm::vec3 const specular = l.color * std::pow(std::max(glm::dot(s.normal, H), 0.0f), 16.0f) * s.specular;
+        return (diffuse + specular) * att;
+    };
+    PointLight light = makeLight(1.0f, 1.0f, 0.7f, 1.8f);  // LearnOpenGL's Kl and Kq; radius ~4.8
+    light.color = glm::vec3(0.9f, 0.6f, 0.3f);
+    float const radius = lightRadius(light).radius;
+    ASSERT_GT(radius, 1.0f);
+    ASSERT_LT(radius, 5.5f);
+    ShadingInputs s;
+    s.model = ShadingModel::LearnOpenGl;
+    s.shininess = kLearnOpenGlShininess;
+    s.albedo = glm::vec3(0.8f, 0.5f, 0.2f);
+    s.specular = 0.7f;
+    s.viewPosition = glm::vec3(0.0f, 3.0f, 4.0f);
+    glm::vec3 const ambient(kLearnOpenGlAmbient);
+    int beyond = 0;
+    // Points on the floor from under the light to well past its radius, lit from above.
+    for (float x : {0.0f, 0.5f, 1.5f, 3.0f, 6.0f, 12.0f}) {
+        s.position = glm::vec3(x, 0.0f, 0.0f);
+        light.position = glm::vec3(0.0f, 1.0f, 0.0f);
+        PointLight const one[] = {light};
+        glm::vec3 const ours = shadePointCpu(one, s, ambient);
+        glm::vec3 const text = 0.1f * s.albedo + textShader(light, s);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(ours[c], text[c], 1e-6f * std::max(1.0f, text[c])) << "x " << x;
+        if (glm::length(light.position - s.position) > radius) {
+            ++beyond;
+            EXPECT_GT(ours.r, 0.1f * s.albedo.r) << "x " << x << ": no window, so still lit past the radius";
+            ShadingInputs windowed = s;
+            windowed.model = ShadingModel::GbufferLab;
+            EXPECT_EQ(shadePointCpu(one, windowed, ambient), 0.1f * s.albedo) << "x " << x;
+        }
+    }
+    EXPECT_GE(beyond, 2);
+    // A light just below the surface's horizon: N.L < 0, so no diffuse light, but N.H > 0 still
+    // gives that shader a highlight; gbuffer-lab's model gates it.
+    s.position = glm::vec3(0.0f);
+    s.viewPosition = glm::vec3(0.0f, 1.0f, 1.0f);
+    light.position = glm::vec3(0.0f, -0.2f, -1.0f);
+    LightContribution const behind = shadeLightCpu(light, s);
+    EXPECT_EQ(behind.diffuse, glm::vec3(0.0f));
+    EXPECT_GT(behind.specular.r, 0.0f);
+    EXPECT_NEAR(behind.specular.r, textShader(light, s).r, 1e-6f);
+    ShadingInputs gated = s;
+    gated.model = ShadingModel::GbufferLab;
+    EXPECT_EQ(shadeLightCpu(light, gated).total(), glm::vec3(0.0f));
+}
+
+// The modes that light a pixel only inside a light's radius cut the learnopengl shading there;
+// quad and forward do not. A light too dim to reach the threshold (radius 0) shades nothing.
+TEST(ShadingModel, TheCutAtTheRadiusFollowsTheMode) {
+    EXPECT_FALSE(cutsAtRadius(LightingMode::Quad));
+    EXPECT_FALSE(cutsAtRadius(LightingMode::Forward));
+    EXPECT_TRUE(cutsAtRadius(LightingMode::Volumes));
+    EXPECT_TRUE(cutsAtRadius(LightingMode::Tiled));
+    EXPECT_TRUE(cutsAtRadius(LightingMode::Clustered));
+    PipelineSettings settings;
+    settings.shading = ShadingModel::LearnOpenGl;
+    settings.shininess = 16.0f;
+    PointLight light = makeLight(1.0f, 1.0f, 0.7f, 1.8f);
+    light.position = glm::vec3(0.0f, 1.0f, 0.0f);
+    ShadingInputs s;
+    s.position = glm::vec3(6.0f, 0.0f, 0.0f);  // beyond the ~4.8 radius
+    s.viewPosition = glm::vec3(0.0f, 3.0f, 4.0f);
+    for (LightingMode mode : {LightingMode::Quad, LightingMode::Volumes}) {
+        settings.mode = mode;
+        shadingOf(settings, s);
+        EXPECT_EQ(s.shininess, 16.0f);
+        EXPECT_EQ(shadeLightCpu(light, s).reaches(), !cutsAtRadius(mode)) << enumName(kLightingModeNames, mode);
+    }
+    settings.mode = LightingMode::Quad;
+    shadingOf(settings, s);
+    light.intensity = kThreshold * 0.5f;  // never reaches the threshold: radius 0
+    ASSERT_EQ(lightRadius(light).radius, 0.0f);
+    s.position = glm::vec3(0.0f);
+    EXPECT_FALSE(shadeLightCpu(light, s).reaches());
+}

@@ -188,6 +188,36 @@ TEST(RelightCommand, RenderOutFolderReLitGivesTheSameLighting) {
     EXPECT_EQ(after.gbuffer->manifest.lights.size(), before.gbuffer->manifest.lights.size());
 }
 
+// `--shading learnopengl` re-lights with that text's equation and ambient 0.1: never darker than
+// gbuffer-lab's windowed model at any pixel (its attenuation has no window to subtract, its
+// highlight no gate, its ambient is higher), and brighter on the geometry; a bad name is refused.
+TEST(RelightCommand, TheLearnOpenGlShadingLightsMoreThanTheWindowedModel) {
+    std::string const d = test::freshTempDir("relight_lo_in");
+    std::string const ours = test::freshTempDir("relight_lo_ours"), lo = test::freshTempDir("relight_lo_lo");
+    auto const a = test::runGbufferLab({"render", "--out", d, "--size", "160x90", "--lights", "8"});
+    ASSERT_EQ(a.exitCode, 0) << a.output;
+    ASSERT_EQ(test::runGbufferLab({"render", "--gbuffer", d, "--out", ours}).exitCode, 0);
+    auto const b = test::runGbufferLab({"render", "--gbuffer", d, "--out", lo, "--shading", "learnopengl"});
+    ASSERT_EQ(b.exitCode, 0) << b.output;
+    GBufferLoad const windowed = loadGBuffer(*loadManifest(ours).manifest);
+    GBufferLoad const classic = loadGBuffer(*loadManifest(lo).manifest);
+    ASSERT_TRUE(windowed.gbuffer && classic.gbuffer);
+    ASSERT_EQ(windowed.gbuffer->lit.size(), classic.gbuffer->lit.size());
+    int darker = 0, brighter = 0, covered = 0;
+    for (std::size_t p = 0; p < windowed.gbuffer->lit.size(); ++p) {
+        glm::vec3 const w(windowed.gbuffer->lit[p]), c(classic.gbuffer->lit[p]);
+        if (w == glm::vec3(0.0f) && c == glm::vec3(0.0f)) continue;  // background
+        ++covered;
+        for (int k = 0; k < 3; ++k) darker += c[k] < w[k] - bound(LightingMode::Quad, std::abs(w[k]));
+        brighter += c.r + c.g + c.b > w.r + w.g + w.b + 0.01f;
+    }
+    EXPECT_GT(covered, 160 * 90 / 2);
+    EXPECT_EQ(darker, 0);
+    EXPECT_GT(brighter, covered * 9 / 10);
+    test::expectRefused({"render", "--gbuffer", d, "--out", lo, "--shading", "phong"},
+                        "--shading must be gbuffer-lab or learnopengl");
+}
+
 TEST(RelightCommand, BadInputIsRefusedInOneSentence) {
     std::string const dir = test::freshTempDir("relight_cli_bad");
     test::expectRefused({"render", "--gbuffer", dir + "/none.json", "--out", dir + "/o"}, "cannot read the manifest");

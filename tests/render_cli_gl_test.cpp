@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -298,4 +299,35 @@ TEST(RenderCommand, UntilGeometryWritesTheGBufferAndAClearedLitImage) {
     for (float v : albedo->pixels) albedoMax = std::max(albedoMax, v);
     EXPECT_EQ(litMax, 0.0f) << "nothing lit yet";
     EXPECT_GT(albedoMax, 0.0f) << "the G-buffer is filled";
+}
+
+// --view depth_linear (and depth, position) are written with the drawn pixels' 1-99 % range, as the
+// editor's auto-fit shows them: before, linear distances of metres went through a 0..1 range and
+// the picture was white wherever something was drawn.
+TEST(RenderCommand, RemappedViewsAreWrittenWithTheReadableRange) {
+    std::string const out = test::freshTempDir("render_views");
+    auto const r = runGbufferLab({"render", "--out", out, "--size", "160x90", "--lights", "4", "--view", "depth_linear",
+                                  "--view", "depth", "--view", "position"});
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto const depth = readImage((fs::path(out) / "depth.exr").string());
+    ASSERT_TRUE(depth);
+    for (char const* name : {"view_depth_linear.png", "view_depth.png", "view_position.png"}) {
+        auto const view = readImage((fs::path(out) / name).string());
+        ASSERT_TRUE(view) << name;
+        ASSERT_EQ(view->width * view->height, depth->width * depth->height) << name;
+        // Over the drawn pixels (depth below the far plane) the red channel spans most of 0..1:
+        // the nearest surfaces dark, the farthest bright, not one saturated value.
+        float low = 1.0f, high = 0.0f;
+        int drawn = 0;
+        for (int i = 0; i < view->width * view->height; ++i) {
+            if (!(depth->pixels[std::size_t(i)] < 1.0f)) continue;
+            float const v = view->pixels[std::size_t(i) * std::size_t(view->channels)];
+            low = std::min(low, v);
+            high = std::max(high, v);
+            ++drawn;
+        }
+        ASSERT_GT(drawn, 1000) << name;
+        EXPECT_LT(low, 0.1f) << name;
+        EXPECT_GT(high, 0.9f) << name;
+    }
 }

@@ -279,7 +279,9 @@ TEST(SessionController, WithAGBufferOpenSessionsStoreTheSceneBehindIt) {
     });
     // Open by hand, as installGBuffer leaves things: the scene kept, the G-buffer's two lights shown.
     gbuffer.path = "/x/their_gbuffer";
-    gbuffer.scene = SceneViewSnapshot{f.state.camera, f.state.rig, f.state.lights, 1, f.state.pipeline.shininess};
+    gbuffer.scene = SceneViewSnapshot{
+        f.state.camera,          f.state.rig, f.state.lights, 1, f.state.pipeline.shininess, f.state.pipeline.shading,
+        f.state.pipeline.ambient};
     f.state.lights.assign(2, PointLight{});
     f.state.lights[0].intensity = 9.0f;
     EXPECT_FALSE(c.hasUnsavedEdits(f.state)) << "the G-buffer's lights are not an edit of the scene";

@@ -7,6 +7,8 @@
 #     sentence while what was shown stays, and Close G-buffer gives back the scene's frame.
 #  2. `--gbuffer DIR` with real X input (xdotool): the frame log names the G-buffer and its size,
 #     and a mouse drag over the viewport leaves the fixed camera where it was.
+#  2b. A manifest that reads the export's albedo as biased normals: findings; real clicks on the
+#     viewport's Checks button and its first finding mark that finding, a second click unmarks it.
 #  3. `--gbuffer` of a bad manifest: exit code 2 and one sentence.
 # usage: ui_gbuffer.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
 set -eu
@@ -125,6 +127,33 @@ wait_frames 6
 [ "$(field gbuffer)" = '""' ] || fail "starting a lesson left G-buffer $(field gbuffer) shown"
 [ "$(field lesson)" != '""' ] || fail "the click on the course's first row opened no lesson"
 ui_quit "Ctrl+Q did not quit the editor showing a G-buffer"
+
+# --- 2b. The checks with real clicks: a manifest over the export that reads the albedo as biased
+# normals (a classic mislabelled attachment) has findings; the Checks button lists them and a
+# click on the first marks its pixels, a second click unmarks them; the list ends with the precision notes.
+printf '%s\n' '{"format": "gbuffer-lab-gbuffer", "version": 1, "preset": "gbuffer-lab",' \
+    ' "normal": {"file": "albedo.png", "channels": "rgb", "encoding": "biased", "space": "world"},' \
+    ' "camera": {"position": [0, 5, 11.5], "target": [0, 4.716, 10.541], "fov_y_degrees": 60, "near": 0.1, "far": 200},' \
+    ' "lights": {"positions": [[0, 2, 0]], "colors": [[1, 1, 1]], "linear": 0.7, "quadratic": 1.8}}' \
+    > "$work/export/bad_normals.json"
+ui_start checks --gbuffer "$work/export/bad_normals.json" --size 1280x720 --frame-sleep-ms 20
+[ "$(field findings)" -gt 0 ] || fail "the mislabelled normals gave no finding"
+[ "$(field markedFinding)" = -1 ] || fail "a finding is marked before any click"
+set -- $(rect_point checksButton 0.5 0.5)
+[ "${1:-0}" -gt 0 ] || fail "no Checks button with a G-buffer open: $(field checksButton)"
+click_at "$1" "$2"
+set -- $(rect_point firstFinding 0.1 0.5)
+[ "${1:-0}" -gt 0 ] || fail "the Checks list did not open: $(field firstFinding)"
+# Below the findings, a precision line per attachment of the manifest (normal, and the preset's others).
+[ "$(field precisionLines)" -ge 2 ] || fail "the Checks list showed $(field precisionLines) precision lines"
+click_at "$1" "$2"
+[ "$(field markedFinding)" = 0 ] || fail "clicking the first finding marked $(field markedFinding), not 0"
+shot checks_marked
+click_at "$1" "$2"
+[ "$(field markedFinding)" = -1 ] || fail "a second click left finding $(field markedFinding) marked"
+xdotool key --delay 30 Escape
+wait_frames 2
+ui_quit "Ctrl+Q did not quit the editor showing the checks"
 
 # --- 3. --gbuffer of a bad manifest: one sentence, exit code 2 --------------------------------
 set +e

@@ -1,5 +1,6 @@
 // The tiled layout (ImGui without docking) fills the work area exactly, without overlap.
 #include "model/layout_state.h"
+#include "model/window_fit.h"
 
 #include <gtest/gtest.h>
 
@@ -182,4 +183,26 @@ TEST(UiLayout, SplitsLineReadsBackAndBadLinesAreRefusedNamingTheKey) {
         EXPECT_FALSE(parseSplits(bad, "imgui.ini: Splits", &error)) << bad;
         EXPECT_NE(error.find("imgui.ini: Splits must be seven shares"), std::string::npos) << error;
     }
+}
+
+// The first window without --size: 1600x900 on a 1280x720 screen opens at the screen's size,
+// a larger screen keeps 1600x900, a 2x content scale halves what fits.
+namespace {
+void expectFit(WindowFit const& fit, int width, int height, bool reduced) {
+    EXPECT_EQ(fit.width, width);
+    EXPECT_EQ(fit.height, height);
+    EXPECT_EQ(fit.reduced, reduced);
+}
+}  // namespace
+
+TEST(WindowFit, TheDefaultWindowShrinksToASmallScreenOnly) {
+    expectFit(fitWindowToWorkArea(1600, 900, 1280, 720, 1.0f), 1280, 720, true);
+    expectFit(fitWindowToWorkArea(1600, 900, 1920, 1080, 1.0f), 1600, 900, false);
+    expectFit(fitWindowToWorkArea(1600, 900, 2560, 800, 1.0f), 1600, 800, true);  // only the height is short
+    expectFit(fitWindowToWorkArea(1600, 900, 2560, 1400, 2.0f), 1280, 700, true);
+}
+
+TEST(WindowFit, AnUnknownWorkAreaOrScaleLeavesTheSizeAsked) {
+    expectFit(fitWindowToWorkArea(1600, 900, 0, 0, 1.0f), 1600, 900, false);
+    expectFit(fitWindowToWorkArea(1600, 900, 1280, 720, std::nanf("")), 1280, 720, true);
 }

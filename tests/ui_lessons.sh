@@ -38,8 +38,10 @@ click() {
     if [ -n "${lx:-}" ]; then reach "$1"; fi
     set -- $(button "$1")
     [ "${1:-0}" -gt 0 ] || fail "button not drawn: $(field lessonButtons)"
+    click_from=$(lines)
     xdotool mousemove --window "$wid" "$1" "$2" mousedown 1 sleep 0.05 mouseup 1
-    wait_frames 4
+    settle_click "$click_from"
+    wait_frames 2
 }
 
 "$bin" --size 1280x720 --no-vsync --log-frames "$log" > "$work/editor.log" 2>&1 &
@@ -89,6 +91,9 @@ click 4
 [ "$(field litDiff)" = "[0.0000,0.0000,0.0000,0.0000]" ] || fail "Leave kept the lesson's lit pin ($(field litDiff))"
 echo "Leave: camera $(field camera), view $(field view), lit pin and diff gone"
 ui_stop
+# The killed editor may have autosaved the lesson's edits (a loaded machine runs it long enough):
+# its recovery file would greet the next editor with a modal that eats the clicks.
+rm -f "$GBL_RECOVERY_DIR"/*
 
 # A prediction and an answer (issue 27): camera_inside:2 shows cull front while the student
 # predicts; picking "back" and checking it applies the step (cull back, A/B split) and says right;

@@ -293,6 +293,46 @@ TEST(ViewerTools, ReadableRangeLeavesOutTheOutliersTheBackgroundAndNonFiniteValu
     EXPECT_EQ(readableRange(v, lit).max, 99.0f);
 }
 
+// The G-buffer window's viewers: auto-fit takes the readable 1-99 % range, as the viewport's do, so
+// one far outlier no longer squeezes the picture; the Fit button still takes min..max.
+TEST(ViewerTools, StripViewersAutoFitTheReadableRangeAndFitTheWholeRangeOnAsk) {
+    ViewerState v;
+    v.kind = ViewerKind::Position;
+    v.channelMask = 0x1;
+    FloatImage img = positions();  // R = 1..100
+    img.pixels[396] = 5000.0f;     // one outlier on a drawn pixel (R of texel 99)
+    ValueRange const automatic = stripViewerRange(v, img, false, 0.1f, 100.0f);
+    EXPECT_EQ(automatic.min, 1.0f);
+    EXPECT_EQ(automatic.max, 99.0f);
+    ValueRange const asked = stripViewerRange(v, img, true, 0.1f, 100.0f);
+    EXPECT_EQ(asked.min, 1.0f);
+    EXPECT_EQ(asked.max, 5000.0f);
+
+    // Depth: raw window depths; the far plane is background either way, auto-fit is in linear
+    // distance when the viewer linearises.
+    v = ViewerState{};
+    v.kind = ViewerKind::Depth;
+    v.linearDepth = true;
+    FloatImage depth{100, 1, 1, {}};
+    for (int i = 0; i < 99; ++i) depth.pixels.push_back(0.9f + 0.0009f * float(i));
+    depth.pixels.push_back(1.0f);
+    ValueRange const linear = stripViewerRange(v, depth, false, 0.1f, 100.0f);
+    EXPECT_EQ(linear.samples, 99);
+    EXPECT_NEAR(linear.min, linearDepth(0.9f, 0.1f, 100.0f), 1e-4f);
+    EXPECT_LT(linear.max, linearDepth(0.9f + 0.0009f * 98.0f, 0.1f, 100.0f) + 1e-3f);
+    EXPECT_GT(linear.max, linear.min);
+    ValueRange const whole = stripViewerRange(v, depth, true, 0.1f, 100.0f);
+    EXPECT_EQ(whole.samples, 99);
+    EXPECT_NEAR(whole.max, linearDepth(0.9f + 0.0009f * 98.0f, 0.1f, 100.0f), 1e-3f);
+
+    // The stencil's integers fit whole, one step wide at least.
+    v.showStencil = true;
+    FloatImage const stencil{4, 1, 1, {3.0f, 3.0f, 3.0f, 3.0f}};
+    ValueRange const marks = stripViewerRange(v, stencil, false, 0.1f, 100.0f);
+    EXPECT_EQ(marks.min, 3.0f);
+    EXPECT_EQ(marks.max, 4.0f);
+}
+
 TEST(ViewerTools, AutoFitRefitsAtOnceWhenTheValuesMeanSomethingElse) {
     ViewerState v = ViewportTools::defaultViewer();
     v.kind = ViewerKind::Depth;

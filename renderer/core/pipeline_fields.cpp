@@ -61,7 +61,7 @@ constexpr bool kOptional = true, kRequired = false;
 constexpr bool kSideB = true, kSharedView = false;  // kSharedView: both sides of A/B show it alike
 
 // The A/B table shows the sideB rows in this order; its first row is the mode (startAb ticks it).
-std::array<PipelineField, 15> const kFields{
+std::array<PipelineField, 16> const kFields{
     choice<&PipelineSettings::mode>("mode", kLightingModeNames, "How the lights are added: the lighting mode",
                                     kRequired, kSideB),
     choice<&PipelineSettings::cull>("cull", kCullModeNames, "Which faces of a light volume are drawn (volumes mode)",
@@ -95,6 +95,10 @@ std::array<PipelineField, 15> const kFields{
     choice<&PipelineSettings::accumulation>("accumulation", kLightAccumulationNames,
                                             "One lit target, or diffuse and specular targets and a combine pass",
                                             kOptional, kSideB),
+    choice<&PipelineSettings::shading>(
+        "shading", kShadingModelNames,
+        "The lighting equation: gbuffer-lab's (docs/lighting.md) or LearnOpenGL's deferred shader's", kOptional,
+        kSideB),
     toggle<&PipelineSettings::wireframesSelectedOnly>(
         "wireframes_selected_only", "The wireframes outline the selected light's volume only", kOptional, kSharedView),
     number<&PipelineSettings::volumeScale>("volume_scale", 0.1f, 4.0f,

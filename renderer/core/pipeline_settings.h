@@ -17,6 +17,16 @@ enum class DepthCopy { Blit, Shader, Off };
 enum class Tonemap { Exposure, Reinhard, Clamp };
 // How the G-buffer stores a surface; each value has one description in core/gbuffer_layout.h.
 enum class GBufferLayout { Classic, Packed, Naive8, Rgb10a2 };
+// The lighting equation (docs/lighting.md): gbuffer-lab's own, or the one LearnOpenGL's deferred
+// shading chapter writes (its 8.1 lighting shader: attenuation 1/(Kc + Kl d + Kq d^2) with no
+// window, specular not gated by N.L), so a G-buffer of a program of that text re-lights as that
+// program lit it. Values match SHADING_* in shaders/lighting.glsl.
+enum class ShadingModel { GbufferLab, LearnOpenGl };
+// The ambient light LearnOpenGL's deferred lighting shader hard-codes (0.1 * albedo); opening a
+// G-buffer whose manifest asks for the learnopengl shading sets it.
+inline constexpr float kLearnOpenGlAmbient = 0.1f;
+// The specular exponent that shader hard-codes: a manifest with that shading and no "shininess".
+inline constexpr float kLearnOpenGlShininess = 16.0f;
 // Where the lighting modes add their lights (docs/lighting.md, "Accumulation targets"): one lit
 // target, or diffuse and specular light in two targets that a combine pass finishes.
 enum class LightAccumulation { Single, Split };
@@ -60,6 +70,7 @@ struct PipelineSettings {
     DebugView view = DebugView::Final;
     GBufferLayout layout = GBufferLayout::Classic;
     LightAccumulation accumulation = LightAccumulation::Single;
+    ShadingModel shading = ShadingModel::GbufferLab;
     bool lightCubes = true;
     bool volumeWireframes = false;
     // The wireframes outline the selected light's volume only: 32 outlines at once bury the frame.
@@ -83,10 +94,18 @@ inline constexpr std::array<std::string_view, 3> kDepthCopyNames{"blit", "shader
 inline constexpr std::array<std::string_view, 3> kTonemapNames{"exposure", "reinhard", "clamp"};
 inline constexpr std::array<std::string_view, 4> kGBufferLayoutNames{"classic", "packed", "naive8", "rgb10a2"};
 inline constexpr std::array<std::string_view, 2> kLightAccumulationNames{"single", "split"};
+inline constexpr std::array<std::string_view, 2> kShadingModelNames{"gbuffer-lab", "learnopengl"};
 inline constexpr std::array<std::string_view, 19> kDebugViewNames{
     "final",        "lighting",  "position",      "normal",         "albedo",        "specular", "depth",
     "depth_linear", "heatmap",   "tile_lights",   "raw0",           "raw1",          "raw2",     "raw3",
     "emissive",     "occlusion", "diffuse_light", "specular_light", "cluster_slices"};
+
+// Whether a mode lights a pixel only inside the light's radius whatever the equation (its volume,
+// tile or cluster lists are sized to it): there the learnopengl shading is cut at the radius too,
+// as LearnOpenGL's own light-volume version is; quad and forward shade every light everywhere.
+constexpr bool cutsAtRadius(LightingMode m) {
+    return m == LightingMode::Volumes || m == LightingMode::Tiled || m == LightingMode::Clustered;
+}
 
 template <class Enum, std::size_t N>
 std::optional<Enum> enumFromName(std::array<std::string_view, N> const& names, std::string_view name) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/light_math.h"
+#include "core/pipeline_settings.h"
 #include "core/point_light.h"
 
 #include <glm/glm.hpp>
@@ -21,13 +22,24 @@ struct ShadingInputs {
     float shininess = 32.0f;
     glm::vec3 emissive{0.0f};  // emitted radiance, added once (not per light)
     float occlusion = 1.0f;    // ambient occlusion: scales the ambient term only
+    // The equation (docs/lighting.md), and for the learnopengl one whether the mode cuts it at the
+    // radius (cutsAtRadius): shadingOf fills both from the pipeline's settings.
+    ShadingModel model = ShadingModel::GbufferLab;
+    bool cutAtRadius = false;
 };
+
+// The settings' shininess and equation, as the frame's mode applies it.
+inline void shadingOf(PipelineSettings const& settings, ShadingInputs& s) {
+    s.shininess = settings.shininess;
+    s.model = settings.shading;
+    s.cutAtRadius = cutsAtRadius(settings.mode);
+}
 
 struct LightContribution {
     int lightIndex = -1;
     float distance = 0.0f;
     float radius = 0.0f;
-    float attenuation = 0.0f;  // windowed, as applied (1 for directional lights)
+    float attenuation = 0.0f;  // as applied: windowed, or classic with learnopengl (1 for directional lights)
     float cone = 1.0f;         // spot cone factor (1 for point and directional lights)
     glm::vec3 diffuse{0.0f};   // albedo * N.L * colour * intensity * attenuation * cone
     glm::vec3 specular{0.0f};  // specular * (N.H)^shininess * colour * intensity * attenuation * cone
@@ -48,7 +60,12 @@ inline LightContribution shadeLightCpu(PointLight const& light, ShadingInputs co
         c.radius = lightRadius(light).radius;
         glm::vec3 const toLight = light.position - s.position;
         c.distance = glm::length(toLight);
-        c.attenuation = windowedAttenuation(light, c.radius, c.distance);
+        bool const classic = s.model == ShadingModel::LearnOpenGl;
+        // A light of radius 0 (too dim to reach the threshold, or invalid) shades nothing in either.
+        bool const cut = c.radius <= 0.0f || (s.cutAtRadius && c.distance >= c.radius);
+        c.attenuation = !classic ? windowedAttenuation(light, c.radius, c.distance)
+                        : cut    ? 0.0f
+                                 : attenuation(light.kc, light.kl, light.kq, c.distance);
         if (c.attenuation <= 0.0f || c.distance <= 0.0f) return c;
         L = toLight / c.distance;
         c.cone = spotConeFactor(spotCone(light), glm::dot(-L, lightDirection(light)));
@@ -57,7 +74,10 @@ inline LightContribution shadeLightCpu(PointLight const& light, ShadingInputs co
     glm::vec3 const V = glm::normalize(s.viewPosition - s.position);
     glm::vec3 const H = glm::normalize(L + V);
     float const diff = std::max(glm::dot(s.normal, L), 0.0f);
-    float const spec = diff > 0.0f ? std::pow(std::max(glm::dot(s.normal, H), 0.0f), s.shininess) : 0.0f;
+    // LearnOpenGL's shader does not gate the specular term by N.L: a light behind the surface can
+    // still add a highlight where N.H > 0.
+    bool const gated = s.model == ShadingModel::GbufferLab;
+    float const spec = diff > 0.0f || !gated ? std::pow(std::max(glm::dot(s.normal, H), 0.0f), s.shininess) : 0.0f;
     glm::vec3 const radiance = light.color * light.intensity * (c.attenuation * c.cone);
     c.diffuse = s.albedo * diff * radiance;
     c.specular = glm::vec3(s.specular * spec) * radiance;

@@ -171,7 +171,7 @@ Json parseJson(std::span<std::uint8_t const> text, std::size_t maxDepth) {
     };
     try {
         return Json::parse(text.begin(), text.end(), limitDepth, true);
-    } catch (Json::parse_error const& e) {
+    } catch (Json::exception const& e) {  // parse_error, and out_of_range for a number like 1e400
         std::string what = e.what();
         auto const at = what.find("at line");
         if (at != std::string::npos) what = what.substr(at);

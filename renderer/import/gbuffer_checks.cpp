@@ -313,8 +313,10 @@ GBufferCheckReport checkGBuffer(ImportedGBuffer const& g) {
         note.attachment = im.field;
         note.storage = storageName(im.storage);
         note.step = storageStep(im.storage);
-        if (im.field == "normal")
+        if (im.field == "normal") {
             note.highlightError = highlightError(normalAngleError(m.normal.encoding, note.step), m.shininess);
+            note.shininess = m.shininess;
+        }
         r.precision.push_back(note);
         // Two levels of an 8-bit display at the highlight's peak: banding a viewer sees.
         constexpr double kVisible = 2.0 / 255.0;
@@ -329,6 +331,14 @@ GBufferCheckReport checkGBuffer(ImportedGBuffer const& g) {
                            double(m.shininess), note.highlightError * 100.0)));
     }
     return r;
+}
+
+std::string precisionLine(PrecisionNote const& note) {
+    std::string line = note.attachment + ": " + note.storage + format(", step %.3g", note.step);
+    if (note.attachment == "normal")
+        line += format("; a highlight of shininess %.0f moves by up to %.2g %% of its peak", note.shininess,
+                       note.highlightError * 100.0);
+    return line;
 }
 
 }  // namespace gbl

@@ -28,6 +28,7 @@ struct PrecisionNote {
     // Normals only: the largest error of (N.H)^shininess over the highlight that the normal's
     // quantisation causes, as a fraction of the peak (0 for other attachments).
     double highlightError = 0.0;
+    double shininess = 0.0;  // the manifest's, which highlightError is worked out at (normals only)
 };
 
 struct GBufferCheckReport {
@@ -45,5 +46,9 @@ double highlightError(double angle, double shininess);
 double normalAngleError(NormalEncoding encoding, double step);
 
 GBufferCheckReport checkGBuffer(ImportedGBuffer const& g);
+
+// One line for a precision note, as `check` prints it and the editor's Checks list shows it:
+// "normal: 8-bit unsigned, step 0.00392; a highlight of shininess 32 moves by up to 1.3 % of its peak".
+std::string precisionLine(PrecisionNote const& note);
 
 }  // namespace gbl

@@ -260,9 +260,12 @@ GBufferManifest readManifest(json j, std::string const& dir) {
                 "specular", "depth", "lit", "camera", "lights"});
     Reader reader{dir};
     if (json const* f = top.optional("flip_y")) m.flipY = boolean(*f, "flip_y");
-    if (json const* s = top.optional("shininess")) m.shininess = number(*s, "shininess", Bound::Positive);
     if (json const* s = top.optional("shading"))
-        m.shading = enumeration<ShadingPreset>(*s, "shading", kShadingPresetNames);
+        m.shading = enumeration<ShadingModel>(*s, "shading", kShadingModelNames);
+    if (json const* s = top.optional("shininess"))
+        m.shininess = number(*s, "shininess", Bound::Positive);
+    else if (m.shading == ShadingModel::LearnOpenGl)
+        m.shininess = kLearnOpenGlShininess;  // that text's lighting shader's exponent
 
     json const& pj = top.required("position");
     if (pj.is_object() && pj.contains("from_depth")) {
@@ -400,8 +403,12 @@ ManifestLoad parseManifest(std::string_view text, std::string const& label, std:
     json j;
     try {
         j = json::parse(text);
-    } catch (json::parse_error const& e) {
-        out.error = label + ": not valid JSON: " + e.what();
+    } catch (json::exception const& e) {  // parse_error, and out_of_range for a number like 1e400
+        // nlohmann's message carries the line and column; its "[json.exception...] " prefix goes.
+        std::string what = e.what();
+        if (auto const close = what.find("] "); what.rfind("[json.exception", 0) == 0 && close != std::string::npos)
+            what = what.substr(close + 2);
+        out.error = label + ": not valid JSON: " + what;
         return out;
     }
     try {
@@ -431,6 +438,12 @@ ManifestLoad loadManifest(std::string const& path) {
     std::ostringstream s;
     s << f.rdbuf();
     return parseManifest(s.str(), p.filename().string(), p.parent_path().string());
+}
+
+void applyManifestShading(float shininess, ShadingModel shading, PipelineSettings& settings) {
+    settings.shininess = shininess;
+    settings.shading = shading;
+    if (shading == ShadingModel::LearnOpenGl) settings.ambient = glm::vec3(kLearnOpenGlAmbient);
 }
 
 }  // namespace gbl

@@ -2,7 +2,8 @@
 // stored, read from versioned JSON and validated with a message naming the first bad field.
 #pragma once
 
-#include "core/gbuffer_layout.h"  // NormalEncoding, the same three encodings the layouts store
+#include "core/gbuffer_layout.h"     // NormalEncoding, the same three encodings the layouts store
+#include "core/pipeline_settings.h"  // ShadingModel
 #include "core/point_light.h"
 
 #include <glm/glm.hpp>
@@ -23,15 +24,12 @@ enum class Space { World, View };
 enum class ColorEncoding { Linear, Srgb };
 enum class DepthConvention { Window, Ndc, Linear };
 enum class RawType { Float, Half, Uint8 };
-// The lighting a re-light uses: docs/lighting.md's model, or LearnOpenGL 8.1's shader.
-enum class ShadingPreset { GbufferLab, LearnOpenGl };
 
 inline constexpr std::array<std::string_view, 2> kSpaceNames{"world", "view"};
 inline constexpr std::array<std::string_view, 3> kNormalEncodingNames{"float", "biased", "octahedral"};
 inline constexpr std::array<std::string_view, 2> kColorEncodingNames{"linear", "srgb"};
 inline constexpr std::array<std::string_view, 3> kDepthConventionNames{"window", "ndc", "linear"};
 inline constexpr std::array<std::string_view, 3> kRawTypeNames{"float", "half", "uint8"};
-inline constexpr std::array<std::string_view, 2> kShadingPresetNames{"gbuffer-lab", "learnopengl"};
 inline constexpr std::array<std::string_view, 3> kManifestPresetNames{"learnopengl", "newcastle", "gbuffer-lab"};
 
 // A headerless file of float32, float16 or uint8 samples, rows top to bottom, channels interleaved.
@@ -104,8 +102,12 @@ struct GBufferManifest {
     std::vector<PointLight> lights;
     bool flipY = false;  // rows are bottom-up in the files (glReadPixels) and are turned over on load
     float shininess = 32.0f;
-    ShadingPreset shading = ShadingPreset::GbufferLab;
+    ShadingModel shading = ShadingModel::GbufferLab;  // the re-light's equation ("shading")
 };
+
+// The re-light's settings a manifest gives: its shininess and shading model, and with the
+// learnopengl model the ambient light that text's lighting shader hard-codes.
+void applyManifestShading(float shininess, ShadingModel shading, PipelineSettings& settings);
 
 struct ManifestLoad {
     std::optional<GBufferManifest> manifest;  // whole, or nothing

@@ -34,6 +34,8 @@ void setShadingUniforms(gl::Program const& p, ShadingUniforms const& s) {
     p.set("uEmissiveWeight", s.emissiveWeight);
     p.set("uInverseViewProj", s.inverseViewProj);
     p.set("uSplitAccumulation", s.splitAccumulation ? 1 : 0);
+    p.set("uShadingModel", int(s.model));
+    p.set("uCutAtRadius", s.cutAtRadius ? 1 : 0);
 }
 
 void setTonemapUniforms(gl::Program const& p, DisplayTonemap const& t) {

@@ -25,6 +25,9 @@ struct ShadingUniforms {
     // Split accumulation (shaders/light_accumulation.glsl): the lights go to the diffuse and
     // specular targets instead of one lit image.
     bool splitAccumulation = false;
+    // The lighting equation (shaders/lighting.glsl), and whether the mode cuts it at the radius.
+    ShadingModel model = ShadingModel::GbufferLab;
+    bool cutAtRadius = false;
 };
 
 // Binds `texture` to texture unit `unit` (a BIND_* slot) and leaves unit 0 active.

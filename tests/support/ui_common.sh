@@ -54,11 +54,35 @@ wait_frames() {
     target=$(( $(lines) + $1 ))
     i=0
     while [ "$(lines)" -lt "$target" ]; do
-        kill -0 "$pid" 2>/dev/null || fail "the editor exited (see $work/editor.log)"
+        kill -0 "$pid" 2>/dev/null || editor_exited
         i=$((i + 1))
         [ "$i" -le 600 ] || fail "no frame logged for 60 s"
         sleep 0.1
     done
+}
+# wait_frames_or_exit N: as wait_frames, but the editor exiting ends the wait instead of failing it.
+# For the wait after a test's last click, where the editor's UI script may reach its end (and the
+# editor quit) while a loaded machine's shell is still counting frames; the log keeps every frame,
+# and the test's own checks and its wait for the exit status follow.
+wait_frames_or_exit() {
+    target=$(( $(lines) + $1 ))
+    i=0
+    while [ "$(lines)" -lt "$target" ] && kill -0 "$pid" 2>/dev/null; do
+        i=$((i + 1))
+        [ "$i" -le 600 ] || fail "no frame logged for 60 s"
+        sleep 0.1
+    done
+}
+# editor_exited: fails with the editor's exit status and the end of its output (the newest .log in
+# $work: each script sends the editor's stdout and stderr there), so that a crash on a CI machine,
+# whose work folder is gone, says what happened (a sanitizer's report, a GLFW error, a script FAIL).
+editor_exited() {
+    exit_status=0
+    wait "$pid" 2>/dev/null || exit_status=$?
+    pid=""
+    out_file=$(ls -t "$work"/*.log 2>/dev/null | head -n 1)
+    [ -n "$out_file" ] && { echo "--- the last 40 lines of $out_file:"; tail -n 40 "$out_file"; echo "---"; }
+    fail "the editor exited with status $exit_status"
 }
 # events_since N: the events and actions logged after line N.
 events_since() { tail -n +"$(( $1 + 1 ))" "$log" | sed -n 's/.*"events":\(\[[^]]*\]\).*"actions":\(\[[^]]*\]\).*/\1 \2/p'; }
@@ -79,8 +103,26 @@ ui_window() {
     [ -n "$wid" ] || fail "no gbuffer-lab window"
     xdotool windowactivate --sync "$wid" 2>/dev/null || xdotool windowfocus --sync "$wid"
 }
-# click_at X Y: move there, wait 0.1 s, press and release with a 50 ms dwell.
-click_at() { xdotool mousemove --window "$wid" "$1" "$2" sleep 0.1 mousedown 1 sleep 0.05 mouseup 1; }
+# settle_click N: after a click placed when the log had N lines, waits until a frame has logged the
+# button's release, then two frames more. A widget logs its rectangle as it is drawn, so the frame
+# that acts on a click may still show a button the click takes away (a loaded machine can log frames
+# between xdotool's return and the editor reading the events); the frames after it show the result.
+settle_click() {
+    settle_tries=0
+    until events_since "$1" | grep -q 'button 0 release'; do
+        wait_frames 1
+        settle_tries=$((settle_tries + 1))
+        [ "$settle_tries" -le 200 ] || fail "a click's release was never logged"
+    done
+    wait_frames 2
+}
+# click_at X Y: move there, wait 0.1 s, press and release with a 50 ms dwell; returns once a frame
+# has shown what the click did (settle_click).
+click_at() {
+    click_from=$(lines)
+    xdotool mousemove --window "$wid" "$1" "$2" sleep 0.1 mousedown 1 sleep 0.05 mouseup 1
+    settle_click "$click_from"
+}
 # lock_at FX FY: the Pixel inspector locked on that point of the viewport: unlock (L), hover, lock (L).
 lock_at() {
     set -- $(rect_point viewport "$1" "$2")

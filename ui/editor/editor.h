@@ -13,6 +13,7 @@ struct EditorOptions {
     int frames = 0;                             // 0 = run until the window is closed
     int width = 1600;                           // window size in screen coordinates
     int height = 900;
+    bool sizeGiven = false;                    // --size: taken as given; else the window fits the monitor's work area
     std::optional<std::string> sessionPath;    // session file to open (issue 6)
     std::optional<std::string> gbufferPath;    // another program's G-buffer to re-light (issue 28)
     std::optional<std::string> uiTestScript;   // run a UI test script (see ui/ui_script.h), exit 0 if it passes

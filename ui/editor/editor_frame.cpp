@@ -9,6 +9,7 @@
 #include "model/image_range.h"
 #include "model/light_pick.h"
 #include "model/pixel_breakdown.h"
+#include "model/viewer_tools.h"
 #include "scene/default_scene.h"
 #include "script/screenshot.h"
 
@@ -32,44 +33,37 @@ std::vector<PointLight> animatedLights(EditorState const& state) {
     return lights;
 }
 
-// Refits viewer ranges that asked for it (button) or are on auto (about once a second).
+// Refits viewer ranges that asked for it (button: min..max) or are on auto (about once a second: the
+// readable 1-99 % range, as the viewport's viewers).
 // Without a new frame the attachments hold what they held, so auto-fits wait for one.
 void fitViewerRanges(EditorState& state, Renderer& renderer, long frame, bool rendered) {
     for (auto& v : state.gbuffer.viewers) {
         // Auto-fit at the first frame with data, then about once a second (60 frames).
         bool const autoDue = v.autoFit && (v.lastFitFrame < 0 || (rendered && frame - v.lastFitFrame >= 60));
         if (!v.fitRequested && !autoDue) continue;
+        bool const asked = v.fitRequested;
         v.fitRequested = false;
-        ui::ValueRange r;
+        Attachment source = Attachment::Position;
         switch (v.kind) {
             case ui::ViewerKind::Position:
-                r = ui::fitRange(renderer.readAttachment(Attachment::Position), v.channelMask & 0x7,
-                                 ui::RangeSkip::ZeroAlpha);
                 break;
             case ui::ViewerKind::Depth:
-                if (v.showStencil) {
-                    // Integers 0..255, every pixel (no background); one value alone widens to a step.
-                    r = ui::fitRange(renderer.readAttachment(Attachment::Stencil), 0x1, ui::RangeSkip::None);
-                    r.max = std::max(r.max, r.min + 1.0f);
-                    break;
-                }
-                r = ui::fitRange(renderer.readAttachment(Attachment::Depth), 0x1, ui::RangeSkip::FarDepth,
-                                 v.linearDepth, v.cameraClipPlanes ? state.camera.nearPlane : v.nearPlane,
-                                 v.cameraClipPlanes ? state.camera.farPlane : v.farPlane);
+                source = v.showStencil ? Attachment::Stencil : Attachment::Depth;
                 break;
             case ui::ViewerKind::Albedo:
-            case ui::ViewerKind::Specular: {
-                unsigned const mask = v.kind == ui::ViewerKind::Specular ? 0x8u : (v.channelMask & 0x7);
-                r = ui::fitRange(renderer.readAttachment(Attachment::AlbedoSpec), mask, ui::RangeSkip::None);
+            case ui::ViewerKind::Specular:
+                source = Attachment::AlbedoSpec;
                 break;
-            }
             case ui::ViewerKind::Normal:
             case ui::ViewerKind::Lighting:  // the viewport's tools only; they fit their own values
                 continue;                   // normals are shown as directions, not remapped
         }
+        ui::ValueRange const r = ui::stripViewerRange(v, renderer.readAttachment(source), asked,
+                                                      v.cameraClipPlanes ? state.camera.nearPlane : v.nearPlane,
+                                                      v.cameraClipPlanes ? state.camera.farPlane : v.farPlane);
         if (r.samples > 0) {
             v.rangeMin = r.min;
-            v.rangeMax = r.max;
+            v.rangeMax = r.max > r.min ? r.max : r.min + 1e-6f;
             v.lastFitFrame = frame;
         }
     }
@@ -112,8 +106,9 @@ void drawViewers(Editor& editor, FrameTimes& times) {
 void samplePixel(Editor& editor, bool rendered) {
     Renderer& renderer = *editor.renderer;
     ui::PixelInspectorState& inspector = editor.state.inspector;
-    if (!rendered && inspector.pixel == editor.sampledPixel && (inspector.sample || !inspector.pixel)) return;
-    editor.sampledPixel = inspector.pixel;
+    if (!rendered && inspector.pixel == editor.frameMemory.sampledPixel && (inspector.sample || !inspector.pixel))
+        return;
+    editor.frameMemory.sampledPixel = inspector.pixel;
     if (inspector.pixel && inspector.pixel->x < renderer.width() && inspector.pixel->y < renderer.height()) {
         inspector.sample = renderer.samplePixel(inspector.pixel->x, inspector.pixel->y, editor.state.camera);
         ui::PixelInFrame where{*inspector.pixel, {renderer.width(), renderer.height()}, std::nullopt};
@@ -129,9 +124,19 @@ void samplePixel(Editor& editor, bool rendered) {
         inspector.breakdown =
             ui::breakDownPixel(*inspector.sample, shadedLights(frame), editor.state.camera, inspector.settings, where);
         inspector.breakdownNote = inspector.breakdown ? "" : ui::noBreakdownNote(*inspector.sample, inspector.settings);
+        // Their value beside ours: the pinned lit image of an open G-buffer, at the frame's size.
+        ui::LitPin const& pin = editor.state.litPin;
+        inspector.theirs.reset();
+        if (!pin.pinnedName.empty() && pin.pinned && pin.pinned->width == renderer.width() &&
+            pin.pinned->height == renderer.height()) {
+            glm::ivec2 const p = *inspector.pixel;
+            inspector.theirs =
+                glm::vec3(pin.pinned->at(p.x, p.y, 0), pin.pinned->at(p.x, p.y, 1), pin.pinned->at(p.x, p.y, 2));
+        }
     } else {
         inspector.sample.reset();
         inspector.breakdown.reset();
+        inspector.theirs.reset();
         inspector.breakdownNote = "no pixel";
     }
 }
@@ -184,8 +189,8 @@ void pickLightAt(EditorState& state, Renderer& renderer, std::span<PointLight co
 
 bool beginFrame(Editor& editor, FrameTimes& times) {
     times.start = EditorClock::now();
-    times.dt = float(std::chrono::duration<double>(times.start - editor.lastFrame).count());
-    editor.lastFrame = times.start;
+    times.dt = float(std::chrono::duration<double>(times.start - editor.frameMemory.lastFrame).count());
+    editor.frameMemory.lastFrame = times.start;
     glfwPollEvents();
     takeFrameInput(editor.input);
     // The window's close button asks first too when edits would be lost.
@@ -211,9 +216,9 @@ bool beginFrame(Editor& editor, FrameTimes& times) {
 void avoidLongFrame(Editor& editor, glm::ivec2 size) {
     EditorState& state = editor.state;
     auto const key = std::make_pair(state.pipeline.mode, editor.drawn.size());
-    if (editor.longFrameChecked == key || size.x <= 0 || size.y <= 0) return;
-    editor.longFrameChecked = key;
-    if (editor.longFrameSwitchedFrom == key) return;
+    if (editor.frameMemory.longFrameChecked == key || size.x <= 0 || size.y <= 0) return;
+    editor.frameMemory.longFrameChecked = key;
+    if (editor.frameMemory.longFrameSwitchedFrom == key) return;
     FrameInput const input{state.camera, editor.drawn, state.pipeline};
     auto const warning = longFrameWarning(*editor.renderer, input, editor.options.frameWarnSeconds);
     if (!warning) return;
@@ -221,9 +226,9 @@ void avoidLongFrame(Editor& editor, glm::ivec2 size) {
         ui::logMessage(state.log, "Slow frame ahead: " + warning->message + ".", true);
         return;
     }
-    editor.longFrameSwitchedFrom = key;
+    editor.frameMemory.longFrameSwitchedFrom = key;
     state.pipeline.mode = warning->cheaper->mode;
-    editor.longFrameChecked = std::make_pair(state.pipeline.mode, editor.drawn.size());
+    editor.frameMemory.longFrameChecked = std::make_pair(state.pipeline.mode, editor.drawn.size());
     ui::logMessage(state.log,
                    "Switched to " + std::string(kLightingModeNames[std::size_t(state.pipeline.mode)]) +
                        " mode: " + warning->message + ". Pipeline > Lighting mode switches back.",
@@ -290,8 +295,9 @@ void renderScene(Editor& editor, FrameTimes& times) {
     // Render on change: the frame is rendered again only when something it depends on changed;
     // otherwise the last image, viewers and statistics stay on screen.
     glm::ivec2 const size(renderer.width(), renderer.height());
-    ui::RenderInputs inputs = ui::renderInputs(state.camera, editor.drawn, state.pipeline, size, editor.sceneGeneration,
-                                               editor.shaderGeneration, state.animation.time, times.measuring);
+    ui::RenderInputs inputs =
+        ui::renderInputs(state.camera, editor.drawn, state.pipeline, size, editor.sceneGeneration,
+                         editor.frameMemory.shaderGeneration, state.animation.time, times.measuring);
     dropStaleStop(editor);
     FrameInput const frameInput = ui::editorFrameInput(state, editor.drawn, times.measuring);
     inputs.stopAfter = frameInput.stopAfter;
@@ -328,10 +334,10 @@ void renderScene(Editor& editor, FrameTimes& times) {
 }
 
 void reloadShaders(Editor& editor) {
-    if (std::chrono::duration<double>(EditorClock::now() - editor.lastReload).count() < 1.0) return;
-    editor.lastReload = EditorClock::now();
+    if (std::chrono::duration<double>(EditorClock::now() - editor.frameMemory.lastReload).count() < 1.0) return;
+    editor.frameMemory.lastReload = EditorClock::now();
     for (auto const& message : editor.renderer->reloadChangedShaders()) {
-        ++editor.shaderGeneration;  // a reloaded (or failed) program: the next frame renders again
+        ++editor.frameMemory.shaderGeneration;  // a reloaded (or failed) program: the next frame renders again
         bool const failed = message.find("fail") != std::string::npos || message.find("error") != std::string::npos;
         ui::logMessage(editor.state.log, message, failed);
     }

@@ -18,7 +18,7 @@ namespace {
 using ui::LessonState;
 
 void report(Editor& editor, std::string message, bool error) {
-    LessonState& l = editor.lessons;
+    LessonState& l = editor.course.lessons;
     l.message = message;
     l.messageIsError = error;
     ui::logMessage(editor.state.log, "lessons: " + message, error);
@@ -37,26 +37,26 @@ void loadProgress(Editor& editor) {
         ui::logMessage(editor.state.log, "lessons: progress is not kept: " + why, true);
         return;
     }
-    editor.progressPath = *path;
+    editor.course.progressPath = *path;
     ui::ProgressLoad load = ui::loadProgress(*path);
     if (!load.error.empty()) {
-        editor.progressBroken = true;
+        editor.course.progressBroken = true;
         ui::logMessage(editor.state.log,
                        "lessons: progress file not read, starting with no progress (" + load.error +
                            "); the file is kept as " + *path + ".broken when new progress is saved",
                        true);
         return;
     }
-    editor.progress = std::move(load.progress);
+    editor.course.progress = std::move(load.progress);
 }
 
 // Writes the progress file; called whenever the progress changed.
 void saveProgress(Editor& editor) {
-    if (editor.progressPath.empty()) return;
-    if (std::exchange(editor.progressBroken, false))
-        if (auto error = ui::keepBrokenProgress(editor.progressPath))
+    if (editor.course.progressPath.empty()) return;
+    if (std::exchange(editor.course.progressBroken, false))
+        if (auto error = ui::keepBrokenProgress(editor.course.progressPath))
             ui::logMessage(editor.state.log, "lessons: " + *error, true);
-    if (auto error = ui::saveProgress(editor.progressPath, editor.progress))
+    if (auto error = ui::saveProgress(editor.course.progressPath, editor.course.progress))
         ui::logMessage(editor.state.log, "lessons: progress not saved: " + *error, true);
 }
 
@@ -69,9 +69,9 @@ double nowSeconds() {
 // left unmet for kTaskHintSeconds. A step waiting for its prediction has not shown its change
 // yet, so its tasks wait too.
 void checkTasks(Editor& editor) {
-    LessonState& l = editor.lessons;
+    LessonState& l = editor.course.lessons;
     if (l.lesson < 0) return;
-    ui::Lesson const& lesson = editor.lessonLibrary.lessons[std::size_t(l.lesson)];
+    ui::Lesson const& lesson = editor.course.library.lessons[std::size_t(l.lesson)];
     ui::LessonStep const& s = lesson.steps[std::size_t(l.step)];
     if (s.tasks.empty() || (s.predict && !l.predicted)) return;
     ui::TaskContext ctx;
@@ -85,13 +85,13 @@ void checkTasks(Editor& editor) {
     ui::updateTasks(l.tasks, s.tasks, ctx, nowSeconds());
     bool changed = false;
     for (std::size_t i = 0; i < l.tasks.size(); ++i)
-        if (l.tasks[i].met) changed |= ui::markTaskDone(editor.progress, lesson.id, l.step, int(i));
+        if (l.tasks[i].met) changed |= ui::markTaskDone(editor.course.progress, lesson.id, l.step, int(i));
     if (changed) saveProgress(editor);
 }
 
 void showStep(Editor& editor, int step) {
-    LessonState& l = editor.lessons;
-    ui::Lesson const& lesson = editor.lessonLibrary.lessons[std::size_t(l.lesson)];
+    LessonState& l = editor.course.lessons;
+    ui::Lesson const& lesson = editor.course.library.lessons[std::size_t(l.lesson)];
     l.step = std::clamp(step, 0, int(lesson.steps.size()) - 1);
     ui::LessonStep const& s = lesson.steps[std::size_t(l.step)];
     l.predictChoice = -1;
@@ -111,15 +111,15 @@ void showStep(Editor& editor, int step) {
     editor.actionLog.push_back("lesson " + lesson.id + " step " + std::to_string(l.step + 1));
     l.message.clear();
     l.pixelFrameSize = frameSize(editor);
-    if (ui::markStepSeen(editor.progress, lesson.id, l.step)) saveProgress(editor);
+    if (ui::markStepSeen(editor.course.progress, lesson.id, l.step)) saveProgress(editor);
 }
 
 // The step's pixel is a fraction of the frame: when the viewport (and so the frame) changes
 // size, the inspector follows it to the same surface point, as long as it is still locked.
 void keepStepPixel(Editor& editor) {
-    LessonState& l = editor.lessons;
+    LessonState& l = editor.course.lessons;
     if (l.lesson < 0 || frameSize(editor) == l.pixelFrameSize || !editor.state.inspector.locked) return;
-    auto const& pixel = editor.lessonLibrary.lessons[std::size_t(l.lesson)].steps[std::size_t(l.step)].state.pixel;
+    auto const& pixel = editor.course.library.lessons[std::size_t(l.lesson)].steps[std::size_t(l.step)].state.pixel;
     if (pixel) editor.state.inspector.pixel = ui::lessonPixel(*pixel, frameSize(editor));
     l.pixelFrameSize = frameSize(editor);
 }
@@ -138,9 +138,9 @@ std::optional<std::string> useScene(Editor& editor, std::string const& scene) {
 // Opens lesson `index` at `step`, or where the student left it. The lesson's scene (its glTF file
 // or the default scene) replaces the editor's; Leave loads the editor's again.
 void start(Editor& editor, int index, std::optional<int> step = std::nullopt) {
-    LessonState& l = editor.lessons;
-    if (index < 0 || index >= int(editor.lessonLibrary.lessons.size())) return;
-    ui::Lesson const& next = editor.lessonLibrary.lessons[std::size_t(index)];
+    LessonState& l = editor.course.lessons;
+    if (index < 0 || index >= int(editor.course.library.lessons.size())) return;
+    ui::Lesson const& next = editor.course.library.lessons[std::size_t(index)];
     std::string const scene = next.scenePath.empty() ? "default" : next.scenePath;
     if (l.lesson < 0) {
         closeImportedGBuffer(editor);  // the lesson returns to the scene, not to a G-buffer
@@ -163,16 +163,16 @@ void start(Editor& editor, int index, std::optional<int> step = std::nullopt) {
         ui::applyLessonReturn(*l.before, editor.state, frameSize(editor));
     }
     l.lesson = index;
-    ui::Lesson const& lesson = editor.lessonLibrary.lessons[std::size_t(index)];
-    showStep(editor, step.value_or(ui::resumeStep(editor.progress, lesson.id, int(lesson.steps.size()))));
+    ui::Lesson const& lesson = editor.course.library.lessons[std::size_t(index)];
+    showStep(editor, step.value_or(ui::resumeStep(editor.course.progress, lesson.id, int(lesson.steps.size()))));
 }
 
 // "Restart" in the course view: that lesson's progress, and only that lesson's, is forgotten; the
 // lesson then opens at its first step.
 void restart(Editor& editor, int index) {
-    if (index < 0 || index >= int(editor.lessonLibrary.lessons.size())) return;
-    ui::Lesson const& lesson = editor.lessonLibrary.lessons[std::size_t(index)];
-    if (!ui::restartLesson(editor.progress, lesson.id)) return;
+    if (index < 0 || index >= int(editor.course.library.lessons.size())) return;
+    ui::Lesson const& lesson = editor.course.library.lessons[std::size_t(index)];
+    if (!ui::restartLesson(editor.course.progress, lesson.id)) return;
     saveProgress(editor);
     editor.actionLog.push_back("lesson " + lesson.id + " restarted");
     report(editor, "progress of \"" + lesson.title + "\" cleared", false);
@@ -180,9 +180,9 @@ void restart(Editor& editor, int index) {
 
 // The student's prediction: right or wrong, then the step's own state (its change) is applied.
 void checkPrediction(Editor& editor) {
-    LessonState& l = editor.lessons;
+    LessonState& l = editor.course.lessons;
     if (l.lesson < 0) return;
-    ui::Lesson const& lesson = editor.lessonLibrary.lessons[std::size_t(l.lesson)];
+    ui::Lesson const& lesson = editor.course.library.lessons[std::size_t(l.lesson)];
     ui::LessonStep const& s = lesson.steps[std::size_t(l.step)];
     if (!s.predict || l.predicted) return;
     l.predictedRight = ui::predictionRight(*s.predict, l.predictChoice, l.predictNumber);
@@ -194,11 +194,11 @@ void checkPrediction(Editor& editor) {
         editor.sessions->lessonStepShown(editor.state);
     }
     editor.actionLog.push_back(std::string("lesson prediction ") + (l.predictedRight ? "right" : "wrong"));
-    if (ui::markPrediction(editor.progress, lesson.id, l.step, l.predictedRight)) saveProgress(editor);
+    if (ui::markPrediction(editor.course.progress, lesson.id, l.step, l.predictedRight)) saveProgress(editor);
 }
 
 void leave(Editor& editor) {
-    LessonState& l = editor.lessons;
+    LessonState& l = editor.course.lessons;
     if (l.lesson < 0) return;
     // The scene first: loading one resets the lights and camera, which the return then puts back.
     std::optional<std::string> sceneError;
@@ -233,7 +233,7 @@ ui::LessonSnapshot currentSnapshot(Editor const& editor) {
 }
 
 void saveStep(Editor& editor) {
-    LessonState& l = editor.lessons;
+    LessonState& l = editor.course.lessons;
     ui::LessonStep step;
     step.text = l.draft;
     for (auto const* field :
@@ -282,24 +282,24 @@ void open(Editor& editor, std::string const& path) {
         report(editor, load.error, true);
         return;
     }
-    auto& lessons = editor.lessonLibrary.lessons;
+    auto& lessons = editor.course.library.lessons;
     auto it =
         std::find_if(lessons.begin(), lessons.end(), [&](ui::Lesson const& l) { return l.id == load.lesson->id; });
-    if (it != lessons.end() && editor.lessons.lesson == int(it - lessons.begin())) leave(editor);
+    if (it != lessons.end() && editor.course.lessons.lesson == int(it - lessons.begin())) leave(editor);
     if (it == lessons.end())
         it = lessons.insert(lessons.end(), std::move(*load.lesson));
     else
         *it = std::move(*load.lesson);
-    editor.lessons.picked = int(it - lessons.begin());
+    editor.course.lessons.picked = int(it - lessons.begin());
     report(editor, "opened " + path, false);
 }
 
 }  // namespace
 
 void lessonLogFields(Editor const& editor, ui::FrameLogLine& line) {
-    LessonState const& l = editor.lessons;
-    if (l.lesson >= 0 && l.lesson < int(editor.lessonLibrary.lessons.size()))
-        line.lesson = editor.lessonLibrary.lessons[std::size_t(l.lesson)].id + ":" + std::to_string(l.step + 1);
+    LessonState const& l = editor.course.lessons;
+    if (l.lesson >= 0 && l.lesson < int(editor.course.library.lessons.size()))
+        line.lesson = editor.course.library.lessons[std::size_t(l.lesson)].id + ":" + std::to_string(l.step + 1);
     line.lessonButtons.assign(l.buttonCentres.begin(), l.buttonCentres.end());
     line.lessonPrediction = l.predicted ? (l.predictedRight ? "right" : "wrong") : "";
     line.lessonAnswer = l.answerShown;
@@ -312,8 +312,8 @@ void lessonLogFields(Editor const& editor, ui::FrameLogLine& line) {
     line.courseRestart = l.courseRestart;
     line.nextLesson = l.nextLessonButton;
     line.courseProgress.clear();
-    for (ui::Lesson const& lesson : editor.lessonLibrary.lessons) {
-        ui::LessonCounts const c = ui::countProgress(editor.progress, lesson.id, ui::lessonShape(lesson));
+    for (ui::Lesson const& lesson : editor.course.library.lessons) {
+        ui::LessonCounts const c = ui::countProgress(editor.course.progress, lesson.id, ui::lessonShape(lesson));
         if (!line.courseProgress.empty()) line.courseProgress += '|';
         line.courseProgress += lesson.id + " " + std::to_string(c.stepsSeen) + "/" + std::to_string(c.steps) + " " +
                                std::to_string(c.tasksDone) + "/" + std::to_string(c.tasks) + " " +
@@ -322,19 +322,19 @@ void lessonLogFields(Editor const& editor, ui::FrameLogLine& line) {
 }
 
 void drawLessons(Editor& editor) {
-    if (!editor.lessonsLoaded) {
-        editor.lessonLibrary = ui::loadLessonDir(ui::defaultLessonDir());
-        editor.lessonsLoaded = true;
-        for (auto const& e : editor.lessonLibrary.errors) ui::logMessage(editor.state.log, e, true);
+    if (!editor.course.loaded) {
+        editor.course.library = ui::loadLessonDir(ui::defaultLessonDir());
+        editor.course.loaded = true;
+        for (auto const& e : editor.course.library.errors) ui::logMessage(editor.state.log, e, true);
         loadProgress(editor);
-        editor.glossary = ui::loadGlossary(ui::defaultGlossaryPath());
-        if (!editor.glossary.error.empty()) ui::logMessage(editor.state.log, editor.glossary.error, true);
+        editor.course.glossary = ui::loadGlossary(ui::defaultGlossaryPath());
+        if (!editor.course.glossary.error.empty()) ui::logMessage(editor.state.log, editor.course.glossary.error, true);
         if (editor.options.lesson) {
-            ui::LessonRef const ref = ui::findLessonStep(editor.lessonLibrary, *editor.options.lesson);
+            ui::LessonRef const ref = ui::findLessonStep(editor.course.library, *editor.options.lesson);
             if (ref.lesson < 0) {
                 report(editor, "--lesson: " + ref.error, true);
             } else {
-                editor.lessons.picked = ref.lesson;
+                editor.course.lessons.picked = ref.lesson;
                 start(editor, ref.lesson, ref.step);
             }
         }
@@ -353,12 +353,12 @@ void drawLessons(Editor& editor) {
     values.lightCount = int(state.lights.size());
     values.frameSize = frameSize(editor);
     std::vector<ui::LessonCounts> counts;
-    for (ui::Lesson const& lesson : editor.lessonLibrary.lessons)
-        counts.push_back(ui::countProgress(editor.progress, lesson.id, ui::lessonShape(lesson)));
-    ui::drawLessonsPanel(editor.lessons, editor.lessonLibrary.lessons, counts, editor.lessonLibrary.errors, values,
-                         editor.lessonBrowser, editor.glossary);
+    for (ui::Lesson const& lesson : editor.course.library.lessons)
+        counts.push_back(ui::countProgress(editor.course.progress, lesson.id, ui::lessonShape(lesson)));
+    ui::drawLessonsPanel(editor.course.lessons, editor.course.library.lessons, counts, editor.course.library.errors,
+                         values, editor.course.browser, editor.course.glossary);
 
-    LessonState& l = editor.lessons;
+    LessonState& l = editor.course.lessons;
     if (l.restartRequest >= 0) restart(editor, std::exchange(l.restartRequest, -1));
     if (l.startRequest >= 0) start(editor, std::exchange(l.startRequest, -1));
     if (l.stepRequest >= 0) {
@@ -378,7 +378,7 @@ void drawLessons(Editor& editor) {
         editor.glossaryWindow.open = true;
         editor.glossaryWindow.focus = std::exchange(l.glossaryTerm, {});
     }
-    ui::drawGlossaryWindow(editor.glossaryWindow, editor.glossary);
+    ui::drawGlossaryWindow(editor.glossaryWindow, editor.course.glossary);
     keepStepPixel(editor);
 }
 

@@ -87,6 +87,11 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.wireframesAll = state.viewport.allWireframesRect;
     line.litDiffShown = state.litPin.showDiff;
     line.everyLight = state.inspector.everyLight;
+    line.checksButton = state.viewport.checksRect;
+    line.findings = int(state.viewport.findings.size());
+    line.firstFinding = state.viewport.firstFindingRect;
+    line.markedFinding = state.viewport.markedFinding;
+    line.precisionLines = state.viewport.precisionShown;
     ui::OverviewState const& overview = state.viewport.overview;
     line.overview = overview.on;
     line.uiScale = state.layout.scale.current;

@@ -113,9 +113,6 @@ struct Editor {
     std::optional<ui::SessionController> sessions;
     ui::SceneLoadingState loading;
     std::optional<ui::ScriptHost> host;
-    std::string iniPath;        // imgui.ini in the user's config folder; ImGui keeps a pointer to it
-    ImGuiStyle baseStyle;       // the style at UI scale 1, which each scale change scales afresh
-    float contentScale = 1.0f;  // the monitor's content scale (1 under Xvfb)
 
     EditorGpu gpu;
     EditorInput input;                       // GLFW's events, queued (editor_input.h)
@@ -124,38 +121,54 @@ struct Editor {
     ui::RenderOnChange render;               // what the frame on screen was rendered from
     std::string renderReason;                // what changed, for the Stats window
     std::uint64_t sceneGeneration = 1;       // counts scenes handed to the renderer
-    std::uint64_t shaderGeneration = 0;      // counts shader reloads
-    std::optional<glm::ivec2> sampledPixel;  // the inspector's pixel at its last sample
     ui::CameraView home;                     // the scene's view (Home)
     bool showShortcuts = false;              // Help > Shortcuts
     ui::DiscardGuard discard;                // Quit / New / Open over unsaved edits
-    std::vector<std::string> heldScenes;     // scene opens waiting for that answer
-    std::optional<ui::SessionRequest> heldSession;
-    bool releaseHeld = false;              // the answer was Discard: let the held requests through
-    ui::FrameLog frameLog;                 // --log-frames
-    ui::PipelinePanelRects pipelineRects;  // where the Pipeline window drew its layout combo (--log-frames)
-    std::vector<PointLight> drawn;         // this frame's lights (animated)
-    // The mode and light count last checked for a long frame, and the ones it switched away from
-    // (avoidLongFrame in editor_frame.cpp).
-    std::optional<std::pair<LightingMode, std::size_t>> longFrameChecked;
-    std::optional<std::pair<LightingMode, std::size_t>> longFrameSwitchedFrom;
-    // --- lessons (ui/editor_lessons.cpp) ---
-    ui::LessonState lessons;
-    ui::LessonLibrary lessonLibrary;  // read from assets/lessons on the first frame
-    bool lessonsLoaded = false;
-    ui::FileBrowserState lessonBrowser;
-    ui::Glossary glossary;  // assets/glossary.json, read with the lessons
-    ui::GlossaryWindowState glossaryWindow;
-    // The course progress (model/lesson_progress.h), read with the lessons from the config folder
-    // and written there whenever it changes; no path = not kept (no config folder). A file that
-    // could not be read is moved aside to .broken before the first write over it.
-    ui::CourseProgress progress;
-    std::string progressPath;
-    bool progressBroken = false;
+    ui::FrameLog frameLog;                   // --log-frames
+    ui::PipelinePanelRects pipelineRects;    // where the Pipeline window drew its layout combo (--log-frames)
+    std::vector<PointLight> drawn;           // this frame's lights (animated)
+    ui::GlossaryWindowState glossaryWindow;  // the Glossary window (the lessons and the Help menu open it)
+
+    // Fields one file alone uses, grouped under that file's name.
+    // editor_window.cpp: the layout file and the style the UI scale starts from.
+    struct WindowStyle {
+        std::string iniPath;        // imgui.ini in the user's config folder; ImGui keeps a pointer to it
+        ImGuiStyle baseStyle;       // the style at UI scale 1, which each scale change scales afresh
+        float contentScale = 1.0f;  // the monitor's content scale (1 under Xvfb)
+    } style;
+    // editor_frame.cpp: what the frame loop remembers between frames.
+    struct FrameMemory {
+        std::uint64_t shaderGeneration = 0;      // counts shader reloads
+        std::optional<glm::ivec2> sampledPixel;  // the inspector's pixel at its last sample
+        // The mode and light count last checked for a long frame, and the ones it switched away
+        // from (avoidLongFrame).
+        std::optional<std::pair<LightingMode, std::size_t>> longFrameChecked;
+        std::optional<std::pair<LightingMode, std::size_t>> longFrameSwitchedFrom;
+        EditorClock::time_point lastFrame = EditorClock::now();
+        EditorClock::time_point lastReload = EditorClock::now();
+    } frameMemory;
+    // editor_requests.cpp: requests held while the unsaved-edits question (discard) is open.
+    struct HeldRequests {
+        std::vector<std::string> scenes;  // scene opens waiting for that answer
+        std::optional<ui::SessionRequest> session;
+        bool release = false;  // the answer was Discard: let the held requests through
+    } held;
+    // editor_lessons.cpp: the lessons, the glossary and the course progress.
+    struct Course {
+        ui::LessonState lessons;
+        ui::LessonLibrary library;  // read from assets/lessons on the first frame
+        bool loaded = false;
+        ui::FileBrowserState browser;
+        ui::Glossary glossary;  // assets/glossary.json, read with the lessons
+        // The course progress (model/lesson_progress.h), read with the lessons from the config
+        // folder and written there whenever it changes; no path = not kept (no config folder). A
+        // file that could not be read is moved aside to .broken before the first write over it.
+        ui::CourseProgress progress;
+        std::string progressPath;
+        bool progressBroken = false;
+    } course;
     long frame = 0;
     int exitCode = 0;
-    EditorClock::time_point lastFrame = EditorClock::now();
-    EditorClock::time_point lastReload = EditorClock::now();
 
     GLFWwindow* window() const { return glfw.window; }
 };

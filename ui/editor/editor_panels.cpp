@@ -172,6 +172,8 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
                             editor.gpu.ab.b.texture.id(),
                             editor.gpu.ab.diff.id()};
     state.viewport.clipPlanes = {state.camera.nearPlane, state.camera.farPlane};
+    state.viewport.findingTexture = ui::findingMaskTexture(editor.gpu.viewerTools, editor.loading.gbuffer.checks,
+                                                           editor.loading.gbuffer.path, state.viewport.markedFinding);
     state.viewport.cameraInside = ui::lightsAroundEye(state.camera.position, editor.drawn, state.pipeline.volumeScale);
     state.viewport.stoppedAfter =
         state.stats.last.stoppedAfter ? std::string(passName(*state.stats.last.stoppedAfter)) : std::string();

@@ -93,20 +93,20 @@ bool mustAsk(Editor const& editor) {
 // Scene opens and session opens wait for the answer when edits would be lost.
 void holdDiscardingRequests(Editor& editor, ui::SessionRequest& request) {
     ui::SceneLoadingState& loading = editor.loading;
-    if (editor.releaseHeld) {
-        editor.releaseHeld = false;
+    if (editor.held.release) {
+        editor.held.release = false;
         return;
     }
     bool const scenes = !loading.requests.empty() || !loading.dropped.empty();
     if (scenes && !ui::mayDiscard(editor.discard, ui::DiscardingAction::OpenScene, mustAsk(editor))) {
-        editor.heldScenes.insert(editor.heldScenes.end(), loading.requests.begin(), loading.requests.end());
-        editor.heldScenes.insert(editor.heldScenes.end(), loading.dropped.begin(), loading.dropped.end());
+        editor.held.scenes.insert(editor.held.scenes.end(), loading.requests.begin(), loading.requests.end());
+        editor.held.scenes.insert(editor.held.scenes.end(), loading.dropped.begin(), loading.dropped.end());
         loading.requests.clear();
         loading.dropped.clear();
     }
     if (request.kind == ui::SessionRequestKind::Open &&
         !ui::mayDiscard(editor.discard, ui::DiscardingAction::OpenSession, mustAsk(editor))) {
-        editor.heldSession = request;
+        editor.held.session = request;
         request = {};
     }
 }
@@ -117,8 +117,8 @@ void releaseConfirmed(Editor& editor, ui::SessionRequest& request) {
     if (!confirmed) {
         if (!editor.discard.asking) {
             // Cancelled: the held requests are dropped.
-            editor.heldScenes.clear();
-            editor.heldSession.reset();
+            editor.held.scenes.clear();
+            editor.held.session.reset();
         }
         return;
     }
@@ -133,14 +133,14 @@ void releaseConfirmed(Editor& editor, ui::SessionRequest& request) {
                 ui::logMessage(editor.state.log, *error, true);
             break;
         case ui::DiscardingAction::OpenScene:
-            editor.loading.requests.insert(editor.loading.requests.end(), editor.heldScenes.begin(),
-                                           editor.heldScenes.end());
-            editor.heldScenes.clear();
-            editor.releaseHeld = true;
+            editor.loading.requests.insert(editor.loading.requests.end(), editor.held.scenes.begin(),
+                                           editor.held.scenes.end());
+            editor.held.scenes.clear();
+            editor.held.release = true;
             break;
         case ui::DiscardingAction::OpenSession:
-            if (editor.heldSession) request = *editor.heldSession;
-            editor.heldSession.reset();
+            if (editor.held.session) request = *editor.held.session;
+            editor.held.session.reset();
             break;
     }
 }

@@ -3,6 +3,7 @@
 #include "editor_loop.h"
 
 #include "gltf/loader.h"
+#include "model/window_fit.h"
 #include "panels/fonts.h"
 #include "panels/gui_compat.h"
 #include "panels/panel_log.h"
@@ -16,6 +17,7 @@
 #include <imgui_impl_opengl3.h>
 #include <imgui_internal.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string_view>
@@ -107,8 +109,8 @@ void readViewSettingsLine(ImGuiContext*, ImGuiSettingsHandler* handler, void*, c
     std::string const splitsKey = std::string(ui::kSplitsKey) + "=";
     if (text.substr(0, splitsKey.size()) == splitsKey) {
         std::string error;
-        auto splits =
-            ui::parseSplits(text.substr(splitsKey.size()), editor.iniPath + ": " + std::string(ui::kSplitsKey), &error);
+        auto splits = ui::parseSplits(text.substr(splitsKey.size()),
+                                      editor.style.iniPath + ": " + std::string(ui::kSplitsKey), &error);
         if (splits)
             editor.state.layout.splits = splits;
         else
@@ -119,7 +121,7 @@ void readViewSettingsLine(ImGuiContext*, ImGuiSettingsHandler* handler, void*, c
     if (text.substr(0, key.size()) != key) return;
     std::string error;
     auto const scale =
-        ui::parseUiScale(text.substr(key.size()), editor.iniPath + ": " + key.substr(0, key.size() - 1), &error);
+        ui::parseUiScale(text.substr(key.size()), editor.style.iniPath + ": " + key.substr(0, key.size() - 1), &error);
     if (!scale) {
         std::string const sentence =
             error + "; the UI stays at scale " + ui::uiScaleText(editor.state.layout.scale.current) + ".";
@@ -152,7 +154,7 @@ void addViewSettingsHandler(Editor& editor) {
 // Sets the UI scale's style and font; logs the font's warning, if any.
 void setUiScale(Editor& editor, float scale) {
     editor.state.layout.scale.current = scale;
-    if (auto warning = ui::applyUiScale(editor.baseStyle, scale, editor.contentScale, ui::uiFontPath())) {
+    if (auto warning = ui::applyUiScale(editor.style.baseStyle, scale, editor.style.contentScale, ui::uiFontPath())) {
         ui::logMessage(editor.state.log, *warning);
     }
 }
@@ -214,7 +216,20 @@ std::optional<int> openWindow(Editor& editor) {
     // macOS only hands out core contexts that are forward-compatible.
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
-    editor.glfw.window = glfwCreateWindow(options.width, options.height, "gbuffer-lab", nullptr, nullptr);
+    ui::WindowFit fit{options.width, options.height, false};
+    if (!options.sizeGiven) {
+        if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+            int areaX = 0, areaY = 0, areaWidth = 0, areaHeight = 0;
+            float scaleX = 1.0f, scaleY = 1.0f;
+            glfwGetMonitorWorkarea(monitor, &areaX, &areaY, &areaWidth, &areaHeight);
+            glfwGetMonitorContentScale(monitor, &scaleX, &scaleY);
+            fit =
+                ui::fitWindowToWorkArea(options.width, options.height, areaWidth, areaHeight, std::max(scaleX, scaleY));
+        }
+        // A window manager then fits the reduced window, title bar included, to the screen.
+        if (fit.reduced) glfwWindowHint(GLFW_MAXIMIZED, GLFW_TRUE);
+    }
+    editor.glfw.window = glfwCreateWindow(fit.width, fit.height, "gbuffer-lab", nullptr, nullptr);
     if (!editor.glfw.window) {
         std::fprintf(stderr, "gbuffer-lab: could not open an OpenGL 3.3 core window: %s\n", gLastGlfwError.c_str());
         return 1;
@@ -309,11 +324,11 @@ void initImGui(Editor& editor) {
     ImGuiIO& io = ImGui::GetIO();
     // Unattended runs must not depend on, or leave behind, a layout file; interactive ones keep
     // it in the config folder, not in whatever directory the editor was started from.
-    if (!editor.unattended) editor.iniPath = layoutFilePath(editor.state.log);
-    io.IniFilename = editor.iniPath.empty() ? nullptr : editor.iniPath.c_str();
+    if (!editor.unattended) editor.style.iniPath = layoutFilePath(editor.state.log);
+    io.IniFilename = editor.style.iniPath.empty() ? nullptr : editor.style.iniPath.c_str();
     ui::enableConfigFlags(io);
     ImGui::StyleColorsDark();
-    editor.baseStyle = ImGui::GetStyle();
+    editor.style.baseStyle = ImGui::GetStyle();
     // The UI scale: --ui-scale (checked in runEditor), else the one kept with the layout, else 1.
     // The layout file is read now, not at the first frame, so the first frame has the right font.
     ui::UiScaleState& scale = editor.state.layout.scale;
@@ -325,7 +340,7 @@ void initImGui(Editor& editor) {
     if (io.IniFilename) ImGui::LoadIniSettingsFromDisk(io.IniFilename);
     float xscale = 1.0f, yscale = 1.0f;
     glfwGetWindowContentScale(editor.window(), &xscale, &yscale);
-    editor.contentScale = xscale > 0.0f ? xscale : 1.0f;
+    editor.style.contentScale = xscale > 0.0f ? xscale : 1.0f;
     setUiScale(editor, scale.current);
     // ImGui's backend installs no callbacks: the editor's own queue every event and feed ImGui
     // at a pace it can follow (editor_input.h), with 1.86 and 1.87+ alike.

@@ -76,6 +76,28 @@ void serviceViewerTools(EditorState& state, Renderer& renderer, long frame, std:
     }
 }
 
+unsigned findingMaskTexture(ViewerToolsGpu& gpu, GBufferCheckReport const& report, std::string const& path,
+                            int marked) {
+    if (marked < 0 || std::size_t(marked) >= report.findings.size() || report.width <= 0 || report.height <= 0)
+        return 0;
+    std::vector<std::uint8_t> const& mask = report.findings[std::size_t(marked)].mask;
+    if (mask.size() != std::size_t(report.width) * std::size_t(report.height)) return 0;
+    bool const changed = gpu.findingMaskFor != std::pair(path, marked);
+    gpu.findingMaskFor = {path, marked};
+    uploadRgba(gpu.findingMask, report.width, report.height, changed, "G-buffer finding mask", [&] {
+        std::vector<std::uint8_t> rgba(mask.size() * 4, 0);
+        for (std::size_t i = 0; i < mask.size(); ++i)
+            if (mask[i]) {
+                rgba[i * 4 + 0] = 255;
+                rgba[i * 4 + 1] = 0;
+                rgba[i * 4 + 2] = 220;
+                rgba[i * 4 + 3] = 190;
+            }
+        return rgba;
+    });
+    return gpu.findingMask.id();
+}
+
 unsigned serviceLitPin(LitPin& pin, Renderer& renderer, long frame, ViewerToolsGpu& gpu) {
     if (renderer.width() <= 0 || renderer.height() <= 0) return 0;
     bool const due = litPinDue(pin, frame);

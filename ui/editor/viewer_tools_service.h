@@ -4,11 +4,14 @@
 
 #include "gl/texture.h"
 #include "gpu/view_target.h"
+#include "import/gbuffer_checks.h"
 #include "model/editor_state.h"
 #include "renderer.h"
 
 #include <array>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace gbl::ui {
@@ -20,6 +23,9 @@ struct ViewerToolsGpu {
     std::array<std::optional<ViewParams>, 5> pictureParams;  // what each picture was coloured with
     std::array<long, 5> pictureFrame{-1, -1, -1, -1, -1};    // ... and from which read-back
     gl::Texture litDiff;                                     // the viewport's lit-frame diff
+    // The marked G-buffer check finding's pixels, and which finding of which G-buffer it holds.
+    gl::Texture findingMask;
+    std::pair<std::string, int> findingMaskFor{"", -1};
     // The viewport's attachment view with the viewer tools' range, colormap and overlays.
     ViewTarget viewport;
     std::optional<ViewParams> viewportParams;
@@ -32,6 +38,9 @@ struct ViewerToolsGpu {
 // Uploads a diff's heat map into tex, (re)making it at the diff's size; a new texture is always
 // filled, an existing one when `changed`. Scale: the threshold when one is set, else the max.
 void uploadDiff(gl::Texture& tex, DiffStats const& diff, float threshold, bool changed);
+// The open G-buffer's marked check finding (viewport.markedFinding) as a translucent magenta mask
+// to lay over the image; 0 when none is marked.
+unsigned findingMaskTexture(ViewerToolsGpu& gpu, GBufferCheckReport const& report, std::string const& path, int marked);
 
 // Call after the viewers' views are drawn; replaces textures[i] with the diff heat map where a
 // viewer shows its difference to the pinned image, and with the stencil picture where the depth

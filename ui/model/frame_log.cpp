@@ -107,6 +107,9 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"wireframesToggle\":" + rect(l.wireframesToggle) + ",\"wireframesAll\":" + rect(l.wireframesAll);
     out += std::string(",\"litDiffShown\":") + (l.litDiffShown ? "true" : "false");
     out += std::string(",\"everyLight\":") + (l.everyLight ? "true" : "false");
+    out += ",\"checksButton\":" + rect(l.checksButton) + ",\"findings\":" + std::to_string(l.findings) +
+           ",\"firstFinding\":" + rect(l.firstFinding) + ",\"markedFinding\":" + std::to_string(l.markedFinding) +
+           ",\"precisionLines\":" + std::to_string(l.precisionLines);
     out += std::string(",\"overview\":") + (l.overview ? "true" : "false");
     out += ",\"overviewButton\":" + rect(l.overviewButton) + ",\"overviewCells\":" + strings(l.overviewCells);
     out += ",\"uiScale\":" + number(l.uiScale);

@@ -91,6 +91,14 @@ struct FrameLogLine {
     glm::vec4 wireframesAll{0.0f};
     bool litDiffShown = false;
     bool everyLight = false;
+    // An open G-buffer's Checks button, its findings' count, the first finding's radio button in
+    // the open list (0 while the list is closed), the marked finding (-1: none) and the precision
+    // lines the open list drew (0 while it is closed).
+    glm::vec4 checksButton{0.0f};
+    int findings = 0;
+    glm::vec4 firstFinding{0.0f};
+    int markedFinding = -1;
+    int precisionLines = 0;
     // The attachment overview: whether the viewport shows it, its toolbar button, and each cell's
     // picture as "VIEW@X,Y,W,H" (kDebugViewNames name, window coordinates; empty while off).
     bool overview = false;

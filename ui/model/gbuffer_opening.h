@@ -4,8 +4,10 @@
 #pragma once
 
 #include "core/camera.h"
+#include "core/frame_types.h"
 #include "core/imported_frame.h"
 #include "core/point_light.h"
+#include "import/gbuffer_checks.h"
 #include "model/camera_rig.h"
 #include "model/editor_state.h"
 #include "model/file_browser.h"
@@ -24,6 +26,8 @@ struct SceneViewSnapshot {
     std::vector<PointLight> lights;
     int selectedLight = -1;
     float shininess = 32.0f;
+    ShadingModel shading = ShadingModel::GbufferLab;
+    glm::vec3 ambient{0.03f};
 };
 
 struct GBufferOpenState {
@@ -32,7 +36,8 @@ struct GBufferOpenState {
     std::string path;                   // the G-buffer shown ("" = the scene is shown)
     glm::ivec2 size{0};                 // its frame size
     std::optional<SceneViewSnapshot> scene;
-    std::string lastError;  // the last refused open ("" after a good one)
+    GBufferCheckReport checks;  // the shown G-buffer's findings, masks included
+    std::string lastError;      // the last refused open ("" after a good one)
     FileBrowserState browser;
 };
 
@@ -41,6 +46,12 @@ struct GBufferRead {
     std::optional<ImportedFrame> frame;
     std::vector<PointLight> lights;
     float shininess = 32.0f;
+    ShadingModel shading = ShadingModel::GbufferLab;  // the manifest's "shading"
+    // The program's own lit image (the manifest's "lit"), rows top-down, RGBA with A = 1; it is
+    // pinned in the viewport so that Diff compares our re-light with it.
+    std::optional<FloatImage> lit;
+    std::string litFile;        // its file name, for the pin's label
+    GBufferCheckReport checks;  // what `check` finds in it (docs/import.md, "Checks")
     Camera camera;
     std::string error;  // one sentence naming the file and the field when frame is empty
 };

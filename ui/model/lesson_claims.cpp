@@ -7,6 +7,7 @@
 #include "core/tile_math.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace gbl::ui {
@@ -86,7 +87,7 @@ std::optional<std::pair<FloatImage const*, FloatImage const*>> comparedImages(Le
     return std::pair{final ? &im.display : &im.lighting, &*reference};
 }
 
-ClaimResult sameImage(LessonClaim const& c, ClaimImages const& im) {
+ClaimResult sameImage(LessonClaim const& c, ClaimFrame const&, ClaimImages const& im) {
     auto const images = comparedImages(c, im);
     if (!images) return {false, "no reference frame"};
     FloatImage const& a = *images->first;
@@ -107,7 +108,7 @@ ClaimResult sameImage(LessonClaim const& c, ClaimImages const& im) {
                                    std::to_string(where.y) + "), bound " + lessonNumber(c.bound)};
 }
 
-ClaimResult differsFrom(LessonClaim const& c, ClaimImages const& im) {
+ClaimResult differsFrom(LessonClaim const& c, ClaimFrame const&, ClaimImages const& im) {
     auto const images = comparedImages(c, im);
     if (!images) return {false, "no reference frame"};
     FloatImage const& a = *images->first;
@@ -169,7 +170,7 @@ ClaimResult positionError(LessonClaim const& c, ClaimFrame const& f, ClaimImages
     return out;
 }
 
-ClaimResult tileCount(ClaimFrame const& f, ClaimImages const& im) {
+ClaimResult tileCount(LessonClaim const&, ClaimFrame const& f, ClaimImages const& im) {
     if (im.coverage.channels < 1 || !inside(im.coverage, f.pixel))
         return {false, "no coverage image (show tile_lights)"};
     int const gpu = int(im.coverage.at(f.pixel.x, f.pixel.y, 0));
@@ -178,7 +179,7 @@ ClaimResult tileCount(ClaimFrame const& f, ClaimImages const& im) {
             "the tile lists " + std::to_string(gpu) + " lights; the CPU tile test " + std::to_string(cpu)};
 }
 
-ClaimResult executedExceedsLit(ClaimFrame const& f, ClaimImages const& im) {
+ClaimResult executedExceedsLit(LessonClaim const&, ClaimFrame const& f, ClaimImages const& im) {
     if (im.coverage.channels < 2 || !inside(im.coverage, f.pixel)) return {false, "no coverage image (show heatmap)"};
     float const executed = im.coverage.at(f.pixel.x, f.pixel.y, 0), lit = im.coverage.at(f.pixel.x, f.pixel.y, 1);
     return {executed > lit, lessonNumber(executed) + " lights evaluated, " + lessonNumber(lit) + " lit the pixel"};
@@ -205,11 +206,6 @@ ClaimResult attachmentEquals(LessonClaim const& c, ClaimFrame const& f, ClaimIma
 
 }  // namespace
 
-bool claimNeedsReference(LessonClaim const& claim) {
-    return claim.kind == ClaimKind::LosesLight || claim.kind == ClaimKind::SameImage ||
-           claim.kind == ClaimKind::FewerLitPixels || claim.kind == ClaimKind::DiffersFrom;
-}
-
 std::optional<ShadingInputs> surfaceAt(ClaimImages const& im, ClaimFrame const& f, glm::ivec2 p) {
     if (!inside(im.position, p) || im.position.at(p.x, p.y, 3) == 0.0f) return std::nullopt;
     ShadingInputs s;
@@ -219,7 +215,7 @@ std::optional<ShadingInputs> surfaceAt(ClaimImages const& im, ClaimFrame const& 
     s.albedo = glm::vec3(as);
     s.specular = as.a;
     s.viewPosition = f.camera.position;
-    s.shininess = f.pipeline.shininess;
+    shadingOf(f.pipeline, s);
     return s;
 }
 
@@ -260,28 +256,95 @@ int cpuTileLightCount(ClaimImages const& im, ClaimFrame const& f, glm::ivec2 pix
     return n;
 }
 
+namespace {
+
+constexpr std::array<std::string_view, 2> kMatchesCpuOptional{"tolerance", "reached"};
+constexpr std::array<std::string_view, 2> kLosesLightFields{"light", "reference"};
+constexpr std::array<std::string_view, 1> kToleranceOptional{"tolerance"};
+constexpr std::array<std::string_view, 2> kSameImageFields{"reference", "bound"};
+constexpr std::array<std::string_view, 1> kImageOptional{"image"};
+constexpr std::array<std::string_view, 3> kDiffersFromFields{"reference", "bound", "min_fraction"};
+constexpr std::array<std::string_view, 2> kFewerLitFields{"reference", "min_fraction"};
+constexpr std::array<std::string_view, 1> kBoundFields{"bound"};
+constexpr std::array<std::string_view, 2> kAttachmentFields{"attachment", "value"};
+
+// kind, name, fields, optional fields, about the step's pixel, needs a reference frame, check, doc.
+std::array<ClaimKindInfo, 9> const kClaimKinds{{
+    {ClaimKind::MatchesCpu,
+     "matches_cpu",
+     {},
+     kMatchesCpuOptional,
+     true,
+     false,
+     matchesCpu,
+     "the lit value at `pixel` equals ambient * albedo + every light on the CPU; with `reached`, exactly that "
+     "many lights add a visible amount there"},
+    {ClaimKind::LosesLight, "loses_light", kLosesLightFields, kToleranceOptional, true, true, losesLight,
+     "reference lit - step lit at `pixel` equals that light's CPU contribution, and it is visible"},
+    {ClaimKind::SameImage, "same_image", kSameImageFields, kImageOptional, false, true, sameImage,
+     "every lit pixel of step and reference differs by at most `bound`"},
+    {ClaimKind::FewerLitPixels,
+     "fewer_lit_pixels",
+     kFewerLitFields,
+     {},
+     false,
+     true,
+     fewerLitPixels,
+     "at least `min_fraction` of the reference's lit pixels are dark in the step"},
+    {ClaimKind::PositionError,
+     "position_error_below",
+     kBoundFields,
+     {},
+     false,
+     false,
+     positionError,
+     "on every covered pixel the stored position and the one rebuilt from depth differ by less than `bound`"},
+    {ClaimKind::TileCountMatchesCpu,
+     "tile_count_matches_cpu",
+     {},
+     {},
+     true,
+     false,
+     tileCount,
+     "the lights the tile of `pixel` lists equal the CPU tile test, and are more than 0"},
+    {ClaimKind::ExecutedExceedsLit,
+     "executed_exceeds_lit",
+     {},
+     {},
+     true,
+     false,
+     executedExceedsLit,
+     "at `pixel` more lights were evaluated than lit it"},
+    {ClaimKind::AttachmentEquals, "attachment_equals", kAttachmentFields, kToleranceOptional, true, false,
+     attachmentEquals, "the attachment at `pixel` equals `value`; null entries are not compared"},
+    {ClaimKind::DiffersFrom, "differs_from", kDiffersFromFields, kImageOptional, false, true, differsFrom,
+     "at least `min_fraction` of the covered pixels differ from the reference by more than `bound`"},
+}};
+
+}  // namespace
+
+std::span<ClaimKindInfo const> claimKinds() {
+    return kClaimKinds;
+}
+
+ClaimKindInfo const* findClaimKind(std::string_view name) {
+    for (ClaimKindInfo const& k : kClaimKinds)
+        if (k.name == name) return &k;
+    return nullptr;
+}
+
+ClaimKindInfo const& claimKindInfo(ClaimKind kind) {
+    for (ClaimKindInfo const& k : kClaimKinds)
+        if (k.kind == kind) return k;
+    return kClaimKinds[0];
+}
+
+bool claimNeedsReference(LessonClaim const& claim) {
+    return claimKindInfo(claim.kind).needsReference;
+}
+
 ClaimResult checkClaim(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
-    switch (c.kind) {
-        case ClaimKind::MatchesCpu:
-            return matchesCpu(c, f, im);
-        case ClaimKind::LosesLight:
-            return losesLight(c, f, im);
-        case ClaimKind::SameImage:
-            return sameImage(c, im);
-        case ClaimKind::FewerLitPixels:
-            return fewerLitPixels(c, f, im);
-        case ClaimKind::PositionError:
-            return positionError(c, f, im);
-        case ClaimKind::TileCountMatchesCpu:
-            return tileCount(f, im);
-        case ClaimKind::ExecutedExceedsLit:
-            return executedExceedsLit(f, im);
-        case ClaimKind::AttachmentEquals:
-            return attachmentEquals(c, f, im);
-        case ClaimKind::DiffersFrom:
-            return differsFrom(c, im);
-    }
-    return {false, "unknown claim kind"};
+    return claimKindInfo(c.kind).check(c, f, im);
 }
 
 }  // namespace gbl::ui

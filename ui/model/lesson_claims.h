@@ -14,6 +14,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 
 namespace gbl::ui {
@@ -49,8 +50,25 @@ struct ClaimResult {
     std::optional<glm::ivec2> worst;
 };
 
-// Whether the frame's images need the coverage attachment (a heat-map or tile view) and a
-// reference frame for this claim.
+// One row per claim kind (issue 24), the one place a kind is described: the name lesson files
+// use, its fields (required, then optional; `tolerance` defaults to 0.02 where a kind takes it),
+// whether it is about the step's pixel (the step must then have one) and needs a reference frame,
+// its check, and one line of documentation (docs/lessons.md's table says the same, in full).
+struct ClaimKindInfo {
+    ClaimKind kind;
+    std::string_view name;
+    std::span<std::string_view const> fields;
+    std::span<std::string_view const> optionalFields;
+    bool atPixel;
+    bool needsReference;
+    ClaimResult (*check)(LessonClaim const&, ClaimFrame const&, ClaimImages const&);
+    std::string_view doc;
+};
+std::span<ClaimKindInfo const> claimKinds();
+ClaimKindInfo const* findClaimKind(std::string_view name);
+ClaimKindInfo const& claimKindInfo(ClaimKind kind);
+
+// Whether the claim compares with a reference frame (claimKindInfo's needsReference).
 bool claimNeedsReference(LessonClaim const& claim);
 
 ClaimResult checkClaim(LessonClaim const& claim, ClaimFrame const& frame, ClaimImages const& images);

@@ -94,11 +94,6 @@ enum class ClaimKind {
     AttachmentEquals,     // an attachment's value at the pixel equals `value` within tolerance
     DiffersFrom,          // at least min_fraction of the covered pixels differ from the reference by > bound
 };
-inline constexpr std::array<std::string_view, 9> kClaimKindNames{
-    "matches_cpu",          "loses_light",          "same_image",
-    "fewer_lit_pixels",     "position_error_below", "tile_count_matches_cpu",
-    "executed_exceeds_lit", "attachment_equals",    "differs_from"};
-
 struct LessonClaim {
     ClaimKind kind = ClaimKind::MatchesCpu;
     int light = -1;                             // loses_light

@@ -22,7 +22,7 @@ std::optional<PixelBreakdown> breakDownPixel(PixelSample const& sample, std::spa
     in.emissive = glm::vec3(sample.emissiveAo);
     in.occlusion = sample.emissiveAo.a;
     in.viewPosition = camera.position;
-    in.shininess = settings.shininess;
+    shadingOf(settings, in);
     PixelBreakdown b;
     b.lightsTested = int(lights.size());
     b.ambient = surfaceTermsCpu(in, settings.ambient);  // ambient * albedo * occlusion + emissive

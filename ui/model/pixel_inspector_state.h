@@ -35,6 +35,9 @@ struct PixelInspectorState {
     PipelineSettings settings;  // the sampled frame's (its ambient is 0 for a light's contribution)
     int selectLight = -1;       // a light row was clicked: the loop selects it
     bool everyLight = false;    // list every light, not only those within reach
+    // An open G-buffer's own lit image at the pixel (its manifest's "lit", pinned in the viewport),
+    // shown beside our stored value and per-light sum.
+    std::optional<glm::vec3> theirs;
 };
 
 }  // namespace gbl::ui

@@ -41,6 +41,22 @@ ValueRange readableRange(ViewerState const& viewer, FloatImage const& values) {
     return percentileRange(values, viewerStatsMask(viewer), low, 99.0f, {}, viewerSkip(viewer.kind));
 }
 
+ValueRange stripViewerRange(ViewerState const& viewer, FloatImage const& attachment, bool asked, float nearPlane,
+                            float farPlane) {
+    if (viewer.kind == ViewerKind::Depth && viewer.showStencil) {
+        ValueRange r = fitRange(attachment, 0x1, RangeSkip::None);
+        r.max = std::max(r.max, r.min + 1.0f);
+        return r;
+    }
+    if (asked) {
+        if (viewer.kind == ViewerKind::Depth)  // raw window depths: the far plane is the background
+            return fitRange(attachment, 0x1, RangeSkip::FarDepth, viewer.linearDepth, nearPlane, farPlane);
+        unsigned const mask = viewer.kind == ViewerKind::Specular ? 0x8u : (viewer.channelMask & 0x7u);
+        return fitRange(attachment, mask, viewerSkip(viewer.kind));
+    }
+    return readableRange(viewer, viewerValues(viewer, attachment, nearPlane, farPlane));
+}
+
 bool autoFitDue(ViewerState const& viewer, ViewerData const& data, glm::vec2 clipPlanes, long frame, bool rendered) {
     if (!viewer.autoFit) return false;
     if (viewer.lastFitFrame < 0) return true;
@@ -201,6 +217,7 @@ void setLitValues(LitPin& pin, FloatImage lighting, long frame) {
         pin.pinRequested = false;
         pin.pinned = pin.values;
         pin.pinnedFrame = frame;
+        pin.pinnedName.clear();
     }
     unsigned const rgb = 0x7;
     pin.stats = imageStats(pin.values, rgb, {}, RangeSkip::None);

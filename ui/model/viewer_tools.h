@@ -30,6 +30,12 @@ unsigned viewerValuesKey(ViewerState const& viewer);
 // surfaces black), NaN, Inf and the background (viewerSkip) left out. samples 0 when nothing is
 // drawn. What auto-fit shows by default; the Fit button takes the whole min..max instead.
 ValueRange readableRange(ViewerState const& viewer, FloatImage const& values);
+// A G-buffer window viewer's range from its attachment as read back (`attachment`; the stencil for
+// a depth viewer showing it): the Fit button (`asked`) takes the whole min..max, auto-fit the
+// readable range of the values as shown (viewerValues: linear depth through `nearPlane`..`farPlane`),
+// like the viewport's. The stencil's integers always fit whole, at least one step wide.
+ValueRange stripViewerRange(ViewerState const& viewer, FloatImage const& attachment, bool asked, float nearPlane,
+                            float farPlane);
 
 // Whether an auto-fitting viewer must refit now: never fitted, its values now mean something else
 // (viewerValuesKey, or the clip planes its linear depth uses), or, on a newly rendered frame,
@@ -69,6 +75,9 @@ struct LitPin {
     long frame = -1;    // editor frame of that read-back; -1 = none yet
     std::optional<FloatImage> pinned;
     long pinnedFrame = -1;
+    // "" while the pin is a frame of ours (pinnedFrame); else what was pinned from outside: an open
+    // G-buffer's own lit image ("their lit image (frame.exr)"), which its Close takes away again.
+    std::string pinnedName;
     ImageStats stats;  // of the current lit frame, RGB
     DiffStats diff;    // against the pinned frame while showDiff
     // Threshold and mode the diff was computed with; a change recomputes it at once.
@@ -78,16 +87,6 @@ struct LitPin {
 // Whether the lit frame must be read back this frame: a pin waits for it, a diff just turned on
 // is computed at once and then refreshes every kViewerDataInterval frames.
 bool litPinDue(LitPin const& pin, long frame);
-// The range that makes a viewer's values readable (issue 26): the 1st to 99th percentile of the
-// shown channels (the lit frame: 0th to 99th, so the light cubes and highlights do not leave the
-// surfaces black), NaN, Inf and the background (viewerSkip) left out. samples 0 when nothing is
-// drawn. What auto-fit shows by default; the Fit button takes the whole min..max instead.
-ValueRange readableRange(ViewerState const& viewer, FloatImage const& values);
-
-// Whether an auto-fitting viewer must refit now: never fitted, its values now mean something else
-// (viewerValuesKey, or the clip planes its linear depth uses), or, on a newly rendered frame,
-// about a second (60 frames) after the last fit.
-bool autoFitDue(ViewerState const& viewer, ViewerData const& data, glm::vec2 clipPlanes, long frame, bool rendered);
 
 // Takes a fresh read-back of the lit frame: pins it when asked, recomputes statistics and diff.
 void setLitValues(LitPin& pin, FloatImage lighting, long frame);

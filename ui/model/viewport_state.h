@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/pipeline_settings.h"
+#include "import/gbuffer_checks.h"
 #include "model/attachment_overview.h"
 
 #include <glm/glm.hpp>
@@ -37,6 +38,16 @@ struct ViewportState {
     // camera does not move.
     std::string importedFrame;
     glm::ivec2 importedSize{0};
+    // Its check findings (docs/import.md, "Checks"), for the viewport's Checks list, without their
+    // masks (GBufferOpenState keeps the report); the one whose pixels are marked over the image (-1:
+    // none), and that mask as a texture (the editor's). Below them, one precision line per attachment.
+    std::vector<GBufferFinding> findings;
+    std::vector<std::string> precision;
+    int markedFinding = -1;
+    unsigned findingTexture = 0;
+    glm::vec4 checksRect{0.0f};        // where the Checks button was drawn, for the frame log
+    glm::vec4 firstFindingRect{0.0f};  // the open list's first finding (0 while the list is closed)
+    int precisionShown = 0;            // precision lines the open list drew this frame
 };
 
 }  // namespace gbl::ui

@@ -158,7 +158,7 @@ std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointL
     s.emissive = glm::vec3(in.sample.emissiveAo);
     s.occlusion = in.sample.emissiveAo.a;
     s.viewPosition = in.camera.position;
-    s.shininess = in.settings.shininess;
+    shadingOf(in.settings, s);
 
     glm::vec3 const toSurface = s.position - in.camera.position;
     float const tp = glm::length(toSurface);
@@ -244,9 +244,14 @@ std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointL
             }
         }
         v.evaluated = v.evaluations > 0;
-        // The shaders skip a light beyond its radius (its windowed attenuation is 0 there anyway).
-        if (v.evaluated && v.withinRadius) v.added = shadeLightCpu(light, s).total() * float(v.evaluations);
-        if (v.evaluated && !v.withinRadius) v.why += "; outside its radius, adds nothing";
+        // The shaders skip a light beyond its radius (its windowed attenuation is 0 there anyway),
+        // except the learnopengl shading where the mode does not cut it (quad, forward).
+        bool const reachesBeyond = s.model == ShadingModel::LearnOpenGl && !s.cutAtRadius && radius > 0.0f;
+        if (v.evaluated && (v.withinRadius || reachesBeyond))
+            v.added = shadeLightCpu(light, s).total() * float(v.evaluations);
+        if (v.evaluated && !v.withinRadius)
+            v.why += reachesBeyond ? "; outside its radius, lit all the same (learnopengl shading: no window)"
+                                   : "; outside its radius, adds nothing";
         if (!v.evaluated && v.withinRadius) v.why += " (it would have reached the pixel)";
         out.push_back(std::move(v));
     }

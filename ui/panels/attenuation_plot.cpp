@@ -136,13 +136,25 @@ AttenuationPlotMarks drawAttenuationPlot(PointLight const& light, bool logScale,
     polyline(dl, axes, c, c.classic, IM_COL32(150, 150, 150, 160), 1.0f);
     polyline(dl, axes, c, c.applied, IM_COL32(255, 255, 255, 255), 2.0f);
     // Legend, top right, where a falling curve leaves room: the bright curve is what the renderer
-    // adds, the faint one the textbook form.
-    auto legend = [&](float y, ImU32 colour, char const* text) {
-        dl->AddText(ImVec2(std::max(p0.x + 2, p1.x - ImGui::CalcTextSize(text).x - 6), p0.y + y), colour, text);
+    // adds, the faint one the textbook form. On a box of the plot's background, so that in a narrow
+    // plot the radius line (at 80 % of the axis) passes behind the text instead of through it.
+    struct LegendEntry {
+        ImU32 colour;
+        char const* text;
     };
-    legend(16, IM_COL32(255, 255, 255, 255), "applied");
-    legend(30, IM_COL32(150, 150, 150, 255), "1/(Kc+Kl d+Kq d²)");
-    if (g) legend(44, IM_COL32(255, 255, 255, 110), "before the drag");
+    LegendEntry const entries[] = {{IM_COL32(255, 255, 255, 255), "applied"},
+                                   {IM_COL32(150, 150, 150, 255), "1/(Kc+Kl d+Kq d²)"},
+                                   {IM_COL32(255, 255, 255, 110), "before the drag"}};
+    int const shown = g ? 3 : 2;
+    float legendWidth = 0.0f;
+    for (int i = 0; i < shown; ++i) legendWidth = std::max(legendWidth, ImGui::CalcTextSize(entries[i].text).x);
+    float const legendX = std::max(p0.x + 2, p1.x - legendWidth - 6);
+    dl->AddRectFilled(ImVec2(legendX - 3, p0.y + 15), ImVec2(p1.x - 2, p0.y + 17 + 14.0f * float(shown)),
+                      IM_COL32(20, 22, 26, 225));
+    for (int i = 0; i < shown; ++i) {
+        float const x = std::max(p0.x + 2, p1.x - ImGui::CalcTextSize(entries[i].text).x - 6);
+        dl->AddText(ImVec2(x, p0.y + 16 + 14.0f * float(i)), entries[i].colour, entries[i].text);
+    }
     char axisLabel[64];
     std::snprintf(axisLabel, sizeof axisLabel, "0 .. %.2f units%s%s", c.maxDistance, logScale ? "  (log)" : "",
                   fixedMaxDistance > 0.0f ? "  (fixed)" : "");

@@ -159,7 +159,9 @@ void viewerToolbar(GBufferPanelState& state, std::size_t i) {
     if (viewerRemaps(v.kind) && ImGui::GetItemRectMax().x + 2.0f + fit + 4.0f + more <= right) {
         ImGui::SameLine(0, 2);
         if (ImGui::SmallButton("Fit")) v.fitRequested = true;
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("fit the range to the data now (auto-fit: in \"...\")");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "fit the range to the data now, min..max (auto-fit, in \"...\", takes the 1-99 %% range)");
     }
     ImGui::SameLine();
     // Right-aligned in the cell, where it is found in every viewer.

@@ -1,6 +1,7 @@
 // Lessons window.
 #include "panels/panel_lessons.h"
 
+#include "model/lesson_claims.h"
 #include "panels/layout.h"
 #include "panels/panel_file_browser.h"
 #include "panels/panel_glossary.h"
@@ -303,8 +304,7 @@ void drawStep(LessonState& state, std::span<Lesson const> lessons, LessonValues 
             wrappedText("%s", substituteLessonText(step.text.answer, values).c_str());
         }
     }
-    if (step.claim)
-        ImGui::TextDisabled("checked claim: %s", std::string(enumName(kClaimKindNames, step.claim->kind)).c_str());
+    if (step.claim) ImGui::TextDisabled("checked claim: %s", std::string(claimKindInfo(step.claim->kind).name).c_str());
     ImGui::EndChild();
 }
 

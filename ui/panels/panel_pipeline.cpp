@@ -246,6 +246,17 @@ void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailabl
                 ImGui::SetTooltip(
                     "single: one lit target\nsplit: diffuse and specular light targets, then a combine "
                     "pass (forward mode keeps one target)");
+            // The lighting equation: ours, or LearnOpenGL's deferred shader's (docs/lighting.md).
+            int shading = int(settings.shading);
+            char const* shadingItems[] = {kShadingModelNames[0].data(), kShadingModelNames[1].data()};
+            if (ImGui::Combo("Equation", &shading, shadingItems, 2)) settings.shading = ShadingModel(shading);
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip(
+                    "gbuffer-lab: windowed attenuation, zero from each light's radius on (docs/lighting.md)\n"
+                    "learnopengl: LearnOpenGL's deferred lighting shader: 1/(Kc + Kl d + Kq d^2) with no window,\n"
+                    "specular not gated by N.L; quad and forward light every pixel with every light, volumes,\n"
+                    "tiled and clustered stop at the radius. A manifest with \"shading\": \"learnopengl\" also\n"
+                    "sets ambient 0.1 and shininess 16, as that shader does.");
             ImGui::PopItemWidth();
         }
         if (ab && section("A/B compare")) abSection(*ab, settings);

@@ -112,6 +112,16 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
             glm::vec3 const stored = state.sample ? glm::vec3(state.sample->lighting) : glm::vec3(0.0f);
             ImGui::Text("sum     %.4f %.4f %.4f", b.total.r, b.total.g, b.total.b);
             ImGui::Text("stored  %.4f %.4f %.4f", stored.r, stored.g, stored.b);
+            if (state.theirs) {
+                glm::vec3 const t = *state.theirs;
+                ImGui::Text("theirs  %.4f %.4f %.4f", t.r, t.g, t.b);
+                if (ImGui::IsItemHovered())
+                    ImGui::SetTooltip(
+                        "the open G-buffer's own lit image here (its manifest's \"lit\"); off from stored by\n"
+                        "%.4f %.4f %.4f. Close to sum: their G-buffer and lights explain their image under this\n"
+                        "lighting; far from it: compare the lights below with their shader's",
+                        t.r - stored.r, t.g - stored.g, t.b - stored.b);
+            }
             if (!b.verdicts.empty()) {
                 // What this mode should have stored: ambient plus what each evaluated light added.
                 glm::vec3 evaluated = b.ambient;

@@ -8,6 +8,7 @@
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
 #include "panels/viewer_tools.h"
+#include "panels/viewport_overlays.h"
 
 #include <imgui.h>
 
@@ -32,70 +33,6 @@ void viewCombo(PipelineSettings& settings) {
         ImGui::EndCombo();
     }
 }
-// Labels for the heat legend that shaders/view.frag draws into the image itself (heatLegend:
-// kHeatBins swatches of kHeatSwatchTexels from texel x 8, rows 6..22 from the bottom). Only the
-// words are drawn here, in a box just above that bar: the quantity on one line, each swatch's
-// lowest count centred over it on the next, so there is one legend and it is labelled.
-void labelHeatLegend(ImVec2 imageMin, ImVec2 imageMax, glm::ivec2 textureSize, DebugView view, LightingMode mode) {
-    if (textureSize.x < 64 || textureSize.y < 64) return;  // the shader draws no legend either
-    float const sx = (imageMax.x - imageMin.x) / float(textureSize.x);
-    float const sy = (imageMax.y - imageMin.y) / float(textureSize.y);
-    int const w = std::max(std::min(textureSize.x - 16, kHeatSwatchTexels * kHeatBins) / kHeatBins, 1);
-    float const x0 = imageMin.x + 8.0f * sx, swatch = float(w) * sx, x1 = x0 + swatch * float(kHeatBins);
-    float const barTop = imageMax.y - 23.0f * sy, line = ImGui::GetTextLineHeight();
-    std::string title(heatQuantity(view, mode));
-    if (view == DebugView::Heatmap) title += "; lower half: none of them lit";
-    // Numbers over their swatches when the widest fits; else one line, left to right.
-    bool const fits = ImGui::CalcTextSize(heatBinLabel(kHeatBins - 1).c_str()).x + 2.0f <= swatch;
-    std::string numbers;
-    if (!fits)
-        for (int k = 0; k < kHeatBins; ++k) numbers += (k ? ", " : "") + heatBinLabel(k);
-    float const top = barTop - 2.0f * line - 4.0f;
-    float const right =
-        std::max({x1, x0 + ImGui::CalcTextSize(title.c_str()).x, x0 + ImGui::CalcTextSize(numbers.c_str()).x});
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    ImU32 const text = IM_COL32(235, 235, 235, 255);
-    dl->AddRectFilled(ImVec2(x0 - 3.0f, top - 1.0f), ImVec2(right + 3.0f, barTop), IM_COL32(0, 0, 0, 170));
-    dl->AddText(ImVec2(x0, top), text, title.c_str());
-    if (!fits) {
-        dl->AddText(ImVec2(x0, top + line), text, numbers.c_str());
-        return;
-    }
-    for (int k = 0; k < kHeatBins; ++k) {
-        std::string const label = heatBinLabel(k);
-        float const cx = x0 + (float(k) + 0.5f) * swatch;
-        dl->AddText(ImVec2(std::round(cx - 0.5f * ImGui::CalcTextSize(label.c_str()).x), top + line), text,
-                    label.c_str());
-    }
-}
-
-// Labels for the depth-slice legend (shaders/view.frag sliceLegend: kClusterSlices swatches of
-// kSliceSwatchTexels from texel x 8, rows 6..22 from the bottom): a box above it listing each
-// slice's view-depth range beside its colour, in columns of 8.
-void labelSliceLegend(ImVec2 imageMin, ImVec2 imageMax, glm::ivec2 textureSize, glm::vec2 clip) {
-    if (textureSize.x < 64 || textureSize.y < 64) return;  // the shader draws no legend either
-    float const sy = (imageMax.y - imageMin.y) / float(textureSize.y);
-    float const barTop = imageMax.y - 23.0f * sy;
-    float const line = ImGui::GetTextLineHeight(), swatch = line * 0.8f;
-    float const column = ImGui::CalcTextSize("23: 100.00 - 100.00 ").x + swatch + 6.0f;
-    int const rows = 8, columns = (kClusterSlices + rows - 1) / rows;
-    ImVec2 const p0(imageMin.x + 8.0f, barTop - 6.0f - float(rows + 1) * line);
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    dl->AddRectFilled(ImVec2(p0.x - 3.0f, p0.y - 2.0f), ImVec2(p0.x + float(columns) * column, barTop - 3.0f),
-                      IM_COL32(0, 0, 0, 170));
-    dl->AddText(p0, IM_COL32(235, 235, 235, 255), "depth slice: view depth range");
-    for (int k = 0; k < kClusterSlices; ++k) {
-        ImVec2 const p(p0.x + float(k / rows) * column, p0.y + float(k % rows + 1) * line);
-        glm::vec3 const c = clusterSliceColor(k) * 255.0f;
-        dl->AddRectFilled(ImVec2(p.x, p.y + 0.1f * line), ImVec2(p.x + swatch, p.y + 0.9f * line),
-                          IM_COL32(int(c.r), int(c.g), int(c.b), 255));
-        char text[64];
-        std::snprintf(text, sizeof text, "%d: %.2f - %.2f", k, clusterSliceNear(k, clip.x, clip.y),
-                      clusterSliceNear(k + 1, clip.x, clip.y));
-        dl->AddText(ImVec2(p.x + swatch + 4.0f, p.y), IM_COL32(235, 235, 235, 255), text);
-    }
-}
-
 // The full text when the rest of the row holds it, else the compact one with the full text as
 // its tooltip: the row keeps one line, so showing statistics never resizes the frame (which
 // would make the pinned frame incomparable).
@@ -113,11 +50,59 @@ glm::vec4 itemRect() {
 // The viewport's tools, then "Pin lit", which holds the lit HDR frame; "Diff" shows |now - pinned|
 // over RGB as the viewers' heat map, with the statistics of both on the row (a row of its own:
 // the toolbar above is full).
-void litPinRow(LitPin& pin, ViewportTools& tools, DebugView view) {
+// An open G-buffer's check findings (docs/import.md, "Checks"): the button says how many, its list
+// gives each one's pixels, share and likely cause, and a click on one marks its pixels over the image.
+void checksButton(ViewportState& state) {
+    state.checksRect = glm::vec4(0.0f);
+    state.firstFindingRect = glm::vec4(0.0f);
+    state.precisionShown = 0;
+    if (state.importedFrame.empty()) return;
+    std::size_t const n = state.findings.size();
+    std::string const label = n == 0 ? "Checks: none" : "Checks: " + std::to_string(n);
+    if (n > 0) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.62f, 0.22f, 0.45f, 1.0f));
+    if (ImGui::Button(label.c_str())) ImGui::OpenPopup("gbuffer-checks");
+    if (n > 0) ImGui::PopStyleColor();
+    state.checksRect = itemRect();
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "what `gbuffer-lab check` finds in this G-buffer: click for the list, and a finding to\n"
+            "mark its pixels over the image");
+    ImGui::SameLine();
+    if (!ImGui::BeginPopup("gbuffer-checks")) return;
+    if (n == 0) ImGui::TextUnformatted("No finding: every check passed (docs/import.md, \"Checks\").");
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32.0f);
+    for (std::size_t i = 0; i < n; ++i) {
+        GBufferFinding const& f = state.findings[i];
+        char head[192];
+        std::snprintf(head, sizeof head, "%s%s (%s): %zu px, %.3g %% of the frame", f.check.c_str(),
+                      f.heuristic ? " [heuristic]" : "", f.attachment.c_str(), f.pixels, 100.0 * f.share);
+        bool const marked = state.markedFinding == int(i);
+        ImGui::PushID(int(i));
+        if (ImGui::RadioButton(head, marked)) state.markedFinding = marked ? -1 : int(i);
+        if (i == 0) state.firstFindingRect = itemRect();
+        ImGui::PopID();
+        ImGui::Indent();
+        ImGui::TextWrapped("%s", f.cause.c_str());
+        ImGui::Unindent();
+    }
+    if (state.markedFinding >= 0 && ImGui::Button("Unmark")) state.markedFinding = -1;
+    // What the storage can hold, finding or not: the answer to "is 8 bits enough for my normals?".
+    if (!state.precision.empty()) {
+        ImGui::Separator();
+        ImGui::TextUnformatted("Precision: what each attachment's storage can hold");
+        for (std::string const& line : state.precision) ImGui::BulletText("%s", line.c_str());
+        state.precisionShown = int(state.precision.size());
+    }
+    ImGui::PopTextWrapPos();
+    ImGui::EndPopup();
+}
+
+void litPinRow(LitPin& pin, ViewportTools& tools, DebugView view, ViewportState& state) {
     ImGui::SetCursorPosX(ImGui::GetCursorPosX() + 6);
     // The viewport's tools share this row: opening them never adds one.
     viewportToolsRow(tools, view);
     if (viewerKindOfView(view)) ImGui::SameLine();
+    checksButton(state);
     if (ImGui::Button("Pin lit")) pin.pinRequested = true;
     pin.pinRect = itemRect();
     pin.diffRect = glm::vec4(0.0f);
@@ -137,12 +122,17 @@ void litPinRow(LitPin& pin, ViewportTools& tools, DebugView view) {
         ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "the frame's size changed since the pin; pin again");
         return;
     }
+    // What is pinned: a frame of ours by its number, or an open G-buffer's own lit image by name.
+    std::string const pinned = pin.pinnedName.empty() ? "frame " + std::to_string(pin.pinnedFrame) : pin.pinnedName;
+    if (pin.frame < 0) {  // nothing read back yet (an imported G-buffer's image was pinned on opening)
+        fittedText(("pinned " + pinned + ": Diff compares the frame with it").c_str(), ("pinned " + pinned).c_str());
+        return;
+    }
     if (!pin.showDiff || !pin.diff.comparable) {
-        char full[160], compact[96];
-        std::snprintf(full, sizeof full, "pinned frame %ld; lit RGB %.4g .. %.4g, mean %.4g, NaN px %ld",
-                      pin.pinnedFrame, s.min, s.max, s.mean, pin.stats.nanPixels);
-        std::snprintf(compact, sizeof compact, "pinned %ld; %.3g..%.3g NaN %ld", pin.pinnedFrame, s.min, s.max,
-                      pin.stats.nanPixels);
+        char full[224], compact[160];
+        std::snprintf(full, sizeof full, "pinned %s; lit RGB %.4g .. %.4g, mean %.4g, NaN px %ld", pinned.c_str(),
+                      s.min, s.max, s.mean, pin.stats.nanPixels);
+        std::snprintf(compact, sizeof compact, "pinned %s", pinned.c_str());
         fittedText(full, compact);
         return;
     }
@@ -157,9 +147,9 @@ void litPinRow(LitPin& pin, ViewportTools& tools, DebugView view) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("relative: |a - b| / |pinned|");
     ImGui::SameLine();
     DiffStats const& d = pin.diff;
-    char full[192], compact[96];
-    std::snprintf(full, sizeof full, "vs frame %ld: max %.4g at %d,%d  mean %.4g  over %ld of %ld px  NaN px %ld",
-                  pin.pinnedFrame, d.max, d.maxAt.x, d.maxAt.y, d.mean, d.overThreshold, d.pixels, d.nanPixels);
+    char full[256], compact[96];
+    std::snprintf(full, sizeof full, "vs %s: max %.4g at %d,%d  mean %.4g  over %ld of %ld px  NaN px %ld",
+                  pinned.c_str(), d.max, d.maxAt.x, d.maxAt.y, d.mean, d.overThreshold, d.pixels, d.nanPixels);
     std::snprintf(compact, sizeof compact, "max %.3g mean %.3g over %ld NaN %ld", d.max, d.mean, d.overThreshold,
                   d.nanPixels);
     fittedText(full, compact);
@@ -198,117 +188,12 @@ std::string shortName(std::string const& path) {
     return p.filename().string();
 }
 
-// Text with a dark box behind it, so it reads over any frame.
-void boxedText(ImVec2 p, std::string const& text) {
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    ImVec2 const size = ImGui::CalcTextSize(text.c_str());
-    dl->AddRectFilled(ImVec2(p.x - 3, p.y - 1), ImVec2(p.x + size.x + 3, p.y + size.y + 1), IM_COL32(0, 0, 0, 180));
-    dl->AddText(p, IM_COL32(240, 240, 240, 255), text.c_str());
-}
-
 // "camera inside light 3's volume"; several: "camera inside the volumes of lights 3, 7, 9".
 std::string cameraInsideText(std::vector<int> const& lights) {
     if (lights.size() == 1) return "camera inside light " + std::to_string(lights[0]) + "'s volume";
     std::string out = "camera inside the volumes of lights ";
     for (std::size_t i = 0; i < lights.size() && i < 8; ++i) out += (i ? ", " : "") + std::to_string(lights[i]);
     return lights.size() > 8 ? out + ", ..." : out;
-}
-
-// One side's GPU ms per pass, as much as fits in `width` pixels: every pass, else the passes of
-// 1 ms or more, else the total alone (the Stats window lists every pass).
-std::string passLine(char const* side, std::vector<PassTiming> const& passes, double total, float width) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, ", total %.1f", total);
-    std::string const tail = buf;
-    std::string out;
-    for (double const least : {0.0, 1.0}) {
-        out = std::string(side) + " GPU ms:";
-        for (PassTiming const& p : passes) {
-            if (p.gpuMs < least) continue;
-            std::snprintf(buf, sizeof buf, " %s %.1f", p.name.c_str(), p.gpuMs);
-            out += buf;
-        }
-        out += tail;
-        if (ImGui::CalcTextSize(out.c_str()).x <= width) return out;
-    }
-    std::snprintf(buf, sizeof buf, "%s GPU ms: total %.1f", side, total);
-    return buf;
-}
-
-std::string sideLabel(char const* side, PipelineSettings const& s) {
-    return std::string(side) + ": " + std::string(enumName(kLightingModeNames, s.mode)) +
-           (s.mode == LightingMode::Volumes ? "/" + std::string(enumName(kCullModeNames, s.cull)) : std::string());
-}
-
-// The divider between A (left) and B (right), dragged with the left button. Submitted before the
-// image's own button so that it, not the camera drag, takes the press.
-void abDivider(AbState& ab, ImVec2 origin, ImVec2 avail) {
-    float const x = origin.x + ab.divider * avail.x;
-    float const grab = 10.0f;
-    ImGui::SetCursorScreenPos(ImVec2(x - grab * 0.5f, origin.y));
-    ImGui::InvisibleButton("ab-divider", ImVec2(grab, avail.y));
-    if (ImGui::IsItemHovered() || ImGui::IsItemActive()) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
-    if (ImGui::IsItemActive()) ab.divider = std::clamp((ImGui::GetIO().MousePos.x - origin.x) / avail.x, 0.02f, 0.98f);
-    ImGui::SetCursorScreenPos(origin);
-}
-
-// B over the right of the divider, the line, the two labels and each side's pass times.
-void drawAbSplit(ViewportTeaching const& v, PipelineSettings const& a, ImVec2 origin, ImVec2 avail) {
-    AbState const& ab = v.ab;
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    float const x = origin.x + ab.divider * avail.x;
-    ImVec2 const end(origin.x + avail.x, origin.y + avail.y);
-    if (v.textureB != 0)
-        dl->AddImage(toImTexture(v.textureB), ImVec2(x, origin.y), end, ImVec2(ab.divider, 1), ImVec2(1, 0));
-    dl->AddLine(ImVec2(x, origin.y), ImVec2(x, end.y), IM_COL32(0, 0, 0, 220), 4.0f);
-    dl->AddLine(ImVec2(x, origin.y), ImVec2(x, end.y), IM_COL32(255, 230, 80, 255), 2.0f);
-    dl->AddCircleFilled(ImVec2(x, origin.y + avail.y * 0.5f), 7.0f, IM_COL32(255, 230, 80, 255));
-    float const line = ImGui::GetTextLineHeightWithSpacing();
-    boxedText(ImVec2(origin.x + 8, origin.y + 6), sideLabel("A", a));
-    std::string const b = sideLabel("B", v.settingsB);
-    boxedText(ImVec2(end.x - ImGui::CalcTextSize(b.c_str()).x - 8, origin.y + 6), b);
-    boxedText(ImVec2(origin.x + 8, origin.y + 6 + line), "B differs in: " + describeAb(a, v.settingsB));
-    boxedText(ImVec2(origin.x + 8, end.y - 2 * line - 4), passLine("A", ab.passesA, ab.gpuMsA, avail.x - 16));
-    boxedText(ImVec2(origin.x + 8, end.y - line - 4), passLine("B", ab.passesB, ab.gpuMsB, avail.x - 16));
-}
-
-// The |A - B| heat map's legend (turbo from 0 to its scale) and the diff's numbers.
-void drawAbDiff(ViewportTeaching const& v, PipelineSettings const& a, ImVec2 origin, ImVec2 avail) {
-    AbState const& ab = v.ab;
-    bool const angle = ab.metric == AbMetric::NormalAngle;
-    DiffStats const& d = angle ? ab.normalDiff : ab.pin.diff;
-    float const threshold = angle ? ab.angleThreshold : ab.threshold;
-    char const* unit = angle ? " deg" : "";
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    float const line = ImGui::GetTextLineHeightWithSpacing();
-    float const scale = ab.heatToThreshold ? threshold : d.max;
-    char const* what = ab.diffMode == DiffMode::Relative ? "|A-B|/|B|" : "|A-B|";
-    char buf[256];
-    if (angle)
-        std::snprintf(buf, sizeof buf, "angle between A's and B's decoded normals, degrees (magenta: one side only)");
-    else
-        std::snprintf(buf, sizeof buf, "%s of the lit HDR frame, largest RGB channel (magenta: NaN/Inf)", what);
-    boxedText(ImVec2(origin.x + 8, origin.y + 6), buf);
-    boxedText(ImVec2(origin.x + 8, origin.y + 6 + line), "A vs B: " + describeAb(a, v.settingsB));
-    if (!d.comparable) return;
-    std::snprintf(buf, sizeof buf, "max %.4g%s at %d,%d   mean %.4g   %ld of %ld px over %.3g   NaN/Inf px %ld", d.max,
-                  unit, d.maxAt.x, d.maxAt.y, d.mean, d.overThreshold, d.pixels, threshold, d.nanPixels);
-    boxedText(ImVec2(origin.x + 8, origin.y + 6 + 2 * line), buf);
-    // Legend: a turbo ramp 0 .. scale, the same ramp diffHeatmap paints.
-    float const w = std::min(256.0f, avail.x - 40.0f), h = 12.0f;
-    ImVec2 const p0(origin.x + 12, origin.y + avail.y - 3 * line - h - 10);
-    dl->AddRectFilled(ImVec2(p0.x - 4, p0.y - 4), ImVec2(p0.x + w + 4, p0.y + h + line + 2), IM_COL32(0, 0, 0, 180));
-    for (int i = 0; i < 64; ++i) {
-        glm::vec3 const c = colormap(Colormap::Turbo, (float(i) + 0.5f) / 64.0f);
-        dl->AddRectFilled(ImVec2(p0.x + w * float(i) / 64.0f, p0.y), ImVec2(p0.x + w * float(i + 1) / 64.0f, p0.y + h),
-                          IM_COL32(int(c.r * 255), int(c.g * 255), int(c.b * 255), 255));
-    }
-    dl->AddText(ImVec2(p0.x, p0.y + h + 1), IM_COL32(240, 240, 240, 255), "0");
-    std::snprintf(buf, sizeof buf, "%.3g%s%s", scale, unit, ab.heatToThreshold ? " (threshold)" : " (max)");
-    dl->AddText(ImVec2(p0.x + w - ImGui::CalcTextSize(buf).x, p0.y + h + 1), IM_COL32(240, 240, 240, 255), buf);
-    boxedText(ImVec2(origin.x + 8, origin.y + avail.y - 2 * line - 4),
-              passLine("A", ab.passesA, ab.gpuMsA, avail.x - 16));
-    boxedText(ImVec2(origin.x + 8, origin.y + avail.y - line - 4), passLine("B", ab.passesB, ab.gpuMsB, avail.x - 16));
 }
 
 // The third row: "Light by light" with its slider (Left/Right step it) and the A/B toggle.
@@ -469,7 +354,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
             "W A S D / Q E: fly (shift: faster)    F: frame the selection    Home: the scene's view\n"
             "click a light cube: select it    double-click: select and frame it\n"
             "L: lock the pixel inspector    G: attachment overview    F1: every shortcut");
-    litPinRow(litPin, tools, settings.view);
+    litPinRow(litPin, tools, settings.view, state);
     if (ab) teachingRow(*ab, settings);
 
     ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -517,6 +402,10 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         // GL images start at the bottom row; flip v so the picture is upright.
         ImGui::GetWindowDrawList()->AddImage(toImTexture(texture), origin, imageEnd, ImVec2(0, 1), ImVec2(1, 0));
         if (abOn && ab->ab.view == AbView::Split) drawAbSplit(*ab, settings, origin, avail);
+        // The marked check finding's pixels, translucent over the frame (same size: the G-buffer's).
+        if (imported && state.findingTexture != 0)
+            ImGui::GetWindowDrawList()->AddImage(toImTexture(state.findingTexture), origin, imageEnd, ImVec2(0, 1),
+                                                 ImVec2(1, 0));
     } else {
         ImGui::GetWindowDrawList()->AddText(ImVec2(origin.x + 10, origin.y + 10), IM_COL32(200, 200, 200, 255),
                                             "no frame yet");
@@ -569,6 +458,11 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
     }
     if (!state.cameraInside.empty() && texture != 0) {
         boxedText(ImVec2(origin.x + 8, notesY), cameraInsideText(state.cameraInside));
+        notesY += ImGui::GetTextLineHeightWithSpacing() + 4.0f;
+    }
+    if (imported && state.markedFinding >= 0 && std::size_t(state.markedFinding) < state.findings.size()) {
+        GBufferFinding const& f = state.findings[std::size_t(state.markedFinding)];
+        boxedText(ImVec2(origin.x + 8, notesY), "marked: " + f.check + ", " + std::to_string(f.pixels) + " px");
         notesY += ImGui::GetTextLineHeightWithSpacing() + 4.0f;
     }
     if (imported)

@@ -1,5 +1,6 @@
 // Lesson files: reading (each step's state goes through the session parser) and the lesson
-// folder. Every message names the file and the field. Writing: lesson_file_write.cpp.
+// folder. Every message names the file and the field. The field readers, a step's claim and its
+// A/B: lesson_file_fields.cpp. Writing: lesson_file_write.cpp.
 #include "session/lesson_file.h"
 
 #include "core/pipeline_fields.h"
@@ -8,6 +9,7 @@
 #include "model/lesson_text.h"
 #include "scene/default_scene.h"
 #include "session/atomic_file.h"
+#include "session/lesson_file_fields.h"
 
 #include <nlohmann/json.hpp>
 
@@ -23,54 +25,9 @@ namespace gbl::ui {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
+using namespace lesson_fields;
 
 namespace {
-
-struct FieldError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-[[noreturn]] void fail(std::string const& field, std::string const& what) {
-    throw FieldError(field + " " + what);
-}
-
-void knownFields(json const& j, std::string const& path, std::initializer_list<std::string_view> known) {
-    if (!j.is_object()) fail(path, "must be an object");
-    for (auto it = j.begin(); it != j.end(); ++it)
-        if (std::find(known.begin(), known.end(), std::string_view(it.key())) == known.end())
-            fail(path.empty() ? it.key() : path + "." + it.key(), "is not a known field");
-}
-
-std::string text(json const& j, std::string const& key, std::string const& path, bool required = true) {
-    auto it = j.find(key);
-    std::string const field = path + "." + key;
-    if (it == j.end()) {
-        if (required) fail(field, "is missing");
-        return {};
-    }
-    if (!it->is_string()) fail(field, "must be a string");
-    std::string s = it->get<std::string>();
-    if (required && s.find_first_not_of(" \t\n") == std::string::npos) fail(field, "must not be empty");
-    if (auto bad = unknownPlaceholder(s)) {
-        std::string list;
-        for (auto p : kLessonPlaceholders) list += (list.empty() ? "" : ", ") + std::string(p);
-        fail(field, "uses the unknown placeholder " + *bad + " (known: " + list + ")");
-    }
-    return s;
-}
-
-int integer(json const& j, std::string const& field, int lo, int hi) {
-    if (!j.is_number_integer() || j.get<long long>() < lo || j.get<long long>() > hi)
-        fail(field, "must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) + " (got " +
-                        j.dump() + ")");
-    return int(j.get<long long>());
-}
-
-float number(json const& j, std::string const& field, float lo, float hi) {
-    if (!j.is_number() || !std::isfinite(j.get<double>()) || j.get<double>() < lo || j.get<double>() > hi)
-        fail(field, "must be a number from " + json(lo).dump() + " to " + json(hi).dump() + " (got " + j.dump() + ")");
-    return j.get<float>();
-}
 
 Camera const& defaultCamera() {
     // The default scene's own view, built once: lessons start where the editor starts.
@@ -84,10 +41,12 @@ std::string sessionField(std::string const& error) {
     return error.rfind(prefix, 0) == 0 ? error.substr(prefix.size()) : error;
 }
 
+}  // namespace
+
 // A step's whole state: the session the default scene starts with, patched by the lesson's
 // setup and the step, then read by parseSession so every session rule (and every pipeline
 // setting the session knows) applies. `path` names the step in messages.
-Session readState(json const& state, std::string const& path, glm::vec3* lookAt, bool* hasLookAt) {
+Session lesson_fields::readState(json const& state, std::string const& path, glm::vec3* lookAt, bool* hasLookAt) {
     Session base;
     base.camera = defaultCamera();
     int lights = 32;
@@ -123,6 +82,8 @@ Session readState(json const& state, std::string const& path, glm::vec3* lookAt,
     return *load.session;
 }
 
+namespace {
+
 // Setup first, then the step: objects merge field by field, "lights" and "pixel" replace.
 json mergedState(json const& setup, json const& step) {
     json out = setup.is_object() ? setup : json::object();
@@ -137,154 +98,6 @@ json mergedState(json const& setup, json const& step) {
             out[key] = *it;
     }
     return out;
-}
-
-Attachment attachmentNamed(json const& j, std::string const& field) {
-    static constexpr std::array<std::pair<std::string_view, Attachment>, 5> names{
-        {{"position", Attachment::Position},
-         {"normal", Attachment::Normal},
-         {"albedo_spec", Attachment::AlbedoSpec},
-         {"depth", Attachment::Depth},
-         {"lighting", Attachment::Lighting}}};
-    if (j.is_string())
-        for (auto const& [name, a] : names)
-            if (j.get<std::string>() == name) return a;
-    fail(field, "must be one of position, normal, albedo_spec, depth or lighting (got " + j.dump() + ")");
-}
-
-// A comparing claim's optional "image": "lighting" (the default, the light sum) or "final" (the display
-// image, which alone shows the light cubes and wireframes).
-Attachment comparedImage(json const& c, std::string const& path) {
-    auto it = c.find("image");
-    if (it == c.end()) return Attachment::Lighting;
-    if (it->is_string() && it->get<std::string>() == "lighting") return Attachment::Lighting;
-    if (it->is_string() && it->get<std::string>() == "final") return Attachment::Final;
-    fail(path + ".image", "must be lighting or final (got " + it->dump() + ")");
-}
-
-LessonClaim readClaim(json const& c, std::string const& path, json const& state, LessonStep const& step) {
-    knownFields(c, path,
-                {"kind", "light", "reference", "tolerance", "bound", "min_fraction", "attachment", "value", "image",
-                 "reached"});
-    auto kindIt = c.find("kind");
-    if (kindIt == c.end()) fail(path + ".kind", "is missing");
-    std::string names;
-    for (auto n : kClaimKindNames) names += (names.empty() ? "" : ", ") + std::string(n);
-    if (!kindIt->is_string()) fail(path + ".kind", "must be one of " + names);
-    auto const kind = enumFromName<ClaimKind>(kClaimKindNames, kindIt->get<std::string>());
-    if (!kind) fail(path + ".kind", "must be one of " + names + " (got " + kindIt->dump() + ")");
-    LessonClaim claim;
-    claim.kind = *kind;
-    auto need = [&](char const* key) -> json const& {
-        auto it = c.find(key);
-        if (it == c.end()) fail(path + "." + key, "is missing (a " + kindIt->get<std::string>() + " claim needs it)");
-        return *it;
-    };
-    auto optionalNumber = [&](char const* key, float fallback, float lo, float hi) {
-        auto it = c.find(key);
-        return it == c.end() ? fallback : number(*it, path + "." + key, lo, hi);
-    };
-    bool const atPixel = *kind == ClaimKind::MatchesCpu || *kind == ClaimKind::LosesLight ||
-                         *kind == ClaimKind::TileCountMatchesCpu || *kind == ClaimKind::ExecutedExceedsLit ||
-                         *kind == ClaimKind::AttachmentEquals;
-    if (atPixel && !step.state.pixel)
-        fail(path + ".kind", "is a claim about the step's pixel, and the step has no pixel");
-    claim.tolerance = optionalNumber("tolerance", 0.02f, 0.0f, 10.0f);
-    switch (*kind) {
-        case ClaimKind::LosesLight:
-            claim.light = integer(need("light"), path + ".light", 0, int(step.state.lights.size()) - 1);
-            break;
-        case ClaimKind::SameImage:
-            claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
-            claim.image = comparedImage(c, path);
-            break;
-        case ClaimKind::FewerLitPixels:
-            claim.minFraction = number(need("min_fraction"), path + ".min_fraction", 0.0f, 1.0f);
-            break;
-        case ClaimKind::PositionError:
-            claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
-            break;
-        case ClaimKind::TileCountMatchesCpu:
-            if (step.state.pipeline.mode != LightingMode::Tiled || step.state.pipeline.view != DebugView::TileLights)
-                fail(path + ".kind", "needs pipeline.mode \"tiled\" and pipeline.view \"tile_lights\"");
-            break;
-        case ClaimKind::ExecutedExceedsLit:
-            if (step.state.pipeline.view != DebugView::Heatmap) fail(path + ".kind", "needs pipeline.view \"heatmap\"");
-            break;
-        case ClaimKind::AttachmentEquals: {
-            claim.attachment = attachmentNamed(need("attachment"), path + ".attachment");
-            json const& v = need("value");
-            // null skips a component: [null, 0, null] says only "y is 0".
-            if (!v.is_array() || v.empty() || v.size() > 4)
-                fail(path + ".value", "must be an array of 1 to 4 numbers (null skips a component)");
-            claim.compare = 0;
-            for (std::size_t i = 0; i < v.size(); ++i) {
-                if (v[i].is_null()) continue;
-                claim.value[int(i)] = number(v[i], path + ".value[" + std::to_string(i) + "]", -1e6f, 1e6f);
-                claim.compare |= 1u << i;
-            }
-            if (!claim.compare) fail(path + ".value", "must compare at least one component");
-            break;
-        }
-        case ClaimKind::DiffersFrom:
-            claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
-            claim.minFraction = number(need("min_fraction"), path + ".min_fraction", 0.0f, 1.0f);
-            claim.image = comparedImage(c, path);
-            break;
-        case ClaimKind::MatchesCpu:
-            if (auto it = c.find("reached"); it != c.end())
-                claim.reached = integer(*it, path + ".reached", 0, int(step.state.lights.size()));
-            break;
-    }
-    if (*kind != ClaimKind::MatchesCpu && c.contains("reached"))
-        fail(path + ".reached", "is only for a matches_cpu claim");
-    if (claimNeedsReference(claim)) {
-        // The reference is the step's pipeline with these settings changed, read like the step.
-        json const& ref = need("reference");
-        if (!ref.is_object()) fail(path + ".reference", "must be an object of pipeline settings");
-        json s = state;
-        if (!s.contains("pipeline") || !s["pipeline"].is_object()) s["pipeline"] = json::object();
-        s["pipeline"].merge_patch(ref);
-        glm::vec3 ignored;
-        bool has = false;
-        try {
-            claim.reference = readState(s, "@", &ignored, &has).pipeline;
-        } catch (FieldError const& e) {
-            std::string what = e.what();
-            if (what.rfind("@.pipeline.", 0) == 0) what = path + ".reference." + what.substr(11);
-            throw FieldError(what);
-        }
-    }
-    return claim;
-}
-
-// "ab": {"view": "split" | "diff", "b": {FIELD: VALUE, ...}}: the A/B comparison the step opens,
-// B being the step's pipeline with the named fields of the A/B table (abFields) changed.
-LessonAb readAb(json const& j, std::string const& path, PipelineSettings const& a) {
-    knownFields(j, path, {"view", "b"});
-    LessonAb ab;
-    if (auto it = j.find("view"); it != j.end()) {
-        std::string const v = it->is_string() ? it->get<std::string>() : "";
-        if (v != "split" && v != "diff") fail(path + ".view", "must be split or diff (got " + it->dump() + ")");
-        ab.view = v == "diff" ? AbView::Diff : AbView::Split;
-    }
-    auto b = j.find("b");
-    if (b == j.end() || !b->is_object() || b->empty())
-        fail(path + ".b", "must be an object naming at least one field side B changes");
-    AbState scratch;
-    scratch.b = a;
-    for (auto it = b->begin(); it != b->end(); ++it) {
-        json const& v = it.value();
-        std::string const value = v.is_string()    ? v.get<std::string>()
-                                  : v.is_boolean() ? (v.get<bool>() ? "1" : "0")
-                                                   : v.dump();
-        if (!setAbField(scratch, it.key(), value))
-            fail(path + ".b." + it.key(),
-                 "is not a field of the A/B table, or " + v.dump() + " is not one of its values");
-    }
-    ab.b = scratch.b;
-    ab.overrides = scratch.overrides;
-    return ab;
 }
 
 LessonSnapshot snapshotOf(json const& state, std::string const& path, int* defaultLights = nullptr);
