@@ -43,6 +43,12 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     l.plotPopup = {400, 320, 280, 168};
     l.plotPopupRadius = 2.0f;
     l.plotLight = {1.0f, 0.7f, 0.0075f, 2.0f, 5.0f / 256.0f};
+    l.precisionLines = 6;
+    l.gbuffer = "/tmp/export";
+    l.frameSize = {480, 270};
+    l.fileMenu = {8, 0, 30, 19};
+    l.openGBufferItem = {9, 88, 260, 17};
+    l.gbufferBrowser = true;
     nlohmann::json const j = nlohmann::json::parse(frameLogJson(l));
     EXPECT_EQ(j["frame"], 41);
     EXPECT_EQ(j["rendered"], true);
@@ -86,6 +92,12 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     EXPECT_FLOAT_EQ(j["plotLight"][2].get<float>(), 0.0075f);
     EXPECT_FLOAT_EQ(j["plotLight"][4].get<float>(), 5.0f / 256.0f);
     EXPECT_EQ(j["toolsRegion"][3], 60);
+    EXPECT_EQ(j["precisionLines"], 6);
+    EXPECT_EQ(j["gbuffer"], "/tmp/export");
+    EXPECT_EQ(j["frameSize"], nlohmann::json::parse("[480,270]"));
+    EXPECT_EQ(j["fileMenu"], nlohmann::json::parse("[8,0,30,19]"));
+    EXPECT_EQ(j["openGBufferItem"], nlohmann::json::parse("[9,88,260,17]"));
+    EXPECT_EQ(j["gbufferBrowser"], true);
 }
 
 TEST(FrameLog, WritesOneLinePerFrame) {

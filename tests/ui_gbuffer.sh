@@ -9,6 +9,7 @@
 #     and a mouse drag over the viewport leaves the fixed camera where it was.
 #  2b. A manifest that reads the export's albedo as biased normals: findings; real clicks on the
 #     viewport's Checks button and its first finding mark that finding, a second click unmarks it.
+#  2c. File > Open G-buffer... with real clicks, the folder's path typed and Enter: it is shown.
 #  3. `--gbuffer` of a bad manifest: exit code 2 and one sentence.
 # usage: ui_gbuffer.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
 set -eu
@@ -154,6 +155,32 @@ click_at "$1" "$2"
 xdotool key --delay 30 Escape
 wait_frames 2
 ui_quit "Ctrl+Q did not quit the editor showing the checks"
+
+# --- 2c. File > Open G-buffer... with real input: a click on File, a click on the item, the folder's
+# path typed into the browser's Name field (focused as it opens), Enter: the export is shown.
+ui_start menu --size 1280x720 --frame-sleep-ms 20
+[ "$(field gbuffer)" = '""' ] || fail "the editor started with G-buffer $(field gbuffer) shown"
+set -- $(rect_point fileMenu 0.5 0.5)
+[ "${1:-0}" -gt 0 ] || fail "the menu bar's File was not logged: $(field fileMenu)"
+click_at "$1" "$2"
+set -- $(rect_point openGBufferItem 0.3 0.5)
+[ "${1:-0}" -gt 0 ] || fail "clicking File at $1,$2 showed no Open G-buffer item: $(field openGBufferItem)"
+click_at "$1" "$2"
+[ "$(field gbufferBrowser)" = true ] || fail "clicking Open G-buffer... opened no file browser"
+xdotool key --delay 30 ctrl+a
+xdotool type --delay 30 "$work/export"
+xdotool key --delay 30 Return
+tries=0
+until [ "$(field gbuffer)" = "\"$work/export\"" ]; do
+    tries=$((tries + 1))
+    [ "$tries" -le 100 ] || fail "typing $work/export and Enter opened $(field gbuffer) (browser open: $(field gbufferBrowser))"
+    wait_frames 1
+done
+wait_frames 4
+[ "$(field gbufferBrowser)" = false ] || fail "the file browser stayed open after Enter"
+[ "$(field frameSize)" = "[480,270]" ] || fail "the G-buffer opened from the menu is $(field frameSize), not 480x270"
+shot menu_opened
+ui_quit "Ctrl+Q did not quit the editor after File > Open G-buffer"
 
 # --- 3. --gbuffer of a bad manifest: one sentence, exit code 2 --------------------------------
 set +e

@@ -115,6 +115,9 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     }
     line.gbuffer = editor.loading.gbuffer.path;
     line.frameSize = glm::ivec2(editor.renderer->width(), editor.renderer->height());
+    line.fileMenu = state.layout.fileMenuRect;
+    line.openGBufferItem = editor.loading.gbuffer.menuItemRect;
+    line.gbufferBrowser = editor.loading.gbuffer.browser.open;
     editor.frameLog.write(line);
 }
 

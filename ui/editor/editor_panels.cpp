@@ -52,8 +52,12 @@ EditRequest drawMainMenu(Editor& editor) {
     EditorState& state = editor.state;
     ui::SessionController& sessions = *editor.sessions;
     EditRequest edit;
+    editor.loading.gbuffer.menuItemRect = glm::vec4(0.0f);
     if (!ImGui::BeginMainMenuBar()) return edit;
-    if (ImGui::BeginMenu("File")) {
+    bool const fileMenu = ImGui::BeginMenu("File");
+    ImVec2 const fileMin = ImGui::GetItemRectMin(), fileMax = ImGui::GetItemRectMax();
+    state.layout.fileMenuRect = {fileMin.x, fileMin.y, fileMax.x - fileMin.x, fileMax.y - fileMin.y};
+    if (fileMenu) {
         if (ImGui::MenuItem("New session", keysFor(ui::EditorAction::NewSession))) edit.newSession = true;
         ImGui::Separator();
         ui::drawSceneMenuItems(editor.loading);

@@ -127,6 +127,8 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += "]";
     out += ",\"gbuffer\":" + quoted(l.gbuffer);
     out += ",\"frameSize\":[" + std::to_string(l.frameSize.x) + "," + std::to_string(l.frameSize.y) + "]";
+    out += ",\"fileMenu\":" + rect(l.fileMenu) + ",\"openGBufferItem\":" + rect(l.openGBufferItem) +
+           ",\"gbufferBrowser\":" + (l.gbufferBrowser ? "true" : "false");
     return out + "}";
 }
 

@@ -125,6 +125,11 @@ struct FrameLogLine {
     // and the size of the frame the renderer drew, which is that G-buffer's while it is open.
     std::string gbuffer;
     glm::ivec2 frameSize{0};
+    // The menu bar's "File", File > "Open G-buffer..." while that menu is open, and whether the
+    // G-buffer file browser is open.
+    glm::vec4 fileMenu{0.0f};
+    glm::vec4 openGBufferItem{0.0f};
+    bool gbufferBrowser = false;
 };
 
 std::string frameLogJson(FrameLogLine const& line);

@@ -39,6 +39,8 @@ struct GBufferOpenState {
     GBufferCheckReport checks;  // the shown G-buffer's findings, masks included
     std::string lastError;      // the last refused open ("" after a good one)
     FileBrowserState browser;
+    // File > "Open G-buffer..." as drawn while the File menu is open (0 otherwise), for the frame log.
+    glm::vec4 menuItemRect{0.0f};
 };
 
 // A G-buffer read from disk and ready to upload: the frame, its lights, shininess and camera.

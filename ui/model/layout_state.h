@@ -50,6 +50,7 @@ struct LayoutState {
     std::optional<LayoutSplits> splits;
     int draggingSplit = -1;
     std::array<TileRect, kSplitCount> handles{};  // the handles as last drawn (Split order; the frame log's)
+    glm::vec4 fileMenuRect{0.0f};                 // the menu bar's "File", for the frame log
 };
 
 // Fractions of the work area. The G-buffer strip spans the whole width below the others, so

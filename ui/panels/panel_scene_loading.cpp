@@ -94,6 +94,8 @@ void drawSceneMenuItems(SceneLoadingState& state) {
     ImGui::Separator();
     GBufferOpenState& gbuffer = state.gbuffer;
     if (ImGui::MenuItem("Open G-buffer...")) openGBufferDialog(gbuffer);
+    ImVec2 const itemMin = ImGui::GetItemRectMin(), itemMax = ImGui::GetItemRectMax();
+    gbuffer.menuItemRect = {itemMin.x, itemMin.y, itemMax.x - itemMin.x, itemMax.y - itemMin.y};
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "Another program's G-buffer: a manifest (docs/import.md) or a folder holding one,\n"
