@@ -3,11 +3,14 @@
 #include "import/gbuffer_checks.h"
 #include "import/gbuffer_manifest.h"
 #include "import/imported_gbuffer.h"
+#include "import/relight_frame.h"
 #include "run_command.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -274,6 +277,36 @@ TEST(GBufferImport, EachPlantedBugIsFound) {
             }
         EXPECT_TRUE(found) << c.check;
     }
+}
+
+// Another program's camera may roll, or project off-centre (a jittered or tiled projection): the
+// editor's camera for the frame returns its matrices as given, which no yaw/pitch camera can, so
+// picking, the pixel inspector and why-this-value project through the frame's own transform.
+TEST(GBufferImport, TheFramesCameraKeepsItsExactMatrices) {
+    ImportedFrame f;
+    f.eye = {1.0f, 4.0f, 9.0f};
+    float const roll = glm::radians(30.0f);
+    f.view = glm::lookAt(f.eye, glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(std::sin(roll), std::cos(roll), 0.0f));
+    f.projection = glm::frustum(-0.05f, 0.09f, -0.04f, 0.05f, 0.1f, 100.0f);
+    f.nearPlane = 0.1f;
+    f.farPlane = 100.0f;
+    Camera const c = cameraOfFrame(f);
+    EXPECT_EQ(c.view(), f.view);
+    EXPECT_EQ(c.projection(16.0f / 9.0f), f.projection);
+    glm::vec4 const p(0.5f, 1.5f, -0.5f, 1.0f);
+    EXPECT_EQ(c.projection(1.0f) * c.view() * p, f.projection * f.view * p);
+    // Its angles are the nearest yaw/pitch camera's: the same eye and forward, but not the same view.
+    EXPECT_EQ(c.position, f.eye);
+    Camera nearest = c;
+    nearest.fixedView.reset();
+    nearest.fixedProjection.reset();
+    glm::vec3 const forward = -glm::vec3(f.view[0][2], f.view[1][2], f.view[2][2]);
+    EXPECT_NEAR(glm::dot(nearest.forward(), glm::normalize(forward)), 1.0f, 1e-5f);
+    float largest = 0.0f;
+    for (int col = 0; col < 4; ++col)
+        for (int row = 0; row < 4; ++row)
+            largest = std::max(largest, std::abs(nearest.view()[col][row] - f.view[col][row]));
+    EXPECT_GT(largest, 0.3f) << "a 30 degree roll should be far from any yaw/pitch view";
 }
 
 // Every attachment gets a precision note; the normal's names the manifest's shininess and the

@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <optional>
 
 namespace gbl {
 
@@ -15,6 +16,13 @@ struct Camera {
     float fovYDegrees = 60.0f;
     float nearPlane = 0.1f;
     float farPlane = 200.0f;
+    // Another program's matrices, for a camera fixed to an imported G-buffer's frame
+    // (import/relight_frame.h): view() and projection() return them as given, so picking, the pixel
+    // inspector and why-this-value use that frame's exact transform, roll and off-centre
+    // projections included. The fields above then hold the nearest yaw/pitch camera, for what
+    // reads angles. Unset for every camera the editor moves.
+    std::optional<glm::mat4> fixedView;
+    std::optional<glm::mat4> fixedProjection;
 
     glm::vec3 forward() const {
         float const yaw = glm::radians(yawDegrees), pitch = glm::radians(pitchDegrees);
@@ -24,8 +32,13 @@ struct Camera {
     glm::vec3 right() const { return glm::normalize(glm::cross(forward(), glm::vec3(0, 1, 0))); }
     glm::vec3 up() const { return glm::cross(right(), forward()); }
 
-    glm::mat4 view() const { return glm::lookAt(position, position + forward(), glm::vec3(0, 1, 0)); }
+    glm::mat4 view() const {
+        if (fixedView) return *fixedView;
+        return glm::lookAt(position, position + forward(), glm::vec3(0, 1, 0));
+    }
+    // `aspect` is width / height of the frame; a fixed projection is the frame's own, as given.
     glm::mat4 projection(float aspect) const {
+        if (fixedProjection) return *fixedProjection;
         return glm::perspective(glm::radians(fovYDegrees), aspect, nearPlane, farPlane);
     }
 

@@ -76,6 +76,8 @@ Camera cameraOfFrame(ImportedFrame const& f) {
     c.fovYDegrees = glm::degrees(2.0f * std::atan(1.0f / f.projection[1][1]));
     c.nearPlane = f.nearPlane;
     c.farPlane = f.farPlane;
+    c.fixedView = f.view;
+    c.fixedProjection = f.projection;
     return c;
 }
 

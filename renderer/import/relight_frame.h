@@ -22,8 +22,10 @@ struct RelightFrame {
 // which the import pass leaves at the clear values.
 RelightFrame relightFrame(ImportedGBuffer const& g);
 
-// The yaw/pitch camera nearest the frame's matrices, for camera.json, the depth views and the
-// editor's (fixed) camera; exact for a view matrix built with up (0, 1, 0), as gbuffer-lab's own are.
+// The editor's (fixed) camera for the frame: view() and projection() are the frame's matrices as
+// given (Camera::fixedView), so a rolled camera or an off-centre projection is kept; the angle
+// fields hold the nearest yaw/pitch camera (exact for a view built with up (0, 1, 0), as gbuffer-lab's
+// own are), for camera.json's angles and the frame log.
 Camera cameraOfFrame(ImportedFrame const& frame);
 
 }  // namespace gbl
