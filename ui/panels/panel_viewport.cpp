@@ -8,6 +8,7 @@
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
 #include "panels/viewer_tools.h"
+#include "panels/viewport_checks.h"
 #include "panels/viewport_overlays.h"
 
 #include <imgui.h>
@@ -50,59 +51,12 @@ glm::vec4 itemRect() {
 // The viewport's tools, then "Pin lit", which holds the lit HDR frame; "Diff" shows |now - pinned|
 // over RGB as the viewers' heat map, with the statistics of both on the row (a row of its own:
 // the toolbar above is full).
-// An open G-buffer's check findings (docs/import.md, "Checks"): the button says how many, its list
-// gives each one's pixels, share and likely cause, and a click on one marks its pixels over the image.
-void checksButton(ViewportState& state) {
-    state.checksRect = glm::vec4(0.0f);
-    state.firstFindingRect = glm::vec4(0.0f);
-    state.precisionShown = 0;
-    if (state.importedFrame.empty()) return;
-    std::size_t const n = state.findings.size();
-    std::string const label = n == 0 ? "Checks: none" : "Checks: " + std::to_string(n);
-    if (n > 0) ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.62f, 0.22f, 0.45f, 1.0f));
-    if (ImGui::Button(label.c_str())) ImGui::OpenPopup("gbuffer-checks");
-    if (n > 0) ImGui::PopStyleColor();
-    state.checksRect = itemRect();
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "what `gbuffer-lab check` finds in this G-buffer: click for the list, and a finding to\n"
-            "mark its pixels over the image");
-    ImGui::SameLine();
-    if (!ImGui::BeginPopup("gbuffer-checks")) return;
-    if (n == 0) ImGui::TextUnformatted("No finding: every check passed (docs/import.md, \"Checks\").");
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32.0f);
-    for (std::size_t i = 0; i < n; ++i) {
-        GBufferFinding const& f = state.findings[i];
-        char head[192];
-        std::snprintf(head, sizeof head, "%s%s (%s): %zu px, %.3g %% of the frame", f.check.c_str(),
-                      f.heuristic ? " [heuristic]" : "", f.attachment.c_str(), f.pixels, 100.0 * f.share);
-        bool const marked = state.markedFinding == int(i);
-        ImGui::PushID(int(i));
-        if (ImGui::RadioButton(head, marked)) state.markedFinding = marked ? -1 : int(i);
-        if (i == 0) state.firstFindingRect = itemRect();
-        ImGui::PopID();
-        ImGui::Indent();
-        ImGui::TextWrapped("%s", f.cause.c_str());
-        ImGui::Unindent();
-    }
-    if (state.markedFinding >= 0 && ImGui::Button("Unmark")) state.markedFinding = -1;
-    // What the storage can hold, finding or not: the answer to "is 8 bits enough for my normals?".
-    if (!state.precision.empty()) {
-        ImGui::Separator();
-        ImGui::TextUnformatted("Precision: what each attachment's storage can hold");
-        for (std::string const& line : state.precision) ImGui::BulletText("%s", line.c_str());
-        state.precisionShown = int(state.precision.size());
-    }
-    ImGui::PopTextWrapPos();
-    ImGui::EndPopup();
-}
-
 void litPinRow(LitPin& pin, ViewportTools& tools, DebugView view, ViewportState& state) {
     ImGui::SetCursorPosX(ImGui::GetCursorPosX() + 6);
     // The viewport's tools share this row: opening them never adds one.
     viewportToolsRow(tools, view);
     if (viewerKindOfView(view)) ImGui::SameLine();
-    checksButton(state);
+    drawChecksButton(state);
     if (ImGui::Button("Pin lit")) pin.pinRequested = true;
     pin.pinRect = itemRect();
     pin.diffRect = glm::vec4(0.0f);
