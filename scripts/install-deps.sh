@@ -3,7 +3,7 @@
 set -euo pipefail
 
 packages=(
-  cmake g++ make pkg-config mold
+  cmake g++ make ninja-build pkg-config mold
   libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev libopenimageio-dev libepoxy-dev libdraco-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libcli11-dev nlohmann-json3-dev

@@ -39,9 +39,12 @@ start=$(date +%s)
 # -O1 -g1 rather than RelWithDebInfo's -O2 -g: line tables are all a sanitizer report's stack needs,
 # and an instrumented file then compiles in about 55 % of the time (tests/many_lights_gl_test.cpp:
 # 14.4 s against 8.0 s on one core here), which is most of CI's time in this script.
-cmake -S "$root" -B "$build" -DGBL_SANITIZE=ON -DGBL_WERROR=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+# Ninja for a new folder, as scripts/build.sh says why.
+generator=()
+if [[ ! -f "$build/CMakeCache.txt" ]] && command -v ninja >/dev/null; then generator=(-G Ninja); fi
+cmake -S "$root" -B "$build" "${generator[@]}" -DGBL_SANITIZE=ON -DGBL_WERROR=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
-    "-DCMAKE_EXE_LINKER_FLAGS=-static-libasan -static-libubsan" >/dev/null
+    "-DCMAKE_EXE_LINKER_FLAGS=-static-libasan -static-libubsan" -DGBL_CPU_TESTS_PER_BINARY=ON >/dev/null
 # The GL test binaries run here: those whose host code goes past render() and a read-back (files,
 # sessions, the command line, viewers and their tools, glTF scenes, the shader checks, the edge-case
 # scenes). The others compare shaded pixels with the CPU's math over the same host path, which
@@ -126,15 +129,19 @@ run_ctest() { ctest --test-dir "$build" --output-on-failure -j"$jobs" --timeout 
 # sanitizers): the window's first size, the split handles' arithmetic, the plot's tooltip and the overview's
 # grid; the editor code around them runs here under the UI tests named above.
 plain_only='^(ui_teaching|ui_frame_window|ui_first_window|ui_layout_drag|ui_plot_drag|ui_overview|Session\.TooManyLightsAreRefusedWithTheLimit|SessionCli\.SessionWithMoreLightsThanTheLimitIsRefused|ui_layout_fits|ui_lessons|ShaderCompile\..*|EdgeScenes\.(sizes\.)?run[2-9]|GltfRender\.EveryModelRendersWithNonEmptyAttachments)$'
+# The CPU tests are one ctest test per executable here (GBL_CPU_TESTS_PER_BINARY, tests/CMakeLists.txt):
+# the executable's name selects, and GTEST_FILTER leaves out plain_only's single CPU test.
+gltf_cpu='^gltf_(loader|features)_test$'
+cpu_filter='-Session.TooManyLightsAreRefusedWithTheLimit'
 if [[ -n "$labels" ]]; then
     # Binaries this script did not build register as NAME_NOT_BUILT: not run.
     run_ctest -L 'gl' -E "_NOT_BUILT\$|$plain_only"
-    run_ctest -L 'cpu' -E "^Gltf|$plain_only"
+    GTEST_FILTER="$cpu_filter" run_ctest -L 'cpu' -E "$gltf_cpu|^shader_compile_test\$"
 else
-    run_ctest -E '^Gltf'
+    run_ctest -E "^Gltf|$gltf_cpu"
     run_ctest -L 'gl|ui|fuzz' -R '^Gltf'
 fi
-LSAN_OPTIONS="$LSAN_OPTIONS:fast_unwind_on_malloc=0" run_ctest -L 'cpu' -R '^Gltf'
+LSAN_OPTIONS="$LSAN_OPTIONS:fast_unwind_on_malloc=0" run_ctest -L 'cpu' -R "$gltf_cpu"
 end=$(date +%s)
 echo "sanitize-tests: build $((built - start)) s, tests $((end - built)) s, total $((end - start)) s, ctest exit $status"
 exit $status
