@@ -24,6 +24,7 @@
 #define BIND_IMPORT_POSITION_DEPTH 0  // sampler uImportPositionDepth
 #define BIND_IMPORT_NORMAL 1          // sampler uImportNormal
 #define BIND_IMPORT_ALBEDO_SPEC 2     // sampler uImportAlbedoSpec
+#define BIND_IMPORT_EMISSIVE_AO 3     // sampler uImportEmissiveAo
 // Image units of the tiled compute pass (declared with layout(binding = ...) in the shader).
 #define BIND_IMAGE_LIGHTING 0
 #define BIND_IMAGE_COVERAGE 1

@@ -1,7 +1,7 @@
 // Import pass: writes a G-buffer another program wrote (decoded to world space on the CPU by
 // renderer/import) into the current layout's attachments, through the geometry pass's own encoding
-// (gbuffer_encoding.glsl), so every layout re-lights it as it would the scene. Background pixels are
-// discarded and keep the cleared values.
+// (gbuffer_encoding.glsl), so every layout re-lights it as it would the scene, emission and occlusion
+// included where the layout stores them. Background pixels are discarded and keep the cleared values.
 #version 330 core
 #include "bindings.glsl"
 #include "gbuffer_encoding.glsl"
@@ -9,6 +9,7 @@
 uniform sampler2D uImportPositionDepth;  // xyz world position, w window depth (1: background)
 uniform sampler2D uImportNormal;         // xyz world normal
 uniform sampler2D uImportAlbedoSpec;     // rgb linear albedo, a specular intensity
+uniform sampler2D uImportEmissiveAo;     // rgb linear emitted radiance, a ambient occlusion
 
 #ifdef GBUFFER_POSITION_FROM_DEPTH
 layout(location = 0) out vec4 gNormal;
@@ -34,6 +35,8 @@ void main() {
     gNormal = encodeNormal(normalize(texelFetch(uImportNormal, px, 0).xyz));
     gAlbedoSpec = texelFetch(uImportAlbedoSpec, px, 0);
 #ifndef GBUFFER_NO_EMISSIVE_AO
-    gEmissiveAo = vec4(0.0, 0.0, 0.0, 1.0);  // a manifest carries no emission or occlusion
+    // As the geometry pass writes the material's: the layout's format keeps what it can (RGBA8
+    // clamps to [0, 1] in 1/255 steps); a layout without the attachment (packed) keeps neither.
+    gEmissiveAo = texelFetch(uImportEmissiveAo, px, 0);
 #endif
 }

@@ -23,6 +23,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -593,6 +594,52 @@ TEST_F(GbufferDumpGlTest, PositionIsRebuiltFromDepthWhenNoAttachmentHoldsIt) {
     EXPECT_FALSE(g.image("position"));
     expectSceneValues(g);
     for (auto const& f : checkGBuffer(g).findings) ADD_FAILURE() << f.check << ": " << f.cause;
+}
+
+// The optional emissive and occlusion roles: named in the manifest when given, and read back as the
+// GL held them (here the albedo attachment's rgb as emission and its alpha as occlusion: the roles
+// may share an attachment as albedo and specular do); left out of it without them.
+TEST_F(GbufferDumpGlTest, EmissiveAndOcclusionRolesAreNamedWhenGiven) {
+    renderGeometry();
+    glm::mat4 const view = viewMatrix(), projection = projectionMatrix();
+    LearnOpenGlDump dump(view, projection);
+    gbl_dump_options& o = dump.options;
+    char message[512];
+    std::string const plain = test::freshTempDir("gbl_dump_no_emissive");
+    ASSERT_EQ(gbl_dump(gBuffer_.id(), kW, kH, plain.c_str(), &o, message, sizeof message), GBL_DUMP_OK) << message;
+    EXPECT_EQ(fileBytes(plain + "/manifest.json").find("emissive"), std::string::npos);
+    EXPECT_EQ(fileBytes(plain + "/manifest.json").find("occlusion"), std::string::npos);
+
+    o.emissive = 2;
+    o.occlusion = 2;
+    o.occlusion_channel = 3;
+    std::string const dir = test::freshTempDir("gbl_dump_emissive");
+    ASSERT_EQ(gbl_dump(gBuffer_.id(), kW, kH, dir.c_str(), &o, message, sizeof message), GBL_DUMP_OK) << message;
+    std::string const manifest = fileBytes(dir + "/manifest.json");
+    EXPECT_NE(manifest.find(R"("emissive": {"file": "gAlbedoSpec.ppm", "channels": "rgb", "encoding": "linear"})"),
+              std::string::npos)
+        << manifest;
+    EXPECT_NE(manifest.find(R"("occlusion": {"file": "gAlbedoSpec_a.pgm", "channel": "r"})"), std::string::npos)
+        << manifest;
+    ImportedGBuffer const g = open(dir);
+    ASSERT_EQ(g.emissive.size(), g.pixelCount());
+    EXPECT_EQ(g.emissive, g.albedo);
+    EXPECT_EQ(g.occlusion, g.specular);
+    EXPECT_TRUE(std::any_of(g.occlusion.begin(), g.occlusion.end(), [](float v) { return v > 0.0f && v < 1.0f; }));
+    for (auto const& f : checkGBuffer(g).findings) ADD_FAILURE() << f.check << ": " << f.cause;
+
+    auto expectRefused = [&](char const* words) {
+        EXPECT_EQ(gbl_dump(gBuffer_.id(), kW, kH, dir.c_str(), &o, message, sizeof message), GBL_DUMP_BAD_ARGUMENT);
+        EXPECT_NE(std::string(message).find(words), std::string::npos) << message;
+    };
+    o.occlusion_channel = 4;
+    expectRefused("options.occlusion_channel must be 0 to 3 (got 4)");
+    o.occlusion_channel = 3;
+    o.occlusion = 1;  // RGB16F: no fourth channel
+    expectRefused("options.occlusion is colour attachment 1, which has 3 channel(s); it needs 4");
+    o.occlusion = 2;
+    o.emissive = 3;
+    expectRefused("options.emissive must be -1 or a colour attachment below color_count 3 (got 3)");
 }
 
 // Storage other than LearnOpenGL's: 16-bit unsigned position (written as float), sRGB albedo (the

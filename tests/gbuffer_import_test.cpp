@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 using namespace gbl;
 namespace fs = std::filesystem;
@@ -368,4 +369,174 @@ TEST(GBufferImport, EveryTruncationAndByteFlipFailsCleanly) {
     // Some flips stay valid (a digit for a digit); most must not.
     EXPECT_GT(accepted, 0);
     EXPECT_GT(refused, accepted);
+}
+
+// --- emission and occlusion (issue 28) ----------------------------------------------------------
+
+namespace {
+
+// The clean handmade G-buffer's manifest with `extra` fields added (", \"emissive\": {...}").
+std::string withFields(std::string const& dir, std::string const& extra) {
+    std::ifstream in(dir + "/manifest.json");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    text.insert(text.rfind('}'), extra);
+    return text;
+}
+
+}  // namespace
+
+TEST(GBufferImport, EmissiveAndOcclusionParseAndDefaultToNone) {
+    std::string const head = R"({"format": "gbuffer-lab-gbuffer", "version": 1, "preset": "learnopengl")";
+    ManifestLoad const none = parseManifest(head + "}", "m.json", "/x");
+    ASSERT_TRUE(none.manifest) << none.error;
+    EXPECT_FALSE(none.manifest->emissive);
+    EXPECT_FALSE(none.manifest->occlusion);
+    ManifestLoad const both =
+        parseManifest(head + R"(, "emissive": {"file": "e.png", "channels": "bgr", "encoding": "srgb", "scale": 4},
+                   "occlusion": {"file": "ao.exr", "channel": "a"}})",
+                      "m.json", "/x");
+    ASSERT_TRUE(both.manifest) << both.error;
+    ASSERT_TRUE(both.manifest->emissive);
+    EXPECT_EQ(both.manifest->emissive->image.path, "/x/e.png");
+    EXPECT_EQ(both.manifest->emissive->image.channels, (std::vector<int>{2, 1, 0}));
+    EXPECT_EQ(both.manifest->emissive->encoding, ColorEncoding::Srgb);
+    EXPECT_EQ(both.manifest->emissive->scale, 4.0f);
+    ASSERT_TRUE(both.manifest->occlusion);
+    EXPECT_EQ(both.manifest->occlusion->channels, std::vector<int>{3});
+    // Defaults: rgb, linear, scale 1; channel r.
+    ManifestLoad const plain =
+        parseManifest(head + R"(, "emissive": {"file": "e.exr"}, "occlusion": {"file": "ao.png"}})", "m.json", "/x");
+    ASSERT_TRUE(plain.manifest) << plain.error;
+    EXPECT_EQ(plain.manifest->emissive->image.channels, (std::vector<int>{0, 1, 2}));
+    EXPECT_EQ(plain.manifest->emissive->encoding, ColorEncoding::Linear);
+    EXPECT_EQ(plain.manifest->emissive->scale, 1.0f);
+    EXPECT_EQ(plain.manifest->occlusion->channels, std::vector<int>{0});
+    // gbuffer-lab's export folder names emissive.exr for both; null takes a preset's field away.
+    ManifestLoad const ours = parseManifest(R"({"format": "gbuffer-lab-gbuffer", "version": 1, "preset": "gbuffer-lab",
+        "occlusion": null, "camera": {"position": [0, 0, 5], "target": [0, 0, 0], "fov_y_degrees": 45, "near": 0.1,
+        "far": 100}})",
+                                            "m.json", "/x");
+    ASSERT_TRUE(ours.manifest) << ours.error;
+    ASSERT_TRUE(ours.manifest->emissive);
+    EXPECT_EQ(ours.manifest->emissive->image.path, "/x/emissive.exr");
+    EXPECT_FALSE(ours.manifest->occlusion);
+}
+
+TEST(GBufferImport, EmissiveAndOcclusionBadFieldsAreNamed) {
+    auto err = [](std::string const& body) {
+        return parseManifest(
+                   R"({"format": "gbuffer-lab-gbuffer", "version": 1, "preset": "learnopengl", )" + body + "}",
+                   "m.json", ".")
+            .error;
+    };
+    struct Case {
+        char const* body;
+        char const* message;
+    };
+    for (Case const& c : {
+             Case{R"("emissive": "e.png")", "m.json: emissive must be an object"},
+             Case{R"("emissive": {"channels": "rgb"})", "m.json: emissive.file is missing"},
+             Case{R"("emissive": {"file": ""})", "m.json: emissive.file must name a file"},
+             Case{R"("emissive": {"file": "e.png", "channels": "rg"})", "m.json: emissive.channels must be 3 of"},
+             Case{R"("emissive": {"file": "e.png", "channels": "rgq"})", "m.json: emissive.channels must be 3 of"},
+             Case{R"("emissive": {"file": "e.png", "encoding": "gamma"})", "m.json: emissive.encoding must be one of"},
+             Case{R"("emissive": {"file": "e.png", "scale": -1})",
+                  "m.json: emissive.scale must be a finite number >= 0"},
+             Case{R"("emissive": {"file": "e.png", "scale": "2"})", "m.json: emissive.scale must be a finite number"},
+             Case{R"("emissive": {"file": "e.png", "strength": 2})", "m.json: emissive.strength is not a known field"},
+             Case{R"("emissive": {"file": "e.raw", "raw": {"type": "float", "width": 4, "height": 4}})",
+                  "m.json: emissive.raw.channels is missing"},
+             Case{R"("occlusion": 1)", "m.json: occlusion must be an object"},
+             Case{R"("occlusion": {"channel": "r"})", "m.json: occlusion.file is missing"},
+             Case{R"("occlusion": {"file": "ao.png", "channel": "rg"})", "m.json: occlusion.channel must be 1 of"},
+             Case{R"("occlusion": {"file": "ao.png", "channels": "r"})", "m.json: occlusion.channels is not a known"},
+             Case{R"("occlusion": {"file": "ao.png", "encoding": "srgb"})",
+                  "m.json: occlusion.encoding is not a known"},
+         }) {
+        std::string const e = err(c.body);
+        EXPECT_EQ(e.rfind(c.message, 0), 0u) << c.body << "\n  gave: " << e;
+    }
+}
+
+// The images are read, decoded (sRGB, scale) and checked: missing files, sizes and values a field
+// cannot hold are refused naming it; the re-light frame carries them bottom-up, and a manifest
+// without them re-lights as before (no emissive/AO pixels: emission 0, occlusion 1).
+TEST(GBufferImport, EmissiveAndOcclusionLoadDecodeAndRefuseBadValues) {
+    std::string const dir = writeGBuffer("gbi_emissive");
+    std::vector<float> em, ao;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            bool const patch = x >= 4 && x < 8 && y >= 6 && y < 10;
+            em.insert(em.end(), {patch ? 1.0f : 0.0f, patch ? 0.6f : 0.0f, 0.0f});  // 0.6: 153/255 exactly
+            ao.push_back(y >= 12 ? 0.25f : 1.0f);
+        }
+    writePng(dir + "/emissive.png", 3, em, OIIO::TypeDesc::UINT8);
+    writeExr(dir + "/ao.exr", 1, ao);
+    std::string const fields = R"(, "emissive": {"file": "emissive.png", "encoding": "srgb", "scale": 2},
+        "occlusion": {"file": "ao.exr"})";
+    ManifestLoad const m = parseManifest(withFields(dir, fields), "m.json", dir);
+    ASSERT_TRUE(m.manifest) << m.error;
+    GBufferLoad const g = loadGBuffer(*m.manifest);
+    ASSERT_TRUE(g.gbuffer) << g.error;
+    ASSERT_EQ(g.gbuffer->emissive.size(), g.gbuffer->pixelCount());
+    ASSERT_EQ(g.gbuffer->occlusion.size(), g.gbuffer->pixelCount());
+    std::size_t const inPatch = std::size_t(7 * kW + 5), outside = std::size_t(7 * kW + 9);
+    // sRGB 0.6 is ((0.6 + 0.055) / 1.055)^2.4 = 0.3185 linear; times the scale 2.
+    EXPECT_NEAR(g.gbuffer->emissive[inPatch].r, 2.0f, 1e-6f);
+    EXPECT_NEAR(g.gbuffer->emissive[inPatch].g, 2.0f * std::pow(0.655f / 1.055f, 2.4f), 1e-5f);
+    EXPECT_EQ(g.gbuffer->emissive[outside], glm::vec3(0.0f));
+    EXPECT_EQ(g.gbuffer->occlusion[std::size_t(13 * kW)], 0.25f);
+    EXPECT_EQ(g.gbuffer->occlusion[std::size_t(5 * kW)], 1.0f);
+    RelightFrame const f = relightFrame(*g.gbuffer);
+    ASSERT_TRUE(f.frame) << f.error;
+    ASSERT_EQ(f.frame->emissiveAo.size(), g.gbuffer->pixelCount());
+    // Row 7 from the top is row kH - 1 - 7 from the bottom.
+    glm::vec4 const e = f.frame->emissiveAo[std::size_t((kH - 1 - 7) * kW + 5)];
+    EXPECT_EQ(glm::vec3(e), g.gbuffer->emissive[inPatch]);
+    EXPECT_EQ(e.a, 1.0f);
+    EXPECT_EQ(f.frame->emissiveAo[std::size_t((kH - 1 - 13) * kW)], glm::vec4(0.0f, 0.0f, 0.0f, 0.25f));
+
+    // Without the fields: nothing decoded, and no emissive/AO pixels in the frame (the pass then
+    // writes emission 0 and occlusion 1, the frame of before).
+    GBufferLoad const plain = loadGBuffer(*loadManifest(dir).manifest);
+    ASSERT_TRUE(plain.gbuffer) << plain.error;
+    EXPECT_TRUE(plain.gbuffer->emissive.empty());
+    EXPECT_TRUE(plain.gbuffer->occlusion.empty());
+    EXPECT_TRUE(relightFrame(*plain.gbuffer).frame->emissiveAo.empty());
+
+    auto refused = [&](std::string const& extra) {
+        ManifestLoad const bad = parseManifest(withFields(dir, extra), "m.json", dir);
+        EXPECT_TRUE(bad.manifest) << bad.error;
+        GBufferLoad const r = loadGBuffer(*bad.manifest);
+        EXPECT_FALSE(r.gbuffer);
+        return r.error;
+    };
+    std::string e1 = refused(R"(, "occlusion": {"file": "none.png"})");
+    EXPECT_EQ(e1.rfind("m.json: occlusion.file " + dir + "/none.png cannot be read", 0), 0u) << e1;
+    std::string e2 = refused(R"(, "occlusion": {"file": "emissive.png", "channel": "a"})");
+    EXPECT_EQ(e2.rfind("m.json: occlusion asks for channel a but", 0), 0u) << e2;
+    // The lit-frame sized 16x16 files against an 8x8 one.
+    {
+        auto out = OIIO::ImageOutput::create(dir + "/small.exr");
+        OIIO::ImageSpec spec(8, 8, 3, OIIO::TypeDesc::FLOAT);
+        std::vector<float> zeros(8 * 8 * 3, 0.0f);
+        ASSERT_TRUE(out->open(dir + "/small.exr", spec));
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, zeros.data()));
+        out->close();
+    }
+    std::string e3 = refused(R"(, "emissive": {"file": "small.exr"})");
+    EXPECT_EQ(e3.rfind("m.json: emissive.file " + dir + "/small.exr is 8x8 but position is 16x16", 0), 0u) << e3;
+    // Occlusion 4 (a distance or a count, not a visibility) and negative emission are no such values.
+    for (float& v : ao) v *= 4.0f;
+    writeExr(dir + "/ao4.exr", 1, ao);
+    std::string e4 = refused(R"(, "occlusion": {"file": "ao4.exr"})");
+    EXPECT_EQ(e4.rfind("m.json: occlusion holds values outside [0, 1] in " + dir + "/ao4.exr at " +
+                           std::to_string(12 * kW) + " pixels (e.g. 4)",
+                       0),
+              0u)
+        << e4;
+    for (float& v : em) v = -v;
+    writeExr(dir + "/negative.exr", 3, em);
+    std::string e5 = refused(R"(, "emissive": {"file": "negative.exr"})");
+    EXPECT_EQ(e5.rfind("m.json: emissive holds negative values in " + dir + "/negative.exr at 16 pixels", 0), 0u) << e5;
 }

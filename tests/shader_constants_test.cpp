@@ -171,7 +171,8 @@ TEST(ShaderConstants, GeneratedBindingsHeaderMatchesBindingsGlsl) {
                                          {"BIND_CLUSTER_LIST", slot::BIND_CLUSTER_LIST},
                                          {"BIND_IMPORT_POSITION_DEPTH", slot::BIND_IMPORT_POSITION_DEPTH},
                                          {"BIND_IMPORT_NORMAL", slot::BIND_IMPORT_NORMAL},
-                                         {"BIND_IMPORT_ALBEDO_SPEC", slot::BIND_IMPORT_ALBEDO_SPEC}};
+                                         {"BIND_IMPORT_ALBEDO_SPEC", slot::BIND_IMPORT_ALBEDO_SPEC},
+                                         {"BIND_IMPORT_EMISSIVE_AO", slot::BIND_IMPORT_EMISSIVE_AO}};
     EXPECT_EQ(all, cpp);
     // Each sampler uniform has exactly one unit, and the G-buffer samplers, the lights, every
     // texture the view pass reads and the combine pass's light targets are distinct (they are
@@ -193,6 +194,10 @@ TEST(ShaderConstants, GeneratedBindingsHeaderMatchesBindingsGlsl) {
                                 slot::BIND_MATERIAL_SPECULAR,   slot::BIND_MATERIAL_EMISSIVE,
                                 slot::BIND_MATERIAL_OCCLUSION,  slot::BIND_LIGHTS};
     EXPECT_EQ(forward.size(), 6u);
+    // The import pass binds its four textures together (passes/import.cpp).
+    std::set<int> const imported{slot::BIND_IMPORT_POSITION_DEPTH, slot::BIND_IMPORT_NORMAL,
+                                 slot::BIND_IMPORT_ALBEDO_SPEC, slot::BIND_IMPORT_EMISSIVE_AO};
+    EXPECT_EQ(imported.size(), 4u);
     // GL 3.3 guarantees 16 texture units per fragment stage.
     for (auto const& s : slot::kSamplerSlots) EXPECT_LT(s.unit, 16) << s.uniform;
 }

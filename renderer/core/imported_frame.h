@@ -17,6 +17,9 @@ struct ImportedFrame {
     std::vector<glm::vec4> positionDepth;  // xyz world position, w window depth in [0, 1); 1 = background
     std::vector<glm::vec4> normal;         // xyz unit world normal, w unused
     std::vector<glm::vec4> albedoSpec;     // rgb linear albedo, a specular intensity
+    // rgb emitted radiance (linear), a ambient occlusion; empty: emission 0 and occlusion 1 everywhere
+    // (kNoEmissiveAo), what a manifest without emissive and occlusion gives.
+    std::vector<glm::vec4> emissiveAo;
     // The camera the G-buffer was drawn with (OpenGL conventions: view space looks down -z).
     glm::mat4 view{1.0f};
     glm::mat4 projection{1.0f};

@@ -219,12 +219,15 @@ json presetJson(std::string const& name) {
           "normal": {"file": "normal.png", "channels": "rgb", "encoding": "biased", "space": "world"},
           "albedo": {"file": "colour.png", "channels": "rgb", "encoding": "linear"}})");
     // gbuffer-lab's own `render --out` folder (frame_export.h): decoded position (w = 1 where drawn)
-    // and normal, 8-bit albedo and specular, window-space depth, the lit HDR image.
+    // and normal, 8-bit albedo and specular, emission and occlusion decoded (emissive.exr: rgb and
+    // a; 0 and 1 from a layout that stores neither), window-space depth, the lit HDR image.
     return json::parse(R"({
       "position": {"file": "position.exr", "channels": "rgb", "space": "world", "coverage": "a"},
       "normal": {"file": "normal.exr", "channels": "rgb", "encoding": "float", "space": "world"},
       "albedo": {"file": "albedo.png", "channels": "rgb", "encoding": "linear"},
       "specular": {"file": "specular.png", "channel": "r"},
+      "emissive": {"file": "emissive.exr", "channels": "rgb", "encoding": "linear"},
+      "occlusion": {"file": "emissive.exr", "channel": "a"},
       "depth": {"file": "depth.exr", "channel": "r", "convention": "window"},
       "lit": {"file": "lighting.exr", "channels": "rgb"}})");
 }
@@ -257,7 +260,7 @@ GBufferManifest readManifest(json j, std::string const& dir) {
     }
     Object top(j, "",
                {"format", "version", "preset", "flip_y", "shininess", "shading", "position", "normal", "albedo",
-                "specular", "depth", "lit", "camera", "lights"});
+                "specular", "emissive", "occlusion", "depth", "lit", "camera", "lights"});
     Reader reader{dir};
     if (json const* f = top.optional("flip_y")) m.flipY = boolean(*f, "flip_y");
     if (json const* s = top.optional("shading"))
@@ -302,6 +305,19 @@ GBufferManifest readManifest(json j, std::string const& dir) {
     if (json const* s = top.optional("specular"); s && !s->is_null()) {
         Object o(*s, "specular", reader.withImageFields({"channel"}));
         m.specular = reader.image(o, "specular", "channel", "r");
+    }
+    if (json const* e = top.optional("emissive"); e && !e->is_null()) {
+        Object o(*e, "emissive", reader.withImageFields({"channels", "encoding", "scale"}));
+        EmissiveSpec s;
+        s.image = reader.image(o, "emissive", "channels", "rgb");
+        if (json const* c = o.optional("encoding"))
+            s.encoding = enumeration<ColorEncoding>(*c, o.field("encoding"), kColorEncodingNames);
+        if (json const* k = o.optional("scale")) s.scale = number(*k, o.field("scale"), Bound::NonNegative);
+        m.emissive = s;
+    }
+    if (json const* a = top.optional("occlusion"); a && !a->is_null()) {
+        Object o(*a, "occlusion", reader.withImageFields({"channel"}));
+        m.occlusion = reader.image(o, "occlusion", "channel", "r");
     }
     if (json const* l = top.optional("lit"); l && !l->is_null()) {
         Object o(*l, "lit", reader.withImageFields({"channels"}));

@@ -66,6 +66,14 @@ struct AlbedoSpec {
     ColorEncoding encoding = ColorEncoding::Linear;
 };
 
+// Emitted radiance (docs/lighting.md: added once, after the lights), stored linear or sRGB and
+// multiplied by `scale` after decoding (a program that stores emission / k in an 8-bit target gives k).
+struct EmissiveSpec {
+    ImageRef image;  // three channels
+    ColorEncoding encoding = ColorEncoding::Linear;
+    float scale = 1.0f;
+};
+
 struct DepthSpec {
     ImageRef image;  // one channel
     DepthConvention convention = DepthConvention::Window;
@@ -95,7 +103,9 @@ struct GBufferManifest {
     bool positionFromDepth = false;
     NormalSpec normal;
     std::optional<AlbedoSpec> albedo;
-    std::optional<ImageRef> specular;  // one channel
+    std::optional<ImageRef> specular;      // one channel
+    std::optional<EmissiveSpec> emissive;  // absent: emission 0
+    std::optional<ImageRef> occlusion;     // one channel, ambient occlusion in [0, 1]; absent: 1
     std::optional<DepthSpec> depth;
     std::optional<ImageRef> lit;  // the program's own lit output, rgb
     std::optional<CameraMatrices> camera;

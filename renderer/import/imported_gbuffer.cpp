@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -131,6 +132,31 @@ float srgbToLinear(float c) {
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
+// A sentence naming the field when finite values of `im` fall outside [lo, hi] (NaN and Inf are the
+// nan_inf check's), with a count and the worst value: "occlusion holds values outside [0, 1] in
+// FILE at 12 pixels (e.g. 37.2): is that channel ambient occlusion?".
+std::optional<std::string> outsideRange(ImportedImage const& im, float lo, float hi, std::string const& what,
+                                        std::string const& hint) {
+    std::size_t pixels = 0;
+    float worst = 0.0f;
+    std::size_t const n = im.values.size() / std::size_t(std::max(im.channels, 1));
+    for (std::size_t p = 0; p < n; ++p) {
+        bool bad = false;
+        for (int c = 0; c < im.channels; ++c) {
+            float const v = im.at(p, c);
+            if (!std::isfinite(v) || (v >= lo - 1e-6f && v <= hi + 1e-6f)) continue;
+            bad = true;
+            if (std::abs(v) > std::abs(worst)) worst = v;
+        }
+        pixels += bad;
+    }
+    if (pixels == 0) return std::nullopt;
+    std::ostringstream msg;
+    msg << what << " " << im.path << " at " << pixels << " pixel" << (pixels == 1 ? "" : "s") << " (e.g. " << worst
+        << "): " << hint;
+    return msg.str();
+}
+
 bool finite3(glm::vec3 v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
@@ -212,6 +238,8 @@ GBufferLoad loadGBuffer(GBufferManifest const& m) {
     refs.push_back(&m.normal.image);
     if (m.albedo) refs.push_back(&m.albedo->image);
     if (m.specular) refs.push_back(&*m.specular);
+    if (m.emissive) refs.push_back(&m.emissive->image);
+    if (m.occlusion) refs.push_back(&*m.occlusion);
     if (m.depth) refs.push_back(&m.depth->image);
     if (m.lit) refs.push_back(&*m.lit);
     std::map<std::string, FileImage> files;
@@ -358,6 +386,27 @@ GBufferLoad loadGBuffer(GBufferManifest const& m) {
         }
     }
     if (m.specular) g.specular = g.image("specular")->values;
+    if (m.emissive) {
+        ImportedImage const& e = *g.image("emissive");
+        g.emissive.resize(n);
+        for (std::size_t p = 0; p < n; ++p) {
+            glm::vec3 v(e.at(p, 0), e.at(p, 1), e.at(p, 2));
+            if (m.emissive->encoding == ColorEncoding::Srgb)
+                v = glm::vec3(srgbToLinear(v.x), srgbToLinear(v.y), srgbToLinear(v.z));
+            g.emissive[p] = v * m.emissive->scale;
+        }
+        if (auto err =
+                outsideRange(e, 0.0f, std::numeric_limits<float>::infinity(), "emissive holds negative values in",
+                             "emission only adds light (a signed or biased encoding?)"))
+            return refuse(*err);
+    }
+    if (m.occlusion) {
+        ImportedImage const& o = *g.image("occlusion");
+        g.occlusion = o.values;
+        if (auto err = outsideRange(o, 0.0f, 1.0f, "occlusion holds values outside [0, 1] in",
+                                    "is that channel ambient occlusion (1 = unoccluded)?"))
+            return refuse(*err);
+    }
     if (m.lit) {
         ImportedImage const& l = *g.image("lit");
         g.lit.resize(n);

@@ -35,13 +35,16 @@ struct ImportedGBuffer {
     int height = 0;
     GBufferManifest manifest;
     std::optional<CameraMatrices> camera;  // the manifest's, with its projection for this size
-    // The attachments as read, in manifest order (position, normal, albedo, specular, depth, lit).
+    // The attachments as read, in manifest order (position, normal, albedo, specular, emissive,
+    // occlusion, depth, lit).
     std::vector<ImportedImage> images;
     // Decoded per pixel (empty when the manifest has no such attachment):
     std::vector<glm::vec3> position;  // world space, stored or rebuilt from depth
     std::vector<glm::vec3> normal;    // world space, decoded, not renormalised
     std::vector<glm::vec3> albedo;    // linear
     std::vector<float> specular;      //
+    std::vector<glm::vec3> emissive;  // linear emitted radiance, times emissive.scale
+    std::vector<float> occlusion;     // ambient occlusion, [0, 1]
     std::vector<float> viewDistance;  // from depth: distance along -z in view space
     std::vector<glm::vec3> lit;       //
     // 1 where a background marker says nothing was drawn: depth at its clear value, a coverage
@@ -61,7 +64,7 @@ struct GBufferLoad {
 
 // Reads every image of the manifest and decodes it. Refused, with the field named: a missing or
 // unreadable file, a channel the file lacks, images of different sizes, a raw file of the wrong
-// length, depth values the declared convention cannot hold.
+// length, depth values the declared convention cannot hold, negative emission, occlusion outside [0, 1].
 GBufferLoad loadGBuffer(GBufferManifest const& manifest);
 
 // The world-space point behind pixel (x, y) at view distance `distance` (pixel centres, row 0 at

@@ -46,6 +46,8 @@ RelightFrame relightFrame(ImportedGBuffer const& g) {
     f.positionDepth.resize(n);
     f.normal.resize(n);
     f.albedoSpec.resize(n);
+    // Emission 0 and occlusion 1 where the manifest gives neither: today's frame exactly.
+    if (!g.emissive.empty() || !g.occlusion.empty()) f.emissiveAo.resize(n);
     for (int y = 0; y < g.height; ++y)
         for (int x = 0; x < g.width; ++x) {
             std::size_t const from = std::size_t(y) * std::size_t(g.width) + std::size_t(x);
@@ -62,6 +64,9 @@ RelightFrame relightFrame(ImportedGBuffer const& g) {
             f.positionDepth[to] = glm::vec4(pos, depth);
             f.normal[to] = glm::vec4(g.normal[from], 0.0f);
             f.albedoSpec[to] = glm::vec4(g.albedo[from], g.specular.empty() ? 0.0f : g.specular[from]);
+            if (!f.emissiveAo.empty())
+                f.emissiveAo[to] = glm::vec4(g.emissive.empty() ? glm::vec3(0.0f) : g.emissive[from],
+                                             g.occlusion.empty() ? 1.0f : g.occlusion[from]);
         }
     out.frame = std::move(f);
     return out;

@@ -1,6 +1,6 @@
 // An imported G-buffer as the renderer re-lights it (core/imported_frame.h): world position with the
-// window depth through the manifest's camera, normal, albedo and specular, rows turned bottom-up for
-// GL. No GL here: Renderer::setImportedGBuffer uploads the result.
+// window depth through the manifest's camera, normal, albedo and specular, emission and occlusion,
+// rows turned bottom-up for GL. No GL here: Renderer::setImportedGBuffer uploads the result.
 #pragma once
 
 #include "core/camera.h"
@@ -18,8 +18,9 @@ struct RelightFrame {
 };
 
 // Refused, naming the field: no camera (the lighting needs the eye and the matrices), no albedo.
-// A manifest without specular re-lights with specular 0. Background and NaN/Inf pixels get depth 1,
-// which the import pass leaves at the clear values.
+// A manifest without specular re-lights with specular 0; without emissive, with emission 0; without
+// occlusion, with occlusion 1 (emissiveAo stays empty when it has neither). Background and NaN/Inf
+// pixels get depth 1, which the import pass leaves at the clear values.
 RelightFrame relightFrame(ImportedGBuffer const& g);
 
 // The editor's (fixed) camera for the frame: view() and projection() are the frame's matrices as

@@ -18,6 +18,7 @@ struct ImportedTextures {
     gl::Texture positionDepth;  // RGBA32F: world position, window depth (1: background)
     gl::Texture normal;         // RGBA32F: world normal
     gl::Texture albedoSpec;     // RGBA32F: linear albedo, specular intensity
+    gl::Texture emissiveAo;     // RGBA32F: linear emitted radiance, ambient occlusion
     ImportedFrame camera;       // the frame's camera fields (its pixel vectors left empty)
 };
 
@@ -35,7 +36,7 @@ struct ImportConfig {
     int height = 0;
 };
 struct ImportOutput {
-    GBuffer const& gbuffer;  // position (or depth), normal, albedo/specular of the imported frame
+    GBuffer const& gbuffer;  // position (or depth), normal, albedo/specular, emissive/AO of the imported frame
 };
 
 ImportOutput importPass(ImportInput const& in, ImportConfig const& config);

@@ -50,6 +50,11 @@ extern "C" int LLVMFuzzerTestOneInput(std::uint8_t const* data, std::size_t size
     checkImage(m.normal.image);
     if (m.albedo) checkImage(m.albedo->image);
     if (m.specular) checkImage(*m.specular);
+    if (m.emissive) {
+        checkImage(m.emissive->image);
+        check(std::isfinite(m.emissive->scale) && m.emissive->scale >= 0.0f);
+    }
+    if (m.occlusion) checkImage(*m.occlusion);
     if (m.lit) checkImage(*m.lit);
     if (m.depth) {
         checkImage(m.depth->image);

@@ -69,11 +69,13 @@
  *
  * MANIFEST
  *   dir/manifest.json follows docs/import.md (format "gbuffer-lab-gbuffer", version 1): the files and
- *   channels of the position, normal, albedo and specular roles named in the options, depth (window
+ *   channels of the position, normal, albedo, specular, emissive and occlusion roles named in the
+ *   options (the last two optional: the reader takes emission 0 and occlusion 1), depth (window
  *   convention, [0, 1]), the camera and the lights when given. Position is "from_depth" when no
  *   attachment holds it but depth and the camera are given. Depth needs near and far: without a camera
  *   the depth file is written but left out of the manifest. An albedo attachment with sRGB storage is
- *   marked "encoding": "srgb". Attachments with no role are written but not named in the manifest.
+ *   marked "encoding": "srgb", and so is an emissive one. Attachments with no role are written but not
+ *   named in the manifest.
  *   The manifest is a skeleton: edit it when a role or space differs (docs/import.md lists the fields).
  */
 #ifndef GBL_DUMP_H
@@ -147,6 +149,11 @@ typedef struct gbl_dump_options {
     const char* shading;           /* "learnopengl", "gbuffer-lab" or NULL (the reader's default) */
     const gbl_dump_camera* camera; /* NULL: none */
     const gbl_dump_lights* lights; /* NULL: none */
+    /* Optional roles (an index below color_count, or -1; gbl_dump_options_defaults sets -1): without
+     * them the reader takes emission 0 and occlusion 1. */
+    int emissive;          /* its r, g, b: emitted radiance, linear (or sRGB storage, marked so) */
+    int occlusion;         /* ambient occlusion, 1 = unoccluded */
+    int occlusion_channel; /* 0 .. 3: r, g, b or a of the occlusion attachment */
 } gbl_dump_options;
 
 GBL_DUMP_DEF void gbl_dump_options_defaults(gbl_dump_options* o);
@@ -408,6 +415,16 @@ static int gbl_dump_write_manifest_(gbl_dump_ctx_* c, const char* dir, const gbl
         gbl_dump_json_image_(f, &att[o->specular], "channel", o->specular_channel, 1);
         fputc('}', f);
     }
+    if (o->emissive >= 0) {
+        fputs(",\n  \"emissive\": {", f);
+        gbl_dump_json_image_(f, &att[o->emissive], "channels", 0, 3);
+        fprintf(f, ", \"encoding\": \"%s\"}", att[o->emissive].srgb ? "srgb" : "linear");
+    }
+    if (o->occlusion >= 0) {
+        fputs(",\n  \"occlusion\": {", f);
+        gbl_dump_json_image_(f, &att[o->occlusion], "channel", o->occlusion_channel, 1);
+        fputc('}', f);
+    }
     if (*depth_listed) {
         fputs(",\n  \"depth\": {\"file\": \"depth.pfm\", \"channel\": \"r\", \"convention\": \"window\"", f);
         if (has_near_far) {
@@ -482,8 +499,8 @@ static int gbl_dump_one_of_(const char* s, const char* a, const char* b, const c
 static int gbl_dump_check_options_(gbl_dump_ctx_* c, const gbl_dump_options* o, int width, int height,
                                    const char* dir) {
     int i, j;
-    const int roles[4] = {o->position, o->normal, o->albedo, o->specular};
-    static const char* const role_names[4] = {"position", "normal", "albedo", "specular"};
+    const int roles[6] = {o->position, o->normal, o->albedo, o->specular, o->emissive, o->occlusion};
+    static const char* const role_names[6] = {"position", "normal", "albedo", "specular", "emissive", "occlusion"};
     if (!dir || !*dir) return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: dir must name an existing folder");
     if (width <= 0 || height <= 0 || width > 65536 || height > 65536)
         return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: width and height must be 1 to 65536 (got %dx%d)",
@@ -491,7 +508,7 @@ static int gbl_dump_check_options_(gbl_dump_ctx_* c, const gbl_dump_options* o, 
     if (o->color_count < 1 || o->color_count > GBL_DUMP_MAX_COLOR)
         return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: options.color_count must be 1 to %d (got %d)",
                              GBL_DUMP_MAX_COLOR, o->color_count);
-    for (i = 0; i < 4; ++i)
+    for (i = 0; i < 6; ++i)
         if (roles[i] < -1 || roles[i] >= o->color_count)
             return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
                                  "gbl_dump: options.%s must be -1 or a colour attachment below color_count %d (got %d)",
@@ -507,6 +524,9 @@ static int gbl_dump_check_options_(gbl_dump_ctx_* c, const gbl_dump_options* o, 
     if (o->specular >= 0 && (o->specular_channel < 0 || o->specular_channel > 3))
         return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: options.specular_channel must be 0 to 3 (got %d)",
                              o->specular_channel);
+    if (o->occlusion >= 0 && (o->occlusion_channel < 0 || o->occlusion_channel > 3))
+        return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT, "gbl_dump: options.occlusion_channel must be 0 to 3 (got %d)",
+                             o->occlusion_channel);
     if (!gbl_dump_one_of_(o->position_space, "world", "view", NULL) ||
         !gbl_dump_one_of_(o->normal_space, "world", "view", NULL))
         return gbl_dump_say_(c, GBL_DUMP_BAD_ARGUMENT,
@@ -729,10 +749,11 @@ static int gbl_dump_framebuffer_(gbl_dump_ctx_* c, GLuint framebuffer, int width
                                  "gbl_dump: framebuffer %u has no depth attachment (set options.depth to 0)",
                                  (unsigned)framebuffer);
     }
-    for (i = 0; i < 4; ++i) {
-        const int role[4] = {o->position, o->normal, o->albedo, o->specular};
-        static const char* const names[4] = {"position", "normal", "albedo", "specular"};
-        int need = i == 3 ? o->specular_channel + 1
+    for (i = 0; i < 6; ++i) {
+        const int role[6] = {o->position, o->normal, o->albedo, o->specular, o->emissive, o->occlusion};
+        static const char* const names[6] = {"position", "normal", "albedo", "specular", "emissive", "occlusion"};
+        int need = i == 3   ? o->specular_channel + 1
+                   : i == 5 ? o->occlusion_channel + 1
                    : (i == 1 && o->normal_encoding && strcmp(o->normal_encoding, "octahedral") == 0) ? 2
                                                                                                      : 3;
         if (role[i] >= 0 && att[role[i]].channels < need)
@@ -765,6 +786,7 @@ GBL_DUMP_DEF void gbl_dump_options_defaults(gbl_dump_options* o) {
     memset(o, 0, sizeof *o);
     o->color_count = 1;
     o->position = o->normal = o->albedo = o->specular = -1;
+    o->emissive = o->occlusion = -1;
 }
 
 GBL_DUMP_DEF void gbl_dump_options_learnopengl(gbl_dump_options* o) {
