@@ -100,7 +100,9 @@ struct LessonClaim {
     std::optional<PipelineSettings> reference;  // loses_light, same_image, fewer_lit_pixels, differs_from
     float tolerance = 0.0f;                     // matches_cpu, loses_light, attachment_equals (relative + absolute)
     float bound = 0.0f;                         // position_error_below, same_image and differs_from (abs difference)
-    float minFraction = 0.0f;                   // fewer_lit_pixels, differs_from
+    float atLeast = 0.0f;      // position_error_below (optional): the largest error is at least this (a range)
+    bool most = false;         // tile_count_matches_cpu (optional): the pixel's tile lists the most lights of the frame
+    float minFraction = 0.0f;  // fewer_lit_pixels, differs_from
     int reached = -1;  // matches_cpu (optional): how many lights add a visible amount at the pixel; -1 = unchecked
     Attachment attachment = Attachment::Normal;  // attachment_equals
     glm::vec4 value{0.0f};                       // attachment_equals

@@ -129,10 +129,15 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
             break;
         case ClaimKind::PositionError:
             claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
+            claim.atLeast = optionalNumber("at_least", 0.0f, 0.0f, claim.bound);
             break;
         case ClaimKind::TileCountMatchesCpu:
             if (step.state.pipeline.mode != LightingMode::Tiled || step.state.pipeline.view != DebugView::TileLights)
                 fail(path + ".kind", "needs pipeline.mode \"tiled\" and pipeline.view \"tile_lights\"");
+            if (auto it = c.find("most"); it != c.end()) {
+                if (!it->is_boolean()) fail(path + ".most", "must be true or false");
+                claim.most = it->get<bool>();
+            }
             break;
         case ClaimKind::ExecutedExceedsLit:
             if (step.state.pipeline.view != DebugView::Heatmap) fail(path + ".kind", "needs pipeline.view \"heatmap\"");
