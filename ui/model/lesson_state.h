@@ -31,6 +31,13 @@ struct LessonAb {
     std::vector<bool> overrides;  // one per abFields() row
 };
 
+// The viewport's light-by-light scrubber the step opens: the frame lit by lights 0..light, or, with
+// `only`, that light's own term (the scrubber's "only k", k = light + 1).
+struct LessonLightByLight {
+    int light = 0;
+    bool only = false;
+};
+
 struct LessonSnapshot {
     Camera camera;
     std::vector<PointLight> lights;
@@ -44,6 +51,8 @@ struct LessonSnapshot {
     std::optional<glm::vec2> pixel;
     // The A/B split or diff the step opens; nullopt turns A/B off.
     std::optional<LessonAb> ab;
+    // The light-by-light scrubber the step opens; nullopt turns it off.
+    std::optional<LessonLightByLight> lightByLight;
     // Only for returning from a lesson: the inspector as it was.
     bool inspectorLocked = false;
     std::optional<glm::ivec2> inspectorPixel;

@@ -216,4 +216,19 @@ LessonAb readAb(json const& j, std::string const& path, PipelineSettings const& 
     return ab;
 }
 
+// "light_by_light": {"light": I, "only": BOOL}: the scrubber the step opens, at light I.
+LessonLightByLight readLightByLight(json const& j, std::string const& path, int lightCount) {
+    if (!j.is_object()) fail(path, "must be an object: {\"light\": INDEX, \"only\": true}");
+    knownFields(j, path, {"light", "only"});
+    auto const light = j.find("light");
+    if (light == j.end()) fail(path + ".light", "is missing (the index of the light the scrubber stops at)");
+    LessonLightByLight out;
+    out.light = integer(*light, path + ".light", 0, lightCount - 1);
+    if (auto it = j.find("only"); it != j.end()) {
+        if (!it->is_boolean()) fail(path + ".only", "must be true or false");
+        out.only = it->get<bool>();
+    }
+    return out;
+}
+
 }  // namespace gbl::ui::lesson_fields
