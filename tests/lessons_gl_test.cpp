@@ -209,6 +209,21 @@ TEST_F(LessonsGlTest, PositionErrorFailsBelowTheFloatPrecision) {
     EXPECT_FALSE(f.claim->holds) << f.claim->detail;
 }
 
+// at_least makes the claim a range: the shipped step's largest error (about 0.019, position_from_depth:4's
+// text) fails a floor just above it, and the step's own floor is below it.
+TEST_F(LessonsGlTest, PositionErrorFailsAboveTheLargestError) {
+    ui::Lesson const& l = lesson("position_from_depth");
+    ui::LessonStep const& step = l.steps[3];
+    ASSERT_GT(step.claim->atLeast, 0.0f) << "position_from_depth:4 states its largest error";
+    auto const good = render(l, step);
+    ASSERT_TRUE(good.claim->holds) << good.claim->detail;
+    auto const f = render(l, withClaim(step, [](ui::LessonClaim& c) {
+                              c.atLeast = 0.022f;
+                              c.bound = 1.0f;
+                          }));
+    EXPECT_FALSE(f.claim->holds) << f.claim->detail;
+}
+
 TEST_F(LessonsGlTest, AttachmentEqualsFailsForAnotherNormal) {
     ui::Lesson const& l = lesson("gbuffer");
     auto const f = render(l, withClaim(l.steps[2], [](ui::LessonClaim& c) { c.value = {1.0f, 0.0f, 0.0f, 0.0f}; }));
@@ -234,6 +249,16 @@ TEST_F(LessonsGlTest, TileCountFailsWhenTheCpuSeesOtherLights) {
     auto const bad =
         ui::checkClaim(*full.claim, {full.state.camera, full.state.lights, full.state.pipeline, good.pixel}, im);
     EXPECT_FALSE(bad.holds) << bad.detail;
+}
+
+// most: tiled:3's tile lists the most lights of the frame; step 2's floor tile, with the same claim, does not.
+TEST_F(LessonsGlTest, TileCountMostFailsOnAFloorTile) {
+    if (!caps().computeShaders) GTEST_SKIP() << caps().tiledUnavailableReason();
+    ui::Lesson const& l = lesson("tiled");
+    ASSERT_TRUE(l.steps[2].claim->most) << "tiled:3 says its tile lists the most";
+    ui::LessonStep step = l.steps[1];
+    auto const f = render(l, withClaim(step, [](ui::LessonClaim& c) { c.most = true; }));
+    EXPECT_FALSE(f.claim->holds) << f.claim->detail;
 }
 
 TEST_F(LessonsGlTest, ExecutedExceedsLitFailsWithOneLightThatReachesThePixel) {

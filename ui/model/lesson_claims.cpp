@@ -162,21 +162,33 @@ ClaimResult positionError(LessonClaim const& c, ClaimFrame const& f, ClaimImages
                 at = {x, y};
             }
         }
-    ClaimResult out{covered > 0 && worst < c.bound, "largest |stored - rebuilt| " + lessonNumber(worst) +
-                                                        " at pixel (" + std::to_string(at.x) + ", " +
-                                                        std::to_string(at.y) + ") over " + std::to_string(covered) +
-                                                        " pixels, bound " + lessonNumber(c.bound)};
+    ClaimResult out{covered > 0 && worst < c.bound && worst >= c.atLeast,
+                    "largest |stored - rebuilt| " + lessonNumber(worst) + " at pixel (" + std::to_string(at.x) + ", " +
+                        std::to_string(at.y) + ") over " + std::to_string(covered) + " pixels, bound " +
+                        (c.atLeast > 0.0f ? lessonNumber(c.atLeast) + " .. " : std::string()) + lessonNumber(c.bound)};
     if (covered > 0) out.worst = at;
     return out;
 }
 
-ClaimResult tileCount(LessonClaim const&, ClaimFrame const& f, ClaimImages const& im) {
+ClaimResult tileCount(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
     if (im.coverage.channels < 1 || !inside(im.coverage, f.pixel))
         return {false, "no coverage image (show tile_lights)"};
     int const gpu = int(im.coverage.at(f.pixel.x, f.pixel.y, 0));
     int const cpu = cpuTileLightCount(im, f, f.pixel);
-    return {gpu == cpu && cpu > 0,
-            "the tile lists " + std::to_string(gpu) + " lights; the CPU tile test " + std::to_string(cpu)};
+    std::string detail = "the tile lists " + std::to_string(gpu) + " lights; the CPU tile test " + std::to_string(cpu);
+    if (!c.most) return {gpu == cpu && cpu > 0, detail};
+    // most: no tile of the frame lists more (every pixel of a tile holds its tile's count).
+    int most = 0;
+    glm::ivec2 at{0};
+    for (int y = 0; y < im.coverage.height; ++y)
+        for (int x = 0; x < im.coverage.width; ++x)
+            if (int const n = int(im.coverage.at(x, y, 0)); n > most) {
+                most = n;
+                at = {x, y};
+            }
+    detail += "; the most of any tile " + std::to_string(most) + " (at pixel (" + std::to_string(at.x) + ", " +
+              std::to_string(at.y) + "))";
+    return {gpu == cpu && cpu > 0 && gpu >= most, detail};
 }
 
 ClaimResult executedExceedsLit(LessonClaim const&, ClaimFrame const& f, ClaimImages const& im) {
@@ -266,6 +278,8 @@ constexpr std::array<std::string_view, 1> kImageOptional{"image"};
 constexpr std::array<std::string_view, 3> kDiffersFromFields{"reference", "bound", "min_fraction"};
 constexpr std::array<std::string_view, 2> kFewerLitFields{"reference", "min_fraction"};
 constexpr std::array<std::string_view, 1> kBoundFields{"bound"};
+constexpr std::array<std::string_view, 1> kAtLeastOptional{"at_least"};
+constexpr std::array<std::string_view, 1> kMostOptional{"most"};
 constexpr std::array<std::string_view, 2> kAttachmentFields{"attachment", "value"};
 
 // kind, name, fields, optional fields, about the step's pixel, needs a reference frame, check, doc.
@@ -291,22 +305,18 @@ std::array<ClaimKindInfo, 9> const kClaimKinds{{
      true,
      fewerLitPixels,
      "at least `min_fraction` of the reference's lit pixels are dark in the step"},
-    {ClaimKind::PositionError,
-     "position_error_below",
-     kBoundFields,
-     {},
-     false,
-     false,
-     positionError,
-     "on every covered pixel the stored position and the one rebuilt from depth differ by less than `bound`"},
+    {ClaimKind::PositionError, "position_error_below", kBoundFields, kAtLeastOptional, false, false, positionError,
+     "on every covered pixel the stored position and the one rebuilt from depth differ by less than `bound`; with "
+     "`at_least`, the largest error is at least that (so a step's text can say how large it is)"},
     {ClaimKind::TileCountMatchesCpu,
      "tile_count_matches_cpu",
      {},
-     {},
+     kMostOptional,
      true,
      false,
      tileCount,
-     "the lights the tile of `pixel` lists equal the CPU tile test, and are more than 0"},
+     "the lights the tile of `pixel` lists equal the CPU tile test, and are more than 0; with `most`, no tile of "
+     "the frame lists more"},
     {ClaimKind::ExecutedExceedsLit,
      "executed_exceeds_lit",
      {},

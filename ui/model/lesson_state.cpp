@@ -49,6 +49,11 @@ void applyLessonSnapshot(LessonSnapshot const& s, EditorState& state, glm::ivec2
     } else {
         state.ab.enabled = false;
     }
+    state.accumulate.enabled = s.lightByLight.has_value();
+    if (s.lightByLight) {
+        state.accumulate.count = std::clamp(s.lightByLight->light + 1, 0, int(s.lights.size()));
+        state.accumulate.contribution = s.lightByLight->only;
+    }
     state.lightsPanel.selected = s.selectedLight < int(s.lights.size()) ? s.selectedLight : -1;
     state.lightsPanel.message.clear();
     state.gbuffer.activeViewer = std::clamp(s.activeViewer, 0, int(state.gbuffer.viewers.size()) - 1);

@@ -31,6 +31,13 @@ struct LessonAb {
     std::vector<bool> overrides;  // one per abFields() row
 };
 
+// The viewport's light-by-light scrubber the step opens: the frame lit by lights 0..light, or, with
+// `only`, that light's own term (the scrubber's "only k", k = light + 1).
+struct LessonLightByLight {
+    int light = 0;
+    bool only = false;
+};
+
 struct LessonSnapshot {
     Camera camera;
     std::vector<PointLight> lights;
@@ -44,6 +51,8 @@ struct LessonSnapshot {
     std::optional<glm::vec2> pixel;
     // The A/B split or diff the step opens; nullopt turns A/B off.
     std::optional<LessonAb> ab;
+    // The light-by-light scrubber the step opens; nullopt turns it off.
+    std::optional<LessonLightByLight> lightByLight;
     // Only for returning from a lesson: the inspector as it was.
     bool inspectorLocked = false;
     std::optional<glm::ivec2> inspectorPixel;
@@ -100,7 +109,9 @@ struct LessonClaim {
     std::optional<PipelineSettings> reference;  // loses_light, same_image, fewer_lit_pixels, differs_from
     float tolerance = 0.0f;                     // matches_cpu, loses_light, attachment_equals (relative + absolute)
     float bound = 0.0f;                         // position_error_below, same_image and differs_from (abs difference)
-    float minFraction = 0.0f;                   // fewer_lit_pixels, differs_from
+    float atLeast = 0.0f;      // position_error_below (optional): the largest error is at least this (a range)
+    bool most = false;         // tile_count_matches_cpu (optional): the pixel's tile lists the most lights of the frame
+    float minFraction = 0.0f;  // fewer_lit_pixels, differs_from
     int reached = -1;  // matches_cpu (optional): how many lights add a visible amount at the pixel; -1 = unchecked
     Attachment attachment = Attachment::Normal;  // attachment_equals
     glm::vec4 value{0.0f};                       // attachment_equals

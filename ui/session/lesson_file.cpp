@@ -250,7 +250,7 @@ LessonStep readStep(json const& j, std::string const& path, json const& setup, s
                     glm::ivec2 lessonSize, bool gltfScene) {
     knownFields(j, path,
                 {"title", "look", "equation", "question", "answer", "predict", "tasks", "scene", "lights", "camera",
-                 "pipeline", "viewers", "selected_light", "viewer", "pixel", "claim", "ab"});
+                 "pipeline", "viewers", "selected_light", "viewer", "pixel", "claim", "ab", "light_by_light"});
     LessonStep step;
     step.text.title = text(j, "title", path);
     step.text.look = text(j, "look", path);
@@ -274,6 +274,8 @@ LessonStep readStep(json const& j, std::string const& path, json const& setup, s
     }
     step.state = snapshotOf(state, path, &step.defaultSceneLights);
     if (auto it = j.find("ab"); it != j.end()) step.state.ab = readAb(*it, path + ".ab", step.state.pipeline);
+    if (auto it = j.find("light_by_light"); it != j.end())
+        step.state.lightByLight = readLightByLight(*it, path + ".light_by_light", int(step.state.lights.size()));
     if (auto it = j.find("claim"); it != j.end()) step.claim = readClaim(*it, path + ".claim", state, step);
     if (auto it = j.find("predict"); it != j.end()) step.predict = readPrediction(*it, path + ".predict", state);
     if (auto it = j.find("tasks"); it != j.end()) {

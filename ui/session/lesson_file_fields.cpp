@@ -129,10 +129,15 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
             break;
         case ClaimKind::PositionError:
             claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
+            claim.atLeast = optionalNumber("at_least", 0.0f, 0.0f, claim.bound);
             break;
         case ClaimKind::TileCountMatchesCpu:
             if (step.state.pipeline.mode != LightingMode::Tiled || step.state.pipeline.view != DebugView::TileLights)
                 fail(path + ".kind", "needs pipeline.mode \"tiled\" and pipeline.view \"tile_lights\"");
+            if (auto it = c.find("most"); it != c.end()) {
+                if (!it->is_boolean()) fail(path + ".most", "must be true or false");
+                claim.most = it->get<bool>();
+            }
             break;
         case ClaimKind::ExecutedExceedsLit:
             if (step.state.pipeline.view != DebugView::Heatmap) fail(path + ".kind", "needs pipeline.view \"heatmap\"");
@@ -209,6 +214,21 @@ LessonAb readAb(json const& j, std::string const& path, PipelineSettings const& 
     ab.b = scratch.b;
     ab.overrides = scratch.overrides;
     return ab;
+}
+
+// "light_by_light": {"light": I, "only": BOOL}: the scrubber the step opens, at light I.
+LessonLightByLight readLightByLight(json const& j, std::string const& path, int lightCount) {
+    if (!j.is_object()) fail(path, "must be an object: {\"light\": INDEX, \"only\": true}");
+    knownFields(j, path, {"light", "only"});
+    auto const light = j.find("light");
+    if (light == j.end()) fail(path + ".light", "is missing (the index of the light the scrubber stops at)");
+    LessonLightByLight out;
+    out.light = integer(*light, path + ".light", 0, lightCount - 1);
+    if (auto it = j.find("only"); it != j.end()) {
+        if (!it->is_boolean()) fail(path + ".only", "must be true or false");
+        out.only = it->get<bool>();
+    }
+    return out;
 }
 
 }  // namespace gbl::ui::lesson_fields

@@ -41,5 +41,7 @@ Session readState(json const& state, std::string const& path, glm::vec3* lookAt,
 LessonClaim readClaim(json const& c, std::string const& path, json const& state, LessonStep const& step);
 // "ab": {"view", "b"}: the A/B comparison the step opens, B being `a` with the named fields changed.
 LessonAb readAb(json const& j, std::string const& path, PipelineSettings const& a);
+// "light_by_light": {"light", "only"}: the light-by-light scrubber the step opens.
+LessonLightByLight readLightByLight(json const& j, std::string const& path, int lightCount);
 
 }  // namespace gbl::ui::lesson_fields
