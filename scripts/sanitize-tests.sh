@@ -61,6 +61,8 @@ set_list=""
 targets=()
 if [[ "$all" == 0 ]]; then
     set_list="gbuffer-lab"
+    # ui_gbuffer's drag-and-drop program, where tests/CMakeLists.txt builds it (X11's headers installed).
+    if [[ -f /usr/include/X11/Xlib.h ]]; then set_list+=";xdnd_drop"; fi
     for name in "${asan_gl_binaries[@]}"; do set_list+=";$name"; done
     for f in "$root"/tests/*_test.cpp; do
         name=$(basename "$f" .cpp)

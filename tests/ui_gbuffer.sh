@@ -10,6 +10,9 @@
 #  2b. A manifest that reads the export's albedo as biased normals: findings; real clicks on the
 #     viewport's Checks button and its first finding mark that finding, a second click unmarks it.
 #  2c. File > Open G-buffer... with real clicks, the folder's path typed and Enter: it is shown.
+#  2d. A real X drag-and-drop (tests/support/xdnd_drop, XDND as a file manager does it) of a manifest
+#      in a folder with a space in its name, then of the export's folder: each is shown in the
+#      viewport and the viewers at its own size.
 #  3. `--gbuffer` of a bad manifest: exit code 2 and one sentence.
 # usage: ui_gbuffer.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
 set -eu
@@ -181,6 +184,60 @@ wait_frames 4
 [ "$(field frameSize)" = "[480,270]" ] || fail "the G-buffer opened from the menu is $(field frameSize), not 480x270"
 shot menu_opened
 ui_quit "Ctrl+Q did not quit the editor after File > Open G-buffer"
+
+# --- 2d. A real drag-and-drop: tests/support/xdnd_drop.c drags as a file manager does (XDND), so the
+# drop comes through X and GLFW's own handling of it rather than the UI script's drop-files. A manifest
+# (preset gbuffer-lab) of a square export, in a folder with a space in its name (the URI carries it as
+# %20), dropped on the viewport opens it; then the 480x270 export's folder: the viewport and all five
+# viewers take each G-buffer's own size.
+xdnd="${GBL_XDND_DROP:-}"
+if [ -z "$xdnd" ]; then
+    echo "$ui_name: part 2d skipped: no xdnd_drop (tests/CMakeLists.txt builds it where X11's headers are)"
+else
+    [ -x "$xdnd" ] || fail "xdnd_drop is not built at $xdnd (make xdnd_drop)"
+    "$bin" render --out "$work/drop here" --size 320x320 --lights 6 >> "$work/render.log" 2>&1 ||
+        fail "render --out into a folder with a space in its name failed"
+    # The preset names the folder's files; the camera (render's default view) and lights are the manifest's.
+    printf '%s\n' '{"format": "gbuffer-lab-gbuffer", "version": 1, "preset": "gbuffer-lab",' \
+        ' "camera": {"position": [0, 5, 11.5], "target": [0, 4.716, 10.541], "fov_y_degrees": 60, "near": 0.1, "far": 200},' \
+        ' "lights": {"positions": [[0, 2, 0], [-4, 2, 3], [4, 2, 3]], "colors": [[1, 1, 1], [1, 0.3, 0.2], [0.2, 0.4, 1]],' \
+        '            "linear": 0.14, "quadratic": 0.07}}' > "$work/drop here/manifest.json"
+    # drag_drop PATH: a real drag of PATH onto the viewport's centre, which the editor's window must take.
+    drag_drop() {
+        eval "$(xdotool getwindowgeometry --shell "$wid")"
+        at=$(rect_point viewport 0.5 0.5 | awk -v x="$X" -v y="$Y" '{ print $1 + x, $2 + y }')
+        # $at unquoted: "X Y" is two arguments. Its output goes to .out: a crash report names the newest .log.
+        "$xdnd" --timeout 60 $at "$1" > "$work/xdnd.out" 2>&1 ||
+            fail "the drag of $1 to $at failed: $(cat "$work/xdnd.out")"
+        grep -qF "($wid)" "$work/xdnd.out" || fail "the drop did not reach the editor's window $wid: $(cat "$work/xdnd.out")"
+    }
+    # shows PATH W H: the frame log names G-buffer PATH (within 200 frames of the drop) at WxH, and the
+    # five viewers each draw a W:H image (a viewer fits the frame's own size into its cell).
+    shows() {
+        tries=0
+        until [ "$(field gbuffer)" = "\"$1\"" ]; do
+            tries=$((tries + 1))
+            [ "$tries" -le 200 ] || fail "after the drop of $1 the frame log names G-buffer $(field gbuffer)"
+            wait_frames 1
+        done
+        wait_frames 4
+        [ "$(field frameSize)" = "[$2,$3]" ] || fail "the dropped $1 is shown at $(field frameSize), not $2x$3"
+        grep -qF "G-buffer $1: $2x$3" "$work/drop.log" || fail "the editor did not log opening $1 at $2x$3"
+        viewers=$(field viewerImages | tr -d '[]' | tr ',' '\n' | paste -d' ' - - - - |
+            awk -v w="$2" -v h="$3" '$3 > 20 && $4 > 20 && ($3 * h / ($4 * w) - 1) ^ 2 < 1e-4 { n++ } END { print n + 0 }')
+        [ "$viewers" = 5 ] || fail "$viewers of the 5 viewers show a $2:$3 image: $(field viewerImages)"
+    }
+    ui_start drop --size 1280x720 --frame-sleep-ms 20
+    [ "$(field gbuffer)" = '""' ] || fail "the editor started with G-buffer $(field gbuffer) shown"
+    [ "$(field frameSize)" != "[320,320]" ] || fail "the scene's frame is square already: the square drop would prove nothing"
+    drag_drop "$work/drop here/manifest.json"
+    shows "$work/drop here/manifest.json" 320 320
+    shot drop_manifest
+    drag_drop "$work/export"
+    shows "$work/export" 480 270
+    shot drop_folder
+    ui_quit "Ctrl+Q did not quit the editor after the drops"
+fi
 
 # --- 3. --gbuffer of a bad manifest: one sentence, exit code 2 --------------------------------
 set +e
