@@ -25,6 +25,19 @@ TEST(CheckCommand, OwnRenderFolderHasNoFindings) {
     EXPECT_NE(t.output.find("a highlight of shininess"), std::string::npos) << t.output;
 }
 
+// Every layout's export: what a layout rounds away (8-bit normals, packed's dropped emission) is within
+// the precision the folder states, so no check mistakes it for a bug.
+TEST(CheckCommand, EveryLayoutsRenderFolderHasNoFindings) {
+    for (char const* layout : {"classic", "packed", "naive8", "rgb10a2"}) {
+        std::string const out = gbl::test::freshTempDir(std::string("check_layout_") + layout);
+        auto const r = runGbufferLab({"render", "--out", out, "--size", "160x90", "--lights", "8", "--layout", layout});
+        ASSERT_EQ(r.exitCode, 0) << layout << ": " << r.output;
+        auto const c = runGbufferLab({"check", out, "--json"});
+        EXPECT_EQ(c.exitCode, 0) << layout << ": " << c.output;
+        EXPECT_NE(c.output.find("\"findings\": []"), std::string::npos) << layout << ": " << c.output;
+    }
+}
+
 TEST(CheckCommand, BadManifestIsRefusedNamingTheField) {
     std::string const dir = gbl::test::freshTempDir("check_bad");
     std::ofstream(dir + "/manifest.json")

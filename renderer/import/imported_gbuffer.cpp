@@ -132,6 +132,17 @@ float srgbToLinear(float c) {
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
+// An image's first three channels per pixel as linear colour: sRGB decoded when so declared, then scaled.
+std::vector<glm::vec3> linearRgb(ImportedImage const& im, std::size_t pixels, ColorEncoding encoding, float scale) {
+    std::vector<glm::vec3> out(pixels);
+    for (std::size_t p = 0; p < pixels; ++p) {
+        glm::vec3 v(im.at(p, 0), im.at(p, 1), im.at(p, 2));
+        if (encoding == ColorEncoding::Srgb) v = glm::vec3(srgbToLinear(v.x), srgbToLinear(v.y), srgbToLinear(v.z));
+        out[p] = v * scale;
+    }
+    return out;
+}
+
 // A sentence naming the field when finite values of `im` fall outside [lo, hi] (NaN and Inf are the
 // nan_inf check's), with a count and the worst value: "occlusion holds values outside [0, 1] in
 // FILE at 12 pixels (e.g. 37.2): is that channel ambient occlusion?".
@@ -375,26 +386,11 @@ GBufferLoad loadGBuffer(GBufferManifest const& m) {
                                                   g.viewDistance[p]);
             }
     }
-    if (m.albedo) {
-        ImportedImage const& a = *g.image("albedo");
-        g.albedo.resize(n);
-        for (std::size_t p = 0; p < n; ++p) {
-            glm::vec3 v(a.at(p, 0), a.at(p, 1), a.at(p, 2));
-            if (m.albedo->encoding == ColorEncoding::Srgb)
-                v = glm::vec3(srgbToLinear(v.x), srgbToLinear(v.y), srgbToLinear(v.z));
-            g.albedo[p] = v;
-        }
-    }
+    if (m.albedo) g.albedo = linearRgb(*g.image("albedo"), n, m.albedo->encoding, 1.0f);
     if (m.specular) g.specular = g.image("specular")->values;
     if (m.emissive) {
         ImportedImage const& e = *g.image("emissive");
-        g.emissive.resize(n);
-        for (std::size_t p = 0; p < n; ++p) {
-            glm::vec3 v(e.at(p, 0), e.at(p, 1), e.at(p, 2));
-            if (m.emissive->encoding == ColorEncoding::Srgb)
-                v = glm::vec3(srgbToLinear(v.x), srgbToLinear(v.y), srgbToLinear(v.z));
-            g.emissive[p] = v * m.emissive->scale;
-        }
+        g.emissive = linearRgb(e, n, m.emissive->encoding, m.emissive->scale);
         if (auto err =
                 outsideRange(e, 0.0f, std::numeric_limits<float>::infinity(), "emissive holds negative values in",
                              "emission only adds light (a signed or biased encoding?)"))

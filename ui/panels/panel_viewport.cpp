@@ -405,7 +405,9 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
     }
     // A frame stopped after a pass (the Frame window's "Stop here") says so over the image, and so
     // does a camera inside a light's volume (why the volume passes lose that light with cull back).
-    float notesY = origin.y + (abOn ? 3.0f * ImGui::GetTextLineHeightWithSpacing() : 6.0f);
+    // Below the A/B header's lines (drawAbSplit: two; drawAbDiff: three, with its numbers).
+    int const abLines = !abOn ? 0 : ab->ab.view == AbView::Diff ? 3 : 2;
+    float notesY = origin.y + 6.0f + float(abLines) * ImGui::GetTextLineHeightWithSpacing() + (abOn ? 4.0f : 0.0f);
     if (!state.stoppedAfter.empty() && texture != 0) {
         boxedText(ImVec2(origin.x + 8, notesY), "stopped after " + state.stoppedAfter);
         notesY += ImGui::GetTextLineHeightWithSpacing() + 4.0f;
