@@ -159,6 +159,18 @@ xdotool key --delay 30 Escape
 wait_frames 2
 ui_quit "Ctrl+Q did not quit the editor showing the checks"
 
+# wait_gbuffer PATH WHAT: waits (at most 200 frames) until the frame log names G-buffer PATH, then four
+# frames more; fails naming WHAT (the action that should have opened it) and what is shown instead.
+wait_gbuffer() {
+    tries=0
+    until [ "$(field gbuffer)" = "\"$1\"" ]; do
+        tries=$((tries + 1))
+        [ "$tries" -le 200 ] || fail "$2 opened G-buffer $(field gbuffer), not $1 (browser open: $(field gbufferBrowser))"
+        wait_frames 1
+    done
+    wait_frames 4
+}
+
 # --- 2c. File > Open G-buffer... with real input: a click on File, a click on the item, the folder's
 # path typed into the browser's Name field (focused as it opens), Enter: the export is shown.
 ui_start menu --size 1280x720 --frame-sleep-ms 20
@@ -173,13 +185,7 @@ click_at "$1" "$2"
 xdotool key --delay 30 ctrl+a
 xdotool type --delay 30 "$work/export"
 xdotool key --delay 30 Return
-tries=0
-until [ "$(field gbuffer)" = "\"$work/export\"" ]; do
-    tries=$((tries + 1))
-    [ "$tries" -le 100 ] || fail "typing $work/export and Enter opened $(field gbuffer) (browser open: $(field gbufferBrowser))"
-    wait_frames 1
-done
-wait_frames 4
+wait_gbuffer "$work/export" "typing $work/export and Enter"
 [ "$(field gbufferBrowser)" = false ] || fail "the file browser stayed open after Enter"
 [ "$(field frameSize)" = "[480,270]" ] || fail "the G-buffer opened from the menu is $(field frameSize), not 480x270"
 shot menu_opened
@@ -214,13 +220,7 @@ else
     # shows PATH W H: the frame log names G-buffer PATH (within 200 frames of the drop) at WxH, and the
     # five viewers each draw a W:H image (a viewer fits the frame's own size into its cell).
     shows() {
-        tries=0
-        until [ "$(field gbuffer)" = "\"$1\"" ]; do
-            tries=$((tries + 1))
-            [ "$tries" -le 200 ] || fail "after the drop of $1 the frame log names G-buffer $(field gbuffer)"
-            wait_frames 1
-        done
-        wait_frames 4
+        wait_gbuffer "$1" "the drop of $1"
         [ "$(field frameSize)" = "[$2,$3]" ] || fail "the dropped $1 is shown at $(field frameSize), not $2x$3"
         grep -qF "G-buffer $1: $2x$3" "$work/drop.log" || fail "the editor did not log opening $1 at $2x$3"
         viewers=$(field viewerImages | tr -d '[]' | tr ',' '\n' | paste -d' ' - - - - |
