@@ -4,7 +4,7 @@
 # the names the native build finds; /usr/include itself would bring glibc's headers with it.
 set(GBL_WEB_INCLUDE ${CMAKE_BINARY_DIR}/web-include)
 file(MAKE_DIRECTORY ${GBL_WEB_INCLUDE})
-foreach(entry glm nlohmann stb tiny_gltf.h)
+foreach(entry glm nlohmann stb tiny_gltf.h CLI)
   if(NOT EXISTS /usr/include/${entry})
     message(FATAL_ERROR "/usr/include/${entry} is missing: scripts/build-web.sh installs the packages")
   endif()
@@ -26,6 +26,15 @@ add_library(TinyGLTF::TinyGLTF ALIAS gbl_web_tinygltf)
 add_library(glfw INTERFACE IMPORTED)
 target_link_options(glfw INTERFACE -sUSE_GLFW=3)
 add_library(Threads::Threads INTERFACE IMPORTED)
+add_library(CLI11::CLI11 INTERFACE IMPORTED)
+target_include_directories(CLI11::CLI11 SYSTEM INTERFACE ${GBL_WEB_INCLUDE})
+# OpenImageIO and libepoxy have no browser build: empty targets of their names, so the libraries'
+# link lines stay one list. The code that calls OpenImageIO natively uses stb_image/stb_image_write
+# under __EMSCRIPTEN__ (renderer/image_io_stb.cpp, import, screenshots); WebGL2's declarations come
+# from Emscripten's GLES3 headers (renderer/gl/gl_api.h).
+add_library(PkgConfig::OIIO INTERFACE IMPORTED)
+target_link_libraries(PkgConfig::OIIO INTERFACE gbl_web_tinygltf)
+add_library(PkgConfig::EPOXY INTERFACE IMPORTED)
 # The code catches exceptions (json parsing, scene loading); Emscripten compiles them away unless asked.
 add_compile_options(-fexceptions)
 add_link_options(-fexceptions)

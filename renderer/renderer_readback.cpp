@@ -1,7 +1,9 @@
 // Reading the frame's images back: attachments as floats, one pixel for the inspector, views.
 #include "renderer_impl.h"
 
+#include "gl/shader_bindings.h"
 #include "passes/gbuffer_decode.h"
+#include "passes/shading_inputs.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -46,8 +48,47 @@ FloatImage constantImage(int width, int height, glm::vec4 v) {
     return img;
 }
 
+#ifdef __EMSCRIPTEN__
+// WebGL2 (OpenGL ES 3.0) reads a colour attachment back only as RGBA in the type its format
+// implies: floats from float formats, bytes from 8-bit ones, packed words from RGB10_A2, integers
+// from integer ones; never depth or stencil. Reads the bound read buffer so and widens to floats.
+std::vector<float> readRgbaAsFloats(GLenum attachment, int x, int y, int width, int height) {
+    GLint type = GL_FLOAT, redBits = 0;
+    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE,
+                                          &type);
+    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE,
+                                          &redBits);
+    std::size_t const texels = std::size_t(width) * std::size_t(height);
+    std::vector<float> out(texels * 4);
+    if (type == GL_FLOAT) {
+        glReadPixels(x, y, width, height, GL_RGBA, GL_FLOAT, out.data());
+    } else if (type == GL_INT || type == GL_UNSIGNED_INT) {
+        std::vector<std::uint32_t> words(texels * 4);
+        glReadPixels(x, y, width, height, GL_RGBA_INTEGER, GLenum(type), words.data());
+        for (std::size_t i = 0; i < words.size(); ++i)
+            out[i] = type == GL_INT ? float(std::int32_t(words[i])) : float(words[i]);
+    } else if (redBits == 10) {
+        std::vector<std::uint32_t> words(texels);
+        glReadPixels(x, y, width, height, GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV, words.data());
+        for (std::size_t p = 0; p < texels; ++p) {
+            std::uint32_t const w = words[p];
+            out[p * 4 + 0] = float(w & 1023u) / 1023.0f;
+            out[p * 4 + 1] = float((w >> 10) & 1023u) / 1023.0f;
+            out[p * 4 + 2] = float((w >> 20) & 1023u) / 1023.0f;
+            out[p * 4 + 3] = float(w >> 30) / 3.0f;
+        }
+    } else {
+        std::vector<std::uint8_t> bytes(texels * 4);
+        glReadPixels(x, y, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+        for (std::size_t i = 0; i < bytes.size(); ++i) out[i] = float(bytes[i]) / 255.0f;
+    }
+    return out;
+}
+#endif
+
 // Reads a whole framebuffer attachment as floats, flipped so rows run top to bottom: one channel
-// reads depth, two read RG, four RGBA.
+// reads depth (in the browser: the red channel of a colour attachment, see readDepth), two read
+// RG, four RGBA.
 FloatImage readFramebuffer(GLuint fbo, GLenum attachment, int width, int height, int channels) {
     FloatImage img;
     img.width = width;
@@ -57,8 +98,15 @@ FloatImage readFramebuffer(GLuint fbo, GLenum attachment, int width, int height,
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
     if (attachment != GL_NONE) glReadBuffer(attachment);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
+#ifdef __EMSCRIPTEN__
+    std::vector<float> const rgba = readRgbaAsFloats(attachment, 0, 0, width, height);
+    for (std::size_t p = 0; p < std::size_t(width) * std::size_t(height); ++p)
+        for (int c = 0; c < channels; ++c)
+            img.pixels[p * std::size_t(channels) + std::size_t(c)] = rgba[p * 4 + std::size_t(c)];
+#else
     GLenum const format = channels == 1 ? GL_DEPTH_COMPONENT : channels == 2 ? GL_RG : GL_RGBA;
     glReadPixels(0, 0, width, height, format, GL_FLOAT, img.pixels.data());
+#endif
     if (attachment != GL_NONE) glReadBuffer(GL_COLOR_ATTACHMENT0);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     // GL rows run bottom to top; images and mouse coordinates run top to bottom.
@@ -74,11 +122,15 @@ FloatImage readFramebuffer(GLuint fbo, GLenum attachment, int width, int height,
 // the integer values, flipped like readFramebuffer.
 FloatImage readStencil(GLuint fbo, int width, int height) {
     std::vector<std::uint8_t> bytes(std::size_t(width) * height);
+#ifdef __EMSCRIPTEN__
+    (void)fbo;  // WebGL2 cannot read stencil: the browser's stencil view reads all 0 (not yet read another way)
+#else
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width, height, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, bytes.data());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+#endif
     FloatImage img;
     img.width = width;
     img.height = height;
@@ -100,6 +152,30 @@ DecodedGBuffer decodeGBuffer(RendererImpl& r, glm::ivec2 offset, int width, int 
     return d;
 }
 
+// The G-buffer's depth as one float channel, rows top to bottom. Natively a read of the depth
+// attachment; in the browser, which cannot read depth, the depth texture is first drawn into an
+// RGBA32F target (shaders/texel_copy.frag) and its red channel read.
+FloatImage readDepth(RendererImpl& r) {
+    RenderTargets const& t = r.targets;
+#ifdef __EMSCRIPTEN__
+    gl::Texture copy = gl::Texture::create2D(GL_RGBA32F, t.width, t.height, "readback.depth");
+    gl::Framebuffer fbo = gl::Framebuffer::create({&copy}, nullptr, "readback.depth");
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+    glViewport(0, 0, t.width, t.height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    r.shaders.get(ProgramId::TexelCopy).use();
+    bindTextureUnit(slot::BIND_READBACK_SOURCE, GL_TEXTURE_2D, t.gbuffer.depth.id());
+    r.triangle.draw();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return readFramebuffer(fbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 1);
+#else
+    return readFramebuffer(t.gbuffer.fbo.id(), GL_NONE, t.width, t.height, 1);
+#endif
+}
+
 int texelChannels(TexelFormat f) {
     return f == TexelFormat::RG16 ? 2 : f == TexelFormat::Depth24Stencil8 || f == TexelFormat::Depth32FStencil8 ? 1 : 4;
 }
@@ -115,6 +191,7 @@ FloatImage Renderer::readRawAttachment(int index) const {
     if (t.empty() || index < 0 || index >= desc.attachmentCount) return {};
     TexelFormat const f = desc.attachments()[std::size_t(index)].format;
     bool const depth = index == desc.attachmentCount - 1;
+    if (depth) return readDepth(*impl_);
     return readFramebuffer(t.gbuffer.fbo.id(), depth ? GL_NONE : GLenum(GL_COLOR_ATTACHMENT0 + index), t.width,
                            t.height, texelChannels(f));
 }
@@ -139,7 +216,7 @@ FloatImage Renderer::readAttachment(Attachment a) const {
             return readFramebuffer(t.gbuffer.fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + emissiveIndex), t.width, t.height,
                                    4);
         case Attachment::Depth:
-            return readFramebuffer(t.gbuffer.fbo.id(), GL_NONE, t.width, t.height, 1);
+            return readDepth(*impl_);
         case Attachment::Stencil:
             return readStencil(t.gbuffer.fbo.id(), t.width, t.height);
         case Attachment::Lighting:
@@ -170,7 +247,12 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
     auto readColor = [&](GLuint fbo, GLenum attachment, glm::vec4& out) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
         glReadBuffer(attachment);
+#ifdef __EMSCRIPTEN__
+        std::vector<float> const rgba = readRgbaAsFloats(attachment, x, glY, 1, 1);
+        out = glm::vec4(rgba[0], rgba[1], rgba[2], rgba[3]);
+#else
         glReadPixels(x, glY, 1, 1, GL_RGBA, GL_FLOAT, &out[0]);
+#endif
         glReadBuffer(GL_COLOR_ATTACHMENT0);
     };
     GBufferLayoutDesc const& desc = layoutDesc(t.gbuffer.layout);
@@ -200,6 +282,11 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
         s.coverageView = impl_->coverageView;
         s.coverageMode = impl_->coverageMode;
     }
+#ifdef __EMSCRIPTEN__
+    // WebGL2 reads neither depth nor stencil: depth through the copy pass; the stencil value
+    // stays 0 in the browser (the inspector's stencil row says so).
+    s.depth = readDepth(*impl_).pixels[std::size_t(y) * std::size_t(t.width) + std::size_t(x)];
+#else
     glBindFramebuffer(GL_READ_FRAMEBUFFER, t.gbuffer.fbo.id());
     glReadPixels(x, glY, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &s.depth);
     std::uint8_t stencil = 0;
@@ -207,6 +294,7 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
     glReadPixels(x, glY, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     s.stencil = stencil;
+#endif
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     s.covered = s.position.w > 0.0f;
     // World position rebuilt from depth: unproject the pixel centre through the inverse view-projection.

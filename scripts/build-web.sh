@@ -15,8 +15,8 @@ build_type="${BUILD_TYPE:-Release}"
 start=$(date +%s)
 
 # 1. Packages: the toolchain, the header-only libraries, stb_image (OpenImageIO does not build for the
-#    web), dpkg-dev for `apt-get source`, and chromium for tests/web_smoke.sh.
-packages=(emscripten libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev dpkg-dev chromium cmake make)
+#    web), dpkg-dev for `apt-get source`, and chromium for tests/web/browser_test.py.
+packages=(emscripten libglm-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev libstb-dev fonts-dejavu-core dpkg-dev chromium cmake make)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -62,5 +62,5 @@ export NODE_PATH="${NODE_PATH:-/usr/share/nodejs}"
 emcmake cmake -S "$root" -B "$out" -DCMAKE_BUILD_TYPE="$build_type" -DIMGUI_DIR="$imgui_dir" -DGBL_BUILD_TESTS=OFF
 emmake make -C "$out" -j"$jobs" gbuffer-lab-web
 cp "$root/app/web/index.html" "$out/index.html"
-echo "Built $out (index.html, gbuffer-lab.js, gbuffer-lab.wasm) in $(( $(date +%s) - start )) s"
+echo "Built $out (index.html, gbuffer-lab.js, gbuffer-lab.wasm, gbuffer-lab.data) in $(( $(date +%s) - start )) s"
 echo "Serve with: python3 -m http.server -d $out"

@@ -17,8 +17,16 @@ uniform float uConeRadialScale;
 uniform float uVolumeScale;
 uniform bool uArrow;         // wireframes: instance k is the k-th directional light's arrow
 uniform float uArrowLength;
-uniform isamplerBuffer uInstances;  // light index per instance
-uniform int uFirstInstance;         // offset into uInstances (draws of one light or one group)
+uniform int uFirstInstance;  // offset into uInstances (draws of one light or one group)
+// The light index per instance: a buffer texture, or without them (WebGL2) a 2D R32I texture in
+// rows of GBL_LIGHT_TEXELS_PER_ROW (renderer/passes/light_volumes.cpp).
+#ifdef GBL_NO_BUFFER_TEXTURES
+uniform highp isampler2D uInstances;
+int instanceLight(int i) { return texelFetch(uInstances, ivec2(i % GBL_LIGHT_TEXELS_PER_ROW, i / GBL_LIGHT_TEXELS_PER_ROW), 0).r; }
+#else
+uniform isamplerBuffer uInstances;
+int instanceLight(int i) { return texelFetch(uInstances, i).r; }
+#endif
 
 flat out int vLight;
 
@@ -30,7 +38,7 @@ void coneBasis(vec3 axis, out vec3 x, out vec3 y) {
 }
 
 void main() {
-    int light = uArrow ? uDirectionalLights[gl_InstanceID] : texelFetch(uInstances, uFirstInstance + gl_InstanceID).r;
+    int light = uArrow ? uDirectionalLights[gl_InstanceID] : instanceLight(uFirstInstance + gl_InstanceID);
     vec4 positionRadius = lightTexel(light * 4);
     vLight = light;
     vec3 world;

@@ -48,6 +48,7 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     l.frameSize = {480, 270};
     l.fileMenu = {8, 0, 30, 19};
     l.openGBufferItem = {9, 88, 260, 17};
+    l.openSceneItem = {9, 24, 260, 17};
     l.gbufferBrowser = true;
     nlohmann::json const j = nlohmann::json::parse(frameLogJson(l));
     EXPECT_EQ(j["frame"], 41);
@@ -97,6 +98,7 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     EXPECT_EQ(j["frameSize"], nlohmann::json::parse("[480,270]"));
     EXPECT_EQ(j["fileMenu"], nlohmann::json::parse("[8,0,30,19]"));
     EXPECT_EQ(j["openGBufferItem"], nlohmann::json::parse("[9,88,260,17]"));
+    EXPECT_EQ(j["openSceneItem"], nlohmann::json::parse("[9,24,260,17]"));
     EXPECT_EQ(j["gbufferBrowser"], true);
 }
 

@@ -24,6 +24,7 @@ enum class ProgramId {
     GBufferDecode,
     LightCombine,  // accumulation split: the two light targets into the lit image
     Import,        // re-lighting: an imported G-buffer into the layout's targets
+    TexelCopy,     // a texture into a float target, for read-backs WebGL2 cannot do directly
     // volumes mode
     LightVolume,
     LightVolumeCoverage,

@@ -31,6 +31,10 @@ void formatAndType(GLenum internalFormat, GLenum& format, GLenum& type) {
             format = GL_RED_INTEGER;
             type = GL_UNSIGNED_INT;
             return;
+        case GL_R32I:
+            format = GL_RED_INTEGER;
+            type = GL_INT;
+            return;
         case GL_RG16F:
         case GL_RG32F:
             format = GL_RG;

@@ -40,7 +40,25 @@ std::optional<std::string> validate(SceneData const& scene) {
     return std::nullopt;
 }
 
-gl::Texture uploadImage(ImageData const& img) {
+// WebGL2 has no texture swizzle, and its RGB formats (SRGB8 among them) cannot have mipmaps
+// generated: grey and RGB images become RGBA there (grey as (v, v, v, 1), what the swizzle gives
+// natively), so every texture reads as on the desktop.
+ImageData asWebGl2Texture(ImageData const& img) {
+    if (img.channels != 1 && img.channels != 3) return img;
+    ImageData out = img;
+    out.channels = 4;
+    std::size_t const texels = std::size_t(img.width) * std::size_t(img.height);
+    out.pixels.assign(texels * 4, 255);
+    for (std::size_t p = 0; p < texels; ++p)
+        for (int c = 0; c < 3; ++c)
+            out.pixels[p * 4 + std::size_t(c)] =
+                img.pixels[p * std::size_t(img.channels) + (img.channels == 1 ? 0 : std::size_t(c))];
+    return out;
+}
+
+gl::Texture uploadImage(ImageData const& given) {
+    ImageData const expanded = gl::kWebGL2 ? asWebGl2Texture(given) : ImageData{};
+    ImageData const& img = gl::kWebGL2 ? expanded : given;
     static constexpr GLenum kFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
     GLenum internal = GL_RGBA8;
     if (img.srgb)
@@ -62,7 +80,7 @@ gl::Texture uploadImage(ImageData const& img) {
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, img.width, img.height, kFormats[img.channels - 1], GL_UNSIGNED_BYTE,
                     img.pixels.data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-#ifdef GL_TEXTURE_SWIZZLE_RGBA  // not in WebGL2, where a grey image still reads as red (issue 29)
+#ifdef GL_TEXTURE_SWIZZLE_RGBA  // not in WebGL2, where grey images were expanded above
     if (img.channels == 1) {
         GLint const swizzle[] = {GL_RED, GL_RED, GL_RED, GL_ONE};
         glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle);

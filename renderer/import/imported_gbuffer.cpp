@@ -1,10 +1,15 @@
-// Loading a foreign G-buffer: images through OpenImageIO or as raw samples, then decoding.
+// Loading a foreign G-buffer: images through OpenImageIO (stb_image in the browser) or as raw
+// samples, then decoding.
 #include "import/imported_gbuffer.h"
 
 #include "core/depth.h"
 #include "core/octahedral.h"
 
+#ifdef __EMSCRIPTEN__
+#include <stb_image.h>
+#else
 #include <OpenImageIO/imageio.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -94,6 +99,52 @@ std::optional<FileImage> readRaw(ImageRef const& ref, std::string* error) {
     return img;
 }
 
+#ifdef __EMSCRIPTEN__
+// The browser build reads PNG, JPEG and HDR files (8 or 16 bits, or float) through stb_image; EXR
+// needs OpenImageIO and is refused with that reason.
+std::optional<FileImage> readFile(ImageRef const& ref, std::string* error) {
+    if (ref.raw) return readRaw(ref, error);
+    char const* path = ref.path.c_str();
+    FileImage img;
+    if (!stbi_info(path, &img.width, &img.height, &img.channels)) {
+        std::ifstream probe(ref.path);
+        std::string const reason = !probe                       ? "no such file, or no permission"
+                                   : ref.path.ends_with(".exr") ? "EXR needs OpenImageIO, which the browser build lacks"
+                                                                : stbi_failure_reason();
+        *error = ref.field + ".file " + ref.path + " cannot be read (" + reason + ")";
+        return std::nullopt;
+    }
+    if (img.width <= 0 || img.height <= 0 || img.channels <= 0 ||
+        std::size_t(img.width) * std::size_t(img.height) > (std::size_t(1) << 28)) {
+        *error = ref.field + ".file " + ref.path + " has no usable size (" + sizeText(img.width, img.height) + ")";
+        return std::nullopt;
+    }
+    std::size_t const count = std::size_t(img.width) * std::size_t(img.height) * std::size_t(img.channels);
+    img.pixels.resize(count);
+    int w = 0, h = 0, c = 0;
+    if (stbi_is_hdr(path)) {
+        img.storage = SampleStorage::Float;
+        float* data = stbi_loadf(path, &w, &h, &c, 0);
+        if (data) std::copy(data, data + count, img.pixels.begin());
+        stbi_image_free(data);
+        if (!data) {
+            *error = ref.field + ".file " + ref.path + " cannot be read (" + stbi_failure_reason() + ")";
+            return std::nullopt;
+        }
+        return img;
+    }
+    bool const sixteen = stbi_is_16_bit(path) != 0;
+    img.storage = sixteen ? SampleStorage::Uint16 : SampleStorage::Uint8;
+    std::uint16_t* data = stbi_load_16(path, &w, &h, &c, 0);
+    if (!data) {
+        *error = ref.field + ".file " + ref.path + " cannot be read (" + stbi_failure_reason() + ")";
+        return std::nullopt;
+    }
+    for (std::size_t i = 0; i < count; ++i) img.pixels[i] = float(data[i]) / 65535.0f;
+    stbi_image_free(data);
+    return img;
+}
+#else
 std::optional<FileImage> readFile(ImageRef const& ref, std::string* error) {
     if (ref.raw) return readRaw(ref, error);
     auto in = OIIO::ImageInput::open(ref.path);
@@ -127,6 +178,7 @@ std::optional<FileImage> readFile(ImageRef const& ref, std::string* error) {
     }
     return img;
 }
+#endif
 
 float srgbToLinear(float c) {
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);

@@ -43,6 +43,20 @@ void prepareVolumeInstances(LightVolumeGpu& volumes, VolumeInstancesConfig const
     std::vector<std::int32_t> all;
     for (auto const& group : groups) all.insert(all.end(), group.begin(), group.end());
     if (all.empty()) all.push_back(0);  // a buffer texture needs storage
+    if (!gl::kBufferTextures) {
+        // WebGL2: rows of an R32I texture (shaders/light_volume.vert's instanceLight).
+        int const rows = int((all.size() + gl::kLightTexelsPerRow - 1) / gl::kLightTexelsPerRow);
+        all.resize(std::size_t(rows) * gl::kLightTexelsPerRow, 0);
+        if (!volumes.instancesTbo || volumes.instancesTbo.height() < rows) {
+            volumes.instancesTbo =
+                gl::Texture::create2D(GL_R32I, gl::kLightTexelsPerRow, rows, "light volume.instances");
+            volumes.instancesTbo.setFilter(GL_NEAREST, GL_NEAREST);
+        }
+        glBindTexture(GL_TEXTURE_2D, volumes.instancesTbo.id());
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, gl::kLightTexelsPerRow, rows, GL_RED_INTEGER, GL_INT, all.data());
+        glBindTexture(GL_TEXTURE_2D, 0);
+        return;
+    }
     std::size_t const bytes = all.size() * sizeof(std::int32_t);
     if (!volumes.instances || volumes.instances.size() < bytes) {
         volumes.instances =
@@ -72,7 +86,7 @@ void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, Cull
     auto setCommon = [&](gl::Program const& prog) {
         prog.use();
         bindDeferredInputs(prog, in.deferred);
-        bindTextureUnit(slot::BIND_VOLUME_INSTANCES, GL_TEXTURE_BUFFER, volumes.instancesTbo.id());
+        bindTextureUnit(slot::BIND_VOLUME_INSTANCES, volumes.instancesTbo.target(), volumes.instancesTbo.id());
         prog.set("uViewProj", viewProj);
         prog.set("uEnclosingScale", volumes.enclosingScale);
         prog.set("uConeRadialScale", volumes.coneRadialScale);

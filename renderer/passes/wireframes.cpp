@@ -50,7 +50,7 @@ void wireframesPass(WireframesInput const& in, WireframesConfig const& config) {
     gl::Program const& p = in.program;
     p.use();
     bindLights(p, in.lights);
-    bindTextureUnit(slot::BIND_VOLUME_INSTANCES, GL_TEXTURE_BUFFER, v.instancesTbo.id());
+    bindTextureUnit(slot::BIND_VOLUME_INSTANCES, v.instancesTbo.target(), v.instancesTbo.id());
     p.set("uViewProj", config.viewProj);
     p.set("uEnclosingScale", v.enclosingScale);
     p.set("uConeRadialScale", v.coneRadialScale);

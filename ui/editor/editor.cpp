@@ -1,36 +1,73 @@
 // The editor's main loop: start-up, then per frame render, UI, requests and present, then shutdown.
 // Each step is a named function in ui/editor_*.cpp over the state they share (ui/editor_loop.h).
+// On the desktop the loop is a while loop; in the browser the page's frame callback runs one
+// frame at a time (emscripten_set_main_loop), since a loop that never returns would block the page.
 #include "editor.h"
 
 #include "editor_loop.h"
 
 #include <imgui.h>
 
+#include <cstdio>
+#include <memory>
+
+#ifdef __EMSCRIPTEN__
+#include <emscripten/emscripten.h>
+#endif
+
 namespace gbl {
 
+namespace {
+
+bool running(Editor& editor) {
+    return !glfwWindowShouldClose(editor.window()) && !editor.state.quitRequested;
+}
+
+void runFrame(Editor& editor) {
+    FrameTimes times;
+    if (!beginFrame(editor, times)) return;
+    renderScene(editor, times);
+    reloadShaders(editor);
+
+    auto const uiStart = EditorClock::now();
+    EditRequest const edit = drawPanels(editor, times);
+    handleRequests(editor, times, edit);
+    ImGui::Render();
+    times.uiMs = msSince(uiStart);
+
+    present(editor, times);
+    recordFrame(editor, times);
+}
+
+#ifdef __EMSCRIPTEN__
+// One browser frame; the editor lives until the page goes, unless it quits (--frames, a UI test).
+void browserFrame(void* user) {
+    auto* editor = static_cast<Editor*>(user);
+    runFrame(*editor);
+    if (running(*editor)) return;
+    emscripten_cancel_main_loop();
+    int const exitCode = shutdownEditor(*editor);
+    std::printf("gbuffer-lab: the editor stopped (exit code %d)\n", exitCode);
+    delete editor;
+}
+#endif
+
+}  // namespace
+
 int runEditor(EditorOptions const& options) {
-    Editor editor(options);
-    if (auto const exitCode = openWindow(editor)) return *exitCode;
-    if (auto const exitCode = startEditor(editor)) return *exitCode;
-    initImGui(editor);
-    connectScriptHost(editor);
-
-    while (!glfwWindowShouldClose(editor.window()) && !editor.state.quitRequested) {
-        FrameTimes times;
-        if (!beginFrame(editor, times)) continue;
-        renderScene(editor, times);
-        reloadShaders(editor);
-
-        auto const uiStart = EditorClock::now();
-        EditRequest const edit = drawPanels(editor, times);
-        handleRequests(editor, times, edit);
-        ImGui::Render();
-        times.uiMs = msSince(uiStart);
-
-        present(editor, times);
-        recordFrame(editor, times);
-    }
-    return shutdownEditor(editor);
+    auto editor = std::make_unique<Editor>(options);
+    if (auto const exitCode = openWindow(*editor)) return *exitCode;
+    if (auto const exitCode = startEditor(*editor)) return *exitCode;
+    initImGui(*editor);
+    connectScriptHost(*editor);
+#ifdef __EMSCRIPTEN__
+    // main returns at once; the runtime stays (EXIT_RUNTIME=0) and the frame callback owns the editor.
+    emscripten_set_main_loop_arg(browserFrame, editor.release(), 0, false);
+    return 0;
+#else
+    while (running(*editor)) runFrame(*editor);
+    return shutdownEditor(*editor);
+#endif
 }
 
 }  // namespace gbl

@@ -117,6 +117,7 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.frameSize = glm::ivec2(editor.renderer->width(), editor.renderer->height());
     line.fileMenu = state.layout.fileMenuRect;
     line.openGBufferItem = editor.loading.gbuffer.menuItemRect;
+    line.openSceneItem = editor.loading.openItemRect;
     line.gbufferBrowser = editor.loading.gbuffer.browser.open;
     editor.frameLog.write(line);
 }

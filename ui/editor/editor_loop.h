@@ -100,7 +100,7 @@ struct FrameTimes {
 struct Editor {
     explicit Editor(EditorOptions const& options) : options(options) {}
 
-    EditorOptions const& options;
+    EditorOptions const options;  // a copy: in the browser the editor outlives main's locals
     GlfwSession glfw;
     GlCaps caps;
     bool unattended = false;  // screenshots, UI tests, frame counts: no vsync, layout file or recovery

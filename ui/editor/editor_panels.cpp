@@ -53,6 +53,7 @@ EditRequest drawMainMenu(Editor& editor) {
     ui::SessionController& sessions = *editor.sessions;
     EditRequest edit;
     editor.loading.gbuffer.menuItemRect = glm::vec4(0.0f);
+    editor.loading.openItemRect = glm::vec4(0.0f);
     if (!ImGui::BeginMainMenuBar()) return edit;
     bool const fileMenu = ImGui::BeginMenu("File");
     ImVec2 const fileMin = ImGui::GetItemRectMin(), fileMax = ImGui::GetItemRectMax();

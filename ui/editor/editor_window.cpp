@@ -210,6 +210,13 @@ std::optional<int> openWindow(Editor& editor) {
         printNoDisplay(gLastGlfwError);
         return 1;
     }
+#ifdef __EMSCRIPTEN__
+    // The browser: WebGL2 (OpenGL ES 3.0) in the page's canvas, whose size the page gives.
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+    ui::WindowFit fit{options.width, options.height, false};
+#else
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -229,6 +236,7 @@ std::optional<int> openWindow(Editor& editor) {
         // A window manager then fits the reduced window, title bar included, to the screen.
         if (fit.reduced) glfwWindowHint(GLFW_MAXIMIZED, GLFW_TRUE);
     }
+#endif
     editor.glfw.window = glfwCreateWindow(fit.width, fit.height, "gbuffer-lab", nullptr, nullptr);
     if (!editor.glfw.window) {
         std::fprintf(stderr, "gbuffer-lab: could not open an OpenGL 3.3 core window: %s\n", gLastGlfwError.c_str());
@@ -338,14 +346,21 @@ void initImGui(Editor& editor) {
     }
     addViewSettingsHandler(editor);
     if (io.IniFilename) ImGui::LoadIniSettingsFromDisk(io.IniFilename);
-    float xscale = 1.0f, yscale = 1.0f;
+    float xscale = 1.0f;
+#ifndef __EMSCRIPTEN__  // Emscripten's GLFW (3.2) has no content scale; the page's canvas is in CSS pixels
+    float yscale = 1.0f;
     glfwGetWindowContentScale(editor.window(), &xscale, &yscale);
+#endif
     editor.style.contentScale = xscale > 0.0f ? xscale : 1.0f;
     setUiScale(editor, scale.current);
     // ImGui's backend installs no callbacks: the editor's own queue every event and feed ImGui
     // at a pace it can follow (editor_input.h), with 1.86 and 1.87+ alike.
     ImGui_ImplGlfw_InitForOpenGL(editor.window(), false);
+#ifdef __EMSCRIPTEN__
+    ImGui_ImplOpenGL3_Init("#version 300 es");
+#else
     ImGui_ImplOpenGL3_Init("#version 330 core");
+#endif
     installInputCallbacks(editor.window(), editor.input);
 }
 

@@ -1,6 +1,7 @@
 // Session life cycle of the editor: history, autosave, recovery, file requests.
 #include "session_controller.h"
 
+#include "model/browser_files.h"
 #include "session/atomic_file.h"
 #include "session/editor_session.h"
 #include "viewer_export.h"
@@ -258,6 +259,11 @@ void SessionController::handle(SessionRequest const& request, EditorState& state
             logMessage(state.log, "discarded the recovered session");
             return;
     }
+    // In the browser a saved session or a viewer's PNG is also offered as a download: the page's
+    // file system lives in memory.
+    bool const download =
+        request.kind == SessionRequestKind::Save || request.kind == SessionRequestKind::ExportViewerPng;
+    if (!err && download && offerDownload(request.path)) done += " (offered as a download)";
     if (err && request.kind != SessionRequestKind::Open && request.kind != SessionRequestKind::Restore)
         logMessage(state.log, *err, true);  // open and restore log their own refusals
     else if (!done.empty())

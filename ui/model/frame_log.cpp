@@ -128,6 +128,7 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"gbuffer\":" + quoted(l.gbuffer);
     out += ",\"frameSize\":[" + std::to_string(l.frameSize.x) + "," + std::to_string(l.frameSize.y) + "]";
     out += ",\"fileMenu\":" + rect(l.fileMenu) + ",\"openGBufferItem\":" + rect(l.openGBufferItem) +
+           ",\"openSceneItem\":" + rect(l.openSceneItem) +
            ",\"gbufferBrowser\":" + (l.gbufferBrowser ? "true" : "false");
     return out + "}";
 }

@@ -129,6 +129,7 @@ struct FrameLogLine {
     // G-buffer file browser is open.
     glm::vec4 fileMenu{0.0f};
     glm::vec4 openGBufferItem{0.0f};
+    glm::vec4 openSceneItem{0.0f};  // File > "Open scene..." (0 while the menu is closed)
     bool gbufferBrowser = false;
 };
 

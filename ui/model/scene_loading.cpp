@@ -65,7 +65,12 @@ std::optional<std::string> startSceneLoad(SceneLoadingState& state, std::string 
     job.started = std::chrono::steady_clock::now();
     // std::async(launch::async) is a real thread; the future's result is the whole scene or
     // an error, so nothing half-loaded can reach the render thread.
+#ifdef __EMSCRIPTEN__
+    // The browser build has no threads: the load runs on the main thread when takeFinishedLoad asks.
+    job.result = std::async(std::launch::deferred, [path, options] { return loadGltf(path, options); });
+#else
     job.result = std::async(std::launch::async, [path, options] { return loadGltf(path, options); });
+#endif
     state.job.emplace(std::move(job));
     return std::nullopt;
 }
@@ -102,7 +107,8 @@ bool loadHeld(SceneLoadingState const& state) {
 
 std::optional<GltfLoadResult> takeFinishedLoad(SceneLoadingState& state) {
     if (!state.job) return std::nullopt;
-    if (state.job->result.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return std::nullopt;
+    std::future_status const status = state.job->result.wait_for(std::chrono::seconds(0));
+    if (status != std::future_status::ready && status != std::future_status::deferred) return std::nullopt;
     GltfLoadResult result = state.job->result.get();
     state.job.reset();
     return result;
@@ -142,10 +148,18 @@ bool updateSceneLoading(SceneLoadingState& loading, int defaultLightCount, Edito
     takeGBufferDrops(loading.dropped, loading.gbuffer);
     if (!loading.dropped.empty()) {
         std::vector<std::string> const dropped = std::exchange(loading.dropped, {});
-        if (dropped.size() > 1)
-            logMessage(state.log, "one scene at a time: opening " + dropped.front() + " and ignoring " +
-                                      std::to_string(dropped.size() - 1) + " more dropped file(s)");
-        loading.requests.push_back(dropped.front());
+        // A glTF dropped with its buffers and textures (a browser drops files, not their folder,
+        // and puts them side by side): the one scene file among them opens, the rest are its own.
+        auto const isScene = [](std::string const& p) { return p.ends_with(".gltf") || p.ends_with(".glb"); };
+        auto const scenes = std::count_if(dropped.begin(), dropped.end(), isScene);
+        if (scenes == 1) {
+            loading.requests.push_back(*std::find_if(dropped.begin(), dropped.end(), isScene));
+        } else {
+            if (dropped.size() > 1)
+                logMessage(state.log, "one scene at a time: opening " + dropped.front() + " and ignoring " +
+                                          std::to_string(dropped.size() - 1) + " more dropped file(s)");
+            loading.requests.push_back(dropped.front());
+        }
     }
     for (std::string const& path : std::exchange(loading.requests, {})) {
         if (auto refused = startSceneLoad(loading, path))

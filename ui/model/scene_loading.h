@@ -60,6 +60,7 @@ struct SceneLoadingState {
     std::optional<SceneLoadJob> job;    // the load in progress, if any
     std::vector<std::string> requests;  // paths asked for (menu, dialog, recent, script), oldest first
     std::vector<std::string> dropped;   // files dropped onto the window since the last frame
+    glm::vec4 openItemRect{0.0f};       // File > "Open scene..." while the menu is open (0 otherwise), frame log
     std::string holdNextAtStage;        // test hook, applied to the next load that starts
     bool allowOutsideUris = false;      // --allow-outside-uris
 

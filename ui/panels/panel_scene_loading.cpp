@@ -1,6 +1,7 @@
 // Scene open dialog, recent files, loading progress and load errors.
 #include "panels/panel_scene_loading.h"
 
+#include "model/browser_files.h"
 #include "panels/panel_file_browser.h"
 
 #include <imgui.h>
@@ -76,6 +77,7 @@ void drawErrorDialog(SceneLoadingState& state) {
 }  // namespace
 
 void openSceneDialog(SceneLoadingState& state, std::string const& prefill) {
+    if (pickFilesInBrowser()) return;  // the browser's own picker; its files arrive as a drop
     openFileBrowser(state.browser, FileBrowserPurpose::OpenScene, prefill);
     // The recent scenes' folders are the first recent places.
     for (auto it = state.recent.rbegin(); it != state.recent.rend(); ++it)
@@ -85,6 +87,8 @@ void openSceneDialog(SceneLoadingState& state, std::string const& prefill) {
 void drawSceneMenuItems(SceneLoadingState& state) {
     if (ImGui::MenuItem("Open scene...", "Ctrl+Shift+O"))
         openSceneDialog(state, state.recent.empty() ? std::string() : state.recent.front());
+    ImVec2 const openMin = ImGui::GetItemRectMin(), openMax = ImGui::GetItemRectMax();
+    state.openItemRect = {openMin.x, openMin.y, openMax.x - openMin.x, openMax.y - openMin.y};
     if (ImGui::BeginMenu("Open recent scene", !state.recent.empty())) {
         for (auto const& r : state.recent)
             if (ImGui::MenuItem(r.c_str())) requestOpen(state, r);

@@ -42,7 +42,12 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
             ImVec2 const min = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
             frame->openButton = glm::vec4(min.x, min.y, size.x, size.y);
         }
-        ImGui::Text("Renderer GPU %.2f ms at %dx%d", f.gpuFrameMs, f.width, f.height);
+        // Where no timer query attributes work to passes (software rasterisers, WebGL2) the passes
+        // are timed on the CPU between glFinish calls: labelled so, with the reason on hover.
+        bool const cpuTimed = f.timingSource == "cpu_finish";
+        ImGui::Text("Renderer %s %.2f ms at %dx%d", cpuTimed ? "(CPU-timed)" : "GPU", f.gpuFrameMs, f.width, f.height);
+        if (cpuTimed && ImGui::IsItemHovered() && !f.timingReason.empty())
+            ImGui::SetTooltip("%s", f.timingReason.c_str());
         if (render) {
             // Render on change: an idle editor shows the last frame again instead of re-rendering it.
             if (render->renderedLastFrame) {

@@ -1,8 +1,13 @@
 // Window read-back and PNG output.
 #include "script/screenshot.h"
 
-#include <OpenImageIO/imageio.h>
 #include "gl/gl_api.h"
+
+#ifdef __EMSCRIPTEN__
+#include <stb_image_write.h>
+#else
+#include <OpenImageIO/imageio.h>
+#endif
 
 #include <algorithm>
 #include <cstdlib>
@@ -19,9 +24,16 @@ RgbImage readWindow(int width, int height) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     glReadBuffer(GL_BACK);
     // Rows of 3 bytes per pixel are not 4-byte aligned in general.
+#ifdef __EMSCRIPTEN__
+    // WebGL2 reads the canvas only as RGBA bytes.
+    std::vector<std::uint8_t> rgba(std::size_t(width) * height * 4);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    for (std::size_t p = 0; p < std::size_t(width) * height; ++p) std::memcpy(&image.pixels[p * 3], &rgba[p * 4], 3);
+#else
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, image.pixels.data());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
+#endif
     // GL returns the bottom row first; images are stored top row first.
     std::size_t const rowBytes = std::size_t(width) * 3;
     std::vector<std::uint8_t> row(rowBytes);
@@ -37,6 +49,11 @@ RgbImage readWindow(int width, int height) {
 
 std::optional<std::string> writePng(RgbImage const& image, std::string const& path) {
     if (image.width <= 0 || image.height <= 0) return "cannot write " + path + ": the window has no pixels (0x0)";
+#ifdef __EMSCRIPTEN__
+    if (!stbi_write_png(path.c_str(), image.width, image.height, 3, image.pixels.data(), image.width * 3))
+        return "cannot write " + path + ": the file could not be written";
+    return std::nullopt;
+#else
     auto out = OIIO::ImageOutput::create(path);
     if (!out) return "cannot write " + path + ": " + OIIO::geterror();
     OIIO::ImageSpec const spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
@@ -45,6 +62,7 @@ std::optional<std::string> writePng(RgbImage const& image, std::string const& pa
     std::string const error = ok ? std::string() : out->geterror();
     if (!out->close() || !ok) return "cannot write " + path + ": " + (error.empty() ? out->geterror() : error);
     return std::nullopt;
+#endif
 }
 
 ImageDifference compareImages(RgbImage const& a, RgbImage const& b) {

@@ -94,7 +94,8 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
     ClaimKindInfo const* info = findClaimKind(kindIt->get<std::string>());
     if (!info) fail(path + ".kind", "must be one of " + names + " (got " + kindIt->dump() + ")");
     // Every key is the kind's (claimKinds()): a misspelt or misplaced field is named, not ignored.
-    for (auto const& [key, value] : c.items()) {
+    for (auto const& item : c.items()) {
+        std::string const& key = item.key();
         auto const has = [&key](std::span<std::string_view const> fields) {
             return std::find(fields.begin(), fields.end(), key) != fields.end();
         };
