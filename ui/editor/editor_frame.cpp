@@ -75,8 +75,14 @@ void drawViewers(Editor& editor, FrameTimes& times) {
     Renderer& renderer = *editor.renderer;
     EditorGpu& gpu = editor.gpu;
     ui::GBufferPanelState& gb = editor.state.gbuffer;
-    int const turn = gb.nextRefresh;
-    gb.nextRefresh = (gb.nextRefresh + 1) % int(gb.viewers.size());
+    if (times.rendered) ++gpu.framesRendered;
+    // The one viewer refreshed in turn this frame: the next one behind the latest frame.
+    int turn = -1;
+    for (int k = 0; k < int(gb.viewers.size()) && turn < 0; ++k) {
+        int const i = (gb.nextRefresh + k) % int(gb.viewers.size());
+        if (gpu.drawnFrame[std::size_t(i)] != gpu.framesRendered) turn = i;
+    }
+    if (turn >= 0) gb.nextRefresh = (turn + 1) % int(gb.viewers.size());
     for (std::size_t i = 0; i < gpu.viewTargets.size(); ++i) {
         ui::ViewerState const& v = gb.viewers[i];
         ViewParams const params = ui::viewerParams(v);
@@ -84,7 +90,7 @@ void drawViewers(Editor& editor, FrameTimes& times) {
         bool const stale = !target.texture || target.texture.width() != renderer.width() ||
                            target.texture.height() != renderer.height() || !gpu.drawnParams[i] ||
                            *gpu.drawnParams[i] != params;
-        if ((times.rendered && (gb.refreshEveryFrame || int(i) == turn)) || stale) {
+        if ((times.rendered && gb.refreshEveryFrame) || int(i) == turn || stale) {
             Camera clip = editor.state.camera;
             if (v.kind == ui::ViewerKind::Depth && !v.cameraClipPlanes) {
                 clip.nearPlane = v.nearPlane;
@@ -94,6 +100,7 @@ void drawViewers(Editor& editor, FrameTimes& times) {
             // Exact texels when zoomed in: the viewers are for reading values, not pictures.
             target.texture.setFilter(GL_NEAREST, GL_NEAREST);
             gpu.drawnParams[i] = params;
+            gpu.drawnFrame[i] = gpu.framesRendered;
         }
         times.viewerTextures[i] = target.texture.id();
     }

@@ -49,8 +49,13 @@ struct EditorGpu {
     std::array<ViewTarget, 5> viewTargets;                 // one per G-buffer viewer
     ui::ViewerToolsGpu viewerTools;                        // diff heat maps of the viewer tools
     std::array<std::optional<ViewParams>, 5> drawnParams;  // what each target last showed
-    GpuTimer timer;                                        // the editor's own GPU work, for the Stats window
-    ui::AbGpu ab;                                          // side B and the A/B diff (ab_frame.h)
+    // Which rendered frame each target shows (framesRendered when drawn): after a new frame the
+    // viewers catch up one a frame, so a frame that is the last for a while (a scene just loaded,
+    // then nothing changes) still reaches all five.
+    std::array<std::uint64_t, 5> drawnFrame{};
+    std::uint64_t framesRendered = 0;
+    GpuTimer timer;  // the editor's own GPU work, for the Stats window
+    ui::AbGpu ab;    // side B and the A/B diff (ab_frame.h)
 };
 
 // The GLFW library and the editor's window; terminates GLFW when it goes.
