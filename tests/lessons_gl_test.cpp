@@ -3,6 +3,7 @@
 #include "core/pipeline_fields.h"
 #include "gl_fixture.h"
 #include "lesson_render.h"
+#include "model/lesson_text.h"
 #include "scene/default_scene.h"
 #include "session/lesson_file.h"
 #include "test_paths.h"
@@ -97,6 +98,31 @@ TEST_F(LessonsGlTest, ThePixelTaskRegionHoldsTheLargestPositionError) {
     EXPECT_TRUE(ui::taskMet(step.tasks[0], ctx)) << f.claim->detail;
     ctx.pixel = f.pixel;
     EXPECT_FALSE(ui::taskMet(step.tasks[0], ctx));
+}
+
+// The step rings that pixel (its claim's `mark`, which the editor measures on its own frame): the
+// mark is the claim's largest error, its value within the claim's range and printed in its label,
+// and the step's task is met there. A claim without `mark` marks nothing.
+TEST_F(LessonsGlTest, ThePositionErrorStepMarksItsLargestError) {
+    ui::Lesson const& l = lesson("position_from_depth");
+    ui::LessonStep const& step = l.steps.at(1);
+    ASSERT_TRUE(step.claim && step.claim->mark);
+    LessonStepFrame const f = render(l, step);
+    ASSERT_TRUE(f.claim && f.claim->worst) << (f.claim ? f.claim->detail : "no claim");
+    std::optional<ui::ClaimMark> const m = ui::claimMark(*step.claim, *f.claim);
+    ASSERT_TRUE(m);
+    EXPECT_EQ(m->pixel, *f.claim->worst);
+    EXPECT_GE(m->value, step.claim->atLeast);
+    EXPECT_LT(m->value, step.claim->bound);
+    EXPECT_NE(m->label.find(ui::lessonNumber(m->value)), std::string::npos) << m->label;
+    ui::TaskContext ctx;
+    ctx.pixelLocked = true;
+    ctx.frameSize = ctx.lessonSize = {l.width, l.height};
+    ctx.pixel = m->pixel;
+    EXPECT_TRUE(ui::taskMet(step.tasks.at(0), ctx));
+    ui::LessonClaim plain = *step.claim;
+    plain.mark = false;
+    EXPECT_FALSE(ui::claimMark(plain, *f.claim));
 }
 
 // The shipped setting tasks, done on the real frame: the step's state with the task's value shows

@@ -53,6 +53,7 @@ struct FrameLogLine {
     bool lessonGlossary = false;     // the Glossary window is open
     std::string lessonGlossaryTerm;  // the term it last opened at ("" = none)
     std::vector<glm::vec2> lessonButtons;
+    std::vector<float> lessonMark;  // the viewport's lesson mark: x, y (renderer pixels), value; empty: none
     // The course view (issue 27): each lesson's row and its Restart button, x, y, width, height in
     // window coordinates as flat arrays (0 while not wholly in view); each lesson's progress as
     // "ID steps/steps tasks/tasks right/asked", lessons joined by '|'; the "Next lesson" button at

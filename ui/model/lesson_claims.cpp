@@ -167,6 +167,7 @@ ClaimResult positionError(LessonClaim const& c, ClaimFrame const& f, ClaimImages
                         std::to_string(at.y) + ") over " + std::to_string(covered) + " pixels, bound " +
                         (c.atLeast > 0.0f ? lessonNumber(c.atLeast) + " .. " : std::string()) + lessonNumber(c.bound)};
     if (covered > 0) out.worst = at;
+    out.worstValue = worst;
     return out;
 }
 
@@ -278,7 +279,7 @@ constexpr std::array<std::string_view, 1> kImageOptional{"image"};
 constexpr std::array<std::string_view, 3> kDiffersFromFields{"reference", "bound", "min_fraction"};
 constexpr std::array<std::string_view, 2> kFewerLitFields{"reference", "min_fraction"};
 constexpr std::array<std::string_view, 1> kBoundFields{"bound"};
-constexpr std::array<std::string_view, 1> kAtLeastOptional{"at_least"};
+constexpr std::array<std::string_view, 2> kAtLeastOptional{"at_least", "mark"};
 constexpr std::array<std::string_view, 1> kMostOptional{"most"};
 constexpr std::array<std::string_view, 2> kAttachmentFields{"attachment", "value"};
 
@@ -307,7 +308,8 @@ std::array<ClaimKindInfo, 9> const kClaimKinds{{
      "at least `min_fraction` of the reference's lit pixels are dark in the step"},
     {ClaimKind::PositionError, "position_error_below", kBoundFields, kAtLeastOptional, false, false, positionError,
      "on every covered pixel the stored position and the one rebuilt from depth differ by less than `bound`; with "
-     "`at_least`, the largest error is at least that (so a step's text can say how large it is)"},
+     "`at_least`, the largest error is at least that (so a step's text can say how large it is); with `mark`, the "
+     "editor rings the pixel of the largest error in the viewport, with its value"},
     {ClaimKind::TileCountMatchesCpu,
      "tile_count_matches_cpu",
      {},
@@ -355,6 +357,11 @@ bool claimNeedsReference(LessonClaim const& claim) {
 
 ClaimResult checkClaim(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
     return claimKindInfo(c.kind).check(c, f, im);
+}
+
+std::optional<ClaimMark> claimMark(LessonClaim const& c, ClaimResult const& r) {
+    if (!c.mark || !r.worst || c.kind != ClaimKind::PositionError) return std::nullopt;
+    return ClaimMark{*r.worst, r.worstValue, "largest |P_stored − P| of the frame: " + lessonNumber(r.worstValue)};
 }
 
 }  // namespace gbl::ui

@@ -48,7 +48,17 @@ struct ClaimResult {
     // position_error_below: the pixel with the largest error (top-left origin), which a step's
     // pixel task may ask the student to find.
     std::optional<glm::ivec2> worst;
+    float worstValue = 0.0f;  // the largest error itself
 };
+
+// What the viewport marks for a claim with `mark` (the editor measures it on its own frame): the
+// pixel its check named and one line saying what was measured there. nullopt: nothing to mark.
+struct ClaimMark {
+    glm::ivec2 pixel{0};  // top-left origin
+    float value = 0.0f;
+    std::string label;
+};
+std::optional<ClaimMark> claimMark(LessonClaim const& claim, ClaimResult const& result);
 
 // One row per claim kind (issue 24), the one place a kind is described: the name lesson files
 // use, its fields (required, then optional; `tolerance` defaults to 0.02 where a kind takes it),

@@ -403,6 +403,25 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         markLockedPixel(dl, origin, avail, textureSize, *lockedPixel);
         dl->PopClipRect();
     }
+    // A lesson step's measured pixel (its claim's `mark`): a ring and the measurement beside it, on
+    // the side of the ring with room, kept inside the image.
+    if (state.lessonMark && texture != 0 && textureSize.x > 0 && textureSize.y > 0) {
+        ViewportState::Mark const& m = *state.lessonMark;
+        ImVec2 const c(origin.x + (float(m.pixel.x) + 0.5f) * avail.x / float(textureSize.x),
+                       origin.y + (float(m.pixel.y) + 0.5f) * avail.y / float(textureSize.y));
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        dl->PushClipRect(origin, imageEnd, true);
+        dl->AddCircle(c, 14.0f, IM_COL32(0, 0, 0, 220), 32, 4.0f);
+        dl->AddCircle(c, 14.0f, IM_COL32(255, 60, 200, 255), 32, 2.0f);
+        dl->PopClipRect();
+        ImVec2 const size = ImGui::CalcTextSize(m.label.c_str());
+        float const line = ImGui::GetTextLineHeightWithSpacing();
+        float x = c.x + 20.0f <= imageEnd.x - size.x - 8.0f ? c.x + 20.0f : c.x - 20.0f - size.x - 8.0f;
+        x = std::clamp(x, origin.x + 4.0f, std::max(origin.x + 4.0f, imageEnd.x - size.x - 12.0f));
+        float y = c.y + 18.0f + line <= imageEnd.y ? c.y + 18.0f : c.y - 18.0f - line;
+        y = std::clamp(y, origin.y + 4.0f, std::max(origin.y + 4.0f, imageEnd.y - line - 4.0f));
+        boxedText(ImVec2(x, y), m.label);
+    }
     // A frame stopped after a pass (the Frame window's "Stop here") says so over the image, and so
     // does a camera inside a light's volume (why the volume passes lose that light with cull back).
     // Below the A/B header's lines (drawAbSplit: two; drawAbDiff: three, with its numbers).

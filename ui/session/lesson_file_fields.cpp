@@ -130,6 +130,10 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
         case ClaimKind::PositionError:
             claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
             claim.atLeast = optionalNumber("at_least", 0.0f, 0.0f, claim.bound);
+            if (auto it = c.find("mark"); it != c.end()) {
+                if (!it->is_boolean()) fail(path + ".mark", "must be true or false");
+                claim.mark = it->get<bool>();
+            }
             break;
         case ClaimKind::TileCountMatchesCpu:
             if (step.state.pipeline.mode != LightingMode::Tiled || step.state.pipeline.view != DebugView::TileLights)
