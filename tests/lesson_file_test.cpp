@@ -20,6 +20,7 @@
 #include <fstream>
 #include <functional>
 #include <optional>
+#include <regex>
 
 #include <stdlib.h>
 
@@ -230,6 +231,37 @@ TEST(LessonFile, TheDepthBlitClaimsCompareTheDisplayImage) {
         {"kind", "same_image"}, {"reference", {{"blit", "off"}}}, {"bound", 0.0}, {"image", "hdr"}};
     std::string const e = errorOf(j);
     EXPECT_EQ(e.rfind("demo.json: steps[0].claim.image must be lighting or final", 0), 0u) << e;
+}
+
+// depth_blit:3 says how many of the frame's pixels its cubes through the column change ("about
+// 1.4 %"): its claim checks that share as a range, and the text's number lies in it. A max_fraction
+// not above min_fraction is refused.
+TEST(LessonFile, TheCubesThroughTheColumnShareIsTheClaimsRange) {
+    LessonLibrary const lib = loadLessonDir(defaultLessonDir());
+    ASSERT_TRUE(lib.errors.empty()) << lib.errors.front();
+    LessonRef const ref = findLessonStep(lib, "depth_blit:3");
+    ASSERT_GE(ref.lesson, 0) << ref.error;
+    LessonStep const& step = lib.lessons[std::size_t(ref.lesson)].steps[std::size_t(ref.step)];
+    ASSERT_TRUE(step.claim && step.claim->kind == ClaimKind::DiffersFrom);
+    EXPECT_LT(step.claim->maxFraction, 1.0f);
+    int stated = 0;
+    for (std::string const* text : {&step.text.look, &step.text.answer}) {
+        std::smatch m;
+        ASSERT_TRUE(std::regex_search(*text, m, std::regex(R"(about ([0-9.]+) %)"))) << *text;
+        float const share = std::stof(m[1]) / 100.0f;
+        EXPECT_GE(share, step.claim->minFraction) << m[0];
+        EXPECT_LT(share, step.claim->maxFraction) << m[0];
+        ++stated;
+    }
+    EXPECT_EQ(stated, 2);
+    json j = minimal();
+    j["steps"][0]["claim"] = {{"kind", "differs_from"},
+                              {"reference", {{"blit", "off"}}},
+                              {"bound", 0.0},
+                              {"min_fraction", 0.2},
+                              {"max_fraction", 0.1}};
+    std::string const e = errorOf(j);
+    EXPECT_EQ(e.rfind("demo.json: steps[0].claim.max_fraction must be greater than min_fraction", 0), 0u) << e;
 }
 
 TEST(LessonFile, PlaceholdersAreSubstitutedWithLiveValues) {

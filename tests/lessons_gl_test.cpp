@@ -220,6 +220,20 @@ TEST_F(LessonsGlTest, SameImageAndDiffersFromAreOpposites) {
     EXPECT_FALSE(render(l, step).claim->holds);
 }
 
+// differs_from's max_fraction bounds the share from above: depth_blit:3's cubes fail a range that
+// ends below their share, and hold in the step's own.
+TEST_F(LessonsGlTest, DiffersFromFailsAboveItsMaxFraction) {
+    ui::Lesson const& l = lesson("depth_blit");
+    ui::LessonStep const& step = l.steps.at(2);
+    ASSERT_TRUE(step.claim && step.claim->kind == ui::ClaimKind::DiffersFrom);
+    EXPECT_TRUE(render(l, step).claim->holds);
+    auto const f = render(l, withClaim(step, [](ui::LessonClaim& c) {
+                              c.minFraction = 0.001f;
+                              c.maxFraction = 0.005f;
+                          }));
+    EXPECT_FALSE(f.claim->holds) << f.claim->detail;
+}
+
 TEST_F(LessonsGlTest, FewerLitPixelsFailsAgainstItself) {
     ui::Lesson const& l = lesson("light_volumes");
     ui::LessonStep const small = l.steps[1];

@@ -124,9 +124,13 @@ ClaimResult differsFrom(LessonClaim const& c, ClaimFrame const&, ClaimImages con
             differing += d ? 1 : 0;
         }
     float const share = covered > 0 ? float(differing) / float(covered) : 0.0f;
-    return {covered > 0 && share >= c.minFraction, std::to_string(differing) + " of " + std::to_string(covered) +
-                                                       " pixels differ by more than " + lessonNumber(c.bound) + " (" +
-                                                       lessonNumber(100.0f * share) + " %)"};
+    return {covered > 0 && share >= c.minFraction && share < c.maxFraction,
+            std::to_string(differing) + " of " + std::to_string(covered) + " pixels differ by more than " +
+                lessonNumber(c.bound) + " (" + lessonNumber(100.0f * share) + " %" +
+                (c.maxFraction < 1.0f ? ", range " + lessonNumber(100.0f * c.minFraction) + " .. " +
+                                            lessonNumber(100.0f * c.maxFraction) + " %"
+                                      : std::string()) +
+                ")"};
 }
 
 ClaimResult fewerLitPixels(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
@@ -277,6 +281,7 @@ constexpr std::array<std::string_view, 1> kToleranceOptional{"tolerance"};
 constexpr std::array<std::string_view, 2> kSameImageFields{"reference", "bound"};
 constexpr std::array<std::string_view, 1> kImageOptional{"image"};
 constexpr std::array<std::string_view, 3> kDiffersFromFields{"reference", "bound", "min_fraction"};
+constexpr std::array<std::string_view, 2> kDiffersFromOptional{"image", "max_fraction"};
 constexpr std::array<std::string_view, 2> kFewerLitFields{"reference", "min_fraction"};
 constexpr std::array<std::string_view, 1> kBoundFields{"bound"};
 constexpr std::array<std::string_view, 2> kAtLeastOptional{"at_least", "mark"};
@@ -329,8 +334,9 @@ std::array<ClaimKindInfo, 9> const kClaimKinds{{
      "at `pixel` more lights were evaluated than lit it"},
     {ClaimKind::AttachmentEquals, "attachment_equals", kAttachmentFields, kToleranceOptional, true, false,
      attachmentEquals, "the attachment at `pixel` equals `value`; null entries are not compared"},
-    {ClaimKind::DiffersFrom, "differs_from", kDiffersFromFields, kImageOptional, false, true, differsFrom,
-     "at least `min_fraction` of the covered pixels differ from the reference by more than `bound`"},
+    {ClaimKind::DiffersFrom, "differs_from", kDiffersFromFields, kDiffersFromOptional, false, true, differsFrom,
+     "at least `min_fraction` of the covered pixels differ from the reference by more than `bound`; with "
+     "`max_fraction`, fewer than that share (so a step's text can say how many pixels change)"},
 }};
 
 }  // namespace

@@ -119,6 +119,7 @@ struct LessonClaim {
     bool mark = false;
     bool most = false;         // tile_count_matches_cpu (optional): the pixel's tile lists the most lights of the frame
     float minFraction = 0.0f;  // fewer_lit_pixels, differs_from
+    float maxFraction = 1.0f;  // differs_from (optional): at most this share differs (a range, for a stated count)
     int reached = -1;  // matches_cpu (optional): how many lights add a visible amount at the pixel; -1 = unchecked
     Attachment attachment = Attachment::Normal;  // attachment_equals
     glm::vec4 value{0.0f};                       // attachment_equals

@@ -164,6 +164,9 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
         case ClaimKind::DiffersFrom:
             claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
             claim.minFraction = number(need("min_fraction"), path + ".min_fraction", 0.0f, 1.0f);
+            claim.maxFraction = optionalNumber("max_fraction", 1.0f, 0.0f, 1.0f);
+            if (claim.maxFraction <= claim.minFraction)
+                fail(path + ".max_fraction", "must be greater than min_fraction");
             claim.image = comparedImage(c, path);
             break;
         case ClaimKind::MatchesCpu:
