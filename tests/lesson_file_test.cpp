@@ -264,6 +264,22 @@ TEST(LessonFile, TheCubesThroughTheColumnShareIsTheClaimsRange) {
     EXPECT_EQ(e.rfind("demo.json: steps[0].claim.max_fraction must be greater than min_fraction", 0), 0u) << e;
 }
 
+// tiled:1 shows what is tile-related as it opens: the heat view split against quad, so the left
+// (tiled) shows the lights each tile lists and the right (quad) every light at every pixel.
+TEST(LessonFile, TheTiledStepSplitsLightsPerTileAgainstEveryLight) {
+    LessonLibrary const lib = loadLessonDir(defaultLessonDir());
+    LessonRef const ref = findLessonStep(lib, "tiled:1");
+    ASSERT_GE(ref.lesson, 0) << ref.error;
+    LessonStep const& step = lib.lessons[std::size_t(ref.lesson)].steps[std::size_t(ref.step)];
+    EXPECT_EQ(step.state.pipeline.mode, LightingMode::Tiled);
+    EXPECT_EQ(step.state.pipeline.view, DebugView::Heatmap);
+    ASSERT_TRUE(step.state.ab);
+    EXPECT_EQ(step.state.ab->view, AbView::Split);
+    EXPECT_EQ(step.state.ab->b.mode, LightingMode::Quad);
+    ASSERT_TRUE(step.claim && step.claim->kind == ClaimKind::SameImage);
+    EXPECT_EQ(step.claim->image, Attachment::Lighting);  // the lit frames, whatever the view
+}
+
 TEST(LessonFile, PlaceholdersAreSubstitutedWithLiveValues) {
     LessonValues v;
     PointLight l;

@@ -3,8 +3,8 @@
 # with --lesson at 1280x720 for a few frames, and the last --log-frames line must show the step's
 # point: position_from_depth:2 rings the pixel of the frame's largest reconstruction error (its
 # claim's `mark`: inside the step's task region, with a value in the claim's range);
-# fullscreen_pass:3 shows the lit diff against the frame it pinned (`lit_pin`). A screenshot of
-# each step is left in WORK_DIR to look at.
+# fullscreen_pass:3 shows the lit diff against the frame it pinned (`lit_pin`); tiled:1 splits the
+# heat view (lights per tile against every light). A screenshot of each step is left in WORK_DIR.
 # usage: ui_lesson_views.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
 set -eu
 bin="$1"
@@ -58,5 +58,12 @@ log="$work/drag.jsonl"
     fail "fullscreen_pass:3 with light 06 at intensity 3: $(grep 'ui-test FAIL' "$work/drag.log")"
 [ "$(field lessonTasks)" = '"1"' ] || fail "fullscreen_pass:3's task did not tick at intensity 3: $(field lessonTasks)"
 echo "fullscreen_pass:3 shows the lit diff: black at first, lit after the drag ($(grep 'expect-lit-diff max >' "$work/drag.log"))"
+
+open tiled:1
+[ "$(field view)" = '"heatmap"' ] || fail "tiled:1 shows view $(field view), want the heat view"
+divider=$(field abDivider)
+awk -v d="$divider" 'BEGIN { exit !(d > 0 && d < 1) }' || fail "tiled:1 opens no A/B split (abDivider $divider)"
+[ "$(field clipped)" = "[]" ] || fail "tiled:1 clips text: $(field clipped)"
+echo "tiled:1 splits the heat view at $divider"
 
 echo "ui_lesson_views: PASS"

@@ -355,7 +355,10 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
     } else if (texture != 0) {
         // GL images start at the bottom row; flip v so the picture is upright.
         ImGui::GetWindowDrawList()->AddImage(toImTexture(texture), origin, imageEnd, ImVec2(0, 1), ImVec2(1, 0));
-        if (abOn && ab->ab.view == AbView::Split) drawAbSplit(*ab, settings, origin, avail);
+        // The heat views' legend sits at the bottom of the image: the split's pass lines go above it.
+        bool const heat = settings.view == DebugView::Heatmap || settings.view == DebugView::TileLights;
+        if (abOn && ab->ab.view == AbView::Split)
+            drawAbSplit(*ab, settings, origin, avail, heat ? heatLegendHeight(origin, imageEnd, textureSize) : 0.0f);
         // The marked check finding's pixels, translucent over the frame (same size: the G-buffer's).
         if (imported && state.findingTexture != 0)
             ImGui::GetWindowDrawList()->AddImage(toImTexture(state.findingTexture), origin, imageEnd, ImVec2(0, 1),
