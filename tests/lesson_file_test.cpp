@@ -280,6 +280,40 @@ TEST(LessonFile, TheTiledStepSplitsLightsPerTileAgainstEveryLight) {
     EXPECT_EQ(step.claim->image, Attachment::Lighting);  // the lit frames, whatever the view
 }
 
+// light_volumes:4 shows what the stencil saves: the heat view split against cull front, and its
+// text's saving ("about 17 %") lies in the range its fewer_evaluations claim checks. The kind needs
+// the heat view and a max_fraction above min_fraction.
+TEST(LessonFile, TheStencilStepsSavingIsTheClaimsRange) {
+    LessonLibrary const lib = loadLessonDir(defaultLessonDir());
+    ASSERT_TRUE(lib.errors.empty()) << lib.errors.front();
+    LessonRef const ref = findLessonStep(lib, "light_volumes:4");
+    ASSERT_GE(ref.lesson, 0) << ref.error;
+    LessonStep const& step = lib.lessons[std::size_t(ref.lesson)].steps[std::size_t(ref.step)];
+    EXPECT_EQ(step.state.pipeline.cull, CullMode::Stencil);
+    EXPECT_EQ(step.state.pipeline.view, DebugView::Heatmap);
+    ASSERT_TRUE(step.state.ab);
+    EXPECT_EQ(step.state.ab->view, AbView::Split);
+    EXPECT_EQ(step.state.ab->b.cull, CullMode::Front);
+    ASSERT_TRUE(step.claim && step.claim->kind == ClaimKind::FewerEvaluations);
+    ASSERT_TRUE(step.claim->reference);
+    EXPECT_EQ(step.claim->reference->cull, CullMode::Front);
+    for (std::string const* text : {&step.text.look, &step.text.answer}) {
+        std::smatch m;
+        ASSERT_TRUE(std::regex_search(*text, m, std::regex(R"(about ([0-9.]+) %)"))) << *text;
+        float const saved = std::stof(m[1]) / 100.0f;
+        EXPECT_GE(saved, step.claim->minFraction) << m[0];
+        EXPECT_LT(saved, step.claim->maxFraction) << m[0];
+    }
+    json j = minimal();
+    j["steps"][0]["claim"] = {{"kind", "fewer_evaluations"}, {"reference", {{"cull", "front"}}}, {"min_fraction", 0.1}};
+    std::string e = errorOf(j);
+    EXPECT_EQ(e.rfind("demo.json: steps[0].claim.kind needs pipeline.view \"heatmap\"", 0), 0u) << e;
+    j["steps"][0]["pipeline"]["view"] = "heatmap";
+    j["steps"][0]["claim"]["max_fraction"] = 0.05;
+    e = errorOf(j);
+    EXPECT_EQ(e.rfind("demo.json: steps[0].claim.max_fraction must be greater than min_fraction", 0), 0u) << e;
+}
+
 TEST(LessonFile, PlaceholdersAreSubstitutedWithLiveValues) {
     LessonValues v;
     PointLight l;

@@ -234,6 +234,23 @@ TEST_F(LessonsGlTest, DiffersFromFailsAboveItsMaxFraction) {
     EXPECT_FALSE(f.claim->holds) << f.claim->detail;
 }
 
+// fewer_evaluations compares the heat map's sums: the stencil step against itself saves nothing,
+// and cull front against the stencil runs more, not fewer.
+TEST_F(LessonsGlTest, FewerEvaluationsFailsAgainstItselfAndTheOtherWayRound) {
+    ui::Lesson const& l = lesson("light_volumes");
+    ui::LessonStep const& step = l.steps.at(3);
+    ASSERT_TRUE(step.claim && step.claim->kind == ui::ClaimKind::FewerEvaluations);
+    auto const own = render(l, step);
+    ASSERT_TRUE(own.claim);
+    EXPECT_TRUE(own.claim->holds) << own.claim->detail;
+    auto const self = render(l, withClaim(step, [&](ui::LessonClaim& c) { c.reference = step.state.pipeline; }));
+    EXPECT_FALSE(self.claim->holds) << self.claim->detail;
+    ui::LessonStep front = step;
+    front.state.pipeline.cull = CullMode::Front;
+    auto const reversed = render(l, withClaim(front, [&](ui::LessonClaim& c) { c.reference = step.state.pipeline; }));
+    EXPECT_FALSE(reversed.claim->holds) << reversed.claim->detail;
+}
+
 TEST_F(LessonsGlTest, FewerLitPixelsFailsAgainstItself) {
     ui::Lesson const& l = lesson("light_volumes");
     ui::LessonStep const small = l.steps[1];

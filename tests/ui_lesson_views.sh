@@ -4,7 +4,9 @@
 # point: position_from_depth:2 rings the pixel of the frame's largest reconstruction error (its
 # claim's `mark`: inside the step's task region, with a value in the claim's range);
 # fullscreen_pass:3 shows the lit diff against the frame it pinned (`lit_pin`); tiled:1 splits the
-# heat view (lights per tile against every light). A screenshot of each step is left in WORK_DIR.
+# heat view (lights per tile against every light); light_volumes:4 splits the heat view of the
+# stencil against cull front and sums each side's light evaluations. A screenshot of each step is
+# left in WORK_DIR.
 # usage: ui_lesson_views.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
 set -eu
 bin="$1"
@@ -65,5 +67,17 @@ divider=$(field abDivider)
 awk -v d="$divider" 'BEGIN { exit !(d > 0 && d < 1) }' || fail "tiled:1 opens no A/B split (abDivider $divider)"
 [ "$(field clipped)" = "[]" ] || fail "tiled:1 clips text: $(field clipped)"
 echo "tiled:1 splits the heat view at $divider"
+
+open light_volumes:4
+[ "$(field view)" = '"heatmap"' ] || fail "light_volumes:4 shows view $(field view), want the heat view"
+evaluations=$(field abEvaluations | tr -d '[]')
+# A (the stencil) runs the lighting shader 14 to 20 % fewer times than B (cull front), as its claim says.
+echo "$evaluations" | awk -F, '{
+    if (NF != 2 || $2 <= 0) { print "no evaluations"; exit 1 }
+    saved = 100 * ($2 - $1) / $2
+    if (saved < 14 || saved >= 20) { print "the stencil saves " saved " %, not 14 .. 20 %"; exit 1 }
+    print "light_volumes:4: A " $1 ", B " $2 " light evaluations: the stencil saves " saved " %"
+}' || fail "light_volumes:4's evaluations: $(field abEvaluations)"
+[ "$(field clipped)" = "[]" ] || fail "light_volumes:4 clips text: $(field clipped)"
 
 echo "ui_lesson_views: PASS"

@@ -70,7 +70,9 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"abToggle\":" + rect(l.abToggle);
     out += ",\"pinLit\":" + rect(l.pinLit);
     out += ",\"litDiff\":" + rect(l.litDiff);
-    out += ",\"abDivider\":" + number(l.abDivider);
+    out += ",\"abDivider\":" + number(l.abDivider) + ",\"abEvaluations\":[";
+    for (std::size_t i = 0; i < l.abEvaluations.size(); ++i) out += (i ? "," : "") + std::to_string(l.abEvaluations[i]);
+    out += "]";
     out += ",\"pickable\":[";
     for (std::size_t i = 0; i < l.pickable.size(); ++i)
         out += (i ? ",[" : "[") + std::to_string(l.pickable[i].index) + "," + number(l.pickable[i].window.x) + "," +

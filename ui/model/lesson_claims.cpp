@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 
 namespace gbl::ui {
 
@@ -133,6 +134,15 @@ ClaimResult differsFrom(LessonClaim const& c, ClaimFrame const&, ClaimImages con
                 ")"};
 }
 
+ClaimResult fewerEvaluations(LessonClaim const& c, ClaimFrame const&, ClaimImages const& im) {
+    if (!im.referenceCoverage || im.coverage.channels < 1) return {false, "no coverage images (show heatmap)"};
+    double const step = evaluationCount(im.coverage), ref = evaluationCount(*im.referenceCoverage);
+    double const saved = ref > 0.0 ? (ref - step) / ref : 0.0;
+    return {ref > 0.0 && saved >= double(c.minFraction) && saved < double(c.maxFraction),
+            evaluationsLine(step, ref) + " than the reference (range " + lessonNumber(100.0f * c.minFraction) + " .. " +
+                lessonNumber(100.0f * c.maxFraction) + " %)"};
+}
+
 ClaimResult fewerLitPixels(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
     if (!im.referenceLighting) return {false, "no reference frame"};
     // An epsilon of a few fp16 steps: a pixel that a light reaches gets at least that much.
@@ -248,6 +258,22 @@ int litPixelCount(FloatImage const& lighting, ClaimImages const& im, glm::vec3 a
     return n;
 }
 
+double evaluationCount(FloatImage const& coverage) {
+    double n = 0.0;
+    if (coverage.channels < 1) return n;
+    for (int y = 0; y < coverage.height; ++y)
+        for (int x = 0; x < coverage.width; ++x) n += double(coverage.at(x, y, 0));
+    return n;
+}
+
+std::string evaluationsLine(double a, double b) {
+    char buf[160];
+    double const saved = b > 0.0 ? 100.0 * (b - a) / b : 0.0;
+    std::snprintf(buf, sizeof buf, "light evaluations (the heat map summed): A %.4g M, B %.4g M: A runs %.3g %% %s",
+                  a * 1e-6, b * 1e-6, std::abs(saved), saved >= 0.0 ? "fewer" : "more");
+    return buf;
+}
+
 int cpuTileLightCount(ClaimImages const& im, ClaimFrame const& f, glm::ivec2 pixel) {
     int const w = im.depth.width, h = im.depth.height;
     TileGrid const grid = tileGrid(w, h);
@@ -282,6 +308,8 @@ constexpr std::array<std::string_view, 2> kSameImageFields{"reference", "bound"}
 constexpr std::array<std::string_view, 1> kImageOptional{"image"};
 constexpr std::array<std::string_view, 3> kDiffersFromFields{"reference", "bound", "min_fraction"};
 constexpr std::array<std::string_view, 2> kDiffersFromOptional{"image", "max_fraction"};
+constexpr std::array<std::string_view, 2> kFewerEvaluationsFields{"reference", "min_fraction"};
+constexpr std::array<std::string_view, 1> kMaxFractionOptional{"max_fraction"};
 constexpr std::array<std::string_view, 2> kFewerLitFields{"reference", "min_fraction"};
 constexpr std::array<std::string_view, 1> kBoundFields{"bound"};
 constexpr std::array<std::string_view, 2> kAtLeastOptional{"at_least", "mark"};
@@ -289,7 +317,7 @@ constexpr std::array<std::string_view, 1> kMostOptional{"most"};
 constexpr std::array<std::string_view, 2> kAttachmentFields{"attachment", "value"};
 
 // kind, name, fields, optional fields, about the step's pixel, needs a reference frame, check, doc.
-std::array<ClaimKindInfo, 9> const kClaimKinds{{
+std::array<ClaimKindInfo, 10> const kClaimKinds{{
     {ClaimKind::MatchesCpu,
      "matches_cpu",
      {},
@@ -337,6 +365,10 @@ std::array<ClaimKindInfo, 9> const kClaimKinds{{
     {ClaimKind::DiffersFrom, "differs_from", kDiffersFromFields, kDiffersFromOptional, false, true, differsFrom,
      "at least `min_fraction` of the covered pixels differ from the reference by more than `bound`; with "
      "`max_fraction`, fewer than that share (so a step's text can say how many pixels change)"},
+    {ClaimKind::FewerEvaluations, "fewer_evaluations", kFewerEvaluationsFields, kMaxFractionOptional, false, true,
+     fewerEvaluations,
+     "the heat map's light evaluations summed over the frame are at least `min_fraction` fewer than the "
+     "reference's (and, with `max_fraction`, less than that); needs the heatmap view"},
 }};
 
 }  // namespace

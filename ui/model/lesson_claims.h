@@ -31,6 +31,7 @@ struct ClaimImages {
     FloatImage coverage;  // filled only when the step shows the heat map or the tile view
     std::optional<FloatImage> referenceLighting;
     std::optional<FloatImage> referenceDisplay;
+    std::optional<FloatImage> referenceCoverage;  // when the step shows the heat map
 };
 
 struct ClaimFrame {
@@ -88,6 +89,11 @@ ClaimResult checkClaim(LessonClaim const& claim, ClaimFrame const& frame, ClaimI
 std::optional<ShadingInputs> surfaceAt(ClaimImages const& images, ClaimFrame const& frame, glm::ivec2 pixel);
 // Pixels whose lit value exceeds ambient * albedo by more than `epsilon` in any channel.
 int litPixelCount(FloatImage const& lighting, ClaimImages const& images, glm::vec3 ambient, float epsilon);
+// The heat map's light evaluations summed over the frame (coverage x: the lighting shader's runs
+// per pixel); what fewer_evaluations compares and the A/B split shows in the heat view.
+double evaluationCount(FloatImage const& coverage);
+// "A 1.234 M, B 2.345 M light evaluations: A runs 47.3 % fewer" (or "more").
+std::string evaluationsLine(double a, double b);
 // Lights the CPU tile test lists for the tile holding `pixel` (depth bounds from the depth image).
 int cpuTileLightCount(ClaimImages const& images, ClaimFrame const& frame, glm::ivec2 pixel);
 

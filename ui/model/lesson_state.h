@@ -106,6 +106,8 @@ enum class ClaimKind {
     ExecutedExceedsLit,   // at the pixel, more lights were evaluated than lit it (coverage x > y)
     AttachmentEquals,     // an attachment's value at the pixel equals `value` within tolerance
     DiffersFrom,          // at least min_fraction of the covered pixels differ from the reference by > bound
+    FewerEvaluations,     // the heat map's evaluations, summed, are min_fraction .. max_fraction fewer than the
+                          // reference's
 };
 struct LessonClaim {
     ClaimKind kind = ClaimKind::MatchesCpu;
@@ -118,8 +120,9 @@ struct LessonClaim {
     // pixel of the largest error in the viewport, with its value.
     bool mark = false;
     bool most = false;         // tile_count_matches_cpu (optional): the pixel's tile lists the most lights of the frame
-    float minFraction = 0.0f;  // fewer_lit_pixels, differs_from
-    float maxFraction = 1.0f;  // differs_from (optional): at most this share differs (a range, for a stated count)
+    float minFraction = 0.0f;  // fewer_lit_pixels, differs_from, fewer_evaluations
+    // differs_from, fewer_evaluations (optional): below this share (a range, for a stated count)
+    float maxFraction = 1.0f;
     int reached = -1;  // matches_cpu (optional): how many lights add a visible amount at the pixel; -1 = unchecked
     Attachment attachment = Attachment::Normal;  // attachment_equals
     glm::vec4 value{0.0f};                       // attachment_equals

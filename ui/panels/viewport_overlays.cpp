@@ -4,6 +4,7 @@
 #include "core/cluster_math.h"
 #include "core/heat_scale.h"
 #include "model/colormap.h"
+#include "model/lesson_claims.h"
 #include "panels/gui_compat.h"
 
 #include <algorithm>
@@ -145,6 +146,9 @@ void drawAbSplit(ViewportTeaching const& v, PipelineSettings const& a, ImVec2 or
     boxedText(ImVec2(end.x - ImGui::CalcTextSize(b.c_str()).x - 8, origin.y + 6), b);
     boxedText(ImVec2(origin.x + 8, origin.y + 6 + line), "B differs in: " + describeAb(a, v.settingsB));
     float const bottom = end.y - bottomInset;
+    if (ab.evaluations)
+        boxedText(ImVec2(origin.x + 8, bottom - 3 * line - 4),
+                  evaluationsLine(ab.evaluations->first, ab.evaluations->second));
     boxedText(ImVec2(origin.x + 8, bottom - 2 * line - 4), passLine("A", ab.passesA, ab.gpuMsA, avail.x - 16));
     boxedText(ImVec2(origin.x + 8, bottom - line - 4), passLine("B", ab.passesB, ab.gpuMsB, avail.x - 16));
 }

@@ -169,6 +169,13 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
                 fail(path + ".max_fraction", "must be greater than min_fraction");
             claim.image = comparedImage(c, path);
             break;
+        case ClaimKind::FewerEvaluations:
+            if (step.state.pipeline.view != DebugView::Heatmap) fail(path + ".kind", "needs pipeline.view \"heatmap\"");
+            claim.minFraction = number(need("min_fraction"), path + ".min_fraction", 0.0f, 1.0f);
+            claim.maxFraction = optionalNumber("max_fraction", 1.0f, 0.0f, 1.0f);
+            if (claim.maxFraction <= claim.minFraction)
+                fail(path + ".max_fraction", "must be greater than min_fraction");
+            break;
         case ClaimKind::MatchesCpu:
             if (auto it = c.find("reached"); it != c.end())
                 claim.reached = integer(*it, path + ".reached", 0, int(step.state.lights.size()));
