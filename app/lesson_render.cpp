@@ -13,6 +13,8 @@ LessonStepFrame renderLessonStep(Renderer& renderer, ui::LessonStep const& step)
         renderer.render({s.camera, s.lights, *step.claim->reference, true});
         images.referenceLighting = renderer.readAttachment(Attachment::Lighting);
         images.referenceDisplay = renderer.readAttachment(Attachment::Final);
+        if (step.claim->reference->view == DebugView::Heatmap)
+            images.referenceCoverage = renderer.readAttachment(Attachment::Coverage);
     }
     out.stats = renderer.render({s.camera, s.lights, s.pipeline, true});
     if (!step.claim) return out;

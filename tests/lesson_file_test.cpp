@@ -20,6 +20,7 @@
 #include <fstream>
 #include <functional>
 #include <optional>
+#include <regex>
 
 #include <stdlib.h>
 
@@ -230,6 +231,87 @@ TEST(LessonFile, TheDepthBlitClaimsCompareTheDisplayImage) {
         {"kind", "same_image"}, {"reference", {{"blit", "off"}}}, {"bound", 0.0}, {"image", "hdr"}};
     std::string const e = errorOf(j);
     EXPECT_EQ(e.rfind("demo.json: steps[0].claim.image must be lighting or final", 0), 0u) << e;
+}
+
+// depth_blit:3 says how many of the frame's pixels its cubes through the column change ("about
+// 1.4 %"): its claim checks that share as a range, and the text's number lies in it. A max_fraction
+// not above min_fraction is refused.
+TEST(LessonFile, TheCubesThroughTheColumnShareIsTheClaimsRange) {
+    LessonLibrary const lib = loadLessonDir(defaultLessonDir());
+    ASSERT_TRUE(lib.errors.empty()) << lib.errors.front();
+    LessonRef const ref = findLessonStep(lib, "depth_blit:3");
+    ASSERT_GE(ref.lesson, 0) << ref.error;
+    LessonStep const& step = lib.lessons[std::size_t(ref.lesson)].steps[std::size_t(ref.step)];
+    ASSERT_TRUE(step.claim && step.claim->kind == ClaimKind::DiffersFrom);
+    EXPECT_LT(step.claim->maxFraction, 1.0f);
+    int stated = 0;
+    for (std::string const* text : {&step.text.look, &step.text.answer}) {
+        std::smatch m;
+        ASSERT_TRUE(std::regex_search(*text, m, std::regex(R"(about ([0-9.]+) %)"))) << *text;
+        float const share = std::stof(m[1]) / 100.0f;
+        EXPECT_GE(share, step.claim->minFraction) << m[0];
+        EXPECT_LT(share, step.claim->maxFraction) << m[0];
+        ++stated;
+    }
+    EXPECT_EQ(stated, 2);
+    json j = minimal();
+    j["steps"][0]["claim"] = {{"kind", "differs_from"},
+                              {"reference", {{"blit", "off"}}},
+                              {"bound", 0.0},
+                              {"min_fraction", 0.2},
+                              {"max_fraction", 0.1}};
+    std::string const e = errorOf(j);
+    EXPECT_EQ(e.rfind("demo.json: steps[0].claim.max_fraction must be greater than min_fraction", 0), 0u) << e;
+}
+
+// tiled:1 shows what is tile-related as it opens: the heat view split against quad, so the left
+// (tiled) shows the lights each tile lists and the right (quad) every light at every pixel.
+TEST(LessonFile, TheTiledStepSplitsLightsPerTileAgainstEveryLight) {
+    LessonLibrary const lib = loadLessonDir(defaultLessonDir());
+    LessonRef const ref = findLessonStep(lib, "tiled:1");
+    ASSERT_GE(ref.lesson, 0) << ref.error;
+    LessonStep const& step = lib.lessons[std::size_t(ref.lesson)].steps[std::size_t(ref.step)];
+    EXPECT_EQ(step.state.pipeline.mode, LightingMode::Tiled);
+    EXPECT_EQ(step.state.pipeline.view, DebugView::Heatmap);
+    ASSERT_TRUE(step.state.ab);
+    EXPECT_EQ(step.state.ab->view, AbView::Split);
+    EXPECT_EQ(step.state.ab->b.mode, LightingMode::Quad);
+    ASSERT_TRUE(step.claim && step.claim->kind == ClaimKind::SameImage);
+    EXPECT_EQ(step.claim->image, Attachment::Lighting);  // the lit frames, whatever the view
+}
+
+// light_volumes:4 shows what the stencil saves: the heat view split against cull front, and its
+// text's saving ("about 17 %") lies in the range its fewer_evaluations claim checks. The kind needs
+// the heat view and a max_fraction above min_fraction.
+TEST(LessonFile, TheStencilStepsSavingIsTheClaimsRange) {
+    LessonLibrary const lib = loadLessonDir(defaultLessonDir());
+    ASSERT_TRUE(lib.errors.empty()) << lib.errors.front();
+    LessonRef const ref = findLessonStep(lib, "light_volumes:4");
+    ASSERT_GE(ref.lesson, 0) << ref.error;
+    LessonStep const& step = lib.lessons[std::size_t(ref.lesson)].steps[std::size_t(ref.step)];
+    EXPECT_EQ(step.state.pipeline.cull, CullMode::Stencil);
+    EXPECT_EQ(step.state.pipeline.view, DebugView::Heatmap);
+    ASSERT_TRUE(step.state.ab);
+    EXPECT_EQ(step.state.ab->view, AbView::Split);
+    EXPECT_EQ(step.state.ab->b.cull, CullMode::Front);
+    ASSERT_TRUE(step.claim && step.claim->kind == ClaimKind::FewerEvaluations);
+    ASSERT_TRUE(step.claim->reference);
+    EXPECT_EQ(step.claim->reference->cull, CullMode::Front);
+    for (std::string const* text : {&step.text.look, &step.text.answer}) {
+        std::smatch m;
+        ASSERT_TRUE(std::regex_search(*text, m, std::regex(R"(about ([0-9.]+) %)"))) << *text;
+        float const saved = std::stof(m[1]) / 100.0f;
+        EXPECT_GE(saved, step.claim->minFraction) << m[0];
+        EXPECT_LT(saved, step.claim->maxFraction) << m[0];
+    }
+    json j = minimal();
+    j["steps"][0]["claim"] = {{"kind", "fewer_evaluations"}, {"reference", {{"cull", "front"}}}, {"min_fraction", 0.1}};
+    std::string e = errorOf(j);
+    EXPECT_EQ(e.rfind("demo.json: steps[0].claim.kind needs pipeline.view \"heatmap\"", 0), 0u) << e;
+    j["steps"][0]["pipeline"]["view"] = "heatmap";
+    j["steps"][0]["claim"]["max_fraction"] = 0.05;
+    e = errorOf(j);
+    EXPECT_EQ(e.rfind("demo.json: steps[0].claim.max_fraction must be greater than min_fraction", 0), 0u) << e;
 }
 
 TEST(LessonFile, PlaceholdersAreSubstitutedWithLiveValues) {

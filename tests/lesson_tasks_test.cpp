@@ -470,6 +470,26 @@ TEST(LessonTasks, ShippedTasksAreMetByTheIntendedActionOnly) {
     off.pipeline.depthCopy = DepthCopy::Off;
     EXPECT_TRUE(taskMet(s->tasks[0], off.context(*s, *l)));
 
+    // fullscreen_pass:3: light 06's intensity dragged to 3 (from 1.4918); not another light's, not
+    // light 06's Kq (which also brightens it), not the intensity with another field changed too.
+    s = shipped(lib, "fullscreen_pass:3", &l);
+    ASSERT_TRUE(s && s->tasks.size() == 1);
+    EXPECT_NEAR(s->state.lights[6].intensity, 1.4918f, 1e-4f);
+    EXPECT_TRUE(s->state.litPinDiff);  // the step's diff shows the change
+    StepView drag(*s);
+    drag.lights[6].intensity = 3.0f;
+    EXPECT_TRUE(taskMet(s->tasks[0], drag.context(*s, *l)));
+    drag.lights[6].intensity = 2.0f;  // dragged, but not far enough
+    EXPECT_FALSE(taskMet(s->tasks[0], drag.context(*s, *l)));
+    StepView other(*s);
+    other.lights[5].intensity = 3.0f;
+    EXPECT_FALSE(taskMet(s->tasks[0], other.context(*s, *l)));
+    StepView falloff(*s);
+    falloff.lights[6].kq *= 0.5f;
+    EXPECT_FALSE(taskMet(s->tasks[0], falloff.context(*s, *l)));
+    falloff.lights[6].intensity = 3.0f;
+    EXPECT_FALSE(taskMet(s->tasks[0], falloff.context(*s, *l)));
+
     // position_from_depth:2: a pixel of the region with the largest error, locked.
     s = shipped(lib, "position_from_depth:2", &l);
     ASSERT_TRUE(s && s->tasks.size() == 1);
@@ -538,7 +558,7 @@ TEST(LessonClaims, EveryKindHasOneRow) {
         EXPECT_TRUE(k.check) << k.name;
         EXPECT_FALSE(k.doc.empty()) << k.name;
     }
-    EXPECT_EQ(kinds.size(), std::size_t(ClaimKind::DiffersFrom) + 1);
+    EXPECT_EQ(kinds.size(), std::size_t(ClaimKind::FewerEvaluations) + 1);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "core/pipeline_fields.h"
 #include "gl_fixture.h"
 #include "lesson_render.h"
+#include "model/lesson_text.h"
 #include "scene/default_scene.h"
 #include "session/lesson_file.h"
 #include "test_paths.h"
@@ -99,6 +100,31 @@ TEST_F(LessonsGlTest, ThePixelTaskRegionHoldsTheLargestPositionError) {
     EXPECT_FALSE(ui::taskMet(step.tasks[0], ctx));
 }
 
+// The step rings that pixel (its claim's `mark`, which the editor measures on its own frame): the
+// mark is the claim's largest error, its value within the claim's range and printed in its label,
+// and the step's task is met there. A claim without `mark` marks nothing.
+TEST_F(LessonsGlTest, ThePositionErrorStepMarksItsLargestError) {
+    ui::Lesson const& l = lesson("position_from_depth");
+    ui::LessonStep const& step = l.steps.at(1);
+    ASSERT_TRUE(step.claim && step.claim->mark);
+    LessonStepFrame const f = render(l, step);
+    ASSERT_TRUE(f.claim && f.claim->worst) << (f.claim ? f.claim->detail : "no claim");
+    std::optional<ui::ClaimMark> const m = ui::claimMark(*step.claim, *f.claim);
+    ASSERT_TRUE(m);
+    EXPECT_EQ(m->pixel, *f.claim->worst);
+    EXPECT_GE(m->value, step.claim->atLeast);
+    EXPECT_LT(m->value, step.claim->bound);
+    EXPECT_NE(m->label.find(ui::lessonNumber(m->value)), std::string::npos) << m->label;
+    ui::TaskContext ctx;
+    ctx.pixelLocked = true;
+    ctx.frameSize = ctx.lessonSize = {l.width, l.height};
+    ctx.pixel = m->pixel;
+    EXPECT_TRUE(ui::taskMet(step.tasks.at(0), ctx));
+    ui::LessonClaim plain = *step.claim;
+    plain.mark = false;
+    EXPECT_FALSE(ui::claimMark(plain, *f.claim));
+}
+
 // The shipped setting tasks, done on the real frame: the step's state with the task's value shows
 // what the task is about (a light lost, cubes through walls, no light cut off).
 TEST_F(LessonsGlTest, SettingTasksShowTheirPointOnTheRealFrame) {
@@ -192,6 +218,37 @@ TEST_F(LessonsGlTest, SameImageAndDiffersFromAreOpposites) {
     EXPECT_TRUE(render(l, step).claim->holds);
     step.claim->reference = front.state.pipeline;
     EXPECT_FALSE(render(l, step).claim->holds);
+}
+
+// differs_from's max_fraction bounds the share from above: depth_blit:3's cubes fail a range that
+// ends below their share, and hold in the step's own.
+TEST_F(LessonsGlTest, DiffersFromFailsAboveItsMaxFraction) {
+    ui::Lesson const& l = lesson("depth_blit");
+    ui::LessonStep const& step = l.steps.at(2);
+    ASSERT_TRUE(step.claim && step.claim->kind == ui::ClaimKind::DiffersFrom);
+    EXPECT_TRUE(render(l, step).claim->holds);
+    auto const f = render(l, withClaim(step, [](ui::LessonClaim& c) {
+                              c.minFraction = 0.001f;
+                              c.maxFraction = 0.005f;
+                          }));
+    EXPECT_FALSE(f.claim->holds) << f.claim->detail;
+}
+
+// fewer_evaluations compares the heat map's sums: the stencil step against itself saves nothing,
+// and cull front against the stencil runs more, not fewer.
+TEST_F(LessonsGlTest, FewerEvaluationsFailsAgainstItselfAndTheOtherWayRound) {
+    ui::Lesson const& l = lesson("light_volumes");
+    ui::LessonStep const& step = l.steps.at(3);
+    ASSERT_TRUE(step.claim && step.claim->kind == ui::ClaimKind::FewerEvaluations);
+    auto const own = render(l, step);
+    ASSERT_TRUE(own.claim);
+    EXPECT_TRUE(own.claim->holds) << own.claim->detail;
+    auto const self = render(l, withClaim(step, [&](ui::LessonClaim& c) { c.reference = step.state.pipeline; }));
+    EXPECT_FALSE(self.claim->holds) << self.claim->detail;
+    ui::LessonStep front = step;
+    front.state.pipeline.cull = CullMode::Front;
+    auto const reversed = render(l, withClaim(front, [&](ui::LessonClaim& c) { c.reference = step.state.pipeline; }));
+    EXPECT_FALSE(reversed.claim->holds) << reversed.claim->detail;
 }
 
 TEST_F(LessonsGlTest, FewerLitPixelsFailsAgainstItself) {

@@ -95,7 +95,7 @@ click 4
 # Restart clears that lesson's progress only.
 click_row courseRestart 2
 [ "$(progress position_from_depth)" = "0/4 0/1 0/0" ] || fail "Restart left $(progress position_from_depth)"
-[ "$(progress fullscreen_pass)" = "1/3 0/0 0/0" ] || fail "Restart of another lesson changed fullscreen_pass: $(progress fullscreen_pass)"
+[ "$(progress fullscreen_pass)" = "1/3 0/1 0/0" ] || fail "Restart of another lesson changed fullscreen_pass: $(progress fullscreen_pass)"
 grep -q '"position_from_depth"' "$progress_file" && fail "the progress file still names the restarted lesson"
 grep -q '"fullscreen_pass"' "$progress_file" || fail "the progress file lost another lesson's progress"
 shot course-restarted
@@ -106,7 +106,7 @@ rm -f "$GBL_RECOVERY_DIR"/*
 # --- a progress file that cannot be read: no progress, and the file is kept until new progress ----
 printf 'not json' > "$progress_file"
 start_editor broken
-[ "$(progress fullscreen_pass)" = "0/3 0/0 0/0" ] || fail "a broken progress file gave progress: $(field courseProgress)"
+[ "$(progress fullscreen_pass)" = "0/3 0/1 0/0" ] || fail "a broken progress file gave progress: $(field courseProgress)"
 [ "$(cat "$progress_file")" = "not json" ] || fail "the broken progress file was written over before any progress"
 [ "$(grep -c "progress file not read" "$work/broken.log")" = 1 ] ||
     fail "not one message about the broken progress file: $(cat "$work/broken.log")"

@@ -1,6 +1,7 @@
 // Rendering the teaching views of the editor's frame.
 #include "ab_frame.h"
 
+#include "model/lesson_claims.h"
 #include "model/normal_angle.h"
 
 #include "gl/gl_api.h"
@@ -57,8 +58,13 @@ FrameStats renderEditorFrame(EditorState& state, Renderer& renderer, FrameInput 
     // The normal angle needs B's decoded normals: read before A's frame replaces the G-buffer.
     bool const angle = ab.view == AbView::Diff && ab.metric == AbMetric::NormalAngle;
     FloatImage const normalsB = angle ? renderer.readAttachment(Attachment::Normal) : FloatImage{};
+    // The heat view counts the lighting shader's runs per pixel: both sides' sums, to compare.
+    bool const heat = a.settings.view == DebugView::Heatmap;
+    double const evaluationsB = heat ? evaluationCount(renderer.readAttachment(Attachment::Coverage)) : 0.0;
     FrameStats const statsA = renderer.render(a);
     setLitValues(ab.pin, renderer.readAttachment(Attachment::Lighting), frame);
+    ab.evaluations.reset();
+    if (heat) ab.evaluations = {evaluationCount(renderer.readAttachment(Attachment::Coverage)), evaluationsB};
     if (angle) {
         ab.normalDiff = normalAngleDiff(renderer.readAttachment(Attachment::Normal), normalsB, ab.angleThreshold);
         if (ab.normalDiff.comparable)

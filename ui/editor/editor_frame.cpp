@@ -316,6 +316,7 @@ void renderScene(Editor& editor, FrameTimes& times) {
         // Interactive frames take the previous frame's GPU timings instead of waiting for
         // this one's; a measurement waits anyway (glFinish), so it can have exact ones.
         times.frameStats = ui::renderEditorFrame(state, renderer, frameInput, editor.frame, editor.gpu.ab);
+    markLessonClaim(editor, times.rendered);
     if (times.rendered || state.frame.passes.empty())
         state.frame.passes = renderer.framePasses(frameInput);
     else

@@ -3,6 +3,7 @@
 // open a file) with one undo entry per step.
 #include "editor_loop.h"
 
+#include "model/lesson_claims.h"
 #include "model/lesson_text.h"
 #include "panels/panel_glossary.h"
 #include "panels/panel_lessons.h"
@@ -122,6 +123,19 @@ void keepStepPixel(Editor& editor) {
     auto const& pixel = editor.course.library.lessons[std::size_t(l.lesson)].steps[std::size_t(l.step)].state.pixel;
     if (pixel) editor.state.inspector.pixel = ui::lessonPixel(*pixel, frameSize(editor));
     l.pixelFrameSize = frameSize(editor);
+}
+
+// A step's lit pin (`lit_pin`) of another size than the frame compares nothing: it is taken again
+// at the frame's size (the editor's first frames settle the viewport's size; a window resized).
+void keepStepPin(Editor& editor) {
+    LessonState const& l = editor.course.lessons;
+    if (l.lesson < 0) return;
+    ui::LitPin& pin = editor.state.litPin;
+    glm::ivec2 const size = frameSize(editor);
+    if (editor.course.library.lessons[std::size_t(l.lesson)].steps[std::size_t(l.step)].state.litPinDiff &&
+        pin.showDiff && pin.pinned && pin.pinnedName.empty() && !pin.pinRequested &&
+        (pin.pinned->width != size.x || pin.pinned->height != size.y))
+        pin.pinRequested = true;
 }
 
 std::string currentScene(Editor const& editor) {
@@ -296,8 +310,40 @@ void open(Editor& editor, std::string const& path) {
 
 }  // namespace
 
+void markLessonClaim(Editor& editor, bool rendered) {
+    std::optional<ui::ViewportState::Mark>& mark = editor.state.viewport.lessonMark;
+    LessonState const& l = editor.course.lessons;
+    ui::LessonStep const* step = nullptr;
+    if (l.lesson >= 0 && l.lesson < int(editor.course.library.lessons.size()))
+        step = &editor.course.library.lessons[std::size_t(l.lesson)].steps[std::size_t(l.step)];
+    // A step waiting for its prediction shows the state before its change: nothing of its own to mark.
+    bool const wanted = step && step->claim && step->claim->mark && !(step->predict && !l.predicted);
+    Renderer& renderer = *editor.renderer;
+    if (!wanted || renderer.width() <= 0 || renderer.height() <= 0 || renderer.hasImportedGBuffer()) {
+        mark.reset();
+        return;
+    }
+    // Measured again on every new frame (the student may move the camera), from the attachments
+    // the frame left; position_error_below reads only the position and the depth.
+    if (!rendered && mark && editor.frameMemory.markedStep == std::pair(l.lesson, l.step)) return;
+    editor.frameMemory.markedStep = {l.lesson, l.step};
+    ui::ClaimImages images;
+    images.position = renderer.readAttachment(Attachment::Position);
+    images.depth = renderer.readAttachment(Attachment::Depth);
+    glm::ivec2 const pixel = editor.state.inspector.pixel.value_or(glm::ivec2(0));
+    ui::ClaimResult const result =
+        ui::checkClaim(*step->claim, {editor.state.camera, editor.drawn, editor.state.pipeline, pixel}, images);
+    std::optional<ui::ClaimMark> const m = ui::claimMark(*step->claim, result);
+    if (m)
+        mark = ui::ViewportState::Mark{m->pixel, m->value, m->label};
+    else
+        mark.reset();
+}
+
 void lessonLogFields(Editor const& editor, ui::FrameLogLine& line) {
     LessonState const& l = editor.course.lessons;
+    if (auto const& m = editor.state.viewport.lessonMark)
+        line.lessonMark = {float(m->pixel.x), float(m->pixel.y), m->value};
     if (l.lesson >= 0 && l.lesson < int(editor.course.library.lessons.size()))
         line.lesson = editor.course.library.lessons[std::size_t(l.lesson)].id + ":" + std::to_string(l.step + 1);
     line.lessonButtons.assign(l.buttonCentres.begin(), l.buttonCentres.end());
@@ -380,6 +426,7 @@ void drawLessons(Editor& editor) {
     }
     ui::drawGlossaryWindow(editor.glossaryWindow, editor.course.glossary);
     keepStepPixel(editor);
+    keepStepPin(editor);
 }
 
 }  // namespace gbl

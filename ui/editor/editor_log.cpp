@@ -56,6 +56,8 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.pinLit = state.litPin.pinRect;
     line.litDiff = state.litPin.diffRect;
     line.abDivider = state.ab.enabled && state.ab.view == ui::AbView::Split ? state.ab.divider : -1.0f;
+    if (state.ab.enabled && state.ab.evaluations)
+        line.abEvaluations = {state.ab.evaluations->first, state.ab.evaluations->second};
     line.pickable = pickableLights(editor);
     line.events = editor.actions.applied;
     for (ui::InputEvent const& e : editor.input.imguiFrame.events)

@@ -151,6 +151,7 @@ struct Editor {
         std::optional<std::pair<LightingMode, std::size_t>> longFrameSwitchedFrom;
         EditorClock::time_point lastFrame = EditorClock::now();
         EditorClock::time_point lastReload = EditorClock::now();
+        std::pair<int, int> markedStep{-1, -1};  // the lesson and step the viewport's mark was measured for
     } frameMemory;
     // editor_requests.cpp: requests held while the unsaved-edits question (discard) is open.
     struct HeldRequests {
@@ -228,6 +229,9 @@ void handleRequests(Editor& editor, FrameTimes const& times, EditRequest const& 
 void closeImportedGBuffer(Editor& editor);
 // The Lessons window and what it asked for (ui/editor_lessons.cpp).
 void drawLessons(Editor& editor);
+// The viewport's lesson mark: a step whose claim has `mark` measures it on the editor's frame
+// after each new frame (model/lesson_claims.h, claimMark); any other state clears it.
+void markLessonClaim(Editor& editor, bool rendered);
 // The lesson shown and the Lessons window's buttons, for --log-frames.
 void lessonLogFields(Editor const& editor, ui::FrameLogLine& line);
 // Where an editor window falls short of usable; empty when it is visible (for UI test checks).

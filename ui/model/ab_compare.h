@@ -12,6 +12,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace gbl::ui {
@@ -44,6 +45,9 @@ struct AbState {
     DiffStats normalDiff;                      // normal angle: per pixel, degrees between A's and B's decoded normals
     std::vector<PassTiming> passesA, passesB;  // GPU ms per pass of each side's last frame
     double gpuMsA = 0.0, gpuMsB = 0.0;
+    // In the heat view: each side's light evaluations, the heat map's counts summed over the frame
+    // (model/lesson_claims.h, evaluationCount); nullopt in other views.
+    std::optional<std::pair<double, double>> evaluations;
 };
 
 // What the teaching views add to a frame's inputs (RenderInputs): a change renders again.

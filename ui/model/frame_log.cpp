@@ -2,6 +2,7 @@
 #include "model/frame_log.h"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 
 namespace gbl::ui {
@@ -69,7 +70,9 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"abToggle\":" + rect(l.abToggle);
     out += ",\"pinLit\":" + rect(l.pinLit);
     out += ",\"litDiff\":" + rect(l.litDiff);
-    out += ",\"abDivider\":" + number(l.abDivider);
+    out += ",\"abDivider\":" + number(l.abDivider) + ",\"abEvaluations\":[";
+    for (std::size_t i = 0; i < l.abEvaluations.size(); ++i) out += (i ? "," : "") + std::to_string(l.abEvaluations[i]);
+    out += "]";
     out += ",\"pickable\":[";
     for (std::size_t i = 0; i < l.pickable.size(); ++i)
         out += (i ? ",[" : "[") + std::to_string(l.pickable[i].index) + "," + number(l.pickable[i].window.x) + "," +
@@ -82,6 +85,12 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"lesson\":" + quoted(l.lesson) + ",\"lessonButtons\":[";
     for (std::size_t i = 0; i < l.lessonButtons.size(); ++i)
         out += (i ? "," : "") + number(l.lessonButtons[i].x) + "," + number(l.lessonButtons[i].y);
+    out += "],\"lessonMark\":[";
+    for (std::size_t i = 0; i < l.lessonMark.size(); ++i) {
+        char v[32];
+        std::snprintf(v, sizeof v, "%.6g", double(l.lessonMark[i]));
+        out += (i ? "," : "") + std::string(v);
+    }
     out += "],\"lessonPrediction\":" + quoted(l.lessonPrediction);
     out += std::string(",\"lessonAnswer\":") + (l.lessonAnswer ? "true" : "false");
     out += ",\"lessonTasks\":" + quoted(l.lessonTasks);

@@ -39,6 +39,7 @@ struct FrameLogLine {
     glm::vec4 pinLit{0.0f};                  // the viewport's "Pin lit" button
     glm::vec4 litDiff{0.0f};                 // ... and its "Diff" checkbox (0 until pinned)
     float abDivider = -1.0f;                 // A/B split: where A ends (share of the image width); -1 = off
+    std::vector<double> abEvaluations;       // A/B in the heat view: A's and B's light evaluations summed
     std::vector<std::string> events;         // input events applied this frame, and what they did
     std::vector<std::string> actions;        // editor actions carried out this frame
     std::vector<std::string> clipped;        // UI content cut off this frame, where ImGui can tell
@@ -53,6 +54,7 @@ struct FrameLogLine {
     bool lessonGlossary = false;     // the Glossary window is open
     std::string lessonGlossaryTerm;  // the term it last opened at ("" = none)
     std::vector<glm::vec2> lessonButtons;
+    std::vector<float> lessonMark;  // the viewport's lesson mark: x, y (renderer pixels), value; empty: none
     // The course view (issue 27): each lesson's row and its Restart button, x, y, width, height in
     // window coordinates as flat arrays (0 while not wholly in view); each lesson's progress as
     // "ID steps/steps tasks/tasks right/asked", lessons joined by '|'; the "Next lesson" button at

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 
 namespace gbl::ui {
 
@@ -124,9 +125,22 @@ ClaimResult differsFrom(LessonClaim const& c, ClaimFrame const&, ClaimImages con
             differing += d ? 1 : 0;
         }
     float const share = covered > 0 ? float(differing) / float(covered) : 0.0f;
-    return {covered > 0 && share >= c.minFraction, std::to_string(differing) + " of " + std::to_string(covered) +
-                                                       " pixels differ by more than " + lessonNumber(c.bound) + " (" +
-                                                       lessonNumber(100.0f * share) + " %)"};
+    return {covered > 0 && share >= c.minFraction && share < c.maxFraction,
+            std::to_string(differing) + " of " + std::to_string(covered) + " pixels differ by more than " +
+                lessonNumber(c.bound) + " (" + lessonNumber(100.0f * share) + " %" +
+                (c.maxFraction < 1.0f ? ", range " + lessonNumber(100.0f * c.minFraction) + " .. " +
+                                            lessonNumber(100.0f * c.maxFraction) + " %"
+                                      : std::string()) +
+                ")"};
+}
+
+ClaimResult fewerEvaluations(LessonClaim const& c, ClaimFrame const&, ClaimImages const& im) {
+    if (!im.referenceCoverage || im.coverage.channels < 1) return {false, "no coverage images (show heatmap)"};
+    double const step = evaluationCount(im.coverage), ref = evaluationCount(*im.referenceCoverage);
+    double const saved = ref > 0.0 ? (ref - step) / ref : 0.0;
+    return {ref > 0.0 && saved >= double(c.minFraction) && saved < double(c.maxFraction),
+            evaluationsLine(step, ref) + " than the reference (range " + lessonNumber(100.0f * c.minFraction) + " .. " +
+                lessonNumber(100.0f * c.maxFraction) + " %)"};
 }
 
 ClaimResult fewerLitPixels(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
@@ -167,6 +181,7 @@ ClaimResult positionError(LessonClaim const& c, ClaimFrame const& f, ClaimImages
                         std::to_string(at.y) + ") over " + std::to_string(covered) + " pixels, bound " +
                         (c.atLeast > 0.0f ? lessonNumber(c.atLeast) + " .. " : std::string()) + lessonNumber(c.bound)};
     if (covered > 0) out.worst = at;
+    out.worstValue = worst;
     return out;
 }
 
@@ -243,6 +258,22 @@ int litPixelCount(FloatImage const& lighting, ClaimImages const& im, glm::vec3 a
     return n;
 }
 
+double evaluationCount(FloatImage const& coverage) {
+    double n = 0.0;
+    if (coverage.channels < 1) return n;
+    for (int y = 0; y < coverage.height; ++y)
+        for (int x = 0; x < coverage.width; ++x) n += double(coverage.at(x, y, 0));
+    return n;
+}
+
+std::string evaluationsLine(double a, double b) {
+    char buf[160];
+    double const saved = b > 0.0 ? 100.0 * (b - a) / b : 0.0;
+    std::snprintf(buf, sizeof buf, "light evaluations (the heat map summed): A %.4g M, B %.4g M: A runs %.3g %% %s",
+                  a * 1e-6, b * 1e-6, std::abs(saved), saved >= 0.0 ? "fewer" : "more");
+    return buf;
+}
+
 int cpuTileLightCount(ClaimImages const& im, ClaimFrame const& f, glm::ivec2 pixel) {
     int const w = im.depth.width, h = im.depth.height;
     TileGrid const grid = tileGrid(w, h);
@@ -276,14 +307,17 @@ constexpr std::array<std::string_view, 1> kToleranceOptional{"tolerance"};
 constexpr std::array<std::string_view, 2> kSameImageFields{"reference", "bound"};
 constexpr std::array<std::string_view, 1> kImageOptional{"image"};
 constexpr std::array<std::string_view, 3> kDiffersFromFields{"reference", "bound", "min_fraction"};
+constexpr std::array<std::string_view, 2> kDiffersFromOptional{"image", "max_fraction"};
+constexpr std::array<std::string_view, 2> kFewerEvaluationsFields{"reference", "min_fraction"};
+constexpr std::array<std::string_view, 1> kMaxFractionOptional{"max_fraction"};
 constexpr std::array<std::string_view, 2> kFewerLitFields{"reference", "min_fraction"};
 constexpr std::array<std::string_view, 1> kBoundFields{"bound"};
-constexpr std::array<std::string_view, 1> kAtLeastOptional{"at_least"};
+constexpr std::array<std::string_view, 2> kAtLeastOptional{"at_least", "mark"};
 constexpr std::array<std::string_view, 1> kMostOptional{"most"};
 constexpr std::array<std::string_view, 2> kAttachmentFields{"attachment", "value"};
 
 // kind, name, fields, optional fields, about the step's pixel, needs a reference frame, check, doc.
-std::array<ClaimKindInfo, 9> const kClaimKinds{{
+std::array<ClaimKindInfo, 10> const kClaimKinds{{
     {ClaimKind::MatchesCpu,
      "matches_cpu",
      {},
@@ -307,7 +341,8 @@ std::array<ClaimKindInfo, 9> const kClaimKinds{{
      "at least `min_fraction` of the reference's lit pixels are dark in the step"},
     {ClaimKind::PositionError, "position_error_below", kBoundFields, kAtLeastOptional, false, false, positionError,
      "on every covered pixel the stored position and the one rebuilt from depth differ by less than `bound`; with "
-     "`at_least`, the largest error is at least that (so a step's text can say how large it is)"},
+     "`at_least`, the largest error is at least that (so a step's text can say how large it is); with `mark`, the "
+     "editor rings the pixel of the largest error in the viewport, with its value"},
     {ClaimKind::TileCountMatchesCpu,
      "tile_count_matches_cpu",
      {},
@@ -327,8 +362,13 @@ std::array<ClaimKindInfo, 9> const kClaimKinds{{
      "at `pixel` more lights were evaluated than lit it"},
     {ClaimKind::AttachmentEquals, "attachment_equals", kAttachmentFields, kToleranceOptional, true, false,
      attachmentEquals, "the attachment at `pixel` equals `value`; null entries are not compared"},
-    {ClaimKind::DiffersFrom, "differs_from", kDiffersFromFields, kImageOptional, false, true, differsFrom,
-     "at least `min_fraction` of the covered pixels differ from the reference by more than `bound`"},
+    {ClaimKind::DiffersFrom, "differs_from", kDiffersFromFields, kDiffersFromOptional, false, true, differsFrom,
+     "at least `min_fraction` of the covered pixels differ from the reference by more than `bound`; with "
+     "`max_fraction`, fewer than that share (so a step's text can say how many pixels change)"},
+    {ClaimKind::FewerEvaluations, "fewer_evaluations", kFewerEvaluationsFields, kMaxFractionOptional, false, true,
+     fewerEvaluations,
+     "the heat map's light evaluations summed over the frame are at least `min_fraction` fewer than the "
+     "reference's (and, with `max_fraction`, less than that); needs the heatmap view"},
 }};
 
 }  // namespace
@@ -355,6 +395,11 @@ bool claimNeedsReference(LessonClaim const& claim) {
 
 ClaimResult checkClaim(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
     return claimKindInfo(c.kind).check(c, f, im);
+}
+
+std::optional<ClaimMark> claimMark(LessonClaim const& c, ClaimResult const& r) {
+    if (!c.mark || !r.worst || c.kind != ClaimKind::PositionError) return std::nullopt;
+    return ClaimMark{*r.worst, r.worstValue, "largest |P_stored − P| of the frame: " + lessonNumber(r.worstValue)};
 }
 
 }  // namespace gbl::ui

@@ -31,6 +31,7 @@ struct ClaimImages {
     FloatImage coverage;  // filled only when the step shows the heat map or the tile view
     std::optional<FloatImage> referenceLighting;
     std::optional<FloatImage> referenceDisplay;
+    std::optional<FloatImage> referenceCoverage;  // when the step shows the heat map
 };
 
 struct ClaimFrame {
@@ -48,7 +49,17 @@ struct ClaimResult {
     // position_error_below: the pixel with the largest error (top-left origin), which a step's
     // pixel task may ask the student to find.
     std::optional<glm::ivec2> worst;
+    float worstValue = 0.0f;  // the largest error itself
 };
+
+// What the viewport marks for a claim with `mark` (the editor measures it on its own frame): the
+// pixel its check named and one line saying what was measured there. nullopt: nothing to mark.
+struct ClaimMark {
+    glm::ivec2 pixel{0};  // top-left origin
+    float value = 0.0f;
+    std::string label;
+};
+std::optional<ClaimMark> claimMark(LessonClaim const& claim, ClaimResult const& result);
 
 // One row per claim kind (issue 24), the one place a kind is described: the name lesson files
 // use, its fields (required, then optional; `tolerance` defaults to 0.02 where a kind takes it),
@@ -78,6 +89,11 @@ ClaimResult checkClaim(LessonClaim const& claim, ClaimFrame const& frame, ClaimI
 std::optional<ShadingInputs> surfaceAt(ClaimImages const& images, ClaimFrame const& frame, glm::ivec2 pixel);
 // Pixels whose lit value exceeds ambient * albedo by more than `epsilon` in any channel.
 int litPixelCount(FloatImage const& lighting, ClaimImages const& images, glm::vec3 ambient, float epsilon);
+// The heat map's light evaluations summed over the frame (coverage x: the lighting shader's runs
+// per pixel); what fewer_evaluations compares and the A/B split shows in the heat view.
+double evaluationCount(FloatImage const& coverage);
+// "A 1.234 M, B 2.345 M light evaluations: A runs 47.3 % fewer" (or "more").
+std::string evaluationsLine(double a, double b);
 // Lights the CPU tile test lists for the tile holding `pixel` (depth bounds from the depth image).
 int cpuTileLightCount(ClaimImages const& images, ClaimFrame const& frame, glm::ivec2 pixel);
 

@@ -54,6 +54,11 @@ void applyLessonSnapshot(LessonSnapshot const& s, EditorState& state, glm::ivec2
         state.accumulate.count = std::clamp(s.lightByLight->light + 1, 0, int(s.lights.size()));
         state.accumulate.contribution = s.lightByLight->only;
     }
+    if (s.litPinDiff) {
+        state.litPin.pinRequested = true;
+        state.litPin.diffFor.reset();
+    }
+    state.litPin.showDiff = s.litPinDiff;
     state.lightsPanel.selected = s.selectedLight < int(s.lights.size()) ? s.selectedLight : -1;
     state.lightsPanel.message.clear();
     state.gbuffer.activeViewer = std::clamp(s.activeViewer, 0, int(state.gbuffer.viewers.size()) - 1);

@@ -53,6 +53,10 @@ struct LessonSnapshot {
     std::optional<LessonAb> ab;
     // The light-by-light scrubber the step opens; nullopt turns it off.
     std::optional<LessonLightByLight> lightByLight;
+    // "lit_pin": the step pins the lit frame it shows (read at the next frame) and the viewport shows
+    // |now - pinned| (Pin lit + Diff), so what the student changes lights up; a step without it
+    // turns the diff off (the pin stays).
+    bool litPinDiff = false;
     // Only for returning from a lesson: the inspector as it was.
     bool inspectorLocked = false;
     std::optional<glm::ivec2> inspectorPixel;
@@ -102,6 +106,8 @@ enum class ClaimKind {
     ExecutedExceedsLit,   // at the pixel, more lights were evaluated than lit it (coverage x > y)
     AttachmentEquals,     // an attachment's value at the pixel equals `value` within tolerance
     DiffersFrom,          // at least min_fraction of the covered pixels differ from the reference by > bound
+    FewerEvaluations,     // the heat map's evaluations, summed, are min_fraction .. max_fraction fewer than the
+                          // reference's
 };
 struct LessonClaim {
     ClaimKind kind = ClaimKind::MatchesCpu;
@@ -109,9 +115,14 @@ struct LessonClaim {
     std::optional<PipelineSettings> reference;  // loses_light, same_image, fewer_lit_pixels, differs_from
     float tolerance = 0.0f;                     // matches_cpu, loses_light, attachment_equals (relative + absolute)
     float bound = 0.0f;                         // position_error_below, same_image and differs_from (abs difference)
-    float atLeast = 0.0f;      // position_error_below (optional): the largest error is at least this (a range)
+    float atLeast = 0.0f;  // position_error_below (optional): the largest error is at least this (a range)
+    // position_error_below (optional): the editor measures the claim on its own frame and marks the
+    // pixel of the largest error in the viewport, with its value.
+    bool mark = false;
     bool most = false;         // tile_count_matches_cpu (optional): the pixel's tile lists the most lights of the frame
-    float minFraction = 0.0f;  // fewer_lit_pixels, differs_from
+    float minFraction = 0.0f;  // fewer_lit_pixels, differs_from, fewer_evaluations
+    // differs_from, fewer_evaluations (optional): below this share (a range, for a stated count)
+    float maxFraction = 1.0f;
     int reached = -1;  // matches_cpu (optional): how many lights add a visible amount at the pixel; -1 = unchecked
     Attachment attachment = Attachment::Normal;  // attachment_equals
     glm::vec4 value{0.0f};                       // attachment_equals

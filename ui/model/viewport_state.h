@@ -48,6 +48,14 @@ struct ViewportState {
     glm::vec4 checksRect{0.0f};        // where the Checks button was drawn, for the frame log
     glm::vec4 firstFindingRect{0.0f};  // the open list's first finding (0 while the list is closed)
     int precisionShown = 0;            // precision lines the open list drew this frame
+    // A lesson step's measured pixel (its claim's `mark`, measured on this frame): ringed in the
+    // image, with the label beside it. nullopt: none.
+    struct Mark {
+        glm::ivec2 pixel{0};  // renderer pixels, top-left origin
+        float value = 0.0f;
+        std::string label;
+    };
+    std::optional<Mark> lessonMark;
 };
 
 }  // namespace gbl::ui

@@ -355,7 +355,10 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
     } else if (texture != 0) {
         // GL images start at the bottom row; flip v so the picture is upright.
         ImGui::GetWindowDrawList()->AddImage(toImTexture(texture), origin, imageEnd, ImVec2(0, 1), ImVec2(1, 0));
-        if (abOn && ab->ab.view == AbView::Split) drawAbSplit(*ab, settings, origin, avail);
+        // The heat views' legend sits at the bottom of the image: the split's pass lines go above it.
+        bool const heat = settings.view == DebugView::Heatmap || settings.view == DebugView::TileLights;
+        if (abOn && ab->ab.view == AbView::Split)
+            drawAbSplit(*ab, settings, origin, avail, heat ? heatLegendHeight(origin, imageEnd, textureSize) : 0.0f);
         // The marked check finding's pixels, translucent over the frame (same size: the G-buffer's).
         if (imported && state.findingTexture != 0)
             ImGui::GetWindowDrawList()->AddImage(toImTexture(state.findingTexture), origin, imageEnd, ImVec2(0, 1),
@@ -402,6 +405,25 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         dl->PushClipRect(origin, imageEnd, true);
         markLockedPixel(dl, origin, avail, textureSize, *lockedPixel);
         dl->PopClipRect();
+    }
+    // A lesson step's measured pixel (its claim's `mark`): a ring and the measurement beside it, on
+    // the side of the ring with room, kept inside the image.
+    if (state.lessonMark && texture != 0 && textureSize.x > 0 && textureSize.y > 0) {
+        ViewportState::Mark const& m = *state.lessonMark;
+        ImVec2 const c(origin.x + (float(m.pixel.x) + 0.5f) * avail.x / float(textureSize.x),
+                       origin.y + (float(m.pixel.y) + 0.5f) * avail.y / float(textureSize.y));
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        dl->PushClipRect(origin, imageEnd, true);
+        dl->AddCircle(c, 14.0f, IM_COL32(0, 0, 0, 220), 32, 4.0f);
+        dl->AddCircle(c, 14.0f, IM_COL32(255, 60, 200, 255), 32, 2.0f);
+        dl->PopClipRect();
+        ImVec2 const size = ImGui::CalcTextSize(m.label.c_str());
+        float const line = ImGui::GetTextLineHeightWithSpacing();
+        float x = c.x + 20.0f <= imageEnd.x - size.x - 8.0f ? c.x + 20.0f : c.x - 20.0f - size.x - 8.0f;
+        x = std::clamp(x, origin.x + 4.0f, std::max(origin.x + 4.0f, imageEnd.x - size.x - 12.0f));
+        float y = c.y + 18.0f + line <= imageEnd.y ? c.y + 18.0f : c.y - 18.0f - line;
+        y = std::clamp(y, origin.y + 4.0f, std::max(origin.y + 4.0f, imageEnd.y - line - 4.0f));
+        boxedText(ImVec2(x, y), m.label);
     }
     // A frame stopped after a pass (the Frame window's "Stop here") says so over the image, and so
     // does a camera inside a light's volume (why the volume passes lose that light with cull back).

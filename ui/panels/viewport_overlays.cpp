@@ -4,6 +4,7 @@
 #include "core/cluster_math.h"
 #include "core/heat_scale.h"
 #include "model/colormap.h"
+#include "model/lesson_claims.h"
 #include "panels/gui_compat.h"
 
 #include <algorithm>
@@ -47,6 +48,12 @@ void labelHeatLegend(ImVec2 imageMin, ImVec2 imageMax, glm::ivec2 textureSize, D
         dl->AddText(ImVec2(std::round(cx - 0.5f * ImGui::CalcTextSize(label.c_str()).x), top + line), text,
                     label.c_str());
     }
+}
+
+float heatLegendHeight(ImVec2 imageMin, ImVec2 imageMax, glm::ivec2 textureSize) {
+    if (textureSize.x < 64 || textureSize.y < 64) return 0.0f;
+    float const sy = (imageMax.y - imageMin.y) / float(textureSize.y);
+    return 23.0f * sy + 2.0f * ImGui::GetTextLineHeight() + 6.0f;
 }
 
 // Labels for the depth-slice legend (shaders/view.frag sliceLegend: kClusterSlices swatches of
@@ -123,7 +130,7 @@ void abDivider(AbState& ab, ImVec2 origin, ImVec2 avail) {
 }
 
 // B over the right of the divider, the line, the two labels and each side's pass times.
-void drawAbSplit(ViewportTeaching const& v, PipelineSettings const& a, ImVec2 origin, ImVec2 avail) {
+void drawAbSplit(ViewportTeaching const& v, PipelineSettings const& a, ImVec2 origin, ImVec2 avail, float bottomInset) {
     AbState const& ab = v.ab;
     ImDrawList* dl = ImGui::GetWindowDrawList();
     float const x = origin.x + ab.divider * avail.x;
@@ -138,8 +145,12 @@ void drawAbSplit(ViewportTeaching const& v, PipelineSettings const& a, ImVec2 or
     std::string const b = sideLabel("B", v.settingsB);
     boxedText(ImVec2(end.x - ImGui::CalcTextSize(b.c_str()).x - 8, origin.y + 6), b);
     boxedText(ImVec2(origin.x + 8, origin.y + 6 + line), "B differs in: " + describeAb(a, v.settingsB));
-    boxedText(ImVec2(origin.x + 8, end.y - 2 * line - 4), passLine("A", ab.passesA, ab.gpuMsA, avail.x - 16));
-    boxedText(ImVec2(origin.x + 8, end.y - line - 4), passLine("B", ab.passesB, ab.gpuMsB, avail.x - 16));
+    float const bottom = end.y - bottomInset;
+    if (ab.evaluations)
+        boxedText(ImVec2(origin.x + 8, bottom - 3 * line - 4),
+                  evaluationsLine(ab.evaluations->first, ab.evaluations->second));
+    boxedText(ImVec2(origin.x + 8, bottom - 2 * line - 4), passLine("A", ab.passesA, ab.gpuMsA, avail.x - 16));
+    boxedText(ImVec2(origin.x + 8, bottom - line - 4), passLine("B", ab.passesB, ab.gpuMsB, avail.x - 16));
 }
 
 // The |A - B| heat map's legend (turbo from 0 to its scale) and the diff's numbers.

@@ -248,9 +248,10 @@ std::vector<LessonTask> readTasks(json const& j, std::string const& path, Lesson
 
 LessonStep readStep(json const& j, std::string const& path, json const& setup, std::string const& lessonId,
                     glm::ivec2 lessonSize, bool gltfScene) {
-    knownFields(j, path,
-                {"title", "look", "equation", "question", "answer", "predict", "tasks", "scene", "lights", "camera",
-                 "pipeline", "viewers", "selected_light", "viewer", "pixel", "claim", "ab", "light_by_light"});
+    knownFields(
+        j, path,
+        {"title", "look", "equation", "question", "answer", "predict", "tasks", "scene", "lights", "camera", "pipeline",
+         "viewers", "selected_light", "viewer", "pixel", "claim", "ab", "light_by_light", "lit_pin"});
     LessonStep step;
     step.text.title = text(j, "title", path);
     step.text.look = text(j, "look", path);
@@ -276,6 +277,10 @@ LessonStep readStep(json const& j, std::string const& path, json const& setup, s
     if (auto it = j.find("ab"); it != j.end()) step.state.ab = readAb(*it, path + ".ab", step.state.pipeline);
     if (auto it = j.find("light_by_light"); it != j.end())
         step.state.lightByLight = readLightByLight(*it, path + ".light_by_light", int(step.state.lights.size()));
+    if (auto it = j.find("lit_pin"); it != j.end()) {
+        if (!it->is_boolean()) fail(path + ".lit_pin", "must be true or false");
+        step.state.litPinDiff = it->get<bool>();
+    }
     if (auto it = j.find("claim"); it != j.end()) step.claim = readClaim(*it, path + ".claim", state, step);
     if (auto it = j.find("predict"); it != j.end()) step.predict = readPrediction(*it, path + ".predict", state);
     if (auto it = j.find("tasks"); it != j.end()) {

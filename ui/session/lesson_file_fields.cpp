@@ -131,6 +131,10 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
         case ClaimKind::PositionError:
             claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
             claim.atLeast = optionalNumber("at_least", 0.0f, 0.0f, claim.bound);
+            if (auto it = c.find("mark"); it != c.end()) {
+                if (!it->is_boolean()) fail(path + ".mark", "must be true or false");
+                claim.mark = it->get<bool>();
+            }
             break;
         case ClaimKind::TileCountMatchesCpu:
             if (step.state.pipeline.mode != LightingMode::Tiled || step.state.pipeline.view != DebugView::TileLights)
@@ -161,7 +165,17 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
         case ClaimKind::DiffersFrom:
             claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
             claim.minFraction = number(need("min_fraction"), path + ".min_fraction", 0.0f, 1.0f);
+            claim.maxFraction = optionalNumber("max_fraction", 1.0f, 0.0f, 1.0f);
+            if (claim.maxFraction <= claim.minFraction)
+                fail(path + ".max_fraction", "must be greater than min_fraction");
             claim.image = comparedImage(c, path);
+            break;
+        case ClaimKind::FewerEvaluations:
+            if (step.state.pipeline.view != DebugView::Heatmap) fail(path + ".kind", "needs pipeline.view \"heatmap\"");
+            claim.minFraction = number(need("min_fraction"), path + ".min_fraction", 0.0f, 1.0f);
+            claim.maxFraction = optionalNumber("max_fraction", 1.0f, 0.0f, 1.0f);
+            if (claim.maxFraction <= claim.minFraction)
+                fail(path + ".max_fraction", "must be greater than min_fraction");
             break;
         case ClaimKind::MatchesCpu:
             if (auto it = c.find("reached"); it != c.end())

@@ -67,6 +67,7 @@ nlohmann::ordered_json stepJson(LessonStep const& step) {
     }
     if (step.state.lightByLight)
         j["light_by_light"] = {{"light", step.state.lightByLight->light}, {"only", step.state.lightByLight->only}};
+    if (step.state.litPinDiff) j["lit_pin"] = true;
     if (step.predict) j["predict"] = nlohmann::ordered_json::parse(predictionToJson(*step.predict));
     // The tasks as the file had them when it was read (its author's order and spelling); tasks made
     // in the editor have no text yet and are written from their fields.
