@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <thread>
 
 using namespace gbl;
@@ -144,4 +145,27 @@ TEST(SceneLoading, InstallingAFileSceneKeepsTheLoadersLightsExactly) {
     // The procedural scene gets the default rig of the requested size instead.
     ASSERT_FALSE(installScene(*r->scene, false, 7, state, upload));
     EXPECT_EQ(state.lights.size(), 7u);
+}
+
+TEST(SceneLoading, DroppedSessionAndLessonFilesAreToldApartFromOtherJson) {
+    // What the editor opens a dropped .json as (in the browser every picked file arrives so).
+    EXPECT_EQ(droppedDocumentKind((fs::path(test::dataDir()) / "sessions" / "three_lights.json").string()),
+              DroppedDocument::Session);
+    EXPECT_EQ(droppedDocumentKind((fs::path(GBL_SOURCE_DIR) / "assets" / "lessons" / "01_gbuffer.json").string()),
+              DroppedDocument::Lesson);
+    fs::path const dir = fs::temp_directory_path() / "gbl_dropped_kind";
+    fs::create_directories(dir);
+    auto write = [&](std::string const& name, std::string const& text) {
+        std::ofstream(dir / name) << text;
+        return (dir / name).string();
+    };
+    // Spacing does not matter; a manifest, another format, no format, a glTF and a missing file are Other.
+    EXPECT_EQ(droppedDocumentKind(write("s.json", "{\"format\"  :\n \"gbuffer-lab-session\", \"version\": 3}")),
+              DroppedDocument::Session);
+    EXPECT_EQ(droppedDocumentKind(write("m.json", "{\"preset\": \"gbuffer-lab\", \"normal\": {}}")),
+              DroppedDocument::Other);
+    EXPECT_EQ(droppedDocumentKind(write("o.json", "{\"format\": \"gbuffer-lab-sessions\"}")), DroppedDocument::Other);
+    EXPECT_EQ(droppedDocumentKind(write("x.gltf", "{\"format\": \"gbuffer-lab-session\"}")), DroppedDocument::Other);
+    EXPECT_EQ(droppedDocumentKind((dir / "missing.json").string()), DroppedDocument::Other);
+    fs::remove_all(dir);
 }

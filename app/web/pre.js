@@ -1,7 +1,8 @@
 // Runs inside the module before main (emcc --pre-js; issue 29).
 // 1. The URL's query is the command line: ?lesson=camera_inside:2&continuous gives
 //    `--lesson camera_inside:2 --continuous`; `scene=PATH` is the positional scene file.
-// 2. The config folder (window layout, autosave, lesson progress: ui/session/config_dir.cpp) is
+// 2. The canvas follows the page's size: a resize of the browser window resizes the editor's.
+// 3. The config folder (window layout, autosave, lesson progress: ui/session/config_dir.cpp) is
 //    kept in the browser's IndexedDB: read back before main, written after each change settles.
 Module['arguments'] = Module['arguments'] || [];
 (function () {
@@ -37,4 +38,8 @@ Module['preRun'].push(function () {
   setInterval(save, 2000);
   addEventListener('pagehide', save);
   document.addEventListener('visibilitychange', function () { if (document.hidden) save(); });
+});
+
+addEventListener('resize', function () {
+  if (Module['calledRun']) Browser.setCanvasSize(innerWidth, innerHeight);
 });

@@ -12,12 +12,20 @@ one PASS or FAIL line; the exit code is the number of failed cases (0: all passe
 
 Cases:
   default    the default scene renders lit in the viewport (pixels of the screenshot, at the
-             viewport's rectangle from the frame log), and the console shows no error;
-  lessons    every shipped step's claim, checked in WebGL2 (?check-lessons=all): none fails,
-             and each step that cannot run in WebGL2 names its reason;
+             viewport's rectangle from the frame log), and the console shows no error; the
+             page grows to 1600x900 and the editor's viewport follows, still lit;
+  lessons    every shipped step's claim, checked in WebGL2 (?check-lessons=all): none fails
+             (position_from_depth's error ranges: see within_top_of_range), and each step that
+             cannot run in WebGL2 names its reason;
   input      real clicks and a drag: Next in the Lessons window moves to the next step; dragging
              the Lights window's Kq field changes the attenuation plot's radius;
-  storage    the window layout and lesson progress outlive a reload (IndexedDB).
+  storage    the window layout and lesson progress outlive a reload (IndexedDB);
+  gltf       File > Open scene... with real clicks; the page's file picker, answered with a model
+             from ../shared/gltf (skipped when absent), opens it;
+  documents  a session file and a lesson file given to the page's picker open as a session and
+             as a lesson.
+
+--bench prints the editor's frame time in the browser and the site's download size instead.
 """
 import argparse
 import base64
@@ -302,6 +310,13 @@ def case_default(browser, base, out):
     assert viewport[2] > 200 and viewport[3] > 150, f"the viewport is too small: {viewport}"
     # Lit, not black and not one flat colour (a cleared or loading canvas is flat).
     assert mean > 0.08 and spread > 0.05 and lit > 0.2, "the viewport does not show a lit scene"
+    # The browser window grows to 1600x900: the editor's window follows, and so does its viewport.
+    page.cmd("Emulation.setDeviceMetricsOverride", {"width": 1600, "height": 900, "deviceScaleFactor": 1, "mobile": False})
+    page.wait_for("the viewport to follow the page's size", lambda: page.frames[-1]["viewport"][2] > viewport[2], 60)
+    grown = page.wait_frames(3)["viewport"]
+    print(f"  the page resized to 1600x900: viewport {viewport} -> {grown}")
+    mean, spread, lit = region_stats(page.screenshot(os.path.join(out, "default-1600x900.png")), grown)
+    assert spread > 0.05 and lit > 0.2, "the viewport is not lit after the resize"
     return page
 
 
@@ -427,8 +442,57 @@ def case_gltf(browser, base, out):
     return page
 
 
+def bench(site, base, out, frames=60, warmup=20):
+    """Prints the editor's frame time in the browser at 1280x720 (render every frame, the default
+    scene) and the download size of the site; a benchmark, so it asserts nothing."""
+    import gzip
+    total = packed = 0
+    for name in sorted(os.listdir(site)):
+        path = os.path.join(site, name)
+        if os.path.isfile(path) and name.split(".")[-1] in ("html", "js", "wasm", "data"):
+            data = open(path, "rb").read()
+            total += len(data)
+            packed += len(gzip.compress(data, 9))
+    print(f"bench: download {total / 1e6:.2f} MB, {packed / 1e6:.2f} MB gzipped (index.html, .js, .wasm, .data)")
+    profile = tempfile.mkdtemp(prefix="gbl-chromium-")
+    browser = Browser(profile, os.path.join(out, "chromium.log"))
+    try:
+        page = Page(browser, base + "?continuous&log-frames=/dev/stdout")
+        page.wait_for("frames", lambda: len(page.frames) >= warmup + frames, 600)
+        times = sorted(f["frameMs"] for f in page.frames[warmup:warmup + frames])
+        mean = sum(times) / len(times)
+        print(f"bench: editor frame at 1280x720, default scene, 32 lights, quad, rendering every frame: "
+              f"mean {mean:.1f} ms, median {times[len(times) // 2]:.1f} ms over {len(times)} frames "
+              f"(after {warmup}), {page.frames[-1]['viewport']} viewport")
+    finally:
+        browser.close()
+        shutil.rmtree(profile, ignore_errors=True)
+
+
+def case_documents(browser, base, out):
+    # A session and a lesson file chosen in the page's picker (set through the DevTools protocol,
+    # as the gltf case's chooser is): each opens as what it is, not as a G-buffer manifest.
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    session = os.path.join(root, "tests", "data", "sessions", "three_lights.json")
+    lesson = os.path.join(root, "assets", "lessons", "04_attenuation.json")
+    page = Page(browser, base + "?log-frames=/dev/stdout")
+    page.wait_for("a rendered frame", lambda: any(f.get("rendered") for f in page.frames), 120)
+    page.wait_frames(3)
+    document = page.cmd("DOM.getDocument")["root"]["nodeId"]
+    picker = page.cmd("DOM.querySelector", {"nodeId": document, "selector": "#files"})["nodeId"]
+    page.cmd("DOM.setFileInputFiles", {"files": [session], "nodeId": picker})
+    opened = lambda name: [c for c in page.console if name in c and "opened" in c]
+    page.wait_for("the session to open", lambda: opened("three_lights.json"), 60)
+    print("  " + opened("three_lights.json")[0])
+    page.cmd("DOM.setFileInputFiles", {"files": [lesson], "nodeId": picker})
+    page.wait_for("the lesson file to open", lambda: opened("04_attenuation.json"), 60)
+    print("  " + opened("04_attenuation.json")[0])
+    assert not [c for c in page.console if "manifest" in c.lower()], "a file was taken for a G-buffer manifest"
+    return page
+
+
 CASES = {"default": case_default, "lessons": case_lessons, "input": case_input, "storage": case_storage,
-         "gltf": case_gltf}
+         "gltf": case_gltf, "documents": case_documents}
 
 
 def main():
@@ -437,6 +501,7 @@ def main():
     parser.add_argument("--site", default=os.path.join(root, "build-web"))
     parser.add_argument("--out", default=None, help="keep screenshots and logs here")
     parser.add_argument("--only", nargs="*", choices=sorted(CASES), default=None)
+    parser.add_argument("--bench", action="store_true", help="print frame time and download size instead")
     args = parser.parse_args()
     for name in ("index.html", "gbuffer-lab.js", "gbuffer-lab.wasm", "gbuffer-lab.data"):
         if not os.path.isfile(os.path.join(args.site, name)):
@@ -449,6 +514,10 @@ def main():
     os.makedirs(out, exist_ok=True)
     server, port = serve(args.site)
     base = f"http://127.0.0.1:{port}/index.html"
+    if args.bench:
+        bench(args.site, base, out)
+        server.shutdown()
+        return 0
     failures = 0
     for name in args.only or list(CASES):
         profile = tempfile.mkdtemp(prefix="gbl-chromium-")

@@ -273,11 +273,34 @@ void openOrCloseGBuffer(Editor& editor) {
     }
 }
 
+// Dropped session and lesson files open as sessions and lessons (in the browser, its file picker
+// hands every chosen file over as a drop); the rest go on to the scene and G-buffer openers.
+void routeDroppedDocuments(Editor& editor) {
+    std::vector<std::string>& dropped = editor.loading.dropped;
+    for (auto it = dropped.begin(); it != dropped.end();) {
+        switch (ui::droppedDocumentKind(*it)) {
+            case ui::DroppedDocument::Session:
+                editor.sessions->panel.openDropped = *it;
+                it = dropped.erase(it);
+                break;
+            case ui::DroppedDocument::Lesson:
+                editor.course.lessons.openPath = *it;
+                editor.course.lessons.openRequested = true;
+                it = dropped.erase(it);
+                break;
+            case ui::DroppedDocument::Other:
+                ++it;
+                break;
+        }
+    }
+}
+
 }  // namespace
 
 void renderScene(Editor& editor, FrameTimes& times) {
     EditorState& state = editor.state;
     Renderer& renderer = *editor.renderer;
+    routeDroppedDocuments(editor);
     // A finished load becomes the scene before this frame renders; requested ones start.
     if (ui::updateSceneLoading(editor.loading, editor.defaultLightCount, state,
                                [&](SceneData const& scene) { return renderer.setScene(scene); })) {

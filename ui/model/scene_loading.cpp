@@ -5,6 +5,8 @@
 #include "scene/default_scene.h"
 
 #include <algorithm>
+#include <fstream>
+#include <string_view>
 #include <utility>
 
 namespace gbl::ui {
@@ -139,6 +141,23 @@ std::optional<std::string> installScene(SceneData const& scene, bool fromFile, i
     logMessage(state.log, "scene " + scene.source + ": " + std::to_string(scene.triangleCount()) + " triangles, " +
                               std::to_string(state.lights.size()) + " lights");
     return std::nullopt;
+}
+
+DroppedDocument droppedDocumentKind(std::string const& path) {
+    if (!path.ends_with(".json")) return DroppedDocument::Other;
+    std::ifstream file(path, std::ios::binary);
+    std::string head(4096, '\0');
+    file.read(head.data(), std::streamsize(head.size()));
+    head.resize(std::size_t(file.gcount()));
+    // The format string follows its key ("format": "gbuffer-lab-session"), whatever the spacing.
+    std::size_t const key = head.find("\"format\"");
+    if (key == std::string::npos) return DroppedDocument::Other;
+    std::size_t const value = head.find('"', head.find(':', key));
+    if (value == std::string::npos) return DroppedDocument::Other;
+    std::string_view const rest = std::string_view(head).substr(value);
+    if (rest.starts_with("\"gbuffer-lab-session\"")) return DroppedDocument::Session;
+    if (rest.starts_with("\"gbuffer-lab-lesson\"")) return DroppedDocument::Lesson;
+    return DroppedDocument::Other;
 }
 
 bool updateSceneLoading(SceneLoadingState& loading, int defaultLightCount, EditorState& state,

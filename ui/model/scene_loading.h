@@ -56,6 +56,12 @@ enum class SceneLoadOutcome { None, Loaded, Failed, Cancelled };
 
 // Everything about scene loading between frames. Not part of EditorState: it owns a thread
 // and is not a value a session saves or an undo step restores.
+// What a dropped .json file is, from its "format" field: a session or a lesson opens as one
+// (dropped on the window, or chosen in the browser's picker, which hands files over as a drop);
+// any other file (a G-buffer manifest, a glTF, ...) is Other.
+enum class DroppedDocument { Other, Session, Lesson };
+DroppedDocument droppedDocumentKind(std::string const& path);
+
 struct SceneLoadingState {
     std::optional<SceneLoadJob> job;    // the load in progress, if any
     std::vector<std::string> requests;  // paths asked for (menu, dialog, recent, script), oldest first

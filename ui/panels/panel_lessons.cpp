@@ -1,6 +1,7 @@
 // Lessons window.
 #include "panels/panel_lessons.h"
 
+#include "model/browser_files.h"
 #include "model/lesson_claims.h"
 #include "panels/layout.h"
 #include "panels/panel_file_browser.h"
@@ -331,7 +332,8 @@ void drawAuthoring(LessonState& state, FileBrowserState& browser) {
     inputText("##savepath", state.savePath, false);
     if (ImGui::Button("Save step")) state.saveStepRequested = true;
     ImGui::SameLine();
-    if (ImGui::Button("Open lesson file...")) openFileBrowser(browser, FileBrowserPurpose::OpenLesson, state.savePath);
+    if (ImGui::Button("Open lesson file...") && !pickFilesInBrowser())  // the browser's picker: a drop
+        openFileBrowser(browser, FileBrowserPurpose::OpenLesson, state.savePath);
 }
 
 }  // namespace

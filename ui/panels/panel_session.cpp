@@ -1,6 +1,7 @@
 // Session, export and recovery dialogs: a path field per action, a modal for the recovery offer.
 #include "panels/panel_session.h"
 
+#include "model/browser_files.h"
 #include "panels/panel_file_browser.h"
 #include "panels/panel_gbuffer.h"
 
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <utility>
 
 namespace gbl::ui {
 
@@ -36,6 +38,8 @@ char const* pathLabel(SessionDialog d) {
 }  // namespace
 
 void openSessionDialog(SessionPanelState& state, SessionDialog dialog, std::string const& prefill) {
+    // In the browser its own picker chooses the file, which arrives as a drop (editor_frame.cpp).
+    if (dialog == SessionDialog::Open && pickFilesInBrowser()) return;
     if (dialog == SessionDialog::Open || dialog == SessionDialog::Save) {
         state.message.clear();
         openFileBrowser(
@@ -77,6 +81,7 @@ void finishSessionRequest(SessionPanelState& state, std::optional<std::string> c
 
 SessionRequest drawSessionDialogs(SessionPanelState& state) {
     SessionRequest request;
+    if (state.openDropped) return {SessionRequestKind::Open, *std::exchange(state.openDropped, std::nullopt), 0};
     // "Save session" with a known path needs no dialog: it is handed over directly.
     if (state.saveRequested) {
         state.saveRequested = false;

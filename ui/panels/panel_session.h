@@ -19,6 +19,7 @@ struct SessionPanelState {
     bool dialogJustOpened = false;             // focus the path field on the first frame
     std::array<char, 1024> pathInput{};        // the export dialogs' text field
     FileBrowserState browser;                  // Open session and Save session as
+    std::optional<std::string> openDropped;    // a session file dropped (or picked in the browser): open it
     int exportViewer = 0;                      // index into the G-buffer viewers
     bool exportRaw = false;                    // viewer export: raw attachment as EXR instead of PNG
     std::optional<UncleanExit> recoveryOffer;  // shown as a modal until answered

@@ -2,6 +2,7 @@
 #include "panels/panel_stats.h"
 
 #include "core/gbuffer_layout.h"
+#include "gl/gl_api.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
 #include "panels/wrapped_text.h"
@@ -45,9 +46,21 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
         // Where no timer query attributes work to passes (software rasterisers, WebGL2) the passes
         // are timed on the CPU between glFinish calls: labelled so, with the reason on hover.
         bool const cpuTimed = f.timingSource == "cpu_finish";
-        ImGui::Text("Renderer %s %.2f ms at %dx%d", cpuTimed ? "(CPU-timed)" : "GPU", f.gpuFrameMs, f.width, f.height);
-        if (cpuTimed && ImGui::IsItemHovered() && !f.timingReason.empty())
-            ImGui::SetTooltip("%s", f.timingReason.c_str());
+        if (gl::kWebGL2) {
+            // The browser's finish() returns before its GPU process has drawn: the passes' CPU
+            // times say nothing there, so only the frame's own time (the line above) is shown.
+            ImGui::TextDisabled("Renderer at %dx%d: not timed in the browser", f.width, f.height);
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip(
+                    "WebGL2 has no GL_TIMESTAMP queries here (EXT_disjoint_timer_query_webgl2 is not\n"
+                    "used), and finish() returns before the GPU process has drawn: the frame time\n"
+                    "above, measured on the CPU, is the measure in the browser");
+        } else {
+            ImGui::Text("Renderer %s %.2f ms at %dx%d", cpuTimed ? "(CPU-timed)" : "GPU", f.gpuFrameMs, f.width,
+                        f.height);
+            if (cpuTimed && ImGui::IsItemHovered() && !f.timingReason.empty())
+                ImGui::SetTooltip("%s", f.timingReason.c_str());
+        }
         if (render) {
             // Render on change: an idle editor shows the last frame again instead of re-rendering it.
             if (render->renderedLastFrame) {
