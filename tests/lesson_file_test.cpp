@@ -11,7 +11,10 @@
 #include "test_paths.h"
 
 #include <gtest/gtest.h>
+
 #include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string_view>
 
 #include <algorithm>
 #include <cmath>
@@ -29,6 +32,16 @@ using namespace gbl::ui;
 using nlohmann::json;
 
 namespace {
+
+// A shipped step by "ID:STEP" (the shipped library loaded once); a broken library or a missing
+// step fails the test that asks, with the reason.
+LessonStep const& shippedStep(std::string_view name) {
+    static LessonLibrary const lib = loadLessonDir(defaultLessonDir());
+    if (!lib.errors.empty()) throw std::runtime_error(lib.errors.front());
+    LessonRef const ref = findLessonStep(lib, name);
+    if (ref.lesson < 0) throw std::runtime_error(ref.error);
+    return lib.lessons[std::size_t(ref.lesson)].steps[std::size_t(ref.step)];
+}
 
 json minimal() {
     return json::parse(R"({
@@ -165,10 +178,7 @@ TEST(LessonFile, EveryShippedQuestionHasAnAnswer) {
 // before the change): each is computed here from the step's lights, so editing a light without the
 // text, or the text without the light, fails.
 TEST(LessonFile, TheAttenuationStepsNumbersAreItsLightsNumbers) {
-    LessonLibrary const lib = loadLessonDir(defaultLessonDir());
-    LessonRef const ref = findLessonStep(lib, "attenuation:2");
-    ASSERT_GE(ref.lesson, 0) << ref.error;
-    LessonStep const& step = lib.lessons[std::size_t(ref.lesson)].steps[std::size_t(ref.step)];
+    LessonStep const& step = shippedStep("attenuation:2");
     ASSERT_TRUE(step.predict && step.predict->before);
     PointLight const& before = step.predict->before->lights.at(0);
     PointLight const& after = step.state.lights.at(0);
@@ -237,11 +247,7 @@ TEST(LessonFile, TheDepthBlitClaimsCompareTheDisplayImage) {
 // 1.4 %"): its claim checks that share as a range, and the text's number lies in it. A max_fraction
 // not above min_fraction is refused.
 TEST(LessonFile, TheCubesThroughTheColumnShareIsTheClaimsRange) {
-    LessonLibrary const lib = loadLessonDir(defaultLessonDir());
-    ASSERT_TRUE(lib.errors.empty()) << lib.errors.front();
-    LessonRef const ref = findLessonStep(lib, "depth_blit:3");
-    ASSERT_GE(ref.lesson, 0) << ref.error;
-    LessonStep const& step = lib.lessons[std::size_t(ref.lesson)].steps[std::size_t(ref.step)];
+    LessonStep const& step = shippedStep("depth_blit:3");
     ASSERT_TRUE(step.claim && step.claim->kind == ClaimKind::DiffersFrom);
     EXPECT_LT(step.claim->maxFraction, 1.0f);
     int stated = 0;
@@ -267,10 +273,7 @@ TEST(LessonFile, TheCubesThroughTheColumnShareIsTheClaimsRange) {
 // tiled:1 shows what is tile-related as it opens: the heat view split against quad, so the left
 // (tiled) shows the lights each tile lists and the right (quad) every light at every pixel.
 TEST(LessonFile, TheTiledStepSplitsLightsPerTileAgainstEveryLight) {
-    LessonLibrary const lib = loadLessonDir(defaultLessonDir());
-    LessonRef const ref = findLessonStep(lib, "tiled:1");
-    ASSERT_GE(ref.lesson, 0) << ref.error;
-    LessonStep const& step = lib.lessons[std::size_t(ref.lesson)].steps[std::size_t(ref.step)];
+    LessonStep const& step = shippedStep("tiled:1");
     EXPECT_EQ(step.state.pipeline.mode, LightingMode::Tiled);
     EXPECT_EQ(step.state.pipeline.view, DebugView::Heatmap);
     ASSERT_TRUE(step.state.ab);
@@ -284,11 +287,7 @@ TEST(LessonFile, TheTiledStepSplitsLightsPerTileAgainstEveryLight) {
 // text's saving ("about 17 %") lies in the range its fewer_evaluations claim checks. The kind needs
 // the heat view and a max_fraction above min_fraction.
 TEST(LessonFile, TheStencilStepsSavingIsTheClaimsRange) {
-    LessonLibrary const lib = loadLessonDir(defaultLessonDir());
-    ASSERT_TRUE(lib.errors.empty()) << lib.errors.front();
-    LessonRef const ref = findLessonStep(lib, "light_volumes:4");
-    ASSERT_GE(ref.lesson, 0) << ref.error;
-    LessonStep const& step = lib.lessons[std::size_t(ref.lesson)].steps[std::size_t(ref.step)];
+    LessonStep const& step = shippedStep("light_volumes:4");
     EXPECT_EQ(step.state.pipeline.cull, CullMode::Stencil);
     EXPECT_EQ(step.state.pipeline.view, DebugView::Heatmap);
     ASSERT_TRUE(step.state.ab);
