@@ -6,6 +6,7 @@
 #include "passes/shading_inputs.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -118,19 +119,16 @@ FloatImage readFramebuffer(GLuint fbo, GLenum attachment, int width, int height,
     return img;
 }
 
+#ifndef __EMSCRIPTEN__
 // Reads the stencil bits of a framebuffer's depth-stencil attachment as one float channel holding
-// the integer values, flipped like readFramebuffer.
+// the integer values, flipped like readFramebuffer (the browser's way is readStencilImage's).
 FloatImage readStencil(GLuint fbo, int width, int height) {
     std::vector<std::uint8_t> bytes(std::size_t(width) * height);
-#ifdef __EMSCRIPTEN__
-    (void)fbo;  // WebGL2 cannot read stencil: the browser's stencil view reads all 0 (not yet read another way)
-#else
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width, height, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, bytes.data());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-#endif
     FloatImage img;
     img.width = width;
     img.height = height;
@@ -141,6 +139,7 @@ FloatImage readStencil(GLuint fbo, int width, int height) {
             img.pixels[std::size_t(y) * width + x] = float(bytes[std::size_t(height - 1 - y) * width + x]);
     return img;
 }
+#endif
 }  // namespace
 
 namespace {
@@ -173,6 +172,51 @@ FloatImage readDepth(RendererImpl& r) {
     return readFramebuffer(fbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 1);
 #else
     return readFramebuffer(t.gbuffer.fbo.id(), GL_NONE, t.width, t.height, 1);
+#endif
+}
+
+// The G-buffer's stencil values as one float channel, rows top to bottom. In the browser, which
+// cannot read stencil, an RGBA8 target sharing the G-buffer's depth-stencil sums one pass per bit
+// plane: where the stencil test passes for bit b (mask 1 << b), the pass adds 2^b / 255 (additive
+// blending; the sums of distinct powers of two up to 255 are exact in 8 bits), so its red channel
+// times 255 is the stencil value.
+FloatImage readStencilImage(RendererImpl& r) {
+    RenderTargets const& t = r.targets;
+#ifdef __EMSCRIPTEN__
+    gl::Texture sum = gl::Texture::create2D(GL_RGBA8, t.width, t.height, "readback.stencil");
+    gl::Framebuffer fbo = gl::Framebuffer::create({&sum}, &t.gbuffer.depth, "readback.stencil");
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+    glViewport(0, 0, t.width, t.height);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
+    gl::Program const& p = r.shaders.get(ProgramId::TexelCopy);
+    p.use();
+    p.set("uWriteConstant", 1);
+    for (int bit = 0; bit < 8; ++bit) {
+        glStencilFunc(GL_EQUAL, 1 << bit, GLuint(1 << bit));
+        p.set("uConstant", glm::vec4(float(1 << bit) / 255.0f));
+        r.triangle.draw();
+    }
+    p.set("uWriteConstant", 0);
+    glDisable(GL_BLEND);
+    glDisable(GL_STENCIL_TEST);
+    glStencilMask(0xFF);
+    glDepthMask(GL_TRUE);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    FloatImage img = readFramebuffer(fbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 1);
+    for (float& v : img.pixels) v = std::round(v * 255.0f);
+    return img;
+#else
+    return readStencil(t.gbuffer.fbo.id(), t.width, t.height);
 #endif
 }
 
@@ -218,7 +262,7 @@ FloatImage Renderer::readAttachment(Attachment a) const {
         case Attachment::Depth:
             return readDepth(*impl_);
         case Attachment::Stencil:
-            return readStencil(t.gbuffer.fbo.id(), t.width, t.height);
+            return readStencilImage(*impl_);
         case Attachment::Lighting:
             return readFramebuffer(t.litFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
         case Attachment::DiffuseLight:
@@ -283,9 +327,10 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
         s.coverageMode = impl_->coverageMode;
     }
 #ifdef __EMSCRIPTEN__
-    // WebGL2 reads neither depth nor stencil: depth through the copy pass; the stencil value
-    // stays 0 in the browser (the inspector's stencil row says so).
-    s.depth = readDepth(*impl_).pixels[std::size_t(y) * std::size_t(t.width) + std::size_t(x)];
+    // WebGL2 reads neither depth nor stencil: both through their passes.
+    std::size_t const texel = std::size_t(y) * std::size_t(t.width) + std::size_t(x);
+    s.depth = readDepth(*impl_).pixels[texel];
+    s.stencil = std::uint8_t(readStencilImage(*impl_).pixels[texel]);
 #else
     glBindFramebuffer(GL_READ_FRAMEBUFFER, t.gbuffer.fbo.id());
     glReadPixels(x, glY, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &s.depth);

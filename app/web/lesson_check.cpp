@@ -2,6 +2,7 @@
 
 #include "core/pipeline_settings.h"
 #include "gl/caps.h"
+#include "gl/gl_api.h"
 #include "lesson_render.h"
 #include "renderer.h"
 #include "scene/default_scene.h"
@@ -10,6 +11,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <sstream>
@@ -40,6 +42,51 @@ std::vector<ui::LessonRef> stepsOf(ui::LessonLibrary const& lib, std::string con
     return refs;
 }
 
+// WebGL2 reads neither depth nor stencil directly; the renderer reads them through passes
+// (renderer_readback.cpp). Known values are cleared into the G-buffer's depth-stencil (the left
+// half and the right half differ, 5 = 0b101 and 200 = 0b11001000 use six of the eight bit
+// planes) and must come back: depth within 24-bit precision, stencil exactly.
+std::string readbackProblem(Renderer& renderer) {
+    int const w = renderer.width(), h = renderer.height();
+    GLuint fbo = 0;
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                           renderer.texture(Attachment::Stencil), 0);
+    glEnable(GL_SCISSOR_TEST);
+    glStencilMask(0xFF);
+    glDepthMask(GL_TRUE);
+    auto clearHalf = [&](int x0, int x1, float depth, int stencil) {
+        glScissor(x0, 0, x1 - x0, h);
+        glClearDepthf(depth);
+        glClearStencil(stencil);
+        glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    };
+    clearHalf(0, w / 2, 0.25f, 5);
+    clearHalf(w / 2, w, 0.75f, 200);
+    glDisable(GL_SCISSOR_TEST);
+    glClearDepthf(1.0f);
+    glClearStencil(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
+    FloatImage const depth = renderer.readAttachment(Attachment::Depth);
+    FloatImage const stencil = renderer.readAttachment(Attachment::Stencil);
+    if (depth.pixels.size() != std::size_t(w) * std::size_t(h) || stencil.pixels.size() != depth.pixels.size())
+        return "the read-backs have the wrong size";
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            bool const left = x < w / 2;
+            std::size_t const i = std::size_t(y) * std::size_t(w) + std::size_t(x);
+            if (std::abs(depth.pixels[i] - (left ? 0.25f : 0.75f)) > 1e-6f)
+                return "depth at (" + std::to_string(x) + ", " + std::to_string(y) + ") reads " +
+                       std::to_string(depth.pixels[i]);
+            if (stencil.pixels[i] != (left ? 5.0f : 200.0f))
+                return "stencil at (" + std::to_string(x) + ", " + std::to_string(y) + ") reads " +
+                       std::to_string(stencil.pixels[i]);
+        }
+    return {};
+}
+
 }  // namespace
 
 int checkLessonsInBrowser(std::string const& spec) {
@@ -66,6 +113,20 @@ int checkLessonsInBrowser(std::string const& spec) {
     glfwMakeContextCurrent(window);
     Renderer renderer(detectGlCaps(), 640, 400);
     int hold = 0, fail = 0, skipped = 0;
+    SceneData const scene = makeDefaultScene();
+    if (auto err = renderer.setScene(scene)) {
+        std::printf("readback-check FAILS: the scene: %s\n", err->c_str());
+        ++fail;
+    } else {
+        renderer.render({scene.camera.value_or(Camera{}), scene.lights, PipelineSettings{}, true});
+        std::string const problem = readbackProblem(renderer);
+        if (problem.empty())
+            std::printf(
+                "readback-check: depth and stencil read back as cleared (0.25 and 5, 0.75 and 200) at 640x400\n");
+        else
+            std::printf("readback-check FAILS: %s\n", problem.c_str());
+        fail += problem.empty() ? 0 : 1;
+    }
     for (ui::LessonRef const& ref : refs) {
         ui::Lesson const& lesson = lib.lessons[std::size_t(ref.lesson)];
         ui::LessonStep const& step = lesson.steps[std::size_t(ref.step)];

@@ -14,7 +14,9 @@ Cases:
   default    the default scene renders lit in the viewport (pixels of the screenshot, at the
              viewport's rectangle from the frame log), and the console shows no error; the
              page grows to 1600x900 and the editor's viewport follows, still lit;
-  lessons    every shipped step's claim, checked in WebGL2 (?check-lessons=all): none fails
+  lessons    depth and stencil cleared to known values read back exactly (WebGL2 reads them only
+             through the renderer's passes); every shipped step's claim, checked in WebGL2
+             (?check-lessons=all): none fails
              (position_from_depth's error ranges: see within_top_of_range), and each step that
              cannot run in WebGL2 names its reason;
   input      real clicks and a drag: Next in the Lessons window moves to the next step; dragging
@@ -341,6 +343,9 @@ def case_lessons(browser, base, out):
     for line in lines:
         print("  " + line[len("log: "):])
     print("  " + summary()[0][len("log: "):])
+    readback = [c for c in page.console if c.startswith("log: readback-check")]
+    print("  " + (readback[0][len("log: "):] if readback else "no readback-check line"))
+    assert readback and "FAILS" not in readback[0], "depth or stencil do not read back in WebGL2"
     failed = [l for l in lines if " FAILS" in l]
     held = [l for l in lines if " holds" in l]
     # position_from_depth's ranges were measured on the desktop (llvmpipe); SwiftShader's depth

@@ -43,7 +43,11 @@ void runFrame(Editor& editor) {
 // One browser frame; the editor lives until the page goes, unless it quits (--frames, a UI test).
 void browserFrame(void* user) {
     auto* editor = static_cast<Editor*>(user);
+    bool const wasIdle = editor->idle;
     runFrame(*editor);
+    // Idle, the page's frame callback runs every third display frame (1/20 s at 60 Hz), as the
+    // desktop editor waits up to 1/20 s for an event; back to every frame at the next change.
+    if (editor->idle != wasIdle) emscripten_set_main_loop_timing(EM_TIMING_RAF, editor->idle ? 3 : 1);
     if (running(*editor)) return;
     emscripten_cancel_main_loop();
     int const exitCode = shutdownEditor(*editor);

@@ -412,10 +412,11 @@ void present(Editor& editor, FrameTimes& times) {
     // A test's slow machine: the sleep still takes events, so their times stay exact.
     if (options.frameSleepMs > 0) sleepTakingEvents(options.frameSleepMs);
     // Idle (nothing rendered, no input, nothing loading or waiting for ImGui): sleep until the
-    // next event, at most 1/20 s, instead of redrawing the same UI as fast as possible.
-    else if (!times.rendered && !editor.unattended && editor.input.frameEvents.empty() &&
-             editor.input.replay.pending.empty() && !editor.loading.job)
-        glfwWaitEventsTimeout(0.05);
+    // next event, at most 1/20 s, instead of redrawing the same UI as fast as possible. (In the
+    // browser, which cannot sleep, the frame callback runs every third display frame instead.)
+    editor.idle = !times.rendered && !editor.unattended && editor.input.frameEvents.empty() &&
+                  editor.input.replay.pending.empty() && !editor.loading.job;
+    if (options.frameSleepMs <= 0 && editor.idle) glfwWaitEventsTimeout(0.05);
 }
 
 void recordFrame(Editor& editor, FrameTimes const& times) {

@@ -106,6 +106,7 @@ struct Editor {
     explicit Editor(EditorOptions const& options) : options(options) {}
 
     EditorOptions const options;  // a copy: in the browser the editor outlives main's locals
+    bool idle = false;            // the last frame rendered nothing and took no input (present())
     GlfwSession glfw;
     GlCaps caps;
     bool unattended = false;  // screenshots, UI tests, frame counts: no vsync, layout file or recovery

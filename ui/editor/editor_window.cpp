@@ -2,6 +2,7 @@
 // ImGui and its layout file, the UI test script's host, and the orderly shutdown.
 #include "editor_loop.h"
 
+#include "gl/gl_api.h"
 #include "gltf/loader.h"
 #include "model/window_fit.h"
 #include "panels/fonts.h"
@@ -243,6 +244,15 @@ std::optional<int> openWindow(Editor& editor) {
         return 1;
     }
     glfwMakeContextCurrent(editor.window());
+#ifdef __EMSCRIPTEN__
+    // The G-buffer's float attachments are drawn into only with this extension (most browsers have it).
+    if (!gl::hasExtension("GL_EXT_color_buffer_float")) {
+        std::fprintf(stderr,
+                     "gbuffer-lab: this browser's WebGL2 has no EXT_color_buffer_float, so the G-buffer's float "
+                     "attachments cannot be drawn into; try another browser or one with hardware acceleration on\n");
+        return 1;
+    }
+#endif
     editor.unattended = options.screenshotPath || options.uiTestScript || options.frames > 0;
     glfwSwapInterval(options.vsync && !editor.unattended ? 1 : 0);
     editor.caps = detectGlCaps(limitMajor, limitMinor);
