@@ -19,8 +19,9 @@ Cases:
              (?check-lessons=all): none fails
              (position_from_depth's error ranges: see within_top_of_range), and each step that
              cannot run in WebGL2 names its reason;
-  input      real clicks and a drag: Next in the Lessons window moves to the next step; dragging
-             the Lights window's Kq field changes the attenuation plot's radius;
+  input      real clicks, a drag and a key: dragging the Lights window's Kq field changes the
+             attenuation plot's radius; Next in the Lessons window moves to the next step; G
+             over the viewport turns the attachment overview on;
   storage    the window layout and lesson progress outlive a reload (IndexedDB);
   gltf       File > Open scene... with real clicks; the page's file picker, answered with a model
              from ../shared/gltf (skipped when absent), opens it;
@@ -235,6 +236,13 @@ class Page:
             self.pump(0.05)
         self.mouse("mouseReleased", x1, y1, 0, 1)
 
+    def tap(self, key, code, key_code):
+        """A key tap shorter than a frame, as the desktop tests' xdotool taps are."""
+        params = {"key": key, "code": code, "windowsVirtualKeyCode": key_code, "nativeVirtualKeyCode": key_code}
+        self.cmd("Input.dispatchKeyEvent", dict(params, type="rawKeyDown"))
+        self.cmd("Input.dispatchKeyEvent", dict(params, type="char", text=key))
+        self.cmd("Input.dispatchKeyEvent", dict(params, type="keyUp"))
+
     def wheel(self, x, y, delta_y):
         self.mouse("mouseMoved", x, y)
         self.pump(0.1)
@@ -389,6 +397,14 @@ def case_input(browser, base, out):
     print(f"  clicked Next at ({nx:.0f}, {ny:.0f}): the lesson moved to attenuation:2")
     page.wait_frames(3)
     page.screenshot(os.path.join(out, "input-after-next.png"))
+    # A key: G over the viewport toggles the attachment overview (the frame log's "overview").
+    view = page.frames[-1]["viewport"]
+    page.mouse("mouseMoved", view[0] + view[2] / 2, view[1] + view[3] / 2)
+    page.wait_frames(2)
+    assert not page.frames[-1]["overview"], "the overview is on before the key"
+    page.tap("g", "KeyG", 71)
+    page.wait_for("the overview after G", lambda: page.frames[-1]["overview"], 30)
+    print("  tapped G over the viewport: the attachment overview is on")
     return page
 
 
