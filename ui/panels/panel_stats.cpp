@@ -90,8 +90,9 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
         float const plotW = ImGui::GetContentRegionAvail().x;
         ImGui::PlotLines("##frame", stats.frameMs.data(), stats.count, offset, "frame ms", 0.0f, top,
                          ImVec2(plotW, 45.0f));
-        ImGui::PlotLines("##gpu", stats.gpuFrameMs.data(), stats.count, offset, "renderer GPU ms", 0.0f, top,
-                         ImVec2(plotW, 45.0f));
+        if (!gl::kWebGL2)  // not timed in the browser (above)
+            ImGui::PlotLines("##gpu", stats.gpuFrameMs.data(), stats.count, offset, "renderer GPU ms", 0.0f, top,
+                             ImVec2(plotW, 45.0f));
 
         if (ImGui::BeginTable(
                 "passes", 2,
@@ -106,7 +107,10 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
                 ImGui::TableNextColumn();
                 ImGui::TextUnformatted(p.name.c_str());
                 ImGui::TableNextColumn();
-                ImGui::Text("%.3f", p.gpuMs);
+                if (gl::kWebGL2)
+                    ImGui::TextDisabled("not timed");
+                else
+                    ImGui::Text("%.3f", p.gpuMs);
             }
             ImGui::EndTable();
         }

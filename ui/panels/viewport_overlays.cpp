@@ -3,6 +3,7 @@
 
 #include "core/cluster_math.h"
 #include "core/heat_scale.h"
+#include "gl/gl_api.h"
 #include "model/colormap.h"
 #include "model/lesson_claims.h"
 #include "panels/gui_compat.h"
@@ -94,6 +95,8 @@ void boxedText(ImVec2 p, std::string const& text) {
 // One side's GPU ms per pass, as much as fits in `width` pixels: every pass, else the passes of
 // 1 ms or more, else the total alone (the Stats window lists every pass).
 std::string passLine(char const* side, std::vector<PassTiming> const& passes, double total, float width) {
+    // The browser's finish() returns before its GPU process has drawn: no pass time means anything there.
+    if (gl::kWebGL2) return std::string(side) + ": passes not timed in the browser";
     char buf[64];
     std::snprintf(buf, sizeof buf, ", total %.1f", total);
     std::string const tail = buf;
