@@ -26,7 +26,8 @@ Cases:
   gltf       File > Open scene... with real clicks; the page's file picker, answered with a model
              from ../shared/gltf (skipped when absent), opens it;
   documents  a session file and a lesson file given to the page's picker open as a session and
-             as a lesson.
+             as a lesson;
+  recovery   an edit, then a reload without saving: the next page offers the autosaved session.
 
 --bench prints the editor's frame time in the browser and the site's download size instead.
 """
@@ -424,6 +425,7 @@ def case_storage(browser, base, out):
     page.frames.clear()
     page.wait_for("frames after the reload", lambda: len(page.frames) > 3, 120)
     progress = page.frames[-1].get("courseProgress", "")
+    page.screenshot(os.path.join(out, "storage-after-reload.png"))
     print(f"  before the reload: {progress_before!r}; after: {progress!r}")
     assert "attenuation 2/3" in progress_before, "the click did not count the step as seen"
     assert "attenuation 2/3" in progress, "the progress was lost on reload"
@@ -520,8 +522,28 @@ def case_documents(browser, base, out):
     return page
 
 
+def case_recovery(browser, base, out):
+    # An edit, then the page goes without saving (a reload): the next page offers the autosaved
+    # session, as a desktop editor offers a crashed one's (the browser's storage keeps it).
+    page = Page(browser, base + "?log-frames=/dev/stdout", (1600, 900))
+    page.wait_for("a rendered frame", lambda: any(f.get("rendered") for f in page.frames), 120)
+    kq = page.wait_frames(3)["kqField"]
+    assert kq[2] > 0, f"the Kq field is not drawn: {kq}"
+    y = kq[1] + kq[3] / 2
+    page.drag(kq[0] + kq[2] / 2, y, kq[0] + kq[2] / 2 + 80, y)
+    page.pump(8.0)  # the autosave waits 3 s after the last change; the storage is written every 2 s
+    page.cmd("Page.reload")
+    page.frames.clear()
+    offered = lambda: [c for c in page.console if "did not exit cleanly; its session is offered" in c]
+    page.wait_for("the recovery offer after the reload", offered, 120)
+    print("  " + offered()[0])
+    page.wait_frames(3)
+    page.screenshot(os.path.join(out, "recovery.png"))
+    return page
+
+
 CASES = {"default": case_default, "lessons": case_lessons, "input": case_input, "storage": case_storage,
-         "gltf": case_gltf, "documents": case_documents}
+         "gltf": case_gltf, "documents": case_documents, "recovery": case_recovery}
 
 
 def main():

@@ -288,7 +288,7 @@ std::optional<int> startEditor(Editor& editor) {
     std::optional<ui::RecoveryDir> recoveryDir;
     char const* recoveryEnv = std::getenv("GBL_RECOVERY_DIR");
     if (!editor.unattended || (recoveryEnv && *recoveryEnv)) recoveryDir.emplace(ui::defaultRecoveryDir());
-    ui::SessionController& sessions = editor.sessions.emplace(ui::steadyClock(), recoveryDir, long(::getpid()));
+    ui::SessionController& sessions = editor.sessions.emplace(ui::steadyClock(), recoveryDir, ui::editorRunId());
     // With a G-buffer open, a session still stores the scene behind it.
     sessions.setSceneBehind(
         [&gbuffer = editor.loading.gbuffer](ui::EditorState const& s) -> std::optional<ui::EditorState> {

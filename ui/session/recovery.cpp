@@ -5,10 +5,15 @@
 #include "session/config_dir.h"
 
 #include <signal.h>
+#include <unistd.h>
+#ifdef __EMSCRIPTEN__
+#include <emscripten/html5.h>
+#endif
 
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
@@ -50,9 +55,22 @@ void AutosaveTimer::failed() {
 
 // --- run markers ----------------------------------------------------------------------------
 
+long editorRunId() {
+#ifdef __EMSCRIPTEN__
+    static long const id = long(std::fmod(emscripten_date_now(), 2.0e9)) + 1;
+    return id;
+#else
+    return long(::getpid());
+#endif
+}
+
 bool processAlive(long pid) {
     if (pid <= 0) return false;
+#ifdef __EMSCRIPTEN__
+    return pid == editorRunId();
+#else
     return ::kill(pid_t(pid), 0) == 0 || errno == EPERM;
+#endif
 }
 
 RecoveryDir::RecoveryDir(std::string dir) : dir_(std::move(dir)) {}

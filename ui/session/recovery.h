@@ -50,6 +50,12 @@ struct UncleanExit {
 using ProcessAlive = std::function<bool(long pid)>;
 bool processAlive(long pid);  // kill(pid, 0): the pid exists (possibly owned by another user)
 
+// The id of this editor's run markers: its process id. In the browser every page's process id is
+// the same number, so a page takes one of its own (its start time in milliseconds), and
+// processAlive is true there for that id alone: a page that went (a reload, a closed tab) left
+// an unclean exit to offer, as a crashed desktop editor does.
+long editorRunId();
+
 // One directory holds a marker "running-<pid>" per live editor and its recovery session
 // "recovery-<pid>.json". Per-pid names let two editors run side by side without taking each
 // other's recovery for a crash.
