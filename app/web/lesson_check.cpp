@@ -11,7 +11,11 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <emscripten/emscripten.h>
+
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <sstream>
@@ -162,6 +166,65 @@ int checkLessonsInBrowser(std::string const& spec) {
     std::printf("lesson-check: %d hold, %d fail, %d skipped\n", hold, fail, skipped);
     glfwDestroyWindow(window);
     return fail == 0 ? 0 : 1;
+}
+
+int benchRendererInBrowser(std::string const& modeName) {
+    auto const mode = enumFromName<LightingMode>(kLightingModeNames, modeName);
+    if (!mode) {
+        std::fprintf(stderr, "bench-renderer: '%s' is not a lighting mode\n", modeName.c_str());
+        return 2;
+    }
+    if (!glfwInit()) return 1;
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+    GLFWwindow* window = glfwCreateWindow(1280, 720, "gbuffer-lab renderer bench", nullptr, nullptr);
+    if (!window) return 1;
+    glfwMakeContextCurrent(window);
+    Renderer renderer(detectGlCaps(), 1280, 720);
+    if (auto why = renderer.modeUnavailable(*mode)) {
+        std::printf("bench-renderer %s: unavailable: %s\n", modeName.c_str(), why->c_str());
+        return 0;
+    }
+    SceneData const scene = makeDefaultScene();
+    if (auto err = renderer.setScene(scene)) {
+        std::fprintf(stderr, "bench-renderer: %s\n", err->c_str());
+        return 1;
+    }
+    PipelineSettings settings;
+    settings.mode = *mode;
+    GLuint fbo = 0;
+    glGenFramebuffers(1, &fbo);
+    auto frame = [&] {
+        renderer.render({scene.camera.value_or(Camera{}), scene.lights, settings, false});
+        // The one-pixel read waits for the frame: WebGL's finish() does not.
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+        glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                               renderer.texture(Attachment::Final), 0);
+        GLint format = GL_RGBA, type = GL_UNSIGNED_BYTE;
+        glGetIntegerv(GL_IMPLEMENTATION_COLOR_READ_FORMAT, &format);
+        glGetIntegerv(GL_IMPLEMENTATION_COLOR_READ_TYPE, &type);
+        std::uint32_t texel[4] = {};
+        glReadPixels(0, 0, 1, 1, GLenum(format), GLenum(type), texel);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    };
+    for (int i = 0; i < 3; ++i) frame();
+    double total = 0.0, fastest = 1e30;
+    int const frames = 10;
+    for (int i = 0; i < frames; ++i) {
+        double const start = emscripten_get_now();
+        frame();
+        double const ms = emscripten_get_now() - start;
+        total += ms;
+        fastest = std::min(fastest, ms);
+    }
+    glDeleteFramebuffers(1, &fbo);
+    std::printf(
+        "bench-renderer %s: 1280x720, default scene, %zu lights: mean %.1f ms, fastest %.1f ms over %d "
+        "frames (each ended by a one-pixel read)\n",
+        modeName.c_str(), scene.lights.size(), total / frames, fastest, frames);
+    glfwDestroyWindow(window);
+    return 0;
 }
 
 }  // namespace gbl

@@ -12,4 +12,9 @@ namespace gbl {
 // S skipped"; returns 0 when no claim fails, 1 when one does, 2 for a bad spec or lesson folder.
 int checkLessonsInBrowser(std::string const& spec);
 
+// `?bench-renderer=MODE`: the renderer alone at 1280x720 on the default scene (32 lights), no
+// editor: 3 frames to warm up, then 10, each ended by a one-pixel read of the final image (which
+// waits until the browser's GPU process has drawn it). Prints the mean and the fastest frame.
+int benchRendererInBrowser(std::string const& mode);
+
 }  // namespace gbl

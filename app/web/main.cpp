@@ -18,9 +18,11 @@ int main(int argc, char** argv) {
     CLI::App app{"gbuffer-lab in the browser: a deferred-shading editor that shows every step of the frame"};
     gbl::EditorCli cli;
     gbl::addEditorOptions(app, cli);
-    std::string checkLessons;
+    std::string checkLessons, benchRenderer;
     app.add_option("--check-lessons", checkLessons,
                    "Check shipped lessons' claims in WebGL2 instead of opening the editor: all, or ID:STEP,...");
+    app.add_option("--bench-renderer", benchRenderer,
+                   "Time the renderer alone in WebGL2 (a lighting mode) instead of opening the editor");
     try {
         app.parse(argc, argv);
     } catch (CLI::ParseError const& e) {
@@ -29,6 +31,7 @@ int main(int argc, char** argv) {
     }
     if (auto const exitCode = gbl::finishEditorOptions(cli)) return *exitCode;
     if (!checkLessons.empty()) return gbl::checkLessonsInBrowser(checkLessons);
+    if (!benchRenderer.empty()) return gbl::benchRendererInBrowser(benchRenderer);
     if (!cli.editor.sizeGiven) {
         int width = 0, height = 0;
         emscripten_get_canvas_element_size("#canvas", &width, &height);

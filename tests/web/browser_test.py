@@ -29,7 +29,8 @@ Cases:
              as a lesson;
   recovery   an edit, then a reload without saving: the next page offers the autosaved session.
 
---bench prints the editor's frame time in the browser and the site's download size instead.
+--bench prints the site's download size, the editor's frame time in the browser and the renderer's
+alone per mode (?bench-renderer=MODE) instead.
 """
 import argparse
 import base64
@@ -495,6 +496,12 @@ def bench(site, base, out, frames=60, warmup=20, query=""):
               f"mean {mean:.1f} ms, median {times[len(times) // 2]:.1f} ms frame to frame over {len(times)} frames "
               f"(after {warmup}; the page thread's part: median {cpu[len(cpu) // 2]:.1f} ms), "
               f"{page.frames[-1]['viewport']} viewport")
+        # The renderer alone (no editor, no UI), per mode, against `gbuffer-lab bench` natively.
+        for mode in ("quad", "volumes", "forward"):
+            page = Page(browser, base + "?bench-renderer=" + mode)
+            line = lambda: [c for c in page.console if c.startswith("log: bench-renderer ")]
+            page.wait_for("the renderer's figures", line, 600)
+            print("bench: " + line()[0][len("log: "):])
     finally:
         browser.close()
         shutil.rmtree(profile, ignore_errors=True)
