@@ -103,6 +103,7 @@ RendererImpl::RendererImpl(GlCaps capsIn, int width, int height) : caps(std::mov
 void RendererImpl::resizeTargets(int width, int height) {
     width = std::max(width, 0);
     height = std::max(height, 0);
+    readback = {};
     if (auto err = createRenderTargets(width, height, targets.gbuffer.layout, targets))
         throw std::runtime_error("Renderer::resizeTargets(): " + *err);
 }
@@ -121,6 +122,7 @@ void RendererImpl::applyLayout(GBufferLayout layout) {
     if (!shaders.setGlobalDefines(shaderDefines(layout), &log))
         throw std::runtime_error("Renderer: the shaders failed to build for G-buffer layout " +
                                  std::string(layoutDesc(layout).name) + ":\n" + log);
+    readback = {};
     if (auto err = createRenderTargets(targets.width, targets.height, layout, targets))
         throw std::runtime_error("Renderer::applyLayout(): " + *err);
 }

@@ -123,6 +123,13 @@ public:
     std::function<void()> frameTestHook;  // renderer_test_access.h
     // Set: frames re-light this imported G-buffer with its camera (Renderer::setImportedGBuffer).
     std::optional<ImportedTextures> imported;
+    // The browser's read-back targets (renderer_readback.cpp): the depth copied into RGBA32F, the
+    // stencil's bit planes summed into RGBA8 over the G-buffer's depth-stencil. Made on first use,
+    // dropped whenever the targets are remade. Unused on the desktop, which reads both directly.
+    struct ReadbackTargets {
+        gl::Texture depthCopy, stencilSum;
+        gl::Framebuffer depthFbo, stencilFbo;
+    } readback;
 
 private:
     FrameContext frameContext(FrameInput const& input) const;

@@ -151,71 +151,99 @@ DecodedGBuffer decodeGBuffer(RendererImpl& r, glm::ivec2 offset, int width, int 
     return d;
 }
 
-// The G-buffer's depth as one float channel, rows top to bottom. Natively a read of the depth
-// attachment; in the browser, which cannot read depth, the depth texture is first drawn into an
-// RGBA32F target (shaders/texel_copy.frag) and its red channel read.
-FloatImage readDepth(RendererImpl& r) {
-    RenderTargets const& t = r.targets;
 #ifdef __EMSCRIPTEN__
-    gl::Texture copy = gl::Texture::create2D(GL_RGBA32F, t.width, t.height, "readback.depth");
-    gl::Framebuffer fbo = gl::Framebuffer::create({&copy}, nullptr, "readback.depth");
+// WebGL2 reads neither depth nor stencil. Depth: the depth texture is drawn into an RGBA32F target
+// (shaders/texel_copy.frag) and its red channel read. Stencil: an RGBA8 target sharing the
+// G-buffer's depth-stencil sums one pass per bit plane: where the stencil test passes for bit b
+// (mask 1 << b), the pass adds 2^b / 255 (additive blending; sums of distinct powers of two up to
+// 255 are exact in 8 bits), so the red channel times 255 is the stencil value. Only `region` (GL
+// coordinates: x, y from the bottom, width, height) is drawn and read: one pixel for the inspector.
+std::vector<float> readDepthOrStencil(RendererImpl& r, bool stencil, glm::ivec4 region) {
+    RenderTargets const& t = r.targets;
+    RendererImpl::ReadbackTargets& rb = r.readback;
+    if (!rb.depthFbo) {
+        rb.depthCopy = gl::Texture::create2D(GL_RGBA32F, t.width, t.height, "readback.depth");
+        rb.depthFbo = gl::Framebuffer::create({&rb.depthCopy}, nullptr, "readback.depth");
+        rb.stencilSum = gl::Texture::create2D(GL_RGBA8, t.width, t.height, "readback.stencil");
+        rb.stencilFbo = gl::Framebuffer::create({&rb.stencilSum}, &t.gbuffer.depth, "readback.stencil");
+    }
+    gl::Framebuffer const& fbo = stencil ? rb.stencilFbo : rb.depthFbo;
     glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
     glViewport(0, 0, t.width, t.height);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(region.x, region.y, region.z, region.w);
     glDisable(GL_DEPTH_TEST);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_BLEND);
+    glDepthMask(GL_FALSE);
     glDisable(GL_CULL_FACE);
-    r.shaders.get(ProgramId::TexelCopy).use();
-    bindTextureUnit(slot::BIND_READBACK_SOURCE, GL_TEXTURE_2D, t.gbuffer.depth.id());
-    r.triangle.draw();
+    gl::Program const& p = r.shaders.get(ProgramId::TexelCopy);
+    p.use();
+    if (stencil) {
+        // The depth-stencil texture is attached here: left bound for sampling, WebGL calls the
+        // draws a feedback loop (GL_INVALID_OPERATION) even though the constant mode reads nothing.
+        bindTextureUnit(slot::BIND_READBACK_SOURCE, GL_TEXTURE_2D, 0);
+        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glEnable(GL_STENCIL_TEST);
+        glStencilMask(0);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ONE);
+        p.set("uWriteConstant", 1);
+        for (int bit = 0; bit < 8; ++bit) {
+            glStencilFunc(GL_EQUAL, 1 << bit, GLuint(1 << bit));
+            p.set("uConstant", glm::vec4(float(1 << bit) / 255.0f));
+            r.triangle.draw();
+        }
+        p.set("uWriteConstant", 0);
+        glDisable(GL_BLEND);
+        glDisable(GL_STENCIL_TEST);
+        glStencilMask(0xFF);
+    } else {
+        glDisable(GL_STENCIL_TEST);
+        glDisable(GL_BLEND);
+        bindTextureUnit(slot::BIND_READBACK_SOURCE, GL_TEXTURE_2D, t.gbuffer.depth.id());
+        r.triangle.draw();
+    }
+    glDisable(GL_SCISSOR_TEST);
+    glDepthMask(GL_TRUE);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo.id());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    std::vector<float> const rgba = readRgbaAsFloats(GL_COLOR_ATTACHMENT0, region.x, region.y, region.z, region.w);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return readFramebuffer(fbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 1);
+    std::vector<float> red(std::size_t(region.z) * std::size_t(region.w));
+    for (std::size_t i = 0; i < red.size(); ++i) red[i] = stencil ? std::round(rgba[i * 4] * 255.0f) : rgba[i * 4];
+    return red;
+}
+
+// The whole frame's depth or stencil, rows top to bottom.
+FloatImage readDepthOrStencilImage(RendererImpl& r, bool stencil) {
+    RenderTargets const& t = r.targets;
+    std::vector<float> const bottomUp = readDepthOrStencil(r, stencil, {0, 0, t.width, t.height});
+    FloatImage img{t.width, t.height, 1, std::vector<float>(bottomUp.size())};
+    std::size_t const row = std::size_t(t.width);
+    for (int y = 0; y < t.height; ++y)
+        std::copy_n(bottomUp.begin() + std::ptrdiff_t(std::size_t(t.height - 1 - y) * row), row,
+                    img.pixels.begin() + std::ptrdiff_t(std::size_t(y) * row));
+    return img;
+}
+#endif
+
+// The G-buffer's depth, and its stencil values, as one float channel each, rows top to bottom.
+FloatImage readDepth(RendererImpl& r) {
+#ifdef __EMSCRIPTEN__
+    return readDepthOrStencilImage(r, false);
 #else
+    RenderTargets const& t = r.targets;
     return readFramebuffer(t.gbuffer.fbo.id(), GL_NONE, t.width, t.height, 1);
 #endif
 }
 
-// The G-buffer's stencil values as one float channel, rows top to bottom. In the browser, which
-// cannot read stencil, an RGBA8 target sharing the G-buffer's depth-stencil sums one pass per bit
-// plane: where the stencil test passes for bit b (mask 1 << b), the pass adds 2^b / 255 (additive
-// blending; the sums of distinct powers of two up to 255 are exact in 8 bits), so its red channel
-// times 255 is the stencil value.
 FloatImage readStencilImage(RendererImpl& r) {
-    RenderTargets const& t = r.targets;
 #ifdef __EMSCRIPTEN__
-    gl::Texture sum = gl::Texture::create2D(GL_RGBA8, t.width, t.height, "readback.stencil");
-    gl::Framebuffer fbo = gl::Framebuffer::create({&sum}, &t.gbuffer.depth, "readback.stencil");
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-    glViewport(0, 0, t.width, t.height);
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_STENCIL_TEST);
-    glStencilMask(0);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    glEnable(GL_BLEND);
-    glBlendEquation(GL_FUNC_ADD);
-    glBlendFunc(GL_ONE, GL_ONE);
-    gl::Program const& p = r.shaders.get(ProgramId::TexelCopy);
-    p.use();
-    p.set("uWriteConstant", 1);
-    for (int bit = 0; bit < 8; ++bit) {
-        glStencilFunc(GL_EQUAL, 1 << bit, GLuint(1 << bit));
-        p.set("uConstant", glm::vec4(float(1 << bit) / 255.0f));
-        r.triangle.draw();
-    }
-    p.set("uWriteConstant", 0);
-    glDisable(GL_BLEND);
-    glDisable(GL_STENCIL_TEST);
-    glStencilMask(0xFF);
-    glDepthMask(GL_TRUE);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    FloatImage img = readFramebuffer(fbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 1);
-    for (float& v : img.pixels) v = std::round(v * 255.0f);
-    return img;
+    return readDepthOrStencilImage(r, true);
 #else
+    RenderTargets const& t = r.targets;
     return readStencil(t.gbuffer.fbo.id(), t.width, t.height);
 #endif
 }
@@ -327,10 +355,9 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
         s.coverageMode = impl_->coverageMode;
     }
 #ifdef __EMSCRIPTEN__
-    // WebGL2 reads neither depth nor stencil: both through their passes.
-    std::size_t const texel = std::size_t(y) * std::size_t(t.width) + std::size_t(x);
-    s.depth = readDepth(*impl_).pixels[texel];
-    s.stencil = std::uint8_t(readStencilImage(*impl_).pixels[texel]);
+    // WebGL2 reads neither depth nor stencil: both through their passes, over this pixel alone.
+    s.depth = readDepthOrStencil(*impl_, false, {x, glY, 1, 1})[0];
+    s.stencil = std::uint8_t(readDepthOrStencil(*impl_, true, {x, glY, 1, 1})[0]);
 #else
     glBindFramebuffer(GL_READ_FRAMEBUFFER, t.gbuffer.fbo.id());
     glReadPixels(x, glY, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &s.depth);

@@ -25,6 +25,22 @@ namespace gbl {
 
 namespace {
 
+// The page's canvas as a WebGL2 (OpenGL ES 3.0) context of this size, current; null after one
+// sentence when the browser gives none.
+GLFWwindow* openWebGl2Canvas(int width, int height) {
+    if (!glfwInit()) return nullptr;
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+    GLFWwindow* window = glfwCreateWindow(width, height, "gbuffer-lab", nullptr, nullptr);
+    if (!window) {
+        std::fprintf(stderr, "gbuffer-lab: the browser gives no WebGL2 context\n");
+        return nullptr;
+    }
+    glfwMakeContextCurrent(window);
+    return window;
+}
+
 // The steps `spec` names: every step with a claim for "all", else a comma-separated list of ID:STEP.
 std::vector<ui::LessonRef> stepsOf(ui::LessonLibrary const& lib, std::string const& spec, std::string* error) {
     std::vector<ui::LessonRef> refs;
@@ -105,16 +121,8 @@ int checkLessonsInBrowser(std::string const& spec) {
         std::fprintf(stderr, "lesson-check: %s\n", error.empty() ? "no step to check" : error.c_str());
         return 2;
     }
-    if (!glfwInit()) return 1;
-    glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
-    GLFWwindow* window = glfwCreateWindow(640, 400, "gbuffer-lab lesson check", nullptr, nullptr);
-    if (!window) {
-        std::fprintf(stderr, "lesson-check: no WebGL2 context\n");
-        return 1;
-    }
-    glfwMakeContextCurrent(window);
+    GLFWwindow* window = openWebGl2Canvas(640, 400);
+    if (!window) return 1;
     Renderer renderer(detectGlCaps(), 640, 400);
     int hold = 0, fail = 0, skipped = 0;
     SceneData const scene = makeDefaultScene();
@@ -174,13 +182,8 @@ int benchRendererInBrowser(std::string const& modeName) {
         std::fprintf(stderr, "bench-renderer: '%s' is not a lighting mode\n", modeName.c_str());
         return 2;
     }
-    if (!glfwInit()) return 1;
-    glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
-    GLFWwindow* window = glfwCreateWindow(1280, 720, "gbuffer-lab renderer bench", nullptr, nullptr);
+    GLFWwindow* window = openWebGl2Canvas(1280, 720);
     if (!window) return 1;
-    glfwMakeContextCurrent(window);
     Renderer renderer(detectGlCaps(), 1280, 720);
     if (auto why = renderer.modeUnavailable(*mode)) {
         std::printf("bench-renderer %s: unavailable: %s\n", modeName.c_str(), why->c_str());
