@@ -313,7 +313,7 @@ FrameStats RendererImpl::render(FrameInput const& input) {
         ViewParams display;
         display.view = s.view;
         viewPass({targets.gbuffer, targets.lighting, targets.coverage, targets.diffuseLight, targets.specularLight,
-                  shaders.get(ProgramId::View), triangle, targets.displayFbo},
+                  viewProgram(s.view), triangle, targets.displayFbo},
                  {display, s.tonemap, s.exposure, f.camera.nearPlane, f.camera.farPlane, targets.width, targets.height,
                   shading.inverseViewProj});
     }
@@ -352,7 +352,7 @@ FrameStats RendererImpl::render(FrameInput const& input) {
 
     stats.timingSource = timingSourceName(timer.method().source);
     stats.timingReason = timer.method().reason;
-    for (auto& [name, ms] : timer.finishFrame(input.waitForGpuTimings)) {
+    for (auto& [name, ms] : timer.finishFrame(input.waitForGpuTimings, input.timingStream)) {
         stats.passes.push_back({name, ms});
         stats.gpuFrameMs += ms;
     }
@@ -463,6 +463,10 @@ std::uint64_t Renderer::glErrorCount() const {
 
 void RendererTestAccess::setFrameHook(Renderer& renderer, std::function<void()> hook) {
     renderer.impl().frameTestHook = std::move(hook);
+}
+
+void RendererTestAccess::setViewVariants(Renderer& renderer, bool on) {
+    renderer.impl().viewVariants = on;
 }
 
 std::size_t RendererTestAccess::shaderBuilds(Renderer& renderer) {

@@ -29,6 +29,9 @@ struct FrameInput {
     // true: block until this frame's GPU timings exist (render, bench, tests); false: report
     // the previous frame's timings so an interactive frame never waits on the GPU.
     bool waitForGpuTimings = true;
+    // Which frames' timings an unwaited frame reports (GpuTimer::finishFrame): frames rendered
+    // alternately with different settings (the A/B view's two sides) each keep their own.
+    int timingStream = 0;
     // Light-by-light accumulation: only lights [0, k) shade the frame (in list order, in every
     // mode), and the k-th light's volume is outlined. Clamped to 0..lights.size().
     std::optional<int> accumulateLights = std::nullopt;

@@ -44,7 +44,7 @@ void RendererImpl::drawView(ViewParams const& params, FrameInput const& frame, V
         if (shaderChecks) shaderChecks.collect();
     }
     viewPass({targets.gbuffer, targets.lighting, targets.coverage, targets.diffuseLight, targets.specularLight,
-              shaders.get(ProgramId::View), triangle, target.fbo},
+              viewProgram(params.view), triangle, target.fbo},
              {params, f.settings.tonemap, f.settings.exposure, f.camera.nearPlane, f.camera.farPlane, targets.width,
               targets.height, glm::inverse(f.viewProj)});
 }

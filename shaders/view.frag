@@ -13,6 +13,14 @@ uniform sampler2D uDiffuseLight;   // accumulation split's targets
 uniform sampler2D uSpecularLight;
 
 uniform int uView;
+// A program built for one view (ShaderLibrary::variant, "VIEW_ONLY n") switches on a constant: the
+// compiler keeps that view's code alone. Rasterisers that run every branch under a mask (llvmpipe,
+// SwiftShader) would otherwise run all of the views' code at every pixel.
+#ifdef VIEW_ONLY
+#define SHOWN_VIEW VIEW_ONLY
+#else
+#define SHOWN_VIEW uView
+#endif
 uniform vec4 uChannelMask;   // 1 for each shown channel
 uniform float uRangeMin;
 uniform float uRangeMax;
@@ -53,7 +61,7 @@ vec3 heatLegend(ivec2 px, vec3 color) {
     if (px.x < x0 - 1 || px.x > x1 || px.y < y0 - 1 || px.y > y1) return color;
     if (px.x == x0 - 1 || px.x == x1 || px.y == y0 - 1 || px.y == y1) return vec3(1.0);  // frame
     vec3 swatch = HEAT_COLORS[(px.x - x0) / w] / 255.0;
-    if (uView == VIEW_HEATMAP && px.y < (y0 + y1) / 2) swatch *= HEAT_WASTED_DIM;
+    if (SHOWN_VIEW == VIEW_HEATMAP && px.y < (y0 + y1) / 2) swatch *= HEAT_WASTED_DIM;
     return swatch;
 }
 
@@ -88,7 +96,7 @@ void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 v;
     bool data = true;  // data views are remapped; the final image and heat maps are not
-    switch (uView) {
+    switch (SHOWN_VIEW) {
     case VIEW_FINAL: v = vec4(tonemap(texelFetch(uLighting, px, 0).rgb), 1.0); data = false; break;
     case VIEW_LIGHTING: v = texelFetch(uLighting, px, 0); break;
     // Position and normal decoded as the lighting reads them, so every layout shows the same quantity.
@@ -144,7 +152,7 @@ void main() {
     }
     default: v = vec4(1.0, 0.0, 1.0, 1.0); data = false; break;  // magenta: an unknown view
     }
-    if (uView == VIEW_HEATMAP || uView == VIEW_TILE_LIGHTS) v.rgb = heatLegend(px, v.rgb);
+    if (SHOWN_VIEW == VIEW_HEATMAP || SHOWN_VIEW == VIEW_TILE_LIGHTS) v.rgb = heatLegend(px, v.rgb);
     vec4 raw = v;  // as stored, for the NaN/Inf/negative overlays
     if (data) v = remap(v);
     // Channel isolation: one channel alone is shown as grey (so alpha/specular stays visible).
@@ -155,5 +163,5 @@ void main() {
     } else {
         fragColor = vec4(v.rgb * uChannelMask.rgb, 1.0);
     }
-    if (uView != VIEW_FINAL) fragColor.rgb = viewTools(raw, v, uChannelMask, fragColor.rgb);
+    if (SHOWN_VIEW != VIEW_FINAL) fragColor.rgb = viewTools(raw, v, uChannelMask, fragColor.rgb);
 }

@@ -50,6 +50,8 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     l.openGBufferItem = {9, 88, 260, 17};
     l.openSceneItem = {9, 24, 260, 17};
     l.gbufferBrowser = true;
+    l.timing = "gpu_elapsed";
+    l.passMs = {{"geometry", 1.25}, {"lighting", 3.5}};
     nlohmann::json const j = nlohmann::json::parse(frameLogJson(l));
     EXPECT_EQ(j["frame"], 41);
     EXPECT_EQ(j["rendered"], true);
@@ -100,6 +102,8 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     EXPECT_EQ(j["openGBufferItem"], nlohmann::json::parse("[9,88,260,17]"));
     EXPECT_EQ(j["openSceneItem"], nlohmann::json::parse("[9,24,260,17]"));
     EXPECT_EQ(j["gbufferBrowser"], true);
+    EXPECT_EQ(j["timing"], "gpu_elapsed");
+    EXPECT_EQ(j["passMs"], nlohmann::json::parse(R"([["geometry",1.25],["lighting",3.5]])"));
 }
 
 TEST(FrameLog, WritesOneLinePerFrame) {

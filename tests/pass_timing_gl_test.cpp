@@ -98,6 +98,48 @@ TEST(BranchMasking, SoftwareRasterisersMaskBranchesUnlessOverridden) {
     EXPECT_TRUE(rendererMasksBranches("llvmpipe", "anything else: detect"));
 }
 
+// Unwaited frames report an earlier frame's times: with two kinds of frame rendered in turn (the
+// A/B view's sides), each must get its own kind's, whichever GL queries time them. Before the
+// timer kept streams, side B showed A's passes of the frame before, and A showed B's.
+TEST_F(PassTimingGlTest, AlternatingStreamsEachReportTheirOwnPasses) {
+    for (TimingSource const source : {TimingSource::GpuTimestamps, TimingSource::GpuElapsed}) {
+        SCOPED_TRACE(std::string(timingSourceName(source)));
+        GpuTimer timer;
+        timer.force(source, "test");
+        int reportedA = 0, reportedB = 0;
+        // The passes issue no GL work: the queries alone are what is under test.
+        for (int frame = 0; frame < 6; ++frame) {
+            timer.begin("b-only");
+            auto const b = timer.finishFrame(false, 1);
+            timer.begin("a-first");
+            timer.begin("a-second");
+            auto const a = timer.finishFrame(false, 0);
+            glFinish();  // the next frame's reads find these results
+            if (!b.empty()) {
+                ++reportedB;
+                ASSERT_EQ(b.size(), 1u);
+                EXPECT_EQ(b[0].first, "b-only");
+                EXPECT_GE(b[0].second, 0.0);
+            }
+            if (!a.empty()) {
+                ++reportedA;
+                ASSERT_EQ(a.size(), 2u);
+                EXPECT_EQ(a[0].first, "a-first");
+                EXPECT_EQ(a[1].first, "a-second");
+            }
+        }
+        // Each frame's results exist by the next frame: only the first frame has none to show.
+        EXPECT_EQ(reportedA, 5);
+        EXPECT_EQ(reportedB, 5);
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        // A waited frame has its own results at once.
+        timer.begin("waited");
+        auto const waited = timer.finishFrame(true, 0);
+        ASSERT_EQ(waited.size(), 1u);
+        EXPECT_EQ(waited[0].first, "waited");
+    }
+}
+
 TEST_F(PassTimingGlTest, StatsNameTheTimingSource) {
     std::vector<PointLight> const l = lights(4);
     FrameStats const s = renderer_->render({camera_, l, settings_, true});

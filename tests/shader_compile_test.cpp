@@ -127,5 +127,36 @@ TEST(ShaderCompile, EveryWebGL2StagePassesTheReferenceCompilerAsGlslEs300) {
     fs::remove_all(dir);
 }
 
+// Each view's own program (view.frag with VIEW_ONLY, built by ShaderLibrary::variant on first
+// use), desktop and WebGL2 text, with and without position from depth (packed).
+TEST(ShaderCompile, EveryViewsOwnProgramPassesTheReferenceCompiler) {
+    if (std::system("glslangValidator --version > /dev/null 2>&1") != 0)
+        GTEST_FAIL() << "glslangValidator not found: install Debian's glslang-tools (scripts/install-deps.sh does)";
+    fs::path const dir = fs::temp_directory_path() / ("gbl_glslang_views_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::vector<std::string> failures;
+    int variants = 0;
+    for (bool es : {false, true})
+        for (GBufferLayout layout : {GBufferLayout::Classic, GBufferLayout::Packed}) {
+            ShaderLibrary shaders{fs::path()};
+            shaders.setEsProfile(es);
+            ASSERT_TRUE(shaders.setGlobalDefines(layoutShaderDefines(layoutDesc(layout)), nullptr));
+            for (std::size_t v = 0; v < kDebugViewNames.size(); ++v) {
+                std::string error;
+                auto const text =
+                    shaders.stageSource(ProgramId::View, "view.frag", &error, "VIEW_ONLY " + std::to_string(v));
+                ASSERT_TRUE(text.has_value()) << error;
+                fs::path const out = dir / ("view_" + std::to_string(variants++) + ".frag");
+                std::ofstream(out) << *text;
+                if (std::string const log = validate(out); !log.empty())
+                    failures.push_back(std::string(kDebugViewNames[v]) + (es ? " (GLSL ES)" : "") + ":\n" + log);
+            }
+        }
+    EXPECT_TRUE(failures.empty()) << failures.size() << " of " << variants << " failed; the first:\n"
+                                  << (failures.empty() ? std::string() : failures.front());
+    EXPECT_EQ(variants, 4 * int(kDebugViewNames.size()));
+    fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace gbl

@@ -31,9 +31,10 @@ void glTexBuffer(GLenum, GLenum, GLuint) {
 void glQueryCounter(GLuint, GLenum) {
     missing("glQueryCounter");
 }
-void glGetQueryObjectui64v(GLuint, GLenum, GLuint64* params) {
-    missing("glGetQueryObjectui64v");
-    if (params) *params = 0;
+// EXT_disjoint_timer_query_webgl2's reading of a GL_TIME_ELAPSED query (Emscripten's name for it).
+void glGetQueryObjectui64vEXT(GLuint id, GLenum pname, GLuint64* params);
+void glGetQueryObjectui64v(GLuint id, GLenum pname, GLuint64* params) {
+    glGetQueryObjectui64vEXT(id, pname, params);
 }
 void glGetQueryObjectiv(GLuint id, GLenum pname, GLint* params) {
     GLuint v = 0;

@@ -22,7 +22,8 @@
 // Buffer textures (the light buffer is read through one on the desktop).
 #define GL_TEXTURE_BUFFER 0x8C2A
 #define GL_MAX_TEXTURE_BUFFER_SIZE 0x8C2B
-// Timer queries (EXT_disjoint_timer_query_webgl2 offers them in some browsers; not wired yet).
+// Timer queries: EXT_disjoint_timer_query_webgl2 offers GL_TIME_ELAPSED where the browser has it
+// (gl/gpu_timer.h); GL_TIMESTAMP stays the desktop's.
 #define GL_TIME_ELAPSED 0x88BF
 #define GL_TIMESTAMP 0x8E28
 // Pipeline statistics.

@@ -64,7 +64,8 @@ std::optional<std::string> ShaderLibrary::source(std::string const& file, std::s
     return out;
 }
 
-std::optional<std::string> ShaderLibrary::stageSource(ProgramId id, std::string const& file, std::string* error) const {
+std::optional<std::string> ShaderLibrary::stageSource(ProgramId id, std::string const& file, std::string* error,
+                                                      std::string const& variantDefine) const {
     auto text = source(file, error);
     if (!text) return std::nullopt;
     // Defines go right after the #version line, which must stay the first directive (the one-line
@@ -76,6 +77,7 @@ std::optional<std::string> ShaderLibrary::stageSource(ProgramId id, std::string 
     // The tile size of tiled and clustered lighting: one constant for C++ and every shader.
     defs += "#define GBL_TILE_SIZE " + std::to_string(kTileSize) + "\n";
     for (auto const& d : programInfo(id).desc.defines) defs += "#define " + d + "\n";
+    if (!variantDefine.empty()) defs += "#define " + variantDefine + "\n";
     for (auto const& d : globalDefines_) defs += "#define " + d + "\n";
     // The light buffer's row width where it is a 2D texture (shaders/light_texels.glsl).
     defs += "#define GBL_LIGHT_TEXELS_PER_ROW " + std::to_string(gl::kLightTexelsPerRow) + "\n";
@@ -98,12 +100,13 @@ std::optional<std::string> ShaderLibrary::stageSource(ProgramId id, std::string 
     return text;
 }
 
-std::optional<gl::Program> ShaderLibrary::build(ProgramId id, std::string* log) const {
+std::optional<gl::Program> ShaderLibrary::build(ProgramId id, std::string* log,
+                                                std::string const& variantDefine) const {
     ProgramDesc const& desc = programInfo(id).desc;
     std::vector<gl::ShaderStageSource> stages;
     for (auto const& [stage, file] : desc.stages) {
         std::string err;
-        auto text = stageSource(id, file, &err);
+        auto text = stageSource(id, file, &err, variantDefine);
         if (!text) {
             if (log) *log = "program " + desc.name + ": " + err;
             return std::nullopt;
@@ -136,6 +139,21 @@ bool ShaderLibrary::add(ProgramId id, std::string* log) {
     ++builds_;
     failures_[std::size_t(id)].clear();
     return true;
+}
+
+gl::Program const& ShaderLibrary::variant(ProgramId id, std::string const& define) {
+    auto const key = std::make_tuple(id, define, globalDefines_);
+    auto found = variants_.find(key);
+    if (found == variants_.end()) {
+        std::string log;
+        auto program = build(id, &log, define);
+        if (program) {
+            bindSamplerSlots(*program);
+            ++builds_;
+        }
+        found = variants_.emplace(key, program ? std::move(*program) : gl::Program{}).first;
+    }
+    return found->second ? found->second : get(id);
 }
 
 bool ShaderLibrary::setGlobalDefines(std::vector<std::string> defines, std::string* log) {
@@ -179,7 +197,12 @@ std::vector<std::string> ShaderLibrary::reloadChanged() {
         changed.insert(file);
     }
     if (changed.empty()) return messages;
+    // Programs are deleted below: the one still in use would live on, flagged, until the next
+    // glUseProgram, and a caller that saved and restores it (ImGui's renderer does) would then
+    // name a deleted program.
+    glUseProgram(0);
     otherDefines_.clear();  // built from the old sources
+    variants_.clear();
     for (ProgramInfo const& info : programTable()) {
         gl::Program& current = programs_[std::size_t(info.id)];
         if (!current) continue;  // never built: its group builds it on first use

@@ -10,6 +10,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace gbl {
@@ -33,6 +34,12 @@ public:
     // The compiler's log of the last failed build of `id`; empty when it built or was never tried.
     std::string const& failureLog(ProgramId id) const { return failures_[std::size_t(id)]; }
 
+    // Program `id` built with one define more (e.g. "VIEW_ONLY 3"), made on first use and kept
+    // per set of global defines: code that a uniform would select at every pixel is selected by
+    // the compiler instead. get(id) when the variant fails to build (e.g. a file broken by hot
+    // reload, which reloadChanged reports): a variant that failed is tried again only after the
+    // next change on disk.
+    gl::Program const& variant(ProgramId id, std::string const& define);
     // Rebuilds programs whose files changed on disk since the last look. A failed rebuild keeps
     // the previous program. Returns one message per program rebuilt ("reloaded X") or failed
     // (the whole info log with stage and file name).
@@ -50,7 +57,8 @@ public:
     // The text stage `file` of program `id` is compiled from: source(file) with the program's own
     // defines, the global ones and GBL_PROGRAM_ID inserted after #version. No GL call: the
     // reference-compiler test (tests/shader_compile_test.cpp) reads it too.
-    std::optional<std::string> stageSource(ProgramId id, std::string const& file, std::string* error = nullptr) const;
+    std::optional<std::string> stageSource(ProgramId id, std::string const& file, std::string* error = nullptr,
+                                           std::string const& variantDefine = {}) const;
     std::vector<std::string> const& globalDefines() const { return globalDefines_; }
     // Whether stages are emitted as GLSL ES 3.00 for WebGL2 (gl::kGlslEs: on in the browser build):
     // `#version 330 core` becomes `#version 300 es` with precision statements and
@@ -60,7 +68,7 @@ public:
     bool esProfile() const { return esProfile_; }
 
 private:
-    std::optional<gl::Program> build(ProgramId id, std::string* log) const;
+    std::optional<gl::Program> build(ProgramId id, std::string* log, std::string const& variantDefine = {}) const;
     std::optional<std::string> rawSource(std::string const& file) const;
 
     std::filesystem::path sourceDir_;
@@ -71,6 +79,8 @@ private:
     // Programs built for other global defines; dropped when a shader file changes on disk.
     std::map<std::vector<std::string>, std::array<gl::Program, kProgramCount>> otherDefines_;
     std::array<std::string, kProgramCount> failures_;
+    // variant(): by program, define and global defines; an empty program marks a failed build.
+    std::map<std::tuple<ProgramId, std::string, std::vector<std::string>>, gl::Program> variants_;
     std::map<std::string, std::filesystem::file_time_type> seenTimes_;  // per file on disk
     std::map<std::string, std::string> diskOverrides_;                  // files read from disk
 };

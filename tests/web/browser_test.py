@@ -27,7 +27,9 @@ Cases:
              from ../shared/gltf (skipped when absent), opens it;
   documents  a session file and a lesson file given to the page's picker open as a session and
              as a lesson;
-  recovery   an edit, then a reload without saving: the next page offers the autosaved session.
+  recovery   an edit, then a reload without saving: the next page offers the autosaved session;
+  timing     the passes are timed in the GPU process (EXT_disjoint_timer_query_webgl2) where the
+             browser offers it, each with its own work: 31 lights fewer shrink lighting, not geometry.
 
 --bench prints the site's download size, the editor's frame time in the browser and the renderer's
 alone per mode (?bench-renderer=MODE) instead.
@@ -549,8 +551,45 @@ def case_recovery(browser, base, out):
     return page
 
 
+def case_timing(browser, base, out):
+    # The passes are timed in the GPU process with EXT_disjoint_timer_query_webgl2 where the browser
+    # offers it: each pass's figure must be its own work. With 1 light instead of 32 the lighting
+    # pass shrinks and geometry, which the lights do not touch, stays.
+    def passes(query):
+        page = Page(browser, base + "?continuous&log-frames=/dev/stdout" + query)
+        page.wait_for("timed frames", lambda: len([f for f in page.frames if f.get("passMs")]) >= 8, 300)
+        offered = page.cmd("Runtime.evaluate", {"expression": "document.createElement('canvas').getContext('webgl2')"
+                                                ".getSupportedExtensions().includes('EXT_disjoint_timer_query_webgl2')",
+                                                "returnByValue": True})["result"]["value"]
+        timed = [f for f in page.frames if f.get("passMs")][-5:]
+        stamps = page.frame_stamps[-6:]
+        frame_ms = sorted(b - a for a, b in zip(stamps, stamps[1:]))[2]
+        median = {name: sorted(dict(f["passMs"]).get(name, 0.0) for f in timed)[2] for name, _ in timed[-1]["passMs"]}
+        return page, offered, timed[-1]["timing"], median, frame_ms
+
+    page, offered, timing, many, frame_ms = passes("")
+    print(f"  EXT_disjoint_timer_query_webgl2 offered: {offered}; timing: {timing}")
+    if not offered:
+        assert timing == "cpu_finish", f"no timer queries here, yet the passes are timed by {timing}"
+        print("  SKIP: this chromium offers no timer queries; the Stats window says the passes are not timed")
+        return page
+    assert timing == "gpu_elapsed", f"timer queries are offered, yet the passes are timed by {timing}"
+    print("  32 lights: " + ", ".join(f"{k} {v:.1f}" for k, v in many.items()) + f" ms; frame to frame {frame_ms:.0f} ms")
+    page.screenshot(os.path.join(out, "timing.png"))
+    for name in ("geometry", "lighting", "display"):
+        assert many.get(name, 0.0) > 0.0, f"the {name} pass has no time"
+    assert sum(many.values()) < frame_ms, "the passes take longer than the frame that holds them"
+    page, _, _, one, _ = passes("&lights=1")
+    print("  1 light:   " + ", ".join(f"{k} {v:.1f}" for k, v in one.items()) + " ms")
+    assert one["lighting"] < 0.5 * many["lighting"], "the lighting pass did not shrink with 31 lights fewer"
+    # Against geometry, whose work is the same: a machine busy with something else slows both.
+    assert one["lighting"] / one["geometry"] < 0.5 * many["lighting"] / many["geometry"], \
+        "the lighting pass did not shrink against geometry: the queries do not time their own pass"
+    return page
+
+
 CASES = {"default": case_default, "lessons": case_lessons, "input": case_input, "storage": case_storage,
-         "gltf": case_gltf, "documents": case_documents, "recovery": case_recovery}
+         "gltf": case_gltf, "documents": case_documents, "recovery": case_recovery, "timing": case_timing}
 
 
 def main():

@@ -5,6 +5,7 @@
 #include "model/normal_angle.h"
 
 #include "gl/gl_api.h"
+#include "gl/gpu_timer.h"
 
 namespace gbl::ui {
 
@@ -47,6 +48,7 @@ FrameStats renderEditorFrame(EditorState& state, Renderer& renderer, FrameInput 
     // as every other tool expects them (the G-buffer viewers and the inspector read side A).
     FrameInput b = a;
     b.settings = sideB(ab, a.settings);
+    b.timingStream = 1;  // an unwaited frame reports an earlier frame's times: B's, not A's
     FrameStats const statsB = renderer.render(b);
     ab.pin.showDiff = true;
     ab.pin.diffMode = ab.diffMode;
@@ -76,6 +78,7 @@ FrameStats renderEditorFrame(EditorState& state, Renderer& renderer, FrameInput 
     ab.passesB = statsB.passes;
     ab.gpuMsA = statsA.gpuFrameMs;
     ab.gpuMsB = statsB.gpuFrameMs;
+    ab.passesTimed = passesTimed(statsA.timingSource);
     return statsA;
 }
 

@@ -121,6 +121,8 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.openGBufferItem = editor.loading.gbuffer.menuItemRect;
     line.openSceneItem = editor.loading.openItemRect;
     line.gbufferBrowser = editor.loading.gbuffer.browser.open;
+    line.timing = state.stats.last.timingSource;
+    for (PassTiming const& p : state.stats.last.passes) line.passMs.emplace_back(p.name, p.gpuMs);
     editor.frameLog.write(line);
 }
 

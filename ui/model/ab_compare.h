@@ -45,6 +45,7 @@ struct AbState {
     DiffStats normalDiff;                      // normal angle: per pixel, degrees between A's and B's decoded normals
     std::vector<PassTiming> passesA, passesB;  // GPU ms per pass of each side's last frame
     double gpuMsA = 0.0, gpuMsB = 0.0;
+    bool passesTimed = true;  // false in a browser without timer queries (gl/gpu_timer.h passesTimed)
     // In the heat view: each side's light evaluations, the heat map's counts summed over the frame
     // (model/lesson_claims.h, evaluationCount); nullopt in other views.
     std::optional<std::pair<double, double>> evaluations;

@@ -139,7 +139,12 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"fileMenu\":" + rect(l.fileMenu) + ",\"openGBufferItem\":" + rect(l.openGBufferItem) +
            ",\"openSceneItem\":" + rect(l.openSceneItem) +
            ",\"gbufferBrowser\":" + (l.gbufferBrowser ? "true" : "false");
-    return out + "}";
+    // Pairs, not an object: a pass's name as a key would read as a field of the line itself to
+    // the shell tests' field lookups ("wireframes" is both).
+    out += ",\"timing\":" + quoted(l.timing) + ",\"passMs\":[";
+    for (std::size_t i = 0; i < l.passMs.size(); ++i)
+        out += std::string(i ? "," : "") + "[" + quoted(l.passMs[i].first) + "," + number(l.passMs[i].second) + "]";
+    return out + "]}";
 }
 
 std::optional<std::string> FrameLog::open(std::string const& path) {

@@ -133,6 +133,10 @@ struct FrameLogLine {
     glm::vec4 openGBufferItem{0.0f};
     glm::vec4 openSceneItem{0.0f};  // File > "Open scene..." (0 while the menu is closed)
     bool gbufferBrowser = false;
+    // How the renderer's passes were timed (FrameStats::timingSource) and the last timings shown,
+    // [pass name, milliseconds] pairs (a frame or more old where the GPU is read without waiting).
+    std::string timing;
+    std::vector<std::pair<std::string, double>> passMs;
 };
 
 std::string frameLogJson(FrameLogLine const& line);

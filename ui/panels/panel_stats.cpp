@@ -3,6 +3,7 @@
 
 #include "core/gbuffer_layout.h"
 #include "gl/gl_api.h"
+#include "gl/gpu_timer.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
 #include "panels/wrapped_text.h"
@@ -45,21 +46,19 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
         }
         // Where no timer query attributes work to passes (software rasterisers, WebGL2) the passes
         // are timed on the CPU between glFinish calls: labelled so, with the reason on hover.
-        bool const cpuTimed = f.timingSource == "cpu_finish";
-        if (gl::kWebGL2) {
-            // The browser's finish() returns before its GPU process has drawn: the passes' CPU
-            // times say nothing there, so only the frame's own time (the line above) is shown.
-            ImGui::TextDisabled("Renderer at %dx%d: not timed in the browser", f.width, f.height);
+        bool const cpuTimed = f.timingSource == timingSourceName(TimingSource::CpuFinish);
+        bool const timed = passesTimed(f.timingSource);
+        if (!timed) {
+            // A browser without timer queries: the passes' CPU times say nothing there, so only
+            // the frame's own time (the line above) is shown.
+            ImGui::TextDisabled("Renderer at %dx%d: not timed in this browser", f.width, f.height);
             if (ImGui::IsItemHovered())
-                ImGui::SetTooltip(
-                    "WebGL2 has no GL_TIMESTAMP queries here (EXT_disjoint_timer_query_webgl2 is not\n"
-                    "used), and finish() returns before the GPU process has drawn: the frame time\n"
-                    "above, measured on the CPU, is the measure in the browser");
+                ImGui::SetTooltip("%s;\nthe frame time above, measured on the CPU, is the measure here",
+                                  f.timingReason.c_str());
         } else {
             ImGui::Text("Renderer %s %.2f ms at %dx%d", cpuTimed ? "(CPU-timed)" : "GPU", f.gpuFrameMs, f.width,
                         f.height);
-            if (cpuTimed && ImGui::IsItemHovered() && !f.timingReason.empty())
-                ImGui::SetTooltip("%s", f.timingReason.c_str());
+            if (ImGui::IsItemHovered() && !f.timingReason.empty()) ImGui::SetTooltip("%s", f.timingReason.c_str());
         }
         if (render) {
             // Render on change: an idle editor shows the last frame again instead of re-rendering it.
@@ -90,7 +89,7 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
         float const plotW = ImGui::GetContentRegionAvail().x;
         ImGui::PlotLines("##frame", stats.frameMs.data(), stats.count, offset, "frame ms", 0.0f, top,
                          ImVec2(plotW, 45.0f));
-        if (!gl::kWebGL2)  // not timed in the browser (above)
+        if (timed)
             ImGui::PlotLines("##gpu", stats.gpuFrameMs.data(), stats.count, offset, "renderer GPU ms", 0.0f, top,
                              ImVec2(plotW, 45.0f));
 
@@ -107,7 +106,7 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
                 ImGui::TableNextColumn();
                 ImGui::TextUnformatted(p.name.c_str());
                 ImGui::TableNextColumn();
-                if (gl::kWebGL2)
+                if (!timed)
                     ImGui::TextDisabled("not timed");
                 else
                     ImGui::Text("%.3f", p.gpuMs);

@@ -94,9 +94,9 @@ void boxedText(ImVec2 p, std::string const& text) {
 
 // One side's GPU ms per pass, as much as fits in `width` pixels: every pass, else the passes of
 // 1 ms or more, else the total alone (the Stats window lists every pass).
-std::string passLine(char const* side, std::vector<PassTiming> const& passes, double total, float width) {
-    // The browser's finish() returns before its GPU process has drawn: no pass time means anything there.
-    if (gl::kWebGL2) return std::string(side) + ": passes not timed in the browser";
+std::string passLine(char const* side, std::vector<PassTiming> const& passes, double total, float width, bool timed) {
+    // A browser without timer queries cannot time a pass (gl/gpu_timer.h).
+    if (!timed) return std::string(side) + ": passes not timed in this browser";
     char buf[64];
     std::snprintf(buf, sizeof buf, ", total %.1f", total);
     std::string const tail = buf;
@@ -152,8 +152,10 @@ void drawAbSplit(ViewportTeaching const& v, PipelineSettings const& a, ImVec2 or
     if (ab.evaluations)
         boxedText(ImVec2(origin.x + 8, bottom - 3 * line - 4),
                   evaluationsLine(ab.evaluations->first, ab.evaluations->second));
-    boxedText(ImVec2(origin.x + 8, bottom - 2 * line - 4), passLine("A", ab.passesA, ab.gpuMsA, avail.x - 16));
-    boxedText(ImVec2(origin.x + 8, bottom - line - 4), passLine("B", ab.passesB, ab.gpuMsB, avail.x - 16));
+    boxedText(ImVec2(origin.x + 8, bottom - 2 * line - 4),
+              passLine("A", ab.passesA, ab.gpuMsA, avail.x - 16, ab.passesTimed));
+    boxedText(ImVec2(origin.x + 8, bottom - line - 4),
+              passLine("B", ab.passesB, ab.gpuMsB, avail.x - 16, ab.passesTimed));
 }
 
 // The |A - B| heat map's legend (turbo from 0 to its scale) and the diff's numbers.
@@ -191,8 +193,9 @@ void drawAbDiff(ViewportTeaching const& v, PipelineSettings const& a, ImVec2 ori
     std::snprintf(buf, sizeof buf, "%.3g%s%s", scale, unit, ab.heatToThreshold ? " (threshold)" : " (max)");
     dl->AddText(ImVec2(p0.x + w - ImGui::CalcTextSize(buf).x, p0.y + h + 1), IM_COL32(240, 240, 240, 255), buf);
     boxedText(ImVec2(origin.x + 8, origin.y + avail.y - 2 * line - 4),
-              passLine("A", ab.passesA, ab.gpuMsA, avail.x - 16));
-    boxedText(ImVec2(origin.x + 8, origin.y + avail.y - line - 4), passLine("B", ab.passesB, ab.gpuMsB, avail.x - 16));
+              passLine("A", ab.passesA, ab.gpuMsA, avail.x - 16, ab.passesTimed));
+    boxedText(ImVec2(origin.x + 8, origin.y + avail.y - line - 4),
+              passLine("B", ab.passesB, ab.gpuMsB, avail.x - 16, ab.passesTimed));
 }
 
 }  // namespace gbl::ui
