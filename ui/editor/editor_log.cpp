@@ -120,6 +120,9 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.fileMenu = state.layout.fileMenuRect;
     line.openGBufferItem = editor.loading.gbuffer.menuItemRect;
     line.openSceneItem = editor.loading.openItemRect;
+    line.openFolderItem = editor.loading.openFolderItemRect;
+    line.exportAllItem = editor.sessions->panel.exportAllItemRect;
+    line.windowShotItem = editor.windowShot.itemRect;
     line.gbufferBrowser = editor.loading.gbuffer.browser.open;
     editor.frameLog.write(line);
 }

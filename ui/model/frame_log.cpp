@@ -137,7 +137,8 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"gbuffer\":" + quoted(l.gbuffer);
     out += ",\"frameSize\":[" + std::to_string(l.frameSize.x) + "," + std::to_string(l.frameSize.y) + "]";
     out += ",\"fileMenu\":" + rect(l.fileMenu) + ",\"openGBufferItem\":" + rect(l.openGBufferItem) +
-           ",\"openSceneItem\":" + rect(l.openSceneItem) +
+           ",\"openSceneItem\":" + rect(l.openSceneItem) + ",\"openFolderItem\":" + rect(l.openFolderItem) +
+           ",\"exportAllItem\":" + rect(l.exportAllItem) + ",\"windowShotItem\":" + rect(l.windowShotItem) +
            ",\"gbufferBrowser\":" + (l.gbufferBrowser ? "true" : "false");
     return out + "}";
 }
