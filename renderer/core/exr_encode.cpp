@@ -6,7 +6,7 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
+#include <cstring>
 
 namespace gbl {
 
@@ -24,7 +24,11 @@ public:
     void u64(std::uint64_t v) {
         for (int i = 0; i < 8; ++i) out.push_back(std::uint8_t(v >> (8 * i)));
     }
-    void f32(float v) { u32(std::bit_cast<std::uint32_t>(v)); }
+    void f32(float v) {
+        std::uint32_t bits = 0;  // std::bit_cast: not in Emscripten 3.1.6's libc++
+        std::memcpy(&bits, &v, sizeof bits);
+        u32(bits);
+    }
     void text(std::string const& s) {  // with its terminating zero
         out.insert(out.end(), s.begin(), s.end());
         out.push_back(0);
