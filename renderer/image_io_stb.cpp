@@ -1,7 +1,10 @@
 // The browser build's image files (issue 29): OpenImageIO does not build for the web, so PNG goes
-// through stb_image_write and reading through stb_image (PNG, JPEG, HDR, ...). EXR is refused with
-// a sentence saying why; image_io.cpp is the native version of the same three functions.
+// through stb_image_write, EXR through our own writer of uncompressed float scanlines
+// (core/exr_encode.h) and reading through stb_image (PNG, JPEG, HDR, ...; not EXR). image_io.cpp is
+// the native version of the same three functions.
 #include "image_io.h"
+
+#include "core/exr_encode.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>
@@ -9,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <vector>
 
 namespace gbl {
@@ -30,8 +34,15 @@ std::optional<std::string> writePng(std::string const& path, FloatImage const& i
     return std::nullopt;
 }
 
-std::optional<std::string> writeExr(std::string const& path, FloatImage const&, int, int) {
-    return "cannot write " + path + ": EXR files need OpenImageIO, which the browser build does not have (PNG works)";
+std::optional<std::string> writeExr(std::string const& path, FloatImage const& image, int first, int count) {
+    std::string why;
+    std::optional<std::vector<std::uint8_t>> const bytes = encodeExr(image, first, count, &why);
+    if (!bytes) return "cannot write " + path + ": " + why;
+    std::ofstream file(path, std::ios::binary);
+    file.write(reinterpret_cast<char const*>(bytes->data()), std::streamsize(bytes->size()));
+    file.close();
+    if (!file) return "cannot write " + path + ": the file could not be written";
+    return std::nullopt;
 }
 
 std::optional<FloatImage> readImage(std::string const& path, std::string* error) {

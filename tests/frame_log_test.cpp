@@ -49,6 +49,9 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     l.fileMenu = {8, 0, 30, 19};
     l.openGBufferItem = {9, 88, 260, 17};
     l.openSceneItem = {9, 24, 260, 17};
+    l.openFolderItem = {9, 42, 260, 17};
+    l.exportAllItem = {9, 150, 260, 17};
+    l.windowShotItem = {9, 168, 260, 17};
     l.gbufferBrowser = true;
     l.timing = "gpu_elapsed";
     l.passMs = {{"geometry", 1.25}, {"lighting", 3.5}};
@@ -101,6 +104,9 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     EXPECT_EQ(j["fileMenu"], nlohmann::json::parse("[8,0,30,19]"));
     EXPECT_EQ(j["openGBufferItem"], nlohmann::json::parse("[9,88,260,17]"));
     EXPECT_EQ(j["openSceneItem"], nlohmann::json::parse("[9,24,260,17]"));
+    EXPECT_EQ(j["openFolderItem"], nlohmann::json::parse("[9,42,260,17]"));
+    EXPECT_EQ(j["exportAllItem"], nlohmann::json::parse("[9,150,260,17]"));
+    EXPECT_EQ(j["windowShotItem"], nlohmann::json::parse("[9,168,260,17]"));
     EXPECT_EQ(j["gbufferBrowser"], true);
     EXPECT_EQ(j["timing"], "gpu_elapsed");
     EXPECT_EQ(j["passMs"], nlohmann::json::parse(R"([["geometry",1.25],["lighting",3.5]])"));

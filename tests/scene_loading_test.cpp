@@ -7,6 +7,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <thread>
 
 using namespace gbl;
@@ -167,5 +168,62 @@ TEST(SceneLoading, DroppedSessionAndLessonFilesAreToldApartFromOtherJson) {
     EXPECT_EQ(droppedDocumentKind(write("o.json", "{\"format\": \"gbuffer-lab-sessions\"}")), DroppedDocument::Other);
     EXPECT_EQ(droppedDocumentKind(write("x.gltf", "{\"format\": \"gbuffer-lab-session\"}")), DroppedDocument::Other);
     EXPECT_EQ(droppedDocumentKind((dir / "missing.json").string()), DroppedDocument::Other);
+    fs::remove_all(dir);
+}
+
+TEST(SceneLoading, FolderOpensItsSceneWithBuffersInSubfolders) {
+    // The common layout: the .gltf beside a buffers/ folder, as the browser's folder drop writes it.
+    fs::path const dir = fs::temp_directory_path() / "gbl_folder_scene";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "Model" / "buffers");
+    std::ifstream in(localFile("triangle_external.gltf"));
+    std::string gltf{std::istreambuf_iterator<char>(in), {}};
+    std::size_t const uri = gltf.find("\"triangle.bin\"");
+    ASSERT_NE(uri, std::string::npos);
+    gltf.replace(uri, 14, "\"buffers/triangle.bin\"");
+    std::ofstream(dir / "Model" / "scene.gltf") << gltf;
+    fs::copy_file(localFile("triangle.bin"), dir / "Model" / "buffers" / "triangle.bin");
+
+    FolderScene const found = findFolderScene(dir.string(), "the dropped folder");
+    ASSERT_TRUE(found.scene) << found.message;
+    EXPECT_EQ(*found.scene, (dir / "Model" / "scene.gltf").generic_string());
+    EXPECT_EQ(found.message, "opening Model/scene.gltf from the dropped folder (2 files)");
+    GltfLoadResult const loaded = loadGltf(*found.scene);
+    ASSERT_TRUE(loaded.scene) << loaded.error;
+    EXPECT_EQ(loaded.scene->triangleCount(), 1u);
+    // Moved beside the scene, the buffer is missing: the load fails, so the one above found it in buffers/.
+    fs::rename(dir / "Model" / "buffers" / "triangle.bin", dir / "Model" / "triangle.bin");
+    EXPECT_FALSE(loadGltf(*found.scene).scene);
+    fs::remove_all(dir);
+}
+
+TEST(SceneLoading, FolderWithSeveralScenesOpensTheFirstByPathAndSaysSo) {
+    fs::path const dir = fs::temp_directory_path() / "gbl_folder_scenes";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "M" / "a");
+    for (char const* name : {"M/c.gltf", "M/b.glb", "M/a/x.gltf", "M/notes.txt"}) std::ofstream(dir / name) << "{}";
+    FolderScene const found = findFolderScene(dir.string(), "the folder M");
+    ASSERT_TRUE(found.scene);
+    EXPECT_EQ(*found.scene, (dir / "M" / "a" / "x.gltf").generic_string());
+    EXPECT_EQ(found.message,
+              "opening M/a/x.gltf from the folder M (4 files); one scene at a time, the first by path: the folder "
+              "also holds M/b.glb, M/c.gltf");
+    fs::remove_all(dir);
+}
+
+TEST(SceneLoading, FolderWithoutAScenePathSaysWhy) {
+    fs::path const dir = fs::temp_directory_path() / "gbl_folder_none";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "empty" / "sub");
+    FolderScene const empty = findFolderScene((dir / "empty").string(), "the folder empty");
+    EXPECT_FALSE(empty.scene);
+    EXPECT_EQ(empty.message, "the folder empty holds no files: choose the folder the .gltf or .glb is in");
+    std::ofstream(dir / "empty" / "sub" / "albedo.png") << "png";
+    FolderScene const pictures = findFolderScene((dir / "empty").string(), "the folder empty");
+    EXPECT_FALSE(pictures.scene);
+    EXPECT_EQ(pictures.message, "the folder empty holds 1 file(s) but no .gltf or .glb scene: nothing to open");
+    FolderScene const missing = findFolderScene((dir / "missing").string(), "the folder missing");
+    EXPECT_FALSE(missing.scene);
+    EXPECT_TRUE(missing.message.starts_with("cannot read the folder missing: ")) << missing.message;
     fs::remove_all(dir);
 }

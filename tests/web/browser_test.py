@@ -28,6 +28,15 @@ Cases:
   documents  a session file and a lesson file given to the page's picker open as a session and
              as a lesson;
   recovery   an edit, then a reload without saving: the next page offers the autosaved session;
+  folder     File > Open folder... answered with a folder holding a glTF whose buffer and texture sit
+             in subfolders (made from ../shared/gltf/Duck at run time; skipped when absent) opens it
+             textured and lit; the same folder dropped on the page (Input.dispatchDragEvent) opens
+             again; an empty folder, one without a scene and one with two scenes each get their one
+             line in the log, and the editor keeps drawing;
+  export     File > Export all... and Enter: one download, gbuffer-lab-export.zip, whose CRCs hold
+             and which has every file of the export, its EXR files read back here (uncompressed
+             float scanlines) at the frame's size, depth within [0, 1];
+  screenshot File > Save window as PNG: one download, a PNG of the whole window;
   timing     the passes are timed in the GPU process (EXT_disjoint_timer_query_webgl2) where the
              browser offers it, each with its own work: 31 lights fewer shrink lighting, not geometry.
 
@@ -45,6 +54,7 @@ import shutil
 import socketserver
 import struct
 import subprocess
+import zipfile
 import sys
 import tempfile
 import threading
@@ -470,6 +480,69 @@ def case_gltf(browser, base, out):
     return page
 
 
+# ---- downloads, the File menu, EXR -----------------------------------------------------------
+def allow_downloads(page, folder):
+    """Saves the page's downloads into `folder`, each under its guid; returns {suggested name: path}
+    of the downloads completed so far (filled in as events arrive)."""
+    page.b.send("Browser.setDownloadBehavior", {"behavior": "allowAndName", "downloadPath": folder, "eventsEnabled": True})
+    names, done = {}, {}
+    earlier = page.on_event
+
+    def on_event(method, params):
+        if earlier:
+            earlier(method, params)
+        if method == "Browser.downloadWillBegin":
+            names[params["guid"]] = params["suggestedFilename"]
+        elif method == "Browser.downloadProgress" and params.get("state") == "completed":
+            done[names.get(params["guid"], params["guid"])] = os.path.join(folder, params["guid"])
+
+    page.on_event = on_event
+    return done
+
+
+def click_file_menu_item(page, item):
+    """Opens the File menu and clicks the item whose rectangle the frame log gives as `item`."""
+    menu = page.frames[-1]["fileMenu"]
+    assert menu[2] > 0, f"the File menu is not drawn: {menu}"
+    page.click(menu[0] + menu[2] / 2, menu[1] + menu[3] / 2)
+    page.wait_for(f"the File menu's {item}", lambda: page.frames[-1].get(item, [0, 0, 0])[2] > 0, 30)
+    rect = page.frames[-1][item]
+    page.click(rect[0] + rect[2] / 2, rect[1] + rect[3] / 2)
+
+
+def read_exr(data):
+    """An uncompressed scanline EXR of FLOAT channels, as the browser build writes them (OpenEXR's
+    file layout); returns width, height and {channel name: values, rows top to bottom}."""
+    assert data[:4] == b"\x76\x2f\x31\x01", "not an EXR file"
+    pos, attributes = 8, {}
+    while data[pos] != 0:
+        name_end = data.index(b"\0", pos)
+        type_end = data.index(b"\0", name_end + 1)
+        size = struct.unpack_from("<i", data, type_end + 1)[0]
+        attributes[data[pos:name_end].decode()] = data[type_end + 5:type_end + 5 + size]
+        pos = type_end + 5 + size
+    pos += 1
+    assert attributes["compression"] == b"\0", "the EXR is compressed"
+    x0, y0, x1, y1 = struct.unpack("<4i", attributes["dataWindow"])
+    width, height = x1 - x0 + 1, y1 - y0 + 1
+    names, chlist = [], attributes["channels"]
+    at = 0
+    while chlist[at] != 0:
+        end = chlist.index(b"\0", at)
+        kind = struct.unpack_from("<i", chlist, end + 1)[0]
+        assert kind == 2, f"channel {chlist[at:end]} is not FLOAT"
+        names.append(chlist[at:end].decode())
+        at = end + 17
+    values = {n: [] for n in names}
+    for offset in struct.unpack_from(f"<{height}Q", data, pos):
+        _, size = struct.unpack_from("<2i", data, offset)
+        assert size == width * 4 * len(names), "a scanline of the wrong size"
+        row = struct.unpack_from(f"<{width * len(names)}f", data, offset + 8)
+        for i, n in enumerate(names):
+            values[n].extend(row[i * width:(i + 1) * width])
+    return width, height, values
+
+
 def bench(site, base, out, frames=60, warmup=20, query=""):
     """Prints the editor's frame time in the browser at 1280x720 (render every frame, the default
     scene) and the download size of the site; a benchmark, so it asserts nothing."""
@@ -588,8 +661,200 @@ def case_timing(browser, base, out):
     return page
 
 
+def copy_duck_into_subfolders(folder):
+    """The Duck with its buffer and texture moved into subfolders, its uris rewritten to match:
+    folder/Duck/Duck.gltf, folder/Duck/buffers/Duck0.bin, folder/Duck/textures/DuckCM.png."""
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    shared = os.path.abspath(os.path.join(root, "..", "shared", "gltf", "Duck"))
+    if not all(os.path.isfile(os.path.join(shared, f)) for f in ("Duck.gltf", "Duck0.bin", "DuckCM.png")):
+        return None, shared
+    duck = os.path.join(folder, "Duck")
+    os.makedirs(os.path.join(duck, "buffers"))
+    os.makedirs(os.path.join(duck, "textures"))
+    with open(os.path.join(shared, "Duck.gltf")) as f:
+        gltf = json.load(f)
+    moved = {"Duck0.bin": "buffers/Duck0.bin", "DuckCM.png": "textures/DuckCM.png"}
+    for entry in gltf.get("buffers", []) + gltf.get("images", []):
+        entry["uri"] = moved[entry["uri"]]
+    with open(os.path.join(duck, "Duck.gltf"), "w") as f:
+        json.dump(gltf, f)
+    for name, target in moved.items():
+        shutil.copyfile(os.path.join(shared, name), os.path.join(duck, target))
+    return duck, shared
+
+
+def yellow_and_lit(page, out, name):
+    """The duck in the viewport, lit and showing its texture: among the lit pixels red stands well
+    above blue (the texture's yellow; the white placeholder a missing texture gets would not)."""
+    w, h, bpp, rows = image = page.screenshot(os.path.join(out, name))
+    viewport = page.frames[-1]["viewport"]
+    mean, spread, lit = region_stats(image, viewport)
+    x0, y0, rw, rh = (int(v) for v in viewport)
+    red = blue = count = 0
+    for y in range(y0, min(y0 + rh, h), 2):
+        r = rows[y]
+        for x in range(x0, min(x0 + rw, w), 2):
+            px = r[x * bpp:x * bpp + 3]
+            if (0.2126 * px[0] + 0.7152 * px[1] + 0.0722 * px[2]) / 255.0 > 0.15:
+                red, blue, count = red + px[0], blue + px[2], count + 1
+    red, blue = (red / count / 255.0, blue / count / 255.0) if count else (0.0, 0.0)
+    print(f"  {name}: viewport mean luminance {mean:.3f}, spread {spread:.3f}, {100 * lit:.0f}% lit; "
+          f"lit pixels' mean red {red:.2f}, blue {blue:.2f}")
+    assert spread > 0.03 and lit > 0.05, "the viewport shows no lit scene after the load"
+    # The textured duck measures red 0.52, blue 0.04 here (SwiftShader); untextured, the lights'
+    # near-white would leave red and blue within about 0.1 of each other.
+    assert red - blue > 0.2, "the duck is not yellow: its texture did not load"
+
+
+def case_folder(browser, base, out):
+    # A glTF whose buffer and texture sit in subfolders, given to File > Open folder... (the page's
+    # folder input, answered with the folder's path through the DevTools protocol), then dropped on
+    # the page as a folder (a real drag through Input.dispatchDragEvent), then bad folders.
+    work = tempfile.mkdtemp(prefix="gbl-folder-")
+    try:
+        duck, shared = copy_duck_into_subfolders(work)
+        if not duck:
+            print(f"  skipped: {shared} is absent (the shared glTF models)")
+            return None
+        page = Page(browser, base + "?log-frames=/dev/stdout")
+        page.cmd("Page.setInterceptFileChooserDialog", {"enabled": True})
+        page.wait_for("a rendered frame", lambda: any(f.get("rendered") for f in page.frames), 120)
+        page.wait_frames(3)
+        chooser = []
+        page.on_event = lambda method, params: chooser.append(params) if method == "Page.fileChooserOpened" else None
+        click_file_menu_item(page, "openFolderItem")
+        page.wait_for("the page's folder picker", lambda: chooser, 30)
+        page.cmd("DOM.setFileInputFiles", {"files": [duck], "backendNodeId": chooser[0]["backendNodeId"]})
+        lines = lambda text: [c for c in page.console if text in c]
+        loaded = lambda n: lines(f"scene /folders/{n}/Duck/Duck.gltf: ")
+        page.wait_for("the duck to load from its folder", lambda: loaded(1), 120)
+        print("  " + lines("opening Duck/Duck.gltf from the folder Duck")[0])
+        print("  " + loaded(1)[0])
+        assert "4212 triangles" in loaded(1)[0], "the duck's triangles are not all there"
+        missing = [c for c in page.console if "placeholder texture" in c or "is missing" in c]
+        assert not missing, "a file of the folder was not found: " + missing[0]
+        page.wait_frames(5)
+        yellow_and_lit(page, out, "folder.png")
+
+        def drop(path):
+            view = page.frames[-1]["viewport"]
+            x, y = view[0] + view[2] / 2, view[1] + view[3] / 2
+            data = {"items": [], "files": [path], "dragOperationsMask": 1}
+            for kind in ("dragEnter", "dragOver", "drop"):
+                page.cmd("Input.dispatchDragEvent", {"type": kind, "x": x, "y": y, "data": data})
+
+        # The same folder dropped on the page: the page walks it and it opens again, in a fresh folder.
+        drop(duck)
+        page.wait_for("the dropped folder's duck to load", lambda: loaded(2), 120)
+        print("  dropped: " + loaded(2)[0])
+        page.wait_frames(5)
+        yellow_and_lit(page, out, "folder-dropped.png")
+
+        # Bad folders: each gets its one line, and the editor goes on drawing.
+        empty = os.path.join(work, "Empty")
+        pictures = os.path.join(work, "Pictures", "textures")
+        os.makedirs(empty)
+        os.makedirs(pictures)
+        shutil.copyfile(os.path.join(duck, "textures", "DuckCM.png"), os.path.join(pictures, "a.png"))
+        two = os.path.join(work, "Two")
+        shutil.copytree(duck, os.path.join(two, "b"))
+        shutil.copyfile(os.path.join(duck, "Duck.gltf"), os.path.join(two, "a.gltf"))  # its files are in b/
+        drop(empty)
+        page.wait_for("the empty folder's line", lambda: lines("the folder Empty holds no files"), 60)
+        drop(os.path.dirname(pictures))
+        page.wait_for("the scene-less folder's line",
+                      lambda: lines("the folder Pictures holds 1 file(s) but no .gltf or .glb scene"), 60)
+        drop(two)
+        page.wait_for("the two scenes' line", lambda: lines("opening Two/a.gltf from the folder Two"), 60)
+        for text in ("holds no files", "but no .gltf", "opening Two/a.gltf"):
+            print("  " + lines(text)[0])
+        assert "also holds Two/b/Duck.gltf" in lines("opening Two/a.gltf")[0], "the other scene is not named"
+        # Two/a.gltf's buffer is not beside it: its load fails with a message, the duck stays.
+        page.wait_for("a.gltf's failure", lambda: lines("Two/a.gltf") and lines("The previous scene stays"), 60)
+        print("  " + lines("The previous scene stays")[-1][:160])
+        before = len(page.frames)
+        page.wait_frames(3)
+        assert len(page.frames) > before, "the editor stopped drawing"
+        return page
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+
+
+def case_export(browser, base, out):
+    # File > Export all... then Enter (the dialog's folder field has the keyboard and holds
+    # "export"): the browser build offers the exported folder as one zip.
+    page = Page(browser, base + "?log-frames=/dev/stdout")
+    folder = tempfile.mkdtemp(prefix="gbl-downloads-")
+    try:
+        downloads = allow_downloads(page, folder)
+        page.wait_for("a rendered frame", lambda: any(f.get("rendered") for f in page.frames), 120)
+        page.wait_frames(3)
+        click_file_menu_item(page, "exportAllItem")
+        page.wait_frames(3)
+        enter = {"key": "Enter", "code": "Enter", "windowsVirtualKeyCode": 13, "nativeVirtualKeyCode": 13}
+        page.cmd("Input.dispatchKeyEvent", dict(enter, type="rawKeyDown"))
+        page.cmd("Input.dispatchKeyEvent", dict(enter, type="char", text="\r"))
+        page.cmd("Input.dispatchKeyEvent", dict(enter, type="keyUp"))
+        page.wait_for("the export's download", lambda: "gbuffer-lab-export.zip" in downloads, 120)
+        done = [c for c in page.console if "exported the frame as gbuffer-lab-export.zip" in c]
+        assert done, "the log does not say the export was offered"
+        print("  " + done[0])
+        with zipfile.ZipFile(downloads["gbuffer-lab-export.zip"]) as z:
+            assert z.testzip() is None, "a file's CRC in the zip is wrong"
+            names = z.namelist()
+            print(f"  gbuffer-lab-export.zip: {len(names)} files, {sum(i.file_size for i in z.infolist())} bytes: "
+                  + " ".join(n.split("/", 1)[1] for n in names))
+            expected = ["final.png", "lighting.exr", "position.exr", "normal.exr", "albedo.png", "specular.png",
+                        "emissive.exr", "depth.exr", "depth_linear.exr", "lights.json", "camera.json", "stats.json"]
+            absent = [n for n in expected if "export/" + n not in names]
+            assert not absent, f"the zip lacks {absent}"
+            assert any(n.startswith("export/raw_") for n in names), "the zip has no raw attachment"
+            stats = json.loads(z.read("export/stats.json"))
+            size = (stats["width"], stats["height"])
+            w, h, _, _ = decode_png(z.read("export/final.png"))
+            assert (w, h) == size, f"final.png is {w}x{h}, the frame {size}"
+            for name in ("lighting.exr", "position.exr", "normal.exr", "depth.exr"):
+                ew, eh, channels = read_exr(z.read("export/" + name))
+                assert (ew, eh) == size, f"{name} is {ew}x{eh}, the frame {size}"
+                assert sorted(channels) == (["Y"] if name == "depth.exr" else ["A", "B", "G", "R"]), \
+                    f"{name} has channels {sorted(channels)}"
+            depth = read_exr(z.read("export/depth.exr"))[2]["Y"]
+            near = sum(d < 1.0 for d in depth) / len(depth)
+            print(f"  depth.exr: {size[0]}x{size[1]}, from {min(depth):.4f} to {max(depth):.4f}, "
+                  f"{100 * near:.0f}% nearer than the far plane")
+            assert all(0.0 <= d <= 1.0 for d in depth), "depth outside [0, 1]"
+            assert 0.05 < near < 1.0, "depth shows no scene in front of the far plane, or no background"
+        return page
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+def case_screenshot(browser, base, out):
+    # File > Save window as PNG: the whole window, offered as a download.
+    page = Page(browser, base + "?log-frames=/dev/stdout")
+    folder = tempfile.mkdtemp(prefix="gbl-downloads-")
+    try:
+        downloads = allow_downloads(page, folder)
+        page.wait_for("a rendered frame", lambda: any(f.get("rendered") for f in page.frames), 120)
+        page.wait_frames(3)
+        click_file_menu_item(page, "windowShotItem")
+        page.wait_for("the window's PNG", lambda: "gbuffer-lab-window.png" in downloads, 60)
+        data = open(downloads["gbuffer-lab-window.png"], "rb").read()
+        shutil.copyfile(downloads["gbuffer-lab-window.png"], os.path.join(out, "screenshot-download.png"))
+        image = decode_png(data)
+        mean, spread, lit = region_stats(image, page.frames[-1]["viewport"])
+        print(f"  gbuffer-lab-window.png: {image[0]}x{image[1]}, {len(data)} bytes; its viewport: mean luminance "
+              f"{mean:.3f}, spread {spread:.3f}")
+        assert (image[0], image[1]) == (WIDTH, HEIGHT), "the PNG is not the whole window"
+        assert spread > 0.05 and lit > 0.2, "the PNG's viewport is not the lit scene"
+        return page
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
 CASES = {"default": case_default, "lessons": case_lessons, "input": case_input, "storage": case_storage,
-         "gltf": case_gltf, "documents": case_documents, "recovery": case_recovery, "timing": case_timing}
+         "gltf": case_gltf, "documents": case_documents, "recovery": case_recovery, "folder": case_folder,
+         "export": case_export, "screenshot": case_screenshot, "timing": case_timing}
 
 
 def main():

@@ -6,6 +6,7 @@
 
 #include "core/light_math.h"
 #include "long_frame.h"
+#include "model/browser_files.h"
 #include "model/image_range.h"
 #include "model/light_pick.h"
 #include "model/pixel_breakdown.h"
@@ -295,6 +296,18 @@ void routeDroppedDocuments(Editor& editor) {
     }
 }
 
+// File > "Save window as PNG" in the browser: the whole window, offered as a download.
+void saveWindowShot(Editor& editor) {
+    std::string const path = "/tmp/gbuffer-lab-window.png";
+    ui::LogState& log = editor.state.log;
+    if (auto error = ui::writePng(editor.host->readWindow(), path))
+        ui::logMessage(log, *error, true);
+    else if (!ui::offerDownload(path))
+        ui::logMessage(log, "the window was written to " + path + " but could not be offered as a download", true);
+    else
+        ui::logMessage(log, "saved the window as gbuffer-lab-window.png (offered as a download)");
+}
+
 }  // namespace
 
 void renderScene(Editor& editor, FrameTimes& times) {
@@ -402,9 +415,12 @@ void present(Editor& editor, FrameTimes& times) {
         if (auto error = ui::writePng(editor.host->readWindow(), *options.screenshotPath)) {
             std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
             editor.exitCode = 2;
+        } else {
+            ui::offerDownload(*options.screenshotPath);  // the browser (?screenshot=NAME): its files are in memory
         }
         state.quitRequested = true;
     }
+    if (editor.windowShot.framesLeft > 0 && --editor.windowShot.framesLeft == 0) saveWindowShot(editor);
     if (!options.screenshotPath && !editor.script && options.frames > 0 && editor.frame >= options.frames)
         state.quitRequested = true;
 

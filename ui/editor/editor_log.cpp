@@ -120,6 +120,9 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.fileMenu = state.layout.fileMenuRect;
     line.openGBufferItem = editor.loading.gbuffer.menuItemRect;
     line.openSceneItem = editor.loading.openItemRect;
+    line.openFolderItem = editor.loading.openFolderItemRect;
+    line.exportAllItem = editor.sessions->panel.exportAllItemRect;
+    line.windowShotItem = editor.windowShot.itemRect;
     line.gbufferBrowser = editor.loading.gbuffer.browser.open;
     line.timing = state.stats.last.timingSource;
     for (PassTiming const& p : state.stats.last.passes) line.passMs.emplace_back(p.name, p.gpuMs);

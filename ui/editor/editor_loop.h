@@ -134,6 +134,13 @@ struct Editor {
     ui::PipelinePanelRects pipelineRects;    // where the Pipeline window drew its layout combo (--log-frames)
     std::vector<PointLight> drawn;           // this frame's lights (animated)
     ui::GlossaryWindowState glossaryWindow;  // the Glossary window (the lessons and the Help menu open it)
+    // File > "Save window as PNG" (the browser build's: the page's files live in memory, so the
+    // PNG is offered as a download). Frames until present() reads the window, so the closed menu
+    // is not in the picture; 0 = none asked for. The item's rectangle is for the frame log.
+    struct WindowShot {
+        int framesLeft = 0;
+        glm::vec4 itemRect{0.0f};
+    } windowShot;
 
     // Fields one file alone uses, grouped under that file's name.
     // editor_window.cpp: the layout file and the style the UI scale starts from.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "model/browser_files.h"
 #include "model/why_value.h"
 #include "panels/gui_compat.h"
 #include "panels/layout.h"
@@ -54,6 +55,9 @@ EditRequest drawMainMenu(Editor& editor) {
     EditRequest edit;
     editor.loading.gbuffer.menuItemRect = glm::vec4(0.0f);
     editor.loading.openItemRect = glm::vec4(0.0f);
+    editor.loading.openFolderItemRect = glm::vec4(0.0f);
+    sessions.panel.exportAllItemRect = glm::vec4(0.0f);
+    editor.windowShot.itemRect = glm::vec4(0.0f);
     if (!ImGui::BeginMainMenuBar()) return edit;
     bool const fileMenu = ImGui::BeginMenu("File");
     ImVec2 const fileMin = ImGui::GetItemRectMin(), fileMax = ImGui::GetItemRectMax();
@@ -64,6 +68,12 @@ EditRequest drawMainMenu(Editor& editor) {
         ui::drawSceneMenuItems(editor.loading);
         ImGui::Separator();
         ui::drawSessionMenuItems(sessions.panel);
+        if (ui::kInBrowser) {
+            // Natively `--screenshot` and the desktop's own tools take the window.
+            if (ImGui::MenuItem("Save window as PNG")) editor.windowShot.framesLeft = 2;
+            ImVec2 const shotMin = ImGui::GetItemRectMin(), shotMax = ImGui::GetItemRectMax();
+            editor.windowShot.itemRect = {shotMin.x, shotMin.y, shotMax.x - shotMin.x, shotMax.y - shotMin.y};
+        }
         ImGui::Separator();
         if (ImGui::MenuItem("Quit", keysFor(ui::EditorAction::Quit))) edit.quit = true;
         ImGui::EndMenu();

@@ -25,6 +25,10 @@
 
 #include <unistd.h>
 
+#ifdef __EMSCRIPTEN__
+#include <emscripten/emscripten.h>
+#endif
+
 namespace gbl {
 
 namespace {
@@ -76,11 +80,11 @@ std::optional<std::string> loadScene(std::optional<std::string> const& path, int
     return ui::installScene(*result.scene, true, defaultLightCount, state, upload);
 }
 
-// GLFW's drop callback has no closure: the window's user pointer is the loading state.
+// GLFW's drop callback has no closure: the window's user pointer is the editor.
 void onFilesDropped(GLFWwindow* window, int count, char const** paths) {
-    auto* loading = static_cast<ui::SceneLoadingState*>(glfwGetWindowUserPointer(window));
-    if (!loading) return;
-    for (int i = 0; i < count; ++i) loading->dropped.emplace_back(paths[i]);
+    auto* editor = static_cast<Editor*>(glfwGetWindowUserPointer(window));
+    if (!editor) return;
+    for (int i = 0; i < count; ++i) editor->loading.dropped.emplace_back(paths[i]);
 }
 
 // The layout file in the user's config folder; empty (no layout file) when there is none to be had.
@@ -330,7 +334,7 @@ std::optional<int> startEditor(Editor& editor) {
     // Scenes opened from the menu, by drag-and-drop or by scripts load on a worker thread.
     editor.loading.allowOutsideUris = options.allowOutsideUris;
     if (options.scenePath) ui::rememberRecentScene(editor.loading, *options.scenePath);
-    glfwSetWindowUserPointer(editor.window(), &editor.loading);
+    glfwSetWindowUserPointer(editor.window(), &editor);
     glfwSetDropCallback(editor.window(), onFilesDropped);
     return std::nullopt;
 }
@@ -455,3 +459,23 @@ int shutdownEditor(Editor& editor) {
 }
 
 }  // namespace gbl
+
+#ifdef __EMSCRIPTEN__
+// A folder the page wrote into its file system (app/web/pre.js: dropped on the page, or chosen with
+// File > Open folder...): its scene goes into the queue GLFW's drop callback feeds, so it opens as
+// a dropped file does, with its buffers and textures found in their subfolders. `label` names the
+// folder for the log; `unread` lists the files the page could not read ("" when none).
+extern "C" EMSCRIPTEN_KEEPALIVE void gbl_open_folder(char const* dir, char const* label, char const* unread) {
+    GLFWwindow* window = glfwGetCurrentContext();
+    auto* editor = window ? static_cast<gbl::Editor*>(glfwGetWindowUserPointer(window)) : nullptr;
+    if (!editor) {
+        std::fprintf(stderr, "gbuffer-lab: the editor is not running; %s is not opened\n", label);
+        return;
+    }
+    gbl::ui::LogState& log = editor->state.log;
+    if (*unread) gbl::ui::logMessage(log, std::string(label) + ": these files could not be read: " + unread, true);
+    gbl::ui::FolderScene const found = gbl::ui::findFolderScene(dir, label);
+    gbl::ui::logMessage(log, found.message, !found.scene);
+    if (found.scene) editor->loading.dropped.push_back(*found.scene);
+}
+#endif

@@ -2,6 +2,7 @@
 #include "session_controller.h"
 
 #include "model/browser_files.h"
+#include "model/zip_archive.h"
 #include "session/atomic_file.h"
 #include "session/editor_session.h"
 #include "viewer_export.h"
@@ -17,6 +18,19 @@ namespace {
 // How often the session text is compared with the last one to notice changes: often enough for
 // the autosave's 3-second quiet period, rare enough that thousands of lights cost nothing.
 constexpr double kChangeCheckSeconds = 0.5;
+
+// The browser's Export all: the folder's own name ("export" for "export" or "out/export/"), which
+// names the zip and the folder inside it.
+std::string exportFolderName(std::string const& dir) {
+    fs::path const p(dir);
+    std::string name = p.filename().string();
+    if (name.empty()) name = p.parent_path().filename().string();
+    return name.empty() || name == "." || name == ".." ? "export" : name;
+}
+
+std::string exportZipName(std::string const& dir) {
+    return "gbuffer-lab-" + exportFolderName(dir) + ".zip";
+}
 }  // namespace
 
 SessionController::SessionController(Clock clock, std::optional<RecoveryDir> recovery, long pid, AutosaveTiming timing)
@@ -243,7 +257,8 @@ void SessionController::handle(SessionRequest const& request, EditorState& state
             break;
         case SessionRequestKind::ExportAll:
             err = exportAll(request.path, renderer, frame);
-            done = "exported the frame to " + request.path;
+            done = kInBrowser ? "exported the frame as " + exportZipName(request.path) + " (offered as a download)"
+                              : "exported the frame to " + request.path;
             break;
         case SessionRequestKind::ExportViewerPng:
         case SessionRequestKind::ExportViewerExr:
@@ -259,10 +274,11 @@ void SessionController::handle(SessionRequest const& request, EditorState& state
             logMessage(state.log, "discarded the recovered session");
             return;
     }
-    // In the browser a saved session or a viewer's PNG is also offered as a download: the page's
-    // file system lives in memory.
-    bool const download =
-        request.kind == SessionRequestKind::Save || request.kind == SessionRequestKind::ExportViewerPng;
+    // In the browser a saved session or an exported viewer is also offered as a download: the
+    // page's file system lives in memory. (Export all offers its zip itself.)
+    bool const download = request.kind == SessionRequestKind::Save ||
+                          request.kind == SessionRequestKind::ExportViewerPng ||
+                          request.kind == SessionRequestKind::ExportViewerExr;
     if (!err && download && offerDownload(request.path)) done += " (offered as a download)";
     if (err && request.kind != SessionRequestKind::Open && request.kind != SessionRequestKind::Restore)
         logMessage(state.log, *err, true);  // open and restore log their own refusals
@@ -275,6 +291,21 @@ std::optional<std::string> SessionController::exportAll(std::string const& dir, 
                                                         FrameExport const& frame) {
     if (renderer.width() <= 0 || renderer.height() <= 0) return std::string("nothing to export: the viewport is 0x0");
     std::error_code ec;
+    if (kInBrowser) {
+        // The page's file system lives in memory, out of the user's reach: the frame is written
+        // to a folder of its own there, zipped, and the zip offered as one download; then both go.
+        fs::path const stage = "/tmp/gbuffer-lab-export";
+        fs::remove_all(stage, ec);
+        fs::path const folder = stage / exportFolderName(dir);
+        fs::create_directories(folder, ec);
+        if (ec) return "cannot create the folder " + folder.string() + ": " + ec.message();
+        std::optional<std::string> err = exportFrame(renderer, frame, folder.string());
+        fs::path const zip = stage / exportZipName(dir);
+        if (!err) err = zipFolder(folder.string(), exportFolderName(dir), zip.string());
+        if (!err && !offerDownload(zip.string())) err = "cannot offer " + zip.string() + " as a download";
+        fs::remove_all(stage, ec);
+        return err;
+    }
     fs::create_directories(dir, ec);
     if (ec) return "cannot create the folder " + dir + ": " + ec.message();
     return exportFrame(renderer, frame, dir);

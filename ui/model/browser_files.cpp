@@ -16,6 +16,15 @@ bool pickFilesInBrowser() {
            }) != 0;
 }
 
+bool pickFolderInBrowser() {
+    // Module.gblPickFolder is app/web/index.html's: it clicks the page's hidden folder input.
+    return EM_ASM_INT({
+               if (!Module.gblPickFolder) return 0;
+               Module.gblPickFolder();
+               return 1;
+           }) != 0;
+}
+
 bool offerDownload(std::string const& path) {
     return EM_ASM_INT(
                {
@@ -41,6 +50,10 @@ bool offerDownload(std::string const& path) {
 }
 #else
 bool pickFilesInBrowser() {
+    return false;
+}
+
+bool pickFolderInBrowser() {
     return false;
 }
 

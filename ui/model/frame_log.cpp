@@ -137,7 +137,8 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"gbuffer\":" + quoted(l.gbuffer);
     out += ",\"frameSize\":[" + std::to_string(l.frameSize.x) + "," + std::to_string(l.frameSize.y) + "]";
     out += ",\"fileMenu\":" + rect(l.fileMenu) + ",\"openGBufferItem\":" + rect(l.openGBufferItem) +
-           ",\"openSceneItem\":" + rect(l.openSceneItem) +
+           ",\"openSceneItem\":" + rect(l.openSceneItem) + ",\"openFolderItem\":" + rect(l.openFolderItem) +
+           ",\"exportAllItem\":" + rect(l.exportAllItem) + ",\"windowShotItem\":" + rect(l.windowShotItem) +
            ",\"gbufferBrowser\":" + (l.gbufferBrowser ? "true" : "false");
     // Pairs, not an object: a pass's name as a key would read as a field of the line itself to
     // the shell tests' field lookups ("wireframes" is both).

@@ -132,6 +132,11 @@ struct FrameLogLine {
     glm::vec4 fileMenu{0.0f};
     glm::vec4 openGBufferItem{0.0f};
     glm::vec4 openSceneItem{0.0f};  // File > "Open scene..." (0 while the menu is closed)
+    // The browser build's File > "Open folder..." and "Save window as PNG", and File > "Export all..."
+    // (0 while the menu is closed, and the first two always natively).
+    glm::vec4 openFolderItem{0.0f};
+    glm::vec4 exportAllItem{0.0f};
+    glm::vec4 windowShotItem{0.0f};
     bool gbufferBrowser = false;
     // How the renderer's passes were timed (FrameStats::timingSource) and the last timings shown,
     // [pass name, milliseconds] pairs (a frame or more old where the GPU is read without waiting).

@@ -5,6 +5,7 @@
 #include "scene/default_scene.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <string_view>
 #include <utility>
@@ -158,6 +159,32 @@ DroppedDocument droppedDocumentKind(std::string const& path) {
     if (rest.starts_with("\"gbuffer-lab-session\"")) return DroppedDocument::Session;
     if (rest.starts_with("\"gbuffer-lab-lesson\"")) return DroppedDocument::Lesson;
     return DroppedDocument::Other;
+}
+
+FolderScene findFolderScene(std::string const& dir, std::string const& label) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    std::vector<std::string> files, scenes;  // paths relative to dir
+    for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator();
+         it.increment(ec)) {
+        if (!it->is_regular_file(ec)) continue;
+        std::string const rel = it->path().lexically_relative(dir).generic_string();
+        files.push_back(rel);
+        if (rel.ends_with(".gltf") || rel.ends_with(".glb")) scenes.push_back(rel);
+    }
+    if (ec) return {std::nullopt, "cannot read " + label + ": " + ec.message()};
+    if (files.empty()) return {std::nullopt, label + " holds no files: choose the folder the .gltf or .glb is in"};
+    if (scenes.empty())
+        return {std::nullopt, label + " holds " + std::to_string(files.size()) +
+                                  " file(s) but no .gltf or .glb scene: nothing to open"};
+    std::sort(scenes.begin(), scenes.end());
+    FolderScene found{(fs::path(dir) / scenes.front()).generic_string(),
+                      "opening " + scenes.front() + " from " + label + " (" + std::to_string(files.size()) + " files)"};
+    if (scenes.size() > 1) {
+        found.message += "; one scene at a time, the first by path: the folder also holds";
+        for (std::size_t i = 1; i < scenes.size(); ++i) found.message += (i > 1 ? ", " : " ") + scenes[i];
+    }
+    return found;
 }
 
 bool updateSceneLoading(SceneLoadingState& loading, int defaultLightCount, EditorState& state,

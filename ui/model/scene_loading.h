@@ -62,13 +62,24 @@ enum class SceneLoadOutcome { None, Loaded, Failed, Cancelled };
 enum class DroppedDocument { Other, Session, Lesson };
 DroppedDocument droppedDocumentKind(std::string const& path);
 
+// A folder given to the editor whole (in the browser: dropped on the page, or chosen with File >
+// Open folder..., and written into its in-memory file system keeping the relative paths), so a glTF
+// finds its buffers and textures in their subfolders: the scene file to open in it, the first
+// .gltf or .glb by path when there are several. `label` names the folder in the messages.
+struct FolderScene {
+    std::optional<std::string> scene;  // the path to open; nullopt: none (message says why)
+    std::string message;               // one line for the log: what opens, what else was there, or why nothing
+};
+FolderScene findFolderScene(std::string const& dir, std::string const& label);
+
 struct SceneLoadingState {
-    std::optional<SceneLoadJob> job;    // the load in progress, if any
-    std::vector<std::string> requests;  // paths asked for (menu, dialog, recent, script), oldest first
-    std::vector<std::string> dropped;   // files dropped onto the window since the last frame
-    glm::vec4 openItemRect{0.0f};       // File > "Open scene..." while the menu is open (0 otherwise), frame log
-    std::string holdNextAtStage;        // test hook, applied to the next load that starts
-    bool allowOutsideUris = false;      // --allow-outside-uris
+    std::optional<SceneLoadJob> job;     // the load in progress, if any
+    std::vector<std::string> requests;   // paths asked for (menu, dialog, recent, script), oldest first
+    std::vector<std::string> dropped;    // files dropped onto the window since the last frame
+    glm::vec4 openItemRect{0.0f};        // File > "Open scene..." while the menu is open (0 otherwise), frame log
+    glm::vec4 openFolderItemRect{0.0f};  // File > "Open folder..." likewise (the browser build's only)
+    std::string holdNextAtStage;         // test hook, applied to the next load that starts
+    bool allowOutsideUris = false;       // --allow-outside-uris
 
     // File > Open scene… dialog and the recent list (most recent first).
     std::vector<std::string> recent;

@@ -89,6 +89,17 @@ void drawSceneMenuItems(SceneLoadingState& state) {
         openSceneDialog(state, state.recent.empty() ? std::string() : state.recent.front());
     ImVec2 const openMin = ImGui::GetItemRectMin(), openMax = ImGui::GetItemRectMax();
     state.openItemRect = {openMin.x, openMin.y, openMax.x - openMin.x, openMax.y - openMin.y};
+    // The browser's picker hands files over side by side; a glTF whose buffers and textures sit in
+    // subfolders opens from its folder, which the page writes into its file system whole.
+    if (kInBrowser) {
+        if (ImGui::MenuItem("Open folder...")) pickFolderInBrowser();
+        ImVec2 const folderMin = ImGui::GetItemRectMin(), folderMax = ImGui::GetItemRectMax();
+        state.openFolderItemRect = {folderMin.x, folderMin.y, folderMax.x - folderMin.x, folderMax.y - folderMin.y};
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "A glTF with its buffers and textures in subfolders: choose the folder that holds them all\n"
+                "(or drop the folder on the page). The first .gltf or .glb in it by path opens.");
+    }
     if (ImGui::BeginMenu("Open recent scene", !state.recent.empty())) {
         for (auto const& r : state.recent)
             if (ImGui::MenuItem(r.c_str())) requestOpen(state, r);

@@ -67,6 +67,8 @@ void drawSessionMenuItems(SessionPanelState& state) {
     ImGui::Separator();
     if (ImGui::MenuItem("Export viewer...")) openSessionDialog(state, SessionDialog::ExportViewer, "");
     if (ImGui::MenuItem("Export all...")) openSessionDialog(state, SessionDialog::ExportAll, "export");
+    ImVec2 const exportMin = ImGui::GetItemRectMin(), exportMax = ImGui::GetItemRectMax();
+    state.exportAllItemRect = {exportMin.x, exportMin.y, exportMax.x - exportMin.x, exportMax.y - exportMin.y};
 }
 
 void finishSessionRequest(SessionPanelState& state, std::optional<std::string> const& error) {
@@ -142,6 +144,8 @@ SessionRequest drawSessionDialogs(SessionPanelState& state) {
         ImGui::SetNextItemWidth(480.0f);
         bool const entered = ImGui::InputText(pathLabel(state.dialog), state.pathInput.data(), state.pathInput.size(),
                                               ImGuiInputTextFlags_EnterReturnsTrue);
+        if (kInBrowser && state.dialog == SessionDialog::ExportAll)
+            ImGui::TextDisabled("The browser offers the folder as one download, gbuffer-lab-<folder>.zip.");
         if (!state.message.empty()) ImGui::TextWrapped("%s", state.message.c_str());
         bool const ok = ImGui::Button(state.dialog == SessionDialog::Open ? "Open" : "Save") || entered;
         ImGui::SameLine();

@@ -5,6 +5,8 @@
 #include "model/file_browser.h"
 #include "session/recovery.h"
 
+#include <glm/glm.hpp>
+
 #include <array>
 #include <optional>
 #include <string>
@@ -27,6 +29,7 @@ struct SessionPanelState {
     std::string message;                       // result of the last request, shown in the dialog
     bool saveRequested = false;                // "Save session" (or Ctrl+S) with a known path: no dialog
     bool closePending = false;                 // the request succeeded: close the dialog next frame
+    glm::vec4 exportAllItemRect{0.0f};         // File > "Export all..." while the menu is open, for the frame log
 };
 
 enum class SessionRequestKind {
