@@ -45,6 +45,7 @@ alone per mode (?bench-renderer=MODE) instead.
 """
 import argparse
 import base64
+import contextlib
 import functools
 import http.server
 import json
@@ -780,15 +781,25 @@ def case_folder(browser, base, out):
         shutil.rmtree(work, ignore_errors=True)
 
 
-def case_export(browser, base, out):
-    # File > Export all... then Enter (the dialog's folder field has the keyboard and holds
-    # "export"): the browser build offers the exported folder as one zip.
+@contextlib.contextmanager
+def page_with_downloads(browser, base):
+    """A fresh editor page that has drawn, whose downloads land in a folder removed afterwards:
+    (page, downloads), downloads filled by name as they finish (allow_downloads)."""
     page = Page(browser, base + "?log-frames=/dev/stdout")
     folder = tempfile.mkdtemp(prefix="gbl-downloads-")
     try:
         downloads = allow_downloads(page, folder)
         page.wait_for("a rendered frame", lambda: any(f.get("rendered") for f in page.frames), 120)
         page.wait_frames(3)
+        yield page, downloads
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+def case_export(browser, base, out):
+    # File > Export all... then Enter (the dialog's folder field has the keyboard and holds
+    # "export"): the browser build offers the exported folder as one zip.
+    with page_with_downloads(browser, base) as (page, downloads):
         click_file_menu_item(page, "exportAllItem")
         page.wait_frames(3)
         enter = {"key": "Enter", "code": "Enter", "windowsVirtualKeyCode": 13, "nativeVirtualKeyCode": 13}
@@ -825,18 +836,11 @@ def case_export(browser, base, out):
             assert all(0.0 <= d <= 1.0 for d in depth), "depth outside [0, 1]"
             assert 0.05 < near < 1.0, "depth shows no scene in front of the far plane, or no background"
         return page
-    finally:
-        shutil.rmtree(folder, ignore_errors=True)
 
 
 def case_screenshot(browser, base, out):
     # File > Save window as PNG: the whole window, offered as a download.
-    page = Page(browser, base + "?log-frames=/dev/stdout")
-    folder = tempfile.mkdtemp(prefix="gbl-downloads-")
-    try:
-        downloads = allow_downloads(page, folder)
-        page.wait_for("a rendered frame", lambda: any(f.get("rendered") for f in page.frames), 120)
-        page.wait_frames(3)
+    with page_with_downloads(browser, base) as (page, downloads):
         click_file_menu_item(page, "windowShotItem")
         page.wait_for("the window's PNG", lambda: "gbuffer-lab-window.png" in downloads, 60)
         data = open(downloads["gbuffer-lab-window.png"], "rb").read()
@@ -848,8 +852,6 @@ def case_screenshot(browser, base, out):
         assert (image[0], image[1]) == (WIDTH, HEIGHT), "the PNG is not the whole window"
         assert spread > 0.05 and lit > 0.2, "the PNG's viewport is not the lit scene"
         return page
-    finally:
-        shutil.rmtree(folder, ignore_errors=True)
 
 
 CASES = {"default": case_default, "lessons": case_lessons, "input": case_input, "storage": case_storage,
