@@ -71,8 +71,7 @@ bool RendererImpl::clusteredReady() {
     if (f.tried) return !f.unavailable;
     f.tried = true;
     if (!caps.computeShaders) {
-        f.unavailable = "compute shaders need OpenGL 4.3; this context is " + std::to_string(caps.major) + "." +
-                        std::to_string(caps.minor) + ", so clustered mode is unavailable";
+        f.unavailable = caps.computeUnavailableReason("clustered");
         return false;
     }
     for (ProgramId id : {ProgramId::ClusterBuild, ProgramId::ClusterBin, ProgramId::TileDepth, ProgramId::ClusterShade})

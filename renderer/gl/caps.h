@@ -1,6 +1,8 @@
 // What the current GL context can do, detected once at start-up.
 #pragma once
 
+#include "gl/gl_api.h"
+
 #include <string>
 #include <string_view>
 
@@ -24,12 +26,18 @@ struct GlCaps {
 
     bool atLeast(int maj, int min) const { return major > maj || (major == maj && minor >= min); }
 
-    // Why tiled lighting is unavailable, or empty when it is available.
-    std::string tiledUnavailableReason() const {
-        return computeShaders ? std::string()
-                              : "compute shaders need OpenGL 4.3; this context is " + std::to_string(major) + "." +
-                                    std::to_string(minor) + ", so tiled mode is unavailable";
+    // Why a compute mode ("tiled", "clustered") is unavailable for want of compute shaders, or
+    // empty when they exist. WebGL2 has none at any version, and its 3.0 is ES's, not desktop GL's.
+    std::string computeUnavailableReason(std::string const& mode) const {
+        if (computeShaders) return {};
+        if (gl::kWebGL2)
+            return "compute shaders need OpenGL 4.3 and WebGL2 has none, so " + mode +
+                   " mode is unavailable in the browser";
+        return "compute shaders need OpenGL 4.3; this context is " + std::to_string(major) + "." +
+               std::to_string(minor) + ", so " + mode + " mode is unavailable";
     }
+    // Why tiled lighting is unavailable, or empty when it is available.
+    std::string tiledUnavailableReason() const { return computeUnavailableReason("tiled"); }
     // How the light loops were built for this context, one line for bench and the editor's info.
     std::string lightLoopsNote() const {
         return masksBranches ? "built for masked branches: this rasteriser runs both sides of every branch,\nso "
