@@ -9,7 +9,12 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 
 using namespace gbl;
 using gbl::test::GlTest;
@@ -111,6 +116,50 @@ TEST_F(ViewProgramsGlTest, AVariantThatFailsToBuildFallsBackToTheProgram) {
     EXPECT_NE(normal.id(), shaders.get(ProgramId::View).id());
     EXPECT_EQ(shaders.buildCount(), builds + 1);
     EXPECT_EQ(shaders.variant(ProgramId::View, "VIEW_ONLY 3").id(), normal.id()) << "built once";
+}
+
+// Hot reload: a view.frag broken on disk leaves every view drawn by the last good general program
+// (its variants cannot build, and are not tried again every frame); fixed, the views get their own
+// programs back.
+TEST_F(ViewProgramsGlTest, ABrokenViewShaderFallsBackUntilFixed) {
+    namespace fs = std::filesystem;
+    fs::path const dir = fs::temp_directory_path() / ("gbl_view_reload_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    fs::path const file = dir / "view.frag";
+    fs::copy_file(fs::path(GBL_SOURCE_DIR) / "shaders" / "view.frag", file, fs::copy_options::overwrite_existing);
+    std::string const good = [&] {
+        std::ifstream in(file);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    }();
+    auto writeLater = [&](std::string const& text) {
+        auto const before = fs::last_write_time(file);  // file times can be coarse
+        std::ofstream(file) << text;
+        fs::last_write_time(file, before + std::chrono::seconds(1));
+    };
+    ShaderLibrary shaders(dir);
+    std::string log;
+    ASSERT_TRUE(shaders.add(ProgramId::View, &log)) << log;
+    GLuint const general = shaders.get(ProgramId::View).id();
+    EXPECT_NE(shaders.variant(ProgramId::View, "VIEW_ONLY 3").id(), general);
+
+    writeLater(good + "\n#error broken on purpose\n");
+    auto messages = shaders.reloadChanged();
+    ASSERT_EQ(messages.size(), 1u);
+    EXPECT_NE(messages[0].find("keeping the last good one"), std::string::npos) << messages[0];
+    std::size_t const builds = shaders.buildCount();
+    EXPECT_EQ(shaders.variant(ProgramId::View, "VIEW_ONLY 3").id(), general);
+    EXPECT_EQ(shaders.variant(ProgramId::View, "VIEW_ONLY 3").id(), general);
+    EXPECT_EQ(shaders.buildCount(), builds);
+
+    writeLater(good);
+    messages = shaders.reloadChanged();
+    ASSERT_EQ(messages.size(), 1u);
+    EXPECT_NE(messages[0].find("reloaded"), std::string::npos) << messages[0];
+    std::size_t const rebuilt = shaders.buildCount();
+    EXPECT_NE(shaders.variant(ProgramId::View, "VIEW_ONLY 3").id(), shaders.get(ProgramId::View).id());
+    EXPECT_EQ(shaders.buildCount(), rebuilt + 1);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    fs::remove_all(dir);
 }
 
 }  // namespace
