@@ -19,9 +19,9 @@ Cases:
              (?check-lessons=all): none fails
              (position_from_depth's error ranges: see within_top_of_range), and each step that
              cannot run in WebGL2 names its reason;
-  input      real clicks, a drag and a key: dragging the Lights window's Kq field changes the
+  input      real clicks, a drag and keys: dragging the Lights window's Kq field changes the
              attenuation plot's radius; Next in the Lessons window moves to the next step; G
-             over the viewport turns the attachment overview on;
+             over the viewport turns the attachment overview on; Ctrl+Q is answered, not obeyed;
   storage    the window layout and lesson progress outlive a reload (IndexedDB);
   gltf       File > Open scene... with real clicks; the page's file picker, answered with a model
              from ../shared/gltf (skipped when absent), opens it;
@@ -251,12 +251,20 @@ class Page:
             self.pump(0.05)
         self.mouse("mouseReleased", x1, y1, 0, 1)
 
-    def tap(self, key, code, key_code):
-        """A key tap shorter than a frame, as the desktop tests' xdotool taps are."""
+    def tap(self, key, code, key_code, ctrl=False):
+        """A key tap shorter than a frame, as the desktop tests' xdotool taps are (with Ctrl held: its
+        down before and its up after)."""
         params = {"key": key, "code": code, "windowsVirtualKeyCode": key_code, "nativeVirtualKeyCode": key_code}
+        control = {"key": "Control", "code": "ControlLeft", "windowsVirtualKeyCode": 17, "nativeVirtualKeyCode": 17}
+        if ctrl:
+            params["modifiers"] = 2
+            self.cmd("Input.dispatchKeyEvent", dict(control, type="rawKeyDown", modifiers=2))
         self.cmd("Input.dispatchKeyEvent", dict(params, type="rawKeyDown"))
-        self.cmd("Input.dispatchKeyEvent", dict(params, type="char", text=key))
+        if not ctrl:
+            self.cmd("Input.dispatchKeyEvent", dict(params, type="char", text=key))
         self.cmd("Input.dispatchKeyEvent", dict(params, type="keyUp"))
+        if ctrl:
+            self.cmd("Input.dispatchKeyEvent", dict(control, type="keyUp"))
 
     def wheel(self, x, y, delta_y):
         self.mouse("mouseMoved", x, y)
@@ -420,6 +428,13 @@ def case_input(browser, base, out):
     page.tap("g", "KeyG", 71)
     page.wait_for("the overview after G", lambda: page.frames[-1]["overview"], 30)
     print("  tapped G over the viewport: the attachment overview is on")
+    # Ctrl+Q, the desktop's Quit: a page has nothing to quit to, so the editor says so and goes on.
+    page.tap("q", "KeyQ", 81, ctrl=True)
+    said = lambda: [c for c in page.console if "the editor ends with its tab" in c]
+    page.wait_for("the answer to Ctrl+Q", said, 30)
+    before = len(page.frames)
+    page.wait_frames(3)
+    print(f"  Ctrl+Q: \"{said()[0].split(': ', 1)[-1][:90]}\"; the editor drew {len(page.frames) - before} more frames")
     return page
 
 

@@ -74,8 +74,10 @@ EditRequest drawMainMenu(Editor& editor) {
             ImVec2 const shotMin = ImGui::GetItemRectMin(), shotMax = ImGui::GetItemRectMax();
             editor.windowShot.itemRect = {shotMin.x, shotMin.y, shotMax.x - shotMin.x, shotMax.y - shotMin.y};
         }
-        ImGui::Separator();
-        if (ImGui::MenuItem("Quit", keysFor(ui::EditorAction::Quit))) edit.quit = true;
+        if (!ui::kInBrowser) {  // a page ends with its tab
+            ImGui::Separator();
+            if (ImGui::MenuItem("Quit", keysFor(ui::EditorAction::Quit))) edit.quit = true;
+        }
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {

@@ -4,6 +4,7 @@
 #include "editor_loop.h"
 
 #include "core/light_math.h"
+#include "model/browser_files.h"
 #include "panels/panel_scene_loading.h"
 
 #include <imgui.h>
@@ -175,7 +176,13 @@ void carryOut(Editor& editor, EditorAction action) {
             }
             break;
         case EditorAction::Quit:
-            if (ui::mayDiscard(editor.discard, ui::DiscardingAction::Quit, mustAsk(editor))) state.quitRequested = true;
+            // A page has nothing to quit to: stopping would leave a dead canvas in the tab.
+            if (ui::kInBrowser)
+                ui::logMessage(state.log,
+                               "in the browser the editor ends with its tab; the layout and autosave are kept in "
+                               "the browser's storage");
+            else if (ui::mayDiscard(editor.discard, ui::DiscardingAction::Quit, mustAsk(editor)))
+                state.quitRequested = true;
             break;
         case EditorAction::FrameSelection:
             frameSelection(editor);
