@@ -22,6 +22,7 @@ Cases:
   input      real clicks, a drag and keys: dragging the Lights window's Kq field changes the
              attenuation plot's radius; Next in the Lessons window moves to the next step; G
              over the viewport turns the attachment overview on; Ctrl+Q is answered, not obeyed;
+             Ctrl+S saves the session and not the page;
   storage    the window layout and lesson progress outlive a reload (IndexedDB);
   gltf       File > Open scene... with real clicks; the page's file picker, answered with a model
              from ../shared/gltf (skipped when absent), opens it;
@@ -435,6 +436,17 @@ def case_input(browser, base, out):
     before = len(page.frames)
     page.wait_frames(3)
     print(f"  Ctrl+Q: \"{said()[0].split(': ', 1)[-1][:90]}\"; the editor drew {len(page.frames) - before} more frames")
+    # Ctrl+S saves the session, and only that: the browser's own "Save page as" is kept out.
+    page.cmd("Runtime.evaluate", {"expression": "addEventListener('keydown', function (e) {"
+                                                " if (e.code === 'KeyS') window.gblPrevented = e.defaultPrevented; })"})
+    first = len(page.frames)
+    page.tap("s", "KeyS", 83, ctrl=True)
+    page.wait_for("the editor to take Ctrl+S",
+                  lambda: any("save-session" in e for f in page.frames[first:] for e in f["events"]), 30)
+    prevented = page.cmd("Runtime.evaluate", {"expression": "window.gblPrevented === true",
+                                              "returnByValue": True})["result"]["value"]
+    print(f"  Ctrl+S: the editor saves the session; the browser's own action prevented: {prevented}")
+    assert prevented, "Ctrl+S would also open the browser's Save page dialog"
     return page
 
 
