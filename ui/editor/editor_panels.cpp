@@ -63,7 +63,9 @@ EditRequest drawMainMenu(Editor& editor) {
     ImVec2 const fileMin = ImGui::GetItemRectMin(), fileMax = ImGui::GetItemRectMax();
     state.layout.fileMenuRect = {fileMin.x, fileMin.y, fileMax.x - fileMin.x, fileMax.y - fileMin.y};
     if (fileMenu) {
-        if (ImGui::MenuItem("New session", keysFor(ui::EditorAction::NewSession))) edit.newSession = true;
+        // A page never gets Ctrl+N: the browser opens a window with it.
+        if (ImGui::MenuItem("New session", ui::kInBrowser ? nullptr : keysFor(ui::EditorAction::NewSession)))
+            edit.newSession = true;
         ImGui::Separator();
         ui::drawSceneMenuItems(editor.loading);
         ImGui::Separator();
