@@ -142,16 +142,18 @@ bool ShaderLibrary::add(ProgramId id, std::string* log) {
 }
 
 gl::Program const& ShaderLibrary::variant(ProgramId id, std::string const& define) {
-    auto const key = std::make_tuple(id, define, globalDefines_);
-    auto found = variants_.find(key);
-    if (found == variants_.end()) {
+    auto defines = variants_.find(globalDefines_);
+    if (defines == variants_.end()) defines = variants_.emplace(globalDefines_, decltype(defines->second){}).first;
+    auto found = defines->second.find(std::make_pair(id, define));
+    if (found == defines->second.end()) {
         std::string log;
         auto program = build(id, &log, define);
         if (program) {
             bindSamplerSlots(*program);
             ++builds_;
         }
-        found = variants_.emplace(key, program ? std::move(*program) : gl::Program{}).first;
+        found =
+            defines->second.emplace(std::make_pair(id, define), program ? std::move(*program) : gl::Program{}).first;
     }
     return found->second ? found->second : get(id);
 }

@@ -10,7 +10,7 @@
 #include <map>
 #include <optional>
 #include <string>
-#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace gbl {
@@ -79,8 +79,9 @@ private:
     // Programs built for other global defines; dropped when a shader file changes on disk.
     std::map<std::vector<std::string>, std::array<gl::Program, kProgramCount>> otherDefines_;
     std::array<std::string, kProgramCount> failures_;
-    // variant(): by program, define and global defines; an empty program marks a failed build.
-    std::map<std::tuple<ProgramId, std::string, std::vector<std::string>>, gl::Program> variants_;
+    // variant(): by global defines, then program and define (looked up without copying the
+    // defines, as each frame does); an empty program marks a failed build.
+    std::map<std::vector<std::string>, std::map<std::pair<ProgramId, std::string>, gl::Program>> variants_;
     std::map<std::string, std::filesystem::file_time_type> seenTimes_;  // per file on disk
     std::map<std::string, std::string> diskOverrides_;                  // files read from disk
 };

@@ -1,6 +1,7 @@
 // The editor's UI build: the ImGui frame, the main menu bar and every panel, and the UI tests'
 // check that an editor window is usable.
 #include "editor_loop.h"
+#include "panels/item_rect.h"
 
 #include <algorithm>
 
@@ -60,8 +61,7 @@ EditRequest drawMainMenu(Editor& editor) {
     editor.windowShot.itemRect = glm::vec4(0.0f);
     if (!ImGui::BeginMainMenuBar()) return edit;
     bool const fileMenu = ImGui::BeginMenu("File");
-    ImVec2 const fileMin = ImGui::GetItemRectMin(), fileMax = ImGui::GetItemRectMax();
-    state.layout.fileMenuRect = {fileMin.x, fileMin.y, fileMax.x - fileMin.x, fileMax.y - fileMin.y};
+    state.layout.fileMenuRect = ui::lastItemRect();
     if (fileMenu) {
         // A page never gets Ctrl+N: the browser opens a window with it.
         if (ImGui::MenuItem("New session", ui::kInBrowser ? nullptr : keysFor(ui::EditorAction::NewSession)))
@@ -73,8 +73,7 @@ EditRequest drawMainMenu(Editor& editor) {
         if (ui::kInBrowser) {
             // Natively `--screenshot` and the desktop's own tools take the window.
             if (ImGui::MenuItem("Save window as PNG")) editor.windowShot.framesLeft = 2;
-            ImVec2 const shotMin = ImGui::GetItemRectMin(), shotMax = ImGui::GetItemRectMax();
-            editor.windowShot.itemRect = {shotMin.x, shotMin.y, shotMax.x - shotMin.x, shotMax.y - shotMin.y};
+            editor.windowShot.itemRect = ui::lastItemRect();
         }
         if (!ui::kInBrowser) {  // a page ends with its tab
             ImGui::Separator();

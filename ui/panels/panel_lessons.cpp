@@ -1,5 +1,6 @@
 // Lessons window.
 #include "panels/panel_lessons.h"
+#include "panels/item_rect.h"
 
 #include "model/browser_files.h"
 #include "model/lesson_claims.h"
@@ -48,9 +49,7 @@ glm::vec2 itemCentre() {
 
 // The last item's rectangle (x, y, width, height) in window coordinates; 0 unless wholly in view.
 glm::vec4 itemRect() {
-    if (itemCentre() == glm::vec2(0.0f)) return glm::vec4(0.0f);
-    ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    return {a.x, a.y, b.x - a.x, b.y - a.y};
+    return itemCentre() == glm::vec2(0.0f) ? glm::vec4(0.0f) : lastItemRect();
 }
 
 std::string countsLine(LessonCounts const& c) {

@@ -1,5 +1,6 @@
 // Lights window.
 #include "panels/panel_lights.h"
+#include "panels/item_rect.h"
 
 #include "core/light_math.h"
 #include "model/drag_speed.h"
@@ -98,8 +99,7 @@ void drawPlotPopup(LightsPanelState& state, PointLight const& light, std::option
     AttenuationPlotMarks const marks = drawAttenuationPlot(light, state.plotLogScale, ImVec2(w, w * 0.6f),
                                                            state.plotFixedAxis ? state.plotAxisMax : 0.0f,
                                                            pixelDistance, shownPlotGhost(state, light));
-    ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    state.plotPopupRect = {a.x, a.y, b.x - a.x, b.y - a.y};
+    state.plotPopupRect = lastItemRect();
     state.plotPopupRadius = marks.radius;
     ImGui::EndTooltip();
 }

@@ -1,5 +1,6 @@
 // Pipeline window.
 #include "panels/panel_pipeline.h"
+#include "panels/item_rect.h"
 
 #include "core/pipeline_fields.h"
 #include "panels/gui_compat.h"
@@ -99,8 +100,7 @@ void layoutCombo(PipelineSettings& settings, PipelinePanelRects* rects) {
     };
     bool const open = ImGui::BeginCombo("G-buffer", enumName(kGBufferLayoutNames, settings.layout).data());
     if (ImGui::IsItemVisible()) {
-        ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-        rects->layoutCombo = {a.x, a.y, b.x - a.x, b.y - a.y};
+        rects->layoutCombo = lastItemRect();
     }
     helpTooltip("how the G-buffer stores its quantities; the Pipeline's A/B compare can set side B to classic");
     if (!open) return;

@@ -1,5 +1,6 @@
 // Scene open dialog, recent files, loading progress and load errors.
 #include "panels/panel_scene_loading.h"
+#include "panels/item_rect.h"
 
 #include "model/browser_files.h"
 #include "panels/panel_file_browser.h"
@@ -87,14 +88,12 @@ void openSceneDialog(SceneLoadingState& state, std::string const& prefill) {
 void drawSceneMenuItems(SceneLoadingState& state) {
     if (ImGui::MenuItem("Open scene...", "Ctrl+Shift+O"))
         openSceneDialog(state, state.recent.empty() ? std::string() : state.recent.front());
-    ImVec2 const openMin = ImGui::GetItemRectMin(), openMax = ImGui::GetItemRectMax();
-    state.openItemRect = {openMin.x, openMin.y, openMax.x - openMin.x, openMax.y - openMin.y};
+    state.openItemRect = lastItemRect();
     // The browser's picker hands files over side by side; a glTF whose buffers and textures sit in
     // subfolders opens from its folder, which the page writes into its file system whole.
     if (kInBrowser) {
         if (ImGui::MenuItem("Open folder...")) pickFolderInBrowser();
-        ImVec2 const folderMin = ImGui::GetItemRectMin(), folderMax = ImGui::GetItemRectMax();
-        state.openFolderItemRect = {folderMin.x, folderMin.y, folderMax.x - folderMin.x, folderMax.y - folderMin.y};
+        state.openFolderItemRect = lastItemRect();
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
                 "A glTF with its buffers and textures in subfolders: choose the folder that holds them all\n"
@@ -109,8 +108,7 @@ void drawSceneMenuItems(SceneLoadingState& state) {
     ImGui::Separator();
     GBufferOpenState& gbuffer = state.gbuffer;
     if (ImGui::MenuItem("Open G-buffer...")) openGBufferDialog(gbuffer);
-    ImVec2 const itemMin = ImGui::GetItemRectMin(), itemMax = ImGui::GetItemRectMax();
-    gbuffer.menuItemRect = {itemMin.x, itemMin.y, itemMax.x - itemMin.x, itemMax.y - itemMin.y};
+    gbuffer.menuItemRect = lastItemRect();
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "Another program's G-buffer: a manifest (docs/import.md) or a folder holding one,\n"

@@ -1,5 +1,6 @@
 // Session, export and recovery dialogs: a path field per action, a modal for the recovery offer.
 #include "panels/panel_session.h"
+#include "panels/item_rect.h"
 
 #include "model/browser_files.h"
 #include "panels/panel_file_browser.h"
@@ -67,8 +68,7 @@ void drawSessionMenuItems(SessionPanelState& state) {
     ImGui::Separator();
     if (ImGui::MenuItem("Export viewer...")) openSessionDialog(state, SessionDialog::ExportViewer, "");
     if (ImGui::MenuItem("Export all...")) openSessionDialog(state, SessionDialog::ExportAll, "export");
-    ImVec2 const exportMin = ImGui::GetItemRectMin(), exportMax = ImGui::GetItemRectMax();
-    state.exportAllItemRect = {exportMin.x, exportMin.y, exportMax.x - exportMin.x, exportMax.y - exportMin.y};
+    state.exportAllItemRect = lastItemRect();
 }
 
 void finishSessionRequest(SessionPanelState& state, std::optional<std::string> const& error) {

@@ -1,5 +1,6 @@
 // Viewport window.
 #include "panels/panel_viewport.h"
+#include "panels/item_rect.h"
 
 #include "core/cluster_math.h"
 #include "core/heat_scale.h"
@@ -43,11 +44,6 @@ void fittedText(char const* full, char const* compact) {
     if (!fits && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", full);
 }
 
-glm::vec4 itemRect() {
-    ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    return {a.x, a.y, b.x - a.x, b.y - a.y};
-}
-
 // The viewport's tools, then "Pin lit", which holds the lit HDR frame; "Diff" shows |now - pinned|
 // over RGB as the viewers' heat map, with the statistics of both on the row (a row of its own:
 // the toolbar above is full).
@@ -58,7 +54,7 @@ void litPinRow(LitPin& pin, ViewportTools& tools, DebugView view, ViewportState&
     if (viewerKindOfView(view)) ImGui::SameLine();
     drawChecksButton(state);
     if (ImGui::Button("Pin lit")) pin.pinRequested = true;
-    pin.pinRect = itemRect();
+    pin.pinRect = lastItemRect();
     pin.diffRect = glm::vec4(0.0f);
     ImGui::SameLine();
     if (!pin.pinned) {
@@ -68,7 +64,7 @@ void litPinRow(LitPin& pin, ViewportTools& tools, DebugView view, ViewportState&
         return;
     }
     ImGui::Checkbox("Diff", &pin.showDiff);
-    pin.diffRect = itemRect();
+    pin.diffRect = lastItemRect();
     ImGui::SameLine();
     ChannelStats const& s = pin.stats.shown;
     if (pin.showDiff && !pin.diff.comparable && pin.frame >= 0) {
@@ -166,7 +162,7 @@ void teachingRow(ViewportTeaching& t, PipelineSettings const& settings) {
     ImGui::SliderInt("##k", &a.count, 0, t.lightCount, a.enabled ? "k = %d" : "k = %d (off)",
                      ImGuiSliderFlags_AlwaysClamp);
     if (ImGui::IsItemActivated()) a.enabled = true;
-    a.sliderRect = itemRect();
+    a.sliderRect = lastItemRect();
     ImGui::SameLine();
     ImGui::BeginDisabled(!a.enabled);
     ImGui::Checkbox("only k", &a.contribution);
@@ -176,7 +172,7 @@ void teachingRow(ViewportTeaching& t, PipelineSettings const& settings) {
     if (a.enabled) ImGui::TextDisabled(a.count == 0 ? "ambient only" : "%s", t.kthLightName.c_str());
     ImGui::SameLine();
     if (ImGui::Checkbox("A/B", &t.ab.enabled) && t.ab.enabled) startAb(t.ab, settings);
-    t.ab.toggleRect = itemRect();
+    t.ab.toggleRect = lastItemRect();
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("two pipeline settings on the same frame: pick what B changes in the Pipeline window");
     if (t.ab.enabled) {
@@ -273,7 +269,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         ImGui::SetTooltip("the light cubes are sized to a scene, which an imported G-buffer lacks");
     sameLineIfFits(checkItemWidth("Wireframes"), false, rightEdge);
     ImGui::Checkbox("Wireframes", &settings.volumeWireframes);
-    state.wireframesRect = itemRect();
+    state.wireframesRect = lastItemRect();
     sameLineIfFits(checkItemWidth("all"), false, rightEdge);
     // The selected light's volume by default (32 outlines bury the frame); every light's one click
     // away, which also turns the wireframes on.
@@ -282,7 +278,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         settings.wireframesSelectedOnly = !every;
         if (every) settings.volumeWireframes = true;
     }
-    state.allWireframesRect = itemRect();
+    state.allWireframesRect = lastItemRect();
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "Outline every light's volume, not only the selected light's (Wireframes outlines the "
@@ -295,7 +291,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
     ImGui::PushStyleColor(ImGuiCol_Button, overview.on ? IM_COL32(70, 110, 170, 255) : IM_COL32(50, 50, 55, 255));
     if (ImGui::Button("Overview (G)")) overview.on = !overview.on;
     ImGui::PopStyleColor();
-    overview.buttonRect = itemRect();
+    overview.buttonRect = lastItemRect();
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "the lit frame and the G-buffer's position, normal, albedo, specular and depth at once,\n"

@@ -1,5 +1,6 @@
 // The viewport toolbar's Checks button and its list (viewport_checks.h).
 #include "panels/viewport_checks.h"
+#include "panels/item_rect.h"
 
 #include <imgui.h>
 
@@ -7,16 +8,6 @@
 #include <string>
 
 namespace gbl::ui {
-
-namespace {
-
-// The item just drawn, as x, y, width, height in window pixels (the frame log's rectangles).
-glm::vec4 lastItemRect() {
-    ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    return {a.x, a.y, b.x - a.x, b.y - a.y};
-}
-
-}  // namespace
 
 void drawChecksButton(ViewportState& state) {
     state.checksRect = glm::vec4(0.0f);
