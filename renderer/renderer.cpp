@@ -1,4 +1,4 @@
-// The frame sequence, the optional lighting modes and the public Renderer API.
+// The frame (its declared passes, run by renderer_passes.cpp) and the public Renderer API.
 #include "renderer_impl.h"
 #include "renderer_test_access.h"
 
@@ -6,16 +6,8 @@
 #include "core/light_math.h"
 #include "gl/debug.h"
 #include "gl/embedded_shaders.h"
-#include "passes/coverage.h"
-#include "passes/depth_copy.h"
-#include "passes/forward.h"
-#include "passes/geometry.h"
 #include "passes/import.h"
-#include "passes/light_cubes.h"
 #include "passes/light_volumes.h"
-#include "passes/view.h"
-#include "passes/volume_depth.h"
-#include "passes/wireframes.h"
 
 #include <algorithm>
 #include <cassert>
@@ -55,14 +47,6 @@ void checkNoFeedbackLoops(std::span<PassDecl const> passes) {
                      std::string(passName(l.pass)).c_str(), std::string(resourceName(l.resource)).c_str());
     assert(feedbackLoops(passes).empty() && "Renderer::render(): a feedback loop; give the pass its own attachment");
 }
-
-// Debug builds: the passes that ran are the declared ones, in order (framePasses follows render()).
-void checkFrameRan(std::span<PassDecl const> declared, std::span<PassId const> ran) {
-    bool const same = std::equal(declared.begin(), declared.end(), ran.begin(), ran.end(),
-                                 [](PassDecl const& d, PassId id) { return d.id == id; });
-    if (!same) std::fprintf(stderr, "Renderer::render(): the passes that ran differ from framePasses()\n");
-    assert(same && "Renderer::render(): update framePasses() (core/frame_passes.cpp) with the frame's sequence");
-}
 #endif
 
 }  // namespace
@@ -96,7 +80,7 @@ RendererImpl::RendererImpl(GlCaps capsIn, int width, int height) : caps(std::mov
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     if (caps.pipelineStatistics)
         fragmentQuery = gl::Query::create(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, "fragment invocations");
-    lights.upload({});
+    lights.upload({}, caps);
     resizeTargets(width, height);
 }
 
@@ -178,12 +162,17 @@ ShadingUniforms shadingUniforms(FrameContext const& f) {
     return s;
 }
 
+bool RendererImpl::splitAccumulation(FrameContext const& f) const {
+    return f.settings.accumulation == LightAccumulation::Split && f.settings.mode != LightingMode::Forward;
+}
+
 DeferredInputs RendererImpl::deferredInputs(FrameContext const& f) const {
     ShadingUniforms shading = shadingUniforms(f);
     shading.splitAccumulation = splitAccumulation(f);
     return {targets.gbuffer, lights, shading};
 }
 
+// The frame: the passes its settings declare (up to FrameInput::stopAfter), run in order.
 FrameStats RendererImpl::render(FrameInput const& input) {
     std::uint64_t const errorsBefore = glErrorCount();
     FrameStats stats;
@@ -196,178 +185,94 @@ FrameStats RendererImpl::render(FrameInput const& input) {
 
     coverageView.reset();  // counts of an earlier frame
     if (shaderChecks) shaderChecks.begin();
-    FrameContext f = frameContext(input);
+    FrameRecord frame = beginFrame(input, stats);
+    std::vector<PassDecl> const passes = declaredPasses(input, frame, stats);
+    glViewport(0, 0, targets.width, targets.height);
+    runPasses(passes, frame, {targets});
+    finishFrame(input, frame, stats);
+    stats.glErrors = glErrorCount() - errorsBefore;
+    return stats;
+}
+
+// The frame's context after every fallback, its lights uploaded and the volume instances made
+// where a declared pass samples them.
+FrameRecord RendererImpl::beginFrame(FrameInput const& input, FrameStats& stats) {
+    FrameRecord frame;
+    FrameContext& f = frame.f;
+    f = frameContext(input);
+    auto const because = [&](std::string const& why) {
+        stats.fallbackReason += (stats.fallbackReason.empty() ? "" : "; ") + why;
+    };
     if (imported) {
         std::string why;
         importedSettings(input.settings, &why);
-        stats.fallbackReason = why;
+        if (!why.empty()) because(why);
     }
     if (auto why = modeUnavailable(f.settings.mode)) {
         f.settings.mode = LightingMode::Quad;
-        stats.fallbackReason +=
-            (stats.fallbackReason.empty() ? "" : "; ") + *why + "; the full-screen (quad) pass ran instead";
+        because(*why + "; the full-screen (quad) pass ran instead");
     }
     stats.modeUsed = f.settings.mode;
     stats.accumulationUsed = splitAccumulation(f) ? LightAccumulation::Split : LightAccumulation::Single;
-    if (f.settings.accumulation != stats.accumulationUsed)
-        stats.fallbackReason += std::string(stats.fallbackReason.empty() ? "" : "; ") + kForwardRefusesSplit;
-    prepareAccumulation(f);
-    PipelineSettings const& s = f.settings;
-    ShadingUniforms const shading = shadingUniforms(f);
-    frameInverseViewProj = shading.inverseViewProj;
-
-    if (auto why = lights.upload(f.lights)) stats.fallbackReason += (stats.fallbackReason.empty() ? "" : "; ") + *why;
-    volumes.enclosingScale = volumes.meshEnclosingScale * s.volumeScale;  // < 1 only to show what it cuts off
-    volumes.volumeScale = s.volumeScale;
+    if (f.settings.accumulation != stats.accumulationUsed) because(kForwardRefusesSplit);
+    frame.shading = shadingUniforms(f);
+    frameInverseViewProj = frame.shading.inverseViewProj;
+    if (auto why = lights.upload(f.lights, caps)) because(*why);
+    volumes.enclosingScale = volumes.meshEnclosingScale * f.settings.volumeScale;  // < 1 only to show the cut
+    volumes.volumeScale = f.settings.volumeScale;
     for (auto const& l : f.lights)
         stats.lightsShaded += (isLocalLight(l) ? lightRadius(l).radius > 0.0f : !validateLight(l)) ? 1 : 0;
     // One light outlined (the accumulated k-th, or the selected one): its index among f.lights,
     // which start at input.lights[0] except for a contribution frame (light k alone).
-    int outline = outlinedLight(input);
-    if (outline >= 0 && input.accumulateLights && input.lightContribution) outline = 0;
-    bool const wireframes = wireframesDrawn(input);
-    bool const volumeInstances = s.mode == LightingMode::Volumes || wireframes;
-    if (volumeInstances) prepareVolumeInstances(volumes, {f.camera, f.aspect, f.lights});
+    frame.outline = outlinedLight(input);
+    if (frame.outline >= 0 && input.accumulateLights && input.lightContribution) frame.outline = 0;
+    frame.wireframes = wireframesDrawn(input);
+    return frame;
+}
 
-    // The frame as declared (core/frame_passes.h): checked for feedback loops, and against the
-    // passes that ran, in debug builds.
-    passesRun.clear();
-    passCalls.clear();
-    std::optional<PassId> stop = input.stopAfter;
-    if (stop) {
-        std::vector<PassDecl> const all = gbl::framePasses(s, wireframes, bool(imported));
-        if (auto why = stopAfterError(passName(*stop), all)) {
+// The passes this frame runs: framePasses() for its settings, up to its stop pass, with any test's
+// own passes. Checked for feedback loops in debug builds.
+std::vector<PassDecl> RendererImpl::declaredPasses(FrameInput const& input, FrameRecord const& frame,
+                                                   FrameStats& stats) {
+    std::vector<PassDecl> passes = gbl::framePasses(frame.f.settings, frame.wireframes, bool(imported));
+    if (std::optional<PassId> const stop = input.stopAfter) {
+        if (auto why = stopAfterError(passName(*stop), passes)) {
             stats.fallbackReason += (stats.fallbackReason.empty() ? "" : "; ") + *why + ", so the whole frame ran";
-            stop.reset();
         } else {
             stats.stoppedAfter = stop;
-            clearForStop();
+            passes = passesUntil(std::move(passes), *stop);
         }
     }
-    // Whether the frame goes on to its next pass: not once its stop pass has run.
-    auto const runs = [&] { return !stop || std::find(passesRun.begin(), passesRun.end(), *stop) == passesRun.end(); };
+    if (declarationEdit) declarationEdit(passes);
+    for (ExtraPass const& e : extraPasses) {
+        auto const at = std::find_if(passes.begin(), passes.end(), [&](PassDecl const& p) { return p.id == e.after; });
+        if (at != passes.end()) passes.insert(at + 1, e.decl);
+    }
+    bool const instances = std::any_of(passes.begin(), passes.end(), [](PassDecl const& p) {
+        return std::find(p.samples.begin(), p.samples.end(), Resource::VolumeInstances) != p.samples.end();
+    });
+    if (instances) prepareVolumeInstances(volumes, {frame.f.camera, frame.f.aspect, frame.f.lights});
 #ifndef NDEBUG
-    std::vector<PassDecl> const declared = stop ? passesUntil(gbl::framePasses(s, wireframes, bool(imported)), *stop)
-                                                : gbl::framePasses(s, wireframes, bool(imported));
-    checkNoFeedbackLoops(declared);
+    checkNoFeedbackLoops(passes);
 #endif
+    return passes;
+}
 
-    glViewport(0, 0, targets.width, targets.height);
-    if (s.mode == LightingMode::Forward) {
-        // No G-buffer in forward mode: clear it so the viewers show that it is unused.
-        glBindFramebuffer(GL_FRAMEBUFFER, targets.gbuffer.fbo.id());
-        glClearColor(0, 0, 0, 0);
-        glClearDepth(1.0);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-        PassScope const pass = timed(PassId::ForwardShading);
-        if (fragmentQuery) fragmentQuery.begin();
-        forwardPass({scene, lights, shaders.get(ProgramId::Forward), litTarget()},
-                    {MaterialFilter::Opaque, f.viewProj, shading, s.normalMaps});
-        if (fragmentQuery) fragmentQuery.end();
-    } else {
-        if (imported) {
-            PassScope const pass = timed(PassId::Import);
-            importPass({*imported, shaders.get(ProgramId::Import), triangle, targets.gbuffer},
-                       {targets.width, targets.height});
-        } else {
-            PassScope const pass = timed(PassId::Geometry);
-            geometryPass({scene, shaders.get(ProgramId::Geometry), targets.gbuffer}, {f.viewProj, s.normalMaps});
-        }
-        if (frameTestHook) frameTestHook();
-        if (runs() && (s.mode == LightingMode::Clustered || s.mode == LightingMode::Tiled)) {
-            PassScope const pass = timed(PassId::LightLists);
-            buildLightLists(f);
-        }
-        if (runs() && s.mode == LightingMode::Volumes && targets.volumeDepth) {
-            PassScope const pass = timed(PassId::VolumeDepth);
-            volumeDepthPass({targets.gbuffer, targets.volumeFbo}, {targets.width, targets.height});
-        }
-        if (runs()) {
-            PassScope const pass = timed(PassId::Lighting);
-            if (fragmentQuery) fragmentQuery.begin();
-            runLighting(f);
-            if (fragmentQuery) fragmentQuery.end();
-        }
-        if (runs() && splitAccumulation(f)) {
-            PassScope const pass = timed(PassId::LightCombine);
-            combineLights(f);
-        }
-        if (runs()) {
-            PassScope const pass = timed(PassId::DepthCopy);
-            depthCopyPass({targets.gbuffer, shaders.get(ProgramId::DepthCopy), triangle, targets.litFbo},
-                          {s.depthCopy, targets.width, targets.height});
-        }
-    }
-    if (runs() && !imported) {  // an imported G-buffer comes without a scene to draw
-        PassScope const pass = timed(PassId::Forward);
-        forwardPass({scene, lights, shaders.get(ProgramId::Forward), litTarget()},
-                    {MaterialFilter::Blended, f.viewProj, shading, s.normalMaps});
-    }
-    // Debug counts for the heat map and tile views, only when one of them is shown.
-    if (runs() && viewNeedsCoverage(s.view)) {
-        PassScope const pass = timed(PassId::Coverage);
-        runCoverage(f);
-    }
-    {
-        PassScope const pass = timed(PassId::Display);
-        ViewParams display;
-        display.view = s.view;
-        viewPass({targets.gbuffer, targets.lighting, targets.coverage, targets.diffuseLight, targets.specularLight,
-                  viewProgram(s.view), triangle, targets.displayFbo},
-                 {display, s.tonemap, s.exposure, f.camera.nearPlane, f.camera.farPlane, targets.width, targets.height,
-                  shading.inverseViewProj});
-    }
-    // The overlays, drawn onto the display image so the lit image stays the light sum (what
-    // lighting.exr exports and light-by-light accumulation adds up). Only on the views of the lit
-    // image (viewShowsOverlays); the tonemap is the display pass's, so they look as they did when
-    // they were drawn into the lit image.
-    bool const overlays = viewShowsOverlays(s.view);
-    DisplayTonemap const tonemap{s.tonemap, s.exposure};
-    if (runs() && overlays && s.lightCubes) {
-        PassScope const pass = timed(PassId::LightCubes);
-        // Against the lit target's depth: the scene's only when the depth-copy step filled it (the
-        // depth_blit lesson: without it, the cubes show through walls).
-        lightCubesPass({lights, shaders.get(ProgramId::LightCube), cubeVao, targets.overlayFbo},
-                       {f.viewProj, lightCubeHalfSize(), tonemap});
-    }
-    if (runs() && overlays && wireframes) {
-        PassScope const pass = timed(PassId::Wireframes);
-        // The G-buffer's depth is the scene's with or without the copy step; forward mode leaves the
-        // G-buffer empty, so its own depth (litDepth) is the scene's there.
-        gl::Framebuffer const& target =
-            s.mode == LightingMode::Forward ? targets.overlayFbo : targets.overlayGBufferDepthFbo;
-        WireframesConfig wire{f.viewProj};
-        wire.tonemap = tonemap;
-        if (outline >= 0) {
-            auto const slot = volumeInstanceSlot(f.lights, outline, f.camera, f.aspect, volumes.enclosingScale,
-                                                 volumes.coneRadialScale, volumes.volumeScale);
-            wire.firstInstance = slot.value_or(0);
-            wire.count = slot ? 1 : 0;
-        }
-        wireframesPass({lights, volumes, shaders.get(ProgramId::LightVolumeWire), target}, wire);
-    }
-#ifndef NDEBUG
-    checkFrameRan(declared, passesRun);
-#endif
-
+void RendererImpl::finishFrame(FrameInput const& input, FrameRecord const& frame, FrameStats& stats) {
     stats.timingSource = timingSourceName(timer.method().source);
     stats.timingReason = timer.method().reason;
     for (auto& [name, ms] : timer.finishFrame(input.waitForGpuTimings, input.timingStream)) {
         stats.passes.push_back({name, ms});
         stats.gpuFrameMs += ms;
     }
-    stats.calls = passCalls;
-    // Interactive frames read the count only when it is ready, so they never wait on the GPU.
-    bool const counted = std::find(passesRun.begin(), passesRun.end(),
-                                   s.mode == LightingMode::Forward ? PassId::ForwardShading : PassId::Lighting) !=
-                         passesRun.end();  // a frame stopped before the counted pass began no query
+    stats.calls = frame.calls;
+    // A frame stopped before the counted pass began no query. Interactive frames read the count only
+    // when it is ready, so they never wait on the GPU.
+    bool const counted = std::any_of(frame.ran.begin(), frame.ran.end(), countsFragments);
     if (fragmentQuery && counted && (input.waitForGpuTimings || fragmentQuery.resultAvailable()))
         stats.fragmentInvocations = fragmentQuery.result();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (shaderChecks)
         if (auto report = shaderChecks.collect()) stats.shaderCheckReport = *report;
-    stats.glErrors = glErrorCount() - errorsBefore;
-    return stats;
 }
 
 bool RendererImpl::wireframesDrawn(FrameInput const& input) {
@@ -379,24 +284,6 @@ std::vector<PassDecl> RendererImpl::framePasses(FrameInput const& input) {
     PipelineSettings s = imported ? importedSettings(input.settings) : input.settings;
     if (modeUnavailable(s.mode)) s.mode = LightingMode::Quad;  // as render() runs it
     return gbl::framePasses(s, wireframesDrawn(input), bool(imported));
-}
-
-// A frame that stops early skips the passes that would overwrite these targets: clear them, so the
-// viewers show what this frame drew so far rather than an earlier frame's lighting.
-void RendererImpl::clearForStop() {
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDepthMask(GL_TRUE);
-    glStencilMask(0xFF);
-    glClearColor(0, 0, 0, 0);
-    glClearDepth(1.0);
-    glClearStencil(0);
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.litFbo.id());
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    for (gl::Framebuffer const* fbo : {&targets.splitFbo, &targets.coverageFbo}) {
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo->id());
-        glClear(GL_COLOR_BUFFER_BIT);
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 float RendererImpl::lightCubeHalfSize() const {
@@ -463,6 +350,22 @@ std::uint64_t Renderer::glErrorCount() const {
 
 void RendererTestAccess::setFrameHook(Renderer& renderer, std::function<void()> hook) {
     renderer.impl().frameTestHook = std::move(hook);
+}
+
+void RendererTestAccess::setPassObserver(Renderer& renderer, std::function<void(PassDecl const&)> observer) {
+    renderer.impl().passObserver = std::move(observer);
+}
+
+void RendererTestAccess::editDeclarations(Renderer& renderer, std::function<void(std::vector<PassDecl>&)> edit) {
+    renderer.impl().declarationEdit = std::move(edit);
+}
+
+void RendererTestAccess::addPass(Renderer& renderer, PassId after, PassDecl decl, RunPass run) {
+    renderer.impl().extraPasses.push_back({after, std::move(decl), std::move(run)});
+}
+
+void RendererTestAccess::clearPasses(Renderer& renderer) {
+    renderer.impl().extraPasses.clear();
 }
 
 void RendererTestAccess::setViewVariants(Renderer& renderer, bool on) {

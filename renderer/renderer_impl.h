@@ -10,11 +10,13 @@
 #include "gl/shader_checks.h"
 #include "gl/shader_library.h"
 #include "gl/vertex_array.h"
+#include "gpu/frame_resources.h"
 #include "gpu/gpu_scene.h"
 #include "gpu/light_buffer.h"
 #include "gpu/light_volume_gpu.h"
 #include "gpu/render_targets.h"
 #include "gpu/view_target.h"
+#include "pass_run.h"
 #include "passes/import.h"
 #include "passes/lighting_clustered.h"
 #include "passes/shading_inputs.h"
@@ -45,16 +47,35 @@ inline constexpr char const* kForwardRefusesSplit =
 // The uniforms of shaders/lighting.glsl and surface_terms.glsl for frame `f`.
 ShadingUniforms shadingUniforms(FrameContext const& f);
 
+// One frame's own record (or one view's): the values its passes share and what they did.
+struct FrameRecord {
+    FrameContext f;
+    ShadingUniforms shading;
+    bool wireframes = false;         // the volume outlines are drawn (the setting, or an accumulated light's)
+    int outline = -1;                // the one volume outlined, an index into f.lights; -1: every volume
+    std::vector<PassId> ran;         // the passes run so far, in order (PassScope)
+    std::vector<PassCalls> calls;    // and what each issued
+    std::optional<ViewParams> view;  // a view's (drawView): untimed, shown with these parameters
+};
+
+// A pass that is not one of the renderer's own (a test's, renderer_test_access.h): its declaration
+// runs after the pass `after` with `run`, through the same executor as every other.
+struct ExtraPass {
+    PassId after = PassId::Display;
+    PassDecl decl;
+    RunPass run;
+};
+
 // Times one pass under its declared name (core/frame_passes.h) and records that it ran.
 class PassScope {
 public:
-    PassScope(GpuTimer& timer, std::vector<PassId>& ran, std::vector<PassCalls>& calls, PassId id)
-        : timer_(timer), calls_(calls), name_(passName(id)), before_(gl::drawCount()) {
-        timer.begin(std::string(name_));
-        ran.push_back(id);
+    PassScope(GpuTimer& timer, FrameRecord& frame, PassDecl const& decl)
+        : timer_(timer), calls_(frame.calls), name_(decl.name()), before_(gl::drawCount()), timed_(!frame.view) {
+        if (timed_) timer.begin(std::string(name_));
+        frame.ran.push_back(decl.id);
     }
     ~PassScope() {
-        timer_.end();
+        if (timed_) timer_.end();
         gl::DrawCount const& now = gl::drawCount();
         calls_.push_back({std::string(name_), now.draws - before_.draws, now.dispatches - before_.dispatches});
     }
@@ -66,6 +87,7 @@ private:
     std::vector<PassCalls>& calls_;
     std::string_view name_;
     gl::DrawCount before_;
+    bool timed_;
 };
 
 // An optional group of programs (and, for volumes, the sphere mesh), built on first use.
@@ -73,6 +95,9 @@ struct OptionalFeature {
     bool tried = false;
     std::optional<std::string> unavailable;  // why it cannot run; nullopt once it built
 };
+
+// What the read-backs (renderer_readback.cpp) draw with and into: not the whole renderer.
+struct ReadbackContext;
 
 class RendererImpl {
 public:
@@ -91,6 +116,12 @@ public:
     std::optional<std::string> modeUnavailable(LightingMode mode);
     std::vector<PassDecl> framePasses(FrameInput const& input);
     float lightCubeHalfSize() const;
+    ReadbackContext readbackContext();
+
+private:
+    friend class Renderer;  // its methods are this class's interface (renderer.cpp, renderer_readback.cpp, ...)
+    friend struct RendererTestAccess;
+    friend struct ReadbackContext;
 
     // --- resources -------------------------------------------------------------------------
     GlCaps caps;
@@ -104,22 +135,24 @@ public:
     gl::Buffer cubeVertices;
     LightVolumeGpu volumes;
     GpuTimer timer;
-    ShaderChecks shaderChecks;         // the shader-checks build's report (gl/shader_checks.h); empty when off
-    std::vector<PassId> passesRun;     // this frame's passes so far, in order (PassScope)
-    std::vector<PassCalls> passCalls;  // and what each issued (PassScope)
-    gl::Query fragmentQuery;           // GL_FRAGMENT_SHADER_INVOCATIONS_ARB when available
+    ShaderChecks shaderChecks;  // the shader-checks build's report (gl/shader_checks.h); empty when off
+    gl::Query fragmentQuery;    // GL_FRAGMENT_SHADER_INVOCATIONS_ARB when available
     std::uint64_t glErrorsAtStart = 0;
     glm::mat4 frameInverseViewProj{1.0f};  // of the last frame rendered: decodes its G-buffer
     // What the coverage target counts now (runCoverage), for the pixel inspector; none before a
     // count view ran in this frame.
     std::optional<DebugView> coverageView;
     LightingMode coverageMode = LightingMode::Quad;
+    std::vector<ExtraPass> extraPasses;  // renderer_test_access.h: tests' own passes
+    // renderer_test_access.h: called before each pass runs, with its declaration
+    std::function<void(PassDecl const&)> passObserver;
+    // renderer_test_access.h: edits the frame's declared passes before they run
+    std::function<void(std::vector<PassDecl>&)> declarationEdit;
     OptionalFeature volumesFeature;
     OptionalFeature tiledFeature;
     OptionalFeature clusteredFeature;
     ClusterLists clusters;
     TileBins tileBins;                    // the tiled and clustered list passes' candidates, rebuilt by each
-    bool splitTargetsWritten = false;     // the light targets hold an earlier split frame's sums
     std::function<void()> frameTestHook;  // renderer_test_access.h
     bool viewVariants = true;             // each view its own program (viewProgram); off only in tests
     // Set: frames re-light this imported G-buffer with its camera (Renderer::setImportedGBuffer).
@@ -132,11 +165,29 @@ public:
         gl::Framebuffer depthFbo, stencilFbo;
     } readback;
 
-private:
     FrameContext frameContext(FrameInput const& input) const;
     DeferredInputs deferredInputs(FrameContext const& f) const;
     LitTarget litTarget() const { return {targets.litFbo, targets.lighting}; }
-    PassScope timed(PassId id) { return {timer, passesRun, passCalls, id}; }
+    // --- the frame: declared passes, run (renderer.cpp, renderer_passes.cpp) ---------------------
+    FrameRecord beginFrame(FrameInput const& input, FrameStats& stats);
+    std::vector<PassDecl> declaredPasses(FrameInput const& input, FrameRecord const& frame, FrameStats& stats);
+    void runPasses(std::span<PassDecl const> passes, FrameRecord& frame, FrameResources const& io);
+    void finishFrame(FrameInput const& input, FrameRecord const& frame, FrameStats& stats);
+    using RunFunction = void (RendererImpl::*)(FrameRecord&, PassRun const&);
+    static RunFunction runFunction(PassId id);  // the table of the renderer's own passes
+    void runForwardShading(FrameRecord& frame, PassRun const& r);
+    void runGeometry(FrameRecord& frame, PassRun const& r);
+    void runImport(FrameRecord& frame, PassRun const& r);
+    void runLightLists(FrameRecord& frame, PassRun const& r);
+    void runVolumeDepth(FrameRecord& frame, PassRun const& r);
+    void runLighting(FrameRecord& frame, PassRun const& r);
+    void runLightCombine(FrameRecord& frame, PassRun const& r);
+    void runDepthCopy(FrameRecord& frame, PassRun const& r);
+    void runForward(FrameRecord& frame, PassRun const& r);
+    void runCoverage(FrameRecord& frame, PassRun const& r);
+    void runDisplay(FrameRecord& frame, PassRun const& r);
+    void runLightCubes(FrameRecord& frame, PassRun const& r);
+    void runWireframes(FrameRecord& frame, PassRun const& r);
     // shaders/view.frag built for `view` alone (its VIEW_ONLY): the switch over every view would
     // otherwise run whole at each pixel where branches run under a mask (4 ms against 42 ms for
     // the final image at 641x407 in SwiftShader).
@@ -145,23 +196,26 @@ private:
                             : shaders.get(ProgramId::View);
     }
     bool wireframesDrawn(FrameInput const& input);  // volume outlines: the setting, or an accumulated light's
-    void clearForStop();                            // FrameInput::stopAfter: the targets later passes draw
     bool volumesReady();                            // builds the volume programs and mesh on first use
     bool tiledReady();                              // builds the tiled program on first use
     bool clusteredReady();                          // builds the two clustered programs on first use
-    LightingClusteredInput clusteredInput(FrameContext const& f);
+    // The clustered passes' input: `image` the lit image or diffuse light target they write.
+    LightingClusteredInput clusteredInput(FrameContext const& f, FrameResources const& io, gl::Texture const& image);
     LightingClusteredConfig clusteredConfig(FrameContext const& f, bool shade) const;
     TileBinPrograms binPrograms(ProgramId bin) const;  // TileDepth and the mode's binning program
-    void buildLightLists(FrameContext const& f);       // tiled and clustered: the light_lists pass
-    void runLighting(FrameContext const& f);
-    void runCoverage(FrameContext const& f);
-    // Accumulation targets (renderer_accumulation.cpp, docs/lighting.md "Accumulation targets").
+    // Accumulation targets (docs/lighting.md "Accumulation targets").
     bool splitAccumulation(FrameContext const& f) const;
-    LitTarget quadTarget(FrameContext const& f) const;              // lit image, or the two light targets
-    LitTarget volumeTarget(FrameContext const& f) const;            // the same with the G-buffer's depth
-    gl::Texture const& lightingImage(FrameContext const& f) const;  // tiled / clustered image 0
-    void prepareAccumulation(FrameContext const& f);                // zeroes split targets left from a split frame
-    void combineLights(FrameContext const& f);                      // split: the two targets into `lighting`
 };
+
+struct ReadbackContext {
+    RenderTargets const& targets;
+    RendererImpl::ReadbackTargets& readback;  // the browser's: made on first use
+    ShaderLibrary const& shaders;
+    gl::FullscreenTriangle const& triangle;
+};
+
+inline ReadbackContext RendererImpl::readbackContext() {
+    return {targets, readback, shaders, triangle};
+}
 
 }  // namespace gbl

@@ -1,5 +1,6 @@
-// Lighting modes within the frame: the light lists of tiled and clustered, the lighting pass of
-// each mode and the coverage counts behind the heat-map views.
+// The lighting modes' run functions: the light lists of tiled and clustered, the lighting pass of
+// each mode and the coverage counts behind the heat-map views. Each draws into what its declaration
+// (core/frame_passes.cpp) names, resolved by the executor (PassRun).
 #include "renderer_impl.h"
 
 #include "passes/coverage.h"
@@ -7,18 +8,22 @@
 #include "passes/lighting_quad.h"
 #include "passes/lighting_tiled.h"
 
+#include <array>
+
 namespace gbl {
 
-LightingClusteredInput RendererImpl::clusteredInput(FrameContext const& f) {
+LightingClusteredInput RendererImpl::clusteredInput(FrameContext const& f, FrameResources const& io,
+                                                    gl::Texture const& image) {
     return {deferredInputs(f),
             shaders.get(ProgramId::ClusterBuild),
             binPrograms(ProgramId::ClusterBin),
             tileBins,
             shaders.get(ProgramId::ClusterShade),
             clusters,
-            lightingImage(f),
-            targets.specularLight,
-            targets.coverage};
+            image,
+            io.texture(Resource::SpecularLight),
+            io.texture(Resource::Coverage),
+            caps};
 }
 
 LightingClusteredConfig RendererImpl::clusteredConfig(FrameContext const& f, bool shade) const {
@@ -31,50 +36,59 @@ TileBinPrograms RendererImpl::binPrograms(ProgramId bin) const {
 
 // Tiled bins each tile's candidate lights, clustered also builds its clusters' lists: a pass of
 // their own, so bench reports the lists apart from the shading that reads them.
-void RendererImpl::buildLightLists(FrameContext const& f) {
+void RendererImpl::runLightLists(FrameRecord& frame, PassRun const& r) {
+    FrameContext const& f = frame.f;
     if (f.settings.mode == LightingMode::Clustered) {
-        clusterListsPass(clusteredInput(f), clusteredConfig(f, true));
+        clusterListsPass(clusteredInput(f, r.io, r.io.texture(Resource::Lighting)), clusteredConfig(f, true));
         return;
     }
-    tileBinPass({binPrograms(ProgramId::TileBin), lights, targets.gbuffer.depth, tileBins},
+    tileBinPass({binPrograms(ProgramId::TileBin), lights, r.io.texture(Resource::GBufferDepth), tileBins, caps},
                 {f.view, f.projection, targets.width, targets.height, f.camera.nearPlane, f.camera.farPlane});
 }
 
-void RendererImpl::runLighting(FrameContext const& f) {
+void RendererImpl::runLighting(FrameRecord& frame, PassRun const& r) {
+    FrameContext const& f = frame.f;
     DeferredInputs const deferred = deferredInputs(f);
+    // The lit image, or the diffuse light target of a split frame (the specular one beside it).
+    Resource const out = r.decl.kind == PassKind::Compute ? r.decl.writes.front() : r.decl.color.front();
+    gl::Texture const& image = r.io.texture(out);
     switch (f.settings.mode) {
         case LightingMode::Volumes:
-            lightingVolumesPass(
-                {deferred, volumes, shaders.get(ProgramId::LightingQuad), shaders.get(ProgramId::LightVolume),
-                 shaders.get(ProgramId::LightVolumeStencil), triangle, volumeTarget(f)},
-                {f.viewProj, f.settings.cull});
+            lightingVolumesPass({deferred,
+                                 volumes,
+                                 shaders.get(ProgramId::LightingQuad),
+                                 shaders.get(ProgramId::LightVolume),
+                                 shaders.get(ProgramId::LightVolumeStencil),
+                                 triangle,
+                                 {*r.fbo, image}},
+                                {f.viewProj, f.settings.cull, r.decl.states});
             break;
         case LightingMode::Tiled:  // the tiles' candidates were binned in the frame's light_lists pass
-            lightingTiledPass({deferred, shaders.get(ProgramId::LightingTiled), binPrograms(ProgramId::TileBin),
-                               tileBins, lightingImage(f), targets.specularLight, targets.coverage},
-                              {f.view, f.projection, targets.width, targets.height, f.camera.nearPlane,
-                               f.camera.farPlane, true, false, true});
+            lightingTiledPass(
+                {deferred, shaders.get(ProgramId::LightingTiled), binPrograms(ProgramId::TileBin), tileBins, image,
+                 r.io.texture(Resource::SpecularLight), r.io.texture(Resource::Coverage), caps},
+                {f.view, f.projection, targets.width, targets.height, f.camera.nearPlane, f.camera.farPlane, true,
+                 false, true});
             break;
         case LightingMode::Clustered:  // the lists were built in the frame's light_lists pass
-            clusterShadePass(clusteredInput(f), clusteredConfig(f, true));
+            clusterShadePass(clusteredInput(f, r.io, image), clusteredConfig(f, true));
             break;
         default:
-            lightingQuadPass({deferred, shaders.get(ProgramId::LightingQuad), triangle, quadTarget(f)});
+            lightingQuadPass(
+                {deferred, shaders.get(ProgramId::LightingQuad), triangle, {*r.fbo, image}, r.decl.states});
             break;
     }
 }
 
-void RendererImpl::runCoverage(FrameContext const& f) {
+void RendererImpl::runCoverage(FrameRecord& frame, PassRun const& r) {
+    FrameContext const& f = frame.f;
     coverageView = f.settings.view;
     coverageMode = f.settings.mode;
+    FrameResources const& io = r.io;
     if (f.settings.mode == LightingMode::Clustered && f.settings.view != DebugView::TileLights) {
         // x = the pixel's cluster list, y = lights that lit it: the heat map's scale, as tiles.
-        glBindFramebuffer(GL_FRAMEBUFFER, targets.coverageFbo.id());
-        glClearColor(0, 0, 0, 0);
-        glClear(GL_COLOR_BUFFER_BIT);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        clusterListsPass(clusteredInput(f), clusteredConfig(f, false));
-        clusterShadePass(clusteredInput(f), clusteredConfig(f, false));
+        clusterListsPass(clusteredInput(f, io, io.texture(Resource::Lighting)), clusteredConfig(f, false));
+        clusterShadePass(clusteredInput(f, io, io.texture(Resource::Lighting)), clusteredConfig(f, false));
         return;
     }
     bool const tiles = f.settings.view == DebugView::TileLights || f.settings.mode == LightingMode::Tiled;
@@ -84,13 +98,16 @@ void RendererImpl::runCoverage(FrameContext const& f) {
     LightingTiledConfig const t{
         f.view, f.projection, targets.width, targets.height, f.camera.nearPlane, f.camera.farPlane, false, true};
     TileBinPrograms const bin = binPrograms(ProgramId::TileBin);
+    // A compute count has no framebuffer of its own; the coverage target's is bound around it.
+    std::array<Resource, 1> const counts{Resource::Coverage};
+    gl::Framebuffer const& target = r.fbo ? *r.fbo : io.framebuffer(counts, std::nullopt);
     coveragePass(
         {deferredInputs(f), triangle, shaders.get(ProgramId::CoverageAllLights), volumeCounts ? &volumes : nullptr,
          volumeCounts ? &shaders.get(ProgramId::LightVolumeCoverage) : nullptr,
          volumeCounts ? &shaders.get(ProgramId::LightVolumeStencil) : nullptr,
          tiled ? &shaders.get(ProgramId::LightingTiled) : nullptr, tiled ? &bin : nullptr, tiled ? &tileBins : nullptr,
-         targets.coverageFbo, targets.coverage, targets.lighting},
-        {f.settings.mode, f.settings.cull, f.settings.view, t, f.viewProj});
+         target, io.texture(Resource::Coverage), io.texture(Resource::Lighting), caps},
+        {f.settings.mode, f.settings.cull, f.settings.view, t, f.viewProj, r.decl.states});
 }
 
 }  // namespace gbl

@@ -144,10 +144,11 @@ FloatImage readStencil(GLuint fbo, int width, int height) {
 
 namespace {
 // Runs the decode pass over width x height G-buffer pixels from `offset` (GL's bottom-left origin).
-DecodedGBuffer decodeGBuffer(RendererImpl& r, glm::ivec2 offset, int width, int height, glm::mat4 const& invViewProj) {
+DecodedGBuffer decodeGBuffer(ReadbackContext const& r, glm::ivec2 offset, int width, int height,
+                             glm::mat4 const& invViewProj) {
     DecodedGBuffer d = createDecodedGBuffer(width, height);
     gbufferDecodePass({r.targets.gbuffer, r.shaders.get(ProgramId::GBufferDecode), r.triangle, d},
-                      {invViewProj, offset});
+                      {invViewProj, offset, std::span(&kDecodeState, 1)});
     return d;
 }
 
@@ -158,7 +159,7 @@ DecodedGBuffer decodeGBuffer(RendererImpl& r, glm::ivec2 offset, int width, int 
 // (mask 1 << b), the pass adds 2^b / 255 (additive blending; sums of distinct powers of two up to
 // 255 are exact in 8 bits), so the red channel times 255 is the stencil value. Only `region` (GL
 // coordinates: x, y from the bottom, width, height) is drawn and read: one pixel for the inspector.
-std::vector<float> readDepthOrStencil(RendererImpl& r, bool stencil, glm::ivec4 region) {
+std::vector<float> readDepthOrStencil(ReadbackContext const& r, bool stencil, glm::ivec4 region) {
     RenderTargets const& t = r.targets;
     RendererImpl::ReadbackTargets& rb = r.readback;
     if (!rb.depthFbo) {
@@ -217,7 +218,7 @@ std::vector<float> readDepthOrStencil(RendererImpl& r, bool stencil, glm::ivec4 
 }
 
 // The whole frame's depth or stencil, rows top to bottom.
-FloatImage readDepthOrStencilImage(RendererImpl& r, bool stencil) {
+FloatImage readDepthOrStencilImage(ReadbackContext const& r, bool stencil) {
     RenderTargets const& t = r.targets;
     std::vector<float> const bottomUp = readDepthOrStencil(r, stencil, {0, 0, t.width, t.height});
     FloatImage img{t.width, t.height, 1, std::vector<float>(bottomUp.size())};
@@ -230,7 +231,7 @@ FloatImage readDepthOrStencilImage(RendererImpl& r, bool stencil) {
 #endif
 
 // The G-buffer's depth, and its stencil values, as one float channel each, rows top to bottom.
-FloatImage readDepth(RendererImpl& r) {
+FloatImage readDepth(ReadbackContext const& r) {
 #ifdef __EMSCRIPTEN__
     return readDepthOrStencilImage(r, false);
 #else
@@ -239,7 +240,7 @@ FloatImage readDepth(RendererImpl& r) {
 #endif
 }
 
-FloatImage readStencilImage(RendererImpl& r) {
+FloatImage readStencilImage(ReadbackContext const& r) {
 #ifdef __EMSCRIPTEN__
     return readDepthOrStencilImage(r, true);
 #else
@@ -263,7 +264,7 @@ FloatImage Renderer::readRawAttachment(int index) const {
     if (t.empty() || index < 0 || index >= desc.attachmentCount) return {};
     TexelFormat const f = desc.attachments()[std::size_t(index)].format;
     bool const depth = index == desc.attachmentCount - 1;
-    if (depth) return readDepth(*impl_);
+    if (depth) return readDepth(impl_->readbackContext());
     return readFramebuffer(t.gbuffer.fbo.id(), depth ? GL_NONE : GLenum(GL_COLOR_ATTACHMENT0 + index), t.width,
                            t.height, texelChannels(f));
 }
@@ -276,7 +277,8 @@ FloatImage Renderer::readAttachment(Attachment a) const {
     switch (a) {
         case Attachment::Position:
         case Attachment::Normal: {
-            DecodedGBuffer const d = decodeGBuffer(*impl_, {0, 0}, t.width, t.height, impl_->frameInverseViewProj);
+            DecodedGBuffer const d =
+                decodeGBuffer(impl_->readbackContext(), {0, 0}, t.width, t.height, impl_->frameInverseViewProj);
             return readFramebuffer(d.fbo.id(), a == Attachment::Position ? GL_COLOR_ATTACHMENT0 : GL_COLOR_ATTACHMENT1,
                                    t.width, t.height, 4);
         }
@@ -288,9 +290,9 @@ FloatImage Renderer::readAttachment(Attachment a) const {
             return readFramebuffer(t.gbuffer.fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + emissiveIndex), t.width, t.height,
                                    4);
         case Attachment::Depth:
-            return readDepth(*impl_);
+            return readDepth(impl_->readbackContext());
         case Attachment::Stencil:
-            return readStencilImage(*impl_);
+            return readStencilImage(impl_->readbackContext());
         case Attachment::Lighting:
             return readFramebuffer(t.litFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
         case Attachment::DiffuseLight:
@@ -331,7 +333,7 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
     float const aspect = float(t.width) / float(t.height);
     glm::mat4 const invViewProj = glm::inverse(camera.projection(aspect) * camera.view());
     // Position and normal as the lighting decoded them, through a one-pixel decode pass.
-    DecodedGBuffer const d = decodeGBuffer(*impl_, {x, glY}, 1, 1, invViewProj);
+    DecodedGBuffer const d = decodeGBuffer(impl_->readbackContext(), {x, glY}, 1, 1, invViewProj);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, d.fbo.id());
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, &s.position[0]);
@@ -356,8 +358,8 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
     }
 #ifdef __EMSCRIPTEN__
     // WebGL2 reads neither depth nor stencil: both through their passes, over this pixel alone.
-    s.depth = readDepthOrStencil(*impl_, false, {x, glY, 1, 1})[0];
-    s.stencil = std::uint8_t(readDepthOrStencil(*impl_, true, {x, glY, 1, 1})[0]);
+    s.depth = readDepthOrStencil(impl_->readbackContext(), false, {x, glY, 1, 1})[0];
+    s.stencil = std::uint8_t(readDepthOrStencil(impl_->readbackContext(), true, {x, glY, 1, 1})[0]);
 #else
     glBindFramebuffer(GL_READ_FRAMEBUFFER, t.gbuffer.fbo.id());
     glReadPixels(x, glY, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &s.depth);

@@ -2,8 +2,7 @@
 // and drawView (data views, coverage views recounted from the frame they describe).
 #include "renderer_impl.h"
 
-#include "passes/view.h"
-#include "passes/volume_depth.h"
+#include <algorithm>
 
 namespace gbl {
 
@@ -25,28 +24,28 @@ void RendererImpl::copyDisplay(ViewTarget& target) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-// A view of the frame `frame` describes (the last one rendered): coverage views recount from
-// it, so nothing here depends on what the last render() happened to compute. No overlays: they
-// belong to the frame's own display image (copyDisplay).
-void RendererImpl::drawView(ViewParams const& params, FrameInput const& frame, ViewTarget& target) {
+// A view of the frame `input` describes (the last one rendered): its declared view passes
+// (viewPasses), so coverage views recount from it and nothing here depends on what the last
+// render() happened to compute. No overlays: they belong to the frame's own display image
+// (copyDisplay).
+void RendererImpl::drawView(ViewParams const& params, FrameInput const& input, ViewTarget& target) {
     if (targets.empty()) return;
     sizeViewTarget(target);
-    FrameContext f = frameContext(frame);
-    if (modeUnavailable(f.settings.mode)) f.settings.mode = LightingMode::Quad;  // as render() ran it
-    if (viewNeedsCoverage(params.view)) {
-        f.settings.view = params.view;
-        lights.upload(f.lights);
-        // The volume counts test against the copy, which only a volumes frame refreshed.
-        if (f.settings.mode == LightingMode::Volumes && targets.volumeDepth)
-            volumeDepthPass({targets.gbuffer, targets.volumeFbo}, {targets.width, targets.height});
-        if (shaderChecks) shaderChecks.begin();
-        runCoverage(f);
-        if (shaderChecks) shaderChecks.collect();
-    }
-    viewPass({targets.gbuffer, targets.lighting, targets.coverage, targets.diffuseLight, targets.specularLight,
-              viewProgram(params.view), triangle, target.fbo},
-             {params, f.settings.tonemap, f.settings.exposure, f.camera.nearPlane, f.camera.farPlane, targets.width,
-              targets.height, glm::inverse(f.viewProj)});
+    FrameRecord frame;
+    frame.f = frameContext(input);
+    if (modeUnavailable(frame.f.settings.mode)) frame.f.settings.mode = LightingMode::Quad;  // as render() ran it
+    frame.f.settings.view = params.view;
+    frame.shading = shadingUniforms(frame.f);
+    frame.view = params;
+    std::vector<PassDecl> const passes = viewPasses(frame.f.settings);
+    bool const lit = std::any_of(passes.begin(), passes.end(), [](PassDecl const& p) {
+        return std::find(p.samples.begin(), p.samples.end(), Resource::Lights) != p.samples.end();
+    });
+    if (lit) lights.upload(frame.f.lights, caps);
+    if (shaderChecks) shaderChecks.begin();
+    glViewport(0, 0, targets.width, targets.height);
+    runPasses(passes, frame, {targets, &target.fbo});
+    if (shaderChecks) shaderChecks.collect();
 }
 
 }  // namespace gbl

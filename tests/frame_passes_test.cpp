@@ -265,3 +265,54 @@ TEST(FramePasses, AStopOutsideTheFrameIsOneSentenceNamingItsPasses) {
     EXPECT_NE(unknown->find("no pass has that name"), std::string::npos) << *unknown;
     EXPECT_EQ(unknown->find('\n'), std::string::npos) << *unknown;
 }
+
+// The clears are declared with the pass they precede (the executor does them): each target a pass
+// overwrites only in part, the unused G-buffer of a forward frame, the light targets of a frame that
+// does not split (an earlier split frame's sums would show in its views), and, in a stopped frame,
+// what the skipped passes would have drawn.
+TEST(FramePasses, ClearsAreDeclaredWithThePassTheyPrecede) {
+    PipelineSettings s;
+    s.mode = LightingMode::Quad;
+    std::vector<PassDecl> const quad = framePasses(s);
+    EXPECT_EQ(find(quad, PassId::Geometry).clears,
+              (std::vector<Resource>{Resource::GBufferPosition, Resource::GBufferNormal, Resource::GBufferAlbedoSpec,
+                                     Resource::GBufferEmissive, Resource::GBufferDepth, Resource::DiffuseLight,
+                                     Resource::SpecularLight}));
+    EXPECT_EQ(find(quad, PassId::Lighting).clears, std::vector<Resource>{Resource::Lighting});
+    EXPECT_EQ(find(quad, PassId::DepthCopy).clears, std::vector<Resource>{Resource::LitDepth});
+    EXPECT_TRUE(find(quad, PassId::Display).clears.empty());
+
+    s.accumulation = LightAccumulation::Split;
+    std::vector<PassDecl> const split = framePasses(s);
+    EXPECT_EQ(find(split, PassId::Lighting).clears,
+              (std::vector<Resource>{Resource::DiffuseLight, Resource::SpecularLight}));
+    EXPECT_EQ(find(split, PassId::Geometry).clears.size(), 5u) << "the split frame keeps its light targets";
+
+    s.mode = LightingMode::Forward;  // no G-buffer: cleared, so its views show it unused
+    PassDecl const& forward = find(framePasses(s), PassId::ForwardShading);
+    for (Resource r : {Resource::GBufferNormal, Resource::GBufferDepth, Resource::Lighting, Resource::LitDepth,
+                       Resource::DiffuseLight})
+        EXPECT_NE(std::find(forward.clears.begin(), forward.clears.end(), r), forward.clears.end()) << resourceName(r);
+
+    s.mode = LightingMode::Volumes;
+    s.accumulation = LightAccumulation::Single;
+    std::vector<PassDecl> const stopped = passesUntil(framePasses(s), PassId::Geometry);
+    PassDecl const& first = stopped.front();
+    for (Resource r : {Resource::Lighting, Resource::LitDepth, Resource::SpecularLight, Resource::Coverage})
+        EXPECT_NE(std::find(first.clears.begin(), first.clears.end(), r), first.clears.end()) << resourceName(r);
+}
+
+// drawView's list: a count view recounts (after the volumes' depth copy where the layout has one),
+// then the view pass draws into the view's own image, never the display.
+TEST(FramePasses, AViewRecountsThenDrawsIntoItsOwnImage) {
+    PipelineSettings s;
+    s.mode = LightingMode::Volumes;
+    s.layout = GBufferLayout::Packed;
+    s.view = DebugView::Heatmap;
+    std::vector<PassDecl> const heat = viewPasses(s);
+    EXPECT_EQ(names(heat), (std::vector<std::string>{"volume_depth", "coverage", "display"}));
+    EXPECT_EQ(heat.back().color, std::vector<Resource>{Resource::View});
+    s.view = DebugView::Normal;
+    EXPECT_EQ(names(viewPasses(s)), std::vector<std::string>{"display"});
+    EXPECT_TRUE(feedbackLoops(heat).empty());
+}

@@ -61,10 +61,10 @@ TEST_F(TileBinsGlTest, ABinHoldsOnlyLightsWithinTheDepthsItsTileShows) {
         at(+1.0f, wall),             // 3: over the background: no drawn pixel to reach
     };
     LightBuffer buffer;
-    ASSERT_FALSE(buffer.upload(lights).has_value());
+    ASSERT_FALSE(buffer.upload(lights, caps()).has_value());
 
     TileBins bins;
-    tileBinPass({{lib.get(ProgramId::TileDepth), lib.get(ProgramId::TileBin)}, buffer, depthTexture, bins},
+    tileBinPass({{lib.get(ProgramId::TileDepth), lib.get(ProgramId::TileBin)}, buffer, depthTexture, bins, caps()},
                 {glm::mat4(1.0f), glm::perspective(glm::radians(60.0f), aspect, kNear, kFar), kW, kH, kNear, kFar});
     TileGrid const grid = tileGrid(kW, kH);
     ASSERT_EQ(bins.tiles, grid.count());

@@ -141,6 +141,7 @@ PassDecl lightingPass(PipelineSettings const& s, bool split) {
     PassDecl p = declare(PassId::Lighting);  // full screen into litFbo, or splitFbo (no depth-stencil)
     p.samples = plus(gbufferSamples(d), {R::Lights});
     p.color = lit;
+    p.clears = lit;
     if (!split) p.depthStencil = R::LitDepth;
     p.states = {fullScreen("every light")};
     return p;
@@ -151,6 +152,7 @@ PassDecl depthCopyPass(DepthCopy mode) {
     p.color = {R::Lighting};
     p.depthStencil = R::LitDepth;
     p.depthWrite = p.stencilWrite = true;  // cleared, then written
+    p.clears = {R::LitDepth};
     if (mode != DepthCopy::Off) p.samples = {R::GBufferDepth};
     if (mode == DepthCopy::Shader)
         p.states = {
@@ -158,7 +160,35 @@ PassDecl depthCopyPass(DepthCopy mode) {
     return p;
 }
 
+PassDecl coverageCounts(PipelineSettings const& s);
+
 PassDecl coveragePass(PipelineSettings const& s) {
+    PassDecl p = coverageCounts(s);
+    p.clears = {R::Coverage};
+    return p;
+}
+
+// The volumes' copy of the G-buffer depth-stencil, where the lighting samples the G-buffer's depth.
+PassDecl volumeDepthPass() {
+    PassDecl v = declare(PassId::VolumeDepth, PassKind::Blit);
+    v.samples = {R::GBufferDepth};
+    v.color = {R::Lighting};  // volumeFbo's; the blit writes depth and stencil only
+    v.depthStencil = R::VolumeDepth;
+    v.depthWrite = v.stencilWrite = true;
+    return v;
+}
+
+// The view pass: the frame's data, tonemapped or shown raw, into `target` (the display or a view).
+PassDecl displayPass(GBufferLayoutDesc const& d, Resource target) {
+    PassDecl v = declare(PassId::Display);
+    for (GBufferAttachmentDesc const& a : d.attachments()) v.samples.push_back(slotResource(a.slot));  // raw views
+    v.samples = plus(v.samples, {R::Lighting, R::Coverage, R::DiffuseLight, R::SpecularLight});
+    v.color = {target};
+    v.states = {fullScreen("view")};
+    return v;
+}
+
+PassDecl coverageCounts(PipelineSettings const& s) {
     GBufferLayoutDesc const& d = layoutDesc(s.layout);
     std::vector<Resource> const gbuffer = plus(gbufferSamples(d), {R::GBufferDepth});  // and tile depth bounds
     if (s.view == DebugView::TileLights || s.mode == LightingMode::Tiled)
@@ -202,6 +232,9 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
     if (forward) {
         out.push_back(litPass(PassId::ForwardShading, {R::Materials, R::Lights}, opaque));
         out.back().stencilWrite = true;  // cleared with the rest
+        // No G-buffer in forward mode: cleared, so the viewers show that it is unused.
+        for (GBufferAttachmentDesc const& a : d.attachments()) out.back().clears.push_back(slotResource(a.slot));
+        out.back().clears = plus(out.back().clears, {R::Lighting, R::LitDepth});
     } else {
         PassDecl g = declare(imported ? PassId::Import : PassId::Geometry);
         g.samples = {imported ? R::Imported : R::Materials};
@@ -210,20 +243,14 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
         g.depthRead = g.depthWrite = g.stencilWrite = true;  // stencil cleared
         // The import pass writes each covered pixel's depth (gl_FragDepth) whatever is there.
         g.states = {imported ? state("imported surfaces", DepthTest::Always, true, Blend::Off, FaceCull::Off) : opaque};
+        g.clears = plus(g.color, {R::GBufferDepth});
         out.push_back(std::move(g));
         if (s.mode == LightingMode::Tiled)
             out.push_back(computePass(PassId::LightLists, {R::GBufferDepth, R::Lights}, {R::TileBins}));
         if (s.mode == LightingMode::Clustered)
             out.push_back(
                 computePass(PassId::LightLists, {R::GBufferDepth, R::Lights}, {R::TileBins, R::ClusterLists}));
-        if (s.mode == LightingMode::Volumes && lightingSamplesDepth(d)) {
-            PassDecl v = declare(PassId::VolumeDepth, PassKind::Blit);
-            v.samples = {R::GBufferDepth};
-            v.color = {R::Lighting};  // volumeFbo's; the blit writes depth and stencil only
-            v.depthStencil = R::VolumeDepth;
-            v.depthWrite = v.stencilWrite = true;
-            out.push_back(std::move(v));
-        }
+        if (s.mode == LightingMode::Volumes && lightingSamplesDepth(d)) out.push_back(volumeDepthPass());
         out.push_back(lightingPass(s, split));
         if (split) {
             PassDecl c = litPass(PassId::LightCombine, plus(gbufferSamples(d), {R::DiffuseLight, R::SpecularLight}),
@@ -235,13 +262,10 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
     if (!imported)
         out.push_back(litPass(PassId::Forward, {R::Materials, R::Lights},
                               state("blended surfaces", DepthTest::Less, false, Blend::Alpha, FaceCull::Material)));
+    // The light targets of an earlier split frame would otherwise show in this one's views.
+    if (!split) out.front().clears = plus(out.front().clears, {R::DiffuseLight, R::SpecularLight});
     if (viewNeedsCoverage(s.view)) out.push_back(coveragePass(s));
-    PassDecl v = declare(PassId::Display);
-    for (GBufferAttachmentDesc const& a : d.attachments()) v.samples.push_back(slotResource(a.slot));  // raw views
-    v.samples = plus(v.samples, {R::Lighting, R::Coverage, R::DiffuseLight, R::SpecularLight});
-    v.color = {R::Display};
-    v.states = {fullScreen("view")};
-    out.push_back(std::move(v));
+    out.push_back(displayPass(d, R::Display));
     // The overlays, onto the display image: the lit image stays the light sum.
     if (!viewShowsOverlays(s.view)) return out;
     if (s.lightCubes)  // overlayFbo: the lit target's depth, the scene's only after the depth-copy step
@@ -254,20 +278,33 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
     return out;
 }
 
+std::vector<PassDecl> viewPasses(PipelineSettings const& s) {
+    GBufferLayoutDesc const& d = layoutDesc(s.layout);
+    std::vector<PassDecl> out;
+    if (viewNeedsCoverage(s.view)) {
+        if (s.mode == LightingMode::Volumes && lightingSamplesDepth(d)) out.push_back(volumeDepthPass());
+        out.push_back(coveragePass(s));
+    }
+    out.push_back(displayPass(d, R::View));
+    return out;
+}
+
 std::vector<PassDecl> passesUntil(std::vector<PassDecl> passes, PassId stop) {
     auto const at = [&](PassId id) {
         return std::find_if(passes.begin(), passes.end(), [id](PassDecl const& p) { return p.id == id; });
     };
     auto const last = at(stop);
-    if (last == passes.end()) return passes;
+    if (last == passes.end() || last + 1 == passes.end()) return passes;  // nothing to skip
     auto const display = at(PassId::Display);  // always there (framePasses); only overlays follow it
     if (last >= display) {                     // the display itself or an overlay: nothing after it runs
         passes.erase(last + 1, passes.end());
-        return passes;
+    } else {
+        PassDecl shown = std::move(*display);
+        passes.erase(last + 1, passes.end());
+        passes.push_back(std::move(shown));
     }
-    PassDecl shown = std::move(*display);
-    passes.erase(last + 1, passes.end());
-    passes.push_back(std::move(shown));
+    passes.front().clears =
+        plus(passes.front().clears, {R::Lighting, R::LitDepth, R::DiffuseLight, R::SpecularLight, R::Coverage});
     return passes;
 }
 

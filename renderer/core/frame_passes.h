@@ -50,6 +50,11 @@ constexpr bool countsAsLighting(PassId id) {
            id == PassId::Lighting || id == PassId::LightCombine;
 }
 
+// The passes whose fragments FrameStats::fragmentInvocations counts: the shading of the lights.
+constexpr bool countsFragments(PassId id) {
+    return id == PassId::ForwardShading || id == PassId::Lighting;
+}
+
 // Everything a pass reads or writes (gpu/render_targets.h, gpu/light_buffer.h, ...).
 enum class Resource {
     GBufferPosition,
@@ -70,11 +75,27 @@ enum class Resource {
     TileBins,         // storage buffers: tile depth bounds and candidate lists
     ClusterLists,     // storage buffers and list texture of the clustered mode
     Imported,         // the textures of an imported G-buffer (Renderer::setImportedGBuffer)
+    View,             // a view's own image (Renderer::drawView's ViewTarget), in place of the display
 };
-inline constexpr std::array<std::string_view, 18> kResourceNames{
-    "gbuffer.position", "gbuffer.normal",   "gbuffer.albedo_spec", "gbuffer.emissive", "gbuffer.depth", "volumes.depth",
-    "lighting",         "lighting.depth",   "diffuse_light",       "specular_light",   "coverage",      "display",
-    "lights",           "volume_instances", "materials",           "tile_bins",        "cluster_lists", "imported"};
+inline constexpr std::array<std::string_view, 19> kResourceNames{"gbuffer.position",
+                                                                 "gbuffer.normal",
+                                                                 "gbuffer.albedo_spec",
+                                                                 "gbuffer.emissive",
+                                                                 "gbuffer.depth",
+                                                                 "volumes.depth",
+                                                                 "lighting",
+                                                                 "lighting.depth",
+                                                                 "diffuse_light",
+                                                                 "specular_light",
+                                                                 "coverage",
+                                                                 "display",
+                                                                 "lights",
+                                                                 "volume_instances",
+                                                                 "materials",
+                                                                 "tile_bins",
+                                                                 "cluster_lists",
+                                                                 "imported",
+                                                                 "view"};
 
 inline std::string_view resourceName(Resource r) {
     return enumName(kResourceNames, r);
@@ -128,12 +149,20 @@ struct PassDecl {
     bool depthWrite = false;
     bool stencilRead = false;
     bool stencilWrite = false;
-    std::vector<Resource> writes;  // images and buffers a compute pass writes
-    std::vector<DrawState> states;
+    std::vector<Resource> writes;   // images and buffers a compute pass writes
+    std::vector<DrawState> states;  // applied (gpu/draw_state_gl.h) before each group of draws, in order
+    // Cleared by the executor before the pass runs: colour to zero, depth to 1, stencil to 0.
+    std::vector<Resource> clears;
+    // A pass that is not one of PassId's (a test's own): its name in place of passName(id).
+    std::string_view customName;
 
-    std::string_view name() const { return passName(id); }
+    std::string_view name() const { return customName.empty() ? passName(id) : customName; }
     bool operator==(PassDecl const&) const = default;
 };
+
+// The read-backs' draws, which are no pass of a frame (renderer_readback.cpp): the G-buffer decoded
+// into positions and normals, full screen.
+inline constexpr DrawState kDecodeState{"decode", DepthTest::Off, false, Blend::Off, FaceCull::Off};
 
 // Whether the heat map or lights-per-tile view is shown: only then the frame runs the coverage pass.
 constexpr bool viewNeedsCoverage(DebugView v) {
@@ -159,6 +188,11 @@ inline std::vector<PassDecl> framePasses(PipelineSettings const& settings) {
     return framePasses(settings, settings.volumeWireframes);
 }
 
+// What Renderer::drawView runs for a view of the frame `settings` ran (settings.view the view shown):
+// the coverage counts again for a count view (after the volumes' depth copy, which only a volumes
+// frame refreshed), then the view pass into the view's own image.
+std::vector<PassDecl> viewPasses(PipelineSettings const& settings);
+
 // What a frame that re-lights an imported G-buffer runs with: what needs the scene's meshes
 // (forward shading) becomes the quad pass, and the light cubes, sized to a scene, are off. `why`
 // gets one sentence per change.
@@ -167,6 +201,8 @@ PipelineSettings importedSettings(PipelineSettings settings, std::string* why = 
 // Stopping after a pass (FrameInput::stopAfter): the passes up to and including `stop`, then the
 // display pass if `stop` came before it, which shows the frame as it stands (an overlay after it
 // keeps the display and the overlays before it). `passes` unchanged when `stop` is not among them.
+// When passes are skipped, the first pass also clears what they would have overwritten (the lit
+// image, the light targets, the counts), so the viewers show what this frame drew so far.
 std::vector<PassDecl> passesUntil(std::vector<PassDecl> passes, PassId stop);
 // Why the frame of `passes` cannot stop after the pass called `name` (no pass has that name, or this
 // frame does not run it), in one sentence naming the passes it runs; nullopt when it can.

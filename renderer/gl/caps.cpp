@@ -44,6 +44,13 @@ GlCaps detectGlCaps(int limitMajor, int limitMinor) {
                                has("GL_ARB_shader_image_load_store"));
     caps.pipelineStatistics = caps.atLeast(4, 6) || has("GL_ARB_pipeline_statistics_query");
     caps.masksBranches = rendererMasksBranches(caps.renderer, std::getenv("GBL_SHADER_BRANCHES"));
+    if (caps.computeShaders) {
+        GLint64 maxBlock = 0;
+        glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+        caps.maxStorageBlockBytes = maxBlock;
+    }
+    if (gl::kBufferTextures) glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &caps.maxTextureBufferTexels);
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &caps.maxTextureSize);
     return caps;
 }
 

@@ -23,6 +23,10 @@ struct GlCaps {
     // mask: the light loops are then built without such tests (GBL_MASKED_BRANCHES,
     // shaders/light_accumulation.glsl). GBL_SHADER_BRANCHES=masked or =skipping overrides it.
     bool masksBranches = false;
+    // Limits, read once here so no pass queries GL at draw time.
+    long long maxStorageBlockBytes = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE (0 without compute shaders)
+    int maxTextureBufferTexels = 0;      // GL_MAX_TEXTURE_BUFFER_SIZE (desktop)
+    int maxTextureSize = 0;              // GL_MAX_TEXTURE_SIZE
 
     bool atLeast(int maj, int min) const { return major > maj || (major == maj && minor >= min); }
 

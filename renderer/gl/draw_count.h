@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 
 namespace gbl::gl {
 
@@ -18,8 +19,15 @@ inline DrawCount& drawCount() {
     static thread_local DrawCount count;
     return count;
 }
+// TEST ONLY: called after every counted draw and dispatch, with the GL state the call ran under
+// still set (tests/draw_state_gl_test.cpp reads it back there). Empty outside that test.
+inline std::function<void()>& drawObserver() {
+    static thread_local std::function<void()> observer;
+    return observer;
+}
 inline void countDraw() {
     ++drawCount().draws;
+    if (auto const& o = drawObserver()) o();
 }
 inline void countDispatch() {
     ++drawCount().dispatches;

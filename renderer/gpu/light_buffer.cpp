@@ -49,16 +49,11 @@ std::vector<glm::vec4> packLights(std::span<PointLight const> lights) {
     return texels;
 }
 
-std::optional<std::string> LightBuffer::upload(std::span<PointLight const> lights) {
-    GLint maxTexels = 0;
-    if (gl::kBufferTextures) {
-        glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-    } else {
-        GLint maxSize = 0;
-        glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+std::optional<std::string> LightBuffer::upload(std::span<PointLight const> lights, GlCaps const& caps) {
+    GLint maxTexels = caps.maxTextureBufferTexels;
+    if (!gl::kBufferTextures)
         maxTexels = GLint(std::min<long long>(std::numeric_limits<GLint>::max(),
-                                              (long long)kLightTexelsPerRow * std::max(maxSize, 1)));
-    }
+                                              (long long)kLightTexelsPerRow * std::max(caps.maxTextureSize, 1)));
     int const fits = lightsInTexels(maxTexels);
     std::optional<std::string> why;
     if (int(lights.size()) > fits) {

@@ -11,6 +11,7 @@
 
 #include "core/point_light.h"
 #include "gl/buffer.h"
+#include "gl/caps.h"
 #include "gl/gl_api.h"
 #include "gl/texture.h"
 
@@ -47,7 +48,8 @@ struct LightBuffer {
     // texels, kTexelsPerLight per light; 65,536 texels = 16,384 lights is all GL guarantees,
     // drivers give millions). Beyond that, the first lights that fit are kept and the reason is
     // returned, so the frame says why lights are missing rather than reading past the buffer.
-    std::optional<std::string> upload(std::span<PointLight const> lights);
+    // The limits come from GlCaps, read once at start-up.
+    std::optional<std::string> upload(std::span<PointLight const> lights, GlCaps const& caps);
 };
 
 // How many lights fit in a buffer texture of `maxTexels` texels.

@@ -5,23 +5,23 @@ namespace gbl {
 
 CoverageOutput coveragePass(CoverageInput const& in, CoverageConfig const& c) {
     glBindFramebuffer(GL_FRAMEBUFFER, in.target.id());
-    glViewport(0, 0, c.tiled.width, c.tiled.height);
-    glClearColor(0, 0, 0, 0);
-    glClear(GL_COLOR_BUFFER_BIT);
+    glViewport(0, 0, c.tiled.width, c.tiled.height);  // cleared by the executor (PassDecl::clears)
     bool const tiles = c.view == DebugView::TileLights || c.mode == LightingMode::Tiled;
     if (tiles) {
         if (in.tiled && in.tiledBin && in.bins) {
             LightingTiledConfig t = c.tiled;
             t.shade = false;
             t.coverage = true;
-            lightingTiledPass({in.deferred, *in.tiled, *in.tiledBin, *in.bins, in.hdr, in.hdr, in.coverage}, t);
+            lightingTiledPass({in.deferred, *in.tiled, *in.tiledBin, *in.bins, in.hdr, in.hdr, in.coverage, in.caps},
+                              t);
         }
     } else if (c.mode == LightingMode::Volumes) {
         if (in.volumes && in.volumeCoverage && in.volumeStencil) {
-            drawLightVolumes({in.deferred, *in.volumes, *in.volumeCoverage, *in.volumeStencil}, c.viewProj, c.cull);
+            drawLightVolumes({in.deferred, *in.volumes, *in.volumeCoverage, *in.volumeStencil}, c.viewProj, c.cull,
+                             c.states);
         }
     } else if (c.mode == LightingMode::Quad) {
-        glDisable(GL_DEPTH_TEST);
+        applyGroup(c.states, 0);
         in.allLights.use();
         bindDeferredInputs(in.allLights, in.deferred);
         in.triangle.draw();

@@ -5,8 +5,11 @@
 
 #include "core/frame_passes.h"
 #include "gl/fullscreen_triangle.h"
+#include "gpu/draw_state_gl.h"
 #include "passes/light_volumes.h"
 #include "passes/lighting_tiled.h"
+
+#include <span>
 
 namespace gbl {
 
@@ -24,6 +27,7 @@ struct CoverageInput {
     gl::Framebuffer const& target;      // coverageFbo: the counts and volumeDepthStencil()
     gl::Texture const& coverage;        // its colour attachment (the tiled pass writes it as an image)
     gl::Texture const& hdr;             // bound (not written) as the tiled program's lit and specular images
+    GlCaps const& caps;                 // the tiled lists' storage limit
 };
 struct CoverageConfig {
     LightingMode mode = LightingMode::Quad;
@@ -31,6 +35,7 @@ struct CoverageConfig {
     DebugView view = DebugView::Heatmap;
     LightingTiledConfig tiled;  // matrices and size; shade/coverage are set by the pass
     glm::mat4 viewProj{1.0f};
+    std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
 };
 struct CoverageOutput {
     gl::Texture const& coverage;

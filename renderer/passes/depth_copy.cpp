@@ -7,10 +7,7 @@
 namespace gbl {
 
 void depthCopyPass(DepthCopyInput const& in, DepthCopyConfig const& config) {
-    glBindFramebuffer(GL_FRAMEBUFFER, in.target.id());
-    glClearDepth(1.0);
-    glClearStencil(0);
-    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glBindFramebuffer(GL_FRAMEBUFFER, in.target.id());  // depth and stencil cleared by the executor
     switch (config.mode) {
         case DepthCopy::Blit:
             glBindFramebuffer(GL_READ_FRAMEBUFFER, in.gbuffer.fbo.id());
@@ -22,15 +19,10 @@ void depthCopyPass(DepthCopyInput const& in, DepthCopyConfig const& config) {
             break;
         case DepthCopy::Shader:
             // Writes depth from a full-screen pass: works whatever the two depth formats are.
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(GL_ALWAYS);
-            glDepthMask(GL_TRUE);
-            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            applyGroup(config.states, 0);  // depth always written, no colour
             in.program.use();
             bindTextureUnit(slot::BIND_DEPTH, GL_TEXTURE_2D, in.gbuffer.depth.id());
             in.triangle.draw();
-            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-            glDepthFunc(GL_LESS);
             break;
         case DepthCopy::Off:
             break;

@@ -6,7 +6,10 @@
 #include "core/pipeline_settings.h"
 #include "gl/fullscreen_triangle.h"
 #include "gl/program.h"
+#include "gpu/draw_state_gl.h"
 #include "gpu/render_targets.h"
+
+#include <span>
 
 namespace gbl {
 
@@ -20,6 +23,7 @@ struct DepthCopyConfig {
     DepthCopy mode = DepthCopy::Blit;
     int width = 0;
     int height = 0;
+    std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
 };
 
 void depthCopyPass(DepthCopyInput const& in, DepthCopyConfig const& config);

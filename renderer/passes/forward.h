@@ -3,8 +3,11 @@
 // lighting, depth-tested against the scene and not writing depth.
 #pragma once
 
+#include "gpu/draw_state_gl.h"
 #include "gpu/gpu_scene.h"
 #include "passes/shading_inputs.h"
+
+#include <span>
 
 namespace gbl {
 
@@ -19,6 +22,7 @@ struct ForwardConfig {
     glm::mat4 viewProj{1.0f};
     ShadingUniforms shading;
     bool normalMaps = true;
+    std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
 };
 
 LightingOutput forwardPass(ForwardInput const& in, ForwardConfig const& config);

@@ -18,15 +18,12 @@ DecodedGBuffer createDecodedGBuffer(int width, int height) {
 void gbufferDecodePass(GBufferDecodeInput const& in, GBufferDecodeConfig const& c) {
     glBindFramebuffer(GL_FRAMEBUFFER, in.target.fbo.id());
     glViewport(0, 0, in.target.width, in.target.height);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
+    applyGroup(c.states, 0);
     in.program.use();
     bindGBuffer(in.gbuffer);
     in.program.set("uInverseViewProj", c.inverseViewProj);
     in.program.set("uPixelOffset", c.pixelOffset);
     in.triangle.draw();
-    glEnable(GL_CULL_FACE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

@@ -6,9 +6,12 @@
 #include "gl/fullscreen_triangle.h"
 #include "gl/program.h"
 #include "gl/texture.h"
+#include "gpu/draw_state_gl.h"
 #include "gpu/render_targets.h"
 
 #include <glm/glm.hpp>
+
+#include <span>
 
 namespace gbl {
 
@@ -29,8 +32,9 @@ struct GBufferDecodeInput {
     DecodedGBuffer const& target;
 };
 struct GBufferDecodeConfig {
-    glm::mat4 inverseViewProj{1.0f};  // of the frame the G-buffer holds
-    glm::ivec2 pixelOffset{0};        // G-buffer pixel written to the target's (0, 0)
+    glm::mat4 inverseViewProj{1.0f};    // of the frame the G-buffer holds
+    glm::ivec2 pixelOffset{0};          // G-buffer pixel written to the target's (0, 0)
+    std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
 };
 
 void gbufferDecodePass(GBufferDecodeInput const& in, GBufferDecodeConfig const& config);

@@ -2,10 +2,13 @@
 #pragma once
 
 #include "gl/program.h"
+#include "gpu/draw_state_gl.h"
 #include "gpu/gpu_scene.h"
 #include "gpu/render_targets.h"
 
 #include <glm/glm.hpp>
+
+#include <span>
 
 namespace gbl {
 
@@ -17,6 +20,7 @@ struct GeometryInput {
 struct GeometryConfig {
     glm::mat4 viewProj{1.0f};
     bool normalMaps = true;
+    std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
 };
 struct GeometryOutput {
     GBuffer const& gbuffer;  // position, normal, albedo/specular and depth of the opaque scene

@@ -44,23 +44,13 @@ std::optional<std::string> uploadImportedFrame(ImportedFrame const& frame, Impor
 ImportOutput importPass(ImportInput const& in, ImportConfig const& config) {
     glBindFramebuffer(GL_FRAMEBUFFER, in.target.fbo.id());
     glViewport(0, 0, config.width, config.height);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_ALWAYS);
-    glDepthMask(GL_TRUE);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glClearColor(0, 0, 0, 0);
-    glClearDepth(1.0);
-    glClearStencil(0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    applyGroup(config.states, 0);  // cleared by the executor (PassDecl::clears)
     in.program.use();
     bindTextureUnit(slot::BIND_IMPORT_POSITION_DEPTH, GL_TEXTURE_2D, in.imported.positionDepth.id());
     bindTextureUnit(slot::BIND_IMPORT_NORMAL, GL_TEXTURE_2D, in.imported.normal.id());
     bindTextureUnit(slot::BIND_IMPORT_ALBEDO_SPEC, GL_TEXTURE_2D, in.imported.albedoSpec.id());
     bindTextureUnit(slot::BIND_IMPORT_EMISSIVE_AO, GL_TEXTURE_2D, in.imported.emissiveAo.id());
     in.triangle.draw();
-    glDepthFunc(GL_LESS);
     return {in.target};
 }
 

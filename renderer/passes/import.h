@@ -6,10 +6,13 @@
 #include "gl/fullscreen_triangle.h"
 #include "gl/program.h"
 #include "gl/texture.h"
+#include "gpu/draw_state_gl.h"
 #include "gpu/render_targets.h"
 
 #include <optional>
 #include <string>
+
+#include <span>
 
 namespace gbl {
 
@@ -34,6 +37,7 @@ struct ImportInput {
 struct ImportConfig {
     int width = 0;
     int height = 0;
+    std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
 };
 struct ImportOutput {
     GBuffer const& gbuffer;  // position (or depth), normal, albedo/specular, emissive/AO of the imported frame

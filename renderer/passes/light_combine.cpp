@@ -7,15 +7,13 @@ namespace gbl {
 
 LightingOutput lightCombinePass(LightCombineInput const& in) {
     glBindFramebuffer(GL_FRAMEBUFFER, in.target.fbo.id());
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
+    applyGroup(in.states, 0);
     in.program.use();
     bindGBuffer(in.gbuffer);
     setShadingUniforms(in.program, in.shading);
     bindTextureUnit(slot::BIND_DIFFUSE_LIGHT, GL_TEXTURE_2D, in.diffuseLight.id());
     bindTextureUnit(slot::BIND_SPECULAR_LIGHT, GL_TEXTURE_2D, in.specularLight.id());
     in.triangle.draw();
-    glEnable(GL_DEPTH_TEST);
     return {in.target.hdr};
 }
 

@@ -3,7 +3,10 @@
 #pragma once
 
 #include "gl/fullscreen_triangle.h"
+#include "gpu/draw_state_gl.h"
 #include "passes/shading_inputs.h"
+
+#include <span>
 
 namespace gbl {
 
@@ -14,7 +17,8 @@ struct LightCombineInput {
     gl::Texture const& specularLight;  // RGBA16F: sum of specular * (N.H)^shininess * attenuation * colour
     gl::Program const& program;        // ProgramId::LightCombine
     gl::FullscreenTriangle const& triangle;
-    LitTarget target;  // every pixel of the HDR image is written (0 on the background)
+    LitTarget target;                   // every pixel of the HDR image is written (0 on the background)
+    std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
 };
 
 LightingOutput lightCombinePass(LightCombineInput const& in);

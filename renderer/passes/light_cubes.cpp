@@ -9,12 +9,7 @@ namespace gbl {
 void lightCubesPass(LightCubesInput const& in, LightCubesConfig const& config) {
     if (in.lights.count == 0) return;
     glBindFramebuffer(GL_FRAMEBUFFER, in.target.id());
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
+    applyGroup(config.states, 0);
     in.program.use();
     in.program.set("uViewProj", config.viewProj);
     in.program.set("uCubeSize", config.halfSize);

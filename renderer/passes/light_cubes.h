@@ -3,7 +3,10 @@
 #pragma once
 
 #include "gl/vertex_array.h"
+#include "gpu/draw_state_gl.h"
 #include "passes/shading_inputs.h"
+
+#include <span>
 
 namespace gbl {
 
@@ -18,7 +21,8 @@ struct LightCubesInput {
 struct LightCubesConfig {
     glm::mat4 viewProj{1.0f};
     float halfSize = 0.05f;
-    DisplayTonemap tonemap{};  // the display pass's, so a cube looks as it would in the lit image
+    DisplayTonemap tonemap{};           // the display pass's, so a cube looks as it would in the lit image
+    std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
 };
 
 void lightCubesPass(LightCubesInput const& in, LightCubesConfig const& config);

@@ -79,7 +79,8 @@ void prepareVolumeInstances(LightVolumeGpu& volumes, VolumeInstancesConfig const
 //   stencil: per light, a stencil pass marks the pixels whose surface lies inside the volume
 //            (back face behind the surface +1, front face behind the surface -1), then the
 //            volume shades only pixels marked 1 and resets every mark.
-void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, CullMode cull) {
+void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, CullMode cull,
+                      std::span<DrawState const> groups) {
     LightVolumeGpu const& volumes = in.volumes;
     if (volumes.totalCount() == 0) return;
     gl::Program const& p = in.program;
@@ -111,32 +112,14 @@ void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, Cull
         glDrawElementsInstanced(GL_TRIANGLES, mesh->indexCount, GL_UNSIGNED_INT, nullptr, count);
         gl::countDraw();
     };
-    auto frontFaces = [] {  // cull back faces: the front faces in front of the surface
-        glEnable(GL_CULL_FACE);
-        glCullFace(GL_BACK);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
-    };
-    auto backFaces = [] {  // cull front faces: the back faces behind the surface
-        glEnable(GL_CULL_FACE);
-        glCullFace(GL_FRONT);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_GEQUAL);
-        // No GL_DEPTH_CLAMP to keep back faces past the far plane: it also lifts near-plane
-        // clipping, and llvmpipe then rasterises the parts of a volume behind the eye wrongly.
-        // The cost: a light whose volume crosses the far plane misses surfaces right at it.
-    };
-
-    // Every shading draw adds to the target (the state frame_passes.cpp declares for this pass); the
-    // stencil marks turn blending off and back on around themselves. Left off on return.
-    auto additive = [] {
-        glEnable(GL_BLEND);
-        glBlendEquation(GL_FUNC_ADD);
-        glBlendFunc(GL_ONE, GL_ONE);
-    };
-    additive();
-    glDepthMask(GL_FALSE);
+    // The draw groups of each cull mode, in the order core/frame_passes.cpp (volumeStates) declares
+    // them: back, front and none one group; flip the front faces of the lights outside, then the
+    // back faces of those whose volume may hold the camera; stencil a mark and a shade per light.
+    // Back faces are kept past the far plane by no GL_DEPTH_CLAMP: it also lifts near-plane clipping,
+    // and llvmpipe then rasterises the parts of a volume behind the eye wrongly. The cost: a light
+    // whose volume crosses the far plane misses surfaces right at it.
     setCommon(p);
+    if (cull == CullMode::Stencil) setCommon(in.stencilMark);
     for (Mesh const& m : meshes) {
         mesh = &m;
         int const total = m.outsideCount + m.insideCount;
@@ -145,66 +128,35 @@ void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, Cull
         p.use();
         switch (cull) {
             case CullMode::Back:
-                frontFaces();
-                draw(p, 0, total);
-                break;
             case CullMode::Front:
-                backFaces();
-                draw(p, 0, total);
-                break;
             case CullMode::None:
-                glDisable(GL_CULL_FACE);
-                glDisable(GL_DEPTH_TEST);
+                applyGroup(groups, 0);
                 draw(p, 0, total);
                 break;
             case CullMode::Flip:
-                frontFaces();
+                applyGroup(groups, 0);
                 draw(p, 0, m.outsideCount);
-                backFaces();
+                applyGroup(groups, 1);
                 draw(p, m.outsideCount, m.insideCount);
                 break;
-            case CullMode::Stencil: {
-                gl::Program const& mark = in.stencilMark;
-                setCommon(mark);
-                glEnable(GL_STENCIL_TEST);
+            case CullMode::Stencil:
                 for (int i = 0; i < total; ++i) {
                     // Mark: both faces, depth-tested, no colour; only depth failures count.
-                    mark.use();
-                    glDisable(GL_BLEND);
-                    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-                    glDisable(GL_CULL_FACE);
-                    glEnable(GL_DEPTH_TEST);
-                    glDepthFunc(GL_LESS);
-                    glStencilFunc(GL_ALWAYS, 0, 0xFF);
-                    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
-                    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
-                    draw(mark, i, 1);
+                    in.stencilMark.use();
+                    applyGroup(groups, 0);
+                    draw(in.stencilMark, i, 1);
                     // Shade: both faces, no depth test, so every pixel of the footprint is visited; only
                     // a mark of exactly 1 (behind the front face, in front of the back face) passes,
                     // and every visit resets the mark to 0 for the next light, pass or fail (which is
                     // why light_volume.frag never discards).
                     p.use();
-                    additive();
-                    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-                    glDisable(GL_DEPTH_TEST);
-                    glStencilFunc(GL_EQUAL, 1, 0xFF);
-                    glStencilOp(GL_ZERO, GL_ZERO, GL_ZERO);
+                    applyGroup(groups, 1);
                     draw(p, i, 1);
                 }
-                glDisable(GL_STENCIL_TEST);
-                glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-                glStencilFunc(GL_ALWAYS, 0, 0xFF);
                 break;
-            }
         }
     }
     glBindVertexArray(0);
-    glDisable(GL_BLEND);
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
 }
 
 // --- lighting: volumes ---------------------------------------------------------------------------
@@ -212,14 +164,14 @@ LightingOutput lightingVolumesPass(LightingVolumesInput const& in, LightingVolum
     glBindFramebuffer(GL_FRAMEBUFFER, in.target.fbo.id());
     // Ambient (and zero on the background) with the full-screen program and no lights, so the
     // ambient term is the very same expression as in the quad pass.
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
+    applyGroup(config.states, 0);
     in.ambient.use();
     bindDeferredInputs(in.ambient, in.deferred);
     in.ambient.set("uLightCount", 0);
     in.triangle.draw();
 
-    drawLightVolumes({in.deferred, in.volumes, in.shade, in.stencilMark}, config.viewProj, config.cull);
+    drawLightVolumes({in.deferred, in.volumes, in.shade, in.stencilMark}, config.viewProj, config.cull,
+                     config.states.subspan(1));
     return {in.target.hdr};
 }
 

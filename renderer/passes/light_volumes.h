@@ -7,6 +7,7 @@
 #include "core/pipeline_settings.h"
 #include "core/point_light.h"
 #include "gl/fullscreen_triangle.h"
+#include "gpu/draw_state_gl.h"
 #include "gpu/light_volume_gpu.h"
 #include "passes/shading_inputs.h"
 
@@ -35,16 +36,17 @@ struct VolumeInstancesConfig {
 };
 void prepareVolumeInstances(LightVolumeGpu& volumes, VolumeInstancesConfig const& config);
 
-// Draws the volumes with `program` added (blend ONE, ONE) into the bound framebuffer, with the face
-// culling, depth and stencil state of `cull`; `stencilMark` is the marking program of the stencil
-// mode. Sets every state it uses; leaves blending off, depth test on (LESS) and back faces culled.
+// Draws the volumes with `program` added (blend ONE, ONE) into the bound framebuffer, each group of
+// draws with its state from `groups` (the volume states core/frame_passes.cpp declares for `cull`);
+// `stencilMark` is the marking program of the stencil mode.
 struct LightVolumeDraw {
     DeferredInputs deferred;
     LightVolumeGpu const& volumes;
     gl::Program const& program;
     gl::Program const& stencilMark;  // ProgramId::LightVolumeStencil
 };
-void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, CullMode cull);
+void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, CullMode cull,
+                      std::span<DrawState const> groups);
 
 struct LightingVolumesInput {
     DeferredInputs deferred;
@@ -58,6 +60,7 @@ struct LightingVolumesInput {
 struct LightingVolumesConfig {
     glm::mat4 viewProj{1.0f};
     CullMode cull = CullMode::Front;
+    std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
 };
 
 // Ambient full-screen, then the volumes added by blending. Cost: one full-screen pass plus the

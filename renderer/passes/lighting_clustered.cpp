@@ -28,12 +28,9 @@ void clusterListsPass(LightingClusteredInput const& in, LightingClusteredConfig 
     ClusterGrid const g = clusterGrid(c.width, c.height);
     ClusterLists& l = in.lists;
     if (l.clusters != g.count() || !l.counts) {
-        GLint64 maxBlock = 0;
-        glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
         // The shading pass reads the lists through a buffer texture, so they must fit its limit too.
-        GLint maxTexels = 0;
-        glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-        l.cap = clusterListCap(g.count(), std::min<long long>(maxBlock, 4LL * maxTexels));
+        l.cap = clusterListCap(g.count(),
+                               std::min<long long>(in.caps.maxStorageBlockBytes, 4LL * in.caps.maxTextureBufferTexels));
         l.counts = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER, std::size_t(g.count()) * sizeof(GLuint), nullptr,
                                       GL_DYNAMIC_COPY, "cluster counts");
         l.lights = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER,
@@ -42,7 +39,7 @@ void clusterListsPass(LightingClusteredInput const& in, LightingClusteredConfig 
         l.list = gl::Texture::createBuffer(GL_R32UI, l.lights.id(), "cluster lights.tbo");
         l.clusters = g.count();
     }
-    tileBinPass({in.bin, in.deferred.lights, in.deferred.gbuffer.depth, in.bins},
+    tileBinPass({in.bin, in.deferred.lights, in.deferred.gbuffer.depth, in.bins, in.caps},
                 {c.view, c.projection, c.width, c.height, c.nearPlane, c.farPlane});
     gl::Program const& p = in.build;
     p.use();

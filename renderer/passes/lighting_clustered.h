@@ -28,6 +28,7 @@ struct LightingClusteredInput {
     gl::Texture const& hdr;       // RGBA16F image written when config.shade
     gl::Texture const& specular;  // RGBA16F: specular light, written when config.shade in split frames
     gl::Texture const& coverage;  // RG32F image written when config.coverage
+    GlCaps const& caps;           // storage-block and buffer-texture limits that cap the lists
 };
 struct LightingClusteredConfig {
     glm::mat4 view{1.0f};

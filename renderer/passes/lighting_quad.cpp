@@ -5,10 +5,7 @@ namespace gbl {
 
 LightingOutput lightingQuadPass(LightingQuadInput const& in) {
     glBindFramebuffer(GL_FRAMEBUFFER, in.target.fbo.id());
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-    glClearColor(0, 0, 0, 0);
-    glClear(GL_COLOR_BUFFER_BIT);
+    applyGroup(in.states, 0);  // cleared by the executor (PassDecl::clears)
     in.program.use();
     bindDeferredInputs(in.program, in.deferred);
     in.triangle.draw();

@@ -2,7 +2,10 @@
 #pragma once
 
 #include "gl/fullscreen_triangle.h"
+#include "gpu/draw_state_gl.h"
 #include "passes/shading_inputs.h"
+
+#include <span>
 
 namespace gbl {
 
@@ -10,7 +13,8 @@ struct LightingQuadInput {
     DeferredInputs deferred;
     gl::Program const& program;  // ProgramId::LightingQuad
     gl::FullscreenTriangle const& triangle;
-    LitTarget target;  // the HDR image is cleared, then written
+    LitTarget target;                   // the HDR image is cleared, then written
+    std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
 };
 
 LightingOutput lightingQuadPass(LightingQuadInput const& in);

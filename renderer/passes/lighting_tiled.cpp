@@ -9,7 +9,7 @@ namespace gbl {
 
 LightingOutput lightingTiledPass(LightingTiledInput const& in, LightingTiledConfig const& c) {
     if (!c.binned)
-        tileBinPass({in.bin, in.deferred.lights, in.deferred.gbuffer.depth, in.bins},
+        tileBinPass({in.bin, in.deferred.lights, in.deferred.gbuffer.depth, in.bins, in.caps},
                     {c.view, c.projection, c.width, c.height, c.nearPlane, c.farPlane});
     gl::Program const& p = in.program;
     p.use();

@@ -14,6 +14,7 @@ struct LightingTiledInput {
     gl::Texture const& hdr;       // RGBA16F image written when config.shade
     gl::Texture const& specular;  // RGBA16F: specular light, written when config.shade in split frames
     gl::Texture const& coverage;  // RG32F image written when config.coverage
+    GlCaps const& caps;           // the storage-block limit (tileBinPass)
 };
 struct LightingTiledConfig {
     glm::mat4 view{1.0f};

@@ -13,9 +13,7 @@ void tileBinPass(TileBinInput const& in, TileBinConfig const& c) {
     TileGrid const g = tileGrid(c.width, c.height);
     TileBins& b = in.bins;
     if (b.tiles != g.count() || !b.counts) {
-        GLint64 maxBlock = 0;
-        glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
-        b.cap = tileBinCap(g.count(), maxBlock);
+        b.cap = tileBinCap(g.count(), in.caps.maxStorageBlockBytes);
         b.counts = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER, std::size_t(g.count()) * sizeof(GLuint), nullptr,
                                       GL_DYNAMIC_COPY, "tile bin counts");
         b.lights = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER,

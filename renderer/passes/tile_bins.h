@@ -32,6 +32,7 @@ struct TileBinInput {
     LightBuffer const& lights;
     gl::Texture const& depth;  // the G-buffer's depth
     TileBins& bins;
+    GlCaps const& caps;  // the storage-block limit that caps each tile's list
 };
 struct TileBinConfig {
     glm::mat4 view{1.0f};

@@ -10,9 +10,7 @@ namespace gbl {
 void viewPass(ViewInput const& in, ViewConfig const& c) {
     glBindFramebuffer(GL_FRAMEBUFFER, in.target.id());
     glViewport(0, 0, c.width, c.height);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
+    applyGroup(c.states, 0);
     gl::Program const& p = in.program;
     p.use();
     bindGBuffer(in.gbuffer);
@@ -36,7 +34,6 @@ void viewPass(ViewInput const& in, ViewConfig const& c) {
     p.set("uColormap", int(v.colormap));  // viewer tools (shaders/view_tools.glsl)
     p.set("uOverlays", int(v.overlays));
     in.triangle.draw();
-    glEnable(GL_CULL_FACE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

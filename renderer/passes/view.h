@@ -7,7 +7,10 @@
 #include "gl/framebuffer.h"
 #include "gl/fullscreen_triangle.h"
 #include "gl/program.h"
+#include "gpu/draw_state_gl.h"
 #include "gpu/render_targets.h"
+
+#include <span>
 
 namespace gbl {
 
@@ -29,7 +32,8 @@ struct ViewConfig {
     float farPlane = 100.0f;
     int width = 0;
     int height = 0;
-    glm::mat4 inverseViewProj{1.0f};  // decodes position in layouts that rebuild it from depth
+    glm::mat4 inverseViewProj{1.0f};    // decodes position in layouts that rebuild it from depth
+    std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
 };
 
 void viewPass(ViewInput const& in, ViewConfig const& config);

@@ -42,11 +42,7 @@ void wireframesPass(WireframesInput const& in, WireframesConfig const& config) {
     int const arrows = config.count < 0 ? int(in.lights.directional.size()) : 0;
     if (total <= 0 && arrows == 0) return;
     glBindFramebuffer(GL_FRAMEBUFFER, in.target.id());
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
+    applyGroup(config.states, 0);
     gl::Program const& p = in.program;
     p.use();
     bindLights(p, in.lights);
@@ -80,9 +76,6 @@ void wireframesPass(WireframesInput const& in, WireframesConfig const& config) {
         p.set("uArrow", 0);
     }
     glBindVertexArray(0);
-    glEnable(GL_CULL_FACE);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
 }
 
 }  // namespace gbl

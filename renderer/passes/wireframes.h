@@ -5,6 +5,7 @@
 
 #include "core/camera.h"
 #include "core/point_light.h"
+#include "gpu/draw_state_gl.h"
 #include "gpu/light_volume_gpu.h"
 #include "passes/shading_inputs.h"
 
@@ -30,6 +31,7 @@ struct WireframesConfig {
     // With every instance drawn (count -1), each directional light also gets an arrow this long
     // from its position along its direction.
     float arrowLength = 1.5f;
+    std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
 };
 
 // Where light `light` sits in the instance list prepareVolumeInstances builds from the same

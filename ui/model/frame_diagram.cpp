@@ -159,6 +159,7 @@ std::optional<DebugView> resourceView(Resource r) {
         case Resource::Materials:
         case Resource::ClusterLists:
         case Resource::Imported:
+        case Resource::View:  // a view's own image (drawView), no frame's
             break;
     }
     return std::nullopt;
