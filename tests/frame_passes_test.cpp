@@ -289,7 +289,8 @@ TEST(FramePasses, ClearsAreDeclaredWithThePassTheyPrecede) {
     EXPECT_EQ(find(split, PassId::Geometry).clears.size(), 5u) << "the split frame keeps its light targets";
 
     s.mode = LightingMode::Forward;  // no G-buffer: cleared, so its views show it unused
-    PassDecl const& forward = find(framePasses(s), PassId::ForwardShading);
+    std::vector<PassDecl> const forwardFrame = framePasses(s);
+    PassDecl const& forward = find(forwardFrame, PassId::ForwardShading);
     for (Resource r : {Resource::GBufferNormal, Resource::GBufferDepth, Resource::Lighting, Resource::LitDepth,
                        Resource::DiffuseLight})
         EXPECT_NE(std::find(forward.clears.begin(), forward.clears.end(), r), forward.clears.end()) << resourceName(r);
