@@ -12,6 +12,7 @@
 #include "renderer_test_access.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <sstream>
 
@@ -226,6 +227,7 @@ TEST_F(DrawStateGlTest, AChangedDeclarationIsCaught) {
     });
     std::vector<std::string> const failures = checkFrame({camera_, lights_, s}, "edited");
     ASSERT_FALSE(failures.empty());
+    std::printf("caught %zu draws, the first: %s\n", failures.size(), failures.front().c_str());
     EXPECT_NE(failures.front().find("pass light_cubes drew under a state it does not declare (cubes: depth func"),
               std::string::npos)
         << failures.front();
