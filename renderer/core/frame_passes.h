@@ -1,7 +1,7 @@
-// The frame as data: each pass's name, what it samples, what it renders into and its
-// fixed-function state, and the ordered passes a frame runs for its settings. Plain values, no
-// GL: the renderer checks its frame against them in debug builds, the pass timer takes its names
-// from them, and a CPU test checks every combination of settings for feedback loops.
+// The frame as data: each pass's name, what it samples, what it renders into, what it clears and
+// its fixed-function state, and the ordered passes a frame runs for its settings. Plain values, no
+// GL: the renderer's executor runs exactly these (renderer_passes.cpp), the pass timer takes its
+// names from them, and a CPU test checks every combination of settings for feedback loops.
 #pragma once
 
 #include "core/pipeline_settings.h"
@@ -177,7 +177,7 @@ constexpr bool viewShowsOverlays(DebugView v) {
     return v == DebugView::Final || v == DebugView::Lighting;
 }
 
-// The passes RendererImpl::render runs, in order, for a frame with `settings` as it ran (the mode
+// The passes RendererImpl::render runs (it runs this list), in order, for a frame with `settings` as it ran (the mode
 // after any fallback; split accumulation is ignored in forward mode, as the renderer does).
 // `wireframes`: whether the volume outlines are asked for (the setting, or an accumulation outline);
 // they, and the light cubes, run after the display pass, and only when viewShowsOverlays(view).
