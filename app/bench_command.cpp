@@ -371,6 +371,7 @@ void addBenchOptions(CLI::App& sub, BenchOptions& o) {
     cli::addShared(sub, cli::kSize, o.size)->capture_default_str();
     cli::addShared(sub, cli::kLights, o.lights)->delimiter(',')->capture_default_str();
     // Each value of a list is checked against its field's names (core/pipeline_fields.h).
+    if (o.culls.empty()) o.culls = {std::string(enumName(kCullModeNames, PipelineSettings{}.cull))};
     sub.add_option("--modes", o.modes, "Lighting modes, comma-separated")
         ->delimiter(',')
         ->check(fieldValidator(*findPipelineField("mode")))
