@@ -7,6 +7,7 @@
 #include "core/light_math.h"
 #include "core/pipeline_settings.h"
 #include "core/point_light.h"
+#include "pipeline_options.h"
 #include "renderer.h"
 #include "scene_setup.h"
 #include "session_cli.h"
@@ -369,12 +370,15 @@ json toJson(std::vector<Result> const& results, GlCaps const& caps, Size2 size, 
 void addBenchOptions(CLI::App& sub, BenchOptions& o) {
     cli::addShared(sub, cli::kSize, o.size)->capture_default_str();
     cli::addShared(sub, cli::kLights, o.lights)->delimiter(',')->capture_default_str();
-    sub.add_option("--modes", o.modes, "Lighting modes, comma-separated: quad, volumes, tiled, forward, clustered")
+    // Each value of a list is checked against its field's names (core/pipeline_fields.h).
+    if (o.culls.empty()) o.culls = {std::string(enumName(kCullModeNames, PipelineSettings{}.cull))};
+    sub.add_option("--modes", o.modes, "Lighting modes, comma-separated")
         ->delimiter(',')
+        ->check(fieldValidator(*findPipelineField("mode")))
         ->capture_default_str();
-    sub.add_option("--cull", o.culls,
-                   "Cull modes measured for volumes, comma-separated: back, front, none, flip, stencil")
+    sub.add_option("--cull", o.culls, "Cull modes measured for volumes, comma-separated")
         ->delimiter(',')
+        ->check(fieldValidator(*findPipelineField("cull")))
         ->capture_default_str();
     sub.add_option("--frames", o.frames, "Measured frames per combination")->capture_default_str();
     sub.add_option("--warmup", o.warmup, "Warm-up frames per combination, not measured")->capture_default_str();
@@ -385,8 +389,9 @@ void addBenchOptions(CLI::App& sub, BenchOptions& o) {
     cli::addShared(sub, cli::kSession, o.sessionPath);
     cli::addShared(sub, cli::kScene, o.scenePath);
     cli::addShared(sub, cli::kGl, o.glLimit);
-    sub.add_option("--layouts", o.layouts, "G-buffer layouts, comma-separated: classic, packed, naive8, rgb10a2")
-        ->delimiter(',');
+    sub.add_option("--layouts", o.layouts, "G-buffer layouts, comma-separated")
+        ->delimiter(',')
+        ->check(fieldValidator(*findPipelineField("layout")));
 }
 
 int runBench(BenchOptions const& o) {
@@ -398,19 +403,12 @@ int runBench(BenchOptions const& o) {
         if (n < 0 || n > kMaxLights)
             return benchBadArgument("--lights counts must be 0.." + std::to_string(kMaxLights) + ", got " +
                                     std::to_string(n));
-    std::vector<LightingMode> modes;
-    for (auto const& name : o.modes) {
-        auto m = enumFromName<LightingMode>(kLightingModeNames, name);
-        if (!m)
-            return benchBadArgument("--modes must list quad, volumes, tiled, forward or clustered, got '" + name + "'");
-        modes.push_back(*m);
-    }
-    std::vector<CullMode> culls;
-    for (auto const& name : o.culls) {
-        auto c = enumFromName<CullMode>(kCullModeNames, name);
-        if (!c) return benchBadArgument("--cull must list back, front, none, flip or stencil, got '" + name + "'");
-        culls.push_back(*c);
-    }
+    auto const modeList = choiceList<LightingMode>(*findPipelineField("mode"), o.modes, "--modes", &error);
+    if (!modeList) return benchBadArgument(error);
+    auto const cullList = choiceList<CullMode>(*findPipelineField("cull"), o.culls, "--cull", &error);
+    if (!cullList) return benchBadArgument(error);
+    std::vector<LightingMode> const& modes = *modeList;
+    std::vector<CullMode> const& culls = *cullList;
     if (modes.empty() || culls.empty()) return benchBadArgument("--modes and --cull need at least one value each");
     if (o.frames < 1) return benchBadArgument("--frames must be at least 1, got " + std::to_string(o.frames));
     if (o.warmup < 0) return benchBadArgument("--warmup must be 0 or more, got " + std::to_string(o.warmup));

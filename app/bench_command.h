@@ -24,7 +24,8 @@ struct BenchOptions {
     std::vector<int> lights{32, 256, 1024, 4096};
     std::vector<std::string> modes{"quad", "volumes", "tiled", "clustered", "forward"};
     // Cull modes measured for `volumes` (each one is its own combination); other modes ignore it.
-    std::vector<std::string> culls{"front"};
+    // addBenchOptions starts it at PipelineSettings{}'s cull.
+    std::vector<std::string> culls;
     int frames = 20;            // measured frames per combination
     int warmup = 3;             // frames rendered and thrown away first (shader and cache warm-up)
     double budgetSeconds = 60;  // wall-clock budget per combination's warm-up and measured frames

@@ -2,6 +2,7 @@
 #include "bench_layouts.h"
 
 #include "core/gbuffer_layout.h"
+#include "core/pipeline_fields.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -9,16 +10,23 @@
 
 namespace gbl {
 
+namespace {
+
+std::string layoutNames() {
+    return fieldValuesText(*findPipelineField("layout"));
+}
+
+}  // namespace
+
 int runBenchLayouts(BenchOptions const& o) {
     if (o.layouts.size() <= 1) {
         if (!o.layouts.empty() && !enumFromName<GBufferLayout>(kGBufferLayoutNames, o.layouts.front()))
-            return benchBadArgument("--layouts must list classic, packed, naive8 or rgb10a2, got '" +
-                                    o.layouts.front() + "'");
+            return benchBadArgument("--layouts: '" + o.layouts.front() + "' is not " + layoutNames());
         return runBench(o);
     }
     for (auto const& name : o.layouts)
         if (!enumFromName<GBufferLayout>(kGBufferLayoutNames, name))
-            return benchBadArgument("--layouts must list classic, packed, naive8 or rgb10a2, got '" + name + "'");
+            return benchBadArgument("--layouts: '" + name + "' is not " + layoutNames());
     for (auto const& name : o.layouts) {
         GBufferLayoutDesc const& d = layoutDesc(*enumFromName<GBufferLayout>(kGBufferLayoutNames, name));
         std::printf("\n== G-buffer layout %s: %d bytes per pixel (", d.name.data(), layoutBytesPerPixel(d));

@@ -75,8 +75,10 @@ int runRenderLesson(RenderOptions const& o) {
         std::fprintf(stderr, "gbuffer-lab render: %s\n", m.c_str());
         return 2;
     };
-    for (char const* name : {cli::kScene.name, cli::kLights.name, "--time", "--mode", "--cull", "--blit"})
+    for (char const* name : {cli::kScene.name, cli::kLights.name, "--time"})
         if (o.given.count(name)) return bad(std::string(name) + " cannot be combined with --lesson (the step sets it)");
+    if (auto const name = firstPipelineOptionGiven(o.given))
+        return bad(*name + " cannot be combined with --lesson (the step sets it)");
     if (o.sessionPath) return bad(std::string(cli::kSession.name) + " cannot be combined with --lesson");
     // A broken lesson file is an error even when another lesson is asked for: the folder is one unit.
     ui::LessonLibrary const lib = loadLibrary(o.lessonsDir);

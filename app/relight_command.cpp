@@ -51,7 +51,8 @@ int runRenderImported(RenderOptions const& o) {
     ImportedFrame const& frame = *relight.frame;
     std::vector<PointLight> const lights = loaded.gbuffer->manifest.lights;
     // The manifest's shading, unless --shading names one.
-    ShadingModel const shading = o.given.count("--shading") ? settings.shading : loaded.gbuffer->manifest.shading;
+    bool const shadingGiven = o.given.count(std::string(findPipelineField("shading")->option)) > 0;
+    ShadingModel const shading = shadingGiven ? settings.shading : loaded.gbuffer->manifest.shading;
     applyManifestShading(loaded.gbuffer->manifest.shininess, shading, settings);
     settings.lightCubes = false;  // sized to a scene (importedSettings)
     if (auto err = prepareOutDir(o.outDir)) return refuse(*err);

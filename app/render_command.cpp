@@ -38,35 +38,7 @@ std::optional<std::string> prepareOutDir(std::string const& dir) {
 }
 
 std::optional<PipelineSettings> renderSettings(RenderOptions const& o, std::string* error) {
-    PipelineSettings settings;
-    auto const mode = enumFromName<LightingMode>(kLightingModeNames, o.mode);
-    auto const cull = enumFromName<CullMode>(kCullModeNames, o.cull);
-    auto const blit = enumFromName<DepthCopy>(kDepthCopyNames, o.blit);
-    auto const layout = enumFromName<GBufferLayout>(kGBufferLayoutNames, o.layout);
-    auto const accumulation = enumFromName<LightAccumulation>(kLightAccumulationNames, o.accumulation);
-    auto const shading = enumFromName<ShadingModel>(kShadingModelNames, o.shading);
-    if (!mode)
-        *error = "--mode must be quad, volumes, tiled, forward or clustered, got '" + o.mode + "'";
-    else if (!cull)
-        *error = "--cull must be back, front, none, flip or stencil, got '" + o.cull + "'";
-    else if (!blit)
-        *error = "--blit must be blit, shader or off, got '" + o.blit + "'";
-    else if (!layout)
-        *error = "--layout must be classic, packed, naive8 or rgb10a2, got '" + o.layout + "'";
-    else if (!accumulation)
-        *error = "--accumulation must be single or split, got '" + o.accumulation + "'";
-    else if (!shading)
-        *error = "--shading must be gbuffer-lab or learnopengl, got '" + o.shading + "'";
-    else {
-        settings.mode = *mode;
-        settings.cull = *cull;
-        settings.depthCopy = *blit;
-        settings.layout = *layout;
-        settings.accumulation = *accumulation;
-        settings.shading = *shading;
-        return settings;
-    }
-    return std::nullopt;
+    return pipelineFromText(o.pipeline, error);
 }
 
 void addRenderOptions(CLI::App& sub, RenderOptions& o) {
@@ -74,19 +46,7 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
     cli::addShared(sub, cli::kSize, o.size)->capture_default_str();
     cli::addShared(sub, cli::kLights, o.lights);
     sub.add_option("--time", o.time, "Seconds of light animation")->capture_default_str();
-    sub.add_option("--blit", o.blit, "Depth copy before the forward pass: blit, shader or off")->capture_default_str();
-    sub.add_option("--mode", o.mode, "Lighting mode: quad, volumes, tiled, forward or clustered")
-        ->capture_default_str();
-    sub.add_option("--layout", o.layout, "G-buffer layout: classic, packed, naive8 or rgb10a2")->capture_default_str();
-    sub.add_option("--accumulation", o.accumulation,
-                   "Lights into one lit target (single) or diffuse and specular targets plus a combine pass (split)")
-        ->capture_default_str();
-    sub.add_option("--shading", o.shading,
-                   "Lighting equation: gbuffer-lab (docs/lighting.md) or learnopengl (LearnOpenGL's deferred shader: "
-                   "no attenuation window; with --gbuffer it overrides the manifest's)")
-        ->capture_default_str();
-    sub.add_option("--cull", o.cull, "Light volume cull mode: back, front, none, flip or stencil")
-        ->capture_default_str();
+    addPipelineOptions(sub, o.pipeline);  // --mode, --cull, --depth-copy, ... (core/pipeline_fields.h)
     sub.add_option("--view", o.views,
                    "Extra debug view(s) to write as view_NAME.png (position, depth and depth_linear with the 1-99 % "
                    "range of the drawn pixels; the EXRs hold the values)");
@@ -112,9 +72,9 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
                    "Stop after pass PASS (e.g. geometry, lighting, depth_copy) and write the frame as it stands");
     sub.parse_complete_callback([&sub, &o] {
         for (char const* name :
-             {cli::kScene.name, cli::kLights.name, "--time", "--blit", "--mode", "--layout", "--accumulation",
-              "--shading", "--cull", cli::kSize.name, cli::kSession.name, "--camera"})
+             {cli::kScene.name, cli::kLights.name, "--time", cli::kSize.name, cli::kSession.name, "--camera"})
             if (sub.count(name) > 0) o.given.insert(name);
+        notePipelineOptionsGiven(sub, o.given);
     });
 }
 
@@ -182,12 +142,7 @@ int runRender(RenderOptions const& o) {
         if (o.given.count("--time")) session->animation.time = o.time;
         PipelineSettings const fromOptions = settings;
         settings = session->pipeline;
-        if (o.given.count("--mode")) settings.mode = fromOptions.mode;
-        if (o.given.count("--cull")) settings.cull = fromOptions.cull;
-        if (o.given.count("--layout")) settings.layout = fromOptions.layout;
-        if (o.given.count("--accumulation")) settings.accumulation = fromOptions.accumulation;
-        if (o.given.count("--shading")) settings.shading = fromOptions.shading;
-        if (o.given.count("--blit")) settings.depthCopy = fromOptions.depthCopy;
+        applyGivenOptions(settings, fromOptions, o.given);
         session->pipeline = settings;
         prepared = prepareSessionScene(*session, *o.sessionPath, o.allowOutsideUris, &error);
         if (!prepared) return badArgument(error);
@@ -222,7 +177,7 @@ int runRender(RenderOptions const& o) {
     input.lightContribution = o.contribution;
     warnOfLongFrame(renderer, input, o.warnSeconds);
     if (o.until) {
-        // Checked against the passes this frame runs (its mode, blit, accumulation, overlays).
+        // Checked against the passes this frame runs (its mode, depth copy, accumulation, overlays).
         if (auto why = stopAfterError(*o.until, renderer.framePasses(input))) return badArgument("--until " + *why);
         input.stopAfter = passFromName(*o.until);
     }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/pipeline_settings.h"
+#include "pipeline_options.h"
 #include "scene_setup.h"
 
 #include <CLI/CLI.hpp>
@@ -18,12 +19,9 @@ struct RenderOptions {
     std::string size = "1280x720";
     std::optional<int> lights;
     float time = 0.0f;
-    std::string blit = "blit";
-    std::string mode = "quad";
-    std::string layout = "classic";       // G-buffer layout (core/gbuffer_layout.h)
-    std::string accumulation = "single";  // light targets: single or split (docs/lighting.md)
-    std::string shading = "gbuffer-lab";  // the lighting equation (docs/lighting.md, kShadingModelNames)
-    std::string cull = "front";
+    // Every pipeline field's value as its option gives it (--mode, --depth-copy, --exposure, ...), in
+    // pipelineFields() order (app/pipeline_options.h); PipelineSettings{}'s when not given.
+    std::vector<std::string> pipeline = defaultPipelineText();
     std::vector<std::string> views;  // extra debug views written as view_<name>.png
     std::optional<std::string> scene;
     std::optional<int> camera;  // view from the scene file's camera N (SceneData::cameras)
@@ -50,8 +48,8 @@ void addRenderOptions(CLI::App& sub, RenderOptions& options);
 // no GL context can be had.
 int runRender(RenderOptions const& options);
 
-// The frame settings of --mode, --cull, --blit, --layout, --accumulation and --shading; nullopt with the
-// one-sentence error in `error` when one is not a known name.
+// The frame settings of the pipeline options (--mode, --cull, --depth-copy, ...); nullopt with the
+// one-sentence error in `error` when one is not a value of its field.
 std::optional<PipelineSettings> renderSettings(RenderOptions const& options, std::string* error);
 // Creates `dir` and checks it can be written into; the error otherwise.
 std::optional<std::string> prepareOutDir(std::string const& dir);

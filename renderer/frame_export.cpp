@@ -186,7 +186,7 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
                       {"lights_shaded", frame.stats.lightsShaded},
                       {"mode", enumName(kLightingModeNames, s.mode)},
                       {"cull", enumName(kCullModeNames, s.cull)},
-                      {"blit", enumName(kDepthCopyNames, s.depthCopy)},
+                      {"depth_copy", enumName(kDepthCopyNames, s.depthCopy)},
                       {"layout", layout.name},
                       {"gbuffer_bytes_per_pixel", layoutBytesPerPixel(layout)},
                       {"accumulation", enumName(kLightAccumulationNames, frame.stats.accumulationUsed)},

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using gbl::test::runGbufferLab;
 
 TEST(BenchCommand, TinyRunReportsEveryCombination) {
@@ -27,6 +29,24 @@ TEST(BenchCommand, TinyRunReportsEveryCombination) {
         EXPECT_LE(res["lights_shaded"].get<int>(), res["lights"].get<int>());
     }
     EXPECT_NE(r.output.find("volumes"), std::string::npos) << "the table names the modes:\n" << r.output;
+}
+
+// The lists' names come from the pipeline field table: a name outside it is one sentence listing them.
+TEST(BenchCommand, AnUnknownNameInAListNamesTheValidOnes) {
+    struct Case {
+        std::vector<std::string> args;
+        std::string expect;
+    };
+    for (Case const& c : std::vector<Case>{
+             {{"bench", "--modes", "quad,raytraced"},
+              "--modes: 'raytraced' is not one of quad, volumes, tiled, forward or clustered"},
+             {{"bench", "--cull", "front,up"}, "--cull: 'up' is not one of back, front, none, flip or stencil"},
+             {{"bench", "--layouts", "classic,zip"},
+              "--layouts: 'zip' is not one of classic, packed, naive8 or rgb10a2"},
+         }) {
+        auto const r = gbl::test::expectRefused(c.args, c.expect);
+        EXPECT_LE(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    }
 }
 
 TEST(BenchCommand, BadArgumentsExitWithCodeTwo) {

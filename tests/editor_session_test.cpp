@@ -2,6 +2,7 @@
 #include "session/editor_session.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 using namespace gbl;
 using namespace gbl::ui;
@@ -86,6 +87,23 @@ TEST(EditorSession, CapturedSessionAppliesBackThroughJson) {
     // The orbit target sits ahead of the restored camera, so orbiting does not jump.
     glm::vec3 const toTarget = glm::normalize(fresh.rig.target - fresh.camera.position);
     EXPECT_NEAR(glm::dot(toTarget, fresh.camera.forward()), 1.0f, 1e-4f);
+}
+
+// A session written before the depth copy had its name says "blit"; it still loads into the editor,
+// and the editor writes it back under depth_copy.
+TEST(EditorSession, AnOldSessionsBlitKeyStillLoads) {
+    nlohmann::json j = nlohmann::json::parse(sessionToJson(captureSession(editedState(), 3)));
+    ASSERT_TRUE(j["pipeline"].contains("depth_copy"));
+    j["pipeline"].erase("depth_copy");
+    j["pipeline"]["blit"] = "shader";
+    SessionLoad const loaded = parseSession(j.dump(), "old.json");
+    ASSERT_TRUE(loaded.session) << loaded.error;
+    EditorState fresh;
+    applySessionValues(*loaded.session, fresh);
+    EXPECT_EQ(fresh.pipeline.depthCopy, DepthCopy::Shader);
+    nlohmann::json const again = nlohmann::json::parse(sessionToJson(captureSession(fresh, 3)));
+    EXPECT_EQ(again["pipeline"]["depth_copy"], "shader");
+    EXPECT_FALSE(again["pipeline"].contains("blit"));
 }
 
 TEST(EditorSession, CapturedSceneNamesDefaultOrTheFile) {

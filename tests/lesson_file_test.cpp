@@ -3,6 +3,7 @@
 // leaving a lesson, and undo's one entry per step.
 #include "session/lesson_file.h"
 #include "core/light_math.h"
+#include "model/lesson_claims.h"
 #include "model/lesson_state.h"
 #include "model/lesson_text.h"
 #include "model/undo.h"
@@ -22,6 +23,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <optional>
 #include <regex>
 
@@ -268,6 +270,63 @@ TEST(LessonFile, TheCubesThroughTheColumnShareIsTheClaimsRange) {
                               {"max_fraction", 0.1}};
     std::string const e = errorOf(j);
     EXPECT_EQ(e.rfind("demo.json: steps[0].claim.max_fraction must be greater than min_fraction", 0), 0u) << e;
+}
+
+// A claim's numbers are read through claimNumberFields(): a value past a field's range is refused
+// with the table's range, and an optional field left out is the table's default (LessonClaim{}'s).
+TEST(LessonFile, ClaimNumbersTakeTheirRangesAndDefaultsFromTheTable) {
+    // A claim of a kind that takes each number, valid as it stands (the step of minimal() has a pixel
+    // and four lights).
+    json const reference = {{"cull", "front"}};
+    std::map<std::string, json> const claims{
+        {"tolerance", {{"kind", "loses_light"}, {"light", 1}, {"reference", reference}}},
+        {"bound", {{"kind", "same_image"}, {"reference", reference}, {"bound", 0.5}}},
+        {"at_least", {{"kind", "position_error_below"}, {"bound", 1e6}}},
+        {"min_fraction", {{"kind", "fewer_lit_pixels"}, {"reference", reference}, {"min_fraction", 0.5}}},
+        {"max_fraction", {{"kind", "differs_from"}, {"reference", reference}, {"bound", 0.0}, {"min_fraction", 0.0}}},
+    };
+    ASSERT_EQ(claims.size(), claimNumberFields().size());
+    for (ClaimNumberField const& f : claimNumberFields()) {
+        std::string const name(f.name);
+        ASSERT_TRUE(claims.count(name)) << name << " has no claim in this test";
+        json j = minimal();
+        j["steps"][0]["claim"] = claims.at(name);
+        LessonLoad const ok = parseLesson(j.dump(), "demo.json");
+        ASSERT_TRUE(ok.lesson) << name << ": " << ok.error;
+        ASSERT_TRUE(ok.lesson->steps[0].claim);
+        LessonClaim const& claim = *ok.lesson->steps[0].claim;
+        if (!j["steps"][0]["claim"].contains(name)) {
+            EXPECT_EQ(claim.*f.member, f.defaultValue()) << name << " left out is not its default";
+        }
+        j["steps"][0]["claim"][name] = double(f.max) + 1.0;
+        std::string const e = errorOf(j);
+        std::string const want = "demo.json: steps[0].claim." + name + " must be a number from " + json(f.min).dump() +
+                                 " to " + json(f.max).dump();
+        EXPECT_EQ(e.rfind(want, 0), 0u) << e << "\nwanted: " << want;
+    }
+    // The defaults the shipped lessons rely on.
+    EXPECT_EQ(findClaimNumberField("tolerance")->defaultValue(), 0.02f);
+    EXPECT_EQ(findClaimNumberField("max_fraction")->defaultValue(), 1.0f);
+    EXPECT_EQ(findClaimNumberField("at_least")->defaultValue(), 0.0f);
+    EXPECT_FALSE(findClaimNumberField("light")) << "light's range is the step's light count, not the table's";
+}
+
+// An old lesson's "blit" (the depth copy's old name) reads as depth_copy wherever a lesson names
+// settings: the step's pipeline over a setup that says depth_copy, a claim's reference, A/B's side B.
+TEST(LessonFile, TheDepthCopysOldNameStillLoads) {
+    json j = minimal();
+    j["setup"]["pipeline"]["depth_copy"] = "shader";
+    j["steps"][0]["pipeline"]["blit"] = "off";
+    j["steps"][0]["claim"] = {{"kind", "same_image"}, {"reference", {{"blit", "blit"}}}, {"bound", 0.5}};
+    j["steps"][0]["ab"] = {{"view", "split"}, {"b", {{"blit", "shader"}}}};
+    LessonLoad const l = parseLesson(j.dump(), "demo.json");
+    ASSERT_TRUE(l.lesson) << l.error;
+    LessonStep const& step = l.lesson->steps[0];
+    EXPECT_EQ(step.state.pipeline.depthCopy, DepthCopy::Off);  // the step's old key over the setup's new one
+    ASSERT_TRUE(step.claim && step.claim->reference);
+    EXPECT_EQ(step.claim->reference->depthCopy, DepthCopy::Blit);
+    ASSERT_TRUE(step.state.ab);
+    EXPECT_EQ(step.state.ab->b.depthCopy, DepthCopy::Shader);
 }
 
 // tiled:1 shows what is tile-related as it opens: the heat view split against quad, so the left

@@ -220,9 +220,9 @@ TEST(LessonTasks, BrokenTasksNameTheField) {
         {[&](json& j) { task(j, 0, 0)["value"] = 10.29; },
          "t.json: steps[0].tasks[0] is already met in the step's own state"},
         {[&](json& j) { task(j, 1, 1)["value"] = "none"; },
-         "t.json: steps[1].tasks[1].value \"none\" is not a value of blit"},
+         "t.json: steps[1].tasks[1].value \"none\" is not a value of depth_copy"},
         {[&](json& j) { task(j, 1, 0)["setting"] = "culling"; },
-         "t.json: steps[1].tasks[0].setting must be a pipeline setting: one of mode, cull, blit"},
+         "t.json: steps[1].tasks[0].setting must be a pipeline setting: one of mode, cull, depth_copy"},
         {[&](json& j) { task(j, 1, 0)["tolerance"] = 0.1; },
          "t.json: steps[1].tasks[0].tolerance is only for a number setting"},
         {[&](json& j) { task(j, 1, 0)["value"] = "front"; }, "t.json: steps[1].tasks[0] is already met"},
@@ -276,7 +276,8 @@ TEST(LessonTasks, ASavedLessonKeepsItsTasks) {
     ASSERT_EQ(back.lesson->steps[0].tasks.size(), 1u);
     EXPECT_EQ(back.lesson->steps[0].tasks[0].onlyChanged, std::vector<std::string>{"kq"});
     ASSERT_EQ(back.lesson->steps[1].tasks.size(), 2u);
-    EXPECT_EQ(back.lesson->steps[1].tasks[1].setting, "blit");
+    // Written as "blit" (the old name), read back under the field's name.
+    EXPECT_EQ(back.lesson->steps[1].tasks[1].setting, "depth_copy");
 }
 
 // --- tasks from an author's change ("Save this state as a step" with "Add tasks") ---------------
@@ -410,10 +411,15 @@ TEST(LessonTasks, TaskToJsonWritesEachShippedTaskAsItsFileDoes) {
     for (Lesson const& l : lib.lessons)
         for (LessonStep const& s : l.steps) {
             if (s.tasks.empty()) continue;
-            json const file = json::parse(s.tasksJson);
+            json file = json::parse(s.tasksJson);
             ASSERT_EQ(file.size(), s.tasks.size());
-            for (std::size_t i = 0; i < s.tasks.size(); ++i, ++count)
+            for (std::size_t i = 0; i < s.tasks.size(); ++i, ++count) {
+                // A setting's old name ("blit") is written under the field's name ("depth_copy").
+                if (file[i].contains("setting"))
+                    if (PipelineField const* f = findPipelineField(file[i]["setting"].get<std::string>()))
+                        file[i]["setting"] = f->name;
                 EXPECT_EQ(json::parse(taskToJson(s.tasks[i])), file[i]) << l.id << ": " << file[i].dump();
+            }
         }
     EXPECT_GE(count, 5);
 }

@@ -64,7 +64,7 @@ TEST(LessonsCli, JsonListsTasksAndPredictions) {
     // A setting task's value is the setting's name for it, as in the file.
     nlohmann::json const blit = lesson("depth_blit")["steps"][3]["tasks"][0];
     EXPECT_EQ(blit["kind"], "setting");
-    EXPECT_EQ(blit["setting"], "blit");
+    EXPECT_EQ(blit["setting"], "depth_copy");  // the lesson file's "blit" is the field's old name
     EXPECT_EQ(blit["value"], "off");
     EXPECT_FALSE(blit.contains("tolerance"));
     nlohmann::json const scale = lesson("light_volumes")["steps"][1]["tasks"][0];

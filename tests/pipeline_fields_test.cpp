@@ -95,4 +95,99 @@ TEST(PipelineFields, AmbientIsAColourWhoseGreyTheTableEdits) {
     EXPECT_EQ(&(s.*ambient->rgb), &s.ambient);
 }
 
+// Every row carries what its users draw and parse: a label, a section, a widget that edits its
+// kind, a tooltip, and the `render` option named after it (dashes for underscores), or none where
+// the command line has no use for it.
+TEST(PipelineFields, EveryRowHasItsWidgetAndOption) {
+    std::set<std::string_view> options;
+    for (PipelineField const& f : pipelineFields()) {
+        EXPECT_FALSE(f.label.empty()) << f.name << " has no label";
+        EXPECT_LT(std::size_t(f.section), kPipelineSectionTitles.size()) << f.name;
+        EXPECT_FALSE(f.hoverText().empty()) << f.name << " has no tooltip";
+        switch (f.widget) {
+            case PipelineWidget::Radio:
+                EXPECT_EQ(f.kind, SettingKind::Choice) << f.name;
+                EXPECT_EQ(f.choiceHelp.size(), f.choices.size()) << f.name << ": one tooltip per radio button";
+                for (std::size_t i = 0; i < f.choiceHelp.size() && i < f.choices.size(); ++i) {
+                    EXPECT_EQ(f.choiceHelp[i].rfind(std::string(f.choices[i]) + ": ", 0), 0u)
+                        << f.name << ": the tooltip of " << f.choices[i] << " is another choice's";
+                }
+                break;
+            case PipelineWidget::Combo:
+                EXPECT_EQ(f.kind, SettingKind::Choice) << f.name;
+                break;
+            case PipelineWidget::ChoiceCheckbox:
+                EXPECT_EQ(f.kind, SettingKind::Choice) << f.name;
+                EXPECT_GT(f.checkedChoice, 0) << f.name << ": unticked is the first choice, ticked another";
+                EXPECT_LT(std::size_t(f.checkedChoice), f.choices.size()) << f.name;
+                break;
+            case PipelineWidget::Checkbox:
+                EXPECT_EQ(f.kind, SettingKind::Toggle) << f.name;
+                break;
+            case PipelineWidget::Slider:
+            case PipelineWidget::LogSlider:
+            case PipelineWidget::Drag:
+                EXPECT_EQ(f.kind, SettingKind::Number) << f.name;
+                EXPECT_EQ(f.rgb, nullptr) << f.name << ": a colour is edited as a colour";
+                EXPECT_GT(f.max, f.min) << f.name;
+                break;
+            case PipelineWidget::Colour:
+                EXPECT_NE(f.rgb, nullptr) << f.name;
+                break;
+        }
+        if (f.name == "view") {
+            // render's --view writes extra debug views beside the final image: it is not this field.
+            EXPECT_TRUE(f.option.empty());
+            continue;
+        }
+        std::string expected = "--" + std::string(f.name);
+        for (char& ch : expected)
+            if (ch == '_') ch = '-';
+        EXPECT_EQ(f.option, expected) << f.name;
+        EXPECT_TRUE(options.insert(f.option).second) << f.option << " twice";
+    }
+    // The row the old option and key belong to.
+    EXPECT_EQ(options.size(), pipelineFields().size() - 1);
+}
+
+// The depth copy has one name, `depth_copy`, the pass's; `blit` (the setting's name until then) still
+// finds it, so old sessions, lessons and scripts keep working.
+TEST(PipelineFields, TheDepthCopyIsFoundUnderItsOldNameToo) {
+    PipelineField const* copy = findPipelineField("depth_copy");
+    ASSERT_TRUE(copy);
+    EXPECT_EQ(findPipelineField("blit"), copy);
+    EXPECT_EQ(copy->oldName, "blit");
+    EXPECT_EQ(copy->option, "--depth-copy");
+    EXPECT_EQ(copy->oldOption, "--blit");
+    EXPECT_EQ(copy->label, "Depth copy");
+    EXPECT_EQ(kPipelineSectionTitles[std::size_t(copy->section)], "Depth copy");
+    PipelineSettings s;
+    copy->set(s, *parseFieldValue(*copy, "shader"));
+    EXPECT_EQ(s.depthCopy, DepthCopy::Shader);
+}
+
+TEST(PipelineFields, ValuesTextListsWhatAFieldTakes) {
+    EXPECT_EQ(fieldValuesText(*findPipelineField("depth_copy")), "one of blit, shader or off");
+    EXPECT_EQ(fieldValuesText(*findPipelineField("mode")), "one of quad, volumes, tiled, forward or clustered");
+    EXPECT_EQ(fieldValuesText(*findPipelineField("exposure")), "a number from 0.05 to 16");
+    EXPECT_EQ(fieldValuesText(*findPipelineField("normal_maps")), "0 or 1 (or off or on)");
+}
+
+// Greyed out, never hidden: the volumes' rows apply in volumes mode only, the selected-only toggle
+// with the wireframes on.
+TEST(PipelineFields, RowsSayWhenTheyApply) {
+    PipelineSettings s;
+    s.mode = LightingMode::Quad;
+    s.volumeWireframes = false;
+    EXPECT_FALSE(findPipelineField("cull")->appliesTo(s));
+    EXPECT_FALSE(findPipelineField("volume_scale")->appliesTo(s));
+    EXPECT_FALSE(findPipelineField("wireframes_selected_only")->appliesTo(s));
+    EXPECT_TRUE(findPipelineField("exposure")->appliesTo(s));
+    s.mode = LightingMode::Volumes;
+    s.volumeWireframes = true;
+    EXPECT_TRUE(findPipelineField("cull")->appliesTo(s));
+    EXPECT_TRUE(findPipelineField("volume_scale")->appliesTo(s));
+    EXPECT_TRUE(findPipelineField("wireframes_selected_only")->appliesTo(s));
+}
+
 }  // namespace

@@ -1,4 +1,5 @@
 // `gbuffer-lab render` end to end: the files it writes, their contents, and bad arguments.
+#include "core/pipeline_fields.h"
 #include "image_io.h"
 #include "run_command.h"
 #include "test_paths.h"
@@ -14,10 +15,80 @@
 #include <optional>
 
 using namespace gbl;
+using gbl::test::CommandResult;
 using gbl::test::runGbufferLab;
 namespace fs = std::filesystem;
 
 namespace {}  // namespace
+
+// Every pipeline field that names an option is a `render` option (core/pipeline_fields.h): --help
+// lists it with its names or range and PipelineSettings{}'s value, and a value it does not take is
+// refused in one sentence that lists what it takes.
+TEST(RenderCommand, EveryPipelineFieldIsAnOptionWithItsValuesAndDefault) {
+    CommandResult const help = runGbufferLab({"render", "--help"});
+    ASSERT_EQ(help.exitCode, 0) << help.output;
+    std::string const out = test::freshTempDir("render_fields");
+    int options = 0;
+    for (PipelineField const& f : pipelineFields()) {
+        if (f.option.empty()) continue;
+        ++options;
+        std::string const option(f.option);
+        std::size_t const at = help.output.find("  " + option);
+        ASSERT_NE(at, std::string::npos) << option << " is not in render --help";
+        std::string const line = help.output.substr(at, help.output.find('\n', at) - at);
+        std::string const byDefault = f.kind == SettingKind::Toggle ? (f.defaultValue() != 0.0 ? "on" : "off")
+                                                                    : fieldScriptText(f, PipelineSettings{});
+        EXPECT_NE(line.find("=" + byDefault), std::string::npos) << line;
+        if (f.kind == SettingKind::Choice) {
+            std::string names;
+            for (std::string_view n : f.choices) names += (names.empty() ? "{" : ",") + std::string(n);
+            EXPECT_NE(line.find(names + "}"), std::string::npos) << line;
+        }
+        CommandResult const r = test::expectRefused({"render", "--out", out, option, "nonsense"},
+                                                    option + ": 'nonsense' is not " + fieldValuesText(f));
+        EXPECT_LE(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    }
+    EXPECT_EQ(options, int(pipelineFields().size()) - 1);  // every row but the view
+    // The old option works but is not listed on its own: the README's list (cli_readme_test) names
+    // --depth-copy, and --help marks --blit as its old name.
+    EXPECT_NE(help.output.find("--depth-copy,--blit"), std::string::npos) << help.output;
+    EXPECT_NE(help.output.find("(--blit: its old name)"), std::string::npos) << help.output;
+}
+
+// Each option reaches the frame: every field set to a value other than its default, through the
+// options only, is what the saved session holds.
+TEST(RenderCommand, EveryPipelineOptionReachesTheSavedSession) {
+    std::string const dir = test::freshTempDir("render_field_values");
+    std::vector<std::string> args{"render",         "--out",        dir, "--size", "32x24", "--lights", "2",
+                                  "--save-session", dir + "/s.json"};
+    PipelineSettings wanted;
+    for (PipelineField const& f : pipelineFields()) {
+        if (f.option.empty()) continue;
+        double const other = f.kind == SettingKind::Choice ? double((int(f.defaultValue()) + 1) % int(f.choices.size()))
+                             : f.kind == SettingKind::Toggle ? 1.0 - f.defaultValue()
+                                                             : double(f.max);
+        f.set(wanted, other);
+        args.push_back(std::string(f.option));
+        args.push_back(fieldScriptText(f, wanted));
+    }
+    CommandResult const r = runGbufferLab(args);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    nlohmann::json const pipeline = test::readJsonFile(dir + "/s.json")["pipeline"];
+    for (PipelineField const& f : pipelineFields()) {
+        if (f.option.empty()) continue;
+        std::string const name(f.name);
+        ASSERT_TRUE(pipeline.contains(name)) << name;
+        nlohmann::json const& v = pipeline[name];
+        if (f.rgb)
+            EXPECT_FLOAT_EQ(v[0].get<float>(), float(f.get(wanted))) << name;
+        else if (f.kind == SettingKind::Choice)
+            EXPECT_EQ(v, fieldScriptText(f, wanted)) << name;
+        else if (f.kind == SettingKind::Toggle)
+            EXPECT_EQ(v, f.get(wanted) != 0.0) << name;
+        else
+            EXPECT_FLOAT_EQ(v.get<float>(), float(f.get(wanted))) << name;
+    }
+}
 
 TEST(RenderCommand, WritesEveryImageAndJsonFile) {
     std::string const out = test::freshTempDir("render_all");
@@ -125,7 +196,11 @@ TEST(RenderCommand, BadArgumentsExitWithCodeTwoAndOneSentence) {
         {{"render", "--out", out, "--size", "20000x20000"}, "16384"},
         {{"render", "--out", out, "--lights", "-3"}, "--lights"},
         {{"render", "--out", out, "--lights", "300000"}, "262144"},
-        {{"render", "--out", out, "--blit", "sideways"}, "--blit"},
+        // --blit is the old name of --depth-copy: the same option, named by its name.
+        {{"render", "--out", out, "--blit", "sideways"}, "--depth-copy: 'sideways' is not one of blit, shader or off"},
+        {{"render", "--out", out, "--depth-copy", "sideways"}, "'sideways' is not one of blit, shader or off"},
+        {{"render", "--out", out, "--exposure", "99"}, "--exposure: '99' is not a number from 0.05 to 16"},
+        {{"render", "--out", out, "--light-cubes", "maybe"}, "--light-cubes: 'maybe' is not 0 or 1 (or off or on)"},
         {{"render", "--out", out, "--mode", "raytraced"}, "--mode"},
         {{"render", "--out", out, "--layout", "zip"}, "--layout"},
         {{"render", "--out", out, "--accumulation", "double"}, "--accumulation"},

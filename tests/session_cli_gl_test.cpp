@@ -37,7 +37,7 @@ TEST(SessionCli, SavedSessionReproducesTheSameFrame) {
     // Non-default everything the command line can set, so a value the session forgets shows.
     auto const first =
         runGbufferLab({"render", "--out", a, "--size", "192x108", "--lights", "12", "--time", "3.5", "--mode",
-                       "volumes", "--cull", "back", "--blit", "shader", "--save-session", session});
+                       "volumes", "--cull", "back", "--depth-copy", "shader", "--save-session", session});
     ASSERT_EQ(first.exitCode, 0) << first.output;
     ui::SessionLoad const saved = ui::loadSession(session);
     ASSERT_TRUE(saved.session) << saved.error;
@@ -58,7 +58,7 @@ TEST(SessionCli, SavedSessionReproducesTheSameFrame) {
     auto const stats = test::readJsonFile(b + "/stats.json");
     EXPECT_EQ(stats["mode"], "volumes");
     EXPECT_EQ(stats["cull"], "back");
-    EXPECT_EQ(stats["blit"], "shader");
+    EXPECT_EQ(stats["depth_copy"], "shader");
     EXPECT_EQ(stats["gl_errors"], 0);
 }
 
@@ -99,8 +99,8 @@ TEST(SessionCli, OptionsOnTheCommandLineOverrideTheSession) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     auto const stats = test::readJsonFile(dir + "/b/stats.json");
     EXPECT_EQ(stats["mode"], "quad");
-    EXPECT_EQ(stats["blit"], "off");
-    EXPECT_EQ(stats["cull"], "front");  // from the session
+    EXPECT_EQ(stats["depth_copy"], "off");  // given as --blit, the option's old name
+    EXPECT_EQ(stats["cull"], "front");      // from the session
 }
 
 TEST(SessionCli, BadSessionsExitTwoWithOneSentenceNamingTheField) {

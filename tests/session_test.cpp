@@ -214,7 +214,8 @@ TEST(Session, FileCarriesFormatAndVersion) {
     json const j = json::parse(sessionToJson(Session{}));
     EXPECT_EQ(j["format"], "gbuffer-lab-session");
     EXPECT_EQ(j["version"], 1);
-    EXPECT_EQ(j["pipeline"]["blit"], "blit");  // enums by name, as on the command line
+    EXPECT_EQ(j["pipeline"]["depth_copy"], "blit");  // enums by name, as on the command line
+    EXPECT_FALSE(j["pipeline"].contains("blit")) << "the depth copy's old key is read, never written";
     EXPECT_EQ(j["pipeline"]["cull"], "front");
 }
 
@@ -465,8 +466,18 @@ TEST(Session, EveryKindOfBadFieldGetsOneMessageNamingIt) {
         // enums
         {"unknown mode", [](json& j) { j["pipeline"]["mode"] = "raytraced"; },
          "s.json: pipeline.mode must be one of quad, volumes, tiled, forward or clustered (got \"raytraced\")"},
-        {"unknown blit", [](json& j) { j["pipeline"]["blit"] = "copy"; },
+        {"unknown depth copy", [](json& j) { j["pipeline"]["depth_copy"] = "copy"; },
+         "s.json: pipeline.depth_copy must be one of blit, shader or off (got \"copy\")"},
+        // the depth copy's old key names the field as the file does, and is one field with the new one
+        {"unknown blit",
+         [](json& j) {
+             j["pipeline"].erase("depth_copy");
+             j["pipeline"]["blit"] = "copy";
+         },
          "s.json: pipeline.blit must be one of blit, shader or off (got \"copy\")"},
+        {"old and new key", [](json& j) { j["pipeline"]["blit"] = "off"; },
+         "s.json: pipeline.blit is the old name of pipeline.depth_copy: give only one of them"},
+        {"no depth copy", [](json& j) { j["pipeline"].erase("depth_copy"); }, "s.json: pipeline.depth_copy is missing"},
         {"enum by number", [](json& j) { j["pipeline"]["cull"] = 1; },
          "s.json: pipeline.cull must be one of back, front, none, flip or stencil (got a number)"},
         {"unknown normal display", [](json& j) { j["viewers"]["normal"]["normal_display"] = "signed"; },

@@ -1,5 +1,5 @@
 # Soak test (issue 6): the editor under xvfb-run for a few thousand frames while a generated UI
-# script changes lights, modes, cull mode, blit step, window size (0x0 and back) and breaks then
+# script changes lights, modes, cull mode, depth copy, window size (0x0 and back) and breaks then
 # fixes a shader in a copy of shaders/; zero GL errors, stable GL object count and memory.
 # About 3 minutes on two llvmpipe cores: labelled `soak` so quick runs can leave it out (-LE soak).
 find_program(GBL_XVFB_RUN xvfb-run)

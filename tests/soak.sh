@@ -1,6 +1,6 @@
 #!/bin/sh
 # Soak test: the editor under Xvfb for a few thousand frames while a UI script changes lights,
-# lighting mode, cull mode, blit step and overlays, resizes the window to 0x0 and back, and
+# lighting mode, cull mode, depth copy and overlays, resizes the window to 0x0 and back, and
 # breaks then fixes a shader in a copy of shaders/. Passes when no GL error was reported and
 # the live GL object count and resident memory end where they were after warm-up.
 # usage: soak.sh GBUFFER_LAB SHADER_SOURCE_DIR WORK_DIR [ITERATIONS]   (run under xvfb-run)
@@ -29,7 +29,7 @@ pick() { # pick INDEX WORDS...: the word at INDEX modulo the count
 
 # The state the baseline and the final check are taken in, so both count the same objects.
 canonical() {
-    echo "resize 320 240"; echo "set mode quad"; echo "set cull front"; echo "set blit blit"
+    echo "resize 320 240"; echo "set mode quad"; echo "set cull front"; echo "set depth_copy blit"
     echo "set light_cubes 1"; echo "set volume_wireframes 0"; echo "set lights 32"; echo "frames 30"
 }
 
@@ -46,7 +46,7 @@ canonical() {
     while [ "$i" -lt "$iterations" ]; do
         echo "set mode $(pick "$i" $modes)"
         echo "set cull $(pick $((i / 2)) $culls)"
-        echo "set blit $(pick $((i / 3)) $blits)"
+        echo "set depth_copy $(pick $((i / 3)) $blits)"
         echo "set light_cubes $((i % 2))"
         echo "set volume_wireframes $(((i / 4) % 2))"
         echo "light $((i % 8)) x $(((i % 17) - 8))"

@@ -1,5 +1,5 @@
 # The editor's UI test: the real editor under xvfb-run, driven by tests/ui_editor_script.txt.
-# It checks every window is visible, that cull mode and blit step change the frame, validated
+# It checks every window is visible, that cull mode and depth copy change the frame, validated
 # light edits, light picking and resizing, then writes ui_editor.png in the build's tests folder.
 find_program(GBL_XVFB_RUN xvfb-run)
 if(GBL_XVFB_RUN)

@@ -1,6 +1,8 @@
 // The UI script's command table: load-time checks, usage in errors, and help built from the table.
 #include "script/ui_script.h"
 
+#include "core/pipeline_fields.h"
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -72,6 +74,18 @@ TEST(UiScript, TheLightCommandsHelpNamesEveryLightField) {
     std::string const text = help.substr(help.find(*line), line->size() + 120);
     for (LightField const& f : kLightFields)
         EXPECT_NE(text.find(" " + std::string(f.name) + " "), std::string::npos) << f.name;
+}
+
+// The help lists every pipeline field `set` takes, from core/pipeline_fields.h (shading included),
+// with what it takes, and names the depth copy's old name.
+TEST(UiScript, TheHelpListsEveryPipelineField) {
+    std::string const help = uiScriptHelp();
+    for (PipelineField const& f : pipelineFields()) {
+        EXPECT_TRUE(helpLine(std::string(f.name))) << f.name;
+        EXPECT_NE(help.find(fieldValuesText(f)), std::string::npos) << f.name;
+    }
+    EXPECT_NE(help.find("old name blit"), std::string::npos);
+    EXPECT_EQ(loadError("set shading learnopengl\nset blit off\nexpect-setting depth_copy off\n"), "");
 }
 
 TEST(UiScript, AnUnsetEnvironmentVariableFailsTheLoad) {

@@ -1,109 +1,236 @@
 // The PipelineSettings field table.
 #include "core/pipeline_fields.h"
 
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <type_traits>
 
 namespace gbl {
 
 namespace {
 
+// A field's get and set for its kind; the columns that only describe it come from `f`.
 template <auto Member, std::size_t N>
-constexpr PipelineField choice(std::string_view name, std::array<std::string_view, N> const& names,
-                               std::string_view help, bool optionalInFiles, bool sideB) {
-    return {name,
-            SettingKind::Choice,
-            std::span<std::string_view const>(names.data(), names.size()),
-            0.0f,
-            float(N - 1),
-            help,
-            optionalInFiles,
-            sideB,
-            [](PipelineSettings const& s) { return double(int(s.*Member)); },
-            [](PipelineSettings& s, double v) {
-                using Enum = std::remove_reference_t<decltype(s.*Member)>;
-                s.*Member = Enum(int(v));
-            }};
+constexpr PipelineField choice(std::array<std::string_view, N> const& names, PipelineField f) {
+    f.kind = SettingKind::Choice;
+    f.choices = std::span<std::string_view const>(names.data(), names.size());
+    f.min = 0.0f;
+    f.max = float(N - 1);
+    f.get = [](PipelineSettings const& s) { return double(int(s.*Member)); };
+    f.set = [](PipelineSettings& s, double v) {
+        using Enum = std::remove_reference_t<decltype(s.*Member)>;
+        s.*Member = Enum(int(v));
+    };
+    return f;
 }
 
 template <auto Member>
-constexpr PipelineField toggle(std::string_view name, std::string_view help, bool optionalInFiles, bool sideB) {
-    return {name,
-            SettingKind::Toggle,
-            {},
-            0.0f,
-            1.0f,
-            help,
-            optionalInFiles,
-            sideB,
-            [](PipelineSettings const& s) { return (s.*Member) ? 1.0 : 0.0; },
-            [](PipelineSettings& s, double v) { s.*Member = v != 0.0; }};
+constexpr PipelineField toggle(PipelineField f) {
+    f.kind = SettingKind::Toggle;
+    f.min = 0.0f;
+    f.max = 1.0f;
+    f.widget = PipelineWidget::Checkbox;
+    f.get = [](PipelineSettings const& s) { return (s.*Member) ? 1.0 : 0.0; };
+    f.set = [](PipelineSettings& s, double v) { s.*Member = v != 0.0; };
+    return f;
 }
 
 template <auto Member>
-constexpr PipelineField number(std::string_view name, float min, float max, std::string_view help, bool optionalInFiles,
-                               bool sideB) {
-    return {name,
-            SettingKind::Number,
-            {},
-            min,
-            max,
-            help,
-            optionalInFiles,
-            sideB,
-            [](PipelineSettings const& s) { return double(s.*Member); },
-            [](PipelineSettings& s, double v) { s.*Member = float(v); }};
+constexpr PipelineField number(PipelineField f) {
+    f.kind = SettingKind::Number;
+    f.get = [](PipelineSettings const& s) { return double(s.*Member); };
+    f.set = [](PipelineSettings& s, double v) { s.*Member = float(v); };
+    return f;
 }
 
-constexpr bool kOptional = true, kRequired = false;
-constexpr bool kSideB = true, kSharedView = false;  // kSharedView: both sides of A/B show it alike
+bool volumesOnly(PipelineSettings const& s) {
+    return s.mode == LightingMode::Volumes;
+}
+bool withWireframes(PipelineSettings const& s) {
+    return s.volumeWireframes;
+}
+
+// One line per choice, shown on hover over its radio button: the editor is a teaching tool.
+constexpr std::array<std::string_view, 5> kModeHelp{
+    "quad: one full-screen pass evaluates every light at every pixel (cost = pixels x lights)",
+    "volumes: one sphere per light, scaled to its radius; only covered pixels are shaded",
+    "tiled: a compute pass builds a light list per 16x16 tile, then shades each pixel with its tile's lights",
+    "forward: no G-buffer; every object is shaded with every light while it is drawn",
+    "clustered: the GPU lists the lights of each 16x16 tile's exponential depth slices; each pixel shades with its "
+    "slice's list",
+};
+constexpr std::array<std::string_view, 5> kCullHelp{
+    "back: cull back faces; the volume vanishes when the camera is inside it",
+    "front: cull front faces and draw the far side; works with the camera inside",
+    "none: draw both sides, so each light is applied twice (the classic bug)",
+    "flip: back faces normally, front faces for lights whose volume holds the camera",
+    "stencil: two passes, mark then shade, so each pixel is shaded once and only if inside",
+};
+constexpr std::array<std::string_view, 3> kDepthCopyHelp{
+    "blit: glBlitFramebuffer copies the G-buffer depth so light cubes are hidden by walls",
+    "shader: a full-screen pass writes gl_FragDepth from the depth texture (works where blits between formats fail)",
+    "off: no depth before the forward pass; light cubes show through walls",
+};
+static_assert(kModeHelp.size() == kLightingModeNames.size() && kCullHelp.size() == kCullModeNames.size() &&
+              kDepthCopyHelp.size() == kDepthCopyNames.size());
+
+constexpr bool kOptional = true;
+
+using S = PipelineSettings;
+using W = PipelineWidget;
+using P = PipelineSection;
 
 // The A/B table shows the sideB rows in this order; its first row is the mode (startAb ticks it).
+// The Pipeline panel draws each section's fields in this order too.
 std::array<PipelineField, 16> const kFields{
-    choice<&PipelineSettings::mode>("mode", kLightingModeNames, "How the lights are added: the lighting mode",
-                                    kRequired, kSideB),
-    choice<&PipelineSettings::cull>("cull", kCullModeNames, "Which faces of a light volume are drawn (volumes mode)",
-                                    kRequired, kSideB),
-    choice<&PipelineSettings::depthCopy>("blit", kDepthCopyNames,
-                                         "How the G-buffer depth reaches the lit target before the forward pass",
-                                         kRequired, kSideB),
-    choice<&PipelineSettings::tonemap>("tonemap", kTonemapNames, "HDR to display: exposure, Reinhard or clamp",
-                                       kRequired, kSideB),
-    choice<&PipelineSettings::layout>("layout", kGBufferLayoutNames, "What the G-buffer stores, and how", kOptional,
-                                      kSideB),
-    toggle<&PipelineSettings::normalMaps>("normal_maps", "Use the materials' normal maps", kRequired, kSideB),
-    toggle<&PipelineSettings::lightCubes>("light_cubes", "A small unlit cube at each light, after the depth copy",
-                                          kRequired, kSideB),
-    toggle<&PipelineSettings::volumeWireframes>("volume_wireframes", "Outline each light's volume", kRequired, kSideB),
-    number<&PipelineSettings::shininess>("shininess", 1.0f, 512.0f, "Blinn-Phong specular exponent", kRequired, kSideB),
-    number<&PipelineSettings::exposure>("exposure", 0.05f, 16.0f, "Multiplies the HDR frame before tonemapping",
-                                        kRequired, kSideB),
-    PipelineField{"ambient",
-                  SettingKind::Number,
-                  {},
-                  0.0f,
-                  1.0f,
-                  "Ambient light: albedo times this colour (the A/B table sets a grey)",
-                  kRequired,
-                  kSideB,
-                  [](PipelineSettings const& s) { return double(s.ambient.x); },
-                  [](PipelineSettings& s, double v) { s.ambient = glm::vec3(float(v)); },
-                  &PipelineSettings::ambient},
-    choice<&PipelineSettings::view>("view", kDebugViewNames, "What the viewport shows", kRequired, kSharedView),
-    choice<&PipelineSettings::accumulation>("accumulation", kLightAccumulationNames,
-                                            "One lit target, or diffuse and specular targets and a combine pass",
-                                            kOptional, kSideB),
-    choice<&PipelineSettings::shading>(
-        "shading", kShadingModelNames,
-        "The lighting equation: gbuffer-lab's (docs/lighting.md) or LearnOpenGL's deferred shader's", kOptional,
-        kSideB),
-    toggle<&PipelineSettings::wireframesSelectedOnly>(
-        "wireframes_selected_only", "The wireframes outline the selected light's volume only", kOptional, kSharedView),
-    number<&PipelineSettings::volumeScale>("volume_scale", 0.1f, 4.0f,
-                                           "Scales every light volume (1 just encloses the light's radius)", kOptional,
-                                           kSideB),
+    choice<&S::mode>(kLightingModeNames, {.name = "mode",
+                                          .help = "How the lights are added: the lighting mode",
+                                          .sideB = true,
+                                          .label = "Lighting mode",
+                                          .section = P::LightingMode,
+                                          .widget = W::Radio,
+                                          .choiceHelp = kModeHelp,
+                                          .option = "--mode"}),
+    choice<&S::cull>(kCullModeNames, {.name = "cull",
+                                      .help = "Which faces of a light volume are drawn (volumes mode)",
+                                      .sideB = true,
+                                      .label = "Volume cull mode",
+                                      .section = P::VolumeCull,
+                                      .widget = W::Radio,
+                                      .choiceHelp = kCullHelp,
+                                      .applies = volumesOnly,
+                                      .option = "--cull"}),
+    choice<&S::depthCopy>(kDepthCopyNames,
+                          {.name = "depth_copy",
+                           .help = "How the G-buffer depth reaches the lit target before the forward pass",
+                           .sideB = true,
+                           .label = "Depth copy",
+                           .section = P::DepthCopy,
+                           .widget = W::Radio,
+                           .choiceHelp = kDepthCopyHelp,
+                           .option = "--depth-copy",
+                           .oldName = "blit",
+                           .oldOption = "--blit"}),
+    choice<&S::tonemap>(kTonemapNames, {.name = "tonemap",
+                                        .help = "HDR to display: exposure, Reinhard or clamp",
+                                        .sideB = true,
+                                        .label = "Tonemap",
+                                        .option = "--tonemap"}),
+    choice<&S::layout>(kGBufferLayoutNames,
+                       {.name = "layout",
+                        .help = "What the G-buffer stores, and how",
+                        .optionalInFiles = kOptional,
+                        .sideB = true,
+                        .label = "G-buffer",
+                        .tooltip = "how the G-buffer stores its quantities; the Pipeline's A/B compare can set side B "
+                                   "to classic",
+                        .option = "--layout"}),
+    toggle<&S::normalMaps>({.name = "normal_maps",
+                            .help = "Use the materials' normal maps",
+                            .sideB = true,
+                            .label = "Normal maps",
+                            .section = P::Overlays,
+                            .option = "--normal-maps"}),
+    toggle<&S::lightCubes>({.name = "light_cubes",
+                            .help = "A small unlit cube at each light, after the depth copy",
+                            .sideB = true,
+                            .label = "Light cubes",
+                            .section = P::Overlays,
+                            .option = "--light-cubes"}),
+    toggle<&S::volumeWireframes>({.name = "volume_wireframes",
+                                  .help = "Outline each light's volume",
+                                  .sideB = true,
+                                  .label = "Volume wireframes",
+                                  .section = P::Overlays,
+                                  .option = "--volume-wireframes"}),
+    number<&S::shininess>({.name = "shininess",
+                           .min = 1.0f,
+                           .max = 512.0f,
+                           .help = "Blinn-Phong specular exponent",
+                           .sideB = true,
+                           .label = "Shininess",
+                           .widget = W::Drag,
+                           .format = "%.1f",
+                           .option = "--shininess"}),
+    number<&S::exposure>({.name = "exposure",
+                          .min = 0.05f,
+                          .max = 16.0f,
+                          .help = "Multiplies the HDR frame before tonemapping",
+                          .sideB = true,
+                          .label = "Exposure",
+                          .widget = W::LogSlider,
+                          .option = "--exposure"}),
+    PipelineField{.name = "ambient",
+                  .kind = SettingKind::Number,
+                  .min = 0.0f,
+                  .max = 1.0f,
+                  .help = "Ambient light: albedo times this colour (a grey on the command line and in the A/B table)",
+                  .sideB = true,
+                  .get = [](S const& s) { return double(s.ambient.x); },
+                  .set = [](S& s, double v) { s.ambient = glm::vec3(float(v)); },
+                  .rgb = &S::ambient,
+                  .label = "Ambient",
+                  .widget = W::Colour,
+                  .option = "--ambient"},
+    // render's --view writes extra views beside the final image: no option sets this one.
+    choice<&S::view>(kDebugViewNames,
+                     {.name = "view",
+                      .help = "What the viewport shows",
+                      .label = "Coverage heatmap",
+                      .section = P::Overlays,
+                      .widget = W::ChoiceCheckbox,
+                      .tooltip = "per pixel: how many lights the mode evaluated (volumes, tile or cluster list) and "
+                                 "how many\nlit it; colours in bins 0, 1, 2, 4, 8, 16, 32, 64+, dim where the lights "
+                                 "evaluated did not light it",
+                      .checkedChoice = int(DebugView::Heatmap)}),
+    choice<&S::accumulation>(kLightAccumulationNames,
+                             {.name = "accumulation",
+                              .help = "Lights into one lit target (single) or diffuse and specular targets plus a "
+                                      "combine pass (split)",
+                              .optionalInFiles = kOptional,
+                              .sideB = true,
+                              .label = "Targets",
+                              .tooltip = "single: one lit target\nsplit: diffuse and specular light targets, then a "
+                                         "combine pass (forward mode keeps one target)",
+                              .option = "--accumulation"}),
+    choice<&S::shading>(
+        kShadingModelNames,
+        {.name = "shading",
+         .help = "The lighting equation: gbuffer-lab (docs/lighting.md) or learnopengl (LearnOpenGL's deferred "
+                 "shader: no attenuation window; with --gbuffer it overrides the manifest's)",
+         .optionalInFiles = kOptional,
+         .sideB = true,
+         .label = "Equation",
+         .tooltip = "gbuffer-lab: windowed attenuation, zero from each light's radius on (docs/lighting.md)\n"
+                    "learnopengl: LearnOpenGL's deferred lighting shader: 1/(Kc + Kl d + Kq d^2) with no window,\n"
+                    "specular not gated by N.L; quad and forward light every pixel with every light, volumes,\n"
+                    "tiled and clustered stop at the radius. A manifest with \"shading\": \"learnopengl\" also\n"
+                    "sets ambient 0.1 and shininess 16, as that shader does.",
+         .option = "--shading"}),
+    toggle<&S::wireframesSelectedOnly>(
+        {.name = "wireframes_selected_only",
+         .help = "The wireframes outline the selected light's volume only",
+         .optionalInFiles = kOptional,
+         .label = "Selected light's volume only",
+         .section = P::Overlays,
+         .tooltip = "32 volumes at once are a tangle: outline only the light selected in the Lights window",
+         .applies = withWireframes,
+         .option = "--wireframes-selected-only"}),
+    number<&S::volumeScale>(
+        {.name = "volume_scale",
+         .min = 0.1f,
+         .max = 4.0f,
+         .help = "Scales every light volume (1 just encloses the light's radius)",
+         .optionalInFiles = kOptional,
+         .sideB = true,
+         .label = "Volume scale",
+         .section = P::VolumeCull,
+         .widget = W::Slider,
+         .tooltip = "1: each volume just encloses its light's radius; below 1 its faces cut the light off (dark "
+                    "rims), above 1 it shades pixels the light cannot reach",
+         .applies = volumesOnly,
+         .option = "--volume-scale"}),
 };
 
 }  // namespace
@@ -114,7 +241,7 @@ std::span<PipelineField const> pipelineFields() {
 
 PipelineField const* findPipelineField(std::string_view name) {
     for (PipelineField const& f : kFields)
-        if (f.name == name) return &f;
+        if (f.name == name || (!f.oldName.empty() && f.oldName == name)) return &f;
     return nullptr;
 }
 
@@ -156,6 +283,26 @@ std::optional<double> parseFieldValue(PipelineField const& f, std::string const&
     double const v = std::strtod(text.c_str(), &end);
     if (end == text.c_str() || *end != '\0' || !fieldAccepts(f, v)) return std::nullopt;
     return v;
+}
+
+std::string fieldValuesText(PipelineField const& f) {
+    switch (f.kind) {
+        case SettingKind::Choice: {
+            std::string s = "one of ";
+            for (std::size_t i = 0; i < f.choices.size(); ++i) {
+                if (i) s += i + 1 == f.choices.size() ? " or " : ", ";
+                s += f.choices[i];
+            }
+            return s;
+        }
+        case SettingKind::Toggle:
+            return "0 or 1 (or off or on)";
+        case SettingKind::Number:
+            break;
+    }
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "a number from %g to %g", double(f.min), double(f.max));
+    return buf;
 }
 
 }  // namespace gbl

@@ -11,7 +11,8 @@ namespace gbl {
 
 enum class LightingMode { Quad, Volumes, Tiled, Forward, Clustered };
 enum class CullMode { Back, Front, None, Flip, Stencil };
-// How the G-buffer depth reaches the lit target before the forward pass (the "blit step").
+// How the G-buffer depth reaches the lit target before the forward pass: the depth copy
+// (setting `depth_copy`, pass `depth_copy`, option --depth-copy).
 enum class DepthCopy { Blit, Shader, Off };
 // Values match TONEMAP_* in shaders/view_constants.glsl.
 enum class Tonemap { Exposure, Reinhard, Clamp };

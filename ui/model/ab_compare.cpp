@@ -34,9 +34,10 @@ void startAb(AbState& state, PipelineSettings const& a) {
 
 bool setAbField(AbState& state, std::string_view field, std::string const& value) {
     std::span<AbField const> const fields = abFields();
+    PipelineField const* named = findPipelineField(field);  // an old name ("blit") too
     for (std::size_t i = 0; i < fields.size(); ++i) {
         AbField const& f = fields[i];
-        if (f.name != field) continue;
+        if (!named || f.name != named->name) continue;
         std::optional<double> const v = parseFieldValue(f, value);
         if (!v) return false;
         f.set(state.b, *v);

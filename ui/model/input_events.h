@@ -143,7 +143,7 @@ inline constexpr std::array<Shortcut, 25> kShortcuts{{
     {keys::C, 0, EditorAction::NextCullMode, ShortcutScope::Editor, false, "C",
      "next light-volume cull mode (back, front, none, flip, stencil)"},
     {keys::B, 0, EditorAction::NextDepthCopy, ShortcutScope::Editor, false, "B",
-     "next blit step: how depth reaches the lit target (blit, shader, off)"},
+     "next depth copy: how depth reaches the lit target (blit, shader, off)"},
     {keys::G, 0, EditorAction::ToggleOverview, ShortcutScope::Editor, false, "G",
      "attachment overview: every G-buffer attachment and the lit frame at once (click one to show it)"},
     {keys::W, 0, EditorAction::FlyForward, ShortcutScope::Viewport, true, "W", "fly forward (Shift: faster)"},

@@ -371,7 +371,27 @@ std::array<ClaimKindInfo, 10> const kClaimKinds{{
      "reference's (and, with `max_fraction`, less than that); needs the heatmap view"},
 }};
 
+// The claims' numbers; `at_least` must also not exceed `bound`, `max_fraction` must exceed
+// `min_fraction` (the reader checks both after the ranges).
+constexpr std::array<ClaimNumberField, 5> kClaimNumberFields{{
+    {"tolerance", &LessonClaim::tolerance, 0.0f, 10.0f, "relative and absolute tolerance of a comparison with the CPU"},
+    {"bound", &LessonClaim::bound, 0.0f, 1e6f, "largest absolute difference (or error) that still counts as equal"},
+    {"at_least", &LessonClaim::atLeast, 0.0f, 1e6f, "the largest error is at least this (at most `bound`)"},
+    {"min_fraction", &LessonClaim::minFraction, 0.0f, 1.0f, "the least share of pixels or evaluations"},
+    {"max_fraction", &LessonClaim::maxFraction, 0.0f, 1.0f, "the share is below this (above `min_fraction`)"},
+}};
+
 }  // namespace
+
+std::span<ClaimNumberField const> claimNumberFields() {
+    return kClaimNumberFields;
+}
+
+ClaimNumberField const* findClaimNumberField(std::string_view name) {
+    for (ClaimNumberField const& f : kClaimNumberFields)
+        if (f.name == name) return &f;
+    return nullptr;
+}
 
 std::span<ClaimKindInfo const> claimKinds() {
     return kClaimKinds;

@@ -62,9 +62,10 @@ struct ClaimMark {
 std::optional<ClaimMark> claimMark(LessonClaim const& claim, ClaimResult const& result);
 
 // One row per claim kind (issue 24), the one place a kind is described: the name lesson files
-// use, its fields (required, then optional; `tolerance` defaults to 0.02 where a kind takes it),
+// use, its fields (required, then optional, which take their default when left out),
 // whether it is about the step's pixel (the step must then have one) and needs a reference frame,
-// its check, and one line of documentation (docs/lessons.md's table says the same, in full).
+// its check, and one line of documentation (docs/lessons.md's table says the same, in full). The
+// numbers' ranges and defaults are claimNumberFields()'.
 struct ClaimKindInfo {
     ClaimKind kind;
     std::string_view name;
@@ -78,6 +79,20 @@ struct ClaimKindInfo {
 std::span<ClaimKindInfo const> claimKinds();
 ClaimKindInfo const* findClaimKind(std::string_view name);
 ClaimKindInfo const& claimKindInfo(ClaimKind kind);
+
+// One number a claim may carry (claimKinds() says which kinds take it, and whether they must): its
+// key in lesson files, its LessonClaim member, the values a file may give, and its default, which is
+// LessonClaim{}'s: what an optional one is when the file leaves it out. The lesson reader reads every
+// claim number through this table (session/lesson_file_fields.cpp), so a range is written once.
+struct ClaimNumberField {
+    std::string_view name;
+    float LessonClaim::*member = nullptr;
+    float min = 0.0f, max = 0.0f;
+    std::string_view help;
+    float defaultValue() const { return LessonClaim{}.*member; }
+};
+std::span<ClaimNumberField const> claimNumberFields();
+ClaimNumberField const* findClaimNumberField(std::string_view name);
 
 // Whether the claim compares with a reference frame (claimKindInfo's needsReference).
 bool claimNeedsReference(LessonClaim const& claim);

@@ -113,7 +113,7 @@ struct LessonClaim {
     ClaimKind kind = ClaimKind::MatchesCpu;
     int light = -1;                             // loses_light
     std::optional<PipelineSettings> reference;  // loses_light, same_image, fewer_lit_pixels, differs_from
-    float tolerance = 0.0f;                     // matches_cpu, loses_light, attachment_equals (relative + absolute)
+    float tolerance = 0.02f;                    // matches_cpu, loses_light, attachment_equals (relative + absolute)
     float bound = 0.0f;                         // position_error_below, same_image and differs_from (abs difference)
     float atLeast = 0.0f;  // position_error_below (optional): the largest error is at least this (a range)
     // position_error_below (optional): the editor measures the claim on its own frame and marks the

@@ -69,6 +69,25 @@ std::span<TaskKindInfo const> taskKinds();
 TaskKindInfo const* findTaskKind(std::string_view name);
 TaskKindInfo const& taskKindInfo(TaskKind kind);
 
+// A task's numbers as lesson files give them: the key, the LessonTask member, the range a file may
+// give, and the default (LessonTask{}'s: a setting task without `tolerance` wants the value exactly).
+// A setting task's `value` is the setting's own (core/pipeline_fields.h), not this range.
+struct TaskNumberField {
+    std::string_view name;
+    double LessonTask::*member = nullptr;
+    float min = 0.0f, max = 0.0f;
+    double defaultValue() const { return LessonTask{}.*member; }
+};
+inline constexpr std::array<TaskNumberField, 2> kTaskNumberFields{{
+    {"value", &LessonTask::value, -1e6f, 1e6f},
+    {"tolerance", &LessonTask::tolerance, 0.0f, 1e6f},
+}};
+inline TaskNumberField const& taskNumberField(std::string_view name) {
+    for (TaskNumberField const& f : kTaskNumberFields)
+        if (f.name == name) return f;
+    return kTaskNumberFields[0];
+}
+
 // The fields a light_field task may name: kLightFields' names, then "radius" (lightRadius()).
 bool isTaskLightField(std::string_view name);
 std::optional<float> taskLightFieldValue(PointLight const& light, std::string_view name);

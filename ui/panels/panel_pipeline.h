@@ -1,4 +1,4 @@
-// Pipeline window: lighting mode, volume cull mode, blit step, overlays, ambient, exposure, tonemap.
+// Pipeline window: every pipeline setting (core/pipeline_fields.h) in its section, and the A/B table.
 #pragma once
 
 #include "core/pipeline_settings.h"

@@ -126,13 +126,11 @@ constexpr ScriptCommandSpec kEditCommands[] = {
     {"frames", "N", "run N frames before the next command",
      [](CommandCall const& c) { c.run.wait = std::max(std::atoi(c.w[1].c_str()), 1); }},
     {"set", "KEY VALUE",
-     "FIELD VALUE for every pipeline field (core/pipeline_fields.h: mode cull blit tonemap layout\n"
-     "normal_maps light_cubes volume_wireframes shininess exposure ambient view accumulation\n"
-     "wireframes_selected_only volume_scale; names, 0|1, numbers in range), animate 0|1,\n"
+     "FIELD VALUE for every pipeline field (listed under Pipeline fields below), animate 0|1,\n"
      "time SECONDS (light animation), lights N (default scene lights),\n"
      "accumulate K (-1: off), contribution 0|1, ab off|split|diff, ab-divider X,\n"
      "ab-metric lit|normal-angle, ab-threshold X, ab-angle-threshold DEGREES,\n"
-     "b.FIELD VALUE (side B of A/B: mode, cull, blit, shininess, ... as the Pipeline window's table)",
+     "b.FIELD VALUE (side B of A/B: the fields marked B below, as the Pipeline window's table)",
      setCommand},
     {"light", "I FIELD VALUE",
      "edit light I through the validated path the Lights panel uses;\n"

@@ -3,6 +3,8 @@
 
 #include "script/script_run.h"
 
+#include "core/pipeline_fields.h"
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -128,6 +130,14 @@ std::string uiScriptHelp() {
                 help.insert(at + 1, std::string(34, ' '));
             out += head + help + "\n";
         }
+    }
+    // The fields `set`, `expect-setting` and `b.FIELD` take, from core/pipeline_fields.h.
+    out += "Pipeline fields (set FIELD VALUE; B: side B of A/B can change it):\n";
+    for (PipelineField const& f : pipelineFields()) {
+        std::string head = "  " + std::string(f.name) + (f.sideB ? " B" : "");
+        head.resize(std::max<std::size_t>(head.size() + 1, 34), ' ');
+        std::string const old = f.oldName.empty() ? "" : "; old name " + std::string(f.oldName);
+        out += head + std::string(f.help) + "\n" + std::string(34, ' ') + fieldValuesText(f) + old + "\n";
     }
     return out;
 }

@@ -75,7 +75,10 @@ Session lesson_fields::readState(json const& state, std::string const& path, glm
     for (char const* key : {"pipeline", "viewers"})
         if (auto it = state.find(key); it != state.end()) {
             if (!it->is_object()) fail(path + "." + key, "must be an object");
-            j[key].merge_patch(*it);
+            if (std::string_view(key) == "pipeline")
+                mergePipeline(j[key], *it);
+            else
+                j[key].merge_patch(*it);
         }
     SessionLoad load = parseSession(j.dump(), "@");
     if (!load.session) fail(path + "." + sessionField(load.error), "");
@@ -92,9 +95,12 @@ json mergedState(json const& setup, json const& step) {
         if (it == step.end()) continue;
         if ((std::string_view(key) == "camera" || std::string_view(key) == "pipeline" ||
              std::string_view(key) == "viewers" || std::string_view(key) == "scene") &&
-            it->is_object() && out.contains(key) && out[key].is_object())
-            out[key].merge_patch(*it);
-        else
+            it->is_object() && out.contains(key) && out[key].is_object()) {
+            if (std::string_view(key) == "pipeline")
+                lesson_fields::mergePipeline(out[key], *it);
+            else
+                out[key].merge_patch(*it);
+        } else
             out[key] = *it;
     }
     return out;
@@ -181,8 +187,10 @@ std::vector<LessonTask> readTasks(json const& j, std::string const& path, Lesson
                 if (!field.is_string() || !isTaskLightField(field.get<std::string>()))
                     fail(at + ".field", "must be one of " + names + " (got " + field.dump() + ")");
                 task.field = field.get<std::string>();
-                task.value = number(t["value"], at + ".value", -1e6f, 1e6f);
-                task.tolerance = number(t["tolerance"], at + ".tolerance", 0.0f, 1e6f);
+                for (char const* key : {"value", "tolerance"}) {
+                    TaskNumberField const& n = taskNumberField(key);
+                    task.*n.member = number(t[key], at + "." + key, n.min, n.max);
+                }
                 if (auto only = t.find("only_changed"); only != t.end()) {
                     if (!only->is_array() || only->empty())
                         fail(at + ".only_changed", "must be an array of at least one light field name");
@@ -205,7 +213,7 @@ std::vector<LessonTask> readTasks(json const& j, std::string const& path, Lesson
                         names += (names.empty() ? "" : ", ") + std::string(p.name);
                     fail(at + ".setting", "must be a pipeline setting: one of " + names + " (got " + name.dump() + ")");
                 }
-                task.setting = name.get<std::string>();
+                task.setting = std::string(f->name);  // an old name ("blit") is read as the field's name
                 json const& v = t["value"];
                 std::string const value = v.is_string()    ? v.get<std::string>()
                                           : v.is_boolean() ? (v.get<bool>() ? "1" : "0")
@@ -215,7 +223,8 @@ std::vector<LessonTask> readTasks(json const& j, std::string const& path, Lesson
                 task.value = *parsed;
                 if (auto tol = t.find("tolerance"); tol != t.end()) {
                     if (f->kind != SettingKind::Number) fail(at + ".tolerance", "is only for a number setting");
-                    task.tolerance = number(*tol, at + ".tolerance", 0.0f, 1e6f);
+                    TaskNumberField const& n = taskNumberField("tolerance");
+                    task.tolerance = number(*tol, at + ".tolerance", n.min, n.max);
                 }
                 break;
             }

@@ -57,6 +57,16 @@ float number(json const& j, std::string const& field, float lo, float hi) {
     return j.get<float>();
 }
 
+void mergePipeline(json& into, json const& patch) {
+    if (into.is_object() && patch.is_object())
+        for (PipelineField const& f : pipelineFields()) {
+            if (f.oldName.empty()) continue;
+            if (patch.contains(f.oldName)) into.erase(std::string(f.name));
+            if (patch.contains(f.name)) into.erase(std::string(f.oldName));
+        }
+    into.merge_patch(patch);
+}
+
 namespace {
 
 Attachment attachmentNamed(json const& j, std::string const& field) {
@@ -110,27 +120,28 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
         if (it == c.end()) fail(path + "." + key, "is missing (a " + kindIt->get<std::string>() + " claim needs it)");
         return *it;
     };
-    auto optionalNumber = [&](char const* key, float fallback, float lo, float hi) {
-        auto it = c.find(key);
-        return it == c.end() ? fallback : number(*it, path + "." + key, lo, hi);
-    };
     if (info->atPixel && !step.state.pixel)
         fail(path + ".kind", "is a claim about the step's pixel, and the step has no pixel");
-    claim.tolerance = optionalNumber("tolerance", 0.02f, 0.0f, 10.0f);
+    // The kind's numbers, each within its range (claimNumberFields()); an optional one left out
+    // keeps its default.
+    for (ClaimNumberField const& f : claimNumberFields()) {
+        bool const required = std::find(info->fields.begin(), info->fields.end(), f.name) != info->fields.end();
+        auto it = c.find(f.name);
+        if (required) need(std::string(f.name).c_str());
+        if (it != c.end()) claim.*f.member = number(*it, path + "." + std::string(f.name), f.min, f.max);
+    }
     switch (*kind) {
         case ClaimKind::LosesLight:
             claim.light = integer(need("light"), path + ".light", 0, int(step.state.lights.size()) - 1);
             break;
         case ClaimKind::SameImage:
-            claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
             claim.image = comparedImage(c, path);
             break;
         case ClaimKind::FewerLitPixels:
-            claim.minFraction = number(need("min_fraction"), path + ".min_fraction", 0.0f, 1.0f);
             break;
         case ClaimKind::PositionError:
-            claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
-            claim.atLeast = optionalNumber("at_least", 0.0f, 0.0f, claim.bound);
+            if (claim.atLeast > claim.bound)  // its range ends at the bound: the same message, that end
+                number(c["at_least"], path + ".at_least", findClaimNumberField("at_least")->min, claim.bound);
             if (auto it = c.find("mark"); it != c.end()) {
                 if (!it->is_boolean()) fail(path + ".mark", "must be true or false");
                 claim.mark = it->get<bool>();
@@ -163,17 +174,12 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
             break;
         }
         case ClaimKind::DiffersFrom:
-            claim.bound = number(need("bound"), path + ".bound", 0.0f, 1e6f);
-            claim.minFraction = number(need("min_fraction"), path + ".min_fraction", 0.0f, 1.0f);
-            claim.maxFraction = optionalNumber("max_fraction", 1.0f, 0.0f, 1.0f);
             if (claim.maxFraction <= claim.minFraction)
                 fail(path + ".max_fraction", "must be greater than min_fraction");
             claim.image = comparedImage(c, path);
             break;
         case ClaimKind::FewerEvaluations:
             if (step.state.pipeline.view != DebugView::Heatmap) fail(path + ".kind", "needs pipeline.view \"heatmap\"");
-            claim.minFraction = number(need("min_fraction"), path + ".min_fraction", 0.0f, 1.0f);
-            claim.maxFraction = optionalNumber("max_fraction", 1.0f, 0.0f, 1.0f);
             if (claim.maxFraction <= claim.minFraction)
                 fail(path + ".max_fraction", "must be greater than min_fraction");
             break;
@@ -188,7 +194,7 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
         if (!ref.is_object()) fail(path + ".reference", "must be an object of pipeline settings");
         json s = state;
         if (!s.contains("pipeline") || !s["pipeline"].is_object()) s["pipeline"] = json::object();
-        s["pipeline"].merge_patch(ref);
+        mergePipeline(s["pipeline"], ref);
         glm::vec3 ignored;
         bool has = false;
         try {

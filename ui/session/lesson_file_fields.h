@@ -32,6 +32,11 @@ std::string text(json const& j, std::string const& key, std::string const& path,
 int integer(json const& j, std::string const& field, int lo, int hi);
 float number(json const& j, std::string const& field, float lo, float hi);
 
+// Merges a "pipeline" object over another: a field the patch names under its old name ("blit")
+// replaces the field of its new name ("depth_copy") and the other way round, so the session reader
+// sees each field once, under the name the lesson wrote (which its messages then name).
+void mergePipeline(json& into, json const& patch);
+
 // A step's whole state: the session the default scene starts with, patched by the lesson's setup
 // and the step, then read by parseSession so every session rule applies (lesson_file.cpp).
 Session readState(json const& state, std::string const& path, glm::vec3* lookAt, bool* hasLookAt);

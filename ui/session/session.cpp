@@ -145,13 +145,24 @@ std::vector<PointLight> readLights(json const& j) {
 // after the format's first version) keep their default when absent.
 PipelineSettings readPipeline(json const& j) {
     std::vector<std::string_view> known;
-    for (PipelineField const& f : pipelineFields()) known.push_back(f.name);
+    for (PipelineField const& f : pipelineFields()) {
+        known.push_back(f.name);
+        if (!f.oldName.empty()) known.push_back(f.oldName);
+    }
     Object o(j, "pipeline", known);
     PipelineSettings p;
     for (PipelineField const& f : pipelineFields()) {
-        json const* v = f.optionalInFiles ? o.optional(f.name) : &o.required(f.name);
+        // Files written before a field was renamed ("blit") keep loading under its old name.
+        json const* v = o.optional(f.name);
+        std::string_view key = f.name;
+        if (!f.oldName.empty() && o.optional(f.oldName)) {
+            if (v) fail(o.field(f.oldName), "is the old name of " + o.field(f.name) + ": give only one of them");
+            v = o.optional(f.oldName);
+            key = f.oldName;
+        }
+        if (!v && !f.optionalInFiles) o.required(f.name);
         if (!v) continue;
-        std::string const path = o.field(f.name);
+        std::string const path = o.field(key);
         if (f.rgb) {
             if (!v->is_array() || v->size() != 3) fail(path, "must be an array of 3 numbers");
             for (std::size_t i = 0; i < 3; ++i)
