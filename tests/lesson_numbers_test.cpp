@@ -6,6 +6,7 @@
 #include "session/lesson_file.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <regex>
@@ -115,6 +116,31 @@ TEST(LessonNumbers, TheWastedWorkStepsBoundTheirShare) {
             }
         EXPECT_TRUE(found) << id;
     }
+}
+
+// executed_exceeds_lit's share is optional; a range that is empty or out of 0..1 is one sentence
+// naming the field, and the file is refused.
+TEST(LessonNumbers, ABadWastedShareIsNamed) {
+    nlohmann::json j = nlohmann::json::parse(R"({
+      "format": "gbuffer-lab-lesson", "version": 2, "id": "demo", "title": "Demo",
+      "steps": [{"title": "One", "look": "l", "equation": "e", "question": "q", "answer": "a",
+                 "pixel": [0.5, 0.8], "pipeline": {"mode": "quad", "view": "heatmap"},
+                 "claim": {"kind": "executed_exceeds_lit", "min_fraction": 0.85, "max_fraction": 0.93}}]
+    })");
+    LessonLoad const good = parseLesson(j.dump(), "demo.json");
+    ASSERT_TRUE(good.lesson) << good.error;
+    EXPECT_FLOAT_EQ(good.lesson->steps[0].claim->minFraction, 0.85f);
+    EXPECT_FLOAT_EQ(good.lesson->steps[0].claim->maxFraction, 0.93f);
+    j["steps"][0]["claim"]["max_fraction"] = 0.5;
+    LessonLoad const empty = parseLesson(j.dump(), "demo.json");
+    EXPECT_FALSE(empty.lesson);
+    EXPECT_EQ(empty.error.rfind("demo.json: steps[0].claim.max_fraction must be greater than min_fraction", 0), 0u)
+        << empty.error;
+    j["steps"][0]["claim"]["max_fraction"] = 0.93;
+    j["steps"][0]["claim"]["min_fraction"] = 1.5;
+    LessonLoad const big = parseLesson(j.dump(), "demo.json");
+    EXPECT_FALSE(big.lesson);
+    EXPECT_EQ(big.error.rfind("demo.json: steps[0].claim.min_fraction", 0), 0u) << big.error;
 }
 
 }  // namespace
