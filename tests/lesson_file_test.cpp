@@ -246,7 +246,7 @@ TEST(LessonFile, TheDepthBlitClaimsCompareTheDisplayImage) {
 }
 
 // depth_blit:3 says how many of the frame's pixels its cubes through the column change ("about
-// 1.4 %"): its claim checks that share as a range, and the text's number lies in it. A max_fraction
+// 1.5 %"): its claim checks that share as a range, and the text's number lies in it. A max_fraction
 // not above min_fraction is refused.
 TEST(LessonFile, TheCubesThroughTheColumnShareIsTheClaimsRange) {
     LessonStep const& step = shippedStep("depth_blit:3");

@@ -205,6 +205,7 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
         state.gbuffer.showInViewport.reset();
         state.gbuffer.imageRects.fill(glm::vec4(0.0f));
     } else {
+        state.gbuffer.noGBuffer = state.pipeline.mode == LightingMode::Forward;
         ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()},
                              state.inspector.locked ? state.inspector.pixel : std::nullopt);
     }

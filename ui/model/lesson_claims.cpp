@@ -206,10 +206,23 @@ ClaimResult tileCount(LessonClaim const& c, ClaimFrame const& f, ClaimImages con
     return {gpu == cpu && cpu > 0 && gpu >= most, detail};
 }
 
-ClaimResult executedExceedsLit(LessonClaim const&, ClaimFrame const& f, ClaimImages const& im) {
+ClaimResult executedExceedsLit(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
     if (im.coverage.channels < 2 || !inside(im.coverage, f.pixel)) return {false, "no coverage image (show heatmap)"};
     float const executed = im.coverage.at(f.pixel.x, f.pixel.y, 0), lit = im.coverage.at(f.pixel.x, f.pixel.y, 1);
-    return {executed > lit, lessonNumber(executed) + " lights evaluated, " + lessonNumber(lit) + " lit the pixel"};
+    std::string detail = lessonNumber(executed) + " lights evaluated, " + lessonNumber(lit) + " lit the pixel";
+    if (c.minFraction <= 0.0f && c.maxFraction >= 1.0f) return {executed > lit, detail};
+    // The frame-wide share of evaluations that added no light (a step's text states it in words).
+    double evaluated = 0.0, useful = 0.0;
+    for (int y = 0; y < im.coverage.height; ++y)
+        for (int x = 0; x < im.coverage.width; ++x) {
+            evaluated += double(im.coverage.at(x, y, 0));
+            useful += double(im.coverage.at(x, y, 1));
+        }
+    double const wasted = evaluated > 0.0 ? (evaluated - useful) / evaluated : 0.0;
+    detail += "; over the frame " + lessonNumber(float(100.0 * wasted)) + " % of " +
+              lessonNumber(float(evaluated * 1e-6)) + " M evaluations added nothing (range " +
+              lessonNumber(100.0f * c.minFraction) + " .. " + lessonNumber(100.0f * c.maxFraction) + " %)";
+    return {executed > lit && wasted >= double(c.minFraction) && wasted < double(c.maxFraction), detail};
 }
 
 ClaimResult attachmentEquals(LessonClaim const& c, ClaimFrame const& f, ClaimImages const& im) {
@@ -314,6 +327,7 @@ constexpr std::array<std::string_view, 2> kFewerLitFields{"reference", "min_frac
 constexpr std::array<std::string_view, 1> kBoundFields{"bound"};
 constexpr std::array<std::string_view, 2> kAtLeastOptional{"at_least", "mark"};
 constexpr std::array<std::string_view, 1> kMostOptional{"most"};
+constexpr std::array<std::string_view, 2> kWastedShareOptional{"min_fraction", "max_fraction"};
 constexpr std::array<std::string_view, 2> kAttachmentFields{"attachment", "value"};
 
 // kind, name, fields, optional fields, about the step's pixel, needs a reference frame, check, doc.
@@ -355,11 +369,12 @@ std::array<ClaimKindInfo, 10> const kClaimKinds{{
     {ClaimKind::ExecutedExceedsLit,
      "executed_exceeds_lit",
      {},
-     {},
+     kWastedShareOptional,
      true,
      false,
      executedExceedsLit,
-     "at `pixel` more lights were evaluated than lit it"},
+     "at `pixel` more lights were evaluated than lit it; with `min_fraction` (and `max_fraction`), that share "
+     "of the frame's light evaluations added no light"},
     {ClaimKind::AttachmentEquals, "attachment_equals", kAttachmentFields, kToleranceOptional, true, false,
      attachmentEquals, "the attachment at `pixel` equals `value`; null entries are not compared"},
     {ClaimKind::DiffersFrom, "differs_from", kDiffersFromFields, kDiffersFromOptional, false, true, differsFrom,

@@ -113,6 +113,9 @@ struct GBufferPanelState {
     // Each viewer's image at zoom 1 in window coordinates (x, y, width, height) as last drawn, for
     // the frame log (UI layout, not saved).
     std::array<glm::vec4, 5> imageRects{};
+    // Set by the loop each frame: the lighting mode writes no G-buffer (forward), so every viewer
+    // says so instead of showing a blank or stale image.
+    bool noGBuffer = false;
 
     static std::array<ViewerState, 5> defaultViewers();
 };

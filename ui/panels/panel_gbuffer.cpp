@@ -127,6 +127,19 @@ void imageLabels(ViewerState const& v, ViewerData const& d, ImVec2 origin, float
     dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), p, colour, text, nullptr, wrap);
 }
 
+// Over a viewer's image (x, y, width, height) while the mode writes no G-buffer: why it is empty.
+void noGBufferNote(glm::vec4 rect) {
+    if (rect.z <= 0.0f || rect.w <= 0.0f) return;
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    ImVec2 const min(rect.x, rect.y), max(rect.x + rect.z, rect.y + rect.w);
+    dl->AddRectFilled(min, max, IM_COL32(24, 24, 28, 255));
+    char const* text = "forward mode writes no G-buffer";
+    float const wrap = std::max(60.0f, rect.z - 12.0f);
+    ImVec2 const size = ImGui::CalcTextSize(text, nullptr, false, wrap);
+    ImVec2 const p((min.x + max.x - size.x) * 0.5f, (min.y + max.y - size.y) * 0.5f);
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), p, IM_COL32(235, 235, 235, 255), text, nullptr, wrap);
+}
+
 // The options of the whole G-buffer window, at the foot of every viewer's popover.
 void windowOptions(GBufferPanelState& state) {
     separatorText("all viewers");
@@ -226,6 +239,7 @@ void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& t
                     state.hoverPixel = texel;
                     if (!state.showMagnifier || !v.picked) state.activeViewer = int(i);
                 }
+                if (state.noGBuffer) noGBufferNote(state.imageRects[i]);
                 imageLabels(v, state.data[i], imageOrigin, cellWidth);
                 if (ImGui::IsItemClicked(ImGuiMouseButton_Right) || clicked) state.activeViewer = int(i);
                 if (clicked) state.showInViewport = viewerDebugView(v);
