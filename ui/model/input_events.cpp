@@ -76,6 +76,13 @@ Shortcut const* flyShortcut(int key) {
 
 }  // namespace
 
+glm::dvec2 wheelNotches(glm::dvec2 delta, int deltaMode) {
+    double const perNotch = deltaMode == 1   ? kWheelLinesPerNotch
+                            : deltaMode == 2 ? kWheelPagesPerNotch
+                                             : kWheelPixelsPerNotch;
+    return -delta / perNotch;  // a page scrolls down for a positive delta; the wheel then turned down
+}
+
 std::string describeEvent(InputEvent const& e) {
     char text[96];
     char const* action = e.action == kPress ? "press" : e.action == kRelease ? "release" : "repeat";
