@@ -1,6 +1,7 @@
 // --log-frames: what each frame did, for tests that drive the real window from outside.
 #include "editor_loop.h"
 
+#include "model/browser_files.h"
 #include "panels/clip_check.h"
 
 #include <imgui.h>
@@ -125,6 +126,8 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.windowShotItem = editor.windowShot.itemRect;
     line.gbufferBrowser = editor.loading.gbuffer.browser.open;
     line.timing = state.stats.last.timingSource;
+    line.status = editor.menuStatus;
+    if (ui::kInBrowser) line.browserLimits = ui::browserLimits(editor.browserAbout, state.stats.last.timingSource);
     for (PassTiming const& p : state.stats.last.passes) line.passMs.emplace_back(p.name, p.gpuMs);
     editor.frameLog.write(line);
 }

@@ -4,6 +4,7 @@
 
 #include "gl/gl_api.h"
 #include "gltf/loader.h"
+#include "model/browser_files.h"
 #include "model/window_fit.h"
 #include "panels/fonts.h"
 #include "panels/gui_compat.h"
@@ -307,8 +308,17 @@ std::optional<int> startEditor(Editor& editor) {
             return 2;
         }
     }
-    for (LightingMode mode : {LightingMode::Volumes, LightingMode::Tiled})
-        if (auto why = editor.renderer->modeUnavailable(mode)) ui::logMessage(state.log, *why);
+    // What this context cannot run. Natively a line each in the log; in the browser the menu bar
+    // keeps the scene's line, and Help > About this browser lists them with the page's other limits.
+    for (LightingMode mode : {LightingMode::Volumes, LightingMode::Tiled, LightingMode::Clustered})
+        if (auto why = editor.renderer->modeUnavailable(mode)) {
+            if (!ui::kInBrowser) {
+                if (mode != LightingMode::Clustered) ui::logMessage(state.log, *why);
+            } else {
+                editor.browserAbout.contextLimits.push_back(*why);
+                std::fprintf(stderr, "gbuffer-lab: %s\n", why->c_str());
+            }
+        }
     if (options.logFramesPath) {
         if (auto error = editor.frameLog.open(*options.logFramesPath)) {
             std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
