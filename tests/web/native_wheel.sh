@@ -2,7 +2,7 @@
 # The desktop's wheel, for tests/web/browser_test.py's wheel case (issue 50): one notch away from
 # the user (X button 4) over the viewport and one towards the user (button 5) over the Lessons
 # window's course, with real X events, in the native editor at 1280x720 on the default scene.
-# Prints one JSON line: the camera before and after the notch up, and the course's rows (x, y, width,
+# Prints one JSON line: the notch up as the frame log's event, the camera before and after it, and the course's rows (x, y, width,
 # height each, 0 while not wholly in view) before and after the notch down, as the frame log gives them.
 # usage: xvfb-run -a -s '-screen 0 1280x800x24' tests/web/native_wheel.sh GBUFFER_LAB WORK_DIR
 set -eu
@@ -25,6 +25,7 @@ set -- $(field viewport | tr -d '[]' | tr ',' ' ')
 xdotool mousemove --window "$wid" "$(echo "$1 + $3 / 2" | bc)" "$(echo "$2 + $4 / 2" | bc)"
 wait_frames 3
 camera0=$(field camera)
+from=$(lines)
 xdotool click 4
 i=0
 while [ "$(field camera)" = "$camera0" ]; do
@@ -34,6 +35,7 @@ while [ "$(field camera)" = "$camera0" ]; do
 done
 wait_frames 3
 camera1=$(field camera)
+scroll=$(tail -n +"$((from + 1))" "$log" | grep -o '"scroll [^"]*"' | head -n 1)
 
 set -- $(field courseRows | tr -d '[]' | tr ',' ' ')
 xdotool mousemove --window "$wid" "$(echo "$1 + $3 / 2" | bc)" "$(echo "$2 + $4 / 2" | bc)"
@@ -50,4 +52,5 @@ wait_frames 3
 rows1=$(field courseRows)
 kill "$pid" 2>/dev/null || true
 wait "$pid" 2>/dev/null || true
-printf '{"camera0":%s,"camera1":%s,"rows0":%s,"rows1":%s}\n' "$camera0" "$camera1" "$rows0" "$rows1"
+printf '{"scroll":%s,"camera0":%s,"camera1":%s,"rows0":%s,"rows1":%s}\n' "${scroll:-null}" "$camera0" "$camera1" \
+    "$rows0" "$rows1"

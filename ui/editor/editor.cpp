@@ -52,8 +52,8 @@ constexpr int kSettlingFrames = 3;
 void showPageWhenComplete(Editor& editor, bool rendered) {
     if (editor.pageFramesLeft == 0) return;
     if (editor.pageFramesLeft < 0) {
-        if (!rendered) return;
-        editor.pageFramesLeft = kSettlingFrames;
+        if (rendered) editor.pageFramesLeft = kSettlingFrames;
+        return;
     }
     if (--editor.pageFramesLeft > 0) return;
     editor.state.stats.count = 0;  // the next frame seeds the average again (ui::recordFrame)

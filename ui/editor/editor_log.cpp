@@ -62,7 +62,8 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.pickable = pickableLights(editor);
     line.events = editor.actions.applied;
     for (ui::InputEvent const& e : editor.input.imguiFrame.events)
-        if (e.kind == ui::InputKind::MouseButton) line.events.push_back(ui::describeEvent(e));
+        if (e.kind == ui::InputKind::MouseButton || e.kind == ui::InputKind::Scroll)
+            line.events.push_back(ui::describeEvent(e));
     line.actions = editor.actionLog;
     line.clipped = ui::clippedItems();
     line.sessionPath = editor.sessions->panel.currentPath;
