@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 using namespace gbl::ui;
@@ -280,6 +281,8 @@ TEST(InputEvents, BrowserWheelDeltasBecomeTheDesktopsNotches) {
     EXPECT_EQ(wheelNotches({0.0, -6.0}, 1), glm::dvec2(0.0, 2.0));
     // Sideways: right is negative on the desktop too (GLFW's button 7 gives -1).
     EXPECT_EQ(wheelNotches({100.0, 0.0}, 0), glm::dvec2(-1.0, 0.0));
+    // The still axis is +0, as the desktop's: the frame log writes -0 as "-0.00".
+    EXPECT_FALSE(std::signbit(wheelNotches({0.0, 100.0}, 0).x));
     // A touchpad's small steps stay small, not a whole notch each.
     EXPECT_DOUBLE_EQ(wheelNotches({0.0, 4.0}, 0).y, -0.04);
 }
