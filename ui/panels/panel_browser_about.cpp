@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 
 namespace gbl::ui {
 
@@ -25,7 +26,10 @@ constexpr std::array<char const*, 4> kPageLimits{
 
 std::vector<std::string> browserLimits(BrowserAboutState const& state, std::string const& timingSource) {
     std::vector<std::string> lines;
-    for (std::string const& limit : state.contextLimits) lines.push_back(limit + ".");
+    for (std::string line : state.contextLimits) {  // the renderer's words, as a sentence
+        if (!line.empty()) line[0] = char(std::toupper(static_cast<unsigned char>(line[0])));
+        lines.push_back(line + ".");
+    }
     if (timingSource == "cpu_finish")
         lines.push_back(
             "This browser offers no GPU timer queries: the Stats window's pass times are "
