@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Builds gbuffer-lab for the browser (WebGL2, Emscripten) into build-web/ (issue 29):
-# index.html (ours, app/web/index.html), gbuffer-lab.js and gbuffer-lab.wasm. Serve with
-#   python3 -m http.server -d build-web
+# Builds gbuffer-lab for the browser (WebGL2, Emscripten) in build-web/ (issue 29) and publishes the
+# page's four files into build-web/site/ (issue 50): index.html (ours, app/web/index.html),
+# gbuffer-lab.js, gbuffer-lab.wasm and gbuffer-lab.data. Serve with
+#   python3 -m http.server -d build-web/site
 # Toolchain and libraries come from Debian, as scripts/install-deps.sh installs the native ones;
 # Dear ImGui's sources come from Debian's source package, fetched under build-web/ with a private
 # apt configuration (the system's sources lists are not touched). Nothing third-party is committed.
@@ -62,5 +63,16 @@ export NODE_PATH="${NODE_PATH:-/usr/share/nodejs}"
 emcmake cmake -S "$root" -B "$out" -DCMAKE_BUILD_TYPE="$build_type" -DIMGUI_DIR="$imgui_dir" -DGBL_BUILD_TESTS=OFF
 emmake make -C "$out" -j"$jobs" gbuffer-lab-web
 cp "$root/app/web/index.html" "$out/index.html"
-echo "Built $out (index.html, gbuffer-lab.js, gbuffer-lab.wasm, gbuffer-lab.data) in $(( $(date +%s) - start )) s"
-echo "Serve with: python3 -m http.server -d $out"
+
+# 4. The site (issue 50): only what the page loads, in a folder of its own, so that serving it or
+#    copying it to a course page publishes nothing of the build (object files, CMakeCache.txt, the
+#    apt lists and ImGui's sources above). WEB_SITE_DIR puts it elsewhere.
+site="${WEB_SITE_DIR:-$out/site}"
+rm -rf "$site"
+mkdir -p "$site"
+cp "$root/app/web/index.html" "$site/index.html"
+cp "$out/gbuffer-lab.js" "$out/gbuffer-lab.wasm" "$out/gbuffer-lab.data" "$site/"
+size_kb=$(du -sk "$site" | cut -f1)
+gzip_kb=$(( $(cat "$site"/* | gzip -9 | wc -c) / 1024 ))
+echo "Built in $(( $(date +%s) - start )) s; the site: $site (index.html, gbuffer-lab.js, gbuffer-lab.wasm, gbuffer-lab.data: ${size_kb} KB, ${gzip_kb} KB gzipped)"
+echo "Serve with: python3 -m http.server -d $site"

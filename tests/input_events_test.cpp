@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 using namespace gbl::ui;
@@ -268,4 +269,20 @@ TEST(InputEvents, ProjectorKeysStepViewLightingCullAndBlit) {
     // They wait, like the others, while a text field has the keyboard.
     FrameActions const b = f.frame({key(keys::M, kPress)}, 0.4, true, true);
     EXPECT_TRUE(b.taps.empty());
+}
+
+TEST(InputEvents, BrowserWheelDeltasBecomeTheDesktopsNotches) {
+    // One notch towards the user (the page would scroll down) in each of the browser's units.
+    EXPECT_EQ(wheelNotches({0.0, 100.0}, 0), glm::dvec2(0.0, -1.0));  // Chromium: 100 pixels
+    EXPECT_EQ(wheelNotches({0.0, 3.0}, 1), glm::dvec2(0.0, -1.0));    // Firefox: 3 lines
+    EXPECT_EQ(wheelNotches({0.0, 1.0}, 2), glm::dvec2(0.0, -1.0));    // one screen at a time
+    // Away from the user: the desktop's +1, as X11's button 4.
+    EXPECT_EQ(wheelNotches({0.0, -100.0}, 0), glm::dvec2(0.0, 1.0));
+    EXPECT_EQ(wheelNotches({0.0, -6.0}, 1), glm::dvec2(0.0, 2.0));
+    // Sideways: right is negative on the desktop too (GLFW's button 7 gives -1).
+    EXPECT_EQ(wheelNotches({100.0, 0.0}, 0), glm::dvec2(-1.0, 0.0));
+    // The still axis is +0, as the desktop's: the frame log writes -0 as "-0.00".
+    EXPECT_FALSE(std::signbit(wheelNotches({0.0, 100.0}, 0).x));
+    // A touchpad's small steps stay small, not a whole notch each.
+    EXPECT_DOUBLE_EQ(wheelNotches({0.0, 4.0}, 0).y, -0.04);
 }

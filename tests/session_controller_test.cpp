@@ -304,3 +304,69 @@ TEST(SessionController, WithAGBufferOpenSessionsStoreTheSceneBehindIt) {
     EXPECT_TRUE(c.hasUnsavedEdits(f.state));
     c.endCleanly();
 }
+
+TEST(SessionController, LookingAroundIsNotAutosavedAndNothingIsOfferedForIt) {
+    // A page reloaded with no input, or a camera moved and the tab closed: nothing the student
+    // changed, so the next start offers nothing.
+    Fixture f("controller_look_around");
+    RecoveryDir const dir(f.dir);
+    long const gone = deadPid();
+    {
+        SessionController c(f.clock(), dir, gone);
+        c.start(f.state, 32);
+        f.state.camera.position.x += 3.0f;
+        f.state.animation.time += 2.0f;
+        f.run(c, 25.0);
+        EXPECT_EQ(c.autosaves(), 0);
+        EXPECT_FALSE(fs::exists(dir.sessionPath(gone)));
+    }  // no endCleanly: the page went as a reload leaves it
+    SessionController next(f.clock(), dir, 5010);
+    next.start(f.state, 32);
+    EXPECT_FALSE(next.panel.recoveryOffer);
+}
+
+TEST(SessionController, SavingOrUndoingTheEditsRemovesTheAutosave) {
+    Fixture f("controller_saved_edits");
+    SessionController c(f.clock(), RecoveryDir(f.dir), 5011, {3.0, 20.0});
+    c.start(f.state, 32);
+    f.state.lights[1].intensity = 4.5f;
+    f.run(c, 4.0);
+    ASSERT_EQ(c.autosaves(), 1);
+    ASSERT_TRUE(fs::exists(c.recoveryPath()));
+    ASSERT_EQ(c.saveSession(f.dir + "/saved.json", f.state), std::nullopt);
+    EXPECT_FALSE(fs::exists(c.recoveryPath())) << "saved: a reload has nothing to offer";
+
+    f.state.lights[1].intensity = 9.0f;
+    f.run(c, 4.0);
+    ASSERT_EQ(c.autosaves(), 2);
+    ASSERT_TRUE(fs::exists(c.recoveryPath()));
+    f.state.lights[1].intensity = 4.5f;  // back to what was saved
+    f.run(c, 4.0);
+    EXPECT_EQ(c.autosaves(), 2);
+    EXPECT_FALSE(fs::exists(c.recoveryPath())) << "undone: nothing unsaved is left to offer";
+}
+
+TEST(SessionController, TheOfferSaysHowOldTheChangesAreInWords) {
+    Fixture f("controller_offer_words");
+    RecoveryDir const dir(f.dir);
+    long const gone = deadPid();
+    ASSERT_EQ(dir.beginRun(gone), std::nullopt);
+    Session lost = captureSession(f.state, 32);
+    lost.lights.resize(6);
+    ASSERT_EQ(saveSession(dir.sessionPath(gone), lost), std::nullopt);
+    fs::last_write_time(dir.sessionPath(gone), fs::file_time_type::clock::now() - std::chrono::seconds(190));
+    SessionController c(f.clock(), dir, 5012);
+    c.start(f.state, 32);
+    ASSERT_TRUE(c.panel.recoveryOffer);
+    EXPECT_EQ(c.panel.recoveryTitle, "Your changes from 3 minutes ago were not saved.");
+    EXPECT_EQ(c.panel.recoveryWhy, "They can be restored: 6 lights, the default scene.");
+    EXPECT_NE(c.panel.recoveryCause.find("did not exit cleanly"), std::string::npos) << c.panel.recoveryCause;
+}
+
+TEST(Recovery, AgeInWords) {
+    EXPECT_EQ(ageInWords(5.0), "a moment ago");
+    EXPECT_EQ(ageInWords(61.0), "1 minute ago");
+    EXPECT_EQ(ageInWords(179.0), "2 minutes ago");
+    EXPECT_EQ(ageInWords(3 * 3600.0 + 5.0), "3 hours ago");
+    EXPECT_EQ(ageInWords(3 * 86400.0), "3 days ago");
+}

@@ -30,8 +30,14 @@ int main(int argc, char** argv) {
         return 2;
     }
     if (auto const exitCode = gbl::finishEditorOptions(cli)) return *exitCode;
-    if (!checkLessons.empty()) return gbl::checkLessonsInBrowser(checkLessons);
-    if (!benchRenderer.empty()) return gbl::benchRendererInBrowser(benchRenderer);
+    if (!checkLessons.empty() || !benchRenderer.empty()) {
+        // No editor: the page's loading line (app/web/index.html) goes now, not at a first frame.
+        EM_ASM({
+            if (Module['gblShowEditor']) Module['gblShowEditor']();
+        });
+        return !checkLessons.empty() ? gbl::checkLessonsInBrowser(checkLessons)
+                                     : gbl::benchRendererInBrowser(benchRenderer);
+    }
     if (!cli.editor.sizeGiven) {
         int width = 0, height = 0;
         emscripten_get_canvas_element_size("#canvas", &width, &height);

@@ -3,12 +3,13 @@
 (SwiftShader), driven through the DevTools protocol over a pipe (--remote-debugging-pipe): no
 package beyond Python's standard library and chromium.
 
-  tests/web/browser_test.py [--site build-web] [--out DIR] [--only NAME ...]
+  tests/web/browser_test.py [--site build-web/site] [--out DIR] [--only NAME ...] [--native BIN]
 
-Serves the folder scripts/build-web.sh made, opens a fresh page per case and reads the editor's
+Serves the folder scripts/build-web.sh publishes (build-web/site), opens a fresh page per case and reads the editor's
 frame log, which the page writes to the console (?log-frames=/dev/stdout). Input goes through
 Input.dispatchMouseEvent: the browser's own input path, as a user's mouse would. Each case prints
-one PASS or FAIL line; the exit code is the number of failed cases (0: all passed).
+one PASS, FAIL or SKIP line (a SKIP says why the case could not run here), and the last line counts
+them apart; the exit code is the number of failed cases (0: none failed).
 
 Cases:
   default    the default scene renders lit in the viewport (pixels of the screenshot, at the
@@ -28,7 +29,6 @@ Cases:
              from ../shared/gltf (skipped when absent), opens it;
   documents  a session file and a lesson file given to the page's picker open as a session and
              as a lesson;
-  recovery   an edit, then a reload without saving: the next page offers the autosaved session;
   folder     File > Open folder... answered with a folder holding a glTF whose buffer and texture sit
              in subfolders (made from ../shared/gltf/Duck at run time; skipped when absent) opens it
              textured and lit; the same folder dropped on the page (Input.dispatchDragEvent) opens
@@ -39,7 +39,10 @@ Cases:
              float scanlines) at the frame's size, depth within [0, 1];
   screenshot File > Save window as PNG: one download, a PNG of the whole window;
   timing     the passes are timed in the GPU process (EXT_disjoint_timer_query_webgl2) where the
-             browser offers it, each with its own work: 31 lights fewer shrink lighting, not geometry.
+             browser offers it, each with its own work: 31 lights fewer shrink lighting, not geometry;
+  site, loading, recovery, wheel, limits: tests/web/page_cases.py (the published folder, the
+             loading line, unsaved changes over reloads, the wheel against the desktop's notches,
+             the lessons the browser cannot run and the menu bar's status).
 
 --bench prints the site's download size, the editor's frame time in the browser and the renderer's
 alone per mode (?bench-renderer=MODE) instead.
@@ -64,6 +67,10 @@ import time
 import zlib
 
 WIDTH, HEIGHT = 1280, 720
+
+
+class Skip(Exception):
+    """A case that could not run here: it prints SKIP with this reason and counts apart."""
 
 
 # ---- the page's server ------------------------------------------------------------------------
@@ -481,8 +488,7 @@ def case_gltf(browser, base, out):
                           "..", "shared", "gltf", "Duck")
     files = [os.path.abspath(os.path.join(shared, f)) for f in ("Duck.gltf", "Duck0.bin", "DuckCM.png")]
     if not all(os.path.isfile(f) for f in files):
-        print(f"  skipped: {shared} is absent (the shared glTF models)")
-        return None
+        raise Skip(f"{os.path.abspath(shared)} is absent (the shared glTF models)")
     page = Page(browser, base + "?log-frames=/dev/stdout")
     page.cmd("Page.setInterceptFileChooserDialog", {"enabled": True})
     page.wait_for("a rendered frame", lambda: any(f.get("rendered") for f in page.frames), 120)
@@ -632,26 +638,6 @@ def case_documents(browser, base, out):
     return page
 
 
-def case_recovery(browser, base, out):
-    # An edit, then the page goes without saving (a reload): the next page offers the autosaved
-    # session, as a desktop editor offers a crashed one's (the browser's storage keeps it).
-    page = Page(browser, base + "?log-frames=/dev/stdout", (1600, 900))
-    page.wait_for("a rendered frame", lambda: any(f.get("rendered") for f in page.frames), 120)
-    kq = page.wait_frames(3)["kqField"]
-    assert kq[2] > 0, f"the Kq field is not drawn: {kq}"
-    y = kq[1] + kq[3] / 2
-    page.drag(kq[0] + kq[2] / 2, y, kq[0] + kq[2] / 2 + 80, y)
-    page.pump(8.0)  # the autosave waits 3 s after the last change; the storage is written every 2 s
-    page.cmd("Page.reload")
-    page.frames.clear()
-    offered = lambda: [c for c in page.console if "did not exit cleanly; its session is offered" in c]
-    page.wait_for("the recovery offer after the reload", offered, 120)
-    print("  " + offered()[0])
-    page.wait_frames(3)
-    page.screenshot(os.path.join(out, "recovery.png"))
-    return page
-
-
 def case_timing(browser, base, out):
     # The passes are timed in the GPU process with EXT_disjoint_timer_query_webgl2 where the browser
     # offers it: each pass's figure must be its own work. With 1 light instead of 32 the lighting
@@ -672,8 +658,8 @@ def case_timing(browser, base, out):
     print(f"  EXT_disjoint_timer_query_webgl2 offered: {offered}; timing: {timing}")
     if not offered:
         assert timing == "cpu_finish", f"no timer queries here, yet the passes are timed by {timing}"
-        print("  SKIP: this chromium offers no timer queries; the Stats window says the passes are not timed")
-        return page
+        raise Skip("this chromium offers no timer queries (EXT_disjoint_timer_query_webgl2), so no pass is "
+                   "timed on the GPU; checked only that the Stats window says the passes are not timed")
     assert timing == "gpu_elapsed", f"timer queries are offered, yet the passes are timed by {timing}"
     print("  32 lights: " + ", ".join(f"{k} {v:.1f}" for k, v in many.items()) + f" ms; frame to frame {frame_ms:.0f} ms")
     page.screenshot(os.path.join(out, "timing.png"))
@@ -742,8 +728,7 @@ def case_folder(browser, base, out):
     try:
         duck, shared = copy_duck_into_subfolders(work)
         if not duck:
-            print(f"  skipped: {shared} is absent (the shared glTF models)")
-            return None
+            raise Skip(f"{shared} is absent (the shared glTF models)")
         page = Page(browser, base + "?log-frames=/dev/stdout")
         page.cmd("Page.setInterceptFileChooserDialog", {"enabled": True})
         page.wait_for("a rendered frame", lambda: any(f.get("rendered") for f in page.frames), 120)
@@ -882,14 +867,25 @@ def case_screenshot(browser, base, out):
 
 
 CASES = {"default": case_default, "lessons": case_lessons, "input": case_input, "storage": case_storage,
-         "gltf": case_gltf, "documents": case_documents, "recovery": case_recovery, "folder": case_folder,
+         "gltf": case_gltf, "documents": case_documents, "folder": case_folder,
          "export": case_export, "screenshot": case_screenshot, "timing": case_timing}
+# The published folder, the loading line, the wheel, unsaved changes and what the browser cannot
+# run (issue 50): tests/web/page_cases.py, with this module's Page and helpers.
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.dont_write_bytecode = True  # no __pycache__ beside the tests
+import page_cases  # noqa: E402
+
+page_cases.register(CASES, sys.modules[__name__])
 
 
 def main():
     root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--site", default=os.path.join(root, "build-web"))
+    parser.add_argument("--site", default=os.path.join(root, "build-web", "site"),
+                        help="the published folder scripts/build-web.sh makes (build-web/site)")
+    parser.add_argument("--native", default=None,
+                        help="the native editor: the wheel case measures the desktop's notch with it (under "
+                             "xvfb-run, xdotool) instead of using the figures recorded from it")
     parser.add_argument("--out", default=None, help="keep screenshots and logs here")
     parser.add_argument("--only", nargs="*", choices=sorted(CASES), default=None)
     parser.add_argument("--bench", action="store_true", help="print frame time and download size instead")
@@ -902,6 +898,7 @@ def main():
     if not shutil.which("chromium"):
         print("browser_test: chromium is not installed (scripts/build-web.sh installs it)", file=sys.stderr)
         return 1
+    page_cases.SETTINGS.update(site=args.site, native=args.native)
     out = args.out or tempfile.mkdtemp(prefix="gbl-web-")
     os.makedirs(out, exist_ok=True)
     server, port = serve(args.site)
@@ -910,8 +907,9 @@ def main():
         bench(args.site, base, out, query=args.bench_query)
         server.shutdown()
         return 0
-    failures = 0
-    for name in args.only or list(CASES):
+    failures = skipped = 0
+    names = args.only or list(CASES)
+    for name in names:
         profile = tempfile.mkdtemp(prefix="gbl-chromium-")
         browser = Browser(profile, os.path.join(out, "chromium.log"))
         started = time.monotonic()
@@ -922,6 +920,9 @@ def main():
                 page.pump(0.5)
                 assert not page.errors, "the console shows errors: " + " | ".join(page.errors[:5])
             print(f"browser_test {name}: PASS ({time.monotonic() - started:.1f} s)")
+        except Skip as e:
+            skipped += 1
+            print(f"browser_test {name}: SKIP: {e}")
         except (AssertionError, RuntimeError) as e:
             failures += 1
             print(f"browser_test {name}: FAIL: {e}")
@@ -934,7 +935,8 @@ def main():
             browser.close()
             shutil.rmtree(profile, ignore_errors=True)
     server.shutdown()
-    print(f"browser_test: screenshots and logs in {out}")
+    print(f"browser_test: {len(names) - failures - skipped} passed, {failures} failed, {skipped} skipped "
+          f"of {len(names)}; screenshots and logs in {out}")
     return failures
 
 

@@ -23,9 +23,10 @@ bool running(Editor& editor) {
     return !glfwWindowShouldClose(editor.window()) && !editor.state.quitRequested;
 }
 
-void runFrame(Editor& editor) {
+// One frame; true when it rendered the scene.
+bool runFrame(Editor& editor) {
     FrameTimes times;
-    if (!beginFrame(editor, times)) return;
+    if (!beginFrame(editor, times)) return false;
     renderScene(editor, times);
     reloadShaders(editor);
 
@@ -37,14 +38,37 @@ void runFrame(Editor& editor) {
 
     present(editor, times);
     recordFrame(editor, times);
+    return times.rendered;
 }
 
 #ifdef __EMSCRIPTEN__
+// The frames after the scene first rendered that complete the editor: ImGui sizes its windows on
+// the frame after it first meets them, and the viewers fit their ranges to what was rendered.
+constexpr int kSettlingFrames = 3;
+
+// The page (app/web/index.html) covers the canvas with a loading line until the first complete
+// frame, so a quick screenshot never shows a half-drawn editor. The frames before it count the
+// shaders' compiling: the Stats window's frame time starts afresh when the editor is shown.
+void showPageWhenComplete(Editor& editor, bool rendered) {
+    if (editor.pageFramesLeft == 0) return;
+    if (editor.pageFramesLeft < 0) {
+        if (rendered) editor.pageFramesLeft = kSettlingFrames;
+        return;
+    }
+    if (--editor.pageFramesLeft > 0) return;
+    editor.state.stats.count = 0;  // the next frame seeds the average again (ui::recordFrame)
+    editor.state.stats.next = 0;
+    std::printf("gbuffer-lab: the editor is shown at frame %d, its first complete one\n", int(editor.frame));
+    EM_ASM({
+        if (Module['gblShowEditor']) Module['gblShowEditor']();
+    });
+}
+
 // One browser frame; the editor lives until the page goes, unless it quits (--frames, a UI test).
 void browserFrame(void* user) {
     auto* editor = static_cast<Editor*>(user);
     bool const wasIdle = editor->idle;
-    runFrame(*editor);
+    showPageWhenComplete(*editor, runFrame(*editor));
     // Idle, the page's frame callback runs every third display frame (1/20 s at 60 Hz), as the
     // desktop editor waits up to 1/20 s for an event; back to every frame at the next change.
     if (editor->idle != wasIdle) emscripten_set_main_loop_timing(EM_TIMING_RAF, editor->idle ? 3 : 1);

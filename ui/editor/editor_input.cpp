@@ -8,6 +8,10 @@
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 
+#ifdef __EMSCRIPTEN__
+#include <emscripten/html5.h>
+#endif
+
 namespace gbl {
 
 namespace {
@@ -55,12 +59,25 @@ void onMouseButton(GLFWwindow*, int button, int action, int mods) {
     push(e);
 }
 
+#ifndef __EMSCRIPTEN__
 void onScroll(GLFWwindow*, double x, double y) {
     ui::InputEvent e;
     e.kind = ui::InputKind::Scroll;
     e.value = {x, y};
     push(e);
 }
+#else
+// The browser's wheel, read here rather than through GLFW: Emscripten's GLFW hands the scroll
+// callback the raw deltaY (pixels, positive as the page scrolls down), about 100 times a desktop
+// notch and reversed. The event's deltaMode says its unit; wheelNotches makes it the desktop's.
+EM_BOOL onBrowserWheel(int, EmscriptenWheelEvent const* w, void*) {
+    ui::InputEvent e;
+    e.kind = ui::InputKind::Scroll;
+    e.value = ui::wheelNotches({w->deltaX, w->deltaY}, int(w->deltaMode));
+    push(e);
+    return EM_TRUE;  // the page itself does not scroll
+}
+#endif
 
 void onCursor(GLFWwindow*, double x, double y) {
     ui::InputEvent e;
@@ -88,7 +105,11 @@ void installInputCallbacks(GLFWwindow* window, EditorInput& input) {
     glfwSetKeyCallback(window, onKey);
     glfwSetCharCallback(window, onChar);
     glfwSetMouseButtonCallback(window, onMouseButton);
+#ifdef __EMSCRIPTEN__
+    emscripten_set_wheel_callback("#canvas", nullptr, EM_TRUE, onBrowserWheel);
+#else
     glfwSetScrollCallback(window, onScroll);
+#endif
     glfwSetCursorPosCallback(window, onCursor);
     glfwSetWindowFocusCallback(window, onFocus);
     glfwSetCursorEnterCallback(window, onCursorEnter);
@@ -104,7 +125,11 @@ void removeInputCallbacks(GLFWwindow* window) {
     glfwSetKeyCallback(window, nullptr);
     glfwSetCharCallback(window, nullptr);
     glfwSetMouseButtonCallback(window, nullptr);
+#ifdef __EMSCRIPTEN__
+    emscripten_set_wheel_callback("#canvas", nullptr, EM_TRUE, nullptr);
+#else
     glfwSetScrollCallback(window, nullptr);
+#endif
     glfwSetCursorPosCallback(window, nullptr);
     glfwSetWindowFocusCallback(window, nullptr);
     glfwSetCursorEnterCallback(window, nullptr);

@@ -3,6 +3,7 @@
 // open a file) with one undo entry per step.
 #include "editor_loop.h"
 
+#include "model/browser_files.h"
 #include "model/lesson_claims.h"
 #include "model/lesson_text.h"
 #include "panels/panel_glossary.h"
@@ -27,6 +28,55 @@ void report(Editor& editor, std::string message, bool error) {
 
 glm::ivec2 frameSize(Editor const& editor) {
     return {editor.renderer->width(), editor.renderer->height()};
+}
+
+// What a lesson snapshot needs that this context cannot run: the reason of its lighting mode or
+// its A/B side's (the renderer's words), or nullopt when it runs.
+std::optional<std::string> snapshotUnavailable(Editor& editor, ui::LessonSnapshot const& shot) {
+    if (auto why = editor.renderer->modeUnavailable(shot.pipeline.mode)) return why;
+    if (shot.ab)
+        if (auto why = editor.renderer->modeUnavailable(shot.ab->b.mode)) return why;
+    return std::nullopt;
+}
+
+char const* contextName() {
+    return ui::kInBrowser ? "this browser" : "this OpenGL context";
+}
+
+// The course's note per lesson: how many of its steps this context cannot run, and why.
+void noteLessonLimits(Editor& editor) {
+    LessonState& l = editor.course.lessons;
+    auto const& lessons = editor.course.library.lessons;
+    l.lessonNotes.assign(lessons.size(), std::string());
+    for (std::size_t i = 0; i < lessons.size(); ++i) {
+        int blocked = 0;
+        std::optional<std::string> first;
+        for (ui::LessonStep const& step : lessons[i].steps)
+            if (auto why = snapshotUnavailable(editor, step.state)) {
+                ++blocked;
+                if (!first) first = why;
+            }
+        if (blocked == 0) continue;
+        l.lessonNotes[i] = std::to_string(blocked) + " of " + std::to_string(lessons[i].steps.size()) +
+                           " steps cannot run in " + contextName() + ": " + *first + ".";
+    }
+}
+
+// Applies what a step shows, except a lighting mode this context cannot run: the viewport then
+// keeps the mode it had (quad if that one cannot run either), A/B is off, and the step says so.
+void applyShown(Editor& editor, ui::LessonSnapshot const& shown) {
+    LightingMode const running = editor.state.pipeline.mode;
+    ui::applyLessonSnapshot(shown, editor.state, frameSize(editor));
+    LessonState& l = editor.course.lessons;
+    l.stepNote.clear();
+    std::optional<std::string> const why = snapshotUnavailable(editor, shown);
+    if (!why) return;
+    LightingMode const kept = editor.renderer->modeUnavailable(running) ? LightingMode::Quad : running;
+    editor.state.pipeline.mode = kept;
+    editor.state.ab.enabled = false;
+    l.stepNote = std::string("This step cannot run in ") + contextName() + ": " + *why + ". The viewport stays in " +
+                 std::string(enumName(kLightingModeNames, kept)) +
+                 " mode; the text and the question still hold, and the desktop editor shows the step.";
 }
 
 // Reads the progress file once, with the lessons. A file that cannot be read gives one message and
@@ -106,7 +156,7 @@ void showStep(Editor& editor, int step) {
     bool const before = s.predict && s.predict->before;
     ui::LessonSnapshot shown = before ? *s.predict->before : s.state;
     if (before) shown.pixel = s.state.pixel;
-    ui::applyLessonSnapshot(shown, editor.state, frameSize(editor));
+    applyShown(editor, shown);
     editor.sessions->commitLessonStep(editor.state);
     editor.sessions->lessonStepShown(editor.state);
     editor.actionLog.push_back("lesson " + lesson.id + " step " + std::to_string(l.step + 1));
@@ -203,7 +253,7 @@ void checkPrediction(Editor& editor) {
     l.predicted = true;
     l.tasks = ui::startTasks(s.tasks.size(), nowSeconds());  // the tasks start with the step's change
     if (s.predict->before) {
-        ui::applyLessonSnapshot(s.state, editor.state, frameSize(editor));
+        applyShown(editor, s.state);
         editor.sessions->commitLessonStep(editor.state);
         editor.sessions->lessonStepShown(editor.state);
     }
@@ -225,6 +275,7 @@ void leave(Editor& editor) {
     l.lesson = -1;
     l.step = 0;
     l.tasks.clear();
+    l.stepNote.clear();
     if (sceneError) {
         report(editor,
                "left the lesson, but its scene stays: " + l.sceneBefore + " could not be loaded again: " + *sceneError,
@@ -305,6 +356,7 @@ void open(Editor& editor, std::string const& path) {
     else
         *it = std::move(*load.lesson);
     editor.course.lessons.picked = int(it - lessons.begin());
+    noteLessonLimits(editor);
     report(editor, "opened " + path, false);
 }
 
@@ -354,6 +406,9 @@ void lessonLogFields(Editor const& editor, ui::FrameLogLine& line) {
     line.lessonGlossary = editor.glossaryWindow.open;
     line.lessonGlossaryTerm = editor.glossaryWindow.shownTerm;
     line.view = std::string(enumName(kDebugViewNames, editor.state.pipeline.view));
+    line.mode = std::string(enumName(kLightingModeNames, editor.state.pipeline.mode));
+    line.lessonNote = l.lesson >= 0 ? l.stepNote : std::string();
+    line.courseNotes = l.lessonNotes;
     line.courseRows = l.courseRows;
     line.courseRestart = l.courseRestart;
     line.nextLesson = l.nextLessonButton;
@@ -373,6 +428,7 @@ void drawLessons(Editor& editor) {
         editor.course.loaded = true;
         for (auto const& e : editor.course.library.errors) ui::logMessage(editor.state.log, e, true);
         loadProgress(editor);
+        noteLessonLimits(editor);
         editor.course.glossary = ui::loadGlossary(ui::defaultGlossaryPath());
         if (!editor.course.glossary.error.empty()) ui::logMessage(editor.state.log, editor.course.glossary.error, true);
         if (editor.options.lesson) {

@@ -1,6 +1,7 @@
 // --log-frames: what each frame did, for tests that drive the real window from outside.
 #include "editor_loop.h"
 
+#include "model/browser_files.h"
 #include "panels/clip_check.h"
 
 #include <imgui.h>
@@ -61,7 +62,8 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.pickable = pickableLights(editor);
     line.events = editor.actions.applied;
     for (ui::InputEvent const& e : editor.input.imguiFrame.events)
-        if (e.kind == ui::InputKind::MouseButton) line.events.push_back(ui::describeEvent(e));
+        if (e.kind == ui::InputKind::MouseButton || e.kind == ui::InputKind::Scroll)
+            line.events.push_back(ui::describeEvent(e));
     line.actions = editor.actionLog;
     line.clipped = ui::clippedItems();
     line.sessionPath = editor.sessions->panel.currentPath;
@@ -125,6 +127,8 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.windowShotItem = editor.windowShot.itemRect;
     line.gbufferBrowser = editor.loading.gbuffer.browser.open;
     line.timing = state.stats.last.timingSource;
+    line.status = editor.menuStatus;
+    if (ui::kInBrowser) line.browserLimits = ui::browserLimits(editor.browserAbout, state.stats.last.timingSource);
     for (PassTiming const& p : state.stats.last.passes) line.passMs.emplace_back(p.name, p.gpuMs);
     editor.frameLog.write(line);
 }

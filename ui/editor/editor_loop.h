@@ -16,6 +16,7 @@
 #include "model/lesson_state.h"
 #include "model/render_inputs.h"
 #include "model/scene_loading.h"
+#include "panels/panel_browser_about.h"
 #include "panels/panel_glossary.h"
 #include "panels/panel_pipeline.h"
 #include "renderer.h"
@@ -107,6 +108,9 @@ struct Editor {
 
     EditorOptions const options;  // a copy: in the browser the editor outlives main's locals
     bool idle = false;            // the last frame rendered nothing and took no input (present())
+    // The browser's page shows a loading line until the first complete frame (editor.cpp,
+    // showPageWhenComplete): -1 until the scene first rendered, then the frames left, 0 once shown.
+    int pageFramesLeft = -1;
     GlfwSession glfw;
     GlCaps caps;
     bool unattended = false;  // screenshots, UI tests, frame counts: no vsync, layout file or recovery
@@ -129,6 +133,8 @@ struct Editor {
     std::uint64_t sceneGeneration = 1;       // counts scenes handed to the renderer
     ui::CameraView home;                     // the scene's view (Home)
     bool showShortcuts = false;              // Help > Shortcuts
+    ui::BrowserAboutState browserAbout;      // Help > About this browser (the browser build's)
+    std::string menuStatus;                  // the menu bar's status as last drawn, for --log-frames
     ui::DiscardGuard discard;                // Quit / New / Open over unsaved edits
     ui::FrameLog frameLog;                   // --log-frames
     ui::PipelinePanelRects pipelineRects;    // where the Pipeline window drew its layout combo (--log-frames)

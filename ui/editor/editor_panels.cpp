@@ -123,12 +123,14 @@ EditRequest drawMainMenu(Editor& editor) {
     if (ImGui::BeginMenu("Help")) {
         if (ImGui::MenuItem("Shortcuts", keysFor(ui::EditorAction::ShowShortcuts))) editor.showShortcuts = true;
         if (ImGui::MenuItem("Glossary")) editor.glossaryWindow.open = true;
+        if (ui::kInBrowser && ImGui::MenuItem("About this browser")) editor.browserAbout.open = true;
         ImGui::EndMenu();
     }
     GlCaps const& caps = editor.caps;
     // Status on the right: context and the newest log line.
     std::string status = caps.renderer + " | GL " + std::to_string(caps.major) + "." + std::to_string(caps.minor);
     if (!state.log.lines.empty()) status = state.log.lines.back() + "   " + status;
+    editor.menuStatus = status;
     float const width = ImGui::CalcTextSize(status.c_str()).x;
     float const x = ImGui::GetWindowWidth() - width - 12.0f;
     if (x > ImGui::GetCursorPosX()) {
@@ -219,6 +221,9 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     ui::drawSplitHandles(state.layout);  // after every tiled window, so the handles lie over their edges
     ui::drawSceneLoadingUi(editor.loading);
     ui::drawShortcutsWindow(editor.showShortcuts);
+    if (ui::kInBrowser)
+        ui::drawBrowserAboutWindow(editor.browserAbout,
+                                   ui::browserLimits(editor.browserAbout, state.stats.last.timingSource));
     ui::drawDiscardConfirmation(editor.discard);
     return edit;
 }

@@ -4,6 +4,7 @@
 
 #include "gl/gl_api.h"
 #include "gltf/loader.h"
+#include "model/browser_files.h"
 #include "model/window_fit.h"
 #include "panels/fonts.h"
 #include "panels/gui_compat.h"
@@ -307,8 +308,21 @@ std::optional<int> startEditor(Editor& editor) {
             return 2;
         }
     }
-    for (LightingMode mode : {LightingMode::Volumes, LightingMode::Tiled})
-        if (auto why = editor.renderer->modeUnavailable(mode)) ui::logMessage(state.log, *why);
+    // What this context cannot run. Natively a line each in the log (volumes and tiled: asking
+    // builds a mode's programs, and clustered waits until it is chosen); in the browser, where no
+    // compute mode builds, the menu bar keeps the scene's line and Help > About this browser lists
+    // them with the page's other limits.
+    for (LightingMode mode : {LightingMode::Volumes, LightingMode::Tiled, LightingMode::Clustered}) {
+        if (!ui::kInBrowser && mode == LightingMode::Clustered) continue;
+        std::optional<std::string> const why = editor.renderer->modeUnavailable(mode);
+        if (!why) continue;
+        if (!ui::kInBrowser) {
+            ui::logMessage(state.log, *why);
+            continue;
+        }
+        editor.browserAbout.contextLimits.push_back(*why);
+        std::fprintf(stderr, "gbuffer-lab: %s\n", why->c_str());
+    }
     if (options.logFramesPath) {
         if (auto error = editor.frameLog.open(*options.logFramesPath)) {
             std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());

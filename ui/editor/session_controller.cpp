@@ -47,12 +47,7 @@ void SessionController::start(EditorState& state, int defaultSceneLights) {
     for (auto const& u : unclean) {
         if (!u.sessionPath.empty() && !panel.recoveryOffer) {
             panel.recoveryOffer = u;
-            SessionLoad const peek = loadSession(u.sessionPath);
-            panel.recoveryWhy = peek.session ? "Its autosaved session (" + std::to_string(peek.session->lights.size()) +
-                                                   " lights, scene " + peek.session->scene + ") can be restored."
-                                             : "Its autosave cannot be read: " + peek.error;
-            logMessage(state.log, "an earlier editor (pid " + std::to_string(u.pid) +
-                                      ") did not exit cleanly; its session is offered");
+            offerText(state, u);
         } else {
             recovery_->discard(u);  // nothing saved, or an older crash than the one offered
         }
@@ -61,6 +56,36 @@ void SessionController::start(EditorState& state, int defaultSceneLights) {
         logMessage(state.log, "crash recovery is off: " + *err, true);
         recovery_.reset();
     }
+}
+
+void SessionController::offerText(EditorState& state, UncleanExit const& u) {
+    // An autosave holds edits that were never saved (autosaveNow writes nothing else), so the
+    // offer speaks of them. In the browser closing or reloading the tab is the page's normal end:
+    // no crash is named there, and the path is the page's own file system, of no use to a student.
+    std::string const age = ageInWords(fileClockSeconds() - u.modifiedSeconds);
+    panel.recoveryTitle = "Your changes from " + age + " were not saved.";
+    SessionLoad const peek = loadSession(u.sessionPath);
+    if (peek.session) {
+        std::string const scene = peek.session->scene == "default"
+                                      ? std::string("the default scene")
+                                      : "the scene " + fs::path(peek.session->scene).filename().string();
+        panel.recoveryWhy = "They can be restored: " + std::to_string(peek.session->lights.size()) + " lights, " +
+                            scene + (kInBrowser ? " (kept in this browser)." : ".");
+    } else {
+        panel.recoveryWhy = "They cannot be read back: " + peek.error;
+    }
+    panel.recoveryCause = kInBrowser ? std::string()
+                                     : "gbuffer-lab (pid " + std::to_string(u.pid) +
+                                           ") did not exit cleanly; its autosave is " + u.sessionPath;
+    logMessage(state.log, kInBrowser ? "your unsaved changes from " + age + " are offered to restore"
+                                     : "an earlier editor (pid " + std::to_string(u.pid) +
+                                           ") did not exit cleanly; its unsaved changes from " + age + " are offered");
+}
+
+void SessionController::forgetAutosave() {
+    if (!recovery_ || !autosaveWritten_) return;
+    recovery_->forgetSession(pid_);
+    autosaveWritten_ = false;
 }
 
 void SessionController::afterFrame(EditorState& state, bool editing) {
@@ -82,12 +107,21 @@ void SessionController::afterFrame(EditorState& state, bool editing) {
 bool SessionController::autosaveNow(EditorState const& state) {
     if (!recovery_ || !autosave_.pending()) return false;
     std::string const text = sessionToJson(captured(state));
+    if (!hasUnsavedEdits(state)) {
+        // Nothing the student changed and did not save (looking around, a lesson's own steps, or
+        // edits saved or undone since): a reload or a crash then has nothing to offer.
+        forgetAutosave();
+        lastSaved_ = lastSeen_ = text;
+        autosave_.saved();
+        return false;
+    }
     if (auto err = writeFileAtomically(recovery_->sessionPath(pid_), text)) {
         autosave_.failed();
         return false;
     }
     lastSaved_ = lastSeen_ = text;
     autosave_.saved();
+    autosaveWritten_ = true;
     ++autosaves_;
     return true;
 }
@@ -147,6 +181,7 @@ std::optional<std::string> SessionController::newSession(EditorState& state, Sce
     undo_.reset(undoSnapshot(state));
     panel.currentPath.clear();
     savedEdits_ = editsText(state);
+    forgetAutosave();
     logMessage(state.log, "new session");
     return std::nullopt;
 }
@@ -202,6 +237,7 @@ std::optional<std::string> SessionController::openSession(std::string const& pat
     }
     panel.currentPath = path;
     savedEdits_ = editsText(state);
+    forgetAutosave();
     logMessage(state.log, "opened session " + path);
     return std::nullopt;
 }
@@ -210,6 +246,7 @@ std::optional<std::string> SessionController::saveSession(std::string const& pat
     if (auto err = ui::saveSession(path, captured(state))) return err;
     panel.currentPath = path;
     savedEdits_ = editsText(state);
+    forgetAutosave();       // saved: a reload or a crash now loses nothing
     if (lessonBaseline_) {  // saved mid-lesson: what is shown is in the file now
         lessonBaseline_ = savedEdits_;
         editsBeforeLesson_ = false;
@@ -227,7 +264,7 @@ std::optional<std::string> SessionController::restoreRecovery(EditorState& state
     panel.recoveryOffer.reset();
     if (!err) {
         recovery_->discard(offer);
-        logMessage(state.log, "restored the session of the editor that did not exit cleanly");
+        logMessage(state.log, "restored the unsaved changes");
         lastSaved_.clear();  // make the restored state this run's first autosave
         lastCheck_ = -1e300;
     } else {

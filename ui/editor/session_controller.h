@@ -64,8 +64,9 @@ public:
     static std::optional<std::string> exportViewer(int viewer, bool raw, std::string const& path,
                                                    EditorState const& state, Renderer& renderer);
 
-    // Writes the recovery session now if a change is pending (used before risky operations
-    // and by tests); returns true when a file was written.
+    // Writes the recovery session now if a change is pending and there are unsaved edits (used
+    // before risky operations and by tests); returns true when a file was written. With no
+    // unsaved edits left, this run's recovery session is removed instead: only edits are offered.
     bool autosaveNow(EditorState const& state);
     // The clean-exit path: removes this run's marker and recovery session.
     void endCleanly();
@@ -91,7 +92,9 @@ public:
 private:
     std::optional<std::string> applyLoaded(Session const& session, EditorState& state, SceneLoader const& load);
     std::string editsText(EditorState const& state) const;
-    Session captured(EditorState const& state) const;  // captureSession of the scene behind (sceneBehind_)
+    void offerText(EditorState& state, UncleanExit const& u);  // panel.recovery* and the log line
+    void forgetAutosave();                                     // this run's autosave, once nothing is unsaved
+    Session captured(EditorState const& state) const;          // captureSession of the scene behind (sceneBehind_)
     SceneBehind sceneBehind_;
     std::optional<std::string> lessonBaseline_;  // the edits text of the lesson step shown
     bool editsBeforeLesson_ = false;
@@ -107,6 +110,7 @@ private:
     std::string savedEdits_;  // editsText when the session was last opened or saved by the user
     double lastCheck_ = -1e300;
     int autosaves_ = 0;
+    bool autosaveWritten_ = false;  // this run's recovery session exists
 };
 
 }  // namespace gbl::ui

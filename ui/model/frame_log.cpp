@@ -99,6 +99,9 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"courseRows\":" + flatRects(l.courseRows) + ",\"courseRestart\":" + flatRects(l.courseRestart);
     out += ",\"courseProgress\":" + quoted(l.courseProgress) + ",\"nextLesson\":" + rect(l.nextLesson);
     out += ",\"view\":" + quoted(l.view);
+    out += ",\"mode\":" + quoted(l.mode) + ",\"lessonNote\":" + quoted(l.lessonNote) +
+           ",\"courseNotes\":" + strings(l.courseNotes);
+    out += ",\"status\":" + quoted(l.status) + ",\"browserLimits\":" + strings(l.browserLimits);
     out += ",\"layout\":" + quoted(l.layout) + ",\"pipelineWindow\":" + rect(l.pipelineWindow) +
            ",\"layoutCombo\":" + rect(l.layoutCombo) + ",\"layoutItems\":[";
     for (std::size_t i = 0; i < l.layoutItems.size(); ++i)

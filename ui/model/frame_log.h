@@ -64,6 +64,15 @@ struct FrameLogLine {
     std::string courseProgress;
     glm::vec4 nextLesson{0.0f};
     std::string view;
+    // What this context cannot run (issue 50): the lighting mode in use, the shown step's note
+    // ("" when it runs) and each lesson's note in the course, in the lessons' order.
+    std::string mode;
+    std::string lessonNote;
+    std::vector<std::string> courseNotes;
+    // The menu bar's status (its newest log line and the context) and, in the browser, the lines of
+    // Help > About this browser.
+    std::string status;
+    std::vector<std::string> browserLimits;
     // The G-buffer layout in use, the Pipeline window, its layout combo (0 while not visible) and,
     // while its list is open, the centre of each entry (kGBufferLayoutNames order).
     std::string layout;

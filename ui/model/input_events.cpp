@@ -76,6 +76,15 @@ Shortcut const* flyShortcut(int key) {
 
 }  // namespace
 
+glm::dvec2 wheelNotches(glm::dvec2 delta, int deltaMode) {
+    double const perNotch = deltaMode == 1   ? kWheelLinesPerNotch
+                            : deltaMode == 2 ? kWheelPagesPerNotch
+                                             : kWheelPixelsPerNotch;
+    // A page scrolls down for a positive delta: the wheel turned down. 0 - x, not -x: no axis
+    // reads -0.00 where the desktop's reads 0.00.
+    return glm::dvec2(0.0) - delta / perNotch;
+}
+
 std::string describeEvent(InputEvent const& e) {
     char text[96];
     char const* action = e.action == kPress ? "press" : e.action == kRelease ? "release" : "repeat";

@@ -51,6 +51,14 @@ struct InputEvent {
     double time = 0.0;
 };
 
+// A browser wheel event (WheelEvent's deltaX/deltaY and deltaMode: 0 pixels, 1 lines, 2 pages) as
+// the desktop's scroll offsets: one notch of a mouse wheel is 1.0 there (GLFW on X11, Windows and
+// macOS alike), positive for the wheel turned up or left, where a page scrolls back. Browsers
+// report one notch as 100 pixels (Chromium), 3 lines (Firefox) or 1 page ("one screen at a time");
+// a touchpad's small pixel deltas give fractions of a notch, as a desktop touchpad does.
+inline constexpr double kWheelPixelsPerNotch = 100.0, kWheelLinesPerNotch = 3.0, kWheelPagesPerNotch = 1.0;
+glm::dvec2 wheelNotches(glm::dvec2 delta, int deltaMode);
+
 // "key F press", "button 0 release at 412,300": the --log-frames line's record of an event.
 std::string describeEvent(InputEvent const& event);
 

@@ -210,6 +210,11 @@ struct LessonState {
     std::vector<glm::vec4> courseRows;
     std::vector<glm::vec4> courseRestart;
     glm::vec4 nextLessonButton{0.0f};
+    // What this context cannot run, in the student's words (the browser has no compute shaders):
+    // one note per lesson for the course ("" where every step runs), and the shown step's, which
+    // also says what the viewport shows instead. Filled by the editor loop from the renderer.
+    std::vector<std::string> lessonNotes;
+    std::string stepNote;
 };
 
 }  // namespace gbl::ui

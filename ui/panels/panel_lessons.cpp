@@ -52,6 +52,14 @@ glm::vec4 itemRect() {
     return itemCentre() == glm::vec2(0.0f) ? glm::vec4(0.0f) : lastItemRect();
 }
 
+// What this context cannot run (LessonState::lessonNotes, stepNote), in the warning colour.
+void drawLimitNote(std::string const& note) {
+    if (note.empty()) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.35f, 1.0f));
+    wrappedText("%s", note.c_str());
+    ImGui::PopStyleColor();
+}
+
 std::string countsLine(LessonCounts const& c) {
     std::string line = "steps " + std::to_string(c.stepsSeen) + "/" + std::to_string(c.steps);
     if (c.tasks > 0) line += ", tasks " + std::to_string(c.tasksDone) + "/" + std::to_string(c.tasks);
@@ -102,6 +110,7 @@ void drawCourse(LessonState& state, std::span<Lesson const> lessons, std::span<L
                                                  : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         wrappedText("%s", countsLine(c).c_str());
         ImGui::PopStyleColor();
+        if (i < state.lessonNotes.size()) drawLimitNote(state.lessonNotes[i]);
         ImGui::Unindent();
         ImGui::PopID();
     }
@@ -253,6 +262,7 @@ void drawStep(LessonState& state, std::span<Lesson const> lessons, LessonValues 
     // The step's title only: the lesson's is in the course the student opened it from, and a
     // second line here would push the checklist or the prediction's button below the fold.
     wrappedText("%s", step.text.title.c_str());
+    drawLimitNote(state.stepNote);
     bool const waiting = step.predict && !state.predicted;  // the step's change is not shown yet
     // At the end of the last step (its prediction made), the course goes on.
     if (!waiting && state.step >= n - 1 && state.lesson + 1 < int(lessons.size())) {

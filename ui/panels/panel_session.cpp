@@ -92,11 +92,11 @@ SessionRequest drawSessionDialogs(SessionPanelState& state) {
     }
 
     if (state.recoveryOffer) {
-        ImGui::OpenPopup("Recover session");
-        if (ImGui::BeginPopupModal("Recover session", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-            ImGui::TextUnformatted("gbuffer-lab did not exit cleanly last time.");
+        ImGui::OpenPopup("Unsaved changes");
+        if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+            ImGui::TextUnformatted(state.recoveryTitle.c_str());
             if (!state.recoveryWhy.empty()) ImGui::TextUnformatted(state.recoveryWhy.c_str());
-            ImGui::TextDisabled("%s", state.recoveryOffer->sessionPath.c_str());
+            if (!state.recoveryCause.empty()) ImGui::TextDisabled("%s", state.recoveryCause.c_str());
             if (ImGui::Button("Restore")) {
                 request = {SessionRequestKind::Restore, state.recoveryOffer->sessionPath, 0};
                 ImGui::CloseCurrentPopup();

@@ -25,7 +25,9 @@ struct SessionPanelState {
     int exportViewer = 0;                      // index into the G-buffer viewers
     bool exportRaw = false;                    // viewer export: raw attachment as EXR instead of PNG
     std::optional<UncleanExit> recoveryOffer;  // shown as a modal until answered
-    std::string recoveryWhy;                   // one line about the offered session (age, lights)
+    std::string recoveryTitle;                 // "Your changes from 3 minutes ago were not saved."
+    std::string recoveryWhy;                   // one line about the offered session (lights, scene)
+    std::string recoveryCause;                 // natively: the editor that did not exit cleanly, its file
     std::string message;                       // result of the last request, shown in the dialog
     bool saveRequested = false;                // "Save session" (or Ctrl+S) with a known path: no dialog
     bool closePending = false;                 // the request succeeded: close the dialog next frame

@@ -98,6 +98,11 @@ void RecoveryDir::endRunCleanly(long pid) const {
     fs::remove(markerPath(pid), ec);
 }
 
+void RecoveryDir::forgetSession(long pid) const {
+    std::error_code ec;
+    fs::remove(sessionPath(pid), ec);
+}
+
 std::vector<UncleanExit> RecoveryDir::uncleanExits(ProcessAlive const& alive) const {
     std::vector<UncleanExit> found;
     std::error_code ec;
@@ -130,6 +135,20 @@ void RecoveryDir::discard(UncleanExit const& exit) const {
     std::error_code ec;
     if (!exit.sessionPath.empty()) fs::remove(exit.sessionPath, ec);
     fs::remove(exit.markerPath, ec);
+}
+
+double fileClockSeconds() {
+    return std::chrono::duration<double>(fs::file_time_type::clock::now().time_since_epoch()).count();
+}
+
+std::string ageInWords(double seconds) {
+    auto const count = [](long n, char const* unit) {
+        return std::to_string(n) + " " + unit + (n == 1 ? "" : "s") + " ago";
+    };
+    if (seconds < 60.0) return "a moment ago";
+    if (seconds < 3600.0) return count(long(seconds / 60.0), "minute");
+    if (seconds < 48.0 * 3600.0) return count(long(seconds / 3600.0), "hour");
+    return count(long(seconds / 86400.0), "day");
 }
 
 std::string defaultRecoveryDir() {

@@ -72,6 +72,9 @@ public:
     std::optional<std::string> beginRun(long pid) const;
     // Removes this run's marker and recovery session: the clean-exit path.
     void endRunCleanly(long pid) const;
+    // Removes this run's recovery session and keeps its marker: nothing unsaved is left to offer
+    // (the edits were saved or undone).
+    void forgetSession(long pid) const;
 
     // Markers whose process is gone, newest recovery session first. Markers of live processes
     // (another editor) are left alone.
@@ -82,6 +85,13 @@ public:
 private:
     std::string dir_;
 };
+
+// Now on the clock of UncleanExit::modifiedSeconds (the file system's).
+double fileClockSeconds();
+
+// How long ago, in the words a student reads: "a moment ago", "1 minute ago", "3 minutes ago",
+// "2 hours ago", "3 days ago".
+std::string ageInWords(double seconds);
 
 // $GBL_RECOVERY_DIR, else the config folder (session/config_dir.h: $XDG_CONFIG_HOME/gbuffer-lab,
 // else ~/.config/gbuffer-lab), else /tmp/gbuffer-lab-recovery.
