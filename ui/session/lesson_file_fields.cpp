@@ -157,8 +157,6 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
             break;
         case ClaimKind::ExecutedExceedsLit:
             if (step.state.pipeline.view != DebugView::Heatmap) fail(path + ".kind", "needs pipeline.view \"heatmap\"");
-            claim.minFraction = optionalNumber("min_fraction", 0.0f, 0.0f, 1.0f);
-            claim.maxFraction = optionalNumber("max_fraction", 1.0f, 0.0f, 1.0f);
             if (claim.maxFraction <= claim.minFraction)
                 fail(path + ".max_fraction", "must be greater than min_fraction");
             break;
