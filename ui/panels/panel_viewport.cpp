@@ -6,7 +6,7 @@
 #include "core/heat_scale.h"
 #include "gpu/view_target.h"
 #include "model/colormap.h"
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 #include "panels/layout.h"
 #include "panels/viewer_tools.h"
 #include "panels/viewport_checks.h"
@@ -238,12 +238,10 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
     OverviewState& overview = state.overview;
     overview.cells.clear();
 
-    placeWindow(EditorWindow::Viewport);
     // No padding: the image fills the window edge to edge.
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
-    bool const open =
-        ImGui::Begin(windowName(EditorWindow::Viewport), nullptr,
-                     editorWindowFlags() | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    bool const open = ImGui::Begin(windowName(EditorWindow::Viewport), nullptr,
+                                   ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     ImGui::PopStyleVar();
     if (!open) {
         // Collapsed or a hidden tab: render nothing rather than a frame nobody sees.
