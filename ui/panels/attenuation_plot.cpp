@@ -80,6 +80,12 @@ AttenuationPlotMarks drawAttenuationPlot(PointLight const& light, bool logScale,
     if (g && !g->classic.empty()) peak = std::max(peak, g->classic.front());
     float const yTop = peak * 1.05f;
     float const yBottom = logScale ? light.threshold * 0.1f : 0.0f;
+    // A height at fraction f of the value axis (of its logarithm on a log axis): the marks' labels sit
+    // low in the plot, clear of the legend in its top right corner and of the curves' fall at the left.
+    auto level = [&](double f) {
+        return logScale ? double(yBottom) * std::pow(double(yTop) / double(yBottom), f)
+                        : double(yBottom) + f * double(yTop - yBottom);
+    };
     ImVec4 const radiusColour = colour(90, 200, 255, 220), pixelColour = colour(255, 160, 0, 220);
     ImVec4 const thresholdColour = colour(230, 180, 60, 200);
 
@@ -96,8 +102,7 @@ AttenuationPlotMarks drawAttenuationPlot(PointLight const& light, bool logScale,
 
         // The threshold: where the classic curve crosses it is, by definition, the radius.
         ImPlot::PlotInfLines("##threshold", &light.threshold, 1, lineSpec(thresholdColour, 1.0f, kHorizontalUnlisted));
-        ImPlot::Annotation(double(c.maxDistance), double(light.threshold), ImVec4(0, 0, 0, 0), ImVec2(-4, -2), true,
-                           "threshold");
+        ImPlot::Annotation(0.0, double(light.threshold), ImVec4(0, 0, 0, 0), ImVec2(4, -2), true, "threshold");
         if (ghost && ghost->threshold != light.threshold)
             ImPlot::PlotInfLines("##ghost threshold", &ghost->threshold, 1,
                                  lineSpec(colour(230, 180, 60, 80), 1.0f, kHorizontalUnlisted));
@@ -110,21 +115,20 @@ AttenuationPlotMarks drawAttenuationPlot(PointLight const& light, bool logScale,
         if (c.radius > 0.0f && (c.radius <= c.maxDistance || g)) {
             // "r = OLD -> NEW" while a ghost is shown; held inside the plot when past the axis.
             if (g)
-                ImPlot::Annotation(double(std::min(c.radius, c.maxDistance)), double(yTop), radiusColour, ImVec2(4, 4),
+                ImPlot::Annotation(double(std::min(c.radius, c.maxDistance)), level(0.3), radiusColour, ImVec2(4, 0),
                                    true, "r = %.2f → %.2f", g->radius, c.radius);
             else
-                ImPlot::Annotation(double(std::min(c.radius, c.maxDistance)), double(yTop), radiusColour, ImVec2(4, 4),
+                ImPlot::Annotation(double(std::min(c.radius, c.maxDistance)), level(0.3), radiusColour, ImVec2(4, 0),
                                    true, "r = %.2f", c.radius);
         }
         if (pixelDistance && *pixelDistance > c.maxDistance) {
-            ImPlot::Annotation(double(c.maxDistance), double(yTop) * (logScale ? 0.2 : 0.55), pixelColour,
-                               ImVec2(-4, 0), true, "pixel at %.2f: past the axis", *pixelDistance);
+            ImPlot::Annotation(double(c.maxDistance), level(0.12), pixelColour, ImVec2(-4, 0), true, "pixel %.2f →",
+                               *pixelDistance);
         } else if (pixelDistance && *pixelDistance >= 0.0f) {
             // The inspected pixel: where it sits on the curve is what the light adds there.
             float const d = *pixelDistance;
             ImPlot::PlotInfLines("##pixel", &d, 1, lineSpec(pixelColour, 1.0f, ImPlotItemFlags_NoLegend));
-            ImPlot::Annotation(double(d), double(yTop) * (logScale ? 0.2 : 0.55), pixelColour, ImVec2(4, 0), true,
-                               "pixel %.2f", d);
+            ImPlot::Annotation(double(d), level(0.12), pixelColour, ImVec2(4, 0), true, "pixel %.2f", d);
         }
         // The ghost under the curve (the applied curve as it was when the drag began), the textbook
         // form faint, and bright what the renderer adds.
