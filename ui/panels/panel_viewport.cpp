@@ -251,8 +251,8 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
                                    ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     ImGui::PopStyleVar();
     if (!open) {
-        // Collapsed or a hidden tab: render nothing rather than a frame nobody sees.
-        state.size = glm::ivec2(0);
+        // Collapsed or a hidden tab (another window tabbed over it): the frame keeps its last size,
+        // so the G-buffer viewers, which show its attachments, keep their images.
         ImGui::End();
         return;
     }
