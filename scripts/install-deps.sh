@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Installs the Debian packages gbuffer-lab builds and tests with (bookworm). Skips apt when all are present.
+# Dear ImGui and ImPlot are not among them: they are vendored under third_party/.
 set -euo pipefail
 
 # libx11-dev is only recommended by libglfw3-dev (and recommends are not installed below); the UI tests'
 # drag-and-drop program, tests/support/xdnd_drop.c, is built with it.
 packages=(
   cmake g++ make ninja-build pkg-config mold
-  libglfw3-dev libx11-dev libglm-dev libimgui-dev libtinygltf-dev libopenimageio-dev libepoxy-dev libdraco-dev
+  libglfw3-dev libx11-dev libglm-dev libtinygltf-dev libopenimageio-dev libepoxy-dev libdraco-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libcli11-dev nlohmann-json3-dev
   xvfb xauth xdotool x11-apps

@@ -127,10 +127,10 @@ run_ctest() { ctest --test-dir "$build" --output-on-failure -j"$jobs" --timeout 
 # ui_teaching and ui_frame_window too (107 s and 82 s here under the sanitizers, 24 s and 22 s plain): the
 # editor they drive runs here under ui_real_input, ui_editor, ui_layout_combo, ui_recovery, ui_gltf,
 # ui_long_frame and ui_session, and the Frame window's model under frame_diagram_test.
-# ui_first_window, ui_layout_drag, ui_plot_drag and ui_overview too (28 s, 49 s, 36 s and 27 s here under the
-# sanitizers): the window's first size, the split handles' arithmetic, the plot's tooltip and the overview's
+# ui_first_window, ui_dock_drag, ui_plot_drag and ui_overview too (28 s, 49 s, 36 s and 27 s here under the
+# sanitizers): the window's first size, the docking drags, the plot's tooltip and the overview's
 # grid; the editor code around them runs here under the UI tests named above.
-plain_only='^(ui_teaching|ui_frame_window|ui_first_window|ui_layout_drag|ui_plot_drag|ui_overview|Session\.TooManyLightsAreRefusedWithTheLimit|SessionCli\.SessionWithMoreLightsThanTheLimitIsRefused|ui_layout_fits|ui_lessons|ShaderCompile\..*|EdgeScenes\.(sizes\.)?run[2-9]|GltfRender\.EveryModelRendersWithNonEmptyAttachments)$'
+plain_only='^(ui_teaching|ui_frame_window|ui_first_window|ui_dock_drag|ui_plot_drag|ui_overview|Session\.TooManyLightsAreRefusedWithTheLimit|SessionCli\.SessionWithMoreLightsThanTheLimitIsRefused|ui_layout_fits|ui_lessons|ShaderCompile\..*|EdgeScenes\.(sizes\.)?run[2-9]|GltfRender\.EveryModelRendersWithNonEmptyAttachments)$'
 # The CPU tests are one ctest test per executable here (GBL_CPU_TESTS_PER_BINARY, tests/CMakeLists.txt):
 # the executable's name selects, and GTEST_FILTER leaves out plain_only's single CPU test.
 gltf_cpu='^gltf_(loader|features)_test$'

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Quick start 2: installs what is missing, checks formatting, builds with warnings as errors, and runs
 # every test (CPU, headless GL, UI under Xvfb), then a few GL tests again on the hidden-GLFW-window context.
-# Tests always build against Debian's ImGui into build/ and never touch the network, so CI is deterministic.
+# Tests build into build/ with the vendored ImGui (third_party/) and never touch the network, so CI is deterministic.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh

@@ -4,6 +4,7 @@
 #include "model/layout_state.h"
 #include "model/pixel_inspector_state.h"
 #include "panels/clip_check.h"
+#include "panels/gui_util.h"
 #include "panels/layout.h"
 #include "panels/panel_pixel_inspector.h"
 
@@ -25,6 +26,7 @@ std::vector<std::string> cutsOf(glm::vec2 display, std::function<void()> const& 
     ImGuiIO& io = ImGui::GetIO();
     io.DisplaySize = ImVec2(display.x, display.y);
     io.IniFilename = nullptr;
+    enableConfigFlags(io);  // docking, as the editor has it: beginLayout builds a dock tree
     unsigned char* pixels = nullptr;
     int w = 0, h = 0;
     io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);  // builds the atlas: text has sizes

@@ -1,5 +1,6 @@
 // Every character the UI can show is in the UI font's glyph ranges (issue 26): the lesson files'
-// strings and the UI sources' text, so a new "⇔" in a lesson fails here, not as "?" on screen.
+// strings and the UI sources' text, so a new "⇔" in a lesson fails here, not as "?" on screen; and
+// the font file itself (DejaVu Sans) has a glyph for every character of the lessons and glossary.
 #include "panels/fonts.h"
 
 #include <gtest/gtest.h>
@@ -7,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -110,4 +112,26 @@ TEST(UiGlyphs, EveryCharacterOfTheUiSourcesIsCovered) {
             expectCovered(readFile(p), p.lexically_relative(GBL_SOURCE_DIR).string());
         }
     EXPECT_GT(files, 10);
+}
+
+// ImGui 1.92 loads glyphs as they are drawn, from the whole font: what matters is that the file has
+// them. Every lesson and glossary character, asked of the font ImGui loads (loadUiFont).
+TEST(UiGlyphs, TheUiFontHasEveryLessonAndGlossaryCharacter) {
+    if (!fs::exists(uiFontPath())) GTEST_SKIP() << uiFontPath() << " is not installed (fonts-dejavu-core)";
+    ImGui::CreateContext();
+    ASSERT_EQ(loadUiFont(uiFontPath()), std::nullopt);
+    ImFont* font = ImGui::GetIO().Fonts->Fonts[0];
+    std::string text;
+    for (auto const& entry : fs::directory_iterator(fs::path(GBL_SOURCE_DIR) / "assets" / "lessons"))
+        if (entry.path().extension() == ".json") collectStrings(nlohmann::json::parse(readFile(entry.path())), text);
+    collectStrings(nlohmann::json::parse(readFile(fs::path(GBL_SOURCE_DIR) / "assets" / "glossary.json")), text);
+    int checked = 0;
+    for (char32_t cp : codePoints(text)) {
+        if (cp < 0x20) continue;  // line breaks and tabs: layout, not glyphs
+        ++checked;
+        EXPECT_TRUE(font->IsGlyphInFont(ImWchar(cp)))
+            << "U+" << std::hex << std::uppercase << std::uint32_t(cp) << " is not in " << uiFontPath();
+    }
+    EXPECT_GT(checked, 1000);
+    ImGui::DestroyContext();
 }

@@ -30,11 +30,11 @@ open position_from_depth:2
 mark=$(field lessonMark | tr -d '[]')
 [ -n "$mark" ] || fail "position_from_depth:2 marks no pixel (lessonMark $(field lessonMark))"
 viewport=$(field viewport | tr -d '[]')
-# The mark in the lesson's 480x270 pixels must lie in the task's region [0, 12, 479, 59], and the
+# The mark in the lesson's 480x270 pixels must lie in the task's region [0, 0, 479, 59], and the
 # largest error in the claim's range [0.012, 0.015) (measured at this viewport's size, it stays in it).
 echo "$mark,$viewport" | awk -F, '{
     x = int(($1 + 0.5) * 480 / $6); y = int(($2 + 0.5) * 270 / $7)
-    if (x < 0 || x > 479 || y < 12 || y > 59) { print "mark at " x ", " y " of 480x270 is outside the region"; exit 1 }
+    if (x < 0 || x > 479 || y < 0 || y > 59) { print "mark at " x ", " y " of 480x270 is outside the region"; exit 1 }
     if ($3 < 0.012 || $3 >= 0.015) { print "largest error " $3 " outside 0.012 .. 0.015"; exit 1 }
     print "position_from_depth:2 marks (" $1 ", " $2 "), largest error " $3
 }' || fail "position_from_depth:2's mark: $mark on a viewport $viewport"

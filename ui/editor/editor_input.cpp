@@ -1,7 +1,7 @@
 // GLFW callbacks into the input queue, and the queue's events into ImGui (either version).
 #include "editor_input.h"
 
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -144,8 +144,7 @@ void takeFrameInput(EditorInput& input) {
     input.imguiFrame = ui::replayFrame(input.replay, input.frameEvents);
 }
 
-void feedImGuiBeforeBackendNewFrame(EditorInput const& input, GLFWwindow* window) {
-#if IMGUI_VERSION_NUM >= 18700
+void feedImGuiEvents(EditorInput const& input, GLFWwindow* window) {
     for (ui::InputEvent const& e : input.imguiFrame.events) {
         switch (e.kind) {
             case ui::InputKind::Key:
@@ -167,32 +166,6 @@ void feedImGuiBeforeBackendNewFrame(EditorInput const& input, GLFWwindow* window
                 break;  // forwarded when it happened (onFocus)
         }
     }
-#else
-    (void)input;
-    (void)window;
-#endif
-}
-
-void feedImGuiAfterBackendNewFrame(EditorInput const& input) {
-#if IMGUI_VERSION_NUM < 18700
-    ImGuiIO& io = ImGui::GetIO();
-    ui::InputReplay const& r = input.replay;
-    // The backend just polled the pointer and buttons as they are now; ImGui is shown them as
-    // they were at this frame's share of the events instead.
-    io.MousePos = r.mouse.x < -1.0e8 ? ImVec2(-FLT_MAX, -FLT_MAX) : ImVec2(float(r.mouse.x), float(r.mouse.y));
-    for (int b = 0; b < ui::kMouseButtons; ++b) io.MouseDown[b] = r.buttons[std::size_t(b)];
-    for (int k = 0; k <= ui::keys::Last && k < int(IM_ARRAYSIZE(io.KeysDown)); ++k)
-        io.KeysDown[k] = r.keysDown[std::size_t(k)];
-    io.KeyCtrl = (r.mods & ui::kModControl) != 0;
-    io.KeyShift = (r.mods & ui::kModShift) != 0;
-    io.KeyAlt = (r.mods & ui::kModAlt) != 0;
-    io.KeySuper = (r.mods & ui::kModSuper) != 0;
-    io.MouseWheelH += float(input.imguiFrame.scroll.x);
-    io.MouseWheel += float(input.imguiFrame.scroll.y);
-    for (unsigned c : input.imguiFrame.chars) io.AddInputCharacter(c);
-#else
-    (void)input;
-#endif
 }
 
 void markImGuiDoubleClicks(EditorInput const& input) {

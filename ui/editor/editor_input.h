@@ -30,11 +30,9 @@ void removeInputCallbacks(GLFWwindow* window);
 // Takes everything queued since the last frame (call after glfwPollEvents).
 void takeFrameInput(EditorInput& input);
 
-// Feeds this frame's share of the events to ImGui. ImGui 1.87+ queues input events, so they go
-// in before ImGui_ImplGlfw_NewFrame; 1.86 reads state, which its backend overwrites by polling
-// in ImGui_ImplGlfw_NewFrame, so it goes in between that and ImGui::NewFrame.
-void feedImGuiBeforeBackendNewFrame(EditorInput const& input, GLFWwindow* window);
-void feedImGuiAfterBackendNewFrame(EditorInput const& input);
+// Feeds this frame's share of the events to ImGui's input queue (through the GLFW backend's
+// callbacks), before ImGui_ImplGlfw_NewFrame.
+void feedImGuiEvents(EditorInput const& input, GLFWwindow* window);
 // After ImGui::NewFrame: double clicks decided on event times replace ImGui's frame-time ones.
 void markImGuiDoubleClicks(EditorInput const& input);
 

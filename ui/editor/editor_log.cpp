@@ -99,9 +99,13 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     ui::OverviewState const& overview = state.viewport.overview;
     line.overview = overview.on;
     line.uiScale = state.layout.scale.current;
-    if (!ui::kHasDocking)
-        for (ui::TileRect const& h : state.layout.handles)
-            line.splitHandles.emplace_back(h.pos.x, h.pos.y, h.size.x, h.size.y);
+    for (std::size_t i = 0; i < state.layout.docks.size(); ++i) {
+        ui::WindowDock const& d = state.layout.docks[i];
+        char id[16];
+        std::snprintf(id, sizeof id, "=%x", d.dockId);
+        line.docks.push_back(std::string(ui::kEditorWindowNames[i]) + id);
+        line.windowTabs.push_back(d.tab);
+    }
     line.lightsWindow = state.lightsPanel.window;
     line.plotRect = state.lightsPanel.plotRect;
     line.kqField = state.lightsPanel.kqFieldRect;
@@ -120,6 +124,8 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.gbuffer = editor.loading.gbuffer.path;
     line.frameSize = glm::ivec2(editor.renderer->width(), editor.renderer->height());
     line.fileMenu = state.layout.fileMenuRect;
+    line.viewMenu = state.layout.viewMenuRect;
+    line.resetLayoutItem = state.layout.resetLayoutRect;
     line.openGBufferItem = editor.loading.gbuffer.menuItemRect;
     line.openSceneItem = editor.loading.openItemRect;
     line.openFolderItem = editor.loading.openFolderItemRect;

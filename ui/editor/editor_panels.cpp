@@ -7,7 +7,7 @@
 
 #include "model/browser_files.h"
 #include "model/why_value.h"
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 #include "panels/layout.h"
 #include "panels/panel_confirm.h"
 #include "panels/panel_frame.h"
@@ -88,10 +88,12 @@ EditRequest drawMainMenu(Editor& editor) {
             edit.redo = true;
         ImGui::EndMenu();
     }
-    if (ImGui::BeginMenu("View")) {
-        if (ImGui::MenuItem("Reset layout", nullptr, false, ui::kHasDocking)) state.layout.resetRequested = true;
-        if (!ui::kHasDocking && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-            ImGui::SetTooltip("this ImGui build has no docking: the windows are tiled and always in place");
+    bool const viewMenu = ImGui::BeginMenu("View");
+    state.layout.viewMenuRect = ui::lastItemRect();
+    state.layout.resetLayoutRect = glm::vec4(0.0f);
+    if (viewMenu) {
+        if (ImGui::MenuItem("Reset layout")) state.layout.resetRequested = true;
+        state.layout.resetLayoutRect = ui::lastItemRect();
         if (ImGui::MenuItem("Frame selection", keysFor(ui::EditorAction::FrameSelection))) edit.frameSelection = true;
         if (ImGui::MenuItem("Home view", keysFor(ui::EditorAction::HomeView))) edit.homeView = true;
         if (ImGui::MenuItem("Frame the whole scene")) ui::frameBounds(state.rig, state.camera, state.sceneBounds);
@@ -163,9 +165,8 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     Renderer const& renderer = *editor.renderer;
     applyRequestedUiScale(editor);  // a scale chosen in the last frame's View menu
     ImGui_ImplOpenGL3_NewFrame();
-    feedImGuiBeforeBackendNewFrame(editor.input, editor.window());
+    feedImGuiEvents(editor.input, editor.window());
     ImGui_ImplGlfw_NewFrame();
-    feedImGuiAfterBackendNewFrame(editor.input);
     ImGui::NewFrame();
     markImGuiDoubleClicks(editor.input);
     EditRequest const edit = drawMainMenu(editor);
@@ -200,25 +201,17 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, state.viewportTools, viewportTexture,
                           {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer),
                           &ab, state.inspector.locked ? state.inspector.pixel : std::nullopt, times.overviewTextures);
-    if (state.frame.open && !ui::kHasDocking) {
-        // Tiled: the Frame window takes the strip's place while open.
-        state.gbuffer.visible = false;
-        state.gbuffer.hoverPixel.reset();
-        state.gbuffer.showInViewport.reset();
-        state.gbuffer.imageRects.fill(glm::vec4(0.0f));
-    } else {
-        state.gbuffer.noGBuffer = state.pipeline.mode == LightingMode::Forward;
-        ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()},
-                             state.inspector.locked ? state.inspector.pixel : std::nullopt);
-    }
+    state.gbuffer.noGBuffer = state.pipeline.mode == LightingMode::Forward;
+    ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()},
+                         state.inspector.locked ? state.inspector.pixel : std::nullopt);
     ui::drawFramePanel(state.frame, state.pipeline, state.stats.last);
     ui::drawViewerMagnifier(state.gbuffer, state.viewportTools);
     ui::drawPixelInspectorPanel(state.inspector);
     ui::drawStatsPanel(state.stats, editor.caps, int(state.lights.size()), &editor.render, editor.renderReason,
                        &state.frame);
     ui::drawLogPanel(state.log);
-    drawLessons(editor);                 // the Lessons window; applies the step it asks for (editor_lessons.cpp)
-    ui::drawSplitHandles(state.layout);  // after every tiled window, so the handles lie over their edges
+    drawLessons(editor);  // the Lessons window; applies the step it asks for (editor_lessons.cpp)
+    ui::recordDocks(state.layout);
     ui::drawSceneLoadingUi(editor.loading);
     ui::drawShortcutsWindow(editor.showShortcuts);
     if (ui::kInBrowser)

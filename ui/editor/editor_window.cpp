@@ -7,7 +7,7 @@
 #include "model/browser_files.h"
 #include "model/window_fit.h"
 #include "panels/fonts.h"
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 #include "panels/panel_log.h"
 #include "panels/panel_scene_loading.h"
 #include "scene/default_scene.h"
@@ -18,6 +18,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 #include <imgui_internal.h>
+#include <implot.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -112,17 +113,6 @@ void* readViewSettingsOpen(ImGuiContext*, ImGuiSettingsHandler*, char const* nam
 void readViewSettingsLine(ImGuiContext*, ImGuiSettingsHandler* handler, void*, char const* line) {
     auto& editor = *static_cast<Editor*>(handler->UserData);
     std::string_view const text(line);
-    std::string const splitsKey = std::string(ui::kSplitsKey) + "=";
-    if (text.substr(0, splitsKey.size()) == splitsKey) {
-        std::string error;
-        auto splits = ui::parseSplits(text.substr(splitsKey.size()),
-                                      editor.style.iniPath + ": " + std::string(ui::kSplitsKey), &error);
-        if (splits)
-            editor.state.layout.splits = splits;
-        else
-            ui::logMessage(editor.state.log, error + "; the windows keep the default layout.", true);
-        return;
-    }
     std::string const key = std::string(ui::kUiScaleKey) + "=";
     if (text.substr(0, key.size()) != key) return;
     std::string error;
@@ -142,7 +132,6 @@ void readViewSettingsLine(ImGuiContext*, ImGuiSettingsHandler* handler, void*, c
 void writeViewSettings(ImGuiContext*, ImGuiSettingsHandler* handler, ImGuiTextBuffer* out) {
     auto const& editor = *static_cast<Editor const*>(handler->UserData);
     out->appendf("[gbuffer-lab][View]\n%s\n", ui::uiScaleLine(editor.state.layout.scale.saved).c_str());
-    if (auto const& splits = editor.state.layout.splits) out->appendf("%s\n", ui::splitsLine(*splits).c_str());
     out->append("\n");
 }
 
@@ -157,12 +146,10 @@ void addViewSettingsHandler(Editor& editor) {
     ImGui::GetCurrentContext()->SettingsHandlers.push_back(handler);
 }
 
-// Sets the UI scale's style and font; logs the font's warning, if any.
+// Sets the UI scale's style and text size.
 void setUiScale(Editor& editor, float scale) {
     editor.state.layout.scale.current = scale;
-    if (auto warning = ui::applyUiScale(editor.style.baseStyle, scale, editor.style.contentScale, ui::uiFontPath())) {
-        ui::logMessage(editor.state.log, *warning);
-    }
+    ui::applyUiScale(editor.style.baseStyle, scale, editor.style.contentScale);
 }
 
 }  // namespace
@@ -176,8 +163,6 @@ void applyRequestedUiScale(Editor& editor) {
     scale.saved = wanted;  // a choice from the menu is kept with the layout, --ui-scale or not
     if (wanted == scale.current) return;
     setUiScale(editor, wanted);
-    // The font atlas changed: the backend makes its texture (and other objects) again at the next NewFrame.
-    ImGui_ImplOpenGL3_DestroyDeviceObjects();
     ui::logMessage(editor.state.log, "UI scale " + ui::uiScaleText(wanted) + "x");
 }
 
@@ -357,6 +342,7 @@ void initImGui(Editor& editor) {
     EditorOptions const& options = editor.options;
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
+    ImPlot::CreateContext();  // the attenuation plot and the Stats window's timing history
     ImGuiIO& io = ImGui::GetIO();
     // Unattended runs must not depend on, or leave behind, a layout file; interactive ones keep
     // it in the config folder, not in whatever directory the editor was started from.
@@ -380,9 +366,13 @@ void initImGui(Editor& editor) {
     glfwGetWindowContentScale(editor.window(), &xscale, &yscale);
 #endif
     editor.style.contentScale = xscale > 0.0f ? xscale : 1.0f;
+    if (auto warning = ui::loadUiFont(ui::uiFontPath())) {
+        std::fprintf(stderr, "gbuffer-lab: %s\n", warning->c_str());
+        ui::logMessage(editor.state.log, *warning, true);
+    }
     setUiScale(editor, scale.current);
     // ImGui's backend installs no callbacks: the editor's own queue every event and feed ImGui
-    // at a pace it can follow (editor_input.h), with 1.86 and 1.87+ alike.
+    // at a pace it can follow (editor_input.h).
     ImGui_ImplGlfw_InitForOpenGL(editor.window(), false);
 #ifdef __EMSCRIPTEN__
     ImGui_ImplOpenGL3_Init("#version 300 es");
@@ -465,6 +455,7 @@ int shutdownEditor(Editor& editor) {
     removeInputCallbacks(editor.window());
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
+    ImPlot::DestroyContext();
     ImGui::DestroyContext();
     // The renderer's GL objects go while the context is still current.
     editor.gpu = EditorGpu{};

@@ -125,7 +125,8 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += std::string(",\"overview\":") + (l.overview ? "true" : "false");
     out += ",\"overviewButton\":" + rect(l.overviewButton) + ",\"overviewCells\":" + strings(l.overviewCells);
     out += ",\"uiScale\":" + number(l.uiScale);
-    out += ",\"splitHandles\":" + flatRects(l.splitHandles);
+    out += ",\"docks\":" + strings(l.docks);
+    out += ",\"windowTabs\":" + flatRects(l.windowTabs);
     out += ",\"lightsWindow\":" + rect(l.lightsWindow) + ",\"plotRect\":" + rect(l.plotRect) +
            ",\"kqField\":" + rect(l.kqField);
     out += ",\"plotRadius\":" + number(l.plotRadius) + ",\"plotGhostRadius\":" + number(l.plotGhostRadius);
@@ -139,7 +140,8 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += "]";
     out += ",\"gbuffer\":" + quoted(l.gbuffer);
     out += ",\"frameSize\":[" + std::to_string(l.frameSize.x) + "," + std::to_string(l.frameSize.y) + "]";
-    out += ",\"fileMenu\":" + rect(l.fileMenu) + ",\"openGBufferItem\":" + rect(l.openGBufferItem) +
+    out += ",\"fileMenu\":" + rect(l.fileMenu) + ",\"viewMenu\":" + rect(l.viewMenu) +
+           ",\"resetLayoutItem\":" + rect(l.resetLayoutItem) + ",\"openGBufferItem\":" + rect(l.openGBufferItem) +
            ",\"openSceneItem\":" + rect(l.openSceneItem) + ",\"openFolderItem\":" + rect(l.openFolderItem) +
            ",\"exportAllItem\":" + rect(l.exportAllItem) + ",\"windowShotItem\":" + rect(l.windowShotItem) +
            ",\"gbufferBrowser\":" + (l.gbufferBrowser ? "true" : "false");

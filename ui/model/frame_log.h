@@ -116,9 +116,11 @@ struct FrameLogLine {
     glm::vec4 overviewButton{0.0f};
     std::vector<std::string> overviewCells;
     float uiScale = 1.0f;  // the UI scale in use (model/ui_scale.h: View > UI scale, --ui-scale)
-    // Tiled builds: each boundary's drag handle, x, y, width, height in window coordinates as one
-    // flat array in Split order (model/layout_state.h); empty with docking.
-    std::vector<glm::vec4> splitHandles;
+    // Each editor window's dock node as "NAME=ID" (ID in hex, 0 when floating or not drawn) and its
+    // tab (docked) or title bar (floating) as one flat array of rectangles, in EditorWindow order
+    // (model/layout_state.h): a window dragged into another's tab bar then shares its ID.
+    std::vector<std::string> docks;
+    std::vector<glm::vec4> windowTabs;
     // The Lights window's attenuation plot (issue 26): its rectangle and the Kq field's (x, y, width,
     // height in window coordinates; 0 unless drawn and wholly in view), the radius it marks and
     // its ghost's, the radius before the current drag (-1 when not drawn / no ghost).
@@ -139,6 +141,8 @@ struct FrameLogLine {
     // The menu bar's "File", File > "Open G-buffer..." while that menu is open, and whether the
     // G-buffer file browser is open.
     glm::vec4 fileMenu{0.0f};
+    glm::vec4 viewMenu{0.0f};         // the menu bar's "View"
+    glm::vec4 resetLayoutItem{0.0f};  // View > Reset layout (0 unless the menu is open)
     glm::vec4 openGBufferItem{0.0f};
     glm::vec4 openSceneItem{0.0f};  // File > "Open scene..." (0 while the menu is closed)
     // The browser build's File > "Open folder..." and "Save window as PNG", and File > "Export all..."

@@ -1,10 +1,8 @@
-// Rectangles of the tiled layout.
+// The default layout's shares and rectangles.
 #include "model/layout_state.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace gbl::ui {
 
@@ -82,8 +80,8 @@ struct Edges {
     std::array<float, 3> rows{};
 };
 
-Edges edges(glm::vec2 size, float uiScale, std::optional<LayoutSplits> const& splits) {
-    LayoutSplits const s = held(splits ? *splits : defaultSplits(size, uiScale), size, uiScale);
+Edges edges(glm::vec2 size, float uiScale) {
+    LayoutSplits const s = held(defaultSplits(size, uiScale), size, uiScale);
     Edges e;
     e.leftW = std::floor(size.x * s.left);
     e.rightW = std::floor(size.x * s.right);
@@ -95,9 +93,8 @@ Edges edges(glm::vec2 size, float uiScale, std::optional<LayoutSplits> const& sp
 
 }  // namespace
 
-TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize, float uiScale,
-                   std::optional<LayoutSplits> const& splits) {
-    Edges const e = edges(workSize, uiScale, splits);
+TileRect defaultWindowRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize, float uiScale) {
+    Edges const e = edges(workSize, uiScale);
     glm::vec2 const p = workPos;
     float const rightX = workSize.x - e.rightW;
     float const centreW = rightX - e.leftW;
@@ -120,96 +117,6 @@ TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize, f
             return {p + glm::vec2(rightX, e.rows[2]), {e.rightW, e.band - e.rows[2]}};
     }
     return {};
-}
-
-std::array<TileRect, kSplitCount> splitHandles(glm::vec2 workPos, glm::vec2 workSize, float uiScale,
-                                               std::optional<LayoutSplits> const& splits) {
-    Edges const e = edges(workSize, uiScale, splits);
-    float const half = 0.5f * kSplitHandlePx;
-    float const rightX = workSize.x - e.rightW;
-    glm::vec2 const p = workPos;
-    glm::vec2 const across(kSplitHandlePx, e.band);  // a column boundary, the band's height
-    auto row = [&](float x, float y, float w) { return TileRect{p + glm::vec2(x, y - half), {w, kSplitHandlePx}}; };
-    return {TileRect{p + glm::vec2(e.leftW - half, 0), across},
-            TileRect{p + glm::vec2(rightX - half, 0), across},
-            row(0, e.band, workSize.x),
-            row(0, e.lightsH, e.leftW),
-            row(rightX, e.rows[0], e.rightW),
-            row(rightX, e.rows[1], e.rightW),
-            row(rightX, e.rows[2], e.rightW)};
-}
-
-LayoutSplits dragSplit(std::optional<LayoutSplits> const& splits, Split split, glm::vec2 mouse, glm::vec2 workPos,
-                       glm::vec2 workSize, float uiScale) {
-    LayoutSplits s = held(splits ? *splits : defaultSplits(workSize, uiScale), workSize, uiScale);
-    if (workSize.x <= 0.0f || workSize.y <= 0.0f) return s;
-    glm::vec2 const m = mouse - workPos;
-    Least const least = leastShares(s, workSize, uiScale);
-    float const band = workSize.y - std::floor(workSize.y * s.strip);
-    // The dragged boundary moves alone: its neighbours stay and stop it at their least sizes.
-    switch (split) {
-        case Split::LeftColumn:
-            s.left = holdShare(m.x / workSize.x, least.x, 1.0f - s.right - least.x);
-            break;
-        case Split::RightColumn:
-            s.right = holdShare((workSize.x - m.x) / workSize.x, least.x, 1.0f - s.left - least.x);
-            break;
-        case Split::Strip:
-            s.strip = holdShare((workSize.y - m.y) / workSize.y, least.y, 1.0f - 4.0f * least.y);
-            break;
-        case Split::LightsRow:
-            s.lights = holdShare(m.y / band, least.band, 1.0f - least.band);
-            break;
-        case Split::InspectorRow:
-        case Split::LessonsRow:
-        case Split::StatsRow: {
-            std::size_t const i = std::size_t(split) - std::size_t(Split::InspectorRow);
-            float const above = i == 0 ? 0.0f : s.rightRows[i - 1];
-            float const below = i + 1 == s.rightRows.size() ? 1.0f : s.rightRows[i + 1];
-            s.rightRows[i] = holdShare(m.y / band, above + least.band, below - least.band);
-            break;
-        }
-    }
-    return held(s, workSize, uiScale);
-}
-
-std::string splitsLine(LayoutSplits const& s) {
-    char text[160];
-    std::snprintf(text, sizeof text, "%s=%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f", kSplitsKey.data(), double(s.left),
-                  double(s.right), double(s.strip), double(s.lights), double(s.rightRows[0]), double(s.rightRows[1]),
-                  double(s.rightRows[2]));
-    return text;
-}
-
-std::optional<LayoutSplits> parseSplits(std::string_view text, std::string_view what, std::string* error) {
-    std::string const s(text);
-    std::array<float, kSplitCount> v{};
-    std::size_t n = 0;
-    char const* at = s.c_str();
-    bool ok = !s.empty();
-    while (ok && n < v.size()) {
-        char* end = nullptr;
-        v[n] = std::strtof(at, &end);
-        ok = end != at && std::isfinite(v[n]) && v[n] > 0.0f && v[n] < 1.0f;
-        ++n;
-        at = end;
-        if (ok && n < v.size()) ok = *at == ',' && (++at, true);
-    }
-    ok = ok && n == v.size() && *at == '\0';
-    LayoutSplits splits;
-    if (ok) {
-        splits = {v[0], v[1], v[2], v[3], {v[4], v[5], v[6]}};
-        ok = splits.left + splits.right < 1.0f && splits.rightRows[0] < splits.rightRows[1] &&
-             splits.rightRows[1] < splits.rightRows[2];
-    }
-    if (ok) return splits;
-    if (error) {
-        *error = std::string(what) +
-                 " must be seven shares between 0 and 1 (left column, right column, strip, Lights row, then the "
-                 "right column's rows in order), got '" +
-                 s + "'";
-    }
-    return std::nullopt;
 }
 
 }  // namespace gbl::ui

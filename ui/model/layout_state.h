@@ -1,4 +1,4 @@
-// The editor's windows and the tiled layout's rectangles: pure geometry, no ImGui.
+// The editor's windows and the default dock layout's shares and rectangles: pure geometry, no ImGui.
 #pragma once
 
 #include "model/ui_scale.h"
@@ -6,8 +6,6 @@
 #include <glm/glm.hpp>
 
 #include <array>
-#include <optional>
-#include <string>
 #include <string_view>
 
 namespace gbl::ui {
@@ -27,12 +25,15 @@ struct TileRect {
     glm::vec2 size{0.0f};
 };
 
-// The tiled layout's boundaries (Debian's ImGui 1.86 has no docking, so the editor draws a handle
-// on each boundary and the user drags it): the columns' widths and the strip's height as shares of
-// the work area, the Lights row and the right column's three row boundaries (from the top) as
-// shares of the band above the strip.
-enum class Split { LeftColumn, RightColumn, Strip, LightsRow, InspectorRow, LessonsRow, StatsRow };
-inline constexpr std::size_t kSplitCount = 7;
+// Where a window is docked, as last drawn (the frame log's "docks" and "windowTabs").
+struct WindowDock {
+    unsigned dockId = 0;  // the dock node it is in; 0 when it floats (or is not drawn)
+    glm::vec4 tab{0.0f};  // its tab (docked) or title bar (floating): x, y, width, height in window coordinates
+};
+
+// The default layout's boundaries as shares: the columns' widths and the strip's height of the
+// work area, the Lights row and the right column's three row boundaries (from the top) of the band
+// above the strip.
 struct LayoutSplits {
     float left = 0.0f;
     float right = 0.0f;
@@ -45,12 +46,10 @@ struct LayoutState {
     bool resetRequested = false;  // "Reset layout" in the View menu
     bool dockBuilt = false;       // the dock tree exists (from imgui.ini or built this session)
     UiScaleState scale;           // the View menu's UI scale, kept in imgui.ini with the layout
-    // Tiled builds: the boundaries as the user dragged them (none = the defaults for the size and
-    // scale), kept in imgui.ini; the boundary being dragged (-1 = none).
-    std::optional<LayoutSplits> splits;
-    int draggingSplit = -1;
-    std::array<TileRect, kSplitCount> handles{};  // the handles as last drawn (Split order; the frame log's)
-    glm::vec4 fileMenuRect{0.0f};                 // the menu bar's "File", for the frame log
+    std::array<WindowDock, kEditorWindowNames.size()> docks{};  // EditorWindow order, as last drawn
+    glm::vec4 fileMenuRect{0.0f};                               // the menu bar's "File", for the frame log
+    glm::vec4 viewMenuRect{0.0f};                               // its "View"
+    glm::vec4 resetLayoutRect{0.0f};                            // View > Reset layout while the menu is open
 };
 
 // Fractions of the work area. The G-buffer strip spans the whole width below the others, so
@@ -92,37 +91,17 @@ struct LayoutShares {
 };
 LayoutShares layoutShares(glm::vec2 workSize, float uiScale);
 
-// Where a window sits in the tiled arrangement (no docking): the G-buffer strip along the
-// bottom; above it lights over pipeline on the left, the viewport in the centre, pixel
-// inspector over lessons over stats over log on the right. The rectangles cover the work area
-// exactly, without overlap.
-// `splits` replaces the default boundaries; every tile keeps a least size (kTileLeastPx) as far as
-// the work area allows.
-TileRect tiledRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize, float uiScale = 1.0f,
-                   std::optional<LayoutSplits> const& splits = std::nullopt);
+// Where the default dock layout puts each window (layout.cpp's DockBuilder splits by the same
+// shares): the G-buffer strip along the bottom; above it lights over pipeline on the left, the
+// viewport in the centre, pixel inspector over lessons over stats over log on the right. The
+// rectangles cover the work area exactly, without overlap; every one keeps a least size
+// (kTileLeastPx) as far as the work area allows.
+TileRect defaultWindowRect(EditorWindow window, glm::vec2 workPos, glm::vec2 workSize, float uiScale = 1.0f);
 
 // The boundaries the fractions above (and the least sizes at this scale) give.
 LayoutSplits defaultSplits(glm::vec2 workSize, float uiScale);
 
-// The smallest width or height a tile keeps while a boundary is dragged, at scale 1.
+// The smallest width or height a window keeps in the default layout, at scale 1.
 inline constexpr float kTileLeastPx = 48.0f;
-
-// Each boundary's handle: a band kSplitHandlePx wide centred on it, in window coordinates
-// (Split order).
-inline constexpr float kSplitHandlePx = 6.0f;
-std::array<TileRect, kSplitCount> splitHandles(glm::vec2 workPos, glm::vec2 workSize, float uiScale,
-                                               std::optional<LayoutSplits> const& splits);
-
-// The splits with boundary `split` moved to the mouse (window coordinates), held so that every
-// tile keeps its least size.
-LayoutSplits dragSplit(std::optional<LayoutSplits> const& splits, Split split, glm::vec2 mouse, glm::vec2 workPos,
-                       glm::vec2 workSize, float uiScale);
-
-// The splits' line in the layout file ("Splits=0.24,0.26,...", seven shares in Split order) and
-// its reading: seven numbers in (0, 1), the columns leaving room for the viewport and the right
-// column's rows in order; otherwise nullopt and one sentence naming `what`.
-inline constexpr std::string_view kSplitsKey = "Splits";
-std::string splitsLine(LayoutSplits const& splits);
-std::optional<LayoutSplits> parseSplits(std::string_view text, std::string_view what, std::string* error = nullptr);
 
 }  // namespace gbl::ui

@@ -4,6 +4,8 @@
 #include "core/frame_types.h"
 
 #include <array>
+#include <string>
+#include <vector>
 
 namespace gbl::ui {
 
@@ -19,6 +21,13 @@ struct StatsState {
     static constexpr int kHistory = 240;
     std::array<float, kHistory> frameMs{};     // wall-clock time between frames
     std::array<float, kHistory> gpuFrameMs{};  // renderer passes, summed
+    // Each pass seen so far, in the order first seen, with its time in the same ring as frameMs
+    // (0 in a frame where it did not run).
+    struct PassHistory {
+        std::string name;
+        std::array<float, kHistory> ms{};
+    };
+    std::vector<PassHistory> passes;
     int next = 0;
     int count = 0;
     FrameStats last;

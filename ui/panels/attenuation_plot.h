@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace gbl::ui {
@@ -23,15 +24,24 @@ struct AttenuationCurve {
 // (a fixed axis).
 AttenuationCurve sampleAttenuationCurve(PointLight const& light, int samples, float maxDistance = 0.0f);
 
-// What drawAttenuationPlot marked: the light's radius and its ghost's (-1 without a ghost).
+// What drawAttenuationPlot marked: the light's radius and its ghost's (-1 without a ghost), and the
+// axes' ends as ImPlot holds them (0 when the plot was not drawn).
 struct AttenuationPlotMarks {
     float radius = 0.0f;
     float ghostRadius = -1.0f;
+    float axisMax = 0.0f;   // the distance axis' end
+    float valueMax = 0.0f;  // the intensity axis' top
+    // As ImPlot holds them at the end of the plot: its legend's entries in order, and how many
+    // items (curves and marked lines) it was given this frame.
+    std::vector<std::string> legend;
+    int items = 0;
 };
 
-// Draws into a box of `size` at the cursor with ImDrawList; hovering shows the values there.
+// Draws an ImPlot plot of `size` at the cursor (distance on x, intensity on y; the caller's last
+// item is then the whole plot), inside an ImPlot context; hovering shows the values there.
 // fixedMaxDistance > 0 holds the distance axis there instead of a quarter past the radius;
-// pixelDistance (the inspected pixel's distance from the light) is marked where it is on the axis.
+// pixelDistance (the inspected pixel's distance from the light) is marked where it is on the axis,
+// or said at the axis' end when past it; the threshold and the radius are marked lines.
 // ghost (the light before the current drag) is drawn faint behind, its radius marked too and
 // "r = OLD → NEW" beside the radius; a following axis then reaches past both radii.
 AttenuationPlotMarks drawAttenuationPlot(PointLight const& light, bool logScale, ImVec2 size,

@@ -1,4 +1,4 @@
-// Clipping check over ImGui's internal window and table records (the same fields in 1.86 and 1.92).
+// Clipping check over ImGui's internal window and table records.
 #include "panels/clip_check.h"
 
 #include <imgui.h>

@@ -9,15 +9,6 @@
 
 namespace gbl::ui {
 
-namespace {
-// ImGui's built-in font, at `pixels` (it is drawn for 13: other sizes are scaled, blurrier).
-void addDefaultFont(ImFontAtlas& atlas, float pixels) {
-    ImFontConfig config;
-    config.SizePixels = pixels;
-    atlas.AddFontDefault(&config);
-}
-}  // namespace
-
 char const* uiFontPath() {
     return GBL_UI_FONT_PATH;
 }
@@ -37,41 +28,29 @@ ImWchar const* uiGlyphRanges() {
     return ranges;
 }
 
-std::optional<std::string> loadUiFont(char const* path, float pixels) {
+std::optional<std::string> loadUiFont(char const* path) {
     ImFontAtlas* atlas = ImGui::GetIO().Fonts;
     // ImGui would assert on a missing file: look first.
+    std::string why = " is missing (apt install fonts-dejavu-core)";
     if (std::FILE* f = std::fopen(path, "rb")) {
         std::fclose(f);
-        ImFontConfig config;
-        config.OversampleH = 2;  // the 1.86 default is 3: a smaller atlas, the same look at 1x
-        if (atlas->AddFontFromFileTTF(path, pixels, &config, uiGlyphRanges())) return std::nullopt;
+        if (atlas->AddFontFromFileTTF(path, kUiFontPixels)) return std::nullopt;
         atlas->Clear();
-        addDefaultFont(*atlas, pixels);
-        return "The UI font " + std::string(path) +
-               " could not be read; using ImGui's built-in font, which shows non-ASCII characters as \"?\".";
+        why = " could not be read";
     }
-    addDefaultFont(*atlas, pixels);
-    return "The UI font " + std::string(path) +
-           " is missing (apt install fonts-dejavu-core); using ImGui's built-in font, which shows non-ASCII "
-           "characters as \"?\".";
+    atlas->AddFontDefault();
+    return "The UI font " + std::string(path) + why +
+           "; using ImGui's built-in font, which shows non-ASCII characters as \"?\".";
 }
 
-std::optional<std::string> applyUiScale(ImGuiStyle const& base, float uiScale, float contentScale, char const* path) {
-    float const scale = uiScale * (contentScale > 0.0f ? contentScale : 1.0f);
+void applyUiScale(ImGuiStyle const& base, float uiScale, float contentScale) {
+    float const dpi = contentScale > 0.0f ? contentScale : 1.0f;
     ImGuiStyle style = base;  // a fresh copy: scaling the current style again would compound
-    if (scale != 1.0f) style.ScaleAllSizes(scale);
-#if IMGUI_VERSION_NUM >= 19200
+    if (uiScale * dpi != 1.0f) style.ScaleAllSizes(uiScale * dpi);
+    style.FontSizeBase = kUiFontPixels;
     style.FontScaleMain = uiScale;
-    style.FontScaleDpi = contentScale;
+    style.FontScaleDpi = dpi;
     ImGui::GetStyle() = style;
-    (void)path;
-    return std::nullopt;
-#else
-    ImGui::GetStyle() = style;
-    ImGui::GetIO().FontGlobalScale = contentScale > 0.0f ? contentScale : 1.0f;
-    ImGui::GetIO().Fonts->Clear();
-    return loadUiFont(path, kUiFontPixels * uiScale);
-#endif
 }
 
 float uiScaleFactor() {

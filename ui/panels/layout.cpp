@@ -1,22 +1,13 @@
-// Default dock layout (DockBuilder) and the tiled fallback for ImGui builds without docking.
+// The default dock layout, built with the DockBuilder API on first start and on View > Reset layout.
 #include "panels/layout.h"
 
 #include "panels/fonts.h"
-#include "panels/gui_compat.h"
 #include "panels/panel_frame.h"
 
 #include <imgui.h>
-#ifdef IMGUI_HAS_DOCK
-#include <imgui_internal.h>
-#endif
-
-#include <cmath>
-#include <cstdio>
-#include <optional>
+#include <imgui_internal.h>  // the DockBuilder API
 
 namespace gbl::ui {
-
-#ifdef IMGUI_HAS_DOCK
 
 namespace {
 constexpr char const* kDockSpaceName = "gbl-dockspace";
@@ -72,9 +63,17 @@ void beginLayout(LayoutState& state) {
     ImGui::DockSpaceOverViewport(dockspace, viewport);
 }
 
-void placeWindow(EditorWindow) {}
-
-void drawSplitHandles(LayoutState&) {}
+void recordDocks(LayoutState& state) {
+    for (std::size_t i = 0; i < state.docks.size(); ++i) {
+        WindowDock& d = state.docks[i];
+        d = {};
+        ImGuiWindow const* window = ImGui::FindWindowByName(kEditorWindowNames[i].data());
+        if (!window || !window->Active) continue;  // not begun this frame (closed)
+        d.dockId = window->DockIsActive ? window->DockId : 0u;
+        ImRect const r = window->DockIsActive ? window->DC.DockTabItemRect : window->TitleBarRect();
+        d.tab = {r.Min.x, r.Min.y, r.GetWidth(), r.GetHeight()};
+    }
+}
 
 void placeFrameWindow() {
     // Docked beside the strip by the default layout; a layout restored from an older imgui.ini has
@@ -83,93 +82,5 @@ void placeFrameWindow() {
     ImGui::SetNextWindowSize(ImVec2(viewport->WorkSize.x * 0.8f, viewport->WorkSize.y * kViewerStrip),
                              ImGuiCond_FirstUseEver);
 }
-
-int editorWindowFlags() {
-    return 0;
-}
-
-#else
-
-namespace {
-// The boundaries this frame places windows by (beginLayout copies them from the LayoutState).
-std::optional<LayoutSplits> tiledSplits;
-
-glm::vec2 workPos() {
-    ImGuiViewport const* viewport = ImGui::GetMainViewport();
-    return {viewport->WorkPos.x, viewport->WorkPos.y};
-}
-glm::vec2 workSize() {
-    ImGuiViewport const* viewport = ImGui::GetMainViewport();
-    return {viewport->WorkSize.x, viewport->WorkSize.y};
-}
-}  // namespace
-
-void beginLayout(LayoutState& state) {
-    // Tiled windows are re-placed every frame: a reset puts the boundaries back to the defaults.
-    if (state.resetRequested && state.splits) {
-        state.splits.reset();
-        ImGui::MarkIniSettingsDirty();
-    }
-    state.resetRequested = false;
-    tiledSplits = state.splits;
-}
-
-void drawSplitHandles(LayoutState& state) {
-    auto const handles = splitHandles(workPos(), workSize(), uiScaleFactor(), state.splits);
-    ImGuiWindowFlags const flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground |
-                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
-                                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
-    for (std::size_t i = 0; i < handles.size(); ++i) {
-        TileRect const& r = handles[i];
-        if (r.size.x < 1.0f || r.size.y < 1.0f) continue;  // a minimised or zero-sized window has no edges
-        bool const across = r.size.y > r.size.x;           // a column boundary: dragged left and right
-        char name[32];
-        std::snprintf(name, sizeof name, "##split%zu", i);
-        ImGui::SetNextWindowPos(ImVec2(r.pos.x, r.pos.y), ImGuiCond_Always);
-        ImGui::SetNextWindowSize(ImVec2(r.size.x, r.size.y), ImGuiCond_Always);
-        ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0.0f, 0.0f));
-        ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1.0f, 1.0f));
-        ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
-        ImGui::Begin(name, nullptr, flags);
-        ImGui::InvisibleButton("handle", ImVec2(r.size.x, r.size.y));
-        bool const hovered = ImGui::IsItemHovered(), active = ImGui::IsItemActive();
-        if (hovered || active) {
-            ImGui::SetMouseCursor(across ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
-            ImVec2 const a(r.pos.x, r.pos.y), b(r.pos.x + r.size.x, r.pos.y + r.size.y);
-            ImGui::GetForegroundDrawList()->AddRectFilled(
-                a, b, ImGui::GetColorU32(active ? ImGuiCol_SeparatorActive : ImGuiCol_SeparatorHovered));
-        }
-        if (active && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
-            ImVec2 const mouse = ImGui::GetIO().MousePos;
-            state.splits =
-                dragSplit(state.splits, Split(i), {mouse.x, mouse.y}, workPos(), workSize(), uiScaleFactor());
-            state.draggingSplit = int(i);
-        }
-        if (ImGui::IsItemDeactivated() && state.draggingSplit == int(i)) {
-            state.draggingSplit = -1;
-            ImGui::MarkIniSettingsDirty();  // imgui.ini keeps the boundaries with the UI scale
-        }
-        ImGui::End();
-        ImGui::PopStyleVar(3);
-    }
-    state.handles = handles;
-}
-
-void placeWindow(EditorWindow window) {
-    TileRect const r = tiledRect(window, workPos(), workSize(), uiScaleFactor(), tiledSplits);
-    ImGui::SetNextWindowPos(ImVec2(r.pos.x, r.pos.y), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(r.size.x, r.size.y), ImGuiCond_Always);
-}
-
-void placeFrameWindow() {
-    placeWindow(EditorWindow::GBuffer);  // over the strip: full width for the diagram
-}
-
-int editorWindowFlags() {
-    return ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-           ImGuiWindowFlags_NoBringToFrontOnFocus;
-}
-
-#endif
 
 }  // namespace gbl::ui

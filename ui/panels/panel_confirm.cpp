@@ -1,7 +1,7 @@
 // Discard-confirmation modal.
 #include "panels/panel_confirm.h"
 
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 
 #include <imgui.h>
 

@@ -2,7 +2,7 @@
 // files, a name field and OK/Cancel.
 #include "panels/panel_file_browser.h"
 
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 
 #include <imgui.h>
 

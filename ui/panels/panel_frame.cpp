@@ -1,7 +1,7 @@
 // Frame window: the diagram of the frame's declared passes (ui/model/frame_diagram.h lays it out).
 #include "panels/panel_frame.h"
 
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 #include "panels/layout.h"
 #include "panels/wrapped_text.h"
 
@@ -262,7 +262,7 @@ void drawFramePanel(FramePanelState& state, PipelineSettings& settings, FrameSta
     state.stopButton = glm::vec4(0.0f);
     if (!state.open) return;
     placeFrameWindow();
-    bool const visible = ImGui::Begin(kFrameWindowName, &state.open, editorWindowFlags());
+    bool const visible = ImGui::Begin(kFrameWindowName, &state.open);
     if (visible) {
         ImVec2 const pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
         state.windowRect = glm::vec4(pos.x, pos.y, size.x, size.y);

@@ -4,7 +4,7 @@
 
 #include "model/viewer_fields.h"
 #include "model/viewer_tools.h"
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 #include "panels/layout.h"
 #include "panels/viewer_tools.h"
 
@@ -204,13 +204,11 @@ void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& t
     state.hoverPixel.reset();
     state.showInViewport.reset();
     state.imageRects.fill(glm::vec4(0.0f));
-    placeWindow(EditorWindow::GBuffer);
     // Little padding above and below: the strip's height is the images'. The images fill the
     // window exactly, so it never scrolls (a scrollbar coming and going would resize them).
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(ImGui::GetStyle().WindowPadding.x, 3.0f));
-    state.visible =
-        ImGui::Begin(windowName(EditorWindow::GBuffer), nullptr,
-                     editorWindowFlags() | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    state.visible = ImGui::Begin(windowName(EditorWindow::GBuffer), nullptr,
+                                 ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     ImGui::PopStyleVar();
     if (state.visible) {
         ImVec2 const avail = ImGui::GetContentRegionAvail();

@@ -354,8 +354,7 @@ void drawLessonsPanel(LessonState& state, std::span<Lesson const> lessons, std::
     state.courseRows.clear();
     state.courseRestart.clear();
     state.nextLessonButton = glm::vec4(0.0f);
-    placeWindow(EditorWindow::Lessons);
-    if (ImGui::Begin(windowName(EditorWindow::Lessons), nullptr, editorWindowFlags())) {
+    if (ImGui::Begin(windowName(EditorWindow::Lessons), nullptr)) {
         if (state.lesson >= 0 && state.lesson < int(lessons.size()))
             drawStep(state, lessons, values, glossary, loadErrors);
         else

@@ -6,7 +6,7 @@
 #include "model/drag_speed.h"
 #include "model/light_list.h"
 #include "panels/attenuation_plot.h"
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 #include "panels/layout.h"
 
 #include <imgui.h>
@@ -316,8 +316,7 @@ void drawLightsPanel(LightsPanelState& state, std::vector<PointLight>& lights, L
     state.window = state.plotRect = state.kqFieldRect = state.plotPopupRect = glm::vec4(0.0f);
     state.plotRadius = state.plotGhostRadius = state.plotPopupRadius = -1.0f;
     state.plotLight.clear();
-    placeWindow(EditorWindow::Lights);
-    if (ImGui::Begin(windowName(EditorWindow::Lights), nullptr, editorWindowFlags())) {
+    if (ImGui::Begin(windowName(EditorWindow::Lights), nullptr)) {
         if (state.selected >= int(lights.size())) state.selected = int(lights.size()) - 1;
         ImVec2 const pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
         state.window = {pos.x, pos.y, size.x, size.y};

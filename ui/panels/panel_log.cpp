@@ -11,8 +11,7 @@
 namespace gbl::ui {
 
 void drawLogPanel(LogState& log) {
-    placeWindow(EditorWindow::Log);
-    if (ImGui::Begin(windowName(EditorWindow::Log), nullptr, editorWindowFlags())) {
+    if (ImGui::Begin(windowName(EditorWindow::Log), nullptr)) {
         if (ImGui::SmallButton("Clear")) {
             log.lines.clear();
             log.errorCount = 0;

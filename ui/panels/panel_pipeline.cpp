@@ -4,7 +4,7 @@
 #include "panels/item_rect.h"
 
 #include "core/pipeline_fields.h"
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 #include "panels/layout.h"
 
 #include <imgui.h>
@@ -205,8 +205,7 @@ void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailabl
     PipelinePanelRects unused;
     if (!rects) rects = &unused;
     *rects = {};
-    placeWindow(EditorWindow::Pipeline);
-    if (ImGui::Begin(windowName(EditorWindow::Pipeline), nullptr, editorWindowFlags())) {
+    if (ImGui::Begin(windowName(EditorWindow::Pipeline), nullptr)) {
         ImVec2 const pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
         rects->window = {pos.x, pos.y, size.x, size.y};
         // Each section's fields in table order; toggles share a row while they fit, the other

@@ -5,7 +5,7 @@
 #include "core/heat_scale.h"
 #include "model/pixel_breakdown.h"
 #include "model/viewer_tools.h"
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 #include "panels/layout.h"
 #include "panels/wrapped_text.h"
 
@@ -43,8 +43,7 @@ void row(char const* label, glm::vec4 v, int n = 4) {
 
 void drawPixelInspectorPanel(PixelInspectorState& state) {
     state.selectLight = -1;
-    placeWindow(EditorWindow::PixelInspector);
-    if (ImGui::Begin(windowName(EditorWindow::PixelInspector), nullptr, editorWindowFlags())) {
+    if (ImGui::Begin(windowName(EditorWindow::PixelInspector), nullptr)) {
         ImGui::Checkbox("Lock (L)", &state.locked);
         ImGui::SameLine();
         if (state.pixel)

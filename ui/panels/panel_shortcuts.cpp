@@ -2,7 +2,7 @@
 #include "panels/panel_shortcuts.h"
 
 #include "model/input_events.h"
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 
 #include <imgui.h>
 
@@ -14,7 +14,7 @@ void drawShortcutsWindow(bool& open) {
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Appearing,
                             ImVec2(0.5f, 0.5f));
     if (ImGui::Begin("Shortcuts", &open,
-                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | kNoDockingFlag)) {
+                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoDocking)) {
         if (ImGui::BeginTable("shortcuts", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
             ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
             ImGui::TableSetupColumn("where", ImGuiTableColumnFlags_WidthFixed);

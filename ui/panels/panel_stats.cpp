@@ -1,14 +1,15 @@
-// Stats window.
+// Stats window: frame and pass times (ImPlot history and a table), lights, memory, editor cost.
 #include "panels/panel_stats.h"
 
 #include "core/gbuffer_layout.h"
 #include "gl/gl_api.h"
 #include "gl/gpu_timer.h"
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 #include "panels/layout.h"
 #include "panels/wrapped_text.h"
 
 #include <imgui.h>
+#include <implot.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -17,18 +18,41 @@
 namespace gbl::ui {
 
 namespace {
-// History in chronological order for PlotLines (it takes an offset, but the max needs a pass).
-float historyMax(std::array<float, StatsState::kHistory> const& values, int count) {
-    float m = 1.0f;
-    for (int i = 0; i < count; ++i) m = std::max(m, values[std::size_t(i)]);
-    return m;
+// The frame and renderer times, and each pass's, over the last StatsState::kHistory frames as
+// ImPlot lines: x counts frames back from the newest (0), the ring's oldest sample first.
+void drawTimingPlots(StatsState const& stats, bool timed) {
+    int const offset = stats.count == StatsState::kHistory ? stats.next : 0;
+    double const start = -double(std::max(stats.count - 1, 0));
+    float const height = ImGui::GetFontSize() * 9.0f;
+    ImPlotFlags const flags = ImPlotFlags_NoMenus | ImPlotFlags_NoBoxSelect | ImPlotFlags_NoMouseText;
+    ImPlotAxisFlags const xFlags = ImPlotAxisFlags_Lock | ImPlotAxisFlags_NoMenus;
+    ImPlotAxisFlags const yFlags = ImPlotAxisFlags_AutoFit | ImPlotAxisFlags_NoMenus;
+    ImPlotSpec spec;
+    spec.Offset = offset;
+    if (ImPlot::BeginPlot("##frame times", ImVec2(-1.0f, height), flags)) {
+        ImPlot::SetupAxes("frames ago", "ms", xFlags, yFlags);
+        ImPlot::SetupAxisLimits(ImAxis_X1, -double(StatsState::kHistory - 1), 0.0, ImPlotCond_Always);
+        ImPlot::SetupLegend(ImPlotLocation_NorthWest, ImPlotLegendFlags_NoButtons | ImPlotLegendFlags_Horizontal);
+        ImPlot::PlotLine("frame", stats.frameMs.data(), stats.count, 1.0, start, spec);
+        if (timed) ImPlot::PlotLine("renderer", stats.gpuFrameMs.data(), stats.count, 1.0, start, spec);
+        ImPlot::EndPlot();
+    }
+    if (!timed || stats.passes.empty()) return;
+    if (ImPlot::BeginPlot("##pass times", ImVec2(-1.0f, height * 1.4f), flags)) {
+        ImPlot::SetupAxes("frames ago", "pass ms", xFlags, yFlags);
+        ImPlot::SetupAxisLimits(ImAxis_X1, -double(StatsState::kHistory - 1), 0.0, ImPlotCond_Always);
+        // Outside, so the lines stay visible under a long list of passes; a click on an entry hides it.
+        ImPlot::SetupLegend(ImPlotLocation_South, ImPlotLegendFlags_Outside | ImPlotLegendFlags_Horizontal);
+        for (StatsState::PassHistory const& p : stats.passes)
+            ImPlot::PlotLine(p.name.c_str(), p.ms.data(), stats.count, 1.0, start, spec);
+        ImPlot::EndPlot();
+    }
 }
 }  // namespace
 
 void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount, RenderOnChange* render,
                     std::string const& renderReason, FramePanelState* frame) {
-    placeWindow(EditorWindow::Stats);
-    if (ImGui::Begin(windowName(EditorWindow::Stats), nullptr, editorWindowFlags())) {
+    if (ImGui::Begin(windowName(EditorWindow::Stats), nullptr)) {
         FrameStats const& f = stats.last;
         double const frameMs = stats.costAverage.frameCpuMs;
         ImGui::Text("Frame %.2f ms (%.0f fps)", frameMs, frameMs > 0.0 ? 1000.0 / frameMs : 0.0);
@@ -83,15 +107,7 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
             wrappedText("%s", f.fallbackReason.c_str());
             ImGui::PopStyleColor();
         }
-        int const offset = stats.count == StatsState::kHistory ? stats.next : 0;
-        float const top = historyMax(stats.frameMs, stats.count) * 1.1f;
-        // PlotLines takes a literal width (no "fill" convention), so pass the available width.
-        float const plotW = ImGui::GetContentRegionAvail().x;
-        ImGui::PlotLines("##frame", stats.frameMs.data(), stats.count, offset, "frame ms", 0.0f, top,
-                         ImVec2(plotW, 45.0f));
-        if (timed)
-            ImGui::PlotLines("##gpu", stats.gpuFrameMs.data(), stats.count, offset, "renderer GPU ms", 0.0f, top,
-                             ImVec2(plotW, 45.0f));
+        drawTimingPlots(stats, timed);
 
         if (ImGui::BeginTable(
                 "passes", 2,

@@ -6,7 +6,7 @@
 #include "core/heat_scale.h"
 #include "gpu/view_target.h"
 #include "model/colormap.h"
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 #include "panels/layout.h"
 #include "panels/viewer_tools.h"
 #include "panels/viewport_checks.h"
@@ -35,13 +35,16 @@ void viewCombo(PipelineSettings& settings) {
         ImGui::EndCombo();
     }
 }
-// The full text when the rest of the row holds it, else the compact one with the full text as
-// its tooltip: the row keeps one line, so showing statistics never resizes the frame (which
-// would make the pinned frame incomparable).
-void fittedText(char const* full, char const* compact) {
-    bool const fits = ImGui::CalcTextSize(full).x <= ImGui::GetContentRegionAvail().x;
-    ImGui::TextUnformatted(fits ? full : compact);
-    if (!fits && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", full);
+// The full text when the rest of the row holds it, else the compact one (or, where even that is
+// too wide, the tiny one) with the full text as its tooltip: the row keeps one line, so showing
+// statistics never resizes the frame (which would make the pinned frame incomparable).
+void fittedText(char const* full, char const* compact, char const* tiny = nullptr) {
+    float const avail = ImGui::GetContentRegionAvail().x;
+    char const* shown = ImGui::CalcTextSize(full).x <= avail               ? full
+                        : !tiny || ImGui::CalcTextSize(compact).x <= avail ? compact
+                                                                           : tiny;
+    ImGui::TextUnformatted(shown);
+    if (shown != full && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", full);
 }
 
 // The viewport's tools, then "Pin lit", which holds the lit HDR frame; "Diff" shows |now - pinned|
@@ -102,7 +105,11 @@ void litPinRow(LitPin& pin, ViewportTools& tools, DebugView view, ViewportState&
                   pinned.c_str(), d.max, d.maxAt.x, d.maxAt.y, d.mean, d.overThreshold, d.pixels, d.nanPixels);
     std::snprintf(compact, sizeof compact, "max %.3g mean %.3g over %ld NaN %ld", d.max, d.mean, d.overThreshold,
                   d.nanPixels);
-    fittedText(full, compact);
+    // A narrow viewport at a large UI scale (the docked centre at 1.5x): the two numbers that say
+    // whether anything changed.
+    char tiny[64];
+    std::snprintf(tiny, sizeof tiny, "max %.3g over %ld", d.max, d.overThreshold);
+    fittedText(full, compact, tiny);
 }
 
 // A G-buffer view in forward mode would show the cleared (black) G-buffer: say why instead.
@@ -238,16 +245,14 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
     OverviewState& overview = state.overview;
     overview.cells.clear();
 
-    placeWindow(EditorWindow::Viewport);
     // No padding: the image fills the window edge to edge.
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
-    bool const open =
-        ImGui::Begin(windowName(EditorWindow::Viewport), nullptr,
-                     editorWindowFlags() | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    bool const open = ImGui::Begin(windowName(EditorWindow::Viewport), nullptr,
+                                   ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     ImGui::PopStyleVar();
     if (!open) {
-        // Collapsed or a hidden tab: render nothing rather than a frame nobody sees.
-        state.size = glm::ivec2(0);
+        // Collapsed or a hidden tab (another window tabbed over it): the frame keeps its last size,
+        // so the G-buffer viewers, which show its attachments, keep their images.
         ImGui::End();
         return;
     }

@@ -3,7 +3,7 @@
 #include "panels/viewer_tools.h"
 
 #include "model/viewer_tools.h"
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 
 #include <algorithm>
 #include <utility>

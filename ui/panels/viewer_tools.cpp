@@ -2,7 +2,7 @@
 #include "panels/viewer_tools.h"
 
 #include "model/colormap.h"
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 #include "panels/wrapped_text.h"
 
 #include <algorithm>

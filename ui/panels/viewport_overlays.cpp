@@ -6,7 +6,7 @@
 #include "gl/gl_api.h"
 #include "model/colormap.h"
 #include "model/lesson_claims.h"
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 
 #include <algorithm>
 #include <cmath>
