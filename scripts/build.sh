@@ -30,7 +30,9 @@ imgui_from="GBL_IMGUI_DIR"
 debian=0
 print_only=0
 targets=()
-cmake_args=()
+# Warnings are errors in this build (the editor's, the tests' and CI's), though not by default in
+# CMakeLists.txt; a -DGBL_WERROR=OFF among the arguments comes later and wins.
+cmake_args=(-DGBL_WERROR=ON)
 while [ $# -gt 0 ]; do
   case "$1" in
     --imgui-dir) [ $# -ge 2 ] || { echo "build.sh: --imgui-dir needs a folder" >&2; exit 2; }
