@@ -3,7 +3,7 @@
 # index.html (ours, app/web/index.html), gbuffer-lab.js and gbuffer-lab.wasm. Serve with
 #   python3 -m http.server -d build-web
 # Toolchain and libraries come from Debian, as scripts/install-deps.sh installs the native ones;
-# Dear ImGui's sources come from Debian's source package, fetched under build-web/ with a private
+# Dear ImGui's and zlib's sources come from Debian's source packages, fetched under build-web/ with a private
 # apt configuration (the system's sources lists are not touched). Nothing third-party is committed.
 # Environment: BUILD_TYPE (Release), JOBS (1), IMGUI_DIR (a checkout to use instead of the source package).
 set -euo pipefail
@@ -16,7 +16,7 @@ start=$(date +%s)
 
 # 1. Packages: the toolchain, the header-only libraries, stb_image (OpenImageIO does not build for the
 #    web), dpkg-dev for `apt-get source`, and chromium for tests/web/browser_test.py.
-packages=(emscripten libglm-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev libstb-dev fonts-dejavu-core dpkg-dev chromium cmake make)
+packages=(emscripten libglm-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev libstb-dev libtinyexr-dev fonts-dejavu-core dpkg-dev chromium cmake make)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -57,9 +57,15 @@ fi
 imgui_dir="${imgui_dir%/}"
 echo "Dear ImGui sources: $imgui_dir"
 
+# 2b. zlib for tinyexr's ZIP-compressed EXR (renderer/image), from Debian's zlib source package:
+#     Emscripten's own zlib port would download its sources while building (cmake/web.cmake).
+zlib_dir="$("$root/scripts/debian-source.sh" zlib "$out/third_party")"
+echo "zlib sources: $zlib_dir"
+
 # 3. Configure and build. -O2's JavaScript optimiser needs acorn from Debian's node modules.
 export NODE_PATH="${NODE_PATH:-/usr/share/nodejs}"
-emcmake cmake -S "$root" -B "$out" -DCMAKE_BUILD_TYPE="$build_type" -DIMGUI_DIR="$imgui_dir" -DGBL_BUILD_TESTS=OFF
+emcmake cmake -S "$root" -B "$out" -DCMAKE_BUILD_TYPE="$build_type" -DIMGUI_DIR="$imgui_dir" -DGBL_BUILD_TESTS=OFF \
+    -DGBL_WEB_ZLIB_DIR="$zlib_dir"
 emmake make -C "$out" -j"$jobs" gbuffer-lab-web
 cp "$root/app/web/index.html" "$out/index.html"
 echo "Built $out (index.html, gbuffer-lab.js, gbuffer-lab.wasm, gbuffer-lab.data) in $(( $(date +%s) - start )) s"
