@@ -3,7 +3,6 @@
 
 #include "core/cluster_math.h"
 #include "core/heat_scale.h"
-#include "gl/gl_api.h"
 #include "model/colormap.h"
 #include "model/lesson_claims.h"
 #include "panels/gui_compat.h"
