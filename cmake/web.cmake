@@ -44,8 +44,8 @@ add_library(Threads::Threads INTERFACE IMPORTED)
 add_library(CLI11::CLI11 INTERFACE IMPORTED)
 target_include_directories(CLI11::CLI11 SYSTEM INTERFACE ${GBL_WEB_INCLUDE})
 # OpenImageIO and libepoxy have no browser build: empty targets of their names, so the libraries'
-# link lines stay one list. The code that calls OpenImageIO natively uses stb_image/stb_image_write
-# under __EMSCRIPTEN__ (renderer/image/image_io_stb.cpp, screenshots); WebGL2's declarations come
+# link lines stay one list. Image files go through stb_image, stb_image_write and tinyexr here
+# (renderer/image/image_io_stb.cpp); WebGL2's declarations come
 # from Emscripten's GLES3 headers (renderer/gl/gl_api.h).
 add_library(PkgConfig::OIIO INTERFACE IMPORTED)
 target_link_libraries(PkgConfig::OIIO INTERFACE gbl_web_tinygltf)
