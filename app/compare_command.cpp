@@ -4,7 +4,7 @@
 
 #include "cli_values.h"
 #include "frame_export.h"
-#include "image_io.h"
+#include "image/image_io.h"
 #include "model/image_stats.h"
 #include "model/viewer_tools.h"
 #include "session_cli.h"

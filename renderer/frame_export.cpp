@@ -5,7 +5,7 @@
 #include "core/gbuffer_layout.h"
 #include "core/json_fields.h"
 #include "core/light_math.h"
-#include "image_io.h"
+#include "image/image_io.h"
 
 #include <nlohmann/json.hpp>
 

@@ -4,7 +4,9 @@
 # gbuffer-lab.js, gbuffer-lab.wasm and gbuffer-lab.data. Serve with
 #   python3 -m http.server -d build-web/site
 # Toolchain and libraries come from Debian, as scripts/install-deps.sh installs the native ones;
-# Dear ImGui and ImPlot are the ones vendored under third_party/, as in the native build.
+# Dear ImGui and ImPlot are the ones vendored under third_party/, as in the native build; zlib's sources
+# (for tinyexr in the browser) come from Debian's source package, fetched under build-web/ with a private
+# apt configuration (the system's sources lists are not touched). Nothing else third-party is used.
 # Environment: BUILD_TYPE (Release), JOBS (1).
 set -euo pipefail
 
@@ -15,8 +17,8 @@ build_type="${BUILD_TYPE:-Release}"
 start=$(date +%s)
 
 # 1. Packages: the toolchain, the header-only libraries, stb_image (OpenImageIO does not build for the
-#    web), and chromium for tests/web/browser_test.py.
-packages=(emscripten libglm-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev libstb-dev fonts-dejavu-core chromium cmake make)
+#    web), tinyexr, dpkg-dev for `apt-get source`, and chromium for tests/web/browser_test.py.
+packages=(emscripten libglm-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev libstb-dev libtinyexr-dev fonts-dejavu-core dpkg-dev chromium cmake make)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -29,9 +31,15 @@ if [ ${#missing[@]} -ne 0 ]; then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-# 2. Configure and build. -O2's JavaScript optimiser needs acorn from Debian's node modules.
+# 2. zlib for tinyexr's ZIP-compressed EXR (renderer/image), from Debian's zlib source package:
+#    Emscripten's own zlib port would download its sources while building (cmake/web.cmake).
+zlib_dir="$("$root/scripts/debian-source.sh" zlib "$out/third_party")"
+echo "zlib sources: $zlib_dir"
+
+# 3. Configure and build. -O2's JavaScript optimiser needs acorn from Debian's node modules.
 export NODE_PATH="${NODE_PATH:-/usr/share/nodejs}"
-emcmake cmake -S "$root" -B "$out" -DCMAKE_BUILD_TYPE="$build_type" -DGBL_BUILD_TESTS=OFF
+emcmake cmake -S "$root" -B "$out" -DCMAKE_BUILD_TYPE="$build_type" -DGBL_BUILD_TESTS=OFF \
+    -DGBL_WEB_ZLIB_DIR="$zlib_dir"
 emmake make -C "$out" -j"$jobs" gbuffer-lab-web
 cp "$root/app/web/index.html" "$out/index.html"
 

@@ -13,7 +13,9 @@ cd "$(dirname "$0")/.."
 
 print_only=0
 targets=()
-cmake_args=()
+# Warnings are errors in this build (the editor's, the tests' and CI's), though not by default in
+# CMakeLists.txt; a -DGBL_WERROR=OFF among the arguments comes later and wins.
+cmake_args=(-DGBL_WERROR=ON)
 while [ $# -gt 0 ]; do
   case "$1" in
     --debian-imgui) shift ;;

@@ -13,6 +13,8 @@ packages=(
   xvfb xauth xdotool x11-apps
   clang libclang-rt-14-dev clang-format
   glslang-tools fonts-dejavu-core
+  # The browser's image files (renderer/image/image_io_stb.cpp), tested natively: stb, tinyexr, zlib.
+  libstb-dev libtinyexr-dev zlib1g-dev
 )
 
 missing=()

@@ -5,7 +5,7 @@
 #include "core/shading_cpu.h"
 #include "frame_export.h"
 #include "gl_fixture.h"
-#include "image_io.h"
+#include "image/image_io.h"
 #include "run_command.h"
 #include "scene/default_scene.h"
 #include "test_paths.h"

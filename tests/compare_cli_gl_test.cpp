@@ -1,6 +1,6 @@
 // `gbuffer-lab compare` and `render --accumulate` end to end: the files they write, their values,
 // and the inputs they refuse.
-#include "image_io.h"
+#include "image/image_io.h"
 #include "run_command.h"
 #include "test_paths.h"
 

@@ -1,7 +1,7 @@
 // glTF texture transforms and TEXCOORD_1 in real frames: `gbuffer-lab render --camera 0` of a handcrafted quad
 // with a 2x2 checker, the albedo read back where the transform says each texel lands.
 #include "handmade_gltf.h"
-#include "image_io.h"
+#include "image/image_io.h"
 #include "run_command.h"
 #include "scene/texture_transform.h"
 #include "test_paths.h"

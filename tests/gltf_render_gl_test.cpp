@@ -1,6 +1,6 @@
 // Real glTF files through `gbuffer-lab render --scene`: every shared model renders, and the G-buffer holds what the
 // files say.
-#include "image_io.h"
+#include "image/image_io.h"
 #include "run_command.h"
 #include "test_paths.h"
 

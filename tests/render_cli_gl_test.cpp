@@ -1,6 +1,6 @@
 // `gbuffer-lab render` end to end: the files it writes, their contents, and bad arguments.
 #include "core/pipeline_fields.h"
-#include "image_io.h"
+#include "image/image_io.h"
 #include "run_command.h"
 #include "test_paths.h"
 

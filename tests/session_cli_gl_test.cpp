@@ -1,6 +1,6 @@
 // Sessions on the command line: a saved session renders the same frame again, a session's
 // values are really used, bad sessions and requests past the limits exit 2 with the limit.
-#include "image_io.h"
+#include "image/image_io.h"
 #include "run_command.h"
 #include "session/session.h"
 #include "test_paths.h"

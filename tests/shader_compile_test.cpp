@@ -4,7 +4,7 @@
 // sets: each G-buffer layout's, with and without GBL_MASKED_BRANCHES (software rasterisers) and
 // GBL_SHADER_CHECKS (the test build's range checks); the coverage variants are programs of their own.
 #include "core/gbuffer_layout.h"
-#include "gl/shader_library.h"
+#include "gl/shader_sources.h"
 
 #include <gtest/gtest.h>
 
@@ -50,7 +50,7 @@ TEST(ShaderCompile, EveryProgramUnderEveryDefineSetPassesTheReferenceCompiler) {
         GTEST_FAIL() << "glslangValidator not found: install Debian's glslang-tools (scripts/install-deps.sh does)";
     fs::path const dir = fs::temp_directory_path() / ("gbl_glslang_" + std::to_string(::getpid()));
     fs::create_directories(dir);
-    ShaderLibrary shaders{fs::path()};
+    ShaderSources shaders{fs::path()};
     int variants = 0;
     std::vector<std::string> failures;
     for (GBufferLayout layout :
@@ -60,7 +60,7 @@ TEST(ShaderCompile, EveryProgramUnderEveryDefineSetPassesTheReferenceCompiler) {
                 std::vector<std::string> defines = layoutShaderDefines(layoutDesc(layout));
                 if (masked) defines.push_back("GBL_MASKED_BRANCHES");
                 if (checks) defines.push_back("GBL_SHADER_CHECKS");
-                ASSERT_TRUE(shaders.setGlobalDefines(defines, nullptr));
+                shaders.setGlobalDefines(defines);
                 std::string defineNames;
                 for (auto const& d : defines) defineNames += " " + d;
                 for (ProgramInfo const& p : programTable())
@@ -93,13 +93,13 @@ TEST(ShaderCompile, EveryWebGL2StagePassesTheReferenceCompilerAsGlslEs300) {
         GTEST_FAIL() << "glslangValidator not found: install Debian's glslang-tools (scripts/install-deps.sh does)";
     fs::path const dir = fs::temp_directory_path() / ("gbl_glslang_es_" + std::to_string(::getpid()));
     fs::create_directories(dir);
-    ShaderLibrary shaders{fs::path()};
+    ShaderSources shaders{fs::path()};
     shaders.setEsProfile(true);
     int variants = 0;
     std::vector<std::string> failures;
     for (GBufferLayout layout :
          {GBufferLayout::Classic, GBufferLayout::Packed, GBufferLayout::Naive8, GBufferLayout::Rgb10a2}) {
-        ASSERT_TRUE(shaders.setGlobalDefines(layoutShaderDefines(layoutDesc(layout)), nullptr));
+        shaders.setGlobalDefines(layoutShaderDefines(layoutDesc(layout)));
         for (ProgramInfo const& p : programTable())
             for (auto const& [stage, file] : p.desc.stages) {
                 if (stage == GL_COMPUTE_SHADER) continue;
@@ -138,9 +138,9 @@ TEST(ShaderCompile, EveryViewsOwnProgramPassesTheReferenceCompiler) {
     int variants = 0;
     for (bool es : {false, true})
         for (GBufferLayout layout : {GBufferLayout::Classic, GBufferLayout::Packed}) {
-            ShaderLibrary shaders{fs::path()};
+            ShaderSources shaders{fs::path()};
             shaders.setEsProfile(es);
-            ASSERT_TRUE(shaders.setGlobalDefines(layoutShaderDefines(layoutDesc(layout)), nullptr));
+            shaders.setGlobalDefines(layoutShaderDefines(layoutDesc(layout)));
             for (std::size_t v = 0; v < kDebugViewNames.size(); ++v) {
                 std::string error;
                 auto const text =

@@ -7,7 +7,7 @@
 #include "gl_fixture.h"
 #include "gltf/loader.h"
 #include "handmade_gltf.h"
-#include "image_io.h"
+#include "image/image_io.h"
 #include "run_command.h"
 #include "test_paths.h"
 

@@ -1,7 +1,7 @@
 // Viewer export: the PNG holds what the viewer shows (channels, remap), the EXR the stored floats.
 #include "editor/viewer_export.h"
 #include "gl_fixture.h"
-#include "image_io.h"
+#include "image/image_io.h"
 #include "run_command.h"
 #include "test_scenes.h"
 

@@ -1,6 +1,7 @@
 // Time per pass: GL timestamps on drivers that attribute them, finish-bracketed CPU time on those that do not.
 #pragma once
 
+#include "core/timing_source.h"
 #include "gl/gl_api.h"
 #include "gl/query.h"
 
@@ -10,29 +11,6 @@
 #include <vector>
 
 namespace gbl {
-
-enum class TimingSource {
-    GpuTimestamps,  // glQueryCounter(GL_TIMESTAMP) before and after each pass, read a frame later
-    CpuFinish,      // glFinish before and after each pass, steady_clock in between
-    GpuElapsed,     // a GL_TIME_ELAPSED query around each pass (WebGL2's EXT_disjoint_timer_query_webgl2)
-};
-
-struct TimingMethod {
-    TimingSource source = TimingSource::GpuTimestamps;
-    std::string reason;  // one sentence: why this source, for stats.json and bench
-};
-
-inline std::string_view timingSourceName(TimingSource s) {
-    switch (s) {
-        case TimingSource::CpuFinish:
-            return "cpu_finish";
-        case TimingSource::GpuElapsed:
-            return "gpu_elapsed";
-        case TimingSource::GpuTimestamps:
-            break;
-    }
-    return "gpu_timestamps";
-}
 
 // Software rasterisers (Mesa's llvmpipe and softpipe, SwiftShader) bin draws and rasterise them
 // at the next flush on their own threads; their timer queries measure when that work overlapped
@@ -59,12 +37,6 @@ inline TimingMethod chooseTimingMethod(std::string_view glRenderer, bool browser
                                                  "do not attribute work to passes: each pass is bracketed by "
                                                  "glFinish and timed on the CPU"};
     return {TimingSource::GpuTimestamps, "GL_TIMESTAMP queries at each pass boundary, read back a frame later"};
-}
-
-// Whether pass times from `timingSource` (FrameStats::timingSource) measure the passes: not so
-// in a browser without timer queries, where the CPU times stand for nothing drawn.
-inline bool passesTimed(std::string_view timingSource) {
-    return !(gl::kWebGL2 && timingSource == timingSourceName(TimingSource::CpuFinish));
 }
 
 class GpuTimer {

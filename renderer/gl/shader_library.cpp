@@ -1,14 +1,10 @@
-// Shader sources, #include expansion and hot reload.
+// Programs built from the shader sources (gl/shader_sources.h), per set of defines, and hot reload.
 #include "gl/shader_library.h"
 
-#include "core/tile_math.h"
-#include "gl/embedded_shaders.h"
 #include "gl/gl_api.h"
 #include "gl/shader_bindings.h"
 
-#include <fstream>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 #include <string_view>
 #include <utility>
@@ -17,88 +13,7 @@ namespace gbl {
 
 namespace fs = std::filesystem;
 
-ShaderLibrary::ShaderLibrary(fs::path sourceDir) : sourceDir_(std::move(sourceDir)) {
-    std::error_code ec;
-    if (sourceDir_.empty() || !fs::is_directory(sourceDir_, ec)) {
-        sourceDir_.clear();
-        return;
-    }
-    for (auto const& s : embeddedShaders()) {
-        auto const t = fs::last_write_time(sourceDir_ / s.name, ec);
-        if (!ec) seenTimes_[s.name] = t;
-    }
-}
-
-std::optional<std::string> ShaderLibrary::rawSource(std::string const& file) const {
-    if (auto it = diskOverrides_.find(file); it != diskOverrides_.end()) return it->second;
-    for (auto const& s : embeddedShaders())
-        if (file == s.name) return std::string(s.source);
-    return std::nullopt;
-}
-
-std::optional<std::string> ShaderLibrary::source(std::string const& file, std::string* error) const {
-    auto raw = rawSource(file);
-    if (!raw) {
-        if (error) *error = "shader file " + file + " does not exist in shaders/";
-        return std::nullopt;
-    }
-    // Expand `#include "name"` lines (one level is all the shaders use; nested works too).
-    std::istringstream in(*raw);
-    std::string out, line;
-    while (std::getline(in, line)) {
-        if (line.rfind("#include", 0) == 0) {
-            auto const a = line.find('"'), b = line.rfind('"');
-            if (a == std::string::npos || b <= a) {
-                if (error) *error = file + ": malformed #include line: " + line;
-                return std::nullopt;
-            }
-            auto inc = source(line.substr(a + 1, b - a - 1), error);
-            if (!inc) return std::nullopt;
-            out += *inc;
-            out += '\n';
-        } else {
-            out += line;
-            out += '\n';
-        }
-    }
-    return out;
-}
-
-std::optional<std::string> ShaderLibrary::stageSource(ProgramId id, std::string const& file, std::string* error,
-                                                      std::string const& variantDefine) const {
-    auto text = source(file, error);
-    if (!text) return std::nullopt;
-    // Defines go right after the #version line, which must stay the first directive (the one-line
-    // file header comment may come before it). GBL_PROGRAM_ID names the program in the
-    // shader-checks report (shaders/shader_checks.glsl).
-    auto const version = text->find("#version");
-    auto const eol = text->find('\n', version == std::string::npos ? 0 : version);
-    std::string defs = "#define GBL_PROGRAM_ID " + std::to_string(int(id)) + "\n";
-    // The tile size of tiled and clustered lighting: one constant for C++ and every shader.
-    defs += "#define GBL_TILE_SIZE " + std::to_string(kTileSize) + "\n";
-    for (auto const& d : programInfo(id).desc.defines) defs += "#define " + d + "\n";
-    if (!variantDefine.empty()) defs += "#define " + variantDefine + "\n";
-    for (auto const& d : globalDefines_) defs += "#define " + d + "\n";
-    // The light buffer's row width where it is a 2D texture (shaders/light_texels.glsl).
-    defs += "#define GBL_LIGHT_TEXELS_PER_ROW " + std::to_string(gl::kLightTexelsPerRow) + "\n";
-    std::size_t at = eol == std::string::npos ? text->size() : eol + 1;
-    static constexpr std::string_view kCore = "#version 330 core";
-    if (esProfile_ && version != std::string::npos && text->compare(version, kCore.size(), kCore) == 0) {
-        // WebGL2: GLSL ES 3.00, whose #version must be the very first line (the file's header
-        // comment moves below it). Precision statements are declarations, so they follow the
-        // defines; ES gives the 3D, array, integer and shadow samplers no default precision.
-        text->erase(version, eol + 1 - version);
-        text->insert(0, "#version 300 es\n");
-        at = std::string_view("#version 300 es\n").size();
-        defs += "#define GBL_NO_BUFFER_TEXTURES\n";
-        defs +=
-            "precision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
-            "precision highp sampler3D;\nprecision highp samplerCube;\nprecision highp sampler2DArray;\n"
-            "precision highp sampler2DShadow;\nprecision highp isampler2D;\nprecision highp usampler2D;\n";
-    }
-    text->insert(at, defs);
-    return text;
-}
+ShaderLibrary::ShaderLibrary(fs::path sourceDir) : sources_(std::move(sourceDir)) {}
 
 std::optional<gl::Program> ShaderLibrary::build(ProgramId id, std::string* log,
                                                 std::string const& variantDefine) const {
@@ -106,7 +21,7 @@ std::optional<gl::Program> ShaderLibrary::build(ProgramId id, std::string* log,
     std::vector<gl::ShaderStageSource> stages;
     for (auto const& [stage, file] : desc.stages) {
         std::string err;
-        auto text = stageSource(id, file, &err, variantDefine);
+        auto text = sources_.stageSource(id, file, &err, variantDefine);
         if (!text) {
             if (log) *log = "program " + desc.name + ": " + err;
             return std::nullopt;
@@ -142,8 +57,9 @@ bool ShaderLibrary::add(ProgramId id, std::string* log) {
 }
 
 gl::Program const& ShaderLibrary::variant(ProgramId id, std::string const& define) {
-    auto defines = variants_.find(globalDefines_);
-    if (defines == variants_.end()) defines = variants_.emplace(globalDefines_, decltype(defines->second){}).first;
+    auto defines = variants_.find(sources_.globalDefines());
+    if (defines == variants_.end())
+        defines = variants_.emplace(sources_.globalDefines(), decltype(defines->second){}).first;
     auto found = defines->second.find(std::make_pair(id, define));
     if (found == defines->second.end()) {
         std::string log;
@@ -159,14 +75,15 @@ gl::Program const& ShaderLibrary::variant(ProgramId id, std::string const& defin
 }
 
 bool ShaderLibrary::setGlobalDefines(std::vector<std::string> defines, std::string* log) {
-    if (defines == globalDefines_) return true;
+    if (defines == sources_.globalDefines()) return true;
     std::array<gl::Program, kProgramCount> previous = std::move(programs_);
     programs_ = {};
     if (auto kept = otherDefines_.find(defines); kept != otherDefines_.end()) {
         programs_ = std::move(kept->second);
         otherDefines_.erase(kept);
     }
-    std::vector<std::string> left = std::exchange(globalDefines_, std::move(defines));
+    std::vector<std::string> left = sources_.globalDefines();
+    sources_.setGlobalDefines(std::move(defines));
     bool ok = true;
     for (ProgramInfo const& info : programTable()) {
         std::size_t const i = std::size_t(info.id);
@@ -185,19 +102,7 @@ bool ShaderLibrary::setGlobalDefines(std::vector<std::string> defines, std::stri
 
 std::vector<std::string> ShaderLibrary::reloadChanged() {
     std::vector<std::string> messages;
-    if (sourceDir_.empty()) return messages;
-    std::set<std::string> changed;
-    std::error_code ec;
-    for (auto& [file, seen] : seenTimes_) {
-        auto const t = fs::last_write_time(sourceDir_ / file, ec);
-        if (ec || t == seen) continue;
-        seen = t;
-        std::ifstream f(sourceDir_ / file, std::ios::binary);
-        std::ostringstream ss;
-        ss << f.rdbuf();
-        diskOverrides_[file] = ss.str();
-        changed.insert(file);
-    }
+    std::set<std::string> const changed = sources_.readChanged();
     if (changed.empty()) return messages;
     // Programs are deleted below: the one still in use would live on, flagged, until the next
     // glUseProgram, and a caller that saved and restores it (ImGui's renderer does) would then

@@ -4,6 +4,7 @@
 
 #include "gl/program.h"
 #include "gl/program_id.h"
+#include "gl/shader_sources.h"
 
 #include <array>
 #include <filesystem>
@@ -51,29 +52,22 @@ public:
     // are kept, so switching back costs no build (the A/B split renders two layouts a frame).
     bool setGlobalDefines(std::vector<std::string> defines, std::string* log);
 
-    // Text of a shader file with #include lines expanded: from disk when reloading has seen a
-    // change to it, otherwise the embedded copy. nullopt when unknown.
-    std::optional<std::string> source(std::string const& file, std::string* error = nullptr) const;
-    // The text stage `file` of program `id` is compiled from: source(file) with the program's own
-    // defines, the global ones and GBL_PROGRAM_ID inserted after #version. No GL call: the
-    // reference-compiler test (tests/shader_compile_test.cpp) reads it too.
+    // The shader text (gl/shader_sources.h): files with #include expanded, each stage's text.
+    std::optional<std::string> source(std::string const& file, std::string* error = nullptr) const {
+        return sources_.source(file, error);
+    }
     std::optional<std::string> stageSource(ProgramId id, std::string const& file, std::string* error = nullptr,
-                                           std::string const& variantDefine = {}) const;
-    std::vector<std::string> const& globalDefines() const { return globalDefines_; }
-    // Whether stages are emitted as GLSL ES 3.00 for WebGL2 (gl::kGlslEs: on in the browser build):
-    // `#version 330 core` becomes `#version 300 es` with precision statements and
-    // GBL_NO_BUFFER_TEXTURES; compute stages (430) are left as they are, never built there. Settable
-    // so the reference-compiler test checks the web's text natively too.
-    void setEsProfile(bool on) { esProfile_ = on; }
-    bool esProfile() const { return esProfile_; }
+                                           std::string const& variantDefine = {}) const {
+        return sources_.stageSource(id, file, error, variantDefine);
+    }
+    std::vector<std::string> const& globalDefines() const { return sources_.globalDefines(); }
+    void setEsProfile(bool on) { sources_.setEsProfile(on); }
+    bool esProfile() const { return sources_.esProfile(); }
 
 private:
     std::optional<gl::Program> build(ProgramId id, std::string* log, std::string const& variantDefine = {}) const;
-    std::optional<std::string> rawSource(std::string const& file) const;
 
-    std::filesystem::path sourceDir_;
-    std::vector<std::string> globalDefines_;
-    bool esProfile_ = gl::kGlslEs;
+    ShaderSources sources_;
     std::array<gl::Program, kProgramCount> programs_;
     std::size_t builds_ = 0;
     // Programs built for other global defines; dropped when a shader file changes on disk.
@@ -82,8 +76,6 @@ private:
     // variant(): by global defines, then program and define (looked up without copying the
     // defines, as each frame does); an empty program marks a failed build.
     std::map<std::vector<std::string>, std::map<std::pair<ProgramId, std::string>, gl::Program>> variants_;
-    std::map<std::string, std::filesystem::file_time_type> seenTimes_;  // per file on disk
-    std::map<std::string, std::string> diskOverrides_;                  // files read from disk
 };
 
 }  // namespace gbl

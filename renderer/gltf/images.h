@@ -1,4 +1,4 @@
-// Image work for the glTF loader: OpenImageIO decoding from memory, placeholders, specular bakes.
+// Image work for the glTF loader: decoding from memory (image/image_io.h), placeholders, specular bakes.
 #pragma once
 
 #include "scene/scene_data.h"
@@ -18,7 +18,7 @@ struct DecodedImage {
     bool overLimit = false;  // the image is larger than maxPixels; error states the limit
 };
 
-// Decodes PNG, JPEG or any format OpenImageIO reads from memory into 8 bits per channel,
+// Decodes PNG or JPEG (natively any format OpenImageIO reads) from memory into 8 bits per channel,
 // keeping 1..4 channels and straight (unassociated) alpha as glTF requires. `nameHint`
 // (a URI or a mime type) helps pick the format when the bytes' signature does not.
 DecodedImage decodeImage(std::span<std::uint8_t const> bytes, std::string name, std::string_view nameHint,

@@ -1,15 +1,10 @@
-// Loading a foreign G-buffer: images through OpenImageIO (stb_image in the browser) or as raw
-// samples, then decoding.
+// Loading a foreign G-buffer: images through image/image_io.h or as raw samples, then decoding.
 #include "import/imported_gbuffer.h"
 
 #include "core/depth.h"
 #include "core/octahedral.h"
 
-#ifdef __EMSCRIPTEN__
-#include <stb_image.h>
-#else
-#include <OpenImageIO/imageio.h>
-#endif
+#include "image/image_io.h"
 
 #include <algorithm>
 #include <cmath>
@@ -99,86 +94,20 @@ std::optional<FileImage> readRaw(ImageRef const& ref, std::string* error) {
     return img;
 }
 
-#ifdef __EMSCRIPTEN__
-// The browser build reads PNG, JPEG and HDR files (8 or 16 bits, or float) through stb_image; EXR
-// needs OpenImageIO and is refused with that reason.
+// Image files through image/image_io.h (OpenImageIO natively; stb_image and tinyexr in the browser).
 std::optional<FileImage> readFile(ImageRef const& ref, std::string* error) {
     if (ref.raw) return readRaw(ref, error);
-    char const* path = ref.path.c_str();
-    FileImage img;
-    if (!stbi_info(path, &img.width, &img.height, &img.channels)) {
-        std::ifstream probe(ref.path);
-        std::string const reason = !probe                       ? "no such file, or no permission"
-                                   : ref.path.ends_with(".exr") ? "EXR needs OpenImageIO, which the browser build lacks"
-                                                                : stbi_failure_reason();
-        *error = ref.field + ".file " + ref.path + " cannot be read (" + reason + ")";
+    DecodedPixels read = readImageFile(ref.path, std::size_t(1) << 28);
+    if (read.overLimit) {
+        *error = ref.field + ".file " + ref.path + " has no usable size (" + sizeText(read.width, read.height) + ")";
         return std::nullopt;
     }
-    if (img.width <= 0 || img.height <= 0 || img.channels <= 0 ||
-        std::size_t(img.width) * std::size_t(img.height) > (std::size_t(1) << 28)) {
-        *error = ref.field + ".file " + ref.path + " has no usable size (" + sizeText(img.width, img.height) + ")";
+    if (!read.ok()) {
+        *error = ref.field + ".file " + ref.path + " cannot be read (" + read.error + ")";
         return std::nullopt;
     }
-    std::size_t const count = std::size_t(img.width) * std::size_t(img.height) * std::size_t(img.channels);
-    img.pixels.resize(count);
-    int w = 0, h = 0, c = 0;
-    if (stbi_is_hdr(path)) {
-        img.storage = SampleStorage::Float;
-        float* data = stbi_loadf(path, &w, &h, &c, 0);
-        if (data) std::copy(data, data + count, img.pixels.begin());
-        stbi_image_free(data);
-        if (!data) {
-            *error = ref.field + ".file " + ref.path + " cannot be read (" + stbi_failure_reason() + ")";
-            return std::nullopt;
-        }
-        return img;
-    }
-    bool const sixteen = stbi_is_16_bit(path) != 0;
-    img.storage = sixteen ? SampleStorage::Uint16 : SampleStorage::Uint8;
-    std::uint16_t* data = stbi_load_16(path, &w, &h, &c, 0);
-    if (!data) {
-        *error = ref.field + ".file " + ref.path + " cannot be read (" + stbi_failure_reason() + ")";
-        return std::nullopt;
-    }
-    for (std::size_t i = 0; i < count; ++i) img.pixels[i] = float(data[i]) / 65535.0f;
-    stbi_image_free(data);
-    return img;
+    return FileImage{read.width, read.height, read.channels, read.storage, std::move(read.floats)};
 }
-#else
-std::optional<FileImage> readFile(ImageRef const& ref, std::string* error) {
-    if (ref.raw) return readRaw(ref, error);
-    auto in = OIIO::ImageInput::open(ref.path);
-    if (!in) {
-        std::string reason = OIIO::geterror();
-        std::ifstream probe(ref.path);
-        if (!probe) reason = "no such file, or no permission";
-        *error = ref.field + ".file " + ref.path + " cannot be read (" + reason + ")";
-        return std::nullopt;
-    }
-    OIIO::ImageSpec const& spec = in->spec();
-    FileImage img;
-    img.width = spec.width;
-    img.height = spec.height;
-    img.channels = spec.nchannels;
-    OIIO::TypeDesc const t = spec.format;
-    img.storage = t == OIIO::TypeDesc::UINT8    ? SampleStorage::Uint8
-                  : t == OIIO::TypeDesc::UINT16 ? SampleStorage::Uint16
-                  : t == OIIO::TypeDesc::HALF   ? SampleStorage::Half
-                  : t == OIIO::TypeDesc::FLOAT  ? SampleStorage::Float
-                                                : SampleStorage::Other;
-    if (img.width <= 0 || img.height <= 0 || img.channels <= 0 ||
-        std::size_t(img.width) * std::size_t(img.height) > (std::size_t(1) << 28)) {
-        *error = ref.field + ".file " + ref.path + " has no usable size (" + sizeText(img.width, img.height) + ")";
-        return std::nullopt;
-    }
-    img.pixels.resize(std::size_t(img.width) * std::size_t(img.height) * std::size_t(img.channels));
-    if (!in->read_image(0, 0, 0, img.channels, OIIO::TypeDesc::FLOAT, img.pixels.data())) {
-        *error = ref.field + ".file " + ref.path + " cannot be read (" + in->geterror() + ")";
-        return std::nullopt;
-    }
-    return img;
-}
-#endif
 
 float srgbToLinear(float c) {
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);

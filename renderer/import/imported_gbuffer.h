@@ -1,7 +1,8 @@
-// A foreign G-buffer in memory: the manifest's images read (OpenImageIO or raw), turned right way
+// A foreign G-buffer in memory: the manifest's images read (image/image_io.h or raw), turned right way
 // up, checked for consistent sizes and conventions, and decoded to world space.
 #pragma once
 
+#include "image/image_io.h"  // SampleStorage
 #include "import/gbuffer_manifest.h"
 
 #include <glm/glm.hpp>
@@ -12,9 +13,6 @@
 #include <vector>
 
 namespace gbl {
-
-// How a file stores its samples: what limits the precision of the values read from it.
-enum class SampleStorage { Uint8, Uint16, Half, Float, Other };
 
 // One attachment as read: the manifest's channels of its file, rows top to bottom.
 struct ImportedImage {

@@ -35,7 +35,7 @@ Cases:
              again; an empty folder, one without a scene and one with two scenes each get their one
              line in the log, and the editor keeps drawing;
   export     File > Export all... and Enter: one download, gbuffer-lab-export.zip, whose CRCs hold
-             and which has every file of the export, its EXR files read back here (uncompressed
+             and which has every file of the export, its EXR files read back here (ZIP-compressed
              float scanlines) at the frame's size, depth within [0, 1];
   screenshot File > Save window as PNG: one download, a PNG of the whole window;
   timing     the passes are timed in the GPU process (EXT_disjoint_timer_query_webgl2) where the
@@ -52,6 +52,7 @@ import base64
 import contextlib
 import functools
 import http.server
+import itertools
 import json
 import os
 import queue
@@ -545,8 +546,9 @@ def click_file_menu_item(page, item):
 
 
 def read_exr(data):
-    """An uncompressed scanline EXR of FLOAT channels, as the browser build writes them (OpenEXR's
-    file layout); returns width, height and {channel name: values, rows top to bottom}."""
+    """A scanline EXR of FLOAT channels, uncompressed or ZIP-compressed (the browser build writes ZIP,
+    through tinyexr, as OpenImageIO does natively; OpenEXR's file layout); returns width, height and
+    {channel name: values, rows top to bottom}."""
     assert data[:4] == b"\x76\x2f\x31\x01", "not an EXR file"
     pos, attributes = 8, {}
     while data[pos] != 0:
@@ -556,7 +558,8 @@ def read_exr(data):
         attributes[data[pos:name_end].decode()] = data[type_end + 5:type_end + 5 + size]
         pos = type_end + 5 + size
     pos += 1
-    assert attributes["compression"] == b"\0", "the EXR is compressed"
+    compression = attributes["compression"][0]
+    assert compression in (0, 3), f"the EXR's compression is {compression}, neither none (0) nor ZIP (3)"
     x0, y0, x1, y1 = struct.unpack("<4i", attributes["dataWindow"])
     width, height = x1 - x0 + 1, y1 - y0 + 1
     names, chlist = [], attributes["channels"]
@@ -567,13 +570,27 @@ def read_exr(data):
         assert kind == 2, f"channel {chlist[at:end]} is not FLOAT"
         names.append(chlist[at:end].decode())
         at = end + 17
+    rows_per_chunk = 16 if compression == 3 else 1
+    chunks = (height + rows_per_chunk - 1) // rows_per_chunk
+    row_bytes = width * 4 * len(names)
     values = {n: [] for n in names}
-    for offset in struct.unpack_from(f"<{height}Q", data, pos):
-        _, size = struct.unpack_from("<2i", data, offset)
-        assert size == width * 4 * len(names), "a scanline of the wrong size"
-        row = struct.unpack_from(f"<{width * len(names)}f", data, offset + 8)
-        for i, n in enumerate(names):
-            values[n].extend(row[i * width:(i + 1) * width])
+    for offset in struct.unpack_from(f"<{chunks}Q", data, pos):
+        y, size = struct.unpack_from("<2i", data, offset)
+        rows = min(rows_per_chunk, y1 + 1 - y)
+        block = data[offset + 8:offset + 8 + size]
+        if compression == 3 and size < rows * row_bytes:
+            # ZIP: zlib, then a byte-wise delta, then the two halves of the bytes interleaved.
+            deltas = itertools.accumulate(zlib.decompress(block), lambda a, b: (a + b - 128) & 0xFF)
+            t = bytes(deltas)
+            half = (len(t) + 1) // 2
+            out = bytearray(len(t))
+            out[0::2], out[1::2] = t[:half], t[half:]
+            block = bytes(out)
+        assert len(block) == rows * row_bytes, "a chunk of the wrong size"
+        for r in range(rows):
+            row = struct.unpack_from(f"<{width * len(names)}f", block, r * row_bytes)
+            for i, n in enumerate(names):
+                values[n].extend(row[i * width:(i + 1) * width])
     return width, height, values
 
 

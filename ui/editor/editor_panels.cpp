@@ -207,8 +207,8 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     ui::drawFramePanel(state.frame, state.pipeline, state.stats.last);
     ui::drawViewerMagnifier(state.gbuffer, state.viewportTools);
     ui::drawPixelInspectorPanel(state.inspector);
-    ui::drawStatsPanel(state.stats, editor.caps, int(state.lights.size()), &editor.render, editor.renderReason,
-                       &state.frame);
+    ui::drawStatsPanel(state.stats, editor.caps.pipelineStatisticsUnavailableReason(), int(state.lights.size()),
+                       &editor.render, editor.renderReason, &state.frame);
     ui::drawLogPanel(state.log);
     drawLessons(editor);  // the Lessons window; applies the step it asks for (editor_lessons.cpp)
     ui::recordDocks(state.layout);

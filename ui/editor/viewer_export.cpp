@@ -1,7 +1,7 @@
-// Viewer export through the renderer's view pass and OpenImageIO.
+// Viewer export through the renderer's view pass and image/image_io.h.
 #include "viewer_export.h"
 
-#include "image_io.h"
+#include "image/image_io.h"
 
 namespace gbl::ui {
 

@@ -35,7 +35,12 @@ std::string number(double v) {
 
 std::string strings(std::vector<std::string> const& items) {
     std::string out = "[";
-    for (std::size_t i = 0; i < items.size(); ++i) out += (i ? "," : "") + quoted(items[i]);
+    // Appended in two steps: `"," + quoted(...)` makes a temporary whose insert at the front GCC 12's
+    // -Wrestrict misreads as an overlapping copy inside std::string (a false positive at -O3).
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (i) out += ',';
+        out += quoted(items[i]);
+    }
     return out + "]";
 }
 
@@ -53,15 +58,25 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"viewportHovered\":" + std::string(l.viewportHovered ? "true" : "false");
     out += ",\"viewport\":[" + number(l.viewport.x) + "," + number(l.viewport.y) + "," + number(l.viewport.z) + "," +
            number(l.viewport.w) + "]";
+    // Appended piece by piece, as strings() is (GCC 12's -Wrestrict false positive).
+    auto appendRect = [&](std::string& a, glm::vec4 r) {
+        for (int c = 0; c < 4; ++c) {
+            if (c) a += ',';
+            a += number(r[c]);
+        }
+    };
     auto rect = [&](glm::vec4 r) {
-        return "[" + number(r.x) + "," + number(r.y) + "," + number(r.z) + "," + number(r.w) + "]";
+        std::string a = "[";
+        appendRect(a, r);
+        return a + "]";
     };
     // Rectangles as one flat array of numbers, four per rectangle.
     auto flatRects = [&](std::vector<glm::vec4> const& rs) {
         std::string a = "[";
-        for (std::size_t i = 0; i < rs.size(); ++i)
-            a += (i ? "," : "") + number(rs[i].x) + "," + number(rs[i].y) + "," + number(rs[i].z) + "," +
-                 number(rs[i].w);
+        for (std::size_t i = 0; i < rs.size(); ++i) {
+            if (i) a += ',';
+            appendRect(a, rs[i]);
+        }
         return a + "]";
     };
     out += ",\"viewerImages\":" + flatRects(l.viewerImages);

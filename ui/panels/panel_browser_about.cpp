@@ -1,7 +1,7 @@
 // About this browser window: the browser build's limits as one list.
 #include "panels/panel_browser_about.h"
 
-#include "panels/gui_compat.h"
+#include "panels/gui_util.h"
 #include "panels/wrapped_text.h"
 
 #include <imgui.h>

@@ -67,7 +67,10 @@ std::string target(char const* kind, std::string_view pass, std::string_view res
     char xy[48];
     std::snprintf(xy, sizeof xy, "@%d,%d", int(std::lround(at.x)), int(std::lround(at.y)));
     std::string out = std::string(kind) + ":" + std::string(pass);
-    if (!resource.empty()) out += ":" + std::string(resource);
+    if (!resource.empty()) {
+        out += ':';
+        out += resource;  // appended, not ":" + string: GCC 12 -O3's -Wrestrict false positive
+    }
     return out + xy;
 }
 

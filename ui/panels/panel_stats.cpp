@@ -2,8 +2,7 @@
 #include "panels/panel_stats.h"
 
 #include "core/gbuffer_layout.h"
-#include "gl/gl_api.h"
-#include "gl/gpu_timer.h"
+#include "core/timing_source.h"
 #include "panels/gui_util.h"
 #include "panels/layout.h"
 #include "panels/wrapped_text.h"
@@ -50,8 +49,8 @@ void drawTimingPlots(StatsState const& stats, bool timed) {
 }
 }  // namespace
 
-void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount, RenderOnChange* render,
-                    std::string const& renderReason, FramePanelState* frame) {
+void drawStatsPanel(StatsState const& stats, std::string const& noFragmentCounts, int lightCount,
+                    RenderOnChange* render, std::string const& renderReason, FramePanelState* frame) {
     if (ImGui::Begin(windowName(EditorWindow::Stats), nullptr)) {
         FrameStats const& f = stats.last;
         double const frameMs = stats.costAverage.frameCpuMs;
@@ -135,7 +134,7 @@ void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount,
             wrappedText("Fragment invocations (lighting): %llu", (unsigned long long)*f.fragmentInvocations);
         else {
             ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-            wrappedText("Fragment invocations: n/a (%s)", caps.pipelineStatisticsUnavailableReason().c_str());
+            wrappedText("Fragment invocations: n/a (%s)", noFragmentCounts.c_str());
             ImGui::PopStyleColor();
         }
         ImGui::Text("GL errors this frame: %llu", (unsigned long long)f.glErrors);

@@ -1,7 +1,6 @@
 // Stats window: frame times, pass times and the editor's own cost.
 #pragma once
 
-#include "gl/caps.h"
 #include "model/frame_diagram.h"
 #include "model/render_inputs.h"
 #include "model/stats_state.h"
@@ -10,10 +9,12 @@
 
 namespace gbl::ui {
 
-// render: the loop's render-on-change record, shown as "re-rendered"/"reused" with a checkbox for
-// continuous rendering; null hides that line. frame: the Frame window, opened by a button beside
-// the pass times; null hides the button.
-void drawStatsPanel(StatsState const& stats, GlCaps const& caps, int lightCount, RenderOnChange* render = nullptr,
-                    std::string const& renderReason = {}, FramePanelState* frame = nullptr);
+// noFragmentCounts: why the context counts no fragment invocations (GlCaps's
+// pipelineStatisticsUnavailableReason(); the panels know no GL). render: the loop's render-on-change record, shown as
+// "re-rendered"/"reused" with a checkbox for continuous rendering; null hides that line. frame: the Frame window,
+// opened by a button beside the pass times; null hides the button.
+void drawStatsPanel(StatsState const& stats, std::string const& noFragmentCounts, int lightCount,
+                    RenderOnChange* render = nullptr, std::string const& renderReason = {},
+                    FramePanelState* frame = nullptr);
 
 }  // namespace gbl::ui

@@ -4,7 +4,7 @@
 
 #include "core/cluster_math.h"
 #include "core/heat_scale.h"
-#include "gpu/view_target.h"
+#include "core/view_params.h"
 #include "model/colormap.h"
 #include "panels/gui_util.h"
 #include "panels/layout.h"

@@ -3,7 +3,6 @@
 
 #include "core/cluster_math.h"
 #include "core/heat_scale.h"
-#include "gl/gl_api.h"
 #include "model/colormap.h"
 #include "model/lesson_claims.h"
 #include "panels/gui_util.h"
@@ -116,8 +115,12 @@ std::string passLine(char const* side, std::vector<PassTiming> const& passes, do
 }
 
 std::string sideLabel(char const* side, PipelineSettings const& s) {
-    return std::string(side) + ": " + std::string(enumName(kLightingModeNames, s.mode)) +
-           (s.mode == LightingMode::Volumes ? "/" + std::string(enumName(kCullModeNames, s.cull)) : std::string());
+    std::string out = std::string(side) + ": " + std::string(enumName(kLightingModeNames, s.mode));
+    if (s.mode == LightingMode::Volumes) {  // appended: "/" + string trips GCC 12 -O3's -Wrestrict
+        out += '/';
+        out += enumName(kCullModeNames, s.cull);
+    }
+    return out;
 }
 
 // The divider between A (left) and B (right), dragged with the left button. Submitted before the

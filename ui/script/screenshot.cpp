@@ -2,12 +2,7 @@
 #include "script/screenshot.h"
 
 #include "gl/gl_api.h"
-
-#ifdef __EMSCRIPTEN__
-#include <stb_image_write.h>
-#else
-#include <OpenImageIO/imageio.h>
-#endif
+#include "image/image_io.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -49,20 +44,11 @@ RgbImage readWindow(int width, int height) {
 
 std::optional<std::string> writePng(RgbImage const& image, std::string const& path) {
     if (image.width <= 0 || image.height <= 0) return "cannot write " + path + ": the window has no pixels (0x0)";
-#ifdef __EMSCRIPTEN__
-    if (!stbi_write_png(path.c_str(), image.width, image.height, 3, image.pixels.data(), image.width * 3))
-        return "cannot write " + path + ": the file could not be written";
-    return std::nullopt;
-#else
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) return "cannot write " + path + ": " + OIIO::geterror();
-    OIIO::ImageSpec const spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-    if (!out->open(path, spec)) return "cannot write " + path + ": " + out->geterror();
-    bool const ok = out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data());
-    std::string const error = ok ? std::string() : out->geterror();
-    if (!out->close() || !ok) return "cannot write " + path + ": " + (error.empty() ? out->geterror() : error);
-    return std::nullopt;
-#endif
+    // Through the one image seam (image/image_io.h): each byte as k / 255, which its 8-bit PNG
+    // writer rounds back to k exactly.
+    FloatImage pixels{image.width, image.height, 3, std::vector<float>(image.pixels.size())};
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) pixels.pixels[i] = float(image.pixels[i]) / 255.0f;
+    return gbl::writePng(path, pixels, 3);
 }
 
 ImageDifference compareImages(RgbImage const& a, RgbImage const& b) {

@@ -18,7 +18,7 @@ struct RgbImage {
 // Reads the current draw framebuffer's back buffer (the whole window) before the swap.
 RgbImage readWindow(int framebufferWidth, int framebufferHeight);
 
-// Writes a PNG through OpenImageIO. Returns an error sentence naming the file on failure.
+// Writes a PNG through image/image_io.h. Returns an error sentence naming the file on failure.
 std::optional<std::string> writePng(RgbImage const& image, std::string const& path);
 
 // Mean absolute difference per channel value (0..255) and the count of pixels that differ;

@@ -48,8 +48,10 @@ std::optional<std::string> writeFileAtomically(std::string const& path, std::str
     static std::atomic<unsigned> counter{0};
     TempFile tmp;
     for (int attempt = 0; tmp.fd < 0; ++attempt) {
-        std::string const name = "." + target.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                                 std::to_string(counter.fetch_add(1));
+        // Appended: "." + string trips GCC 12 -O3's -Wrestrict (a false positive inside std::string).
+        std::string name = ".";
+        name += target.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                std::to_string(counter.fetch_add(1));
         tmp.path = (dir / name).string();
         tmp.fd = ::open(tmp.path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (tmp.fd < 0) {

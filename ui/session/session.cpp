@@ -237,7 +237,8 @@ ViewerState readViewer(json const& j, std::string const& path, ViewerState v) {
         if (!value) continue;
         if (f.component >= 0) {
             if (!value->is_array() || value->size() != 2) fail(at, "must be an array of 2 numbers");
-            at += "[" + std::to_string(f.component) + "]";
+            at += '[';  // appended: "[" + string trips GCC 12 -O3's -Wrestrict
+            at += std::to_string(f.component) + "]";
             value = &(*value)[std::size_t(f.component)];
         }
         readViewerField(f, *value, at, v);
