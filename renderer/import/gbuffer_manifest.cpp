@@ -258,9 +258,13 @@ GBufferManifest readManifest(json j, std::string const& dir) {
         merged.merge_patch(j);
         j = std::move(merged);
     }
+    // A captured manifest (gbuffer-lab capture) says per field why it was chosen, and keeps what it
+    // found in "capture": notes for the reader, not read here.
+    for (auto& [key, value] : j.items())
+        if (value.is_object()) value.erase("guessed_from");
     Object top(j, "",
                {"format", "version", "preset", "flip_y", "shininess", "shading", "position", "normal", "albedo",
-                "specular", "emissive", "occlusion", "depth", "lit", "camera", "lights"});
+                "specular", "emissive", "occlusion", "depth", "lit", "camera", "lights", "capture"});
     Reader reader{dir};
     if (json const* f = top.optional("flip_y")) m.flipY = boolean(*f, "flip_y");
     if (json const* s = top.optional("shading"))

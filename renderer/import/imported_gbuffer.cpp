@@ -147,7 +147,11 @@ std::optional<FileImage> readFile(ImageRef const& ref, std::string* error) {
 #else
 std::optional<FileImage> readFile(ImageRef const& ref, std::string* error) {
     if (ref.raw) return readRaw(ref, error);
-    auto in = OIIO::ImageInput::open(ref.path);
+    // Alpha is data here (LearnOpenGL's gAlbedoSpec.png keeps specular in it), never coverage: without
+    // this OpenImageIO premultiplies a PNG's colour by its alpha and the albedo comes out darkened.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(ref.path, &config);
     if (!in) {
         std::string reason = OIIO::geterror();
         std::ifstream probe(ref.path);
