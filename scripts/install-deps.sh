@@ -3,7 +3,8 @@
 set -euo pipefail
 
 # libx11-dev is only recommended by libglfw3-dev (and recommends are not installed below); the UI tests'
-# drag-and-drop program, tests/support/xdnd_drop.c, is built with it.
+# drag-and-drop program, tests/support/xdnd_drop.c, is built with it. apitrace and apitrace-tracers
+# (apitrace, eglretrace) are what `gbuffer-lab capture` runs; its test needs them.
 packages=(
   cmake g++ make ninja-build pkg-config mold
   libglfw3-dev libx11-dev libglm-dev libimgui-dev libtinygltf-dev libopenimageio-dev libepoxy-dev libdraco-dev
@@ -12,6 +13,7 @@ packages=(
   xvfb xauth xdotool x11-apps
   clang libclang-rt-14-dev clang-format
   glslang-tools fonts-dejavu-core
+  apitrace apitrace-tracers
 )
 
 missing=()
