@@ -32,6 +32,7 @@ void addCaptureOptions(CLI::App& sub, CaptureOptions& o) {
         ->capture_default_str()
         ->check(CLI::PositiveNumber);
     sub.add_flag("--open", o.open, "Open the result in the editor (as --gbuffer)");
+    sub.add_flag("--time", o.time, "Print the seconds each step took (stderr)");
     sub.add_option("program", o.program, "-- PROGRAM [ARGS...]: the program to run under apitrace");
     sub.positionals_at_end();
 }
@@ -57,6 +58,16 @@ int framesSoFar(std::string const& apitrace, std::string const& trace) {
 
 int runCapture(CaptureOptions const& o, char const* self) {
     auto const start = std::chrono::steady_clock::now();
+    auto lap = start;
+    std::string times;
+    auto step = [&](char const* name) {
+        auto const now = std::chrono::steady_clock::now();
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%s%s %.2f s", times.empty() ? "" : ", ", name,
+                      std::chrono::duration<double>(now - lap).count());
+        times += buf;
+        lap = now;
+    };
     if (o.program.empty() == o.trace.empty())
         return refuse(o.trace.empty() ? "name a program after -- (capture -- ./my_renderer) or a trace with --trace"
                                       : "give either --trace FILE or a program after --, not both");
@@ -99,6 +110,7 @@ int runCapture(CaptureOptions const& o, char const* self) {
                           ") before drawing anything through " + api + ": see " + po.stderrPath);
     }
 
+    step("trace");
     auto const info = runForOutput({*apitrace, "info", trace}, &error);
     if (!info) return refuse(trace + " is not an apitrace trace (" + error + ")");
     nlohmann::json const j = nlohmann::json::parse(*info, nullptr, false);
@@ -112,6 +124,7 @@ int runCapture(CaptureOptions const& o, char const* self) {
     if (!listing) return refuse("the trace could not be listed (" + error + ")");
     TraceScan const scan = scanTrace(*listing, o.frame);
     if (!scan.lightingDraw) return refuse(scan.error);
+    step("find");
 
     bool const egl = listing->find("eglSwapBuffers") != std::string::npos;
     auto const retracer = findProgram(egl ? "eglretrace" : "glretrace");
@@ -126,6 +139,7 @@ int runCapture(CaptureOptions const& o, char const* self) {
     auto geometry = geometryJob.get();
     if (!geometry) return refuse("the geometry draw's state could not be dumped: " + geometryError);
     if (!lighting) return refuse("the lighting draw's state could not be dumped: " + lightingError);
+    step("dump");
 
     // The manifest names the trace beside it by its file name, another by its full path.
     std::string const traceName = fs::path(trace).parent_path() == fs::path(o.outDir)
@@ -133,6 +147,8 @@ int runCapture(CaptureOptions const& o, char const* self) {
                                       : fs::absolute(trace, ec).string();
     auto const result = writeCapture(scan, *geometry, *lighting, {traceName, o.frame}, o.outDir, &error);
     if (!result) return refuse(error);
+    step("write");
+    if (o.time) std::fprintf(stderr, "capture: %s\n", times.c_str());
     double const seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s: frame %d, G-buffer pass to call %llu, lighting pass at call %llu (%.2f s)\n",
                 result->manifestPath.c_str(), o.frame, static_cast<unsigned long long>(*scan.lastGeometryDraw),

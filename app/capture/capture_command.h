@@ -17,6 +17,7 @@ struct CaptureOptions {
     std::string api = "auto";
     double timeout = 60.0;
     bool open = false;
+    bool time = false;
 };
 
 void addCaptureOptions(CLI::App& sub, CaptureOptions& options);

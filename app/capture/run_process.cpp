@@ -101,9 +101,9 @@ std::optional<std::string> runForOutput(std::vector<std::string> const& argv, st
     o.stderrPath = std::string(tmpl) + ".err";
     o.env = env;
     ProcessResult const r = runProcess(argv, o);
-    std::ifstream in(tmpl, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
+    std::error_code ec;
+    std::string out(std::size_t(std::filesystem::file_size(tmpl, ec)), '\0');
+    std::ifstream(tmpl, std::ios::binary).read(out.data(), std::streamsize(out.size()));
     std::ifstream errIn(o.stderrPath);
     std::string lastErr, line;
     while (std::getline(errIn, line))
@@ -118,7 +118,7 @@ std::optional<std::string> runForOutput(std::vector<std::string> const& argv, st
         *error = argv[0] + " failed" + (lastErr.empty() ? std::string() : " (" + lastErr + ")");
         return std::nullopt;
     }
-    return s.str();
+    return out;
 }
 
 }  // namespace gbl::capture

@@ -6,7 +6,9 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
+#include <cstdlib>
 #include <cstring>
+#include <string_view>
 
 namespace gbl::capture {
 
@@ -14,7 +16,7 @@ namespace OIIO = OIIO_NAMESPACE;
 
 namespace {
 
-std::string base64Decode(std::string const& in) {
+std::string base64Decode(std::string_view in) {
     static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     int table[256];
     std::fill(std::begin(table), std::end(table), -1);
@@ -56,13 +58,35 @@ void escapeControlCharacters(std::string& text) {
     text = std::move(out);
 }
 
-std::optional<DumpedImage> readDumpedImage(nlohmann::json const& j) {
+// The images' base64 text is most of a dump (85 MB for a 1280x720 G-buffer): it is cut out before the
+// JSON parser sees it, and "__data__" keeps "#N", the index of its text here.
+std::string cutOutImageData(std::string const& text, std::vector<std::string_view>* blobs) {
+    static constexpr std::string_view kKey = "\"__data__\": \"";
+    std::string out;
+    std::size_t pos = 0;
+    for (std::size_t k = text.find(kKey); k != std::string::npos; k = text.find(kKey, pos)) {
+        std::size_t const begin = k + kKey.size();
+        std::size_t const end = text.find('"', begin);
+        if (end == std::string::npos) break;
+        out.append(text, pos, begin - pos);
+        out += "#" + std::to_string(blobs->size());
+        blobs->push_back(std::string_view(text).substr(begin, end - begin));
+        pos = end;
+    }
+    out.append(text, pos);
+    return out;
+}
+
+std::optional<DumpedImage> readDumpedImage(nlohmann::json const& j, std::vector<std::string_view> const& blobs) {
     if (!j.is_object() || j.value("__class__", "") != "image" || !j.contains("__data__")) return std::nullopt;
     DumpedImage d;
     d.format = j.value("__format__", "");
     d.width = j.value("__width__", 0);
     d.height = j.value("__height__", 0);
-    d.encoded = base64Decode(j["__data__"].get<std::string>());
+    std::string const data = j["__data__"].get<std::string>();
+    std::size_t const index =
+        data.size() > 1 && data[0] == '#' ? std::size_t(std::atoll(data.c_str() + 1)) : blobs.size();
+    d.encoded = base64Decode(index < blobs.size() ? blobs[index] : std::string_view(data));
     d.isFloat = d.encoded.size() > 2 && d.encoded[0] == 'P' && std::strchr("FfX", d.encoded[1]);
     return d;
 }
@@ -102,7 +126,9 @@ FloatImage DumpedImage::decode() const {
     return img;
 }
 
-std::optional<StateDump> parseStateDump(std::string text, std::string* error) {
+std::optional<StateDump> parseStateDump(std::string const& dump, std::string* error) {
+    std::vector<std::string_view> blobs;  // views into `dump`, which outlives them
+    std::string text = cutOutImageData(dump, &blobs);
     escapeControlCharacters(text);
     nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
     if (j.is_discarded() || !j.is_object()) {
@@ -121,10 +147,10 @@ std::optional<StateDump> parseStateDump(std::string text, std::string* error) {
     for (auto const& [k, v] : section("textures").items()) {
         // "GL_TEXTURE2, GL_TEXTURE_2D, level = 0": the unit's 2D texture, base level only.
         if (k.find("GL_TEXTURE_2D,") == std::string::npos || k.find("level = 0") == std::string::npos) continue;
-        if (auto img = readDumpedImage(v)) s.textures[std::atoi(k.c_str() + 10)] = std::move(*img);
+        if (auto img = readDumpedImage(v, blobs)) s.textures[std::atoi(k.c_str() + 10)] = std::move(*img);
     }
     for (auto const& [k, v] : section("framebuffer").items())
-        if (auto img = readDumpedImage(v)) s.framebuffer[k] = std::move(*img);
+        if (auto img = readDumpedImage(v, blobs)) s.framebuffer[k] = std::move(*img);
     return s;
 }
 

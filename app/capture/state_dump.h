@@ -29,7 +29,7 @@ struct StateDump {
 };
 
 // The retracer's JSON carries shader sources with raw line breaks; this escapes them first.
-std::optional<StateDump> parseStateDump(std::string text, std::string* error);
+std::optional<StateDump> parseStateDump(std::string const& dump, std::string* error);
 
 // Runs the retracer on `trace` at `call` (EGL traces: eglretrace on Mesa's surfaceless platform).
 std::optional<StateDump> dumpState(std::string const& retracer, std::string const& trace, std::uint64_t call,
