@@ -5,6 +5,7 @@
 #include "capture/run_process.h"
 #include "capture/trace_scan.h"
 #include "image_io.h"
+#include "import/gbuffer_checks.h"
 #include "import/gbuffer_manifest.h"
 #include "import/imported_gbuffer.h"
 #include "run_command.h"
@@ -210,4 +211,57 @@ TEST(CaptureGlTest, ViewProjectionSplitsIntoViewAndProjection) {
             EXPECT_NEAR(split->projection[c][r], proj[c][r], 1e-4f * (1.0f + std::abs(proj[c][r])));
         }
     EXPECT_FALSE(capture::splitViewProjection(glm::mat4(1.0f)));  // orthographic: no w row to split on
+}
+
+// Handmade faults on a real capture, each named by its cause (the correct capture has none: above).
+TEST(CaptureGlTest, CheckNamesTheCauseOfEachHandmadeFault) {
+    REQUIRE_APITRACE();
+    std::string const dir = test::freshTempDir("capture_faults");
+    auto const r = captureDemo(dir, 1);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    nlohmann::json const clean = test::readJsonFile(dir + "/manifest.json");
+    struct Fault {
+        char const* name;
+        char const* patch;  // merged into the captured manifest
+        char const* check;
+        char const* causeWord;
+    };
+    // Without depth, so that the camera alone must place the positions (with depth, position_depth_mismatch
+    // names the same causes).
+    for (Fault const& f : {
+             Fault{"flip", R"({"flip_y": true, "depth": null})", "reprojection", "flip_y"},
+             Fault{"view", R"({"position": {"space": "view"}, "depth": null})", "reprojection",
+                   "in world space, not view"},
+             Fault{"transposed", R"({"camera": {"matrix_layout": "row-major"}, "depth": null})", "reprojection",
+                   "matrix_layout is the other one"},
+             Fault{"albedo", R"({"normal": {"file": "gAlbedoSpec.png"}})", "normal_wrong_attachment",
+                   "looks like the albedo target"},
+             Fault{"biased", R"({"normal": {"encoding": "biased"}})", "normal_encoding",
+                   "stored as float (unit length, with negative components) but declared biased"},
+         }) {
+        nlohmann::json m = clean;
+        m.merge_patch(nlohmann::json::parse(f.patch));
+        std::string const path = dir + "/manifest_" + f.name + ".json";
+        std::ofstream(path) << m.dump(2);
+        ManifestLoad const load = loadManifest(path);
+        ASSERT_TRUE(load.manifest) << f.name << ": " << load.error;
+        GBufferLoad const g = loadGBuffer(*load.manifest);
+        ASSERT_TRUE(g.gbuffer) << f.name << ": " << g.error;
+        GBufferCheckReport const report = checkGBuffer(*g.gbuffer);
+        bool found = false;
+        for (auto const& finding : report.findings) {
+            if (finding.check != f.check) continue;
+            found = true;
+            EXPECT_NE(finding.cause.find(f.causeWord), std::string::npos) << f.name << ": " << finding.cause;
+            EXPECT_GT(finding.share, 0.9) << f.name;  // the fault is on every drawn pixel
+        }
+        EXPECT_TRUE(found) << f.name << " gave no " << f.check;
+        // The symptoms a proven wrong normal target explains are not reported beside it.
+        if (std::string(f.check) == "normal_wrong_attachment") {
+            for (auto const& finding : report.findings) {
+                EXPECT_TRUE(finding.check != "normal_not_unit" && finding.check != "normal_facing_away")
+                    << finding.check;
+            }
+        }
+    }
 }
