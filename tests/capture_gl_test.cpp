@@ -265,3 +265,33 @@ TEST(CaptureGlTest, CheckNamesTheCauseOfEachHandmadeFault) {
         }
     }
 }
+
+// CPU: the scan follows framebuffer, draw-buffer and texture-unit state through a listing, DSA calls
+// included, and takes the first later draw that samples two of the G-buffer's targets.
+TEST(CaptureGlTest, TheScanFindsBothPassesInAListing) {
+    std::string const listing = R"(10 glBindFramebuffer(target = GL_FRAMEBUFFER, framebuffer = 3)
+11 glFramebufferTexture2D(target = GL_FRAMEBUFFER, attachment = GL_COLOR_ATTACHMENT0, textarget = GL_TEXTURE_2D, texture = 7, level = 0)
+12 glNamedFramebufferTexture(framebuffer = 3, attachment = GL_COLOR_ATTACHMENT1, texture = 8, level = 0)
+13 glNamedFramebufferDrawBuffers(framebuffer = 3, n = 2, bufs = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1})
+14 glDrawElements(mode = GL_TRIANGLES, count = 6, type = GL_UNSIGNED_INT, indices = NULL)
+15 eglSwapBuffers(dpy = 0x1, surface = 0x2) = EGL_TRUE
+16 glBindFramebuffer(target = GL_FRAMEBUFFER, framebuffer = 3)
+17 glDrawElements(mode = GL_TRIANGLES, count = 6, type = GL_UNSIGNED_INT, indices = NULL)
+18 glDrawElements(mode = GL_TRIANGLES, count = 6, type = GL_UNSIGNED_INT, indices = NULL)
+19 glBindFramebuffer(target = GL_FRAMEBUFFER, framebuffer = 0)
+20 glBindTextureUnit(unit = 4, texture = 7)
+21 glDrawArrays(mode = GL_TRIANGLES, first = 0, count = 3)
+22 glActiveTexture(texture = GL_TEXTURE5)
+23 glBindTexture(target = GL_TEXTURE_2D, texture = 8)
+24 glDrawArrays(mode = GL_TRIANGLES, first = 0, count = 3)
+25 eglSwapBuffers(dpy = 0x1, surface = 0x2) = EGL_TRUE
+)";
+    capture::TraceScan const s = capture::scanTrace(listing, 1);
+    ASSERT_TRUE(s.lightingDraw) << s.error;
+    EXPECT_EQ(*s.lastGeometryDraw, 18u);
+    EXPECT_EQ(*s.lightingDraw, 24u);  // call 21 samples one target only
+    EXPECT_EQ(s.gbufferFramebuffer, 3u);
+    EXPECT_EQ(s.sampledAttachments.at("GL_COLOR_ATTACHMENT0"), 4);
+    EXPECT_EQ(s.sampledAttachments.at("GL_COLOR_ATTACHMENT1"), 5);
+    EXPECT_NE(capture::scanTrace(listing, 2).error.find("before frame 2"), std::string::npos);
+}

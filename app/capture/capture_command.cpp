@@ -157,7 +157,8 @@ int runCapture(CaptureOptions const& o, char const* self) {
     if (o.open) {
         std::fflush(stdout);
         std::string const manifest = result->manifestPath;
-        ::execl(self, self, "--gbuffer", manifest.c_str(), static_cast<char*>(nullptr));
+        // This very executable, whatever PATH or folder it was started from.
+        ::execl("/proc/self/exe", self, "--gbuffer", manifest.c_str(), static_cast<char*>(nullptr));
         return refuse("the editor could not be started");
     }
     return 0;

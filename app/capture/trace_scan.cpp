@@ -75,12 +75,14 @@ TraceScan scanTrace(std::string const& listing, int frame) {
     std::map<unsigned, unsigned> units;                            // texture unit -> texture
     unsigned activeUnit = 0;
     bool sawGeometry = false;
+    bool reached = false;  // a call of the frame asked for was seen
     std::istringstream in(listing);
     for (std::string line; std::getline(in, line);) {
         auto c = parseCall(line);
         if (!c) continue;
         auto arg = [&](char const* k) { return c->args.count(k) ? c->args[k] : std::string(); };
         std::string const& n = c->name;
+        reached = reached || s.frames == frame;
         if (n.find("SwapBuffers") != std::string::npos) {
             if (s.frames == frame) break;  // the frame asked for is over
             ++s.frames;
@@ -140,7 +142,7 @@ TraceScan scanTrace(std::string const& listing, int frame) {
         }
     }
     std::string const f = "frame " + std::to_string(frame);
-    if (s.frames < frame)
+    if (!reached)
         s.error = "the program ended after " + std::to_string(s.frames) + " frame" + (s.frames == 1 ? "" : "s") +
                   ", before " + f + " (frames count from 0): ask for an earlier --frame";
     else if (!sawGeometry)
