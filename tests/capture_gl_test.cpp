@@ -234,6 +234,7 @@ TEST(CaptureGlTest, CheckNamesTheCauseOfEachHandmadeFault) {
                    "in world space, not view"},
              Fault{"transposed", R"({"camera": {"matrix_layout": "row-major"}, "depth": null})", "reprojection",
                    "matrix_layout is the other one"},
+             Fault{"normals", R"({"normal": {"space": "view"}})", "normal_space", "in world space, not view"},
              Fault{"albedo", R"({"normal": {"file": "gAlbedoSpec.png"}})", "normal_wrong_attachment",
                    "looks like the albedo target"},
              Fault{"biased", R"({"normal": {"encoding": "biased"}})", "normal_encoding",

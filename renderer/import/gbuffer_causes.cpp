@@ -155,6 +155,44 @@ void reprojection(ImportedGBuffer const& g, std::vector<std::uint8_t> const& geo
     // camera, misses by design, and this check names causes it can prove, not suspicions.
 }
 
+// Normals against the surfaces the positions describe: the cross product of each pixel's neighbours'
+// positions. Normals that match those only in the other space are named so; true when they were.
+bool normalSpace(ImportedGBuffer const& g, std::vector<std::uint8_t> const& geometry, GBufferCheckReport& r) {
+    GBufferManifest const& m = g.manifest;
+    if (!g.camera || g.position.empty() || g.normal.empty()) return false;
+    glm::mat3 const viewRotation(g.camera->view), worldFromView = glm::transpose(viewRotation);
+    bool const declaredView = m.normal.space == Space::View;
+    std::size_t tested = 0, fitDeclared = 0, fitOther = 0;
+    std::vector<std::uint8_t> mask(geometry.size(), 0);
+    auto at = [&](int x, int y) { return std::size_t(y) * std::size_t(g.width) + std::size_t(x); };
+    for (int y = 0; y + 1 < g.height; ++y)
+        for (int x = 0; x + 1 < g.width; ++x) {
+            std::size_t const p = at(x, y), px = at(x + 1, y), py = at(x, y + 1);
+            if (!geometry[p] || !geometry[px] || !geometry[py]) continue;
+            glm::vec3 const dx = g.position[px] - g.position[p], dy = g.position[py] - g.position[p];
+            glm::vec3 const c = glm::cross(dx, dy);
+            float const len = glm::length(c);
+            // Neighbours on one surface only: an edge between two surfaces gives no plane.
+            if (len < 1e-12f || glm::length(g.normal[p]) < 0.5f) continue;
+            glm::vec3 const geo = c / len, n = glm::normalize(g.normal[p]);
+            // The declared decode is g.normal; the other space's is the stored vector read the other way.
+            glm::vec3 const other = glm::normalize(declaredView ? viewRotation * n : worldFromView * n);
+            ++tested;
+            bool const d = std::abs(glm::dot(geo, n)) > 0.95f, o = std::abs(glm::dot(geo, other)) > 0.95f;
+            fitDeclared += d;
+            fitOther += o;
+            mask[p] = !d;
+        }
+    if (tested < 16 || double(fitDeclared) >= 0.5 * double(tested) || double(fitOther) < 0.9 * double(tested))
+        return false;
+    std::string const declared = declaredView ? "view" : "world", other = declaredView ? "world" : "view";
+    r.findings.push_back(make(g, "normal_space", "normal", std::move(mask),
+                              "These normals are in " + other + " space, not " + declared +
+                                  ": they match the surfaces the positions describe only read as " + other +
+                                  "; set normal.space to " + other + "."));
+    return true;
+}
+
 }  // namespace
 
 void addProvenCauses(ImportedGBuffer const& g, std::vector<std::uint8_t> const& geometry, GBufferCheckReport& r) {
@@ -165,6 +203,8 @@ void addProvenCauses(ImportedGBuffer const& g, std::vector<std::uint8_t> const& 
         });
     }
     reprojection(g, geometry, r);
+    if (normalSpace(g, geometry, r))
+        std::erase_if(r.findings, [](GBufferFinding const& f) { return f.check == "normal_facing_away"; });
 }
 
 }  // namespace gbl
