@@ -1,6 +1,7 @@
 // gbuffer-lab entry point: the editor by default, `render` and `bench` as sub-commands.
 #include "bench_command.h"
 #include "bench_layouts.h"
+#include "capture/capture_command.h"
 #include "check_command.h"
 #include "cli_options.h"
 #include "cli_values.h"
@@ -38,6 +39,10 @@ int main(int argc, char** argv) {
     gbl::CheckOptions checkOptions;
     CLI::App* check = app.add_subcommand("check", "Open another program's G-buffer and list what looks wrong in it");
     gbl::addCheckOptions(*check, checkOptions);
+    gbl::CaptureOptions captureOptions;
+    CLI::App* capture = app.add_subcommand(
+        "capture", "Record a frame of another OpenGL deferred renderer with apitrace and write its G-buffer manifest");
+    gbl::addCaptureOptions(*capture, captureOptions);
 
     try {
         app.parse(argc, argv);
@@ -51,6 +56,7 @@ int main(int argc, char** argv) {
     if (lessons->parsed()) return gbl::runLessons(lessonsOptions);
     if (compare->parsed()) return gbl::runCompare(compareOptions);
     if (check->parsed()) return gbl::runCheck(checkOptions);
+    if (capture->parsed()) return gbl::runCapture(captureOptions, argv[0]);
     if (bench->parsed()) {
         benchOptions.lightsGiven = bench->count(gbl::cli::kLights.name) > 0;
         return gbl::runBenchLayouts(benchOptions);

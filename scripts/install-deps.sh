@@ -4,7 +4,8 @@
 set -euo pipefail
 
 # libx11-dev is only recommended by libglfw3-dev (and recommends are not installed below); the UI tests'
-# drag-and-drop program, tests/support/xdnd_drop.c, is built with it.
+# drag-and-drop program, tests/support/xdnd_drop.c, is built with it. apitrace and apitrace-tracers
+# (apitrace, eglretrace) are what `gbuffer-lab capture` runs; its test needs them.
 packages=(
   cmake g++ make ninja-build pkg-config mold
   libglfw3-dev libx11-dev libglm-dev libtinygltf-dev libopenimageio-dev libepoxy-dev libdraco-dev
@@ -15,6 +16,7 @@ packages=(
   glslang-tools fonts-dejavu-core
   # The browser's image files (renderer/image/image_io_stb.cpp), tested natively: stb, tinyexr, zlib.
   libstb-dev libtinyexr-dev zlib1g-dev
+  apitrace apitrace-tracers
 )
 
 missing=()

@@ -45,3 +45,19 @@ TEST(CheckCommand, BadManifestIsRefusedNamingTheField) {
     gbl::test::expectRefused({"check", dir + "/manifest.json"}, "normal.encoding must be one of");
     gbl::test::expectRefused({"check", dir + "/none.json"}, "cannot read the manifest");
 }
+
+// A manifest of the gbuffer-lab preset in a `render --out` folder takes that folder's camera.json and
+// lights.json (it was refused for want of a camera, and opened with no lights once one was added).
+TEST(CheckCommand, TheGbufferLabPresetReadsTheFoldersCameraAndLights) {
+    std::string const out = gbl::test::freshTempDir("check_preset");
+    auto const r = runGbufferLab({"render", "--out", out, "--size", "160x90", "--lights", "8"});
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ofstream(out + "/manifest.json")
+        << R"({"format": "gbuffer-lab-gbuffer", "version": 1, "preset": "gbuffer-lab"})";
+    auto const c = runGbufferLab({"check", out + "/manifest.json"});
+    EXPECT_EQ(c.exitCode, 0) << c.output;
+    std::string const relit = gbl::test::freshTempDir("check_preset_relit");
+    auto const g = runGbufferLab({"render", "--gbuffer", out + "/manifest.json", "--out", relit});
+    EXPECT_EQ(g.exitCode, 0) << g.output;
+    EXPECT_NE(g.output.find(", 8 lights,"), std::string::npos) << g.output;
+}

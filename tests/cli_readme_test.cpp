@@ -19,7 +19,7 @@ namespace {
 
 using OptionSets = std::map<std::string, std::set<std::string>>;  // command ("" = the editor) -> options
 
-std::set<std::string> const kCommands{"", "render", "bench", "lessons", "compare", "check"};
+std::set<std::string> const kCommands{"", "render", "bench", "lessons", "compare", "check", "capture"};
 
 // The long options a command's --help lists, one per line in its Options section.
 std::set<std::string> helpOptions(std::string const& command) {

@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -539,4 +540,70 @@ TEST(GBufferImport, EmissiveAndOcclusionLoadDecodeAndRefuseBadValues) {
     writeExr(dir + "/negative.exr", 3, em);
     std::string e5 = refused(R"(, "emissive": {"file": "negative.exr"})");
     EXPECT_EQ(e5.rfind("m.json: emissive holds negative values in " + dir + "/negative.exr at 16 pixels", 0), 0u) << e5;
+}
+
+// Shares are of the geometry pixels: a fault on every drawn pixel is 100 %, not the 75 % of the frame
+// the geometry covers here (12 of 16 rows).
+TEST(GBufferImport, FindingSharesAreOfTheGeometryPixels) {
+    GBufferCheckReport const r = check(writeGBuffer("gbi_share", 0.5f));
+    ASSERT_EQ(r.findings.size(), 1u);
+    EXPECT_DOUBLE_EQ(r.findings[0].share, 1.0);
+}
+
+// Bad files are refused before anything is decoded: a device file, a missing file named after a large
+// one, and a G-buffer over the memory budget (a sparse raw file: its size is there, its bytes are not).
+TEST(GBufferImport, FilesAreProbedBeforeAnyIsDecoded) {
+    std::string const dir = writeGBuffer("gbi_probe");
+    auto loadWith = [&](std::string const& extra) {
+        std::string text;
+        {
+            std::ifstream in(dir + "/manifest.json");
+            text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        }
+        text.insert(text.rfind('}'), extra);
+        ManifestLoad m = parseManifest(text, "m.json", dir);
+        EXPECT_TRUE(m.manifest) << m.error;
+        if (!m.manifest) return std::string();
+        auto const start = std::chrono::steady_clock::now();
+        GBufferLoad const g = loadGBuffer(*m.manifest);
+        // Refused from headers and directory entries: well under a second even on a loaded 2-core machine.
+        EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+        EXPECT_FALSE(g.gbuffer);
+        return g.error;
+    };
+    std::string const device = loadWith(
+        R"(, "lit": {"file": "/dev/zero", "raw": {"type": "float", "width": 20000, "height": 20000, "channels": 4}})");
+    EXPECT_NE(device.find("lit.file /dev/zero is not a regular file"), std::string::npos) << device;
+
+    std::string const missing = loadWith(R"(, "specular": {"file": "nowhere.png", "channel": "r"})");
+    EXPECT_NE(missing.find("specular.file"), std::string::npos) << missing;
+
+    std::string const big = dir + "/big.raw";
+    { std::ofstream(big, std::ios::binary).put('\0'); }
+    fs::resize_file(big, std::uintmax_t(20000) * 20000 * 4 * 4);  // sparse: no disk is written
+    std::string const budget = loadWith(
+        R"(, "lit": {"file": "big.raw", "raw": {"type": "float", "width": 20000, "height": 20000, "channels": 4}})");
+    // It is the size that is refused here, not the budget: the frame is 16x16.
+    EXPECT_NE(budget.find("is 20000x20000 but position is 16x16"), std::string::npos) << budget;
+    fs::remove(big);
+}
+
+TEST(GBufferImport, AGBufferOverTheMemoryBudgetIsRefusedInOneSentence) {
+    std::string const dir = test::freshTempDir("gbi_budget");
+    for (char const* name : {"p.raw", "n.raw"}) {
+        { std::ofstream(dir + "/" + name, std::ios::binary).put('\0'); }
+        fs::resize_file(dir + "/" + name, std::uintmax_t(20000) * 20000 * 3 * 4);  // sparse
+    }
+    ManifestLoad m = parseManifest(R"({"format": "gbuffer-lab-gbuffer", "version": 1,
+        "position": {"file": "p.raw", "raw": {"type": "float", "width": 20000, "height": 20000, "channels": 3}},
+        "normal": {"file": "n.raw", "encoding": "float",
+                   "raw": {"type": "float", "width": 20000, "height": 20000, "channels": 3}}})",
+                                   "m.json", dir);
+    ASSERT_TRUE(m.manifest) << m.error;
+    GBufferLoad const g = loadGBuffer(*m.manifest);
+    ASSERT_FALSE(g.gbuffer);
+    EXPECT_NE(g.error.find("the G-buffer would take 18 GiB decoded (20000x20000, 2 attachments), over the 4.0 GiB"),
+              std::string::npos)
+        << g.error;
+    fs::remove_all(dir);
 }

@@ -23,7 +23,9 @@ inline constexpr int kMaxImageSide = 1 << 16;
 
 // An image as decoded: rows top to bottom, channels interleaved; straight (unassociated) alpha.
 struct DecodedPixels {
-    int width = 0, height = 0, channels = 0;       // as the file declares them, also when refused
+    int width = 0, height = 0, channels = 0;       // channels: decoded (all the file has unless a range is asked)
+    int firstChannel = 0;                          // the first decoded channel of the file
+    int fileChannels = 0;                          // all the file has
     SampleStorage storage = SampleStorage::Other;  // the file's sample type
     std::vector<float> floats;                     // readImageFile: the values as floats (8/16 bits: 0..1)
     std::vector<std::uint8_t> bytes;               // decodeImage8: the values as 8 bits
@@ -36,7 +38,13 @@ struct DecodedPixels {
 // Every channel of a file (PNG, JPEG, HDR, EXR: ZIP-compressed and half-float included; natively any
 // format OpenImageIO reads) as floats. EXR channels come R, G, B, A first, then the others in the
 // file's order, as OpenImageIO orders them.
-DecodedPixels readImageFile(std::string const& path, std::size_t maxPixels);
+// With `channelCount` > 0 only the file's channels [firstChannel, firstChannel + channelCount) are
+// decoded (clamped to the file's; natively the others are never decoded, in the browser they are dropped).
+DecodedPixels readImageFile(std::string const& path, std::size_t maxPixels, int firstChannel = 0,
+                            int channelCount = 0);
+// The file's size, channels and sample type from its header, nothing decoded where the format allows
+// (natively always; the browser decodes EXR files to learn theirs). floats stays empty.
+DecodedPixels probeImageFile(std::string const& path);
 // PNG or JPEG (natively any format OpenImageIO reads) from memory as 8 bits, 1 to 4 channels.
 // `nameHint` (a URI or a mime type) helps pick the format when the bytes' signature does not.
 DecodedPixels decodeImage8(std::span<std::uint8_t const> bytes, std::string_view nameHint, std::size_t maxPixels);

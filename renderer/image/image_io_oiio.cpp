@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cstring>
 #include <fstream>
+#include <limits>
+#include <memory>
 
 namespace gbl {
 
@@ -76,9 +78,13 @@ std::optional<std::string> write(std::string const& path, FloatImage const& imag
 
 }  // namespace
 
-DecodedPixels readImageFile(std::string const& path, std::size_t maxPixels) {
-    DecodedPixels out;
-    auto in = OIIO::ImageInput::open(path);
+namespace {
+// The file opened for reading. Alpha is data, never coverage (LearnOpenGL's gAlbedoSpec.png keeps specular
+// in it): without UnassociatedAlpha OpenImageIO premultiplies a PNG's colour by its alpha.
+std::unique_ptr<OIIO::ImageInput> openImage(std::string const& path, DecodedPixels& out) {
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(path, &config);
     if (!in) {
         out.error = OIIO::geterror();
         if (!std::ifstream(path)) {
@@ -86,11 +92,34 @@ DecodedPixels readImageFile(std::string const& path, std::size_t maxPixels) {
             out.error = "no such file, or no permission";
         }
         if (out.error.empty()) out.error = "not an image file";
-        return out;
     }
+    return in;
+}
+}  // namespace
+
+DecodedPixels probeImageFile(std::string const& path) {
+    DecodedPixels out;
+    auto in = openImage(path, out);
+    if (in) {
+        usableSize(in->spec(), std::numeric_limits<std::size_t>::max(), out);
+        out.fileChannels = out.channels;
+    }
+    return out;
+}
+
+DecodedPixels readImageFile(std::string const& path, std::size_t maxPixels, int firstChannel, int channelCount) {
+    DecodedPixels out;
+    auto in = openImage(path, out);
+    if (!in) return out;
     if (!usableSize(in->spec(), maxPixels, out)) return out;
+    out.fileChannels = out.channels;
+    if (channelCount > 0) {
+        out.firstChannel = std::clamp(firstChannel, 0, out.fileChannels - 1);
+        out.channels = std::clamp(channelCount, 1, out.fileChannels - out.firstChannel);
+    }
     out.floats.resize(std::size_t(out.width) * std::size_t(out.height) * std::size_t(out.channels));
-    if (!in->read_image(0, 0, 0, out.channels, OIIO::TypeDesc::FLOAT, out.floats.data())) {
+    if (!in->read_image(0, 0, out.firstChannel, out.firstChannel + out.channels, OIIO::TypeDesc::FLOAT,
+                        out.floats.data())) {
         out.error = in->geterror();
         if (out.error.empty()) out.error = "the image data is corrupt";
         out.floats.clear();

@@ -172,7 +172,7 @@ void readStb(std::vector<std::uint8_t> const& file, std::size_t maxPixels, Decod
 
 }  // namespace
 
-DecodedPixels readImageFile(std::string const& path, std::size_t maxPixels) {
+DecodedPixels readImageFile(std::string const& path, std::size_t maxPixels, int firstChannel, int channelCount) {
     DecodedPixels out;
     std::ifstream in(path, std::ios::binary);
     if (!in) {
@@ -189,7 +189,28 @@ DecodedPixels readImageFile(std::string const& path, std::size_t maxPixels) {
         readExr(file, maxPixels, out);
     else
         readStb(file, maxPixels, out);
-    if (!out.ok()) out.floats.clear();
+    out.fileChannels = out.channels;
+    if (!out.ok()) {
+        out.floats.clear();
+        return out;
+    }
+    if (channelCount > 0 && out.channels > 0) {  // the decoders give every channel: keep the asked ones
+        int const first = std::clamp(firstChannel, 0, out.channels - 1);
+        int const count = std::clamp(channelCount, 1, out.channels - first);
+        std::size_t const pixels = std::size_t(out.width) * std::size_t(out.height);
+        std::vector<float> kept(pixels * std::size_t(count));
+        for (std::size_t p = 0; p < pixels; ++p)
+            for (int c = 0; c < count; ++c) kept[p * count + c] = out.floats[p * out.channels + first + c];
+        out.floats = std::move(kept);
+        out.firstChannel = first;
+        out.channels = count;
+    }
+    return out;
+}
+
+DecodedPixels probeImageFile(std::string const& path) {
+    DecodedPixels out = readImageFile(path, std::numeric_limits<std::size_t>::max());
+    out.floats.clear();
     return out;
 }
 

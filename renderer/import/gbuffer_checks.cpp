@@ -2,6 +2,8 @@
 // where a finding has more than one (position against depth tries each hypothesis in turn).
 #include "import/gbuffer_checks.h"
 
+#include "import/gbuffer_causes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -330,6 +332,12 @@ GBufferCheckReport checkGBuffer(ImportedGBuffer const& g) {
                            normalAngleError(m.normal.encoding, note.step) * 180.0 / std::numbers::pi,
                            double(m.shininess), note.highlightError * 100.0)));
     }
+    addProvenCauses(g, geometry, r);
+    // A fault on every drawn pixel reads 100 %, however much of the frame is background: the shares are
+    // of the geometry, but for the two checks that look at every pixel (non-finite values, no background).
+    for (auto& f : r.findings)
+        if (f.check != "nan_inf" && f.check != "no_background" && r.geometryPixels > 0)
+            f.share = double(f.pixels) / double(r.geometryPixels);
     return r;
 }
 

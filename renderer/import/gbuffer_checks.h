@@ -14,7 +14,7 @@ struct GBufferFinding {
     std::string check;       // "normal_not_unit", ... (docs/import.md lists them)
     std::string attachment;  // the manifest field it concerns
     std::size_t pixels = 0;
-    double share = 0.0;  // pixels / every pixel of the frame
+    double share = 0.0;  // pixels / the geometry pixels (nan_inf, no_background: / every pixel of the frame)
     std::string cause;   // one sentence naming the likely bug
     bool heuristic = false;
     std::vector<std::uint8_t> mask;  // width * height, 1 where the finding applies

@@ -232,6 +232,8 @@ json presetJson(std::string const& name) {
       "lit": {"file": "lighting.exr", "channels": "rgb"}})");
 }
 
+std::optional<json> exportFolderJson(fs::path const& dir, std::string* error);
+
 GBufferManifest readManifest(json j, std::string const& dir) {
     if (!j.is_object()) fail("the manifest", "must be a JSON object (got " + typeName(j) + ")");
     // Format and version first, so a newer file is reported as newer rather than as unknown fields.
@@ -257,10 +259,21 @@ GBufferManifest readManifest(json j, std::string const& dir) {
             merged.erase("position");
         merged.merge_patch(j);
         j = std::move(merged);
+        // The gbuffer-lab preset is a `render --out` folder: its camera.json and lights.json come with it,
+        // unless the manifest gives its own.
+        std::string ignored;
+        if (m.preset == "gbuffer-lab" && (!j.contains("camera") || !j.contains("lights")))
+            if (auto folder = exportFolderJson(fs::path(dir), &ignored))
+                for (char const* key : {"camera", "lights"})
+                    if (!j.contains(key)) j[key] = (*folder)[key];
     }
+    // A captured manifest (gbuffer-lab capture) says per field why it was chosen, and keeps what it
+    // found in "capture": notes for the reader, not read here.
+    for (auto& [key, value] : j.items())
+        if (value.is_object()) value.erase("guessed_from");
     Object top(j, "",
                {"format", "version", "preset", "flip_y", "shininess", "shading", "position", "normal", "albedo",
-                "specular", "emissive", "occlusion", "depth", "lit", "camera", "lights"});
+                "specular", "emissive", "occlusion", "depth", "lit", "camera", "lights", "capture"});
     Reader reader{dir};
     if (json const* f = top.optional("flip_y")) m.flipY = boolean(*f, "flip_y");
     if (json const* s = top.optional("shading"))

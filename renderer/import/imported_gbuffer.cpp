@@ -1,15 +1,18 @@
-// Loading a foreign G-buffer: images through image/image_io.h or as raw samples, then decoding.
+// Loading a foreign G-buffer: images through image/image_io.h or as raw
+// samples, then decoding.
 #include "import/imported_gbuffer.h"
+
+#include "import/gbuffer_files.h"
+#include "import/gbuffer_probe.h"
 
 #include "core/depth.h"
 #include "core/octahedral.h"
-
-#include "image/image_io.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <future>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -18,96 +21,10 @@ namespace gbl {
 
 namespace {
 
-struct FileImage {
-    int width = 0;
-    int height = 0;
-    int channels = 0;
-    SampleStorage storage = SampleStorage::Float;
-    std::vector<float> pixels;
-};
-
-// IEEE 754 binary16 to float (raw half files; OpenImageIO converts its own formats).
-float halfToFloat(std::uint16_t h) {
-    std::uint32_t const sign = std::uint32_t(h & 0x8000u) << 16;
-    std::uint32_t exp = (h >> 10) & 0x1fu;
-    std::uint32_t mant = h & 0x3ffu;
-    std::uint32_t bits;
-    if (exp == 0) {
-        if (mant == 0) {
-            bits = sign;
-        } else {  // subnormal: normalise
-            exp = 127 - 15 + 1;
-            while (!(mant & 0x400u)) {
-                mant <<= 1;
-                --exp;
-            }
-            bits = sign | (exp << 23) | ((mant & 0x3ffu) << 13);
-        }
-    } else if (exp == 31) {
-        bits = sign | 0x7f800000u | (mant << 13);
-    } else {
-        bits = sign | ((exp + 127 - 15) << 23) | (mant << 13);
-    }
-    float f;
-    std::memcpy(&f, &bits, sizeof f);
-    return f;
-}
-
-std::string sizeText(int w, int h) {
-    return std::to_string(w) + "x" + std::to_string(h);
-}
-
-std::optional<FileImage> readRaw(ImageRef const& ref, std::string* error) {
-    RawFormat const& f = *ref.raw;
-    std::ifstream in(ref.path, std::ios::binary);
-    if (!in) {
-        *error = ref.field + ".file " + ref.path + " cannot be read (no such file, or no permission)";
-        return std::nullopt;
-    }
-    std::ostringstream s;
-    s << in.rdbuf();
-    std::string const bytes = s.str();
-    std::size_t const bytesPer = f.type == RawType::Float ? 4 : f.type == RawType::Half ? 2 : 1;
-    std::size_t const samples = std::size_t(f.width) * std::size_t(f.height) * std::size_t(f.channels);
-    if (bytes.size() != samples * bytesPer) {
-        *error = ref.field + ".raw does not match " + ref.path + ": " + sizeText(f.width, f.height) + " with " +
-                 std::to_string(f.channels) + " " + std::string(kRawTypeNames[std::size_t(f.type)]) +
-                 " channels needs " + std::to_string(samples * bytesPer) + " bytes, the file holds " +
-                 std::to_string(bytes.size());
-        return std::nullopt;
-    }
-    FileImage img{f.width, f.height, f.channels, SampleStorage::Float, std::vector<float>(samples)};
-    for (std::size_t i = 0; i < samples; ++i) {
-        if (f.type == RawType::Float) {
-            std::memcpy(&img.pixels[i], bytes.data() + i * 4, 4);
-        } else if (f.type == RawType::Half) {
-            std::uint16_t h;
-            std::memcpy(&h, bytes.data() + i * 2, 2);
-            img.pixels[i] = halfToFloat(h);
-        } else {
-            img.pixels[i] = float(static_cast<unsigned char>(bytes[i])) / 255.0f;
-        }
-    }
-    img.storage = f.type == RawType::Float  ? SampleStorage::Float
-                  : f.type == RawType::Half ? SampleStorage::Half
-                                            : SampleStorage::Uint8;
-    return img;
-}
-
-// Image files through image/image_io.h (OpenImageIO natively; stb_image and tinyexr in the browser).
-std::optional<FileImage> readFile(ImageRef const& ref, std::string* error) {
-    if (ref.raw) return readRaw(ref, error);
-    DecodedPixels read = readImageFile(ref.path, std::size_t(1) << 28);
-    if (read.overLimit) {
-        *error = ref.field + ".file " + ref.path + " has no usable size (" + sizeText(read.width, read.height) + ")";
-        return std::nullopt;
-    }
-    if (!read.ok()) {
-        *error = ref.field + ".file " + ref.path + " cannot be read (" + read.error + ")";
-        return std::nullopt;
-    }
-    return FileImage{read.width, read.height, read.channels, read.storage, std::move(read.floats)};
-}
+using detail::ChannelRange;
+using detail::FileImage;
+using detail::readFile;
+using detail::sizeText;
 
 float srgbToLinear(float c) {
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
@@ -234,17 +151,44 @@ GBufferLoad loadGBuffer(GBufferManifest const& m) {
     if (m.occlusion) refs.push_back(&*m.occlusion);
     if (m.depth) refs.push_back(&m.depth->image);
     if (m.lit) refs.push_back(&*m.lit);
+    // Every file is looked at before any is decoded (gbuffer_probe.h).
+    if (auto why = probeGBufferFiles(refs)) return refuse(*why);
+    // The distinct files are decoded side by side (EXR decoding is nearly all of a load).
+    std::map<std::string, ChannelRange> ranges;
+    for (ImageRef const* ref : refs) {
+        auto [it, fresh] = ranges.try_emplace(ref->path, ChannelRange{99, -1});
+        for (int c : ref->channels) {
+            it->second.first = std::min(it->second.first, c);
+            it->second.last = std::max(it->second.last, c);
+        }
+    }
+#ifdef __EMSCRIPTEN__
+    auto const policy = std::launch::deferred;  // no threads in the page
+#else
+    auto const policy = std::launch::async;
+#endif
+    struct Read {
+        std::optional<FileImage> image;
+        std::string error;
+    };
+    std::map<std::string, std::future<Read>> reads;
+    for (ImageRef const* ref : refs)
+        if (!reads.count(ref->path))
+            reads.emplace(ref->path, std::async(policy, [ref, range = ranges[ref->path]] {
+                              Read r;
+                              r.image = readFile(*ref, range, &r.error);
+                              return r;
+                          }));
     std::map<std::string, FileImage> files;
+    for (ImageRef const* ref : refs) {
+        if (files.count(ref->path)) continue;
+        Read r = reads.at(ref->path).get();
+        if (!r.image) return refuse(r.error);
+        files.emplace(ref->path, std::move(*r.image));
+    }
     std::string firstField;
     for (ImageRef const* ref : refs) {
-        auto it = files.find(ref->path);
-        if (it == files.end()) {
-            std::string error;
-            auto img = readFile(*ref, &error);
-            if (!img) return refuse(error);
-            it = files.emplace(ref->path, std::move(*img)).first;
-        }
-        FileImage const& f = it->second;
+        FileImage const& f = files.at(ref->path);
         if (g.width == 0) {
             g.width = f.width;
             g.height = f.height;
@@ -255,9 +199,9 @@ GBufferLoad loadGBuffer(GBufferManifest const& m) {
                           ": every attachment must have the frame's size");
         }
         for (int c : ref->channels)
-            if (c >= f.channels)
+            if (c >= f.fileChannels)
                 return refuse(ref->field + " asks for channel " + std::string(1, "rgba"[c]) + " but " + ref->path +
-                              " has " + std::to_string(f.channels) + " channel" + (f.channels == 1 ? "" : "s"));
+                              " has " + std::to_string(f.fileChannels) + " channel" + (f.fileChannels == 1 ? "" : "s"));
         ImportedImage im;
         im.field = ref->field;
         im.path = ref->path;
@@ -272,7 +216,7 @@ GBufferLoad loadGBuffer(GBufferManifest const& m) {
                     (std::size_t(srcY) * std::size_t(f.width) + std::size_t(x)) * std::size_t(f.channels);
                 std::size_t const dst = (std::size_t(y) * std::size_t(f.width) + std::size_t(x)) * ref->channels.size();
                 for (std::size_t c = 0; c < ref->channels.size(); ++c)
-                    im.values[dst + c] = f.pixels[src + std::size_t(ref->channels[c])];
+                    im.values[dst + c] = f.pixels[src + std::size_t(ref->channels[c] - f.firstChannel)];
             }
         }
         g.images.push_back(std::move(im));
