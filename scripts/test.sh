@@ -12,7 +12,7 @@ export MESA_SHADER_CACHE_DIR="$PWD/build/mesa-shader-cache"
 rm -rf "$MESA_SHADER_CACHE_DIR"
 unset MESA_SHADER_CACHE_DISABLE
 start=$SECONDS
-scripts/build.sh --debian-imgui -DGBL_WERROR=ON
+scripts/build.sh -DGBL_WERROR=ON
 built=$SECONDS
 # GL tests render with llvmpipe on the CPU: two at a time keeps both cores busy.
 ctest --test-dir build --output-on-failure -j2 --timeout 600

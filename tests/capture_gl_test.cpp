@@ -4,7 +4,7 @@
 #include "capture/capture_mapping.h"
 #include "capture/run_process.h"
 #include "capture/trace_scan.h"
-#include "image_io.h"
+#include "image/image_io.h"
 #include "import/gbuffer_checks.h"
 #include "import/gbuffer_manifest.h"
 #include "import/imported_gbuffer.h"

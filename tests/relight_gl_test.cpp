@@ -416,7 +416,7 @@ TEST(RelightCommand, TheLearnOpenGlShadingLightsMoreThanTheWindowedModel) {
     EXPECT_EQ(darker, 0);
     EXPECT_GT(brighter, covered * 9 / 10);
     test::expectRefused({"render", "--gbuffer", d, "--out", lo, "--shading", "phong"},
-                        "--shading must be gbuffer-lab or learnopengl");
+                        "--shading: 'phong' is not one of gbuffer-lab or learnopengl");
 }
 
 TEST(RelightCommand, BadInputIsRefusedInOneSentence) {

@@ -2,7 +2,7 @@
 // program's matrices, lights from the lighting program's uniform arrays.
 #include "capture/capture_mapping.h"
 
-#include "image_io.h"
+#include "image/image_io.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -40,8 +40,7 @@ struct DecodedPixels {
 // file's order, as OpenImageIO orders them.
 // With `channelCount` > 0 only the file's channels [firstChannel, firstChannel + channelCount) are
 // decoded (clamped to the file's; natively the others are never decoded, in the browser they are dropped).
-DecodedPixels readImageFile(std::string const& path, std::size_t maxPixels, int firstChannel = 0,
-                            int channelCount = 0);
+DecodedPixels readImageFile(std::string const& path, std::size_t maxPixels, int firstChannel = 0, int channelCount = 0);
 // The file's size, channels and sample type from its header, nothing decoded where the format allows
 // (natively always; the browser decodes EXR files to learn theirs). floats stays empty.
 DecodedPixels probeImageFile(std::string const& path);

@@ -44,7 +44,7 @@ void drawBrowserAboutWindow(BrowserAboutState& state, std::span<std::string cons
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Appearing,
                             ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, io.DisplaySize.x * 0.9f), 0.0f), ImGuiCond_Appearing);
-    if (ImGui::Begin("About this browser", &state.open, ImGuiWindowFlags_NoCollapse | kNoDockingFlag)) {
+    if (ImGui::Begin("About this browser", &state.open, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoDocking)) {
         wrappedText("gbuffer-lab runs here on WebGL2. What it cannot do in this browser:");
         ImGui::Separator();
         for (std::string const& line : lines) {
