@@ -126,6 +126,8 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.fileMenu = state.layout.fileMenuRect;
     line.viewMenu = state.layout.viewMenuRect;
     line.resetLayoutItem = state.layout.resetLayoutRect;
+    line.uiScaleMenu = state.layout.uiScaleMenuRect;
+    line.uiScaleItems = state.layout.uiScaleItemRects;
     line.openGBufferItem = editor.loading.gbuffer.menuItemRect;
     line.openSceneItem = editor.loading.openItemRect;
     line.openFolderItem = editor.loading.openFolderItemRect;

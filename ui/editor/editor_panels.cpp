@@ -91,6 +91,8 @@ EditRequest drawMainMenu(Editor& editor) {
     bool const viewMenu = ImGui::BeginMenu("View");
     state.layout.viewMenuRect = ui::lastItemRect();
     state.layout.resetLayoutRect = glm::vec4(0.0f);
+    state.layout.uiScaleMenuRect = glm::vec4(0.0f);
+    state.layout.uiScaleItemRects.clear();
     if (viewMenu) {
         if (ImGui::MenuItem("Reset layout")) state.layout.resetRequested = true;
         state.layout.resetLayoutRect = ui::lastItemRect();
@@ -98,12 +100,17 @@ EditRequest drawMainMenu(Editor& editor) {
         if (ImGui::MenuItem("Home view", keysFor(ui::EditorAction::HomeView))) edit.homeView = true;
         if (ImGui::MenuItem("Frame the whole scene")) ui::frameBounds(state.rig, state.camera, state.sceneBounds);
         ImGui::Separator();
-        // UI scale: bigger text and controls for a projector; applied before the next frame.
+        // UI scale: bigger text and controls for a projector; applied before the next frame. Its
+        // row is measured before BeginMenu, which leaves the open submenu as the last item.
+        ImVec2 const row = ImGui::GetCursorScreenPos();
+        state.layout.uiScaleMenuRect = glm::vec4(row.x, row.y, ImGui::GetContentRegionAvail().x, ImGui::GetFontSize());
         if (ImGui::BeginMenu("UI scale")) {
             ui::UiScaleState& scale = state.layout.scale;
-            for (ui::UiScaleChoice const& choice : ui::kUiScaleChoices)
+            for (ui::UiScaleChoice const& choice : ui::kUiScaleChoices) {
                 if (ImGui::MenuItem(choice.label, nullptr, scale.current == choice.scale))
                     scale.requested = choice.scale;
+                state.layout.uiScaleItemRects.push_back(ui::lastItemRect());
+            }
             ImGui::EndMenu();
         }
         ImGui::Separator();

@@ -156,7 +156,8 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += ",\"gbuffer\":" + quoted(l.gbuffer);
     out += ",\"frameSize\":[" + std::to_string(l.frameSize.x) + "," + std::to_string(l.frameSize.y) + "]";
     out += ",\"fileMenu\":" + rect(l.fileMenu) + ",\"viewMenu\":" + rect(l.viewMenu) +
-           ",\"resetLayoutItem\":" + rect(l.resetLayoutItem) + ",\"openGBufferItem\":" + rect(l.openGBufferItem) +
+           ",\"resetLayoutItem\":" + rect(l.resetLayoutItem) + ",\"uiScaleMenu\":" + rect(l.uiScaleMenu) +
+           ",\"uiScaleItems\":" + flatRects(l.uiScaleItems) + ",\"openGBufferItem\":" + rect(l.openGBufferItem) +
            ",\"openSceneItem\":" + rect(l.openSceneItem) + ",\"openFolderItem\":" + rect(l.openFolderItem) +
            ",\"exportAllItem\":" + rect(l.exportAllItem) + ",\"windowShotItem\":" + rect(l.windowShotItem) +
            ",\"gbufferBrowser\":" + (l.gbufferBrowser ? "true" : "false");

@@ -141,8 +141,10 @@ struct FrameLogLine {
     // The menu bar's "File", File > "Open G-buffer..." while that menu is open, and whether the
     // G-buffer file browser is open.
     glm::vec4 fileMenu{0.0f};
-    glm::vec4 viewMenu{0.0f};         // the menu bar's "View"
-    glm::vec4 resetLayoutItem{0.0f};  // View > Reset layout (0 unless the menu is open)
+    glm::vec4 viewMenu{0.0f};             // the menu bar's "View"
+    glm::vec4 resetLayoutItem{0.0f};      // View > Reset layout (0 unless the menu is open)
+    glm::vec4 uiScaleMenu{0.0f};          // View > UI scale (0 unless the menu is open)
+    std::vector<glm::vec4> uiScaleItems;  // its choices, model/ui_scale.h order (empty unless open)
     glm::vec4 openGBufferItem{0.0f};
     glm::vec4 openSceneItem{0.0f};  // File > "Open scene..." (0 while the menu is closed)
     // The browser build's File > "Open folder..." and "Save window as PNG", and File > "Export all..."

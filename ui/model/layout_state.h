@@ -7,6 +7,7 @@
 
 #include <array>
 #include <string_view>
+#include <vector>
 
 namespace gbl::ui {
 
@@ -50,6 +51,8 @@ struct LayoutState {
     glm::vec4 fileMenuRect{0.0f};                               // the menu bar's "File", for the frame log
     glm::vec4 viewMenuRect{0.0f};                               // its "View"
     glm::vec4 resetLayoutRect{0.0f};                            // View > Reset layout while the menu is open
+    glm::vec4 uiScaleMenuRect{0.0f};                            // View > UI scale while the menu is open
+    std::vector<glm::vec4> uiScaleItemRects;                    // its choices while that submenu is open
 };
 
 // Fractions of the work area. The G-buffer strip spans the whole width below the others, so
