@@ -161,7 +161,7 @@ DecodedGBuffer decodeGBuffer(ReadbackContext const& r, glm::ivec2 offset, int wi
 // coordinates: x, y from the bottom, width, height) is drawn and read: one pixel for the inspector.
 std::vector<float> readDepthOrStencil(ReadbackContext const& r, bool stencil, glm::ivec4 region) {
     RenderTargets const& t = r.targets;
-    RendererImpl::ReadbackTargets& rb = r.readback;
+    auto& rb = r.readback;  // RendererImpl::ReadbackTargets, a private type
     if (!rb.depthFbo) {
         rb.depthCopy = gl::Texture::create2D(GL_RGBA32F, t.width, t.height, "readback.depth");
         rb.depthFbo = gl::Framebuffer::create({&rb.depthCopy}, nullptr, "readback.depth");
