@@ -157,7 +157,10 @@ void feedImGuiEvents(EditorInput const& input, GLFWwindow* window) {
                 ImGui_ImplGlfw_CharCallback(window, unsigned(e.code));
                 break;
             case ui::InputKind::Scroll:
-                ImGui_ImplGlfw_ScrollCallback(window, e.value.x, e.value.y);
+                // Straight to ImGui: the GLFW backend's scroll callback ignores scrolls under Emscripten's
+                // GLFW, expecting the backend's own canvas wheel handler, which the editor replaces
+                // (onBrowserWheel: the same notches as the desktop's).
+                ImGui::GetIO().AddMouseWheelEvent(float(e.value.x), float(e.value.y));
                 break;
             case ui::InputKind::Cursor:
                 ImGui_ImplGlfw_CursorPosCallback(window, e.value.x, e.value.y);
