@@ -17,6 +17,8 @@ packages=(
   # The browser's image files (renderer/image/image_io_stb.cpp), tested natively: stb, tinyexr, zlib.
   libstb-dev libtinyexr-dev zlib1g-dev
   apitrace apitrace-tracers
+  # A compiler cache: .ci/run builds through it when it is installed.
+  ccache
 )
 
 missing=()
