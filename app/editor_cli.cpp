@@ -17,6 +17,8 @@ void addEditorOptions(CLI::App& app, EditorCli& cli) {
     app.add_option("--frames", editor.frames, "Frames to run before exiting (0: until the window is closed)");
     cli::addShared(app, cli::kSize, cli.windowSize);
     cli::addShared(app, cli::kLights, editor.lightCount);
+    app.add_flag("--glass", editor.glass,
+                 "Stand three coloured glass panes in the default scene's courtyard (drawn forward after lighting)");
     cli::addShared(app, cli::kSession, editor.sessionPath);
     app.add_option("--gbuffer", editor.gbufferPath,
                    "Open another program's G-buffer (a manifest, a folder holding one, or a `render --out` folder) "

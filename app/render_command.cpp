@@ -51,6 +51,9 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
                    "Extra debug view(s) to write as view_NAME.png (position, depth and depth_linear with the 1-99 % "
                    "range of the drawn pixels; the EXRs hold the values)");
     cli::addShared(sub, cli::kScene, o.scene);
+    sub.add_flag("--glass", o.glass,
+                 "Stand three coloured glass panes in the default scene's courtyard (blended: drawn by the forward "
+                 "pass after lighting)");
     sub.add_option("--camera", o.camera,
                    "View from the glTF file's camera N (0, 1, ... as the editor's View menu lists them)");
     cli::addShared(sub, cli::kAllowOutsideUris, o.allowOutsideUris);
@@ -71,8 +74,8 @@ void addRenderOptions(CLI::App& sub, RenderOptions& o) {
     sub.add_option("--until", o.until,
                    "Stop after pass PASS (e.g. geometry, lighting, depth_copy) and write the frame as it stands");
     sub.parse_complete_callback([&sub, &o] {
-        for (char const* name :
-             {cli::kScene.name, cli::kLights.name, "--time", cli::kSize.name, cli::kSession.name, "--camera"})
+        for (char const* name : {cli::kScene.name, cli::kLights.name, "--time", cli::kSize.name, cli::kSession.name,
+                                 "--camera", "--glass"})
             if (sub.count(name) > 0) o.given.insert(name);
         notePipelineOptionsGiven(sub, o.given);
     });
@@ -128,14 +131,18 @@ int runRender(RenderOptions const& o) {
             return badArgument("cannot write " + *o.saveSessionPath + ": folder " + dir.string() + " does not exist");
     }
 
-    SceneRequest request{o.scene, o.lights, o.time, o.allowOutsideUris};
+    if (o.glass && o.scene)
+        return badArgument("--glass stands its panes in the default scene and cannot be combined with --scene " +
+                           *o.scene);
+    SceneRequest request{o.scene, o.lights, o.time, o.allowOutsideUris, o.glass};
     std::optional<PreparedScene> prepared;
     std::optional<ui::Session> session;  // the loaded session, with the overrides applied
     if (o.sessionPath) {
         // The session names its scene and lights; options that change the frame override it.
-        if (o.given.count(cli::kScene.name) || o.given.count(cli::kLights.name))
+        if (o.given.count(cli::kScene.name) || o.given.count(cli::kLights.name) || o.glass)
             return badArgument(
-                "--scene and --lights cannot be combined with --session (the session names its scene and lights)");
+                "--scene, --lights and --glass cannot be combined with --session (the session names "
+                "its scene and lights)");
         ui::SessionLoad loaded = ui::loadSession(*o.sessionPath);
         if (!loaded.session) return badArgument(loaded.error);
         session = std::move(loaded.session);

@@ -26,6 +26,7 @@ struct RenderOptions {
     std::optional<std::string> scene;
     std::optional<int> camera;  // view from the scene file's camera N (SceneData::cameras)
     bool allowOutsideUris = false;
+    bool glass = false;  // the default scene's glass panes
     std::string glLimit;
     std::optional<std::string> sessionPath;      // render the frame a session file describes
     std::optional<std::string> saveSessionPath;  // write the session that reproduces this frame

@@ -26,6 +26,7 @@ std::optional<PreparedScene> prepareScene(SceneRequest const& request, std::stri
     } else {
         DefaultSceneOptions options;
         options.lightCount = request.lightCount.value_or(options.lightCount);
+        options.glass = request.glass;
         out.scene = makeDefaultScene(options);
         out.lights = out.scene.lights;
         orbitLights(out.lights, defaultSceneCenter(), request.time);

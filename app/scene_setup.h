@@ -18,6 +18,7 @@ struct SceneRequest {
     std::optional<int> lightCount;         // default scene: how many lights (32 when unset)
     float time = 0.0f;                     // seconds of light orbiting (default scene)
     bool allowOutsideUris = false;
+    bool glass = false;  // default scene: its glass panes (DefaultSceneOptions::glass)
 };
 
 struct PreparedScene {

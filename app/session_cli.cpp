@@ -24,8 +24,10 @@ std::optional<PreparedScene> prepareSessionScene(ui::Session const& session, std
     SceneRequest request;
     if (session.scene != "default")
         request.scenePath = session.scene;
-    else
+    else {
         request.lightCount = session.defaultSceneLights;
+        request.glass = session.defaultSceneGlass;
+    }
     request.allowOutsideUris = allowOutsideUris;
     auto prepared = prepareScene(request, error);
     if (!prepared) {
@@ -50,6 +52,7 @@ ui::Session sessionFromCommandLine(SceneRequest const& request, PreparedScene co
     } else {
         s.scene = "default";
         s.defaultSceneLights = int(prepared.scene.lights.size());
+        s.defaultSceneGlass = request.glass;
         // The scene keeps the lights before orbiting; prepared.lights are them at request.time.
         s.lights = prepared.scene.lights;
         s.animation.time = request.time;

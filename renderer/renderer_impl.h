@@ -184,6 +184,7 @@ private:
     void runLightCombine(FrameRecord& frame, PassRun const& r);
     void runDepthCopy(FrameRecord& frame, PassRun const& r);
     void runForward(FrameRecord& frame, PassRun const& r);
+    void runGlassOutline(FrameRecord& frame, PassRun const& r);
     void runCoverage(FrameRecord& frame, PassRun const& r);
     void runDisplay(FrameRecord& frame, PassRun const& r);
     void runLightCubes(FrameRecord& frame, PassRun const& r);

@@ -21,11 +21,11 @@ namespace gbl {
 RendererImpl::RunFunction RendererImpl::runFunction(PassId id) {
     // PassId -> run function, in PassId's order.
     static constexpr std::array<RunFunction, kPassNames.size()> kRun{
-        &RendererImpl::runForwardShading, &RendererImpl::runGeometry, &RendererImpl::runLightLists,
-        &RendererImpl::runVolumeDepth,    &RendererImpl::runLighting, &RendererImpl::runLightCombine,
-        &RendererImpl::runDepthCopy,      &RendererImpl::runForward,  &RendererImpl::runLightCubes,
-        &RendererImpl::runWireframes,     &RendererImpl::runCoverage, &RendererImpl::runDisplay,
-        &RendererImpl::runImport};
+        &RendererImpl::runForwardShading, &RendererImpl::runGeometry,    &RendererImpl::runLightLists,
+        &RendererImpl::runVolumeDepth,    &RendererImpl::runLighting,    &RendererImpl::runLightCombine,
+        &RendererImpl::runDepthCopy,      &RendererImpl::runForward,     &RendererImpl::runLightCubes,
+        &RendererImpl::runWireframes,     &RendererImpl::runCoverage,    &RendererImpl::runDisplay,
+        &RendererImpl::runImport,         &RendererImpl::runGlassOutline};
     return kRun[std::size_t(id)];
 }
 
@@ -58,8 +58,19 @@ void RendererImpl::runForwardShading(FrameRecord& frame, PassRun const& r) {
 }
 
 void RendererImpl::runForward(FrameRecord& frame, PassRun const& r) {
-    forwardPass({scene, lights, shaders.get(ProgramId::Forward), {*r.fbo, r.io.texture(r.decl.color.front())}},
-                {MaterialFilter::Blended, frame.f.viewProj, frame.shading, frame.f.settings.normalMaps, r.decl.states});
+    forwardPass(
+        {scene, lights, shaders.get(ProgramId::Forward), {*r.fbo, r.io.texture(r.decl.color.front())}},
+        {MaterialFilter::Blended, frame.f.viewProj, frame.shading, frame.f.settings.normalMaps, r.decl.states, true});
+}
+
+// The blended surfaces hatched in one colour over the view (shaders/glass_outline.frag).
+void RendererImpl::runGlassOutline(FrameRecord& frame, PassRun const& r) {
+    glBindFramebuffer(GL_FRAMEBUFFER, r.fbo->id());
+    applyGroup(r.decl.states, 0);
+    gl::Program const& program = shaders.get(ProgramId::GlassOutline);
+    program.use();
+    program.set("uViewProj", frame.f.viewProj);
+    drawScene(scene, program, MaterialFilter::Blended, false);
 }
 
 void RendererImpl::runGeometry(FrameRecord& frame, PassRun const& r) {

@@ -10,6 +10,7 @@
 #include "gl/program.h"
 #include "gl_fixture.h"
 #include "renderer_test_access.h"
+#include "scene/default_scene.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -213,6 +214,32 @@ TEST_F(DrawStateGlTest, EveryPassOfEveryCombinationDrawsUnderItsDeclaredState) {
     for (char const* pass : {"forward_shading", "geometry", "lighting", "light_combine", "depth_copy", "light_cubes",
                              "wireframes", "coverage", "display"})
         EXPECT_GT(checked_[pass], 0) << pass << " drew nothing that was checked";
+}
+
+// The default scene's glass panes (DefaultSceneOptions::glass): the forward pass draws them, sorted,
+// under its declared state (alpha blend, depth tested and not written) in every mode and with every
+// depth copy, the draws of the other passes still under theirs.
+TEST_F(DrawStateGlTest, TheGlassPassDrawsUnderItsDeclaredState) {
+    ASSERT_FALSE(renderer_->setScene(makeDefaultScene({int(lights_.size()), true})));
+    std::vector<std::string> failures;
+    for (std::size_t mode = 0; mode < kLightingModeNames.size(); ++mode)
+        for (std::size_t copy = 0; copy < kDepthCopyNames.size(); ++copy) {
+            PipelineSettings s;
+            s.mode = LightingMode(mode);
+            s.depthCopy = DepthCopy(copy);
+            s.lightCubes = true;
+            s.glassOutline = true;
+            std::string const label =
+                "glass " + std::string(kLightingModeNames[mode]) + " " + std::string(kDepthCopyNames[copy]);
+            for (std::string const& f : checkFrame({camera_, lights_, s}, label)) failures.push_back(f);
+        }
+    std::string all;
+    for (std::size_t i = 0; i < failures.size() && i < 20; ++i) all += failures[i] + "\n";
+    EXPECT_TRUE(failures.empty()) << failures.size() << " draws under an undeclared state, first ones:\n" << all;
+    // Three panes a frame, every frame: each pane's draw was checked against the blended declaration.
+    int const frames = int(kLightingModeNames.size() * kDepthCopyNames.size());
+    EXPECT_EQ(checked_["forward"], frames * int(std::size(kGlassPanes)));
+    EXPECT_EQ(checked_["glass_outline"], frames * int(std::size(kGlassPanes)));
 }
 
 // The check is not vacuous: the light cubes' declaration changed by hand in the passes the

@@ -317,3 +317,34 @@ TEST(FramePasses, AViewRecountsThenDrawsIntoItsOwnImage) {
     EXPECT_EQ(names(viewPasses(s)), std::vector<std::string>{"display"});
     EXPECT_TRUE(feedbackLoops(heat).empty());
 }
+
+// Blended surfaces go forward: the forward pass comes after lighting and the depth copy, blends
+// alpha over the lit image depth-tested against the lit target's depth without writing it; the glass
+// outline, when asked for, hatches over the display (any view) and over a viewer's own image.
+TEST(FramePasses, TheGlassGoesForwardAfterLightingAndTheOutlineOverEveryView) {
+    PipelineSettings s;
+    std::vector<std::string> const n = names(framePasses(s));
+    auto const at = [&](char const* name) { return std::find(n.begin(), n.end(), name) - n.begin(); };
+    EXPECT_LT(at("lighting"), at("depth_copy"));
+    EXPECT_LT(at("depth_copy"), at("forward"));
+    EXPECT_LT(at("forward"), at("display"));
+    PassDecl const forward = find(framePasses(s), PassId::Forward);
+    EXPECT_EQ(forward.color, std::vector{Resource::Lighting});
+    EXPECT_EQ(forward.depthStencil, Resource::LitDepth);
+    EXPECT_TRUE(forward.depthRead);
+    EXPECT_FALSE(forward.depthWrite);
+    ASSERT_EQ(forward.states.size(), 1u);
+    EXPECT_EQ(forward.states[0].blend, Blend::Alpha);
+    EXPECT_EQ(forward.states[0].depthTest, DepthTest::Less);
+    EXPECT_FALSE(forward.states[0].depthWrite);
+    EXPECT_EQ(std::count(n.begin(), n.end(), "glass_outline"), 0) << "off by default";
+    s.glassOutline = true;
+    s.view = DebugView::Albedo;  // a view without the overlays still gets the outline
+    std::vector<PassDecl> const frame = framePasses(s);
+    EXPECT_EQ(frame.back().id, PassId::GlassOutline);
+    EXPECT_EQ(frame.back().color, std::vector{Resource::Display});
+    std::vector<PassDecl> const view = viewPasses(s);
+    EXPECT_EQ(view.back().id, PassId::GlassOutline);
+    EXPECT_EQ(view.back().color, std::vector{Resource::View});
+    EXPECT_TRUE(feedbackLoops(frame).empty());
+}

@@ -29,9 +29,9 @@ TEST(PipelineFields, OneEntryPerMemberEachEditingItsOwn) {
     // Fails to compile when PipelineSettings gains or loses a member: add its entry to the table in
     // core/pipeline_fields.cpp, then update the count here.
     [[maybe_unused]] auto const& [mode, cull, depthCopy, tonemap, view, layout, accumulation, shading, lightCubes,
-                                  volumeWireframes, wireframesSelectedOnly, normalMaps, ambient, exposure, shininess,
-                                  volumeScale] = PipelineSettings{};
-    constexpr std::size_t kMembers = 16;
+                                  volumeWireframes, glassOutline, wireframesSelectedOnly, normalMaps, ambient, exposure,
+                                  shininess, volumeScale] = PipelineSettings{};
+    constexpr std::size_t kMembers = 17;
     std::span<PipelineField const> const fields = pipelineFields();
     ASSERT_EQ(fields.size(), kMembers);
 

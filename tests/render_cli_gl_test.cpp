@@ -406,3 +406,33 @@ TEST(RenderCommand, RemappedViewsAreWrittenWithTheReadableRange) {
         EXPECT_GT(high, 0.9f) << name;
     }
 }
+
+// render --glass: the default scene's three panes, drawn by the forward pass (three draws, sorted)
+// after lighting; the saved session names the glass so it renders the same frame again. --glass with
+// another scene or a session is refused in one sentence.
+TEST(RenderCommand, GlassStandsThreePanesDrawnForward) {
+    std::string const out = test::freshTempDir("render_glass");
+    std::string const session = out + "/glass.json";
+    auto const r = runGbufferLab(
+        {"render", "--out", out, "--size", "64x36", "--lights", "4", "--glass", "--save-session", session});
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto const stats = test::readJsonFile(fs::path(out) / "stats.json");
+    ASSERT_TRUE(stats["calls"].contains("forward")) << stats["calls"].dump();
+    EXPECT_EQ(stats["calls"]["forward"]["draws"], 3);
+    auto const saved = test::readJsonFile(session);
+    EXPECT_EQ(saved["scene"]["default_scene_glass"], true);
+    EXPECT_EQ(saved["pipeline"]["glass_outline"], false);
+
+    std::string const plainOut = test::freshTempDir("render_no_glass");
+    ASSERT_EQ(runGbufferLab({"render", "--out", plainOut, "--size", "64x36", "--lights", "4"}).exitCode, 0);
+    auto const plain = test::readJsonFile(fs::path(plainOut) / "stats.json");
+    EXPECT_EQ(plain["calls"]["forward"]["draws"], 0) << "no blended surface without --glass";
+
+    auto const withScene = runGbufferLab({"render", "--out", out, "--glass", "--scene", "x.gltf"});
+    EXPECT_EQ(withScene.exitCode, 2);
+    EXPECT_NE(withScene.output.find("--glass stands its panes in the default scene"), std::string::npos)
+        << withScene.output;
+    auto const withSession = runGbufferLab({"render", "--out", out, "--glass", "--session", session});
+    EXPECT_EQ(withSession.exitCode, 2);
+    EXPECT_NE(withSession.output.find("cannot be combined with --session"), std::string::npos) << withSession.output;
+}

@@ -257,6 +257,33 @@ TEST(Session, AccumulationIsSavedAndOldFilesLoadAsSingle) {
     EXPECT_NE(bad.error.find("pipeline.accumulation"), std::string::npos) << bad.error;
 }
 
+// The glass (issue 47): the default scene's panes under scene.default_scene_glass, written only when
+// on (sessions without glass keep their text), and the glass_outline overlay among the pipeline fields.
+TEST(Session, GlassIsSavedOnlyWhenOnAndOldFilesLoadWithout) {
+    Session s;
+    json j = json::parse(sessionToJson(s));
+    EXPECT_FALSE(j["scene"].contains("default_scene_glass"));
+    EXPECT_EQ(j["pipeline"]["glass_outline"], false);
+    s.defaultSceneGlass = true;
+    s.pipeline.glassOutline = true;
+    j = json::parse(sessionToJson(s));
+    EXPECT_EQ(j["scene"]["default_scene_glass"], true);
+    SessionLoad const back = parseSession(j.dump(), "s.json");
+    ASSERT_TRUE(back.session) << back.error;
+    EXPECT_TRUE(back.session->defaultSceneGlass);
+    EXPECT_TRUE(back.session->pipeline.glassOutline);
+    j["scene"].erase("default_scene_glass");
+    j["pipeline"].erase("glass_outline");
+    SessionLoad const old = parseSession(j.dump(), "s.json");
+    ASSERT_TRUE(old.session) << old.error;
+    EXPECT_FALSE(old.session->defaultSceneGlass);
+    EXPECT_FALSE(old.session->pipeline.glassOutline);
+    j["scene"]["default_scene_glass"] = "yes";
+    SessionLoad const bad = parseSession(j.dump(), "s.json");
+    EXPECT_FALSE(bad.session);
+    EXPECT_NE(bad.error.find("scene.default_scene_glass"), std::string::npos) << bad.error;
+}
+
 TEST(Session, LightNameIsOptional) {
     json j = json::parse(sessionToJson(richSession()));
     j["lights"][0].erase("name");

@@ -188,6 +188,16 @@ PassDecl displayPass(GBufferLayoutDesc const& d, Resource target) {
     return v;
 }
 
+// Where the blended surfaces are, hatched over every view (the G-buffer views included, which they
+// are absent from): drawn with no depth test, so a pane behind a wall is hatched too.
+PassDecl glassOutlinePass(Resource target) {
+    PassDecl p = declare(PassId::GlassOutline);
+    p.samples = {R::Materials};
+    p.color = {target};
+    p.states = {state("blended surfaces, hatched", DepthTest::Off, false, Blend::Off, FaceCull::Material)};
+    return p;
+}
+
 PassDecl coverageCounts(PipelineSettings const& s) {
     GBufferLayoutDesc const& d = layoutDesc(s.layout);
     std::vector<Resource> const gbuffer = plus(gbufferSamples(d), {R::GBufferDepth});  // and tile depth bounds
@@ -266,6 +276,7 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
     if (!split) out.front().clears = plus(out.front().clears, {R::DiffuseLight, R::SpecularLight});
     if (viewNeedsCoverage(s.view)) out.push_back(coveragePass(s));
     out.push_back(displayPass(d, R::Display));
+    if (s.glassOutline && !imported) out.push_back(glassOutlinePass(R::Display));
     // The overlays, onto the display image: the lit image stays the light sum.
     if (!viewShowsOverlays(s.view)) return out;
     if (s.lightCubes)  // overlayFbo: the lit target's depth, the scene's only after the depth-copy step
@@ -286,6 +297,7 @@ std::vector<PassDecl> viewPasses(PipelineSettings const& s) {
         out.push_back(coveragePass(s));
     }
     out.push_back(displayPass(d, R::View));
+    if (s.glassOutline) out.push_back(glassOutlinePass(R::View));
     return out;
 }
 

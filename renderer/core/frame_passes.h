@@ -31,10 +31,11 @@ enum class PassId {
     Coverage,        // the counts behind the heat map and lights-per-tile views
     Display,         // tonemap or debug view into the display image (the overlays follow it)
     Import,          // re-lighting: an imported G-buffer written into the layout's targets, instead of geometry
+    GlassOutline,    // overlay: hatches where blended surfaces are, on the display or a view (any view)
 };
-inline constexpr std::array<std::string_view, 13> kPassNames{
+inline constexpr std::array<std::string_view, 14> kPassNames{
     "forward_shading", "geometry",    "light_lists", "volume_depth", "lighting", "light_combine", "depth_copy",
-    "forward",         "light_cubes", "wireframes",  "coverage",     "display",  "import"};
+    "forward",         "light_cubes", "wireframes",  "coverage",     "display",  "import",        "glass_outline"};
 
 inline std::string_view passName(PassId id) {
     return enumName(kPassNames, id);

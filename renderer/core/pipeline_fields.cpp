@@ -83,7 +83,7 @@ using P = PipelineSection;
 
 // The A/B table shows the sideB rows in this order; its first row is the mode (startAb ticks it).
 // The Pipeline panel draws each section's fields in this order too.
-std::array<PipelineField, 16> const kFields{
+std::array<PipelineField, 17> const kFields{
     choice<&S::mode>(kLightingModeNames, {.name = "mode",
                                           .help = "How the lights are added: the lighting mode",
                                           .sideB = true,
@@ -144,6 +144,14 @@ std::array<PipelineField, 16> const kFields{
                                   .label = "Volume wireframes",
                                   .section = P::Overlays,
                                   .option = "--volume-wireframes"}),
+    toggle<&S::glassOutline>({.name = "glass_outline",
+                              .help = "Hatch where the blended surfaces (glass) are, over every view",
+                              .optionalInFiles = kOptional,
+                              .label = "Glass outline",
+                              .section = P::Overlays,
+                              .tooltip = "blended surfaces are drawn forward after lighting, so the G-buffer views "
+                                         "cannot show them: the hatching marks where they are",
+                              .option = "--glass-outline"}),
     number<&S::shininess>({.name = "shininess",
                            .min = 1.0f,
                            .max = 512.0f,

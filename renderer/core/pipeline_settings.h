@@ -74,6 +74,7 @@ struct PipelineSettings {
     ShadingModel shading = ShadingModel::GbufferLab;
     bool lightCubes = true;
     bool volumeWireframes = false;
+    bool glassOutline = false;  // hatch where the blended (forward-drawn) surfaces are, on every view
     // The wireframes outline the selected light's volume only: 32 outlines at once bury the frame.
     bool wireframesSelectedOnly = true;
     bool normalMaps = true;

@@ -25,6 +25,7 @@ enum class ProgramId {
     LightCombine,  // accumulation split: the two light targets into the lit image
     Import,        // re-lighting: an imported G-buffer into the layout's targets
     TexelCopy,     // a texture into a float target, for read-backs WebGL2 cannot do directly
+    GlassOutline,  // the blended surfaces hatched over a view
     // volumes mode
     LightVolume,
     LightVolumeCoverage,

@@ -1,12 +1,15 @@
 // Scene upload and the draw loop shared by the geometry and forward passes.
 #include "gpu/gpu_scene.h"
+
 #include "gl/draw_count.h"
+#include "scene/draw_order.h"
 
 #include "gl/shader_bindings.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include <cstddef>
+#include <numeric>
 
 namespace gbl {
 
@@ -102,6 +105,14 @@ GpuMesh uploadMesh(MeshData const& mesh) {
                                    mesh.indices.data(), GL_STATIC_DRAW, mesh.name + ".indices");
     g.indexCount = GLsizei(mesh.indices.size());
     g.material = mesh.material;
+    if (!mesh.vertices.empty()) {
+        glm::vec3 lo = mesh.vertices.front().position, hi = lo;
+        for (Vertex const& v : mesh.vertices) {
+            lo = glm::min(lo, v.position);
+            hi = glm::max(hi, v.position);
+        }
+        g.center = (lo + hi) * 0.5f;
+    }
     glBindVertexArray(g.vao.id());
     glBindBuffer(GL_ARRAY_BUFFER, g.vertices.id());
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices.id());
@@ -135,7 +146,8 @@ std::optional<std::string> uploadScene(SceneData const& scene, GpuScene& out) {
     return std::nullopt;
 }
 
-void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter filter, bool useNormalMaps) {
+void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter filter, bool useNormalMaps,
+               std::optional<glm::mat4> backToFrontFrom) {
     static Material const kDefaultMaterial{};
     program.set("uUseNormalMaps", useNormalMaps ? 1 : 0);
     // The flag, coordinate set and UV matrix uniforms of one texture (shaders/material.glsl).
@@ -152,7 +164,16 @@ void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter
         program.set(u.texCoord, t.texCoord);
         program.set(u.transform, textureTransformMatrix(t));
     };
-    for (auto const& inst : scene.instances) {
+    std::vector<std::size_t> order(scene.instances.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    if (backToFrontFrom) {
+        std::vector<glm::vec3> centers;
+        for (MeshInstance const& inst : scene.instances)
+            centers.push_back(glm::vec3(inst.model * glm::vec4(scene.meshes[std::size_t(inst.mesh)].center, 1.0f)));
+        order = backToFrontOrder(centers, *backToFrontFrom);
+    }
+    for (std::size_t index : order) {
+        MeshInstance const& inst = scene.instances[index];
         GpuMesh const& mesh = scene.meshes[std::size_t(inst.mesh)];
         Material const& m = mesh.material >= 0 ? scene.materials[std::size_t(mesh.material)] : kDefaultMaterial;
         bool const blended = m.alphaMode == AlphaMode::Blend;

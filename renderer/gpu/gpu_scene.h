@@ -19,6 +19,7 @@ struct GpuMesh {
     gl::Buffer indices;
     GLsizei indexCount = 0;
     int material = -1;
+    glm::vec3 center{0.0f};  // of its vertices' bounds, in the mesh's own space (the blended draws' sort key)
 };
 
 struct GpuScene {
@@ -39,7 +40,10 @@ enum class MaterialFilter { Opaque, Blended, All };
 
 // Draws every instance whose material passes the filter with `program`, setting the per-object
 // uniforms (uModel, uNormalMatrix) and material uniforms of shaders/material.glsl. The material
-// textures go to the BIND_MATERIAL_* units of shaders/bindings.glsl.
-void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter filter, bool useNormalMaps);
+// textures go to the BIND_MATERIAL_* units of shaders/bindings.glsl. `backToFrontFrom`: a view-
+// projection to draw the instances in, farthest first by their centre's view depth
+// (scene/draw_order.h), as blended surfaces need; without it they draw in list order.
+void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter filter, bool useNormalMaps,
+               std::optional<glm::mat4> backToFrontFrom = std::nullopt);
 
 }  // namespace gbl

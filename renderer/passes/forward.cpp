@@ -11,7 +11,8 @@ LightingOutput forwardPass(ForwardInput const& in, ForwardConfig const& config) 
     // Material textures use their own units (BIND_MATERIAL_*); the light buffer keeps BIND_LIGHTS.
     bindLights(in.program, in.lights);
     setShadingUniforms(in.program, config.shading);
-    drawScene(in.scene, in.program, config.filter, config.normalMaps);
+    drawScene(in.scene, in.program, config.filter, config.normalMaps,
+              config.backToFront ? std::optional(config.viewProj) : std::nullopt);
     return {in.target.hdr};
 }
 

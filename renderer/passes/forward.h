@@ -23,6 +23,7 @@ struct ForwardConfig {
     ShadingUniforms shading;
     bool normalMaps = true;
     std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
+    bool backToFront = false;           // drawn farthest object first (blended surfaces: the over operator)
 };
 
 LightingOutput forwardPass(ForwardInput const& in, ForwardConfig const& config);

@@ -291,6 +291,26 @@ double orbitRate(std::size_t i) {
     return i % 2 == 0 ? speed : -speed;
 }
 
+// The panes of kGlassPanes: a double-sided quad each, its own material, mesh and instance.
+void addGlassPanes(SceneData& scene) {
+    for (GlassPane const& g : kGlassPanes) {
+        Material m;
+        m.name = g.name;
+        m.baseColorFactor = g.color;
+        m.specularFactor = 1.0f;
+        m.alphaMode = AlphaMode::Blend;
+        m.doubleSided = true;
+        MeshData pane = makePlane(g.size);  // in y = 0, facing +Y: stood up to face +Z
+        pane.name = g.name;
+        pane.material = int(scene.materials.size());
+        scene.materials.push_back(m);
+        glm::mat4 const model = translate(g.center) * rotateY(g.yaw) *
+                                glm::rotate(glm::mat4(1.0f), std::numbers::pi_v<float> * 0.5f, glm::vec3(1, 0, 0));
+        scene.instances.push_back({int(scene.meshes.size()), model});
+        scene.meshes.push_back(std::move(pane));
+    }
+}
+
 }  // namespace
 
 SceneData makeDefaultScene(DefaultSceneOptions const& options) {
@@ -325,6 +345,7 @@ SceneData makeDefaultScene(DefaultSceneOptions const& options) {
         scene.meshes.push_back(std::move(m));
     }
 
+    if (options.glass) addGlassPanes(scene);
     scene.lights = makeDefaultLights(options.lightCount);
 
     Camera camera;

@@ -13,6 +13,25 @@ namespace gbl {
 
 struct DefaultSceneOptions {
     int lightCount = 32;  // negative counts as 0
+    // Three coloured glass panes (alpha-blended, double-sided) standing in the courtyard between
+    // the default camera and the fountain, each its own mesh and instance so the forward pass can
+    // sort them back to front. Off by default: every frame without them is unchanged.
+    bool glass = false;
+};
+
+// The glass panes makeDefaultScene adds, in this order after the courtyard, with `glass` on: world
+// centre, turn and size of each (a pane faces +Z before its yaw), and its colour and opacity.
+struct GlassPane {
+    char const* name;
+    glm::vec3 center;
+    float yaw;        // radians about +Y; the unrotated pane faces +Z
+    glm::vec2 size;   // width, height
+    glm::vec4 color;  // linear base colour, alpha = opacity
+};
+inline constexpr GlassPane kGlassPanes[3] = {
+    {"blue glass", {-3.2f, 1.4f, 4.0f}, 0.35f, {2.6f, 2.4f}, {0.15f, 0.35f, 0.95f, 0.4f}},
+    {"green glass", {0.0f, 1.4f, 3.4f}, 0.0f, {2.6f, 2.4f}, {0.2f, 0.85f, 0.3f, 0.4f}},
+    {"amber glass", {3.2f, 1.4f, 4.0f}, -0.35f, {2.6f, 2.4f}, {0.95f, 0.55f, 0.1f, 0.4f}},
 };
 
 // Builds the courtyard (source = "default"): about 33 x 33 units, floor at y = 0, walls 10

@@ -18,6 +18,7 @@ struct EditorOptions {
     std::optional<std::string> gbufferPath;    // another program's G-buffer to re-light (issue 28)
     std::optional<std::string> uiTestScript;   // run a UI test script (see ui/ui_script.h), exit 0 if it passes
     bool allowOutsideUris = false;             // glTF files may read files outside their folder
+    bool glass = false;                        // default scene: its glass panes (DefaultSceneOptions::glass)
     std::string glLimit;                       // "3.3": pretend the context is at most that version
     bool vsync = true;                         // off for screenshots, tests and measurements
     std::optional<std::string> logFramesPath;  // one JSON line per frame (ui/model/frame_log.h)

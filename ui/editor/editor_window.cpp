@@ -72,9 +72,10 @@ bool parseGlLimit(std::string const& text, int& major, int& minor) {
 // scripts load on a worker instead (updateSceneLoading). On failure the current scene and
 // state stay as they were and an error sentence is returned.
 std::optional<std::string> loadScene(std::optional<std::string> const& path, int defaultLightCount,
-                                     bool allowOutsideUris, ui::EditorState& state, Renderer& renderer) {
+                                     EditorOptions const& options, ui::EditorState& state, Renderer& renderer) {
     auto const upload = [&renderer](SceneData const& scene) { return renderer.setScene(scene); };
-    if (!path) return ui::installScene(makeDefaultScene({}), false, defaultLightCount, state, upload);
+    if (!path) return ui::installScene(makeDefaultScene({32, options.glass}), false, defaultLightCount, state, upload);
+    bool const allowOutsideUris = options.allowOutsideUris;
     GltfLoadOptions gltfOptions;
     gltfOptions.allowOutsideUris = allowOutsideUris;
     GltfLoadResult result = loadGltf(*path, gltfOptions);
@@ -260,8 +261,7 @@ std::optional<int> startEditor(Editor& editor) {
         return 1;
     }
     editor.defaultLightCount = options.lightCount.value_or(32);
-    if (auto error =
-            loadScene(options.scenePath, editor.defaultLightCount, options.allowOutsideUris, state, *editor.renderer)) {
+    if (auto error = loadScene(options.scenePath, editor.defaultLightCount, options, state, *editor.renderer)) {
         std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
         return 2;
     }
@@ -269,7 +269,7 @@ std::optional<int> startEditor(Editor& editor) {
     editor.sceneLoader = [&editor](std::string const& scene, int lightCount) {
         std::optional<std::string> path;
         if (scene != "default") path = scene;
-        auto error = loadScene(path, lightCount, editor.options.allowOutsideUris, editor.state, *editor.renderer);
+        auto error = loadScene(path, lightCount, editor.options, editor.state, *editor.renderer);
         if (!error) rememberHomeView(editor);
         return error;
     };

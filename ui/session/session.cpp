@@ -94,7 +94,7 @@ ojson sessionJson(Session const& s) {
     for (auto const& l : s.lights) lights.push_back(lightJson<ojson>(l));
     ojson viewers = ojson::object();
     for (std::size_t i = 0; i < s.viewers.size(); ++i) viewers[std::string(kViewerNames[i])] = viewerJson(s.viewers[i]);
-    return {
+    ojson out = {
         {"format", kSessionFormat},
         {"version", kSessionVersion},
         {"scene", {{"source", s.scene}, {"default_scene_lights", s.defaultSceneLights}}},
@@ -113,6 +113,8 @@ ojson sessionJson(Session const& s) {
          {{"sync", s.syncViews},
           {"viewport", {{"open", s.viewportToolsOpen}, {"viewer", viewerJson(s.viewportViewer)}}}}},
     };
+    if (s.defaultSceneGlass) out["scene"]["default_scene_glass"] = true;
+    return out;
 }
 
 // --- reading ------------------------------------------------------------------------------
@@ -273,11 +275,13 @@ Session readSession(json const& j) {
         j, "", {"format", "version", "scene", "camera", "lights", "pipeline", "viewers", "animation", "viewer_tools"});
     Session s;
     {
-        Object scene(root.required("scene"), "scene", {"source", "default_scene_lights"});
+        Object scene(root.required("scene"), "scene", {"source", "default_scene_lights", "default_scene_glass"});
         s.scene = string(scene.required("source"), scene.field("source"));
         if (s.scene.empty()) fail(scene.field("source"), "must be \"default\" or the path of a glTF file (got \"\")");
         s.defaultSceneLights =
             integer(scene.required("default_scene_lights"), scene.field("default_scene_lights"), 0, kMaxLights);
+        if (json const* glass = scene.optional("default_scene_glass"))
+            s.defaultSceneGlass = boolean(*glass, scene.field("default_scene_glass"));
     }
     s.camera = readCamera(root.required("camera"));
     s.lights = readLights(root.required("lights"));

@@ -28,6 +28,9 @@ struct Session {
     // Lights the default scene was built with (the lights below are the ones used; this
     // tells a reader how the session started).
     int defaultSceneLights = 32;
+    // The default scene's glass panes (DefaultSceneOptions::glass); "default_scene_glass", optional
+    // and written only when on, so files without it load and sessions without glass are unchanged.
+    bool defaultSceneGlass = false;
     Camera camera;
     // The lights as edited, before animation; shown lights are these orbited by animation.time.
     std::vector<PointLight> lights;
