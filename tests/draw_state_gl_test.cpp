@@ -9,6 +9,7 @@
 #include "gl/fullscreen_triangle.h"
 #include "gl/program.h"
 #include "gl_fixture.h"
+#include "gpu/gpu_scene.h"
 #include "renderer_test_access.h"
 
 #include <algorithm>
@@ -83,11 +84,7 @@ std::string mismatch(GlState const& gl, DrawState const& d) {
     if (d.blend == Blend::Alpha)
         check(gl.blendSrc == GL_SRC_ALPHA && gl.blendDst == GL_ONE_MINUS_SRC_ALPHA && gl.blendEquation == GL_FUNC_ADD,
               "blend alpha");
-    // Material: back faces culled, except around a double-sided material's draws (drawScene).
-    if (d.cull == FaceCull::Material)
-        check(!gl.cull || gl.cullFace == GL_BACK, "material culling");
-    else
-        check(gl.cull == (d.cull != FaceCull::Off), "cull enable");
+    check(gl.cull == (d.cull != FaceCull::Off), "cull enable");
     if (d.cull == FaceCull::Back) check(gl.cullFace == GL_BACK, "cull back");
     if (d.cull == FaceCull::Front) check(gl.cullFace == GL_FRONT, "cull front");
     check(gl.stencil == (d.stencil != StencilUse::Off), "stencil enable");
@@ -146,6 +143,7 @@ protected:
                 std::string const why = mismatch(now, d);
                 if (why.empty()) {
                     ++checked_[running];
+                    ++checkedGroups_[running + ": " + std::string(d.what)];
                     return;
                 }
                 whyNot = std::string(d.what) + ": " + why;
@@ -160,7 +158,8 @@ protected:
         return failures;
     }
 
-    std::map<std::string, int> checked_;  // draws checked per pass
+    std::map<std::string, int> checked_;        // draws checked per pass
+    std::map<std::string, int> checkedGroups_;  // per "pass: group", the group whose state a draw matched first
     int dispatches_ = 0;
 };
 
@@ -233,6 +232,45 @@ TEST_F(DrawStateGlTest, AChangedDeclarationIsCaught) {
         << failures.front();
     RendererTestAccess::editDeclarations(*renderer_, {});
     EXPECT_TRUE(checkFrame({camera_, lights_, s}, "restored").empty());
+}
+
+// glTF's double-sided materials are drawn with no culling and every other material with back faces
+// culled, each under its declared group (drawScene applies them): the courtyard with every other
+// material made double-sided and one made blended, in forward mode and in a deferred one. Each
+// double-sided draw is counted under the double-sided group, so the two groups were both applied.
+TEST_F(DrawStateGlTest, DoubleSidedMaterialsDrawUnderTheirDeclaredGroup) {
+    SceneData scene = scene_;
+    ASSERT_GE(scene.materials.size(), 2u);
+    for (std::size_t i = 0; i < scene.materials.size(); i += 2) scene.materials[i].doubleSided = true;
+    scene.materials[1].alphaMode = AlphaMode::Blend;
+    scene.materials[1].doubleSided = true;
+    scene.materials[1].baseColorFactor.a = 0.5f;
+    // The draws drawScene makes of each kind (every instance, whatever it covers on screen).
+    int opaqueDouble = 0, opaqueSingle = 0, blendedDouble = 0;
+    for (MeshInstance const& inst : scene.instances) {
+        int const m = scene.meshes[std::size_t(inst.mesh)].material;
+        Material const mat = m >= 0 ? scene.materials[std::size_t(m)] : Material{};
+        bool const blended = mat.alphaMode == AlphaMode::Blend;
+        opaqueDouble += !blended && mat.doubleSided;
+        opaqueSingle += !blended && !mat.doubleSided;
+        blendedDouble += blended && mat.doubleSided;
+    }
+    ASSERT_GT(opaqueDouble, 0);
+    ASSERT_GT(opaqueSingle, 0);
+    ASSERT_GT(blendedDouble, 0);
+    ASSERT_FALSE(renderer_->setScene(scene));
+    for (LightingMode mode : {LightingMode::Forward, LightingMode::Quad}) {
+        PipelineSettings s;
+        s.mode = mode;
+        checkedGroups_.clear();
+        std::string const label(enumName(kLightingModeNames, mode));
+        std::vector<std::string> const failures = checkFrame({camera_, lights_, s}, label);
+        EXPECT_TRUE(failures.empty()) << failures.size() << " draws, the first: " << failures.front();
+        std::string const opaquePass = mode == LightingMode::Forward ? "forward_shading" : "geometry";
+        EXPECT_EQ(checkedGroups_[opaquePass + ": double-sided opaque surfaces"], opaqueDouble) << label;
+        EXPECT_EQ(checkedGroups_[opaquePass + ": opaque surfaces"], opaqueSingle) << label;
+        EXPECT_EQ(checkedGroups_["forward: double-sided blended surfaces"], blendedDouble) << label;
+    }
 }
 
 // A pass of the test's own: one declaration (what it draws into, with which state) and one run

@@ -53,6 +53,13 @@ std::vector<Resource> plus(std::vector<Resource> a, std::initializer_list<Resour
     return a;
 }
 
+// The draw groups of the scene (gpu/gpu_scene.h, drawScene, which applies them): the materials with
+// back faces culled, then glTF's double-sided materials, drawn with no culling.
+std::vector<DrawState> sceneStates(std::string_view single, std::string_view both, bool depthWrite, Blend blend) {
+    return {state(single, DepthTest::Less, depthWrite, blend, FaceCull::Back),
+            state(both, DepthTest::Less, depthWrite, blend, FaceCull::Off)};
+}
+
 DrawState fullScreen(std::string_view what) {
     return state(what, DepthTest::Off, false, Blend::Off, FaceCull::Off);
 }
@@ -105,6 +112,13 @@ PassDecl litPass(PassId id, std::vector<Resource> samples, DrawState drawn) {
     p.depthRead = drawn.depthTest != DepthTest::Off;
     p.depthWrite = drawn.depthWrite;
     p.states = {drawn};
+    return p;
+}
+
+// A pass that draws the scene (gpu/gpu_scene.h, drawScene) into the lit target: its two draw groups.
+PassDecl scenePass(PassId id, std::vector<Resource> samples, std::vector<DrawState> states) {
+    PassDecl p = litPass(id, std::move(samples), states.front());
+    p.states = std::move(states);
     return p;
 }
 
@@ -227,10 +241,11 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
     GBufferLayoutDesc const& d = layoutDesc(s.layout);
     bool const forward = s.mode == LightingMode::Forward;
     bool const split = s.accumulation == LightAccumulation::Split && !forward;
-    DrawState const opaque = state("opaque surfaces", DepthTest::Less, true, Blend::Off, FaceCull::Material);
+    std::vector<DrawState> const opaque =
+        sceneStates("opaque surfaces", "double-sided opaque surfaces", true, Blend::Off);
     std::vector<PassDecl> out;
     if (forward) {
-        out.push_back(litPass(PassId::ForwardShading, {R::Materials, R::Lights}, opaque));
+        out.push_back(scenePass(PassId::ForwardShading, {R::Materials, R::Lights}, opaque));
         out.back().stencilWrite = true;  // cleared with the rest
         // No G-buffer in forward mode: cleared, so the viewers show that it is unused.
         for (GBufferAttachmentDesc const& a : d.attachments()) out.back().clears.push_back(slotResource(a.slot));
@@ -242,7 +257,10 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
         g.depthStencil = R::GBufferDepth;
         g.depthRead = g.depthWrite = g.stencilWrite = true;  // stencil cleared
         // The import pass writes each covered pixel's depth (gl_FragDepth) whatever is there.
-        g.states = {imported ? state("imported surfaces", DepthTest::Always, true, Blend::Off, FaceCull::Off) : opaque};
+        g.states =
+            imported
+                ? std::vector<DrawState>{state("imported surfaces", DepthTest::Always, true, Blend::Off, FaceCull::Off)}
+                : opaque;
         g.clears = plus(g.color, {R::GBufferDepth});
         out.push_back(std::move(g));
         if (s.mode == LightingMode::Tiled)
@@ -260,8 +278,8 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
         out.push_back(depthCopyPass(s.depthCopy));
     }
     if (!imported)
-        out.push_back(litPass(PassId::Forward, {R::Materials, R::Lights},
-                              state("blended surfaces", DepthTest::Less, false, Blend::Alpha, FaceCull::Material)));
+        out.push_back(scenePass(PassId::Forward, {R::Materials, R::Lights},
+                                sceneStates("blended surfaces", "double-sided blended surfaces", false, Blend::Alpha)));
     // The light targets of an earlier split frame would otherwise show in this one's views.
     if (!split) out.front().clears = plus(out.front().clears, {R::DiffuseLight, R::SpecularLight});
     if (viewNeedsCoverage(s.view)) out.push_back(coveragePass(s));

@@ -116,7 +116,6 @@ enum class FaceCull {
     Off,
     Back,
     Front,
-    Material,  // back faces, except for double-sided materials
 };
 enum class StencilUse {
     Off,

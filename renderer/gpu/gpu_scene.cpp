@@ -135,7 +135,8 @@ std::optional<std::string> uploadScene(SceneData const& scene, GpuScene& out) {
     return std::nullopt;
 }
 
-void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter filter, bool useNormalMaps) {
+void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter filter, bool useNormalMaps,
+               std::span<DrawState const> states) {
     static Material const kDefaultMaterial{};
     program.set("uUseNormalMaps", useNormalMaps ? 1 : 0);
     // The flag, coordinate set and UV matrix uniforms of one texture (shaders/material.glsl).
@@ -152,6 +153,7 @@ void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter
         program.set(u.texCoord, t.texCoord);
         program.set(u.transform, textureTransformMatrix(t));
     };
+    std::size_t applied = states.size();  // none yet
     for (auto const& inst : scene.instances) {
         GpuMesh const& mesh = scene.meshes[std::size_t(inst.mesh)];
         Material const& m = mesh.material >= 0 ? scene.materials[std::size_t(mesh.material)] : kDefaultMaterial;
@@ -176,10 +178,8 @@ void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter
                     {"uHasEmissiveTex", "uEmissiveTexCoord", "uEmissiveUvTransform"});
         bindTexture(slot::BIND_MATERIAL_OCCLUSION, m.occlusionTexture, m.occlusionTransform,
                     {"uHasOcclusionTex", "uOcclusionTexCoord", "uOcclusionUvTransform"});
-        if (m.doubleSided)
-            glDisable(GL_CULL_FACE);
-        else
-            glEnable(GL_CULL_FACE);
+        std::size_t const group = m.doubleSided ? 1 : 0;  // glTF: double-sided faces are seen from both sides
+        if (group != applied) applyGroup(states, applied = group);
         // A mirroring transform turns counter-clockwise triangles clockwise on screen (glTF 2.0
         // asks renderers to flip the winding for such nodes).
         glFrontFace(glm::determinant(glm::mat3(inst.model)) < 0.0f ? GL_CW : GL_CCW);
@@ -188,7 +188,6 @@ void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter
         gl::countDraw();
     }
     glBindVertexArray(0);
-    glEnable(GL_CULL_FACE);
     glFrontFace(GL_CCW);
 }
 

@@ -20,7 +20,7 @@ struct GeometryInput {
 struct GeometryConfig {
     glm::mat4 viewProj{1.0f};
     bool normalMaps = true;
-    std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
+    std::span<DrawState const> states;  // declared: single-sided, double-sided materials (drawScene)
 };
 struct GeometryOutput {
     GBuffer const& gbuffer;  // position, normal, albedo/specular and depth of the opaque scene

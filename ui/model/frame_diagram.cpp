@@ -60,8 +60,6 @@ char const* cullWords(FaceCull c) {
             return "back faces culled";
         case FaceCull::Front:
             return "front faces culled";
-        case FaceCull::Material:
-            return "back faces culled, except double-sided materials";
     }
     return "?";
 }
