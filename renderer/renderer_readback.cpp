@@ -147,7 +147,7 @@ namespace {
 DecodedGBuffer decodeGBuffer(ReadbackContext const& r, glm::ivec2 offset, int width, int height,
                              glm::mat4 const& invViewProj) {
     DecodedGBuffer d = createDecodedGBuffer(width, height);
-    gbufferDecodePass({r.targets.gbuffer, r.shaders.get(ProgramId::GBufferDecode), r.triangle, d},
+    gbufferDecodePass({gbufferTextures(r.targets.gbuffer), r.shaders.get(ProgramId::GBufferDecode), r.triangle, d},
                       {invViewProj, offset, std::span(&kDecodeState, 1)});
     return d;
 }
