@@ -6,6 +6,7 @@
 #include "gpu/draw_state_gl.h"
 #include "core/gbuffer_layout.h"
 #include "gl/draw_count.h"
+#include "gl/framebuffer.h"
 #include "gl/fullscreen_triangle.h"
 #include "gl/program.h"
 #include "gl_fixture.h"
@@ -33,7 +34,7 @@ struct GlState {
     bool cull = false;
     GLint cullFace = 0;
     bool stencil = false;
-    GLint stencilFunc = 0, stencilRef = 0;
+    GLint stencilFunc = 0, stencilRef = 0, stencilValueMask = 0;
     GLint frontZFail = 0, backZFail = 0, frontPass = 0, frontFail = 0;
     GLboolean colorMask[4]{};
     bool operator==(GlState const&) const = default;
@@ -53,6 +54,7 @@ GlState readGlState() {
     s.stencil = glIsEnabled(GL_STENCIL_TEST);
     glGetIntegerv(GL_STENCIL_FUNC, &s.stencilFunc);
     glGetIntegerv(GL_STENCIL_REF, &s.stencilRef);
+    glGetIntegerv(GL_STENCIL_VALUE_MASK, &s.stencilValueMask);
     glGetIntegerv(GL_STENCIL_FAIL, &s.frontFail);
     glGetIntegerv(GL_STENCIL_PASS_DEPTH_FAIL, &s.frontZFail);
     glGetIntegerv(GL_STENCIL_PASS_DEPTH_PASS, &s.frontPass);
@@ -95,6 +97,10 @@ std::string mismatch(GlState const& gl, DrawState const& d) {
         check(gl.stencilFunc == GL_EQUAL && gl.stencilRef == 1 && gl.frontFail == GL_ZERO && gl.frontZFail == GL_ZERO &&
                   gl.frontPass == GL_ZERO,
               "stencil shade marked");
+    if (d.stencil == StencilUse::EqualBits)
+        check(gl.stencilFunc == GL_EQUAL && gl.stencilRef == d.stencilRef && gl.stencilValueMask == d.stencilRef &&
+                  gl.frontFail == GL_KEEP && gl.frontZFail == GL_KEEP && gl.frontPass == GL_KEEP,
+              "stencil equal bits");
     bool const colour = gl.colorMask[0] && gl.colorMask[1] && gl.colorMask[2] && gl.colorMask[3];
     bool const none = !gl.colorMask[0] && !gl.colorMask[1] && !gl.colorMask[2] && !gl.colorMask[3];
     check(d.colorWrite ? colour : none, "colour write");
@@ -271,6 +277,33 @@ TEST_F(DrawStateGlTest, DoubleSidedMaterialsDrawUnderTheirDeclaredGroup) {
         EXPECT_EQ(checkedGroups_[opaquePass + ": opaque surfaces"], opaqueSingle) << label;
         EXPECT_EQ(checkedGroups_["forward: double-sided blended surfaces"], blendedDouble) << label;
     }
+}
+
+// The browser's read-back draws (renderer_readback.cpp, built for WebGL2 only) run under their
+// declared groups through apply(): each group applied here reads back as it declares, the stencil
+// groups testing one bit each (the state of bit 3 is not that of bit 2).
+TEST_F(DrawStateGlTest, TheReadbackDrawsDeclaredStatesApplyAsDeclared) {
+    // The read-back's target: a colour image over a depth-stencil. GL reads the stencil reference
+    // back clamped to the bound framebuffer's stencil bits, so one with 8 of them is bound.
+    gl::Texture const color = gl::Texture::create2D(GL_RGBA8, kW, kH, "test.readback");
+    gl::Texture const depth = gl::Texture::create2D(GL_DEPTH32F_STENCIL8, kW, kH, "test.readback_depth");
+    gl::Framebuffer const fbo = gl::Framebuffer::create({&color}, &depth, "test.readback");
+    ASSERT_TRUE(fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+    for (bool stencil : {false, true}) {
+        PassDecl const decl = readbackPass(stencil);
+        ASSERT_EQ(decl.states.size(), stencil ? 8u : 1u);
+        for (std::size_t i = 0; i < decl.states.size(); ++i) {
+            apply(kWriteAll);  // whatever came before
+            applyGroup(decl.states, i);
+            EXPECT_EQ(mismatch(readGlState(), decl.states[i]), "") << decl.name() << " " << decl.states[i].what;
+        }
+    }
+    PassDecl const stencil = readbackPass(true);
+    apply(stencil.states[3]);
+    EXPECT_NE(mismatch(readGlState(), stencil.states[2]), "") << "bit 3's state passes for bit 2's";
+    apply(kWriteAll);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 // A pass of the test's own: one declaration (what it draws into, with which state) and one run

@@ -296,6 +296,29 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
     return out;
 }
 
+PassDecl readbackPass(bool stencil) {
+    PassDecl p;
+    p.customName = stencil ? "readback_stencil" : "readback_depth";
+    p.color = {R::Readback};
+    if (!stencil) {
+        p.samples = {R::GBufferDepth};
+        p.states = {fullScreen("depth texels")};
+        return p;
+    }
+    p.depthStencil = R::GBufferDepth;  // attached for its stencil, not sampled
+    p.stencilRead = true;
+    static constexpr std::array<std::string_view, 8> kBits{"stencil bit 0", "stencil bit 1", "stencil bit 2",
+                                                           "stencil bit 3", "stencil bit 4", "stencil bit 5",
+                                                           "stencil bit 6", "stencil bit 7"};
+    for (int bit = 0; bit < 8; ++bit) {
+        DrawState s =
+            state(kBits[std::size_t(bit)], DepthTest::Off, false, Blend::Add, FaceCull::Off, StencilUse::EqualBits);
+        s.stencilRef = 1 << bit;
+        p.states.push_back(s);
+    }
+    return p;
+}
+
 std::vector<PassDecl> viewPasses(PipelineSettings const& s) {
     GBufferLayoutDesc const& d = layoutDesc(s.layout);
     std::vector<PassDecl> out;
