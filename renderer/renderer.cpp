@@ -166,10 +166,10 @@ bool RendererImpl::splitAccumulation(FrameContext const& f) const {
     return f.settings.accumulation == LightAccumulation::Split && f.settings.mode != LightingMode::Forward;
 }
 
-DeferredInputs RendererImpl::deferredInputs(FrameContext const& f) const {
+DeferredInputs RendererImpl::deferredInputs(FrameContext const& f, FrameResources const& io) const {
     ShadingUniforms shading = shadingUniforms(f);
     shading.splitAccumulation = splitAccumulation(f);
-    return {targets.gbuffer, lights, shading};
+    return {io.gbuffer(), lights, shading};
 }
 
 // The frame: the passes its settings declare (up to FrameInput::stopAfter), run in order.

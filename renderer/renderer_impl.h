@@ -166,7 +166,7 @@ private:
     } readback;
 
     FrameContext frameContext(FrameInput const& input) const;
-    DeferredInputs deferredInputs(FrameContext const& f) const;
+    DeferredInputs deferredInputs(FrameContext const& f, FrameResources const& io) const;
     LitTarget litTarget() const { return {targets.litFbo, targets.lighting}; }
     // --- the frame: declared passes, run (renderer.cpp, renderer_passes.cpp) ---------------------
     FrameRecord beginFrame(FrameInput const& input, FrameStats& stats);

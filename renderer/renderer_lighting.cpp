@@ -14,7 +14,7 @@ namespace gbl {
 
 LightingClusteredInput RendererImpl::clusteredInput(FrameContext const& f, FrameResources const& io,
                                                     gl::Texture const& image) {
-    return {deferredInputs(f),
+    return {deferredInputs(f, io),
             shaders.get(ProgramId::ClusterBuild),
             binPrograms(ProgramId::ClusterBin),
             tileBins,
@@ -48,7 +48,7 @@ void RendererImpl::runLightLists(FrameRecord& frame, PassRun const& r) {
 
 void RendererImpl::runLighting(FrameRecord& frame, PassRun const& r) {
     FrameContext const& f = frame.f;
-    DeferredInputs const deferred = deferredInputs(f);
+    DeferredInputs const deferred = deferredInputs(f, r.io);
     // The lit image, or the diffuse light target of a split frame (the specular one beside it).
     Resource const out = r.decl.kind == PassKind::Compute ? r.decl.writes.front() : r.decl.color.front();
     gl::Texture const& image = r.io.texture(out);
@@ -102,7 +102,7 @@ void RendererImpl::runCoverage(FrameRecord& frame, PassRun const& r) {
     std::array<Resource, 1> const counts{Resource::Coverage};
     gl::Framebuffer const& target = r.fbo ? *r.fbo : io.framebuffer(counts, std::nullopt);
     coveragePass(
-        {deferredInputs(f), triangle, shaders.get(ProgramId::CoverageAllLights), volumeCounts ? &volumes : nullptr,
+        {deferredInputs(f, io), triangle, shaders.get(ProgramId::CoverageAllLights), volumeCounts ? &volumes : nullptr,
          volumeCounts ? &shaders.get(ProgramId::LightVolumeCoverage) : nullptr,
          volumeCounts ? &shaders.get(ProgramId::LightVolumeStencil) : nullptr,
          tiled ? &shaders.get(ProgramId::LightingTiled) : nullptr, tiled ? &bin : nullptr, tiled ? &tileBins : nullptr,

@@ -66,29 +66,28 @@ void RendererImpl::runForward(FrameRecord& frame, PassRun const& r) {
 // The blended surfaces hatched in one colour over the view (shaders/glass_outline.frag).
 void RendererImpl::runGlassOutline(FrameRecord& frame, PassRun const& r) {
     glBindFramebuffer(GL_FRAMEBUFFER, r.fbo->id());
-    applyGroup(r.decl.states, 0);
     gl::Program const& program = shaders.get(ProgramId::GlassOutline);
     program.use();
     program.set("uViewProj", frame.f.viewProj);
-    drawScene(scene, program, MaterialFilter::Blended, false);
+    drawScene(scene, program, MaterialFilter::Blended, false, r.decl.states);  // applies its one group
 }
 
 void RendererImpl::runGeometry(FrameRecord& frame, PassRun const& r) {
-    geometryPass({scene, shaders.get(ProgramId::Geometry), r.io.targets.gbuffer},
+    geometryPass({scene, shaders.get(ProgramId::Geometry), *r.fbo},
                  {frame.f.viewProj, frame.f.settings.normalMaps, r.decl.states});
 }
 
 void RendererImpl::runImport(FrameRecord&, PassRun const& r) {
-    importPass({*imported, shaders.get(ProgramId::Import), triangle, r.io.targets.gbuffer},
+    importPass({*imported, shaders.get(ProgramId::Import), triangle, *r.fbo},
                {r.io.targets.width, r.io.targets.height, r.decl.states});
 }
 
 void RendererImpl::runVolumeDepth(FrameRecord&, PassRun const& r) {
-    volumeDepthPass({r.io.targets.gbuffer, *r.fbo}, {r.io.targets.width, r.io.targets.height});
+    volumeDepthPass({r.io.blitSource(Resource::GBufferDepth), *r.fbo}, {r.io.targets.width, r.io.targets.height});
 }
 
 void RendererImpl::runLightCombine(FrameRecord& frame, PassRun const& r) {
-    lightCombinePass({r.io.targets.gbuffer,
+    lightCombinePass({r.io.gbuffer(),
                       shadingUniforms(frame.f),
                       r.io.texture(Resource::DiffuseLight),
                       r.io.texture(Resource::SpecularLight),
@@ -99,7 +98,8 @@ void RendererImpl::runLightCombine(FrameRecord& frame, PassRun const& r) {
 }
 
 void RendererImpl::runDepthCopy(FrameRecord& frame, PassRun const& r) {
-    depthCopyPass({r.io.targets.gbuffer, shaders.get(ProgramId::DepthCopy), triangle, *r.fbo},
+    depthCopyPass({r.io.blitSource(Resource::GBufferDepth), r.io.texture(Resource::GBufferDepth),
+                   shaders.get(ProgramId::DepthCopy), triangle, *r.fbo},
                   {frame.f.settings.depthCopy, r.io.targets.width, r.io.targets.height, r.decl.states});
 }
 
@@ -108,7 +108,7 @@ void RendererImpl::runDisplay(FrameRecord& frame, PassRun const& r) {
     ViewParams display;
     display.view = f.settings.view;
     if (frame.view) display = *frame.view;
-    viewPass({r.io.targets.gbuffer, r.io.texture(Resource::Lighting), r.io.texture(Resource::Coverage),
+    viewPass({r.io.gbuffer(), r.io.texture(Resource::Lighting), r.io.texture(Resource::Coverage),
               r.io.texture(Resource::DiffuseLight), r.io.texture(Resource::SpecularLight), viewProgram(f.settings.view),
               triangle, *r.fbo},
              {display, f.settings.tonemap, f.settings.exposure, f.camera.nearPlane, f.camera.farPlane,

@@ -147,7 +147,7 @@ namespace {
 DecodedGBuffer decodeGBuffer(ReadbackContext const& r, glm::ivec2 offset, int width, int height,
                              glm::mat4 const& invViewProj) {
     DecodedGBuffer d = createDecodedGBuffer(width, height);
-    gbufferDecodePass({r.targets.gbuffer, r.shaders.get(ProgramId::GBufferDecode), r.triangle, d},
+    gbufferDecodePass({gbufferTextures(r.targets.gbuffer), r.shaders.get(ProgramId::GBufferDecode), r.triangle, d},
                       {invViewProj, offset, std::span(&kDecodeState, 1)});
     return d;
 }
@@ -169,45 +169,32 @@ std::vector<float> readDepthOrStencil(ReadbackContext const& r, bool stencil, gl
         rb.stencilFbo = gl::Framebuffer::create({&rb.stencilSum}, &t.gbuffer.depth, "readback.stencil");
     }
     gl::Framebuffer const& fbo = stencil ? rb.stencilFbo : rb.depthFbo;
+    PassDecl const decl = readbackPass(stencil);  // its draw groups (core/frame_passes.h)
+    // Only `region` is drawn: the viewport is the region (the shader fetches at gl_FragCoord, which
+    // counts from the framebuffer's corner whatever the viewport).
     glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-    glViewport(0, 0, t.width, t.height);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(region.x, region.y, region.z, region.w);
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
     gl::Program const& p = r.shaders.get(ProgramId::TexelCopy);
     p.use();
     if (stencil) {
         // The depth-stencil texture is attached here: left bound for sampling, WebGL calls the
         // draws a feedback loop (GL_INVALID_OPERATION) even though the constant mode reads nothing.
         bindTextureUnit(slot::BIND_READBACK_SOURCE, GL_TEXTURE_2D, 0);
-        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-        glEnable(GL_STENCIL_TEST);
-        glStencilMask(0);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-        glEnable(GL_BLEND);
-        glBlendEquation(GL_FUNC_ADD);
-        glBlendFunc(GL_ONE, GL_ONE);
+        clearFramebuffer(fbo.id(), GL_COLOR_BUFFER_BIT);
+        glViewport(region.x, region.y, region.z, region.w);
         p.set("uWriteConstant", 1);
-        for (int bit = 0; bit < 8; ++bit) {
-            glStencilFunc(GL_EQUAL, 1 << bit, GLuint(1 << bit));
-            p.set("uConstant", glm::vec4(float(1 << bit) / 255.0f));
+        for (std::size_t bit = 0; bit < decl.states.size(); ++bit) {
+            applyGroup(decl.states, bit);  // passes where bit `bit` is set, adds its constant
+            p.set("uConstant", glm::vec4(float(decl.states[bit].stencilRef) / 255.0f));
             r.triangle.draw();
         }
         p.set("uWriteConstant", 0);
-        glDisable(GL_BLEND);
-        glDisable(GL_STENCIL_TEST);
-        glStencilMask(0xFF);
     } else {
-        glDisable(GL_STENCIL_TEST);
-        glDisable(GL_BLEND);
+        glViewport(region.x, region.y, region.z, region.w);
+        applyGroup(decl.states, 0);
         bindTextureUnit(slot::BIND_READBACK_SOURCE, GL_TEXTURE_2D, t.gbuffer.depth.id());
         r.triangle.draw();
     }
-    glDisable(GL_SCISSOR_TEST);
-    glDepthMask(GL_TRUE);
+    glViewport(0, 0, t.width, t.height);  // the frame's passes draw full size
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo.id());
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     std::vector<float> const rgba = readRgbaAsFloats(GL_COLOR_ATTACHMENT0, region.x, region.y, region.z, region.w);

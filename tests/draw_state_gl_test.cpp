@@ -6,9 +6,11 @@
 #include "gpu/draw_state_gl.h"
 #include "core/gbuffer_layout.h"
 #include "gl/draw_count.h"
+#include "gl/framebuffer.h"
 #include "gl/fullscreen_triangle.h"
 #include "gl/program.h"
 #include "gl_fixture.h"
+#include "gpu/gpu_scene.h"
 #include "renderer_test_access.h"
 #include "scene/default_scene.h"
 
@@ -33,7 +35,7 @@ struct GlState {
     bool cull = false;
     GLint cullFace = 0;
     bool stencil = false;
-    GLint stencilFunc = 0, stencilRef = 0;
+    GLint stencilFunc = 0, stencilRef = 0, stencilValueMask = 0;
     GLint frontZFail = 0, backZFail = 0, frontPass = 0, frontFail = 0;
     GLboolean colorMask[4]{};
     bool operator==(GlState const&) const = default;
@@ -53,6 +55,7 @@ GlState readGlState() {
     s.stencil = glIsEnabled(GL_STENCIL_TEST);
     glGetIntegerv(GL_STENCIL_FUNC, &s.stencilFunc);
     glGetIntegerv(GL_STENCIL_REF, &s.stencilRef);
+    glGetIntegerv(GL_STENCIL_VALUE_MASK, &s.stencilValueMask);
     glGetIntegerv(GL_STENCIL_FAIL, &s.frontFail);
     glGetIntegerv(GL_STENCIL_PASS_DEPTH_FAIL, &s.frontZFail);
     glGetIntegerv(GL_STENCIL_PASS_DEPTH_PASS, &s.frontPass);
@@ -84,11 +87,7 @@ std::string mismatch(GlState const& gl, DrawState const& d) {
     if (d.blend == Blend::Alpha)
         check(gl.blendSrc == GL_SRC_ALPHA && gl.blendDst == GL_ONE_MINUS_SRC_ALPHA && gl.blendEquation == GL_FUNC_ADD,
               "blend alpha");
-    // Material: back faces culled, except around a double-sided material's draws (drawScene).
-    if (d.cull == FaceCull::Material)
-        check(!gl.cull || gl.cullFace == GL_BACK, "material culling");
-    else
-        check(gl.cull == (d.cull != FaceCull::Off), "cull enable");
+    check(gl.cull == (d.cull != FaceCull::Off), "cull enable");
     if (d.cull == FaceCull::Back) check(gl.cullFace == GL_BACK, "cull back");
     if (d.cull == FaceCull::Front) check(gl.cullFace == GL_FRONT, "cull front");
     check(gl.stencil == (d.stencil != StencilUse::Off), "stencil enable");
@@ -99,6 +98,10 @@ std::string mismatch(GlState const& gl, DrawState const& d) {
         check(gl.stencilFunc == GL_EQUAL && gl.stencilRef == 1 && gl.frontFail == GL_ZERO && gl.frontZFail == GL_ZERO &&
                   gl.frontPass == GL_ZERO,
               "stencil shade marked");
+    if (d.stencil == StencilUse::EqualBits)
+        check(gl.stencilFunc == GL_EQUAL && gl.stencilRef == d.stencilRef && gl.stencilValueMask == d.stencilRef &&
+                  gl.frontFail == GL_KEEP && gl.frontZFail == GL_KEEP && gl.frontPass == GL_KEEP,
+              "stencil equal bits");
     bool const colour = gl.colorMask[0] && gl.colorMask[1] && gl.colorMask[2] && gl.colorMask[3];
     bool const none = !gl.colorMask[0] && !gl.colorMask[1] && !gl.colorMask[2] && !gl.colorMask[3];
     check(d.colorWrite ? colour : none, "colour write");
@@ -147,6 +150,7 @@ protected:
                 std::string const why = mismatch(now, d);
                 if (why.empty()) {
                     ++checked_[running];
+                    ++checkedGroups_[running + ": " + std::string(d.what)];
                     return;
                 }
                 whyNot = std::string(d.what) + ": " + why;
@@ -161,7 +165,8 @@ protected:
         return failures;
     }
 
-    std::map<std::string, int> checked_;  // draws checked per pass
+    std::map<std::string, int> checked_;        // draws checked per pass
+    std::map<std::string, int> checkedGroups_;  // per "pass: group", the group whose state a draw matched first
     int dispatches_ = 0;
 };
 
@@ -260,6 +265,72 @@ TEST_F(DrawStateGlTest, AChangedDeclarationIsCaught) {
         << failures.front();
     RendererTestAccess::editDeclarations(*renderer_, {});
     EXPECT_TRUE(checkFrame({camera_, lights_, s}, "restored").empty());
+}
+
+// glTF's double-sided materials are drawn with no culling and every other material with back faces
+// culled, each under its declared group (drawScene applies them): the courtyard with every other
+// material made double-sided and one made blended, in forward mode and in a deferred one. Each
+// double-sided draw is counted under the double-sided group, so the two groups were both applied.
+TEST_F(DrawStateGlTest, DoubleSidedMaterialsDrawUnderTheirDeclaredGroup) {
+    SceneData scene = scene_;
+    ASSERT_GE(scene.materials.size(), 2u);
+    for (std::size_t i = 0; i < scene.materials.size(); i += 2) scene.materials[i].doubleSided = true;
+    scene.materials[1].alphaMode = AlphaMode::Blend;
+    scene.materials[1].doubleSided = true;
+    scene.materials[1].baseColorFactor.a = 0.5f;
+    // The draws drawScene makes of each kind (every instance, whatever it covers on screen).
+    int opaqueDouble = 0, opaqueSingle = 0, blendedDouble = 0;
+    for (MeshInstance const& inst : scene.instances) {
+        int const m = scene.meshes[std::size_t(inst.mesh)].material;
+        Material const mat = m >= 0 ? scene.materials[std::size_t(m)] : Material{};
+        bool const blended = mat.alphaMode == AlphaMode::Blend;
+        opaqueDouble += !blended && mat.doubleSided;
+        opaqueSingle += !blended && !mat.doubleSided;
+        blendedDouble += blended && mat.doubleSided;
+    }
+    ASSERT_GT(opaqueDouble, 0);
+    ASSERT_GT(opaqueSingle, 0);
+    ASSERT_GT(blendedDouble, 0);
+    ASSERT_FALSE(renderer_->setScene(scene));
+    for (LightingMode mode : {LightingMode::Forward, LightingMode::Quad}) {
+        PipelineSettings s;
+        s.mode = mode;
+        checkedGroups_.clear();
+        std::string const label(enumName(kLightingModeNames, mode));
+        std::vector<std::string> const failures = checkFrame({camera_, lights_, s}, label);
+        EXPECT_TRUE(failures.empty()) << failures.size() << " draws, the first: " << failures.front();
+        std::string const opaquePass = mode == LightingMode::Forward ? "forward_shading" : "geometry";
+        EXPECT_EQ(checkedGroups_[opaquePass + ": double-sided opaque surfaces"], opaqueDouble) << label;
+        EXPECT_EQ(checkedGroups_[opaquePass + ": opaque surfaces"], opaqueSingle) << label;
+        EXPECT_EQ(checkedGroups_["forward: double-sided blended surfaces"], blendedDouble) << label;
+    }
+}
+
+// The browser's read-back draws (renderer_readback.cpp, built for WebGL2 only) run under their
+// declared groups through apply(): each group applied here reads back as it declares, the stencil
+// groups testing one bit each (the state of bit 3 is not that of bit 2).
+TEST_F(DrawStateGlTest, TheReadbackDrawsDeclaredStatesApplyAsDeclared) {
+    // The read-back's target: a colour image over a depth-stencil. GL reads the stencil reference
+    // back clamped to the bound framebuffer's stencil bits, so one with 8 of them is bound.
+    gl::Texture const color = gl::Texture::create2D(GL_RGBA8, kW, kH, "test.readback");
+    gl::Texture const depth = gl::Texture::create2D(GL_DEPTH32F_STENCIL8, kW, kH, "test.readback_depth");
+    gl::Framebuffer const fbo = gl::Framebuffer::create({&color}, &depth, "test.readback");
+    ASSERT_TRUE(fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+    for (bool stencil : {false, true}) {
+        PassDecl const decl = readbackPass(stencil);
+        ASSERT_EQ(decl.states.size(), stencil ? 8u : 1u);
+        for (std::size_t i = 0; i < decl.states.size(); ++i) {
+            apply(kWriteAll);  // whatever came before
+            applyGroup(decl.states, i);
+            EXPECT_EQ(mismatch(readGlState(), decl.states[i]), "") << decl.name() << " " << decl.states[i].what;
+        }
+    }
+    PassDecl const stencil = readbackPass(true);
+    apply(stencil.states[3]);
+    EXPECT_NE(mismatch(readGlState(), stencil.states[2]), "") << "bit 3's state passes for bit 2's";
+    apply(kWriteAll);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 // A pass of the test's own: one declaration (what it draws into, with which state) and one run

@@ -333,10 +333,13 @@ TEST(FramePasses, TheGlassGoesForwardAfterLightingAndTheOutlineOverEveryView) {
     EXPECT_EQ(forward.depthStencil, Resource::LitDepth);
     EXPECT_TRUE(forward.depthRead);
     EXPECT_FALSE(forward.depthWrite);
-    ASSERT_EQ(forward.states.size(), 1u);
-    EXPECT_EQ(forward.states[0].blend, Blend::Alpha);
-    EXPECT_EQ(forward.states[0].depthTest, DepthTest::Less);
-    EXPECT_FALSE(forward.states[0].depthWrite);
+    ASSERT_EQ(forward.states.size(), 2u);  // single-sided, double-sided (the panes are double-sided)
+    for (DrawState const& state : forward.states) {
+        EXPECT_EQ(state.blend, Blend::Alpha);
+        EXPECT_EQ(state.depthTest, DepthTest::Less);
+        EXPECT_FALSE(state.depthWrite);
+    }
+    EXPECT_EQ(forward.states[1].cull, FaceCull::Off);
     EXPECT_EQ(std::count(n.begin(), n.end(), "glass_outline"), 0) << "off by default";
     s.glassOutline = true;
     s.view = DebugView::Albedo;  // a view without the overlays still gets the outline
@@ -347,4 +350,35 @@ TEST(FramePasses, TheGlassGoesForwardAfterLightingAndTheOutlineOverEveryView) {
     EXPECT_EQ(view.back().id, PassId::GlassOutline);
     EXPECT_EQ(view.back().color, std::vector{Resource::View});
     EXPECT_TRUE(feedbackLoops(frame).empty());
+}
+
+// The browser's read-backs (renderer_readback.cpp): the depth one samples the G-buffer's depth into
+// the read-back target; the stencil one attaches that depth-stencil without sampling it (no feedback
+// loop) and has one additive group per bit plane, testing exactly that bit.
+TEST(FramePasses, TheReadbacksAreDeclaredWithOneGroupPerStencilBit) {
+    PassDecl const depth = readbackPass(false);
+    EXPECT_EQ(depth.name(), "readback_depth");
+    EXPECT_EQ(depth.samples, std::vector<Resource>{Resource::GBufferDepth});
+    EXPECT_EQ(depth.color, std::vector<Resource>{Resource::Readback});
+    EXPECT_FALSE(depth.depthStencil.has_value());
+    ASSERT_EQ(depth.states.size(), 1u);
+    EXPECT_EQ(depth.states[0].stencil, StencilUse::Off);
+
+    PassDecl const stencil = readbackPass(true);
+    EXPECT_EQ(stencil.name(), "readback_stencil");
+    EXPECT_TRUE(stencil.samples.empty());
+    EXPECT_EQ(stencil.depthStencil, Resource::GBufferDepth);
+    EXPECT_TRUE(stencil.stencilRead);
+    EXPECT_FALSE(stencil.stencilWrite);
+    ASSERT_EQ(stencil.states.size(), 8u);
+    for (int bit = 0; bit < 8; ++bit) {
+        DrawState const& s = stencil.states[std::size_t(bit)];
+        EXPECT_EQ(s.stencil, StencilUse::EqualBits) << bit;
+        EXPECT_EQ(s.stencilRef, 1 << bit) << bit;
+        EXPECT_EQ(s.blend, Blend::Add) << bit;  // the bit planes' constants are summed
+        EXPECT_EQ(s.depthTest, DepthTest::Off) << bit;
+        EXPECT_FALSE(s.depthWrite) << bit;
+    }
+    std::vector<PassDecl> const both{depth, stencil};
+    EXPECT_TRUE(feedbackLoops(both).empty());
 }

@@ -286,3 +286,15 @@ TEST(InputEvents, BrowserWheelDeltasBecomeTheDesktopsNotches) {
     // A touchpad's small steps stay small, not a whole notch each.
     EXPECT_DOUBLE_EQ(wheelNotches({0.0, 4.0}, 0).y, -0.04);
 }
+
+// The keys that step through a setting list its choices from the setting's table, in its order.
+TEST(InputEvents, SteppingShortcutsListTheirSettingsChoicesFromTheTable) {
+    EXPECT_EQ(shortcutHelp(shortcutFor(EditorAction::NextDepthCopy)),
+              "next depth copy: how depth reaches the lit target (" + std::string(gbl::kDepthCopyNames[0]) + ", " +
+                  std::string(gbl::kDepthCopyNames[1]) + ", " + std::string(gbl::kDepthCopyNames[2]) + ")");
+    EXPECT_EQ(shortcutHelp(shortcutFor(EditorAction::NextDepthCopy)),
+              "next depth copy: how depth reaches the lit target (blit, shader, off)");
+    EXPECT_EQ(shortcutFor(EditorAction::NextLightingMode).choices.size(), gbl::kLightingModeNames.size());
+    EXPECT_EQ(shortcutFor(EditorAction::NextCullMode).choices.data(), gbl::kCullModeNames.data());
+    EXPECT_EQ(shortcutHelp(shortcutFor(EditorAction::Undo)), "undo the last edit");  // no choices, no brackets
+}

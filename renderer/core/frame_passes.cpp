@@ -53,6 +53,13 @@ std::vector<Resource> plus(std::vector<Resource> a, std::initializer_list<Resour
     return a;
 }
 
+// The draw groups of the scene (gpu/gpu_scene.h, drawScene, which applies them): the materials with
+// back faces culled, then glTF's double-sided materials, drawn with no culling.
+std::vector<DrawState> sceneStates(std::string_view single, std::string_view both, bool depthWrite, Blend blend) {
+    return {state(single, DepthTest::Less, depthWrite, blend, FaceCull::Back),
+            state(both, DepthTest::Less, depthWrite, blend, FaceCull::Off)};
+}
+
 DrawState fullScreen(std::string_view what) {
     return state(what, DepthTest::Off, false, Blend::Off, FaceCull::Off);
 }
@@ -105,6 +112,13 @@ PassDecl litPass(PassId id, std::vector<Resource> samples, DrawState drawn) {
     p.depthRead = drawn.depthTest != DepthTest::Off;
     p.depthWrite = drawn.depthWrite;
     p.states = {drawn};
+    return p;
+}
+
+// A pass that draws the scene (gpu/gpu_scene.h, drawScene) into the lit target: its two draw groups.
+PassDecl scenePass(PassId id, std::vector<Resource> samples, std::vector<DrawState> states) {
+    PassDecl p = litPass(id, std::move(samples), states.front());
+    p.states = std::move(states);
     return p;
 }
 
@@ -194,7 +208,8 @@ PassDecl glassOutlinePass(Resource target) {
     PassDecl p = declare(PassId::GlassOutline);
     p.samples = {R::Materials};
     p.color = {target};
-    p.states = {state("blended surfaces, hatched", DepthTest::Off, false, Blend::Off, FaceCull::Material)};
+    p.states = {state("blended surfaces, hatched", DepthTest::Off, false, Blend::Off, FaceCull::Back),
+                state("double-sided blended surfaces, hatched", DepthTest::Off, false, Blend::Off, FaceCull::Off)};
     return p;
 }
 
@@ -237,10 +252,11 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
     GBufferLayoutDesc const& d = layoutDesc(s.layout);
     bool const forward = s.mode == LightingMode::Forward;
     bool const split = s.accumulation == LightAccumulation::Split && !forward;
-    DrawState const opaque = state("opaque surfaces", DepthTest::Less, true, Blend::Off, FaceCull::Material);
+    std::vector<DrawState> const opaque =
+        sceneStates("opaque surfaces", "double-sided opaque surfaces", true, Blend::Off);
     std::vector<PassDecl> out;
     if (forward) {
-        out.push_back(litPass(PassId::ForwardShading, {R::Materials, R::Lights}, opaque));
+        out.push_back(scenePass(PassId::ForwardShading, {R::Materials, R::Lights}, opaque));
         out.back().stencilWrite = true;  // cleared with the rest
         // No G-buffer in forward mode: cleared, so the viewers show that it is unused.
         for (GBufferAttachmentDesc const& a : d.attachments()) out.back().clears.push_back(slotResource(a.slot));
@@ -252,7 +268,10 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
         g.depthStencil = R::GBufferDepth;
         g.depthRead = g.depthWrite = g.stencilWrite = true;  // stencil cleared
         // The import pass writes each covered pixel's depth (gl_FragDepth) whatever is there.
-        g.states = {imported ? state("imported surfaces", DepthTest::Always, true, Blend::Off, FaceCull::Off) : opaque};
+        g.states =
+            imported
+                ? std::vector<DrawState>{state("imported surfaces", DepthTest::Always, true, Blend::Off, FaceCull::Off)}
+                : opaque;
         g.clears = plus(g.color, {R::GBufferDepth});
         out.push_back(std::move(g));
         if (s.mode == LightingMode::Tiled)
@@ -270,8 +289,8 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
         out.push_back(depthCopyPass(s.depthCopy));
     }
     if (!imported)
-        out.push_back(litPass(PassId::Forward, {R::Materials, R::Lights},
-                              state("blended surfaces", DepthTest::Less, false, Blend::Alpha, FaceCull::Material)));
+        out.push_back(scenePass(PassId::Forward, {R::Materials, R::Lights},
+                                sceneStates("blended surfaces", "double-sided blended surfaces", false, Blend::Alpha)));
     // The light targets of an earlier split frame would otherwise show in this one's views.
     if (!split) out.front().clears = plus(out.front().clears, {R::DiffuseLight, R::SpecularLight});
     if (viewNeedsCoverage(s.view)) out.push_back(coveragePass(s));
@@ -287,6 +306,29 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
                                   forward ? R::LitDepth : R::GBufferDepth,
                                   state("lines", DepthTest::LessEqual, false, Blend::Off, FaceCull::Off)));
     return out;
+}
+
+PassDecl readbackPass(bool stencil) {
+    PassDecl p;
+    p.customName = stencil ? "readback_stencil" : "readback_depth";
+    p.color = {R::Readback};
+    if (!stencil) {
+        p.samples = {R::GBufferDepth};
+        p.states = {fullScreen("depth texels")};
+        return p;
+    }
+    p.depthStencil = R::GBufferDepth;  // attached for its stencil, not sampled
+    p.stencilRead = true;
+    static constexpr std::array<std::string_view, 8> kBits{"stencil bit 0", "stencil bit 1", "stencil bit 2",
+                                                           "stencil bit 3", "stencil bit 4", "stencil bit 5",
+                                                           "stencil bit 6", "stencil bit 7"};
+    for (int bit = 0; bit < 8; ++bit) {
+        DrawState s =
+            state(kBits[std::size_t(bit)], DepthTest::Off, false, Blend::Add, FaceCull::Off, StencilUse::EqualBits);
+        s.stencilRef = 1 << bit;
+        p.states.push_back(s);
+    }
+    return p;
 }
 
 std::vector<PassDecl> viewPasses(PipelineSettings const& s) {

@@ -77,8 +77,9 @@ enum class Resource {
     ClusterLists,     // storage buffers and list texture of the clustered mode
     Imported,         // the textures of an imported G-buffer (Renderer::setImportedGBuffer)
     View,             // a view's own image (Renderer::drawView's ViewTarget), in place of the display
+    Readback,         // the browser's read-back target: depth or stencil as colour (renderer_readback.cpp)
 };
-inline constexpr std::array<std::string_view, 19> kResourceNames{"gbuffer.position",
+inline constexpr std::array<std::string_view, 20> kResourceNames{"gbuffer.position",
                                                                  "gbuffer.normal",
                                                                  "gbuffer.albedo_spec",
                                                                  "gbuffer.emissive",
@@ -96,7 +97,8 @@ inline constexpr std::array<std::string_view, 19> kResourceNames{"gbuffer.positi
                                                                  "tile_bins",
                                                                  "cluster_lists",
                                                                  "imported",
-                                                                 "view"};
+                                                                 "view",
+                                                                 "readback"};
 
 inline std::string_view resourceName(Resource r) {
     return enumName(kResourceNames, r);
@@ -117,12 +119,12 @@ enum class FaceCull {
     Off,
     Back,
     Front,
-    Material,  // back faces, except for double-sided materials
 };
 enum class StencilUse {
     Off,
     Mark,         // both faces, depth failures: back +1, front -1
     ShadeMarked,  // passes where the mark is 1, and zeroes every mark it visits
+    EqualBits,    // passes where the bits of DrawState::stencilRef are set (ref and mask), writes none
 };
 
 // The fixed-function state of one group of draws of a pass (most passes have one).
@@ -134,6 +136,7 @@ struct DrawState {
     FaceCull cull = FaceCull::Off;
     StencilUse stencil = StencilUse::Off;
     bool colorWrite = true;
+    int stencilRef = 0;  // StencilUse::EqualBits: the bits tested
 
     bool operator==(DrawState const&) const = default;
 };
@@ -154,7 +157,7 @@ struct PassDecl {
     std::vector<DrawState> states;  // applied (gpu/draw_state_gl.h) before each group of draws, in order
     // Cleared by the executor before the pass runs: colour to zero, depth to 1, stencil to 0.
     std::vector<Resource> clears;
-    // A pass that is not one of PassId's (a test's own): its name in place of passName(id).
+    // A pass that is not one of PassId's (a test's own, a read-back): its name in place of passName(id).
     std::string_view customName;
 
     std::string_view name() const { return customName.empty() ? passName(id) : customName; }
@@ -164,6 +167,12 @@ struct PassDecl {
 // The read-backs' draws, which are no pass of a frame (renderer_readback.cpp): the G-buffer decoded
 // into positions and normals, full screen.
 inline constexpr DrawState kDecodeState{"decode", DepthTest::Off, false, Blend::Off, FaceCull::Off};
+
+// The browser's read-backs of the G-buffer's depth and stencil (renderer_readback.cpp; WebGL2 reads
+// neither), which are no passes of a frame: "readback_depth" copies the depth texture's texels into
+// the read-back target; "readback_stencil" tests the G-buffer's stencil and adds one constant per bit
+// plane, one draw group per bit (group b passes where bit b is set: EqualBits with ref 1 << b).
+PassDecl readbackPass(bool stencil);
 
 // Whether the heat map or lights-per-tile view is shown: only then the frame runs the coverage pass.
 constexpr bool viewNeedsCoverage(DebugView v) {

@@ -59,6 +59,10 @@ void apply(DrawState const& s) {
             glStencilFunc(GL_EQUAL, 1, 0xFF);
             glStencilOp(GL_ZERO, GL_ZERO, GL_ZERO);
             break;
+        case StencilUse::EqualBits:  // the read-back's bit planes (renderer_readback.cpp)
+            glStencilFunc(GL_EQUAL, s.stencilRef, GLuint(s.stencilRef));
+            glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+            break;
         case StencilUse::Off:
             glStencilFunc(GL_ALWAYS, 0, 0xFF);
             glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);

@@ -10,8 +10,7 @@
 
 namespace gbl {
 
-// Sets every piece of state a DrawState describes, whatever was set before. FaceCull::Material
-// culls back faces; drawScene turns culling off around double-sided materials.
+// Sets every piece of state a DrawState describes, whatever was set before.
 void apply(DrawState const& state);
 
 // Applies draw group `i` of a pass's declared states; a pass handed fewer groups than it draws is

@@ -23,6 +23,22 @@ bool isGBufferColor(Resource r) {
 
 }  // namespace
 
+GBufferTextures gbufferTextures(GBuffer const& g) {
+    return {g.position, g.normal, g.albedoSpec, g.emissive, g.depth};
+}
+
+gl::Framebuffer const& FrameResources::blitSource(Resource depth) const {
+    switch (depth) {
+        case Resource::GBufferDepth:
+            return targets.gbuffer.fbo;
+        case Resource::LitDepth:
+            return targets.litFbo;
+        default:
+            break;
+    }
+    noTarget("no framebuffer to blit " + std::string(resourceName(depth)) + " from");
+}
+
 gl::Texture const& FrameResources::texture(Resource r) const {
     RenderTargets const& t = targets;
     switch (r) {

@@ -10,6 +10,18 @@
 
 namespace gbl {
 
+// The G-buffer's textures as a pass samples them (the declared GBuffer* resources, resolved): a
+// layout that rebuilds position from depth has an empty `position`, one without emission an empty
+// `emissive`.
+struct GBufferTextures {
+    gl::Texture const& position;
+    gl::Texture const& normal;
+    gl::Texture const& albedoSpec;
+    gl::Texture const& emissive;
+    gl::Texture const& depth;  // the depth-stencil
+};
+GBufferTextures gbufferTextures(GBuffer const& gbuffer);
+
 struct FrameResources {
     RenderTargets const& targets;
     gl::Framebuffer const* view = nullptr;  // Resource::View: Renderer::drawView's target
@@ -20,6 +32,11 @@ struct FrameResources {
     // throws when no target attaches that combination (a declaration with no framebuffer behind it).
     gl::Framebuffer const& framebuffer(std::span<Resource const> color, std::optional<Resource> depthStencil) const;
     gl::Framebuffer const& framebuffer(PassDecl const& p) const { return framebuffer(p.color, p.depthStencil); }
+    // The G-buffer's textures (Resource::GBuffer*), for the passes that sample them.
+    GBufferTextures gbuffer() const { return gbufferTextures(targets.gbuffer); }
+    // The framebuffer a blit reads the depth-stencil `depth` from (a blit pass's declared sample);
+    // throws for a resource no framebuffer attaches as its depth.
+    gl::Framebuffer const& blitSource(Resource depth) const;
     // Clears `resources` (PassDecl::clears): colour to zero, depth to 1, stencil to 0, each framebuffer once.
     void clear(std::span<Resource const> resources) const;
 };

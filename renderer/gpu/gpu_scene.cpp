@@ -147,7 +147,7 @@ std::optional<std::string> uploadScene(SceneData const& scene, GpuScene& out) {
 }
 
 void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter filter, bool useNormalMaps,
-               std::optional<glm::mat4> backToFrontFrom) {
+               std::span<DrawState const> states, std::optional<glm::mat4> backToFrontFrom) {
     static Material const kDefaultMaterial{};
     program.set("uUseNormalMaps", useNormalMaps ? 1 : 0);
     // The flag, coordinate set and UV matrix uniforms of one texture (shaders/material.glsl).
@@ -172,6 +172,7 @@ void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter
             centers.push_back(glm::vec3(inst.model * glm::vec4(scene.meshes[std::size_t(inst.mesh)].center, 1.0f)));
         order = backToFrontOrder(centers, *backToFrontFrom);
     }
+    std::size_t applied = states.size();  // none yet
     for (std::size_t index : order) {
         MeshInstance const& inst = scene.instances[index];
         GpuMesh const& mesh = scene.meshes[std::size_t(inst.mesh)];
@@ -197,10 +198,10 @@ void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter
                     {"uHasEmissiveTex", "uEmissiveTexCoord", "uEmissiveUvTransform"});
         bindTexture(slot::BIND_MATERIAL_OCCLUSION, m.occlusionTexture, m.occlusionTransform,
                     {"uHasOcclusionTex", "uOcclusionTexCoord", "uOcclusionUvTransform"});
-        if (m.doubleSided)
-            glDisable(GL_CULL_FACE);
-        else
-            glEnable(GL_CULL_FACE);
+        // glTF: double-sided faces are seen from both sides. A pass with one group (an overlay that culls
+        // nothing) draws every material under it.
+        std::size_t const group = m.doubleSided && states.size() > 1 ? 1 : 0;
+        if (group != applied) applyGroup(states, applied = group);
         // A mirroring transform turns counter-clockwise triangles clockwise on screen (glTF 2.0
         // asks renderers to flip the winding for such nodes).
         glFrontFace(glm::determinant(glm::mat3(inst.model)) < 0.0f ? GL_CW : GL_CCW);
@@ -209,7 +210,6 @@ void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter
         gl::countDraw();
     }
     glBindVertexArray(0);
-    glEnable(GL_CULL_FACE);
     glFrontFace(GL_CCW);
 }
 

@@ -5,9 +5,11 @@
 #include "gl/program.h"
 #include "gl/texture.h"
 #include "gl/vertex_array.h"
+#include "gpu/draw_state_gl.h"
 #include "scene/scene_data.h"
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,10 +42,12 @@ enum class MaterialFilter { Opaque, Blended, All };
 
 // Draws every instance whose material passes the filter with `program`, setting the per-object
 // uniforms (uModel, uNormalMatrix) and material uniforms of shaders/material.glsl. The material
-// textures go to the BIND_MATERIAL_* units of shaders/bindings.glsl. `backToFrontFrom`: a view-
-// projection to draw the instances in, farthest first by their centre's view depth
+// textures go to the BIND_MATERIAL_* units of shaders/bindings.glsl. `states` are the pass's two
+// declared draw groups (core/frame_passes.cpp, sceneStates): [0] for single-sided materials, [1]
+// for double-sided ones; each is applied when the next draw's material needs it. `backToFrontFrom`: a
+// view-projection to draw the instances in, farthest first by their centre's view depth
 // (scene/draw_order.h), as blended surfaces need; without it they draw in list order.
 void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter filter, bool useNormalMaps,
-               std::optional<glm::mat4> backToFrontFrom = std::nullopt);
+               std::span<DrawState const> states, std::optional<glm::mat4> backToFrontFrom = std::nullopt);
 
 }  // namespace gbl

@@ -4,18 +4,20 @@
 #pragma once
 
 #include "core/pipeline_settings.h"
+#include "gl/framebuffer.h"
 #include "gl/fullscreen_triangle.h"
 #include "gl/program.h"
+#include "gl/texture.h"
 #include "gpu/draw_state_gl.h"
-#include "gpu/render_targets.h"
 
 #include <span>
 
 namespace gbl {
 
 struct DepthCopyInput {
-    GBuffer const& gbuffer;
-    gl::Program const& program;  // ProgramId::DepthCopy (the shader variant)
+    gl::Framebuffer const& source;  // Blit: the G-buffer's framebuffer, whose depth is read
+    gl::Texture const& depth;       // Shader: the G-buffer's depth-stencil, sampled
+    gl::Program const& program;     // ProgramId::DepthCopy (the shader variant)
     gl::FullscreenTriangle const& triangle;
     gl::Framebuffer const& target;  // its depth-stencil is cleared, then written
 };

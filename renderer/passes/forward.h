@@ -22,7 +22,7 @@ struct ForwardConfig {
     glm::mat4 viewProj{1.0f};
     ShadingUniforms shading;
     bool normalMaps = true;
-    std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
+    std::span<DrawState const> states;  // declared: single-sided, double-sided materials (drawScene)
     bool backToFront = false;           // drawn farthest object first (blended surfaces: the over operator)
 };
 

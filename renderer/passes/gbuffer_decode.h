@@ -7,7 +7,7 @@
 #include "gl/program.h"
 #include "gl/texture.h"
 #include "gpu/draw_state_gl.h"
-#include "gpu/render_targets.h"
+#include "gpu/frame_resources.h"
 
 #include <glm/glm.hpp>
 
@@ -26,7 +26,7 @@ struct DecodedGBuffer {
 DecodedGBuffer createDecodedGBuffer(int width, int height);
 
 struct GBufferDecodeInput {
-    GBuffer const& gbuffer;
+    GBufferTextures gbuffer;
     gl::Program const& program;  // ProgramId::GBufferDecode
     gl::FullscreenTriangle const& triangle;
     DecodedGBuffer const& target;

@@ -5,11 +5,10 @@ namespace gbl {
 
 // Blending must be off: the alpha channels carry data (specular, coverage).
 GeometryOutput geometryPass(GeometryInput const& in, GeometryConfig const& config) {
-    glBindFramebuffer(GL_FRAMEBUFFER, in.target.fbo.id());
-    applyGroup(config.states, 0);  // cleared by the executor (PassDecl::clears)
-    in.program.use();
+    glBindFramebuffer(GL_FRAMEBUFFER, in.target.id());
+    in.program.use();  // cleared by the executor (PassDecl::clears)
     in.program.set("uViewProj", config.viewProj);
-    drawScene(in.scene, in.program, MaterialFilter::Opaque, config.normalMaps);
+    drawScene(in.scene, in.program, MaterialFilter::Opaque, config.normalMaps, config.states);
     return {in.target};
 }
 

@@ -1,10 +1,10 @@
 // Geometry pass: the opaque scene into the G-buffer.
 #pragma once
 
+#include "gl/framebuffer.h"
 #include "gl/program.h"
 #include "gpu/draw_state_gl.h"
 #include "gpu/gpu_scene.h"
-#include "gpu/render_targets.h"
 
 #include <glm/glm.hpp>
 
@@ -14,16 +14,16 @@ namespace gbl {
 
 struct GeometryInput {
     GpuScene const& scene;
-    gl::Program const& program;  // ProgramId::Geometry
-    GBuffer const& target;       // cleared, then written
+    gl::Program const& program;     // ProgramId::Geometry
+    gl::Framebuffer const& target;  // the G-buffer's: cleared by the executor, then written
 };
 struct GeometryConfig {
     glm::mat4 viewProj{1.0f};
     bool normalMaps = true;
-    std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
+    std::span<DrawState const> states;  // declared: single-sided, double-sided materials (drawScene)
 };
 struct GeometryOutput {
-    GBuffer const& gbuffer;  // position, normal, albedo/specular and depth of the opaque scene
+    gl::Framebuffer const& gbuffer;  // position, normal, albedo/specular and depth of the opaque scene
 };
 
 GeometryOutput geometryPass(GeometryInput const& in, GeometryConfig const& config);

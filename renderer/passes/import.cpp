@@ -42,7 +42,7 @@ std::optional<std::string> uploadImportedFrame(ImportedFrame const& frame, Impor
 // Blending must be off (the alpha channels carry data); the depth test passes every fragment, which
 // writes its own depth.
 ImportOutput importPass(ImportInput const& in, ImportConfig const& config) {
-    glBindFramebuffer(GL_FRAMEBUFFER, in.target.fbo.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, in.target.id());
     glViewport(0, 0, config.width, config.height);
     applyGroup(config.states, 0);  // cleared by the executor (PassDecl::clears)
     in.program.use();

@@ -32,7 +32,7 @@ struct ImportInput {
     ImportedTextures const& imported;
     gl::Program const& program;  // ProgramId::Import
     gl::FullscreenTriangle const& triangle;
-    GBuffer const& target;  // cleared, then written
+    gl::Framebuffer const& target;  // the G-buffer's: cleared by the executor, then written
 };
 struct ImportConfig {
     int width = 0;
@@ -40,7 +40,7 @@ struct ImportConfig {
     std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
 };
 struct ImportOutput {
-    GBuffer const& gbuffer;  // position (or depth), normal, albedo/specular, emissive/AO of the imported frame
+    gl::Framebuffer const& gbuffer;  // position (or depth), normal, albedo/specular, emissive/AO of the imported frame
 };
 
 ImportOutput importPass(ImportInput const& in, ImportConfig const& config);

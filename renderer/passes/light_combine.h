@@ -11,7 +11,7 @@
 namespace gbl {
 
 struct LightCombineInput {
-    GBuffer const& gbuffer;
+    GBufferTextures gbuffer;
     ShadingUniforms shading;           // ambient, emissive weight, inverse view-projection
     gl::Texture const& diffuseLight;   // RGBA16F: sum of N.L * attenuation * colour
     gl::Texture const& specularLight;  // RGBA16F: sum of specular * (N.H)^shininess * attenuation * colour

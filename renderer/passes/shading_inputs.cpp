@@ -11,7 +11,7 @@ void bindTextureUnit(int unit, GLenum target, GLuint texture) {
     glActiveTexture(GL_TEXTURE0);
 }
 
-void bindGBuffer(GBuffer const& g) {
+void bindGBuffer(GBufferTextures const& g) {
     bindTextureUnit(slot::BIND_GBUFFER_POSITION, GL_TEXTURE_2D, g.position.id());
     bindTextureUnit(slot::BIND_GBUFFER_NORMAL, GL_TEXTURE_2D, g.normal.id());
     bindTextureUnit(slot::BIND_GBUFFER_ALBEDO_SPEC, GL_TEXTURE_2D, g.albedoSpec.id());

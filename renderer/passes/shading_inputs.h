@@ -5,6 +5,7 @@
 #include "core/pipeline_settings.h"
 #include "gl/framebuffer.h"
 #include "gl/program.h"
+#include "gpu/frame_resources.h"
 #include "gpu/light_buffer.h"
 #include "gpu/render_targets.h"
 
@@ -34,7 +35,7 @@ struct ShadingUniforms {
 void bindTextureUnit(int unit, GLenum target, GLuint texture);
 
 // The G-buffer attachments on their BIND_GBUFFER_* units and its depth on BIND_DEPTH.
-void bindGBuffer(GBuffer const& gbuffer);
+void bindGBuffer(GBufferTextures const& gbuffer);
 // The light buffer on BIND_LIGHTS, and uLightCount.
 void bindLights(gl::Program const& program, LightBuffer const& lights);
 void setShadingUniforms(gl::Program const& program, ShadingUniforms const& shading);
@@ -56,7 +57,7 @@ void unbindLightImages();
 
 // All three: what every deferred lighting program reads.
 struct DeferredInputs {
-    GBuffer const& gbuffer;
+    GBufferTextures gbuffer;
     LightBuffer const& lights;
     ShadingUniforms shading;
 };

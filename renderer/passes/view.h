@@ -8,14 +8,14 @@
 #include "gl/fullscreen_triangle.h"
 #include "gl/program.h"
 #include "gpu/draw_state_gl.h"
-#include "gpu/render_targets.h"
+#include "gpu/frame_resources.h"
 
 #include <span>
 
 namespace gbl {
 
 struct ViewInput {
-    GBuffer const& gbuffer;
+    GBufferTextures gbuffer;
     gl::Texture const& hdr;
     gl::Texture const& coverage;      // this frame's counts, for the heat map and tile views
     gl::Texture const& diffuseLight;  // accumulation split's targets, for their views

@@ -4,7 +4,7 @@
 namespace gbl {
 
 VolumeDepthOutput volumeDepthPass(VolumeDepthInput const& in, VolumeDepthConfig const& config) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, in.gbuffer.fbo.id());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, in.source.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, in.target.id());
     glBlitFramebuffer(0, 0, config.width, config.height, 0, 0, config.width, config.height,
                       GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT, GL_NEAREST);

@@ -3,12 +3,11 @@
 #pragma once
 
 #include "gl/framebuffer.h"
-#include "gpu/render_targets.h"
 
 namespace gbl {
 
 struct VolumeDepthInput {
-    GBuffer const& gbuffer;         // read: its depth-stencil
+    gl::Framebuffer const& source;  // read: its depth-stencil (the G-buffer's)
     gl::Framebuffer const& target;  // written: its depth-stencil (volumeFbo's volumeDepth)
 };
 struct VolumeDepthConfig {

@@ -60,8 +60,6 @@ char const* cullWords(FaceCull c) {
             return "back faces culled";
         case FaceCull::Front:
             return "front faces culled";
-        case FaceCull::Material:
-            return "back faces culled, except double-sided materials";
     }
     return "?";
 }
@@ -74,6 +72,8 @@ char const* stencilWords(StencilUse s) {
             return "stencil marks where depth fails (back faces +1, front faces -1)";
         case StencilUse::ShadeMarked:
             return "stencil shades where the mark is 1 and zeroes it";
+        case StencilUse::EqualBits:
+            return "stencil passes where the tested bits are set";
     }
     return "?";
 }
@@ -159,7 +159,8 @@ std::optional<DebugView> resourceView(Resource r) {
         case Resource::Materials:
         case Resource::ClusterLists:
         case Resource::Imported:
-        case Resource::View:  // a view's own image (drawView), no frame's
+        case Resource::View:      // a view's own image (drawView), no frame's
+        case Resource::Readback:  // the browser's read-back target, no frame's
             break;
     }
     return std::nullopt;

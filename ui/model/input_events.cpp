@@ -124,6 +124,13 @@ std::vector<InputEvent> InputQueue::take(double now) {
     return out;
 }
 
+std::string shortcutHelp(Shortcut const& s) {
+    std::string out(s.help);
+    for (std::size_t i = 0; i < s.choices.size(); ++i) out += (i == 0 ? " (" : ", ") + std::string(s.choices[i]);
+    if (!s.choices.empty()) out += ")";
+    return out;
+}
+
 Shortcut const& shortcutFor(EditorAction action) {
     for (Shortcut const& s : kShortcuts)
         if (s.action == action) return s;

@@ -3,6 +3,8 @@
 // and into what an ImGui that reads its input once per frame (1.86) can follow. No GLFW, no ImGui.
 #pragma once
 
+#include "core/pipeline_settings.h"
+
 #include <glm/glm.hpp>
 
 #include <array>
@@ -120,6 +122,9 @@ struct Shortcut {
     bool held = false;      // acts for as long as the key is down (flying) rather than once per press
     std::string_view keys;  // as the Help > Shortcuts window and menus show it
     std::string_view help;
+    // A shortcut that steps through a setting's choices: the names, in order, from the setting's
+    // own table (core/pipeline_settings.h), which shortcutHelp() lists after `help`.
+    std::span<std::string_view const> choices{};
 };
 
 // One list: the key handling, the menus' shortcut hints and the Help > Shortcuts window read it.
@@ -146,12 +151,12 @@ inline constexpr std::array<Shortcut, 25> kShortcuts{{
     {keys::V, 0, EditorAction::NextView, ShortcutScope::Editor, false, "V",
      "next view: final, lighting, then each G-buffer attachment"},
     {keys::V, kModShift, EditorAction::PreviousView, ShortcutScope::Editor, false, "Shift+V", "previous view"},
-    {keys::M, 0, EditorAction::NextLightingMode, ShortcutScope::Editor, false, "M",
-     "next lighting mode (quad, volumes, tiled, forward, clustered)"},
-    {keys::C, 0, EditorAction::NextCullMode, ShortcutScope::Editor, false, "C",
-     "next light-volume cull mode (back, front, none, flip, stencil)"},
+    {keys::M, 0, EditorAction::NextLightingMode, ShortcutScope::Editor, false, "M", "next lighting mode",
+     kLightingModeNames},
+    {keys::C, 0, EditorAction::NextCullMode, ShortcutScope::Editor, false, "C", "next light-volume cull mode",
+     kCullModeNames},
     {keys::B, 0, EditorAction::NextDepthCopy, ShortcutScope::Editor, false, "B",
-     "next depth copy: how depth reaches the lit target (blit, shader, off)"},
+     "next depth copy: how depth reaches the lit target", kDepthCopyNames},
     {keys::G, 0, EditorAction::ToggleOverview, ShortcutScope::Editor, false, "G",
      "attachment overview: every G-buffer attachment and the lit frame at once (click one to show it)"},
     {keys::W, 0, EditorAction::FlyForward, ShortcutScope::Viewport, true, "W", "fly forward (Shift: faster)"},
@@ -165,6 +170,8 @@ inline constexpr std::array<Shortcut, 25> kShortcuts{{
 // The table's entry for an action (every action has exactly one; input_events_test checks).
 Shortcut const& shortcutFor(EditorAction action);
 std::string_view actionName(EditorAction action);
+// What the Help > Shortcuts window says a shortcut does: its help, then its choices in brackets.
+std::string shortcutHelp(Shortcut const& shortcut);
 
 // --- one frame's events into editor actions ----------------------------------------------------
 

@@ -28,7 +28,8 @@ void drawShortcutsWindow(bool& open) {
                 ImGui::TextDisabled("%s",
                                     s.scope == ShortcutScope::Viewport ? "over the viewport" : "not while typing");
                 ImGui::TableNextColumn();
-                ImGui::TextUnformatted(s.help.data(), s.help.data() + s.help.size());
+                std::string const help = shortcutHelp(s);
+                ImGui::TextUnformatted(help.c_str());
             }
             ImGui::EndTable();
         }
