@@ -13,4 +13,12 @@ GeometryOutput geometryPass(GeometryInput const& in, GeometryConfig const& confi
     return {in.target};
 }
 
+void depthPrepass(GeometryInput const& in, GeometryConfig const& config, gl::Framebuffer const& depthTarget) {
+    glBindFramebuffer(GL_FRAMEBUFFER, depthTarget.id());
+    applyGroup(config.states, 0);  // depth only; cleared by the executor (PassDecl::clears)
+    in.program.use();
+    in.program.set("uViewProj", config.viewProj);
+    drawScene(in.scene, in.program, MaterialFilter::Opaque, config.normalMaps);
+}
+
 }  // namespace gbl

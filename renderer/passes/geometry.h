@@ -28,4 +28,8 @@ struct GeometryOutput {
 
 GeometryOutput geometryPass(GeometryInput const& in, GeometryConfig const& config);
 
+// forward+'s depth pre-pass: the same draws into `depthTarget` (the lit target), whose declared
+// state writes depth and no colour.
+void depthPrepass(GeometryInput const& in, GeometryConfig const& config, gl::Framebuffer const& depthTarget);
+
 }  // namespace gbl
