@@ -22,7 +22,7 @@ inline int benchBadArgument(std::string const& message) {
 struct BenchOptions {
     std::string size = "1280x720";
     std::vector<int> lights{32, 256, 1024, 4096};
-    std::vector<std::string> modes{"quad", "volumes", "tiled", "clustered", "forward"};
+    std::vector<std::string> modes{"quad", "volumes", "tiled", "clustered", "forward", "forward+"};
     // Cull modes measured for `volumes` (each one is its own combination); other modes ignore it.
     // addBenchOptions starts it at PipelineSettings{}'s cull.
     std::vector<std::string> culls;

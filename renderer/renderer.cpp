@@ -163,7 +163,7 @@ ShadingUniforms shadingUniforms(FrameContext const& f) {
 }
 
 bool RendererImpl::splitAccumulation(FrameContext const& f) const {
-    return f.settings.accumulation == LightAccumulation::Split && f.settings.mode != LightingMode::Forward;
+    return f.settings.accumulation == LightAccumulation::Split && !shadesForward(f.settings.mode);
 }
 
 DeferredInputs RendererImpl::deferredInputs(FrameContext const& f, FrameResources const& io) const {

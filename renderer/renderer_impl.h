@@ -151,6 +151,7 @@ private:
     OptionalFeature volumesFeature;
     OptionalFeature tiledFeature;
     OptionalFeature clusteredFeature;
+    OptionalFeature forwardPlusFeature;
     ClusterLists clusters;
     TileBins tileBins;                    // the tiled and clustered list passes' candidates, rebuilt by each
     std::function<void()> frameTestHook;  // renderer_test_access.h
@@ -189,6 +190,7 @@ private:
     void runDisplay(FrameRecord& frame, PassRun const& r);
     void runLightCubes(FrameRecord& frame, PassRun const& r);
     void runWireframes(FrameRecord& frame, PassRun const& r);
+    void runDepthPrepass(FrameRecord& frame, PassRun const& r);
     // shaders/view.frag built for `view` alone (its VIEW_ONLY): the switch over every view would
     // otherwise run whole at each pixel where branches run under a mask (4 ms against 42 ms for
     // the final image at 641x407 in SwiftShader).
@@ -200,6 +202,7 @@ private:
     bool volumesReady();                            // builds the volume programs and mesh on first use
     bool tiledReady();                              // builds the tiled program on first use
     bool clusteredReady();                          // builds the two clustered programs on first use
+    bool forwardPlusReady();                        // builds the binning and forward+ programs on first use
     // The clustered passes' input: `image` the lit image or diffuse light target they write.
     LightingClusteredInput clusteredInput(FrameContext const& f, FrameResources const& io, gl::Texture const& image);
     LightingClusteredConfig clusteredConfig(FrameContext const& f, bool shade) const;

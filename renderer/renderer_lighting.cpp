@@ -42,7 +42,8 @@ void RendererImpl::runLightLists(FrameRecord& frame, PassRun const& r) {
         clusterListsPass(clusteredInput(f, r.io, r.io.texture(Resource::Lighting)), clusteredConfig(f, true));
         return;
     }
-    tileBinPass({binPrograms(ProgramId::TileBin), lights, r.io.texture(Resource::GBufferDepth), tileBins, caps},
+    // The depth it declares: the G-buffer's (tiled), or the depth pre-pass's (forward+).
+    tileBinPass({binPrograms(ProgramId::TileBin), lights, r.io.texture(r.decl.samples.front()), tileBins, caps},
                 {f.view, f.projection, targets.width, targets.height, f.camera.nearPlane, f.camera.farPlane});
 }
 
@@ -91,12 +92,16 @@ void RendererImpl::runCoverage(FrameRecord& frame, PassRun const& r) {
         clusterShadePass(clusteredInput(f, io, io.texture(Resource::Lighting)), clusteredConfig(f, false));
         return;
     }
-    bool const tiles = f.settings.view == DebugView::TileLights || f.settings.mode == LightingMode::Tiled;
+    bool const forwardPlus = f.settings.mode == LightingMode::ForwardPlus;
+    bool const tiles =
+        f.settings.view == DebugView::TileLights || f.settings.mode == LightingMode::Tiled || forwardPlus;
     bool const volumeCounts = !tiles && f.settings.mode == LightingMode::Volumes && volumesReady();
     if (volumeCounts) prepareVolumeInstances(volumes, {f.camera, f.aspect, f.lights});
     bool const tiled = tiles && tiledReady();
+    // forward+ counts the lists its frame binned over the pre-pass depth (the G-buffer is empty).
     LightingTiledConfig const t{
-        f.view, f.projection, targets.width, targets.height, f.camera.nearPlane, f.camera.farPlane, false, true};
+        f.view, f.projection, targets.width, targets.height, f.camera.nearPlane, f.camera.farPlane,
+        false,  true,         forwardPlus};
     TileBinPrograms const bin = binPrograms(ProgramId::TileBin);
     // A compute count has no framebuffer of its own; the coverage target's is bound around it.
     std::array<Resource, 1> const counts{Resource::Coverage};

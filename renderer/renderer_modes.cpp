@@ -82,6 +82,22 @@ bool RendererImpl::clusteredReady() {
     return true;
 }
 
+bool RendererImpl::forwardPlusReady() {
+    OptionalFeature& f = forwardPlusFeature;
+    if (f.tried) return !f.unavailable;
+    f.tried = true;
+    if (!caps.computeShaders) {
+        f.unavailable = caps.computeUnavailableReason("forward+");
+        return false;
+    }
+    for (ProgramId id : {ProgramId::TileDepth, ProgramId::TileBin, ProgramId::ForwardPlus})
+        if (!shaders.add(id, nullptr)) {
+            f.unavailable = programFailure("forward+", shaders, id);
+            return false;
+        }
+    return true;
+}
+
 std::optional<std::string> RendererImpl::modeUnavailable(LightingMode mode) {
     switch (mode) {
         case LightingMode::Volumes:
@@ -90,6 +106,8 @@ std::optional<std::string> RendererImpl::modeUnavailable(LightingMode mode) {
             return tiledReady() ? std::nullopt : tiledFeature.unavailable;
         case LightingMode::Clustered:
             return clusteredReady() ? std::nullopt : clusteredFeature.unavailable;
+        case LightingMode::ForwardPlus:
+            return forwardPlusReady() ? std::nullopt : forwardPlusFeature.unavailable;
         case LightingMode::Quad:
         case LightingMode::Forward:
             break;  // core programs only

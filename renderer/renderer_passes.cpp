@@ -13,6 +13,8 @@
 #include "passes/volume_depth.h"
 #include "passes/wireframes.h"
 
+#include "core/tile_math.h"
+
 #include <algorithm>
 #include <array>
 
@@ -21,11 +23,11 @@ namespace gbl {
 RendererImpl::RunFunction RendererImpl::runFunction(PassId id) {
     // PassId -> run function, in PassId's order.
     static constexpr std::array<RunFunction, kPassNames.size()> kRun{
-        &RendererImpl::runForwardShading, &RendererImpl::runGeometry,    &RendererImpl::runLightLists,
-        &RendererImpl::runVolumeDepth,    &RendererImpl::runLighting,    &RendererImpl::runLightCombine,
-        &RendererImpl::runDepthCopy,      &RendererImpl::runForward,     &RendererImpl::runLightCubes,
-        &RendererImpl::runWireframes,     &RendererImpl::runCoverage,    &RendererImpl::runDisplay,
-        &RendererImpl::runImport,         &RendererImpl::runGlassOutline};
+        &RendererImpl::runForwardShading, &RendererImpl::runGeometry,     &RendererImpl::runLightLists,
+        &RendererImpl::runVolumeDepth,    &RendererImpl::runLighting,     &RendererImpl::runLightCombine,
+        &RendererImpl::runDepthCopy,      &RendererImpl::runForward,      &RendererImpl::runLightCubes,
+        &RendererImpl::runWireframes,     &RendererImpl::runCoverage,     &RendererImpl::runDisplay,
+        &RendererImpl::runImport,         &RendererImpl::runGlassOutline, &RendererImpl::runDepthPrepass};
     return kRun[std::size_t(id)];
 }
 
@@ -53,8 +55,22 @@ void RendererImpl::runPasses(std::span<PassDecl const> passes, FrameRecord& fram
 }
 
 void RendererImpl::runForwardShading(FrameRecord& frame, PassRun const& r) {
-    forwardPass({scene, lights, shaders.get(ProgramId::Forward), {*r.fbo, r.io.texture(r.decl.color.front())}},
-                {MaterialFilter::Opaque, frame.f.viewProj, frame.shading, frame.f.settings.normalMaps, r.decl.states});
+    // forward+ (its declaration samples the tile lists): the list-reading build, over the binning grid.
+    bool const listed =
+        std::find(r.decl.samples.begin(), r.decl.samples.end(), Resource::TileBins) != r.decl.samples.end();
+    forwardPass({scene,
+                 lights,
+                 shaders.get(listed ? ProgramId::ForwardPlus : ProgramId::Forward),
+                 {*r.fbo, r.io.texture(r.decl.color.front())},
+                 listed ? &tileBins : nullptr},
+                {MaterialFilter::Opaque, frame.f.viewProj, frame.shading, frame.f.settings.normalMaps, r.decl.states,
+                 tileGrid(targets.width, targets.height).tilesX});
+}
+
+// forward+: the opaque surfaces' depth alone, drawn with the geometry program into the lit
+// target's depth (colour writes off in its draw state; the alpha mask applied as in the G-buffer).
+void RendererImpl::runDepthPrepass(FrameRecord& frame, PassRun const& r) {
+    geometryPass({scene, shaders.get(ProgramId::Geometry), *r.fbo}, {frame.f.viewProj, false, r.decl.states});
 }
 
 void RendererImpl::runForward(FrameRecord& frame, PassRun const& r) {

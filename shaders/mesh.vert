@@ -15,6 +15,9 @@ out vec3 vNormal;
 out vec2 vUV;
 out vec4 vTangent;
 out vec2 vUV1;  // read by material.glsl
+// The same position in every program that draws a mesh: forward+ shades where its depth pre-pass
+// (another program) left exactly this depth.
+invariant gl_Position;
 
 void main() {
     vec4 world = uModel * vec4(aPosition, 1.0);

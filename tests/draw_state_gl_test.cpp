@@ -209,7 +209,7 @@ TEST_F(DrawStateGlTest, EveryPassOfEveryCombinationDrawsUnderItsDeclaredState) {
                             for (std::string const& f : checkFrame({inside, lights_, s}, label + " inside"))
                                 failures.push_back(f);
                         }
-    EXPECT_EQ(frames, 4 * 5 * 5 * 2 * 3 * 3);
+    EXPECT_EQ(frames, 4 * int(kLightingModeNames.size()) * 5 * 2 * 3 * 3);
     EXPECT_GT(rendered, 4 * (5 + 4) * 2 * 3) << "at least every cull mode of the volumes mode";
     std::string all;
     for (std::size_t i = 0; i < failures.size() && i < 20; ++i) all += failures[i] + "\n";
@@ -217,7 +217,7 @@ TEST_F(DrawStateGlTest, EveryPassOfEveryCombinationDrawsUnderItsDeclaredState) {
     // Every raster pass that draws was checked, the volumes' every group among them.
     // (The default scene has no blended surface: the forward pass draws nothing there.)
     for (char const* pass : {"forward_shading", "geometry", "lighting", "light_combine", "depth_copy", "light_cubes",
-                             "wireframes", "coverage", "display"})
+                             "wireframes", "coverage", "display", "depth_prepass"})
         EXPECT_GT(checked_[pass], 0) << pass << " drew nothing that was checked";
 }
 

@@ -61,7 +61,7 @@ TEST(FramePasses, NoCombinationSamplesWhatItDrawsInto) {
                                         << kDepthCopyNames[copy] << (imported ? " imported" : "");
                                     ++frames;
                                 }
-    EXPECT_EQ(frames, 5 * 4 * 5 * 2 * 3 * 4 * 2 * 2);
+    EXPECT_EQ(frames, int(kLightingModeNames.size()) * 4 * 5 * 2 * 3 * 4 * 2 * 2);
 }
 
 // Re-lighting an imported G-buffer: the import pass writes the layout's targets in the geometry
@@ -236,7 +236,7 @@ TEST(FramePasses, OverlaysDrawOnTheDisplayAgainstTheSceneDepthAndLeaveTheLitImag
             EXPECT_EQ(cubes.depthStencil, Resource::LitDepth) << name;
             EXPECT_TRUE(cubes.depthWrite) << name;
             // The wireframes test against the scene's depth with or without the copy step.
-            bool const forward = s.mode == LightingMode::Forward;
+            bool const forward = shadesForward(s.mode);
             EXPECT_EQ(wires.depthStencil, forward ? Resource::LitDepth : Resource::GBufferDepth) << name;
             EXPECT_FALSE(wires.depthWrite) << name;
             for (PassDecl const& p : passes) {
@@ -250,6 +250,45 @@ TEST(FramePasses, OverlaysDrawOnTheDisplayAgainstTheSceneDepthAndLeaveTheLitImag
     s.lightCubes = true;
     EXPECT_EQ(names(framePasses(s, true)),
               (std::vector<std::string>{"geometry", "lighting", "depth_copy", "forward", "display"}));
+}
+
+TEST(FramePasses, ForwardPlusIsADepthPrepassTheTiledListsAndAForwardPassAtThatDepth) {
+    PipelineSettings s;
+    s.mode = LightingMode::ForwardPlus;
+    s.lightCubes = false;
+    s.accumulation = LightAccumulation::Split;  // refused, as forward refuses it: no G-buffer to combine
+    std::vector<PassDecl> const passes = framePasses(s, false);
+    EXPECT_EQ(names(passes),
+              (std::vector<std::string>{"depth_prepass", "light_lists", "forward_shading", "forward", "display"}));
+    PassDecl const& pre = find(passes, PassId::DepthPrepass);
+    EXPECT_EQ(pre.color, std::vector<Resource>{Resource::Lighting});
+    EXPECT_EQ(pre.depthStencil, Resource::LitDepth);
+    ASSERT_EQ(pre.states.size(), 1u);
+    EXPECT_FALSE(pre.states[0].colorWrite);
+    EXPECT_TRUE(pre.states[0].depthWrite);
+    EXPECT_EQ(pre.states[0].depthTest, DepthTest::Less);
+    // No G-buffer: every attachment cleared, so the viewers show it unused.
+    for (Resource r : {Resource::GBufferPosition, Resource::GBufferNormal, Resource::GBufferDepth, Resource::Lighting,
+                       Resource::LitDepth, Resource::DiffuseLight})
+        EXPECT_NE(std::find(pre.clears.begin(), pre.clears.end(), r), pre.clears.end()) << resourceName(r);
+    // The lists are binned from the pre-pass depth, and the shading reads them.
+    PassDecl const& lists = find(passes, PassId::LightLists);
+    EXPECT_EQ(lists.kind, PassKind::Compute);
+    EXPECT_EQ(lists.samples.front(), Resource::LitDepth);
+    EXPECT_EQ(lists.writes, std::vector<Resource>{Resource::TileBins});
+    PassDecl const& shading = find(passes, PassId::ForwardShading);
+    EXPECT_NE(std::find(shading.samples.begin(), shading.samples.end(), Resource::TileBins), shading.samples.end());
+    ASSERT_EQ(shading.states.size(), 1u);
+    EXPECT_EQ(shading.states[0].depthTest, DepthTest::LessEqual);
+    EXPECT_FALSE(shading.states[0].depthWrite);
+    EXPECT_TRUE(countsAsLighting(PassId::DepthPrepass));
+    EXPECT_TRUE(feedbackLoops(passes).empty());
+    // Its heat views count the frame's own lists over the pre-pass depth.
+    s.view = DebugView::Heatmap;
+    std::vector<PassDecl> const heat = framePasses(s, false);
+    PassDecl const& counts = find(heat, PassId::Coverage);
+    EXPECT_EQ(counts.kind, PassKind::Compute);
+    EXPECT_EQ(counts.samples.front(), Resource::LitDepth);
 }
 
 TEST(FramePasses, AStopOutsideTheFrameIsOneSentenceNamingItsPasses) {

@@ -168,7 +168,8 @@ TEST(PipelineFields, TheDepthCopyIsFoundUnderItsOldNameToo) {
 
 TEST(PipelineFields, ValuesTextListsWhatAFieldTakes) {
     EXPECT_EQ(fieldValuesText(*findPipelineField("depth_copy")), "one of blit, shader or off");
-    EXPECT_EQ(fieldValuesText(*findPipelineField("mode")), "one of quad, volumes, tiled, forward or clustered");
+    EXPECT_EQ(fieldValuesText(*findPipelineField("mode")),
+              "one of quad, volumes, tiled, forward, clustered or forward+");
     EXPECT_EQ(fieldValuesText(*findPipelineField("exposure")), "a number from 0.05 to 16");
     EXPECT_EQ(fieldValuesText(*findPipelineField("normal_maps")), "0 or 1 (or off or on)");
 }

@@ -150,6 +150,7 @@ PassDecl lightingPass(PipelineSettings const& s, bool split) {
             return computePass(PassId::Lighting, plus(gbufferSamples(d), {R::Lights, R::ClusterLists}), lit);
         case LightingMode::Quad:
         case LightingMode::Forward:
+        case LightingMode::ForwardPlus:
             break;
     }
     PassDecl p = declare(PassId::Lighting);  // full screen into litFbo, or splitFbo (no depth-stencil)
@@ -216,6 +217,8 @@ PassDecl glassOutlinePass(Resource target) {
 PassDecl coverageCounts(PipelineSettings const& s) {
     GBufferLayoutDesc const& d = layoutDesc(s.layout);
     std::vector<Resource> const gbuffer = plus(gbufferSamples(d), {R::GBufferDepth});  // and tile depth bounds
+    if (s.mode == LightingMode::ForwardPlus)  // the frame's own lists, counted over its pre-pass depth
+        return computePass(PassId::Coverage, {R::LitDepth, R::Lights, R::TileBins}, {R::Coverage});
     if (s.view == DebugView::TileLights || s.mode == LightingMode::Tiled)
         return computePass(PassId::Coverage, plus(gbuffer, {R::Lights}), {R::Coverage, R::TileBins});
     if (s.mode == LightingMode::Clustered)
@@ -235,7 +238,7 @@ PassDecl coverageCounts(PipelineSettings const& s) {
 
 PipelineSettings importedSettings(PipelineSettings s, std::string* why) {
     std::string reasons;
-    if (s.mode == LightingMode::Forward) {
+    if (shadesForward(s.mode)) {
         s.mode = LightingMode::Quad;
         reasons = "forward shading draws the scene's meshes and an imported G-buffer has none, so the quad pass ran";
     }
@@ -250,17 +253,32 @@ PipelineSettings importedSettings(PipelineSettings s, std::string* why) {
 
 std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bool imported) {
     GBufferLayoutDesc const& d = layoutDesc(s.layout);
-    bool const forward = s.mode == LightingMode::Forward;
+    bool const forward = shadesForward(s.mode);
     bool const split = s.accumulation == LightAccumulation::Split && !forward;
     std::vector<DrawState> const opaque =
         sceneStates("opaque surfaces", "double-sided opaque surfaces", true, Blend::Off);
     std::vector<PassDecl> out;
-    if (forward) {
+    if (s.mode == LightingMode::ForwardPlus) {
+        // The lit target's depth first (no colour), the tiles' lists binned from it, then the
+        // surfaces shaded where they equal that depth, each fragment with its tile's list.
+        DepthTest const less = DepthTest::Less, lessEqual = DepthTest::LessEqual;
+        out.push_back(scenePass(
+            PassId::DepthPrepass, {R::Materials},
+            {state("depth only", less, true, Blend::Off, FaceCull::Back, StencilUse::Off, false),
+             state("double-sided depth only", less, true, Blend::Off, FaceCull::Off, StencilUse::Off, false)}));
+        out.push_back(computePass(PassId::LightLists, {R::LitDepth, R::Lights}, {R::TileBins}));
+        out.push_back(scenePass(
+            PassId::ForwardShading, {R::Materials, R::Lights, R::TileBins},
+            {state("opaque surfaces, pre-pass depth", lessEqual, false, Blend::Off, FaceCull::Back),
+             state("double-sided opaque surfaces, pre-pass depth", lessEqual, false, Blend::Off, FaceCull::Off)}));
+    } else if (forward) {
         out.push_back(scenePass(PassId::ForwardShading, {R::Materials, R::Lights}, opaque));
-        out.back().stencilWrite = true;  // cleared with the rest
-        // No G-buffer in forward mode: cleared, so the viewers show that it is unused.
-        for (GBufferAttachmentDesc const& a : d.attachments()) out.back().clears.push_back(slotResource(a.slot));
-        out.back().clears = plus(out.back().clears, {R::Lighting, R::LitDepth});
+    }
+    if (forward) {
+        out.front().stencilWrite = true;  // cleared with the rest
+        // No G-buffer in the forward modes: cleared, so the viewers show that it is unused.
+        for (GBufferAttachmentDesc const& a : d.attachments()) out.front().clears.push_back(slotResource(a.slot));
+        out.front().clears = plus(out.front().clears, {R::Lighting, R::LitDepth});
     } else {
         PassDecl g = declare(imported ? PassId::Import : PassId::Geometry);
         g.samples = {imported ? R::Imported : R::Materials};

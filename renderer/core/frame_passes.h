@@ -32,10 +32,12 @@ enum class PassId {
     Display,         // tonemap or debug view into the display image (the overlays follow it)
     Import,          // re-lighting: an imported G-buffer written into the layout's targets, instead of geometry
     GlassOutline,    // overlay: hatches where blended surfaces are, on the display or a view (any view)
+    DepthPrepass,    // forward+: the opaque surfaces' depth alone, before the light lists and the shading
 };
-inline constexpr std::array<std::string_view, 14> kPassNames{
-    "forward_shading", "geometry",    "light_lists", "volume_depth", "lighting", "light_combine", "depth_copy",
-    "forward",         "light_cubes", "wireframes",  "coverage",     "display",  "import",        "glass_outline"};
+inline constexpr std::array<std::string_view, 15> kPassNames{
+    "forward_shading", "geometry",   "light_lists", "volume_depth",  "lighting",
+    "light_combine",   "depth_copy", "forward",     "light_cubes",   "wireframes",
+    "coverage",        "display",    "import",      "glass_outline", "depth_prepass"};
 
 inline std::string_view passName(PassId id) {
     return enumName(kPassNames, id);
@@ -45,10 +47,11 @@ inline std::optional<PassId> passFromName(std::string_view name) {
 }
 
 // The lighting work of a frame (bench's lighting figure): shading the lights, and the passes that
-// exist only to shade them (light lists, the volumes' depth copy, the split combine).
+// exist only to shade them (light lists, the volumes' depth copy, the split combine, forward+'s
+// depth pre-pass: forward's figure includes its rasterising too).
 constexpr bool countsAsLighting(PassId id) {
     return id == PassId::ForwardShading || id == PassId::LightLists || id == PassId::VolumeDepth ||
-           id == PassId::Lighting || id == PassId::LightCombine;
+           id == PassId::Lighting || id == PassId::LightCombine || id == PassId::DepthPrepass;
 }
 
 // The passes whose fragments FrameStats::fragmentInvocations counts: the shading of the lights.

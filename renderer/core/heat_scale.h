@@ -80,6 +80,7 @@ inline std::string_view heatQuantity(DebugView view, LightingMode mode) {
         case LightingMode::Volumes:
             return "volumes per pixel";
         case LightingMode::Tiled:
+        case LightingMode::ForwardPlus:
             return "lights per tile";
         case LightingMode::Clustered:
             return "lights per cluster";

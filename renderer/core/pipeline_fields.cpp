@@ -52,13 +52,15 @@ bool withWireframes(PipelineSettings const& s) {
 }
 
 // One line per choice, shown on hover over its radio button: the editor is a teaching tool.
-constexpr std::array<std::string_view, 5> kModeHelp{
+constexpr std::array<std::string_view, 6> kModeHelp{
     "quad: one full-screen pass evaluates every light at every pixel (cost = pixels x lights)",
     "volumes: one sphere per light, scaled to its radius; only covered pixels are shaded",
     "tiled: a compute pass builds a light list per 16x16 tile, then shades each pixel with its tile's lights",
     "forward: no G-buffer; every object is shaded with every light while it is drawn",
     "clustered: the GPU lists the lights of each 16x16 tile's exponential depth slices; each pixel shades with its "
     "slice's list",
+    "forward+: a depth pre-pass, tiled's light list per 16x16 tile, then a forward pass whose fragments shade with "
+    "their tile's lights only (no G-buffer)",
 };
 constexpr std::array<std::string_view, 5> kCullHelp{
     "back: cull back faces; the volume vanishes when the camera is inside it",

@@ -9,7 +9,8 @@
 
 namespace gbl {
 
-enum class LightingMode { Quad, Volumes, Tiled, Forward, Clustered };
+// ForwardPlus: a depth pre-pass, tiled's light lists, then forward shading reading its tile's list.
+enum class LightingMode { Quad, Volumes, Tiled, Forward, Clustered, ForwardPlus };
 enum class CullMode { Back, Front, None, Flip, Stencil };
 // How the G-buffer depth reaches the lit target before the forward pass: the depth copy
 // (setting `depth_copy`, pass `depth_copy`, option --depth-copy).
@@ -90,7 +91,8 @@ struct PipelineSettings {
 };
 
 // Names used on the command line and in session files, in enum order.
-inline constexpr std::array<std::string_view, 5> kLightingModeNames{"quad", "volumes", "tiled", "forward", "clustered"};
+inline constexpr std::array<std::string_view, 6> kLightingModeNames{"quad",    "volumes",   "tiled",
+                                                                    "forward", "clustered", "forward+"};
 inline constexpr std::array<std::string_view, 5> kCullModeNames{"back", "front", "none", "flip", "stencil"};
 inline constexpr std::array<std::string_view, 3> kDepthCopyNames{"blit", "shader", "off"};
 inline constexpr std::array<std::string_view, 3> kTonemapNames{"exposure", "reinhard", "clamp"};
@@ -106,7 +108,13 @@ inline constexpr std::array<std::string_view, 19> kDebugViewNames{
 // tile or cluster lists are sized to it): there the learnopengl shading is cut at the radius too,
 // as LearnOpenGL's own light-volume version is; quad and forward shade every light everywhere.
 constexpr bool cutsAtRadius(LightingMode m) {
-    return m == LightingMode::Volumes || m == LightingMode::Tiled || m == LightingMode::Clustered;
+    return m == LightingMode::Volumes || m == LightingMode::Tiled || m == LightingMode::Clustered ||
+           m == LightingMode::ForwardPlus;
+}
+
+// Whether a mode shades while drawing the meshes, keeping no G-buffer (forward and forward+).
+constexpr bool shadesForward(LightingMode m) {
+    return m == LightingMode::Forward || m == LightingMode::ForwardPlus;
 }
 
 template <class Enum, std::size_t N>

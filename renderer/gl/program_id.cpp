@@ -68,6 +68,11 @@ std::span<ProgramInfo const> programTable() {
         {ProgramId::ClusterBuild, G::Clustered, {"cluster_build", {{GL_COMPUTE_SHADER, "cluster_build.comp"}}, {}}},
         {ProgramId::ClusterBin, G::Clustered, {"cluster_bin", {{GL_COMPUTE_SHADER, "tile_bin.comp"}}, {}}},
         {ProgramId::ClusterShade, G::Clustered, {"cluster_shade", {{GL_COMPUTE_SHADER, "cluster_shade.comp"}}, {}}},
+        {ProgramId::ForwardPlus,
+         G::ForwardPlus,
+         {"forward_plus",
+          {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "forward.frag"}},
+          {"FORWARD_TILE_LISTS"}}},
     };
     static_assert(std::size(table) == kProgramCount, "programTable(): one row per ProgramId, in enum order");
     return table;

@@ -39,11 +39,13 @@ enum class ProgramId {
     ClusterBuild,
     ClusterBin,  // the same binning pass before the cluster lists
     ClusterShade,
+    // forward+ mode (with the tiled group's TileDepth and TileBin)
+    ForwardPlus,  // forward.frag reading its tile's list (FORWARD_TILE_LISTS)
 };
-inline constexpr std::size_t kProgramCount = std::size_t(ProgramId::ClusterShade) + 1;
+inline constexpr std::size_t kProgramCount = std::size_t(ProgramId::ForwardPlus) + 1;
 
 // What needs the program: every frame (core), or one optional group that is built on first use.
-enum class ProgramGroup { Core, Volumes, Tiled, Clustered };
+enum class ProgramGroup { Core, Volumes, Tiled, Clustered, ForwardPlus };
 
 struct ProgramDesc {
     std::string name;                                    // e.g. "geometry", for logs and labels

@@ -6,7 +6,8 @@ namespace gbl {
 CoverageOutput coveragePass(CoverageInput const& in, CoverageConfig const& c) {
     glBindFramebuffer(GL_FRAMEBUFFER, in.target.id());
     glViewport(0, 0, c.tiled.width, c.tiled.height);  // cleared by the executor (PassDecl::clears)
-    bool const tiles = c.view == DebugView::TileLights || c.mode == LightingMode::Tiled;
+    bool const tiles =
+        c.view == DebugView::TileLights || c.mode == LightingMode::Tiled || c.mode == LightingMode::ForwardPlus;
     if (tiles) {
         if (in.tiled && in.tiledBin && in.bins) {
             LightingTiledConfig t = c.tiled;

@@ -6,6 +6,7 @@
 #include "gpu/draw_state_gl.h"
 #include "gpu/gpu_scene.h"
 #include "passes/shading_inputs.h"
+#include "passes/tile_bins.h"
 
 #include <span>
 
@@ -16,6 +17,8 @@ struct ForwardInput {
     LightBuffer const& lights;
     gl::Program const& program;  // ProgramId::Forward
     LitTarget target;            // Opaque clears it first; Blended blends over it
+    // forward+ (program ProgramId::ForwardPlus): the tiles' candidate lists, binned this frame.
+    TileBins const* tiles = nullptr;
 };
 struct ForwardConfig {
     MaterialFilter filter = MaterialFilter::Opaque;
@@ -24,6 +27,7 @@ struct ForwardConfig {
     bool normalMaps = true;
     std::span<DrawState const> states;  // declared: single-sided, double-sided materials (drawScene)
     bool backToFront = false;           // drawn farthest object first (blended surfaces: the over operator)
+    int tilesX = 0;                     // forward+: tiles per row of the binning grid
 };
 
 LightingOutput forwardPass(ForwardInput const& in, ForwardConfig const& config);

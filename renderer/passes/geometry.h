@@ -28,4 +28,7 @@ struct GeometryOutput {
 
 GeometryOutput geometryPass(GeometryInput const& in, GeometryConfig const& config);
 
+// forward+'s depth pre-pass is this pass into the lit target's framebuffer, under a declared state
+// that writes depth and no colour (core/frame_passes.cpp).
+
 }  // namespace gbl

@@ -297,8 +297,9 @@ std::optional<int> startEditor(Editor& editor) {
     // builds a mode's programs, and clustered waits until it is chosen); in the browser, where no
     // compute mode builds, the menu bar keeps the scene's line and Help > About this browser lists
     // them with the page's other limits.
-    for (LightingMode mode : {LightingMode::Volumes, LightingMode::Tiled, LightingMode::Clustered}) {
-        if (!ui::kInBrowser && mode == LightingMode::Clustered) continue;
+    for (LightingMode mode :
+         {LightingMode::Volumes, LightingMode::Tiled, LightingMode::Clustered, LightingMode::ForwardPlus}) {
+        if (!ui::kInBrowser && (mode == LightingMode::Clustered || mode == LightingMode::ForwardPlus)) continue;
         std::optional<std::string> const why = editor.renderer->modeUnavailable(mode);
         if (!why) continue;
         if (!ui::kInBrowser) {

@@ -95,7 +95,7 @@ ValueCheck checkStoredValue(glm::vec3 stored, PixelBreakdown const& b, PipelineS
     check.error = largestError(stored, b.total, &check.allowed);
     check.agrees = check.error <= check.allowed;
     if (check.agrees) return check;
-    if (settings.mode == LightingMode::Forward) {
+    if (shadesForward(settings.mode)) {
         check.cause = "forward mode has no G-buffer: the surface the CPU shades is not the one forward shaded";
         return check;
     }
@@ -125,7 +125,7 @@ ValueCheck checkStoredValue(glm::vec3 stored, PixelBreakdown const& b, PipelineS
 }
 
 std::string noBreakdownNote(PixelSample const& sample, PipelineSettings const& settings) {
-    if (settings.mode == LightingMode::Forward && !sample.covered) {
+    if (shadesForward(settings.mode) && !sample.covered) {
         char buf[200];
         std::snprintf(buf, sizeof buf,
                       "forward mode has no G-buffer, so there is no surface to break down (lit value stored: %.4f "

@@ -204,7 +204,8 @@ std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointL
                 v.evaluations = 1;
                 v.why = "forward: every light is tested at every fragment";
                 break;
-            case LightingMode::Tiled: {
+            case LightingMode::Tiled:
+            case LightingMode::ForwardPlus: {  // forward+ reads the same tiles' lists
                 glm::vec3 const centreView = glm::vec3(view * glm::vec4(light.position, 1.0f));
                 // Spots: then the cone against the sphere around the tile's depth range.
                 glm::vec4 const tileSphere = frustumPieceSphere(

@@ -133,7 +133,7 @@ void noGBufferNote(glm::vec4 rect) {
     ImDrawList* dl = ImGui::GetWindowDrawList();
     ImVec2 const min(rect.x, rect.y), max(rect.x + rect.z, rect.y + rect.w);
     dl->AddRectFilled(min, max, IM_COL32(24, 24, 28, 255));
-    char const* text = "forward mode writes no G-buffer";
+    char const* text = "forward and forward+ write no G-buffer";
     float const wrap = std::max(60.0f, rect.z - 12.0f);
     ImVec2 const size = ImGui::CalcTextSize(text, nullptr, false, wrap);
     ImVec2 const p((min.x + max.x - size.x) * 0.5f, (min.y + max.y - size.y) * 0.5f);

@@ -212,8 +212,10 @@ void drawOverview(OverviewState& overview, PipelineSettings const& settings, std
         std::string_view const name = overviewLabel(views[i]);
         dl->AddText(ImVec2(r.x + 2.0f, r.y - label + 1.0f), IM_COL32(235, 235, 235, 255), name.data(),
                     name.data() + name.size());
-        if (settings.mode == LightingMode::Forward && views[i] != DebugView::Final)
-            centredMessage(a, b, "forward mode: no G-buffer");
+        if (shadesForward(settings.mode) && views[i] != DebugView::Final)
+            centredMessage(
+                a, b,
+                settings.mode == LightingMode::Forward ? "forward mode: no G-buffer" : "forward+ mode: no G-buffer");
         else if (i < textures.size() && textures[i] != 0)
             dl->AddImage(toImTexture(textures[i]), a, b, ImVec2(0, 1), ImVec2(1, 0));
         else
@@ -339,7 +341,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         "viewport-image", avail,
         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
     ImVec2 const imageEnd(origin.x + avail.x, origin.y + avail.y);
-    bool const noGBuffer = settings.mode == LightingMode::Forward && gbufferView(settings.view);
+    bool const noGBuffer = shadesForward(settings.mode) && gbufferView(settings.view);
     if (overview.on) {
         drawOverview(overview, settings, overviewTextures, origin, avail, textureSize);
     } else if (abOn && ab->ab.view == AbView::Diff && ab->diffTexture != 0) {

@@ -1,0 +1,163 @@
+// forward+ (a depth pre-pass, the tiled light lists, forward shading over its tile's list) against
+// forward, which shades every light at every fragment: the same image, the camera inside a light's
+// volume included; its declared passes run, its lists are counted on the shared heat scale.
+#include "core/light_math.h"
+#include "gl_fixture.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+using namespace gbl;
+
+namespace {
+
+constexpr int kW = 320, kH = 180;
+
+// fp16 rounding of the lit target (RGBA16F): a relative error of up to 2^-11 per stored value.
+constexpr double kHalfUlp = 1.0 / 2048.0;
+
+struct Diff {
+    double maxAbs = 0.0;
+    double meanValue = 0.0;
+    int pixelsOver = 0;
+};
+
+// forward+ adds the same lights as forward at each fragment (every light that can reach it is in its
+// tile's list; the others add zero in forward), in fp32, in another order, and stores once: one fp16
+// rounding each side plus slack for the order, the bound tiled is held to against quad.
+Diff compare(FloatImage const& a, FloatImage const& ref) {
+    Diff d;
+    EXPECT_EQ(a.width, ref.width);
+    EXPECT_EQ(a.height, ref.height);
+    double sum = 0.0;
+    for (int y = 0; y < ref.height; ++y)
+        for (int x = 0; x < ref.width; ++x) {
+            bool over = false;
+            for (int c = 0; c < 3; ++c) {
+                double const va = a.at(x, y, c), vr = ref.at(x, y, c);
+                double const e = std::abs(va - vr);
+                d.maxAbs = std::max(d.maxAbs, e);
+                sum += std::abs(vr);
+                if (e > 4 * kHalfUlp * std::abs(vr) + 1e-5) over = true;
+            }
+            d.pixelsOver += over;
+        }
+    d.meanValue = sum / (double(ref.width) * ref.height * 3);
+    return d;
+}
+
+std::string describe(Diff const& d) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "max abs %.3g (mean value %.3g), pixels over bound %d", d.maxAbs, d.meanValue,
+                  d.pixelsOver);
+    return buf;
+}
+
+PipelineSettings settingsFor(LightingMode mode) {
+    PipelineSettings s;
+    s.mode = mode;
+    s.lightCubes = false;  // the lighting alone
+    return s;
+}
+
+class ForwardPlusGlTest : public test::CourtyardGlTest {
+protected:
+    ForwardPlusGlTest() : CourtyardGlTest(kW, kH, true) {}
+
+    FloatImage lighting(PipelineSettings const& s, Camera const& cam, FrameStats* out = nullptr) {
+        FrameStats const st = renderer_->render({cam, lights_, s, true});
+        EXPECT_EQ(st.modeUsed, s.mode) << st.fallbackReason;
+        EXPECT_EQ(st.glErrors, 0u);
+        if (out) *out = st;
+        return renderer_->readAttachment(Attachment::Lighting);
+    }
+
+    void expectMatchesForward(Camera const& cam, std::string const& where) {
+        FloatImage const forward = lighting(settingsFor(LightingMode::Forward), cam);
+        FloatImage const plus = lighting(settingsFor(LightingMode::ForwardPlus), cam);
+        Diff const d = compare(plus, forward);
+        EXPECT_GT(d.meanValue, 0.01) << where << ": the frame should be visibly lit";
+        EXPECT_EQ(d.pixelsOver, 0) << where << ": " << describe(d);
+    }
+
+    // Camera inside light 0's sphere, looking at the floor under it (as light_modes_gl_test's).
+    Camera insideCamera() const {
+        PointLight const& l = lights_[0];
+        Camera c = camera_;
+        c.position = l.position + glm::vec3(0.3f, 0.4f, 0.3f);
+        c.lookAt(glm::vec3(l.position.x, 0.0f, l.position.z) + glm::vec3(0.0f, 0.0f, -2.0f));
+        return c;
+    }
+
+    // The coverage counts' first channel (lights in the pixel's tile), over the frame.
+    std::vector<float> tileCounts() {
+        FloatImage const img = renderer_->readAttachment(Attachment::Coverage);
+        std::vector<float> out;
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x) out.push_back(img.at(x, y, 0));
+        return out;
+    }
+};
+
+}  // namespace
+
+TEST_F(ForwardPlusGlTest, MatchesForwardFromTheTestCamera) {
+    expectMatchesForward(camera_, "test camera");
+}
+
+TEST_F(ForwardPlusGlTest, MatchesForwardFromTheDefaultSceneCamera) {
+    expectMatchesForward(scene_.camera.value_or(Camera{}), "scene camera");
+}
+
+TEST_F(ForwardPlusGlTest, MatchesForwardWithTheCameraInsideAVolume) {
+    Camera const cam = insideCamera();
+    ASSERT_LT(glm::length(cam.position - lights_[0].position), lightRadius(lights_[0]).radius);
+    expectMatchesForward(cam, "inside light 0");
+}
+
+TEST_F(ForwardPlusGlTest, RunsItsDeclaredPassesAndDrawsTheSceneTwice) {
+    FrameStats st;
+    lighting(settingsFor(LightingMode::ForwardPlus), camera_, &st);
+    std::vector<std::string> ran;
+    for (PassCalls const& c : st.calls) ran.push_back(c.name);
+    EXPECT_EQ(ran, (std::vector<std::string>{"depth_prepass", "light_lists", "forward_shading", "forward", "display"}));
+    auto const calls = [&](std::string const& name) {
+        auto const it =
+            std::find_if(st.calls.begin(), st.calls.end(), [&](PassCalls const& c) { return c.name == name; });
+        return it == st.calls.end() ? PassCalls{} : *it;
+    };
+    // The opaque scene drawn once for depth and once shaded; the lists dispatched in between.
+    EXPECT_GT(calls("depth_prepass").draws, 0u);
+    EXPECT_EQ(calls("depth_prepass").draws, calls("forward_shading").draws);
+    EXPECT_GT(calls("light_lists").dispatches, 0u);
+    EXPECT_EQ(calls("light_lists").draws, 0u);
+}
+
+TEST_F(ForwardPlusGlTest, CountsTheSameLightsPerTileAsTiled) {
+    // Both bin over the same depth (the G-buffer's, or the pre-pass's) and count with the tiled
+    // pass's test: the heat views agree tile for tile.
+    PipelineSettings s = settingsFor(LightingMode::Tiled);
+    s.view = DebugView::TileLights;
+    lighting(s, camera_);
+    std::vector<float> const tiled = tileCounts();
+    s.mode = LightingMode::ForwardPlus;
+    lighting(s, camera_);
+    std::vector<float> const plus = tileCounts();
+    ASSERT_EQ(plus.size(), tiled.size());
+    float most = 0.0f;
+    int differ = 0;
+    for (std::size_t i = 0; i < plus.size(); ++i) {
+        most = std::max(most, plus[i]);
+        differ += plus[i] != tiled[i];
+    }
+    EXPECT_GT(most, 1.0f) << "some tile should list several lights";
+    EXPECT_EQ(differ, 0);
+    // The heat map of forward+ counts the same lists.
+    s.view = DebugView::Heatmap;
+    lighting(s, camera_);
+    EXPECT_EQ(tileCounts(), plus);
+}
