@@ -64,7 +64,7 @@ void RendererImpl::runForwardShading(FrameRecord& frame, PassRun const& r) {
                  {*r.fbo, r.io.texture(r.decl.color.front())},
                  listed ? &tileBins : nullptr},
                 {MaterialFilter::Opaque, frame.f.viewProj, frame.shading, frame.f.settings.normalMaps, r.decl.states,
-                 tileGrid(targets.width, targets.height).tilesX});
+                 false, tileGrid(targets.width, targets.height).tilesX});
 }
 
 // forward+: the opaque surfaces' depth alone, drawn with the geometry program into the lit
