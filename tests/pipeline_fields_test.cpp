@@ -30,8 +30,8 @@ TEST(PipelineFields, OneEntryPerMemberEachEditingItsOwn) {
     // core/pipeline_fields.cpp, then update the count here.
     [[maybe_unused]] auto const& [mode, cull, depthCopy, tonemap, view, layout, accumulation, shading, lightCubes,
                                   volumeWireframes, wireframesSelectedOnly, normalMaps, ambient, exposure, shininess,
-                                  volumeScale] = PipelineSettings{};
-    constexpr std::size_t kMembers = 16;
+                                  volumeScale, msaa, msaaLighting] = PipelineSettings{};
+    constexpr std::size_t kMembers = 18;
     std::span<PipelineField const> const fields = pipelineFields();
     ASSERT_EQ(fields.size(), kMembers);
 

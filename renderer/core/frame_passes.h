@@ -31,10 +31,15 @@ enum class PassId {
     Coverage,        // the counts behind the heat map and lights-per-tile views
     Display,         // tonemap or debug view into the display image (the overlays follow it)
     Import,          // re-lighting: an imported G-buffer written into the layout's targets, instead of geometry
+    MsaaEdges,       // msaa: complex pixels (samples that differ) marked in the stencil and the complex mask
+    MsaaComplex,     // msaa edges: the complex pixels lit per sample (the lighting pass lit the others once)
+    MsaaResolve,     // msaa: the multisampled G-buffer resolved into the layout's targets, for what follows
 };
-inline constexpr std::array<std::string_view, 13> kPassNames{
-    "forward_shading", "geometry",    "light_lists", "volume_depth", "lighting", "light_combine", "depth_copy",
-    "forward",         "light_cubes", "wireframes",  "coverage",     "display",  "import"};
+inline constexpr std::array<std::string_view, 16> kPassNames{
+    "forward_shading", "geometry", "light_lists", "volume_depth", "lighting", "light_combine", "depth_copy", "forward",
+    "light_cubes", "wireframes", "coverage", "display", "import",
+    // msaa (docs/msaa.md)
+    "msaa_edges", "lighting_complex", "msaa_resolve"};
 
 inline std::string_view passName(PassId id) {
     return enumName(kPassNames, id);
@@ -47,7 +52,7 @@ inline std::optional<PassId> passFromName(std::string_view name) {
 // exist only to shade them (light lists, the volumes' depth copy, the split combine).
 constexpr bool countsAsLighting(PassId id) {
     return id == PassId::ForwardShading || id == PassId::LightLists || id == PassId::VolumeDepth ||
-           id == PassId::Lighting || id == PassId::LightCombine;
+           id == PassId::Lighting || id == PassId::LightCombine || id == PassId::MsaaEdges || id == PassId::MsaaComplex;
 }
 
 // The passes whose fragments FrameStats::fragmentInvocations counts: the shading of the lights.
@@ -76,8 +81,15 @@ enum class Resource {
     ClusterLists,     // storage buffers and list texture of the clustered mode
     Imported,         // the textures of an imported G-buffer (Renderer::setImportedGBuffer)
     View,             // a view's own image (Renderer::drawView's ViewTarget), in place of the display
+    // msaa (RenderTargets::msaa): the multisampled G-buffer, and the complex pixels' mask.
+    MsaaPosition,
+    MsaaNormal,
+    MsaaAlbedoSpec,
+    MsaaEmissive,
+    MsaaDepth,
+    ComplexMask,
 };
-inline constexpr std::array<std::string_view, 19> kResourceNames{"gbuffer.position",
+inline constexpr std::array<std::string_view, 25> kResourceNames{"gbuffer.position",
                                                                  "gbuffer.normal",
                                                                  "gbuffer.albedo_spec",
                                                                  "gbuffer.emissive",
@@ -95,7 +107,13 @@ inline constexpr std::array<std::string_view, 19> kResourceNames{"gbuffer.positi
                                                                  "tile_bins",
                                                                  "cluster_lists",
                                                                  "imported",
-                                                                 "view"};
+                                                                 "view",
+                                                                 "msaa.position",
+                                                                 "msaa.normal",
+                                                                 "msaa.albedo_spec",
+                                                                 "msaa.emissive",
+                                                                 "msaa.depth",
+                                                                 "complex_mask"};
 
 inline std::string_view resourceName(Resource r) {
     return enumName(kResourceNames, r);
@@ -122,6 +140,9 @@ enum class StencilUse {
     Off,
     Mark,         // both faces, depth failures: back +1, front -1
     ShadeMarked,  // passes where the mark is 1, and zeroes every mark it visits
+    MarkComplex,  // msaa edges: every drawn fragment sets the mark to 1 (simple pixels discard)
+    Simple,       // passes where the mark is 0, keeps it
+    Complex,      // passes where the mark is 1, keeps it
 };
 
 // The fixed-function state of one group of draws of a pass (most passes have one).
