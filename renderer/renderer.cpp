@@ -276,6 +276,8 @@ void RendererImpl::finishFrame(FrameInput const& input, FrameRecord const& frame
     bool const counted = std::any_of(frame.ran.begin(), frame.ran.end(), countsFragments);
     if (fragmentQuery && counted && (input.waitForGpuTimings || fragmentQuery.resultAvailable()))
         stats.fragmentInvocations = fragmentQuery.result();
+    if (frame.complexCounted && targets.width > 0 && targets.height > 0)
+        stats.complexPixelShare = double(complexQuery.result()) / (double(targets.width) * double(targets.height));
     if (shaderChecks)
         if (auto report = shaderChecks.collect()) stats.shaderCheckReport = *report;
 }

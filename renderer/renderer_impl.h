@@ -56,6 +56,7 @@ struct FrameRecord {
     std::vector<PassId> ran;         // the passes run so far, in order (PassScope)
     std::vector<PassCalls> calls;    // and what each issued
     std::optional<ViewParams> view;  // a view's (drawView): untimed, shown with these parameters
+    bool complexCounted = false;     // the msaa_edges pass counted its complex pixels (RendererImpl::complexQuery)
 };
 
 // A pass that is not one of the renderer's own (a test's, renderer_test_access.h): its declaration
@@ -137,6 +138,7 @@ private:
     GpuTimer timer;
     ShaderChecks shaderChecks;  // the shader-checks build's report (gl/shader_checks.h); empty when off
     gl::Query fragmentQuery;    // GL_FRAGMENT_SHADER_INVOCATIONS_ARB when available
+    gl::Query complexQuery;     // GL_SAMPLES_PASSED of the msaa_edges pass: the complex pixels (made on first use)
     std::uint64_t glErrorsAtStart = 0;
     glm::mat4 frameInverseViewProj{1.0f};  // of the last frame rendered: decodes its G-buffer
     // What the coverage target counts now (runCoverage), for the pixel inspector; none before a

@@ -39,7 +39,11 @@ void RendererImpl::runMsaaEdges(FrameRecord& frame, PassRun const& r) {
     p.set("uMsaaRelativeDistance", kMsaaThresholds.relativeDistance);
     p.set("uMsaaNormalCos", kMsaaThresholds.normalCos);
     p.set("uMsaaAlbedo", kMsaaThresholds.albedo);
+    if (!complexQuery) complexQuery = gl::Query::create(GL_SAMPLES_PASSED, "msaa complex pixels");
+    complexQuery.begin();  // the drawn fragments are the complex pixels (the mask is single-sampled)
     triangle.draw();
+    complexQuery.end();
+    frame.complexCounted = true;
 }
 
 // msaa edges: the marked pixels, every sample lit and averaged, beside the simple ones.

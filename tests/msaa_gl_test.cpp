@@ -109,6 +109,9 @@ TEST_F(MsaaGlTest, EdgesEqualsPerSampleWithinABound) {
     FloatImage const perSample = lighting(settings(Msaa::X4, MsaaLighting::PerSample));
     FloatImage const edges = lighting(settings(Msaa::X4, MsaaLighting::Edges));
     double const share = renderer_->complexPixelShare();
+    FrameStats const st = renderer_->render({camera_, lights_, settings(Msaa::X4, MsaaLighting::Edges), true});
+    ASSERT_TRUE(st.complexPixelShare) << "counted by the msaa_edges pass";
+    EXPECT_NEAR(*st.complexPixelShare, share, 1e-9) << "the pass's count is the mask's share";
     FloatImage const complex = renderer_->readAttachment(Attachment::ComplexPixels);
     double maxDiff = 0.0, sum = 0.0, maxComplex = 0.0;
     for (int y = 0; y < kH; ++y)

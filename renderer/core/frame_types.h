@@ -79,6 +79,8 @@ struct FrameStats {
     LightAccumulation accumulationUsed = LightAccumulation::Single;
     // The msaa that ran: off where the frame refused it (fallbackReason says why; docs/msaa.md).
     Msaa msaaUsed = Msaa::Off;
+    // The share of pixels its msaa_edges pass found complex (0..1); nullopt without msaa.
+    std::optional<double> complexPixelShare;
     std::string fallbackReason;
     // The shader-checks build's report of this frame's out-of-range accesses (gl/shader_checks.h);
     // empty when there were none or the checks are off.
