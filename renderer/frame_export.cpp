@@ -129,6 +129,13 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
         std::string const base = "raw_" + std::string(a.name);
         check(a.format == TexelFormat::RGBA8 ? writePng(path(base + ".png"), raw) : writeExr(path(base + ".exr"), raw));
     }
+    if (frame.stats.msaaUsed != Msaa::Off) {  // docs/msaa.md: the complex pixels, and every sample as stored
+        check(writePng(path("complex_pixels.png"), renderer.readAttachment(Attachment::ComplexPixels)));
+        for (GBufferAttachmentDesc const& a : layout.colorAttachments())
+            for (int k = 0; k < msaaSamples(frame.stats.msaaUsed); ++k)
+                check(writeExr(path("raw_" + std::string(a.name) + "_s" + std::to_string(k) + ".exr"),
+                               renderer.readMsaaSample(a.slot, k)));
+    }
     for (DebugView v : frame.extraViews) {
         ViewTarget target;
         ViewParams params;
@@ -199,6 +206,13 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
                       {"gl_errors", renderer.glErrorCount()}};
     // The pass a stopped frame (`render --until`) ended at, before its display pass; null: every pass ran.
     statsJson["stopped_after"] = frame.stats.stoppedAfter ? json(passName(*frame.stats.stoppedAfter)) : json(nullptr);
+    // msaa (docs/msaa.md): the sample count that ran (off after a refusal), and the complex pixels' share.
+    statsJson["msaa"] = enumName(kMsaaNames, frame.stats.msaaUsed);
+    if (frame.stats.msaaUsed != Msaa::Off) {
+        statsJson["msaa_lighting"] = enumName(kMsaaLightingNames, s.msaaLighting);
+        statsJson["complex_pixel_share"] = frame.stats.complexPixelShare.value_or(renderer.complexPixelShare());
+    }
+    if (!frame.stats.fallbackReason.empty()) statsJson["fallback_reason"] = frame.stats.fallbackReason;
     if (frame.stats.fragmentInvocations) statsJson["fragment_invocations"] = *frame.stats.fragmentInvocations;
     // A layout that does not store emission and occlusion says so (emissive.exr is then 0 rgb, 1 a).
     if (std::string const note = layoutOmissionNote(layout); !note.empty()) statsJson["gbuffer_note"] = note;

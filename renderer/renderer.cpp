@@ -212,6 +212,11 @@ FrameRecord RendererImpl::beginFrame(FrameInput const& input, FrameStats& stats)
         f.settings.mode = LightingMode::Quad;
         because(*why + "; the full-screen (quad) pass ran instead");
     }
+    if (auto why = msaaRefusal(f.settings, true)) {
+        f.settings.msaa = Msaa::Off;
+        because(*why);
+    }
+    stats.msaaUsed = f.settings.msaa;
     stats.modeUsed = f.settings.mode;
     stats.accumulationUsed = splitAccumulation(f) ? LightAccumulation::Split : LightAccumulation::Single;
     if (f.settings.accumulation != stats.accumulationUsed) because(kForwardRefusesSplit);
@@ -271,6 +276,8 @@ void RendererImpl::finishFrame(FrameInput const& input, FrameRecord const& frame
     bool const counted = std::any_of(frame.ran.begin(), frame.ran.end(), countsFragments);
     if (fragmentQuery && counted && (input.waitForGpuTimings || fragmentQuery.resultAvailable()))
         stats.fragmentInvocations = fragmentQuery.result();
+    if (frame.complexCounted && targets.width > 0 && targets.height > 0)
+        stats.complexPixelShare = double(complexQuery.result()) / (double(targets.width) * double(targets.height));
     if (shaderChecks)
         if (auto report = shaderChecks.collect()) stats.shaderCheckReport = *report;
 }
@@ -283,6 +290,7 @@ bool RendererImpl::wireframesDrawn(FrameInput const& input) {
 std::vector<PassDecl> RendererImpl::framePasses(FrameInput const& input) {
     PipelineSettings s = imported ? importedSettings(input.settings) : input.settings;
     if (modeUnavailable(s.mode)) s.mode = LightingMode::Quad;  // as render() runs it
+    if (msaaRefusal(s, false)) s.msaa = Msaa::Off;
     return gbl::framePasses(s, wireframesDrawn(input), bool(imported));
 }
 

@@ -4,6 +4,7 @@
 
 #include "core/camera.h"
 #include "core/frame_types.h"
+#include "core/gbuffer_layout.h"
 #include "core/imported_frame.h"
 #include "core/pipeline_settings.h"
 #include "core/point_light.h"
@@ -108,6 +109,12 @@ public:
     // Attachment `index` of that layout (core/gbuffer_layout.h order) exactly as stored: 2
     // channels for RG16, 1 for the depth, else 4. Empty past the last one.
     FloatImage readRawAttachment(int index) const;
+    // msaa (docs/msaa.md): sample `sample` of the last msaa frame's multisampled G-buffer attachment
+    // `slot` (a colour slot) exactly as stored, RGBA floats, rows top to bottom; empty when there is
+    // none (no msaa frame since the targets were made, a depth slot, a sample past the count).
+    FloatImage readMsaaSample(GBufferSlot slot, int sample);
+    // The share of pixels the last msaa frame found complex (Attachment::ComplexPixels), 0..1.
+    double complexPixelShare() const;
     // x, y in pixels with the origin at the top-left, as a mouse reports them.
     PixelSample samplePixel(int x, int y, Camera const& camera) const;
 

@@ -56,6 +56,7 @@ struct FrameRecord {
     std::vector<PassId> ran;         // the passes run so far, in order (PassScope)
     std::vector<PassCalls> calls;    // and what each issued
     std::optional<ViewParams> view;  // a view's (drawView): untimed, shown with these parameters
+    bool complexCounted = false;     // the msaa_edges pass counted its complex pixels (RendererImpl::complexQuery)
 };
 
 // A pass that is not one of the renderer's own (a test's, renderer_test_access.h): its declaration
@@ -137,6 +138,7 @@ private:
     GpuTimer timer;
     ShaderChecks shaderChecks;  // the shader-checks build's report (gl/shader_checks.h); empty when off
     gl::Query fragmentQuery;    // GL_FRAGMENT_SHADER_INVOCATIONS_ARB when available
+    gl::Query complexQuery;     // GL_SAMPLES_PASSED of the msaa_edges pass: the complex pixels (made on first use)
     std::uint64_t glErrorsAtStart = 0;
     glm::mat4 frameInverseViewProj{1.0f};  // of the last frame rendered: decodes its G-buffer
     // What the coverage target counts now (runCoverage), for the pixel inspector; none before a
@@ -161,9 +163,12 @@ private:
     // The browser's read-back targets (renderer_readback.cpp): the depth copied into RGBA32F, the
     // stencil's bit planes summed into RGBA8 over the G-buffer's depth-stencil. Made on first use,
     // dropped whenever the targets are remade. Unused on the desktop, which reads both directly.
+    // And on every platform, msaa's one sample of an attachment copied out (Renderer::readMsaaSample).
     struct ReadbackTargets {
         gl::Texture depthCopy, stencilSum;
         gl::Framebuffer depthFbo, stencilFbo;
+        gl::Texture sampleCopy;
+        gl::Framebuffer sampleFbo;
     } readback;
 
     FrameContext frameContext(FrameInput const& input) const;
@@ -191,6 +196,15 @@ private:
     void runLightCubes(FrameRecord& frame, PassRun const& r);
     void runWireframes(FrameRecord& frame, PassRun const& r);
     void runDepthPrepass(FrameRecord& frame, PassRun const& r);
+    // msaa (renderer_msaa.cpp, docs/msaa.md)
+    void runMsaaEdges(FrameRecord& frame, PassRun const& r);
+    void runLightingComplex(FrameRecord& frame, PassRun const& r);
+    void runMsaaResolve(FrameRecord& frame, PassRun const& r);
+    // Why the frame of `s` (mode after fallback) cannot have its msaa, one sentence; nullopt when it
+    // can. `makeTargets`: also makes the multisampled targets, and a failure there is a reason too.
+    std::optional<std::string> msaaRefusal(PipelineSettings const& s, bool makeTargets);
+    // The quad program's msaa variant (shaders/lighting_quad.frag): "" per sample, "SAMPLE0" or "EDGES".
+    gl::Program const& msaaProgram(std::string const& what);
     // shaders/view.frag built for `view` alone (its VIEW_ONLY): the switch over every view would
     // otherwise run whole at each pixel where branches run under a mask (4 ms against 42 ms for
     // the final image at 641x407 in SwiftShader).

@@ -8,6 +8,7 @@
 #include "passes/lighting_quad.h"
 #include "passes/lighting_tiled.h"
 
+#include <algorithm>
 #include <array>
 
 namespace gbl {
@@ -75,6 +76,16 @@ void RendererImpl::runLighting(FrameRecord& frame, PassRun const& r) {
             clusterShadePass(clusteredInput(f, r.io, image), clusteredConfig(f, true));
             break;
         default:
+            if (std::find(r.decl.samples.begin(), r.decl.samples.end(), Resource::MsaaPosition) !=
+                r.decl.samples.end()) {  // msaa: every sample, or sample 0 of the simple pixels (edges)
+                bool const simple = f.settings.msaaLighting == MsaaLighting::Edges;
+                lightingQuadPass({{r.io.targets.msaa.gbuffer, deferred.lights, deferred.shading},
+                                  msaaProgram(simple ? "SAMPLE0" : ""),
+                                  triangle,
+                                  {*r.fbo, image},
+                                  r.decl.states});
+                break;
+            }
             lightingQuadPass(
                 {deferred, shaders.get(ProgramId::LightingQuad), triangle, {*r.fbo, image}, r.decl.states});
             break;

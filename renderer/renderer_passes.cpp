@@ -23,11 +23,12 @@ namespace gbl {
 RendererImpl::RunFunction RendererImpl::runFunction(PassId id) {
     // PassId -> run function, in PassId's order.
     static constexpr std::array<RunFunction, kPassNames.size()> kRun{
-        &RendererImpl::runForwardShading, &RendererImpl::runGeometry,     &RendererImpl::runLightLists,
-        &RendererImpl::runVolumeDepth,    &RendererImpl::runLighting,     &RendererImpl::runLightCombine,
-        &RendererImpl::runDepthCopy,      &RendererImpl::runForward,      &RendererImpl::runLightCubes,
-        &RendererImpl::runWireframes,     &RendererImpl::runCoverage,     &RendererImpl::runDisplay,
-        &RendererImpl::runImport,         &RendererImpl::runGlassOutline, &RendererImpl::runDepthPrepass};
+        &RendererImpl::runForwardShading, &RendererImpl::runGeometry,        &RendererImpl::runLightLists,
+        &RendererImpl::runVolumeDepth,    &RendererImpl::runLighting,        &RendererImpl::runLightCombine,
+        &RendererImpl::runDepthCopy,      &RendererImpl::runForward,         &RendererImpl::runLightCubes,
+        &RendererImpl::runWireframes,     &RendererImpl::runCoverage,        &RendererImpl::runDisplay,
+        &RendererImpl::runImport,         &RendererImpl::runGlassOutline,    &RendererImpl::runDepthPrepass,
+        &RendererImpl::runMsaaEdges,      &RendererImpl::runLightingComplex, &RendererImpl::runMsaaResolve};
     return kRun[std::size_t(id)];
 }
 
@@ -89,7 +90,8 @@ void RendererImpl::runGlassOutline(FrameRecord& frame, PassRun const& r) {
 }
 
 void RendererImpl::runGeometry(FrameRecord& frame, PassRun const& r) {
-    geometryPass({scene, shaders.get(ProgramId::Geometry), *r.fbo},
+    bool const msaa = r.decl.depthStencil == Resource::MsaaDepth;  // the multisampled G-buffer
+    geometryPass({scene, shaders.get(ProgramId::Geometry), msaa ? r.io.targets.msaa.gbuffer.fbo : *r.fbo},
                  {frame.f.viewProj, frame.f.settings.normalMaps, r.decl.states});
 }
 

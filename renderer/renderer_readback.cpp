@@ -2,6 +2,7 @@
 #include "renderer_impl.h"
 
 #include "gl/shader_bindings.h"
+#include "gpu/draw_state_gl.h"
 #include "passes/gbuffer_decode.h"
 #include "passes/shading_inputs.h"
 
@@ -36,6 +37,8 @@ unsigned Renderer::texture(Attachment a) const {
             return t.coverage.id();
         case Attachment::Final:
             return t.display.id();
+        case Attachment::ComplexPixels:
+            return t.msaa.complexMask.id();
     }
     return 0;
 }
@@ -291,8 +294,50 @@ FloatImage Renderer::readAttachment(Attachment a) const {
             return readFramebuffer(t.coverageFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 2);
         case Attachment::Final:
             return readFramebuffer(t.displayFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
+        case Attachment::ComplexPixels:
+            if (!t.msaa.complexFbo)
+                return {t.width, t.height, 1, std::vector<float>(std::size_t(t.width) * std::size_t(t.height), 0.0f)};
+            {  // one channel here means depth (readFramebuffer): read red and green, keep red
+                FloatImage const rg =
+                    readFramebuffer(t.msaa.complexFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 2);
+                FloatImage mask{t.width, t.height, 1, std::vector<float>(rg.pixels.size() / 2)};
+                for (std::size_t i = 0; i < mask.pixels.size(); ++i) mask.pixels[i] = rg.pixels[i * 2];
+                return mask;
+            }
     }
     return {};
+}
+
+FloatImage Renderer::readMsaaSample(GBufferSlot slot, int sample) {
+    RendererImpl& r = *impl_;
+    RenderTargets const& t = r.targets;
+    if (!t.msaa.gbuffer.fbo || slot == GBufferSlot::Depth || sample < 0 || sample >= t.msaa.samples) return {};
+    gl::Texture const& source = t.msaa.gbuffer.texture(slot);
+    if (!source) return {};
+    auto& rb = r.readback;
+    if (!rb.sampleFbo) {
+        rb.sampleCopy = gl::Texture::create2D(GL_RGBA32F, t.width, t.height, "readback.msaa_sample");
+        rb.sampleFbo = gl::Framebuffer::create({&rb.sampleCopy}, nullptr, "readback.msaa_sample");
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, rb.sampleFbo.id());
+    glViewport(0, 0, t.width, t.height);
+    apply(kDecodeState);
+    gl::Program const& p = r.shaders.variant(ProgramId::TexelCopy, "GBL_MSAA_SAMPLE_COPY");
+    p.use();
+    p.set("uWriteConstant", 0);
+    p.set("uSample", sample);
+    bindTextureUnit(slot::BIND_READBACK_SOURCE, GL_TEXTURE_2D_MULTISAMPLE, source.id());
+    r.triangle.draw();
+    bindTextureUnit(slot::BIND_READBACK_SOURCE, GL_TEXTURE_2D_MULTISAMPLE, 0);
+    return readFramebuffer(rb.sampleFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
+}
+
+double Renderer::complexPixelShare() const {
+    FloatImage const mask = readAttachment(Attachment::ComplexPixels);
+    if (mask.pixels.empty()) return 0.0;
+    std::size_t complex = 0;
+    for (float v : mask.pixels) complex += v > 0.5f ? 1 : 0;
+    return double(complex) / double(mask.pixels.size());
 }
 
 FloatImage Renderer::readViewTarget(ViewTarget const& target) const {

@@ -4,33 +4,45 @@
 #ifndef GBL_GBUFFER_READ_GLSL
 #define GBL_GBUFFER_READ_GLSL
 #include "gbuffer_encoding.glsl"
-uniform sampler2D uPosition;
-uniform sampler2D uNormal;
-uniform sampler2D uAlbedoSpec;
-uniform sampler2D uEmissiveAo;    // emitted radiance rgb, ambient occlusion a
-uniform sampler2D uDepth;         // the G-buffer's depth (window space, 1 = background)
+// GBL_MSAA_SAMPLES n (a variant, docs/msaa.md): the G-buffer is multisampled and every read takes
+// sample gSample of the pixel. Desktop GL only: WebGL2 has no multisample textures and never builds it.
+#ifdef GBL_MSAA_SAMPLES
+#define GBUFFER_SAMPLER sampler2DMS
+int gSample = 0;
+#define GBUFFER_FETCH(t, p) texelFetch(t, p, gSample)
+#define GBUFFER_SIZE(t) textureSize(t)
+#else
+#define GBUFFER_SAMPLER sampler2D
+#define GBUFFER_FETCH(t, p) texelFetch(t, p, 0)
+#define GBUFFER_SIZE(t) textureSize(t, 0)
+#endif
+uniform GBUFFER_SAMPLER uPosition;
+uniform GBUFFER_SAMPLER uNormal;
+uniform GBUFFER_SAMPLER uAlbedoSpec;
+uniform GBUFFER_SAMPLER uEmissiveAo;  // emitted radiance rgb, ambient occlusion a
+uniform GBUFFER_SAMPLER uDepth;       // the G-buffer's depth (window space, 1 = background)
 uniform mat4 uInverseViewProj;  // for layouts that rebuild position from depth
 
 // The world position at px; false where no geometry was drawn (the background).
 bool gbufferPosition(ivec2 px, out vec3 position) {
 #ifdef GBUFFER_POSITION_FROM_DEPTH
-    float d = texelFetch(uDepth, px, 0).r;
-    vec2 ndc = (vec2(px) + 0.5) / vec2(textureSize(uDepth, 0)) * 2.0 - 1.0;
+    float d = GBUFFER_FETCH(uDepth, px).r;
+    vec2 ndc = (vec2(px) + 0.5) / vec2(GBUFFER_SIZE(uDepth)) * 2.0 - 1.0;
     vec4 world = uInverseViewProj * vec4(ndc, d * 2.0 - 1.0, 1.0);
     position = world.xyz / world.w;
     return d < 1.0;  // the geometry pass clears depth to 1 and draws with GL_LESS
 #else
-    vec4 p = texelFetch(uPosition, px, 0);
+    vec4 p = GBUFFER_FETCH(uPosition, px);
     position = p.xyz;
     return p.w != 0.0;
 #endif
 }
 
 // The unit world normal at px.
-vec3 gbufferNormal(ivec2 px) { return decodeNormal(texelFetch(uNormal, px, 0)); }
+vec3 gbufferNormal(ivec2 px) { return decodeNormal(GBUFFER_FETCH(uNormal, px)); }
 
 // Linear albedo (rgb) and specular intensity (a) at px.
-vec4 gbufferAlbedoSpec(ivec2 px) { return texelFetch(uAlbedoSpec, px, 0); }
+vec4 gbufferAlbedoSpec(ivec2 px) { return GBUFFER_FETCH(uAlbedoSpec, px); }
 
 // Emitted radiance (rgb) and ambient occlusion (a) at px. A layout without the emissive_ao
 // attachment (packed) stores neither: no emission, no occlusion.
@@ -38,7 +50,7 @@ vec4 gbufferEmissiveAo(ivec2 px) {
 #ifdef GBUFFER_NO_EMISSIVE_AO
     return vec4(0.0, 0.0, 0.0, 1.0);
 #else
-    return texelFetch(uEmissiveAo, px, 0);
+    return GBUFFER_FETCH(uEmissiveAo, px);
 #endif
 }
 
@@ -46,16 +58,16 @@ vec4 gbufferEmissiveAo(ivec2 px) {
 // zero past the layout's last one.
 vec4 gbufferRawAttachment(ivec2 px, int index) {
 #ifdef GBUFFER_POSITION_FROM_DEPTH
-    if (index == 0) return texelFetch(uNormal, px, 0);
-    if (index == 1) return texelFetch(uAlbedoSpec, px, 0);
+    if (index == 0) return GBUFFER_FETCH(uNormal, px);
+    if (index == 1) return GBUFFER_FETCH(uAlbedoSpec, px);
 #ifndef GBUFFER_NO_EMISSIVE_AO
-    if (index == 2) return texelFetch(uEmissiveAo, px, 0);
+    if (index == 2) return GBUFFER_FETCH(uEmissiveAo, px);
 #endif
 #else
-    if (index == 0) return texelFetch(uPosition, px, 0);
-    if (index == 1) return texelFetch(uNormal, px, 0);
-    if (index == 2) return texelFetch(uAlbedoSpec, px, 0);
-    if (index == 3) return texelFetch(uEmissiveAo, px, 0);
+    if (index == 0) return GBUFFER_FETCH(uPosition, px);
+    if (index == 1) return GBUFFER_FETCH(uNormal, px);
+    if (index == 2) return GBUFFER_FETCH(uAlbedoSpec, px);
+    if (index == 3) return GBUFFER_FETCH(uEmissiveAo, px);
 #endif
     return vec4(0.0);
 }

@@ -102,6 +102,12 @@ std::string mismatch(GlState const& gl, DrawState const& d) {
         check(gl.stencilFunc == GL_EQUAL && gl.stencilRef == d.stencilRef && gl.stencilValueMask == d.stencilRef &&
                   gl.frontFail == GL_KEEP && gl.frontZFail == GL_KEEP && gl.frontPass == GL_KEEP,
               "stencil equal bits");
+    if (d.stencil == StencilUse::MarkComplex)
+        check(gl.stencilFunc == GL_ALWAYS && gl.stencilRef == 1 && gl.frontPass == GL_REPLACE, "stencil mark complex");
+    if (d.stencil == StencilUse::Simple || d.stencil == StencilUse::Complex)
+        check(gl.stencilFunc == GL_EQUAL && gl.stencilRef == (d.stencil == StencilUse::Complex ? 1 : 0) &&
+                  gl.frontPass == GL_KEEP && gl.frontZFail == GL_KEEP,
+              "stencil simple or complex");
     bool const colour = gl.colorMask[0] && gl.colorMask[1] && gl.colorMask[2] && gl.colorMask[3];
     bool const none = !gl.colorMask[0] && !gl.colorMask[1] && !gl.colorMask[2] && !gl.colorMask[3];
     check(d.colorWrite ? colour : none, "colour write");
@@ -245,6 +251,37 @@ TEST_F(DrawStateGlTest, TheGlassPassDrawsUnderItsDeclaredState) {
     int const frames = int(kLightingModeNames.size() * kDepthCopyNames.size());
     EXPECT_EQ(checked_["forward"], frames * int(std::size(kGlassPanes)));
     EXPECT_EQ(checked_["glass_outline"], frames * int(std::size(kGlassPanes)));
+}
+
+// msaa (docs/msaa.md): every lighting strategy at 2 and 4 samples, with each depth copy and the
+// counted view, in the quad mode and classic layout that light a multisampled G-buffer; its
+// detection, simple and complex passes draw under their declared stencil states.
+TEST_F(DrawStateGlTest, EveryMsaaCombinationDrawsUnderItsDeclaredState) {
+    ASSERT_GE(caps().maxMsaaSamples(), 4) << "this context offers fewer than 4 samples per pixel";
+    std::vector<std::string> failures;
+    int rendered = 0;
+    for (Msaa msaa : {Msaa::X2, Msaa::X4})
+        for (std::size_t lit = 0; lit < kMsaaLightingNames.size(); ++lit)
+            for (std::size_t copy = 0; copy < kDepthCopyNames.size(); ++copy)
+                for (DebugView view : {DebugView::Final, DebugView::Heatmap}) {
+                    PipelineSettings s;
+                    s.msaa = msaa;
+                    s.msaaLighting = MsaaLighting(lit);
+                    s.depthCopy = DepthCopy(copy);
+                    s.view = view;
+                    s.lightCubes = s.volumeWireframes = true;
+                    std::string const label = "msaa " + std::string(kMsaaNames[std::size_t(msaa)]) + " " +
+                                              std::string(kMsaaLightingNames[lit]) + " " +
+                                              std::string(kDepthCopyNames[copy]) + " view " + std::to_string(int(view));
+                    ++rendered;
+                    for (std::string const& f : checkFrame({camera_, lights_, s}, label)) failures.push_back(f);
+                }
+    EXPECT_EQ(rendered, 2 * 3 * 3 * 2);
+    std::string all;
+    for (std::size_t i = 0; i < failures.size() && i < 20; ++i) all += failures[i] + "\n";
+    EXPECT_TRUE(failures.empty()) << failures.size() << " draws under an undeclared state, first ones:\n" << all;
+    for (char const* pass : {"geometry", "msaa_edges", "lighting", "lighting_complex", "depth_copy", "display"})
+        EXPECT_GT(checked_[pass], 0) << pass << " drew nothing that was checked";
 }
 
 // The check is not vacuous: the light cubes' declaration changed by hand in the passes the

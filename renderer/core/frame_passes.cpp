@@ -2,6 +2,7 @@
 #include "core/frame_passes.h"
 
 #include "core/gbuffer_layout.h"
+#include "core/msaa.h"
 
 #include <algorithm>
 
@@ -135,6 +136,45 @@ PassDecl overlayPass(PassId id, std::vector<Resource> samples, Resource depth, D
     return p;
 }
 
+// --- msaa (docs/msaa.md): the multisampled G-buffer in the classic layout, lit in quad mode.
+
+constexpr std::initializer_list<Resource> kMsaaColor{R::MsaaPosition, R::MsaaNormal, R::MsaaAlbedoSpec,
+                                                     R::MsaaEmissive};
+
+// Whether the frame lights a multisampled G-buffer (the renderer turns msaa off where it cannot, and
+// says why: core/msaa.h).
+bool msaaFrame(PipelineSettings const& s, bool imported) {
+    return s.msaa != Msaa::Off && !msaaFrameRefusal(s, imported);
+}
+// Whether its lighting reads the samples themselves (not the resolved G-buffer).
+bool lightsSamples(PipelineSettings const& s) {
+    return s.msaaLighting != MsaaLighting::ResolveFirst;
+}
+
+// The complex pixels found: the mask written and the lit target's stencil marked where samples differ.
+PassDecl msaaEdgesPass() {
+    PassDecl p = declare(PassId::MsaaEdges);
+    p.samples = {R::MsaaPosition, R::MsaaNormal, R::MsaaAlbedoSpec};
+    p.color = {R::ComplexMask};
+    p.depthStencil = R::LitDepth;
+    p.stencilWrite = true;
+    p.clears = {R::ComplexMask, R::LitDepth};
+    p.states = {
+        state("mark complex pixels", DepthTest::Off, false, Blend::Off, FaceCull::Off, StencilUse::MarkComplex)};
+    return p;
+}
+
+// The multisampled G-buffer resolved (averaged; depth and stencil: one sample) into the layout's
+// targets, which the views, the depth copy and the counts read as in any frame.
+PassDecl msaaResolvePass() {
+    PassDecl p = declare(PassId::MsaaResolve, PassKind::Blit);
+    p.samples = plus(std::vector<Resource>(kMsaaColor), {R::MsaaDepth});
+    p.color = {R::GBufferPosition, R::GBufferNormal, R::GBufferAlbedoSpec, R::GBufferEmissive};
+    p.depthStencil = R::GBufferDepth;
+    p.depthWrite = p.stencilWrite = true;
+    return p;
+}
+
 PassDecl lightingPass(PipelineSettings const& s, bool split) {
     GBufferLayoutDesc const& d = layoutDesc(s.layout);
     std::vector<Resource> const lit = split ? std::vector{R::DiffuseLight, R::SpecularLight} : std::vector{R::Lighting};
@@ -155,10 +195,26 @@ PassDecl lightingPass(PipelineSettings const& s, bool split) {
     }
     PassDecl p = declare(PassId::Lighting);  // full screen into litFbo, or splitFbo (no depth-stencil)
     p.samples = plus(gbufferSamples(d), {R::Lights});
+    if (msaaFrame(s, false) && lightsSamples(s)) p.samples = plus(std::vector<Resource>(kMsaaColor), {R::Lights});
     p.color = lit;
     p.clears = lit;
     if (!split) p.depthStencil = R::LitDepth;
     p.states = {fullScreen("every light")};
+    if (msaaFrame(s, false) && s.msaaLighting == MsaaLighting::Edges) {  // sample 0 of the simple pixels
+        p.stencilRead = true;
+        p.states = {state("simple pixels", DepthTest::Off, false, Blend::Off, FaceCull::Off, StencilUse::Simple)};
+    }
+    return p;
+}
+
+// msaa edges: the complex pixels, each sample lit, into the lit image beside the simple ones.
+PassDecl lightingComplexPass() {
+    PassDecl p = declare(PassId::MsaaComplex);
+    p.samples = plus(std::vector<Resource>(kMsaaColor), {R::Lights});
+    p.color = {R::Lighting};
+    p.depthStencil = R::LitDepth;
+    p.stencilRead = true;
+    p.states = {state("complex pixels", DepthTest::Off, false, Blend::Off, FaceCull::Off, StencilUse::Complex)};
     return p;
 }
 
@@ -280,18 +336,27 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
         for (GBufferAttachmentDesc const& a : d.attachments()) out.front().clears.push_back(slotResource(a.slot));
         out.front().clears = plus(out.front().clears, {R::Lighting, R::LitDepth});
     } else {
+        bool const msaa = msaaFrame(s, imported);
         PassDecl g = declare(imported ? PassId::Import : PassId::Geometry);
         g.samples = {imported ? R::Imported : R::Materials};
         for (GBufferAttachmentDesc const& a : d.colorAttachments()) g.color.push_back(slotResource(a.slot));
         g.depthStencil = R::GBufferDepth;
+        if (msaa) {
+            g.color = kMsaaColor;
+            g.depthStencil = R::MsaaDepth;
+        }
         g.depthRead = g.depthWrite = g.stencilWrite = true;  // stencil cleared
         // The import pass writes each covered pixel's depth (gl_FragDepth) whatever is there.
         g.states =
             imported
                 ? std::vector<DrawState>{state("imported surfaces", DepthTest::Always, true, Blend::Off, FaceCull::Off)}
                 : opaque;
-        g.clears = plus(g.color, {R::GBufferDepth});
+        g.clears = plus(g.color, {*g.depthStencil});
         out.push_back(std::move(g));
+        if (msaa) {
+            out.push_back(msaaEdgesPass());
+            if (!lightsSamples(s)) out.push_back(msaaResolvePass());
+        }
         if (s.mode == LightingMode::Tiled)
             out.push_back(computePass(PassId::LightLists, {R::GBufferDepth, R::Lights}, {R::TileBins}));
         if (s.mode == LightingMode::Clustered)
@@ -299,6 +364,8 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
                 computePass(PassId::LightLists, {R::GBufferDepth, R::Lights}, {R::TileBins, R::ClusterLists}));
         if (s.mode == LightingMode::Volumes && lightingSamplesDepth(d)) out.push_back(volumeDepthPass());
         out.push_back(lightingPass(s, split));
+        if (msaa && s.msaaLighting == MsaaLighting::Edges) out.push_back(lightingComplexPass());
+        if (msaa && lightsSamples(s)) out.push_back(msaaResolvePass());
         if (split) {
             PassDecl c = litPass(PassId::LightCombine, plus(gbufferSamples(d), {R::DiffuseLight, R::SpecularLight}),
                                  fullScreen("combine"));

@@ -33,11 +33,15 @@ enum class PassId {
     Import,          // re-lighting: an imported G-buffer written into the layout's targets, instead of geometry
     GlassOutline,    // overlay: hatches where blended surfaces are, on the display or a view (any view)
     DepthPrepass,    // forward+: the opaque surfaces' depth alone, before the light lists and the shading
+    MsaaEdges,       // msaa: complex pixels (samples that differ) marked in the stencil and the complex mask
+    MsaaComplex,     // msaa edges: the complex pixels lit per sample (the lighting pass lit the others once)
+    MsaaResolve,     // msaa: the multisampled G-buffer resolved into the layout's targets, for what follows
 };
-inline constexpr std::array<std::string_view, 15> kPassNames{
-    "forward_shading", "geometry",   "light_lists", "volume_depth",  "lighting",
-    "light_combine",   "depth_copy", "forward",     "light_cubes",   "wireframes",
-    "coverage",        "display",    "import",      "glass_outline", "depth_prepass"};
+inline constexpr std::array<std::string_view, 18> kPassNames{
+    "forward_shading", "geometry", "light_lists", "volume_depth", "lighting", "light_combine", "depth_copy", "forward",
+    "light_cubes", "wireframes", "coverage", "display", "import", "glass_outline", "depth_prepass",
+    // msaa (docs/msaa.md)
+    "msaa_edges", "lighting_complex", "msaa_resolve"};
 
 inline std::string_view passName(PassId id) {
     return enumName(kPassNames, id);
@@ -51,7 +55,8 @@ inline std::optional<PassId> passFromName(std::string_view name) {
 // depth pre-pass: forward's figure includes its rasterising too).
 constexpr bool countsAsLighting(PassId id) {
     return id == PassId::ForwardShading || id == PassId::LightLists || id == PassId::VolumeDepth ||
-           id == PassId::Lighting || id == PassId::LightCombine || id == PassId::DepthPrepass;
+           id == PassId::Lighting || id == PassId::LightCombine || id == PassId::DepthPrepass ||
+           id == PassId::MsaaEdges || id == PassId::MsaaComplex;
 }
 
 // The passes whose fragments FrameStats::fragmentInvocations counts: the shading of the lights.
@@ -81,8 +86,15 @@ enum class Resource {
     Imported,         // the textures of an imported G-buffer (Renderer::setImportedGBuffer)
     View,             // a view's own image (Renderer::drawView's ViewTarget), in place of the display
     Readback,         // the browser's read-back target: depth or stencil as colour (renderer_readback.cpp)
+    // msaa (RenderTargets::msaa): the multisampled G-buffer, and the complex pixels' mask.
+    MsaaPosition,
+    MsaaNormal,
+    MsaaAlbedoSpec,
+    MsaaEmissive,
+    MsaaDepth,
+    ComplexMask,
 };
-inline constexpr std::array<std::string_view, 20> kResourceNames{"gbuffer.position",
+inline constexpr std::array<std::string_view, 26> kResourceNames{"gbuffer.position",
                                                                  "gbuffer.normal",
                                                                  "gbuffer.albedo_spec",
                                                                  "gbuffer.emissive",
@@ -101,7 +113,13 @@ inline constexpr std::array<std::string_view, 20> kResourceNames{"gbuffer.positi
                                                                  "cluster_lists",
                                                                  "imported",
                                                                  "view",
-                                                                 "readback"};
+                                                                 "readback",
+                                                                 "msaa.position",
+                                                                 "msaa.normal",
+                                                                 "msaa.albedo_spec",
+                                                                 "msaa.emissive",
+                                                                 "msaa.depth",
+                                                                 "complex_mask"};
 
 inline std::string_view resourceName(Resource r) {
     return enumName(kResourceNames, r);
@@ -128,6 +146,9 @@ enum class StencilUse {
     Mark,         // both faces, depth failures: back +1, front -1
     ShadeMarked,  // passes where the mark is 1, and zeroes every mark it visits
     EqualBits,    // passes where the bits of DrawState::stencilRef are set (ref and mask), writes none
+    MarkComplex,  // msaa edges: every drawn fragment sets the mark to 1 (simple pixels discard)
+    Simple,       // passes where the mark is 0, keeps it
+    Complex,      // passes where the mark is 1, keeps it
 };
 
 // The fixed-function state of one group of draws of a pass (most passes have one).

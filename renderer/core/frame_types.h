@@ -40,6 +40,9 @@ enum class Attachment {
     // and specular light; zero after a single-target frame.
     DiffuseLight,
     SpecularLight,
+    // msaa (docs/msaa.md): R8, 1 where the msaa_edges pass found the pixel's samples to differ (its
+    // complex pixels); read back with 1 channel; zero without an msaa frame.
+    ComplexPixels,
 };
 
 struct PassTiming {
@@ -74,6 +77,10 @@ struct FrameStats {
     GBufferLayout layout = GBufferLayout::Classic;  // the G-buffer layout the frame used
     // The accumulation that ran: split is refused in forward mode (fallbackReason says why).
     LightAccumulation accumulationUsed = LightAccumulation::Single;
+    // The msaa that ran: off where the frame refused it (fallbackReason says why; docs/msaa.md).
+    Msaa msaaUsed = Msaa::Off;
+    // The share of pixels its msaa_edges pass found complex (0..1); nullopt without msaa.
+    std::optional<double> complexPixelShare;
     std::string fallbackReason;
     // The shader-checks build's report of this frame's out-of-range accesses (gl/shader_checks.h);
     // empty when there were none or the checks are off.

@@ -50,6 +50,9 @@ bool volumesOnly(PipelineSettings const& s) {
 bool withWireframes(PipelineSettings const& s) {
     return s.volumeWireframes;
 }
+bool withMsaa(PipelineSettings const& s) {
+    return s.msaa != Msaa::Off;
+}
 
 // One line per choice, shown on hover over its radio button: the editor is a teaching tool.
 constexpr std::array<std::string_view, 6> kModeHelp{
@@ -85,7 +88,7 @@ using P = PipelineSection;
 
 // The A/B table shows the sideB rows in this order; its first row is the mode (startAb ticks it).
 // The Pipeline panel draws each section's fields in this order too.
-std::array<PipelineField, 17> const kFields{
+std::array<PipelineField, 19> const kFields{
     choice<&S::mode>(kLightingModeNames, {.name = "mode",
                                           .help = "How the lights are added: the lighting mode",
                                           .sideB = true,
@@ -241,6 +244,30 @@ std::array<PipelineField, 17> const kFields{
                     "rims), above 1 it shades pixels the light cannot reach",
          .applies = volumesOnly,
          .option = "--volume-scale"}),
+    choice<&S::msaa>(kMsaaNames,
+                     {.name = "msaa",
+                      .help = "Samples per pixel of the G-buffer: off, 2, 4 or 8 (quad mode, classic layout; "
+                              "docs/msaa.md)",
+                      .optionalInFiles = kOptional,
+                      .sideB = true,
+                      .label = "MSAA",
+                      .tooltip = "a multisampled G-buffer: the geometry pass stores 2, 4 or 8 samples per pixel;\n"
+                                 "counts the driver refuses are greyed out, and modes or layouts that cannot light\n"
+                                 "it fall back to off with the reason (docs/msaa.md)",
+                      .option = "--msaa"}),
+    choice<&S::msaaLighting>(kMsaaLightingNames,
+                             {.name = "msaa_lighting",
+                              .help = "How a multisampled G-buffer is lit: resolve-first (wrong on purpose), "
+                                      "per-sample or edges",
+                              .optionalInFiles = kOptional,
+                              .sideB = true,
+                              .label = "MSAA lighting",
+                              .tooltip = "resolve-first: attributes averaged before lighting, so silhouettes halo\n"
+                                         "per-sample: every sample lit, the results averaged (correct, costly)\n"
+                                         "edges: complex pixels found and marked in stencil, lit per sample; the "
+                                         "others once",
+                              .applies = withMsaa,
+                              .option = "--msaa-lighting"}),
 };
 
 }  // namespace

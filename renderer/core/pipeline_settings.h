@@ -32,6 +32,12 @@ inline constexpr float kLearnOpenGlShininess = 16.0f;
 // Where the lighting modes add their lights (docs/lighting.md, "Accumulation targets"): one lit
 // target, or diffuse and specular light in two targets that a combine pass finishes.
 enum class LightAccumulation { Single, Split };
+// Multisampling of the G-buffer (docs/msaa.md): off, or 2, 4 or 8 samples per pixel.
+enum class Msaa { Off, X2, X4, X8 };
+// How a multisampled G-buffer is lit (docs/msaa.md): its attributes resolved (averaged) first, which
+// is wrong on purpose (silhouettes halo); every sample lit and the results averaged; or the complex
+// pixels (samples that differ) found in a pass of their own and lit per sample, the others once.
+enum class MsaaLighting { ResolveFirst, PerSample, Edges };
 
 // What the final image shows. Values match the VIEW_* constants in shaders/view_constants.glsl
 // (shader_constants_test checks them).
@@ -85,6 +91,8 @@ struct PipelineSettings {
     // Multiplies the scale that makes a light volume enclose its radius (1 = just enclosing).
     // Below 1 the sphere's faces cut the light off: the volumes lesson shows it.
     float volumeScale = 1.0f;
+    Msaa msaa = Msaa::Off;
+    MsaaLighting msaaLighting = MsaaLighting::Edges;
 
     // Every member, floats compared with ==: what undo's change detection wants.
     bool operator==(PipelineSettings const&) const = default;
@@ -98,11 +106,18 @@ inline constexpr std::array<std::string_view, 3> kDepthCopyNames{"blit", "shader
 inline constexpr std::array<std::string_view, 3> kTonemapNames{"exposure", "reinhard", "clamp"};
 inline constexpr std::array<std::string_view, 4> kGBufferLayoutNames{"classic", "packed", "naive8", "rgb10a2"};
 inline constexpr std::array<std::string_view, 2> kLightAccumulationNames{"single", "split"};
+inline constexpr std::array<std::string_view, 4> kMsaaNames{"off", "2", "4", "8"};
+inline constexpr std::array<std::string_view, 3> kMsaaLightingNames{"resolve-first", "per-sample", "edges"};
 inline constexpr std::array<std::string_view, 2> kShadingModelNames{"gbuffer-lab", "learnopengl"};
 inline constexpr std::array<std::string_view, 19> kDebugViewNames{
     "final",        "lighting",  "position",      "normal",         "albedo",        "specular", "depth",
     "depth_linear", "heatmap",   "tile_lights",   "raw0",           "raw1",          "raw2",     "raw3",
     "emissive",     "occlusion", "diffuse_light", "specular_light", "cluster_slices"};
+
+// Samples per pixel of a setting (1 for off).
+constexpr int msaaSamples(Msaa m) {
+    return m == Msaa::Off ? 1 : 1 << int(m);
+}
 
 // Whether a mode lights a pixel only inside the light's radius whatever the equation (its volume,
 // tile or cluster lists are sized to it): there the learnopengl shading is cut at the radius too,

@@ -51,6 +51,11 @@ GlCaps detectGlCaps(int limitMajor, int limitMinor) {
     }
     if (gl::kBufferTextures) glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &caps.maxTextureBufferTexels);
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &caps.maxTextureSize);
+    if (!gl::kWebGL2) {
+        glGetIntegerv(GL_MAX_SAMPLES, &caps.maxSamples);
+        glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &caps.maxColorTextureSamples);
+        glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &caps.maxDepthTextureSamples);
+    }
     return caps;
 }
 

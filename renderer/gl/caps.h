@@ -27,6 +27,11 @@ struct GlCaps {
     long long maxStorageBlockBytes = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE (0 without compute shaders)
     int maxTextureBufferTexels = 0;      // GL_MAX_TEXTURE_BUFFER_SIZE (desktop)
     int maxTextureSize = 0;              // GL_MAX_TEXTURE_SIZE
+    // Multisampling (the MSAA G-buffer): GL_MAX_SAMPLES, GL_MAX_COLOR_TEXTURE_SAMPLES and
+    // GL_MAX_DEPTH_TEXTURE_SAMPLES; 0 in WebGL2, which has no multisample textures.
+    int maxSamples = 0;
+    int maxColorTextureSamples = 0;
+    int maxDepthTextureSamples = 0;
 
     bool atLeast(int maj, int min) const { return major > maj || (major == maj && minor >= min); }
 
@@ -48,6 +53,21 @@ struct GlCaps {
                                "lights out of reach are shaded with a zero factor instead of tested\n"
                                "(GBL_SHADER_BRANCHES=skipping builds the tests)"
                              : "lights out of reach are skipped after a distance test";
+    }
+    // The most samples a multisampled G-buffer can have here (colour and depth textures both).
+    int maxMsaaSamples() const {
+        int const m = maxSamples < maxColorTextureSamples ? maxSamples : maxColorTextureSamples;
+        return m < maxDepthTextureSamples ? m : maxDepthTextureSamples;
+    }
+    // Why a G-buffer of `samples` samples cannot be made here, in one sentence, or empty when it can.
+    std::string msaaUnavailableReason(int samples) const {
+        if (gl::kWebGL2)
+            return "WebGL2 has multisampled renderbuffers but no multisample textures to light from, so MSAA is "
+                   "unavailable in the browser";
+        if (samples <= maxMsaaSamples()) return {};
+        return std::to_string(samples) + " samples exceed this driver's limit (GL_MAX_SAMPLES " +
+               std::to_string(maxSamples) + ", GL_MAX_COLOR_TEXTURE_SAMPLES " + std::to_string(maxColorTextureSamples) +
+               ", GL_MAX_DEPTH_TEXTURE_SAMPLES " + std::to_string(maxDepthTextureSamples) + ")";
     }
     std::string pipelineStatisticsUnavailableReason() const {
         return pipelineStatistics ? std::string()

@@ -44,14 +44,14 @@ Framebuffer Framebuffer::create(std::span<Texture const* const> colors, Texture 
     std::vector<GLenum> drawBuffers;
     GLenum slot = GL_COLOR_ATTACHMENT0;
     for (Texture const* c : colors) {
-        glFramebufferTexture2D(GL_FRAMEBUFFER, slot, GL_TEXTURE_2D, c->id(), 0);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, slot, c->target(), c->id(), 0);
         drawBuffers.push_back(slot++);
     }
     if (depth) {
         bool const hasStencil =
             depth->internalFormat() == GL_DEPTH32F_STENCIL8 || depth->internalFormat() == GL_DEPTH24_STENCIL8;
         glFramebufferTexture2D(GL_FRAMEBUFFER, hasStencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
-                               GL_TEXTURE_2D, depth->id(), 0);
+                               depth->target(), depth->id(), 0);
     }
     if (drawBuffers.empty()) {
         glDrawBuffer(GL_NONE);

@@ -28,6 +28,9 @@ void glBindImageTexture(GLuint, GLuint, GLint, GLboolean, GLint, GLenum, GLenum)
 void glTexBuffer(GLenum, GLenum, GLuint) {
     missing("glTexBuffer");
 }
+void glTexImage2DMultisample(GLenum, GLsizei, GLenum, GLsizei, GLsizei, GLboolean) {
+    missing("glTexImage2DMultisample");
+}
 void glQueryCounter(GLuint, GLenum) {
     missing("glQueryCounter");
 }

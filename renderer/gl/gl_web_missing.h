@@ -26,6 +26,10 @@
 // (gl/gpu_timer.h); GL_TIMESTAMP stays the desktop's.
 #define GL_TIME_ELAPSED 0x88BF
 #define GL_TIMESTAMP 0x8E28
+// Multisample textures (the MSAA G-buffer; WebGL2 has multisampled renderbuffers only).
+#define GL_TEXTURE_2D_MULTISAMPLE 0x9100
+#define GL_MAX_COLOR_TEXTURE_SAMPLES 0x910E
+#define GL_MAX_DEPTH_TEXTURE_SAMPLES 0x910F
 // Pipeline statistics.
 #define GL_FRAGMENT_SHADER_INVOCATIONS 0x82F4
 #define GL_FRAGMENT_SHADER_INVOCATIONS_ARB 0x82F4
@@ -92,6 +96,8 @@ void glMemoryBarrier(GLbitfield barriers);
 void glBindImageTexture(GLuint unit, GLuint texture, GLint level, GLboolean layered, GLint layer, GLenum access,
                         GLenum format);
 void glTexBuffer(GLenum target, GLenum internalformat, GLuint buffer);
+void glTexImage2DMultisample(GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, GLsizei height,
+                             GLboolean fixedsamplelocations);
 void glQueryCounter(GLuint id, GLenum target);
 void glGetQueryObjectui64v(GLuint id, GLenum pname, GLuint64* params);
 void glGetQueryObjectiv(GLuint id, GLenum pname, GLint* params);

@@ -85,6 +85,25 @@ Texture Texture::create2D(GLenum internalFormat, int width, int height, std::str
     return t;
 }
 
+Texture Texture::create2DMultisample(GLenum internalFormat, int width, int height, int samples,
+                                     std::string_view label) {
+    Texture t;
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    t.handle_ = Handle<TextureDeleter>(id);
+    t.target_ = GL_TEXTURE_2D_MULTISAMPLE;
+    t.internalFormat_ = internalFormat;
+    t.width_ = width;
+    t.height_ = height;
+    t.samples_ = samples;
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, id);
+    glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, internalFormat, std::max(width, 1), std::max(height, 1),
+                            GL_TRUE);
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+    setLabel(GL_TEXTURE, id, label);
+    return t;
+}
+
 Texture Texture::createBuffer(GLenum internalFormat, GLuint buffer, std::string_view label) {
     Texture t;
     GLuint id = 0;

@@ -63,6 +63,15 @@ void apply(DrawState const& s) {
             glStencilFunc(GL_EQUAL, s.stencilRef, GLuint(s.stencilRef));
             glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
             break;
+        case StencilUse::MarkComplex:  // every fragment drawn (a complex pixel) marks 1
+            glStencilFunc(GL_ALWAYS, 1, 0xFF);
+            glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+            break;
+        case StencilUse::Simple:
+        case StencilUse::Complex:
+            glStencilFunc(GL_EQUAL, s.stencil == StencilUse::Complex ? 1 : 0, 0xFF);
+            glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+            break;
         case StencilUse::Off:
             glStencilFunc(GL_ALWAYS, 0, 0xFF);
             glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);

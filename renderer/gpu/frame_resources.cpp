@@ -17,6 +17,11 @@ bool isGBufferColor(Resource r) {
            r == Resource::GBufferEmissive;
 }
 
+bool isMsaaColor(Resource r) {
+    return r == Resource::MsaaPosition || r == Resource::MsaaNormal || r == Resource::MsaaAlbedoSpec ||
+           r == Resource::MsaaEmissive;
+}
+
 [[noreturn]] void noTarget(std::string const& what) {
     throw std::logic_error("FrameResources: " + what + "; give it a target in gpu/render_targets.h");
 }
@@ -66,6 +71,18 @@ gl::Texture const& FrameResources::texture(Resource r) const {
             return t.coverage;
         case Resource::Display:
             return t.display;
+        case Resource::MsaaPosition:
+            return t.msaa.gbuffer.position;
+        case Resource::MsaaNormal:
+            return t.msaa.gbuffer.normal;
+        case Resource::MsaaAlbedoSpec:
+            return t.msaa.gbuffer.albedoSpec;
+        case Resource::MsaaEmissive:
+            return t.msaa.gbuffer.emissive;
+        case Resource::MsaaDepth:
+            return t.msaa.gbuffer.depth;
+        case Resource::ComplexMask:
+            return t.msaa.complexMask;
         default:
             break;
     }
@@ -79,6 +96,8 @@ gl::Framebuffer const& FrameResources::framebuffer(std::span<Resource const> col
     if (!color.empty()) {
         Resource const first = color.front();
         if (isGBufferColor(first)) return t.gbuffer.fbo;
+        if (isMsaaColor(first)) return t.msaa.gbuffer.fbo;
+        if (first == Resource::ComplexMask) return t.msaa.complexFbo;
         if (first == Resource::Lighting) return volumeDepth ? t.volumeFbo : t.litFbo;
         if (first == Resource::DiffuseLight) return volumeDepth ? t.splitVolumeFbo : t.splitFbo;
         if (first == Resource::Coverage) return t.coverageFbo;
@@ -108,6 +127,12 @@ void FrameResources::clear(std::span<Resource const> resources) const {
             add(targets.gbuffer.fbo, GL_COLOR_BUFFER_BIT);
         else if (r == Resource::GBufferDepth)
             add(targets.gbuffer.fbo, depthStencil);
+        else if (isMsaaColor(r))
+            add(targets.msaa.gbuffer.fbo, GL_COLOR_BUFFER_BIT);
+        else if (r == Resource::MsaaDepth)
+            add(targets.msaa.gbuffer.fbo, depthStencil);
+        else if (r == Resource::ComplexMask)
+            add(targets.msaa.complexFbo, GL_COLOR_BUFFER_BIT);
         else if (r == Resource::Lighting)
             add(targets.litFbo, GL_COLOR_BUFFER_BIT);
         else if (r == Resource::LitDepth)

@@ -40,6 +40,16 @@ struct GBuffer {
 // The GL internal format of a layout's texel format.
 GLenum glInternalFormat(TexelFormat f);
 
+// msaa (docs/msaa.md): the multisampled G-buffer the geometry pass draws into (classic layout),
+// and the complex pixels' mask with the lit target's depth-stencil, whose stencil marks them.
+// Made by createMsaaTargets when a frame first asks for its sample count; empty otherwise.
+struct MsaaTargets {
+    int samples = 0;
+    GBuffer gbuffer;             // GL_TEXTURE_2D_MULTISAMPLE attachments, one per slot of the layout
+    gl::Texture complexMask;     // R8: 1 where the pixel's samples differ (msaa_edges pass)
+    gl::Framebuffer complexFbo;  // complexMask + RenderTargets::litDepth
+};
+
 struct RenderTargets {
     int width = 0;
     int height = 0;
@@ -75,6 +85,7 @@ struct RenderTargets {
     // display + the G-buffer's depth-stencil: the deferred modes' wireframes, which test against
     // the scene's depth whether or not the depth-copy step ran.
     gl::Framebuffer overlayGBufferDepthFbo;
+    MsaaTargets msaa;
 
     bool empty() const { return width == 0 || height == 0; }
     // What volumeFbo, splitVolumeFbo and coverageFbo attach as depth-stencil.
@@ -84,5 +95,9 @@ struct RenderTargets {
 // Creates all targets at w x h (0 x 0 gives empty targets) with the G-buffer in `layout`. Returns
 // the first incomplete framebuffer's error, if any.
 std::optional<std::string> createRenderTargets(int width, int height, GBufferLayout layout, RenderTargets& out);
+
+// Makes out.msaa for `samples` per pixel at the targets' size and layout (gpu/msaa_targets.cpp); the
+// first incomplete framebuffer's error, if any (out.msaa is then empty).
+std::optional<std::string> createMsaaTargets(int samples, RenderTargets& out);
 
 }  // namespace gbl

@@ -12,11 +12,12 @@ void bindTextureUnit(int unit, GLenum target, GLuint texture) {
 }
 
 void bindGBuffer(GBufferTextures const& g) {
-    bindTextureUnit(slot::BIND_GBUFFER_POSITION, GL_TEXTURE_2D, g.position.id());
-    bindTextureUnit(slot::BIND_GBUFFER_NORMAL, GL_TEXTURE_2D, g.normal.id());
-    bindTextureUnit(slot::BIND_GBUFFER_ALBEDO_SPEC, GL_TEXTURE_2D, g.albedoSpec.id());
-    bindTextureUnit(slot::BIND_GBUFFER_EMISSIVE, GL_TEXTURE_2D, g.emissive.id());
-    bindTextureUnit(slot::BIND_DEPTH, GL_TEXTURE_2D, g.depth.id());
+    // Each on its own target: GL_TEXTURE_2D, or GL_TEXTURE_2D_MULTISAMPLE for the msaa G-buffer.
+    bindTextureUnit(slot::BIND_GBUFFER_POSITION, g.position.target(), g.position.id());
+    bindTextureUnit(slot::BIND_GBUFFER_NORMAL, g.normal.target(), g.normal.id());
+    bindTextureUnit(slot::BIND_GBUFFER_ALBEDO_SPEC, g.albedoSpec.target(), g.albedoSpec.id());
+    bindTextureUnit(slot::BIND_GBUFFER_EMISSIVE, g.emissive.target(), g.emissive.id());
+    bindTextureUnit(slot::BIND_DEPTH, g.depth.target(), g.depth.id());
 }
 
 void bindLights(gl::Program const& p, LightBuffer const& lights) {

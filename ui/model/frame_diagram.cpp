@@ -74,6 +74,12 @@ char const* stencilWords(StencilUse s) {
             return "stencil shades where the mark is 1 and zeroes it";
         case StencilUse::EqualBits:
             return "stencil passes where the tested bits are set";
+        case StencilUse::MarkComplex:
+            return "stencil marks 1 at every pixel drawn (the complex ones; simple pixels discard)";
+        case StencilUse::Simple:
+            return "stencil passes where the mark is 0 (simple pixels)";
+        case StencilUse::Complex:
+            return "stencil passes where the mark is 1 (complex pixels)";
     }
     return "?";
 }
@@ -152,6 +158,18 @@ std::optional<DebugView> resourceView(Resource r) {
             return DebugView::Final;
         case Resource::TileBins:
             return DebugView::TileLights;
+        // msaa: the viewers show the multisampled G-buffer resolved (the msaa_resolve pass)
+        case Resource::MsaaPosition:
+            return DebugView::Position;
+        case Resource::MsaaNormal:
+            return DebugView::Normal;
+        case Resource::MsaaAlbedoSpec:
+            return DebugView::Albedo;
+        case Resource::MsaaEmissive:
+            return DebugView::Emissive;
+        case Resource::MsaaDepth:
+            return DebugView::Depth;
+        case Resource::ComplexMask:
         case Resource::VolumeDepth:
         case Resource::LitDepth:
         case Resource::Lights:

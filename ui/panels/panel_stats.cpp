@@ -152,6 +152,12 @@ void drawStatsPanel(StatsState const& stats, std::string const& noFragmentCounts
         }
         wrappedText("%.1f MB at %dx%d, %.1f MB at 1080p, %.1f MB at 4K", layoutMegabytes(layout, f.width, f.height),
                     f.width, f.height, layoutMegabytes(layout, 1920, 1080), layoutMegabytes(layout, 3840, 2160));
+        if (f.msaaUsed != Msaa::Off) {  // docs/msaa.md: every attachment holds that many samples
+            int const n = msaaSamples(f.msaaUsed);
+            wrappedText("MSAA %dx: %.1f MB at %dx%d; complex pixels %.1f%%", n,
+                        n * layoutMegabytes(layout, f.width, f.height), f.width, f.height,
+                        100.0 * f.complexPixelShare.value_or(0.0));
+        }
 
         separatorText("Editor cost");
         EditorCost const& c = stats.costAverage;
