@@ -79,7 +79,7 @@ void RendererImpl::runLighting(FrameRecord& frame, PassRun const& r) {
             if (std::find(r.decl.samples.begin(), r.decl.samples.end(), Resource::MsaaPosition) !=
                 r.decl.samples.end()) {  // msaa: every sample, or sample 0 of the simple pixels (edges)
                 bool const simple = f.settings.msaaLighting == MsaaLighting::Edges;
-                lightingQuadPass({{r.io.targets.msaa.gbuffer, deferred.lights, deferred.shading},
+                lightingQuadPass({{gbufferTextures(r.io.targets.msaa.gbuffer), deferred.lights, deferred.shading},
                                   msaaProgram(simple ? "SAMPLE0" : ""),
                                   triangle,
                                   {*r.fbo, image},

@@ -35,7 +35,7 @@ void RendererImpl::runMsaaEdges(FrameRecord& frame, PassRun const& r) {
     applyGroup(r.decl.states, 0);  // mask and stencil cleared by the executor (PassDecl::clears)
     gl::Program const& p = msaaProgram("EDGES");
     p.use();
-    bindDeferredInputs(p, {targets.msaa.gbuffer, lights, frame.shading});
+    bindDeferredInputs(p, {gbufferTextures(targets.msaa.gbuffer), lights, frame.shading});
     p.set("uMsaaRelativeDistance", kMsaaThresholds.relativeDistance);
     p.set("uMsaaNormalCos", kMsaaThresholds.normalCos);
     p.set("uMsaaAlbedo", kMsaaThresholds.albedo);
@@ -48,8 +48,8 @@ void RendererImpl::runMsaaEdges(FrameRecord& frame, PassRun const& r) {
 
 // msaa edges: the marked pixels, every sample lit and averaged, beside the simple ones.
 void RendererImpl::runLightingComplex(FrameRecord& frame, PassRun const& r) {
-    DeferredInputs const deferred = deferredInputs(frame.f);
-    lightingQuadPass({{targets.msaa.gbuffer, deferred.lights, deferred.shading},
+    DeferredInputs const deferred = deferredInputs(frame.f, r.io);
+    lightingQuadPass({{gbufferTextures(targets.msaa.gbuffer), deferred.lights, deferred.shading},
                       msaaProgram(""),
                       triangle,
                       {*r.fbo, r.io.texture(Resource::Lighting)},

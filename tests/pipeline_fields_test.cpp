@@ -30,32 +30,27 @@ TEST(PipelineFields, OneEntryPerMemberEachEditingItsOwn) {
     // core/pipeline_fields.cpp, then update the count here.
     [[maybe_unused]] auto const& [mode, cull, depthCopy, tonemap, view, layout, accumulation, shading, lightCubes,
                                   volumeWireframes, glassOutline, wireframesSelectedOnly, normalMaps, ambient, exposure,
-                                  shininess, volumeScale] = PipelineSettings{};
-    constexpr std::size_t kMembers = 17;
-                                  volumeWireframes, wireframesSelectedOnly, normalMaps, ambient, exposure, shininess,
-                                  volumeScale, msaa, msaaLighting] = PipelineSettings{};
-                                  constexpr std::size_t kMembers = 18;
-                                  std::span<PipelineField const> const fields = pipelineFields();
-                                  ASSERT_EQ(fields.size(), kMembers);
+                                  shininess, volumeScale, msaa, msaaLighting] = PipelineSettings{};
+    constexpr std::size_t kMembers = 19;
+    std::span<PipelineField const> const fields = pipelineFields();
+    ASSERT_EQ(fields.size(), kMembers);
 
-                                  std::set<std::string_view> names;
-                                  for (PipelineField const& f : fields) {
-                                      EXPECT_TRUE(names.insert(f.name).second) << f.name << " is in the table twice";
-                                      PipelineSettings s;
-                                      double const before = f.get(s);
-                                      double const other = otherValue(f, before);
-                                      f.set(s, other);
-                                      EXPECT_NE(s, PipelineSettings{}) << f.name << " changes nothing";
-                                      EXPECT_EQ(f.get(s), double(float(other)))
-                                          << f.name << " does not read back what it wrote";
-                                      // It changed its own member only: every other entry still reads its default.
-                                      for (PipelineField const& g : fields) {
-                                          if (&g != &f) {
-                                              EXPECT_EQ(g.get(s), g.defaultValue())
-                                                  << f.name << " also changed " << g.name;
-                                          }
-                                      }
-                                  }
+    std::set<std::string_view> names;
+    for (PipelineField const& f : fields) {
+        EXPECT_TRUE(names.insert(f.name).second) << f.name << " is in the table twice";
+        PipelineSettings s;
+        double const before = f.get(s);
+        double const other = otherValue(f, before);
+        f.set(s, other);
+        EXPECT_NE(s, PipelineSettings{}) << f.name << " changes nothing";
+        EXPECT_EQ(f.get(s), double(float(other))) << f.name << " does not read back what it wrote";
+        // It changed its own member only: every other entry still reads its default.
+        for (PipelineField const& g : fields) {
+            if (&g != &f) {
+                EXPECT_EQ(g.get(s), g.defaultValue()) << f.name << " also changed " << g.name;
+            }
+        }
+    }
 }
 
 TEST(PipelineFields, DefaultsLieInTheirRanges) {
