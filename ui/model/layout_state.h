@@ -105,7 +105,7 @@ inline constexpr float kStatsShare = 0.15f;
 inline constexpr float kLeftColumnLeastPx = 300.0f;
 inline constexpr float kRightColumnLeastPx = 320.0f;
 inline constexpr float kViewerStripLeastPx = 208.0f;
-inline constexpr float kViewportLeast = 0.50f;
+inline constexpr float kViewportLeast = 0.40f;
 
 // The shares of the work area the side columns and the strip take at this size and UI scale:
 // kLeftColumn, kRightColumn and kViewerStrip, or more where those are narrower than the least

@@ -37,10 +37,17 @@ void drawPresentationWindow(LayoutState& layout, ViewportState& viewport, Pipeli
     bool const open = ImGui::Begin("Presentation", nullptr, flags);
     ImGui::PopStyleVar();
     if (open) {
-        // One line: what is shown, how it is lit, and the keys that change it.
-        std::string const caption = std::string(overviewLabel(settings.view)) + "  |  " +
-                                    std::string(enumName(kLightingModeNames, settings.mode)) +
-                                    " lighting  |  V / Shift+V: view   M: mode   C: cull   B: depth copy   P: leave";
+        // One line: what is shown and how it is lit, then as many of the keys that change it as fit.
+        std::string caption = std::string(overviewLabel(settings.view)) + "  |  " +
+                              std::string(enumName(kLightingModeNames, settings.mode)) + " lighting";
+        float const width = ImGui::GetContentRegionAvail().x;
+        for (char const* keys : {"  |  V / Shift+V: view   M: mode   C: cull   B: depth copy   P: leave",
+                                 "  |  V: view  M: mode  P: leave", "  |  P: leave"}) {
+            if (ImGui::CalcTextSize((caption + keys).c_str()).x <= width) {
+                caption += keys;
+                break;
+            }
+        }
         ImGui::TextUnformatted(caption.c_str());
         layout.presentationCaption = lastItemRect();
         ImVec2 const avail = ImGui::GetContentRegionAvail();
