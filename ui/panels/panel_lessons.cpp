@@ -282,7 +282,9 @@ void drawStep(LessonState& state, std::span<Lesson const> lessons, LessonValues 
     float const line = ImGui::GetTextLineHeightWithSpacing();
     float const room = ImGui::GetContentRegionAvail().y - footerHeight(state, loadErrors, hints);
     state.regionShortPx = std::max(0.0f, kLessonRegionLines * line - room);
-    ImGui::BeginChild("step region", ImVec2(0.0f, std::max(room, kLessonRegionLines * line)));
+    // A line a few pixels wider than the region (a row of buttons) scrolls sideways, not cut off.
+    ImGui::BeginChild("step region", ImVec2(0.0f, std::max(room, kLessonRegionLines * line)), ImGuiChildFlags_None,
+                      ImGuiWindowFlags_HorizontalScrollbar);
     if (!waiting) drawTasks(state, step, values);  // what to do with the tools, before the answer is revealed
     if (step.predict) drawPrediction(state, *step.predict, values);
     if (!waiting) {
