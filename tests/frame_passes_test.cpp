@@ -263,10 +263,13 @@ TEST(FramePasses, ForwardPlusIsADepthPrepassTheTiledListsAndAForwardPassAtThatDe
     PassDecl const& pre = find(passes, PassId::DepthPrepass);
     EXPECT_EQ(pre.color, std::vector<Resource>{Resource::Lighting});
     EXPECT_EQ(pre.depthStencil, Resource::LitDepth);
-    ASSERT_EQ(pre.states.size(), 1u);
-    EXPECT_FALSE(pre.states[0].colorWrite);
-    EXPECT_TRUE(pre.states[0].depthWrite);
-    EXPECT_EQ(pre.states[0].depthTest, DepthTest::Less);
+    ASSERT_EQ(pre.states.size(), 2u);  // single-sided, double-sided materials
+    EXPECT_EQ(pre.states[1].cull, FaceCull::Off);
+    for (DrawState const& state : pre.states) {
+        EXPECT_FALSE(state.colorWrite);
+        EXPECT_TRUE(state.depthWrite);
+        EXPECT_EQ(state.depthTest, DepthTest::Less);
+    }
     // No G-buffer: every attachment cleared, so the viewers show it unused.
     for (Resource r : {Resource::GBufferPosition, Resource::GBufferNormal, Resource::GBufferDepth, Resource::Lighting,
                        Resource::LitDepth, Resource::DiffuseLight})
@@ -278,9 +281,11 @@ TEST(FramePasses, ForwardPlusIsADepthPrepassTheTiledListsAndAForwardPassAtThatDe
     EXPECT_EQ(lists.writes, std::vector<Resource>{Resource::TileBins});
     PassDecl const& shading = find(passes, PassId::ForwardShading);
     EXPECT_NE(std::find(shading.samples.begin(), shading.samples.end(), Resource::TileBins), shading.samples.end());
-    ASSERT_EQ(shading.states.size(), 1u);
-    EXPECT_EQ(shading.states[0].depthTest, DepthTest::LessEqual);
-    EXPECT_FALSE(shading.states[0].depthWrite);
+    ASSERT_EQ(shading.states.size(), 2u);
+    for (DrawState const& state : shading.states) {
+        EXPECT_EQ(state.depthTest, DepthTest::LessEqual);
+        EXPECT_FALSE(state.depthWrite);
+    }
     EXPECT_TRUE(countsAsLighting(PassId::DepthPrepass));
     EXPECT_TRUE(feedbackLoops(passes).empty());
     // Its heat views count the frame's own lists over the pre-pass depth.

@@ -46,8 +46,8 @@ drawn lightsWindow || fail "the Lights window is not shown ($(field lightsWindow
 echo "Lights window at $(field lightsWindow); Kq field $(field kqField), plot $(field plotRect)"
 
 # --- the wheel over the Lights window (left edge, low, clear of the light list) until the Kq
-# field is wholly in view. At 1280x720 the window is about 250 px tall: the 160 px plot sits below
-# the fold, so it is scrolled to later, during the drag --------------------------------------------
+# field is wholly in view. The plot sits under the light list, above the fields (issue 46: in view
+# without scrolling), so scrolling to Kq takes it out of view; it is scrolled back to during the drag
 wheel_at() {
     set -- $(rect_point lightsWindow 0.04 0.92)
     xdotool mousemove --window "$wid" "$1" "$2"
@@ -82,24 +82,31 @@ for step in 1 2 3 4 5 6; do
     wait_frames 2
 done
 wait_frames 3
-# The plot is still below the fold: during the drag it follows the pointer in a tooltip, marking the
-# radius of the light as the drag has made it.
-drawn plotPopup || { xdotool mouseup 1; fail "no plot beside the pointer while Kq is dragged ($(field plotPopup))"; }
-popup=$(num plotPopupRadius)
-echo "during the drag, plot beside the pointer at $(field plotPopup): r = $popup"
-shot drag_popup
-awk -v a="$popup" -v b="$old" 'BEGIN { exit !(a < b - 0.01) }' ||
-    { xdotool mouseup 1; fail "the plot beside the pointer marks r = $popup, not below the old $old"; }
-near "$popup" "$(solved)" 0.01 || { xdotool mouseup 1; fail "the plot beside the pointer marks r = $popup, solved here $(solved)"; }
-# Still holding the button, the wheel scrolls the window down until the plot is wholly in view (the
-# drag follows the pointer's motion, which the wheel does not move).
+# Where the plot is scrolled out of view (the Kq field far below it), during the drag it follows
+# the pointer in a tooltip, marking the radius of the light as the drag has made it; then, still
+# holding the button, the wheel scrolls the window back up until the plot (under the light list,
+# issue 46) is wholly in view (the drag follows the pointer's motion, which the wheel does not move).
+# Where the plot stays in view beside the Kq field (issue 46: the window has the plot's height), it
+# is the plot checked below, and no tooltip is drawn.
 n=0
-while ! drawn plotRect; do
-    n=$((n + 1))
-    [ "$n" -le 30 ] || { xdotool mouseup 1; fail "30 wheel steps did not bring the plot into view ($(field plotRect))"; }
-    xdotool click 5
-    wait_frames 3
-done
+if drawn plotRect; then
+    drawn plotPopup && { xdotool mouseup 1; fail "the plot is in view and also shown beside the pointer"; }
+    echo "during the drag the plot stays in view beside the Kq field: $(field plotRect)"
+else
+    drawn plotPopup || { xdotool mouseup 1; fail "no plot beside the pointer while Kq is dragged ($(field plotPopup))"; }
+    popup=$(num plotPopupRadius)
+    echo "during the drag, plot beside the pointer at $(field plotPopup): r = $popup"
+    shot drag_popup
+    awk -v a="$popup" -v b="$old" 'BEGIN { exit !(a < b - 0.01) }' ||
+        { xdotool mouseup 1; fail "the plot beside the pointer marks r = $popup, not below the old $old"; }
+    near "$popup" "$(solved)" 0.01 || { xdotool mouseup 1; fail "the plot beside the pointer marks r = $popup, solved here $(solved)"; }
+    while ! drawn plotRect; do
+        n=$((n + 1))
+        [ "$n" -le 30 ] || { xdotool mouseup 1; fail "30 wheel steps did not bring the plot into view ($(field plotRect))"; }
+        xdotool click 4
+        wait_frames 3
+    done
+fi
 echo "during the drag, after $n more wheel steps: plot $(field plotRect)"
 drawn plotPopup && { xdotool mouseup 1; fail "the plot is in view and still shown beside the pointer too"; }
 during=$(num plotRadius)

@@ -408,6 +408,9 @@ void lessonLogFields(Editor const& editor, ui::FrameLogLine& line) {
     line.view = std::string(enumName(kDebugViewNames, editor.state.pipeline.view));
     line.mode = std::string(enumName(kLightingModeNames, editor.state.pipeline.mode));
     line.lessonNote = l.lesson >= 0 ? l.stepNote : std::string();
+    line.lessonLines = l.regionLines;
+    line.lessonsWindow = l.windowRect;
+    line.lessonHints = l.hintsShown;
     line.courseNotes = l.lessonNotes;
     line.courseRows = l.courseRows;
     line.courseRestart = l.courseRestart;
@@ -457,8 +460,10 @@ void drawLessons(Editor& editor) {
     std::vector<ui::LessonCounts> counts;
     for (ui::Lesson const& lesson : editor.course.library.lessons)
         counts.push_back(ui::countProgress(editor.course.progress, lesson.id, ui::lessonShape(lesson)));
-    ui::drawLessonsPanel(editor.course.lessons, editor.course.library.lessons, counts, editor.course.library.errors,
-                         values, editor.course.browser, editor.course.glossary);
+    // The presentation layout shows a lesson beside the image, and no course without one.
+    if (!state.layout.presentation || editor.course.lessons.lesson >= 0)
+        ui::drawLessonsPanel(editor.course.lessons, editor.course.library.lessons, counts, editor.course.library.errors,
+                             values, editor.course.browser, editor.course.glossary, state.layout.presentationLesson);
 
     LessonState& l = editor.course.lessons;
     if (l.restartRequest >= 0) restart(editor, std::exchange(l.restartRequest, -1));

@@ -98,6 +98,9 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.precisionLines = state.viewport.precisionShown;
     ui::OverviewState const& overview = state.viewport.overview;
     line.overview = overview.on;
+    line.presentation = state.layout.presentation;
+    line.presentationCaption = state.layout.presentationCaption;
+    line.presentationItem = state.layout.presentationItemRect;
     line.uiScale = state.layout.scale.current;
     for (std::size_t i = 0; i < state.layout.docks.size(); ++i) {
         ui::WindowDock const& d = state.layout.docks[i];

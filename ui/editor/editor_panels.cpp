@@ -16,6 +16,7 @@
 #include "panels/panel_log.h"
 #include "panels/panel_pipeline.h"
 #include "panels/panel_pixel_inspector.h"
+#include "panels/panel_presentation.h"
 #include "panels/panel_scene_loading.h"
 #include "panels/panel_shortcuts.h"
 #include "panels/panel_stats.h"
@@ -91,11 +92,14 @@ EditRequest drawMainMenu(Editor& editor) {
     bool const viewMenu = ImGui::BeginMenu("View");
     state.layout.viewMenuRect = ui::lastItemRect();
     state.layout.resetLayoutRect = glm::vec4(0.0f);
+    state.layout.presentationItemRect = glm::vec4(0.0f);
     state.layout.uiScaleMenuRect = glm::vec4(0.0f);
     state.layout.uiScaleItemRects.clear();
     if (viewMenu) {
         if (ImGui::MenuItem("Reset layout")) state.layout.resetRequested = true;
         state.layout.resetLayoutRect = ui::lastItemRect();
+        ImGui::MenuItem("Presentation", keysFor(ui::EditorAction::TogglePresentation), &state.layout.presentation);
+        state.layout.presentationItemRect = ui::lastItemRect();
         if (ImGui::MenuItem("Frame selection", keysFor(ui::EditorAction::FrameSelection))) edit.frameSelection = true;
         if (ImGui::MenuItem("Home view", keysFor(ui::EditorAction::HomeView))) edit.homeView = true;
         if (ImGui::MenuItem("Frame the whole scene")) ui::frameBounds(state.rig, state.camera, state.sceneBounds);
@@ -151,6 +155,43 @@ EditRequest drawMainMenu(Editor& editor) {
     return edit;
 }
 
+// The docked layout's windows but the Lessons window (drawn by drawLessons in both layouts).
+void drawDockedPanels(Editor& editor, FrameTimes const& times, unsigned viewportTexture,
+                      std::optional<float> pixelDistance) {
+    EditorState& state = editor.state;
+    Renderer const& renderer = *editor.renderer;
+    ui::drawLightsPanel(state.lightsPanel, state.lights, state.animation, state.sceneBounds, pixelDistance);
+    ui::drawPipelinePanel(state.pipeline,
+                          ui::modeReasons([&](LightingMode m) { return editor.renderer->modeUnavailable(m); }),
+                          &state.ab, &editor.pipelineRects);
+    int const k = std::clamp(state.accumulate.count, 0, int(state.lights.size()));
+    ui::ViewportTeaching ab{state.ab,
+                            state.accumulate,
+                            int(state.lights.size()),
+                            k > 0 ? state.lights[std::size_t(k - 1)].name : std::string(),
+                            ui::sideB(state.ab, state.pipeline),
+                            editor.gpu.ab.b.texture.id(),
+                            editor.gpu.ab.diff.id()};
+    state.viewport.clipPlanes = {state.camera.nearPlane, state.camera.farPlane};
+    state.viewport.findingTexture = ui::findingMaskTexture(editor.gpu.viewerTools, editor.loading.gbuffer.checks,
+                                                           editor.loading.gbuffer.path, state.viewport.markedFinding);
+    state.viewport.cameraInside = ui::lightsAroundEye(state.camera.position, editor.drawn, state.pipeline.volumeScale);
+    state.viewport.stoppedAfter =
+        state.stats.last.stoppedAfter ? std::string(passName(*state.stats.last.stoppedAfter)) : std::string();
+    ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, state.viewportTools, viewportTexture,
+                          {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer),
+                          &ab, state.inspector.locked ? state.inspector.pixel : std::nullopt, times.overviewTextures);
+    state.gbuffer.noGBuffer = shadesForward(state.pipeline.mode);
+    ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()},
+                         state.inspector.locked ? state.inspector.pixel : std::nullopt);
+    ui::drawFramePanel(state.frame, state.pipeline, state.stats.last);
+    ui::drawViewerMagnifier(state.gbuffer, state.viewportTools);
+    ui::drawPixelInspectorPanel(state.inspector);
+    ui::drawStatsPanel(state.stats, editor.caps.pipelineStatisticsUnavailableReason(), int(state.lights.size()),
+                       &editor.render, editor.renderReason, &state.frame);
+    ui::drawLogPanel(state.log);
+}
+
 }  // namespace
 
 std::string windowProblem(ui::EditorWindow which) {
@@ -184,40 +225,26 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
         s >= 0 && std::size_t(s) < editor.drawn.size() && state.inspector.sample && state.inspector.sample->covered)
         pixelDistance =
             glm::distance(glm::vec3(state.inspector.sample->position), editor.drawn[std::size_t(s)].position);
-    ui::drawLightsPanel(state.lightsPanel, state.lights, state.animation, state.sceneBounds, pixelDistance);
-    ui::drawPipelinePanel(state.pipeline,
-                          ui::modeReasons([&](LightingMode m) { return editor.renderer->modeUnavailable(m); }),
-                          &state.ab, &editor.pipelineRects);
     unsigned const viewportTexture = times.litDiffTexture         ? times.litDiffTexture
                                      : times.viewportToolsTexture ? times.viewportToolsTexture
                                                                   : renderer.texture(Attachment::Final);
-    int const k = std::clamp(state.accumulate.count, 0, int(state.lights.size()));
-    ui::ViewportTeaching ab{state.ab,
-                            state.accumulate,
-                            int(state.lights.size()),
-                            k > 0 ? state.lights[std::size_t(k - 1)].name : std::string(),
-                            ui::sideB(state.ab, state.pipeline),
-                            editor.gpu.ab.b.texture.id(),
-                            editor.gpu.ab.diff.id()};
-    state.viewport.clipPlanes = {state.camera.nearPlane, state.camera.farPlane};
-    state.viewport.findingTexture = ui::findingMaskTexture(editor.gpu.viewerTools, editor.loading.gbuffer.checks,
-                                                           editor.loading.gbuffer.path, state.viewport.markedFinding);
-    state.viewport.cameraInside = ui::lightsAroundEye(state.camera.position, editor.drawn, state.pipeline.volumeScale);
-    state.viewport.stoppedAfter =
-        state.stats.last.stoppedAfter ? std::string(passName(*state.stats.last.stoppedAfter)) : std::string();
-    ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, state.viewportTools, viewportTexture,
-                          {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer),
-                          &ab, state.inspector.locked ? state.inspector.pixel : std::nullopt, times.overviewTextures);
-    state.gbuffer.noGBuffer = shadesForward(state.pipeline.mode);
-    ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()},
-                         state.inspector.locked ? state.inspector.pixel : std::nullopt);
-    ui::drawFramePanel(state.frame, state.pipeline, state.stats.last);
-    ui::drawViewerMagnifier(state.gbuffer, state.viewportTools);
-    ui::drawPixelInspectorPanel(state.inspector);
-    ui::drawStatsPanel(state.stats, editor.caps.pipelineStatisticsUnavailableReason(), int(state.lights.size()),
-                       &editor.render, editor.renderReason, &state.frame);
-    ui::drawLogPanel(state.log);
+    state.layout.presentationCaption = state.layout.presentationLesson = glm::vec4(0.0f);
+    if (state.layout.presentation)
+        ui::drawPresentationWindow(state.layout, state.viewport, state.pipeline, viewportTexture,
+                                   editor.course.lessons.lesson >= 0);
+    else
+        drawDockedPanels(editor, times, viewportTexture, pixelDistance);
     drawLessons(editor);  // the Lessons window; applies the step it asks for (editor_lessons.cpp)
+    // The Lessons window fitted again for each step and for a hint that appears.
+    // The Lights window for its plot while a light is selected. Neither while presenting (the dock
+    // tree is kept as it is).
+    ui::LessonState const& lesson = editor.course.lessons;
+    if (!state.layout.presentation) {
+        ui::fitWindowHeight(state.layout.lessonFit, ui::EditorWindow::Lessons, lesson.lesson >= 0,
+                            long(lesson.lesson) * 100000 + lesson.step * 100 + lesson.hintsShown, lesson.regionShortPx);
+        ui::fitWindowHeight(state.layout.lightsFit, ui::EditorWindow::Lights, state.lightsPanel.plotShortPx >= 0.0f,
+                            state.lightsPanel.selected, std::max(0.0f, state.lightsPanel.plotShortPx));
+    }
     ui::recordDocks(state.layout);
     ui::drawSceneLoadingUi(editor.loading);
     ui::drawShortcutsWindow(editor.showShortcuts);

@@ -225,6 +225,9 @@ void carryOut(Editor& editor, EditorAction action) {
         case EditorAction::ToggleOverview:
             state.viewport.overview.on = !state.viewport.overview.on;
             break;
+        case EditorAction::TogglePresentation:
+            state.layout.presentation = !state.layout.presentation;
+            break;
         default:
             break;  // fly keys act through CameraInput::move
     }

@@ -109,6 +109,11 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += "],\"lessonPrediction\":" + quoted(l.lessonPrediction);
     out += std::string(",\"lessonAnswer\":") + (l.lessonAnswer ? "true" : "false");
     out += ",\"lessonTasks\":" + quoted(l.lessonTasks);
+    out += std::string(",\"presentation\":") + (l.presentation ? "true" : "false") +
+           ",\"presentationCaption\":" + rect(l.presentationCaption) +
+           ",\"presentationItem\":" + rect(l.presentationItem);
+    out += ",\"lessonLines\":" + number(l.lessonLines) + ",\"lessonsWindow\":" + rect(l.lessonsWindow) +
+           ",\"lessonHints\":" + std::to_string(l.lessonHints);
     out += std::string(",\"lessonGlossary\":") + (l.lessonGlossary ? "true" : "false");
     out += ",\"lessonGlossaryTerm\":" + quoted(l.lessonGlossaryTerm);
     out += ",\"courseRows\":" + flatRects(l.courseRows) + ",\"courseRestart\":" + flatRects(l.courseRestart);

@@ -50,7 +50,12 @@ struct FrameLogLine {
     std::string lesson;
     std::string lessonPrediction;
     bool lessonAnswer = false;
-    std::string lessonTasks;         // the step's checklist: one '1' (met) or '0' per task
+    std::string lessonTasks;  // the step's checklist: one '1' (met) or '0' per task
+    // The step's region: the text lines it shows in view (its visible height over the line height;
+    // 0 while no lesson is open) and the Lessons window (x, y, width, height; 0 while not drawn).
+    float lessonLines = 0.0f;
+    int lessonHints = 0;  // the tasks' hints shown below it
+    glm::vec4 lessonsWindow{0.0f};
     bool lessonGlossary = false;     // the Glossary window is open
     std::string lessonGlossaryTerm;  // the term it last opened at ("" = none)
     std::vector<glm::vec2> lessonButtons;
@@ -115,6 +120,11 @@ struct FrameLogLine {
     bool overview = false;
     glm::vec4 overviewButton{0.0f};
     std::vector<std::string> overviewCells;
+    // The presentation layout (panels/panel_presentation.h): on or off, its caption's rectangle (0
+    // while off) and View > Presentation's row (0 unless the menu is open).
+    bool presentation = false;
+    glm::vec4 presentationCaption{0.0f};
+    glm::vec4 presentationItem{0.0f};
     float uiScale = 1.0f;  // the UI scale in use (model/ui_scale.h: View > UI scale, --ui-scale)
     // Each editor window's dock node as "NAME=ID" (ID in hex, 0 when floating or not drawn) and its
     // tab (docked) or title bar (floating) as one flat array of rectangles, in EditorWindow order

@@ -177,6 +177,8 @@ std::string_view actionName(EditorAction action) {
             return "next-depth-copy";
         case EditorAction::ToggleOverview:
             return "toggle-overview";
+        case EditorAction::TogglePresentation:
+            return "toggle-presentation";
         case EditorAction::FlyForward:
             return "fly-forward";
         case EditorAction::FlyBack:

@@ -21,7 +21,7 @@ namespace gbl::ui {
 namespace keys {
 inline constexpr int Space = 32;
 inline constexpr int A = 'A', B = 'B', C = 'C', D = 'D', E = 'E', F = 'F', G = 'G', L = 'L', M = 'M', N = 'N', O = 'O',
-                     Q = 'Q', S = 'S', V = 'V', W = 'W', Y = 'Y', Z = 'Z';
+                     P = 'P', Q = 'Q', S = 'S', V = 'V', W = 'W', Y = 'Y', Z = 'Z';
 inline constexpr int Escape = 256, Enter = 257, Tab = 258, Backspace = 259, Delete = 261;
 inline constexpr int Right = 262, Left = 263, Down = 264, Up = 265, Home = 268, End = 269;
 inline constexpr int F1 = 290;
@@ -101,6 +101,7 @@ enum class EditorAction {
     NextCullMode,
     NextDepthCopy,
     ToggleOverview,
+    TogglePresentation,
     FlyForward,
     FlyBack,
     FlyLeft,
@@ -128,7 +129,7 @@ struct Shortcut {
 };
 
 // One list: the key handling, the menus' shortcut hints and the Help > Shortcuts window read it.
-inline constexpr std::array<Shortcut, 25> kShortcuts{{
+inline constexpr std::array<Shortcut, 26> kShortcuts{{
     {keys::Z, kModControl, EditorAction::Undo, ShortcutScope::Editor, false, "Ctrl+Z", "undo the last edit"},
     {keys::Y, kModControl, EditorAction::Redo, ShortcutScope::Editor, false, "Ctrl+Y", "redo"},
     {keys::S, kModControl, EditorAction::SaveSession, ShortcutScope::Editor, false, "Ctrl+S", "save the session"},
@@ -159,6 +160,8 @@ inline constexpr std::array<Shortcut, 25> kShortcuts{{
      "next depth copy: how depth reaches the lit target", kDepthCopyNames},
     {keys::G, 0, EditorAction::ToggleOverview, ShortcutScope::Editor, false, "G",
      "attachment overview: every G-buffer attachment and the lit frame at once (click one to show it)"},
+    {keys::P, 0, EditorAction::TogglePresentation, ShortcutScope::Editor, false, "P",
+     "presentation layout: the viewport's frame as large as the window, the lesson beside it (P: back)"},
     {keys::W, 0, EditorAction::FlyForward, ShortcutScope::Viewport, true, "W", "fly forward (Shift: faster)"},
     {keys::S, 0, EditorAction::FlyBack, ShortcutScope::Viewport, true, "S", "fly back"},
     {keys::A, 0, EditorAction::FlyLeft, ShortcutScope::Viewport, true, "A", "fly left"},

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace gbl::ui {
@@ -43,6 +44,19 @@ struct LayoutSplits {
     std::array<float, 3> rightRows{};  // below Pixel inspector, Lessons, Stats
 };
 
+// A docked window grown to show what it holds (panels/layout.h, fitWindowHeight): whether it wanted
+// the height last frame, the frames left to try, what it showed (a key that asks for a new fit when
+// it changes), the work area and scale it last fitted, and the dock nodes' heights before the
+// first grow (node ID, height), put back when it no longer wants them.
+struct DockHeightFit {
+    bool wasOpen = false;
+    int triesLeft = 0;
+    long key = 0;
+    glm::vec2 workSize{0.0f};
+    float scale = 0.0f;
+    std::vector<std::pair<unsigned, float>> saved;
+};
+
 struct LayoutState {
     bool resetRequested = false;  // "Reset layout" in the View menu
     bool dockBuilt = false;       // the dock tree exists (from imgui.ini or built this session)
@@ -53,6 +67,15 @@ struct LayoutState {
     glm::vec4 resetLayoutRect{0.0f};                            // View > Reset layout while the menu is open
     glm::vec4 uiScaleMenuRect{0.0f};                            // View > UI scale while the menu is open
     std::vector<glm::vec4> uiScaleItemRects;                    // its choices while that submenu is open
+    DockHeightFit lessonFit;                                    // the Lessons window while a lesson is open
+    DockHeightFit lightsFit;  // the Lights window while a light is selected (its attenuation plot)
+    // The presentation layout (panels/panel_presentation.h; the P key, View > Presentation): while
+    // on, the dock tree is kept but not drawn. Its caption and the lesson's place beside the image as
+    // last drawn (0 while off), and View > Presentation's row while the menu is open.
+    bool presentation = false;
+    glm::vec4 presentationCaption{0.0f};
+    glm::vec4 presentationLesson{0.0f};
+    glm::vec4 presentationItemRect{0.0f};
 };
 
 // Fractions of the work area. The G-buffer strip spans the whole width below the others, so
@@ -60,7 +83,7 @@ struct LayoutState {
 // readable at once, as Unreal's buffer overview); above it the side columns keep their widths
 // and the viewport gets the rest. At 1280x720 the side columns are about 300 px: the narrowest
 // that fits the Lights and Pipeline rows without cutting a label.
-inline constexpr float kLeftColumn = 0.24f;
+inline constexpr float kLeftColumn = 0.235f;
 inline constexpr float kRightColumn = 0.26f;
 // Share of the height below the others: a viewer's one-line toolbar over an image of the
 // frame's aspect at a fifth of the width (the frame is about 1.6:1).

@@ -215,6 +215,16 @@ struct LessonState {
     // also says what the viewport shows instead. Filled by the editor loop from the renderer.
     std::vector<std::string> lessonNotes;
     std::string stepNote;
+    // The step's region (its checklist, prediction, text, question and answer) as last drawn: the text
+    // lines it shows in view (its visible height over the line height) and how many pixels it lacks
+    // of kLessonRegionLines; the layout grows the Lessons window by that much (panels/layout.h).
+    float regionLines = 0.0f;
+    float regionShortPx = 0.0f;
+    int hintsShown = 0;          // the hints drawn below the region
+    glm::vec4 windowRect{0.0f};  // the Lessons window as last drawn (x, y, width, height; 0 when not)
 };
+
+// The least text lines a step's region shows while a lesson is open (issue 46: a class reads it).
+inline constexpr float kLessonRegionLines = 12.0f;
 
 }  // namespace gbl::ui

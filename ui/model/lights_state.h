@@ -42,6 +42,9 @@ struct LightsPanelState {
     // radius the plot marks and its ghost's (-1 when not drawn).
     glm::vec4 window{0.0f};  // the Lights window itself (0 while collapsed or hidden)
     glm::vec4 plotRect{0.0f};
+    // The pixels the plot lacks of its least height at the top of the window (the layout grows the
+    // window by them, panels/layout.h); -1 while no plot is drawn.
+    float plotShortPx = -1.0f;
     glm::vec4 kqFieldRect{0.0f};
     float plotRadius = -1.0f;
     float plotGhostRadius = -1.0f;

@@ -7,6 +7,9 @@
 #include <imgui.h>
 #include <imgui_internal.h>  // the DockBuilder API
 
+#include <algorithm>
+#include <vector>
+
 namespace gbl::ui {
 
 namespace {
@@ -60,7 +63,81 @@ void beginLayout(LayoutState& state) {
         state.resetRequested = false;
     }
     state.dockBuilt = true;
-    ImGui::DockSpaceOverViewport(dockspace, viewport);
+    // The presentation layout keeps the dock tree (every window's place) alive without drawing it or
+    // its host window (which would cover the presentation window).
+    if (state.presentation)
+        ImGui::DockSpace(dockspace, ImVec2(0.0f, 0.0f), ImGuiDockNodeFlags_KeepAliveOnly);
+    else
+        ImGui::DockSpaceOverViewport(dockspace, viewport);
+}
+
+namespace {
+
+// The leaves below a dock node (1 for a leaf).
+int leafCount(ImGuiDockNode const* node) {
+    if (!node->IsSplitNode()) return 1;
+    return leafCount(node->ChildNodes[0]) + leafCount(node->ChildNodes[1]);
+}
+
+void keepHeight(DockHeightFit& fit, ImGuiDockNode const* node) {
+    for (auto const& [id, h] : fit.saved)
+        if (id == node->ID) return;
+    fit.saved.emplace_back(node->ID, node->SizeRef.y);
+}
+
+// Grows the window's node by up to `need` pixels, taken from its column's other nodes, nearest
+// first: a split's two children share its height by their SizeRef, so at each level the side
+// holding the window gets what this level and the ones above give, the other side loses its part.
+void growNode(DockHeightFit& fit, EditorWindow which, float need) {
+    ImGuiWindow const* window = ImGui::FindWindowByName(windowName(which));
+    if (!window || !window->DockIsActive || !window->DockNode) return;
+    float const keep = ImGui::GetFrameHeight() + ImGui::GetTextLineHeightWithSpacing() +
+                       ImGui::GetStyle().WindowPadding.y * 2.0f;  // a tab and one line
+    struct Level {
+        ImGuiDockNode* mine;
+        ImGuiDockNode* other;
+        float take;
+    };
+    std::vector<Level> levels;
+    for (ImGuiDockNode* n = window->DockNode; n->ParentNode && need > 0.5f; n = n->ParentNode) {
+        ImGuiDockNode* parent = n->ParentNode;
+        if (parent->SplitAxis != ImGuiAxis_Y) break;  // the column ends here
+        ImGuiDockNode* other = parent->ChildNodes[0] == n ? parent->ChildNodes[1] : parent->ChildNodes[0];
+        float const take = std::min(need, std::max(0.0f, other->Size.y - keep * float(leafCount(other))));
+        levels.push_back({n, other, take});
+        need -= take;
+    }
+    float above = 0.0f;  // what the levels above the current one give
+    for (auto it = levels.rbegin(); it != levels.rend(); ++it) {
+        above += it->take;
+        keepHeight(fit, it->mine);
+        keepHeight(fit, it->other);
+        it->mine->SizeRef.y = it->mine->Size.y + above;
+        it->other->SizeRef.y = it->other->Size.y - it->take;
+    }
+}
+
+}  // namespace
+
+void fitWindowHeight(DockHeightFit& fit, EditorWindow which, bool lessonOpen, long key, float shortPx) {
+    ImGuiViewport const* viewport = ImGui::GetMainViewport();
+    glm::vec2 const work{viewport->WorkSize.x, viewport->WorkSize.y};
+    if (lessonOpen && (!fit.wasOpen || key != fit.key || work != fit.workSize || uiScaleFactor() != fit.scale))
+        fit.triesLeft = 3;
+    fit.key = key;
+    if (!lessonOpen && fit.wasOpen) {
+        // The column's heights as they were before the lesson grew it, where those nodes remain.
+        for (auto const& [id, h] : fit.saved)
+            if (ImGuiDockNode* node = ImGui::DockBuilderGetNode(id)) node->SizeRef.y = h;
+        fit.saved.clear();
+        fit.triesLeft = 0;
+    }
+    fit.wasOpen = lessonOpen;
+    fit.workSize = work;
+    fit.scale = uiScaleFactor();
+    if (!lessonOpen || fit.triesLeft <= 0) return;
+    --fit.triesLeft;
+    if (shortPx > 0.5f) growNode(fit, which, shortPx);
 }
 
 void recordDocks(LayoutState& state) {

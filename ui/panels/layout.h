@@ -16,6 +16,14 @@ void beginLayout(LayoutState& state);
 // floats at a size that shows a few passes.
 void placeFrameWindow();
 
+// Called after `window` was drawn: while it `wants` the height and lacks `shortPx` pixels (the
+// Lessons window its region's least lines, LessonState::regionShortPx; the Lights window its
+// plot's least height), its dock node takes that height from the nodes above and below it in its
+// column (each keeps a tab and a line), on the frames after it first wanted it, after `key` (what
+// it shows) changed, the window resized or the UI scale changed; the user's drags in between
+// stand. When it no longer wants the height the column's heights are put back as they were.
+void fitWindowHeight(DockHeightFit& fit, EditorWindow window, bool wants, long key, float shortPx);
+
 // Called after every editor window: notes where each one is docked and its tab (state.docks).
 void recordDocks(LayoutState& state);
 

@@ -38,12 +38,13 @@ std::string formatNumber(float v) {
 }
 
 // The last item's centre in window coordinates; (0, 0) unless it is wholly in view (scrolled
-// partly out, a click at its centre could land on the next window).
+// partly out, a click at its centre could land on the next window). In view: inside the clip
+// rectangle items are drawn with, which in the step's region is also clipped by the window.
 glm::vec2 itemCentre() {
     ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    float const top = ImGui::GetWindowPos().y + ImGui::GetFrameHeight();
-    float const bottom = ImGui::GetWindowPos().y + ImGui::GetWindowHeight() - ImGui::GetStyle().WindowPadding.y * 0.5f;
-    if (!ImGui::IsItemVisible() || a.y < top || b.y > bottom) return {0.0f, 0.0f};
+    float const top = ImGui::GetWindowDrawList()->GetClipRectMin().y;
+    float const bottom = ImGui::GetWindowDrawList()->GetClipRectMax().y;
+    if (!ImGui::IsItemVisible() || a.y < top - 0.5f || b.y > bottom + 0.5f) return {0.0f, 0.0f};
     return {(a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f};
 }
 
@@ -183,14 +184,17 @@ void drawTasks(LessonState const& state, LessonStep const& step, LessonValues co
             continue;
         }
         wrappedText("[ ] %s", goal.c_str());
-        if (progress.hint) {
-            ImGui::Indent();
-            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-            wrappedText("Hint: %s", substituteLessonText(step.tasks[i].hint, values).c_str());
-            ImGui::PopStyleColor();
-            ImGui::Unindent();
-        }
     }
+}
+
+// The hints due (a task left unmet for kTaskHintSeconds), one paragraph each; drawn below the
+// step's region, so a hint never pushes the step's text out of view.
+std::vector<std::string> dueHints(LessonState const& state, LessonStep const& step, LessonValues const& values) {
+    std::vector<std::string> hints;
+    for (std::size_t i = 0; i < step.tasks.size() && i < state.tasks.size(); ++i)
+        if (state.tasks[i].hint && !state.tasks[i].met)
+            hints.push_back("Hint: " + substituteLessonText(step.tasks[i].hint, values));
+    return hints;
 }
 
 // "Terms: NDC, window-space depth": the glossary's terms the step's text uses; hover for the
@@ -220,22 +224,25 @@ void drawTerms(LessonState& state, LessonStep const& step, Glossary const& gloss
     ImGui::PopStyleVar();
 }
 
-// The height the window keeps below the step's text: the message, the load errors and the
-// authoring header, each as drawn after the step.
-float footerHeight(LessonState const& state, std::span<std::string const> loadErrors) {
+// The height the window keeps below the step's region: the hints, the message, the load errors and
+// the authoring header, each as drawn after the step.
+float footerHeight(LessonState const& state, std::span<std::string const> loadErrors,
+                   std::span<std::string const> hints) {
     ImGuiStyle const& style = ImGui::GetStyle();
     float const width = ImGui::GetContentRegionAvail().x;
     float h = style.ItemSpacing.y * 3.0f + ImGui::GetFrameHeight();
     auto text = [&](std::string const& t) {
         h += ImGui::CalcTextSize(t.c_str(), nullptr, false, width).y + style.ItemSpacing.y;
     };
+    for (auto const& t : hints) text(t);
     if (!state.message.empty()) text(state.message);
     for (auto const& e : loadErrors) text(e);
     return h;
 }
 
-// A step: its controls, title, checklist, prediction and answer button stay at the top, in view at
-// any window size the layout gives (1280x720 included); the long text below them scrolls on its own.
+// A step: its controls and title stay at the top; below them the step's region (checklist,
+// prediction, answer button, text, question, answer) scrolls on its own and keeps at least
+// kLessonRegionLines lines (the layout grows the window to give them); the hints come after it.
 void drawStep(LessonState& state, std::span<Lesson const> lessons, LessonValues const& values, Glossary const& glossary,
               std::span<std::string const> loadErrors) {
     Lesson const& lesson = lessons[std::size_t(state.lesson)];
@@ -271,6 +278,13 @@ void drawStep(LessonState& state, std::span<Lesson const> lessons, LessonValues 
         state.nextLessonButton = itemRect();
     }
     ImGui::Separator();
+    std::vector<std::string> const hints = waiting ? std::vector<std::string>{} : dueHints(state, step, values);
+    float const line = ImGui::GetTextLineHeightWithSpacing();
+    float const room = ImGui::GetContentRegionAvail().y - footerHeight(state, loadErrors, hints);
+    state.regionShortPx = std::max(0.0f, kLessonRegionLines * line - room);
+    // A line a few pixels wider than the region (a row of buttons) scrolls sideways, not cut off.
+    ImGui::BeginChild("step region", ImVec2(0.0f, std::max(room, kLessonRegionLines * line)), ImGuiChildFlags_None,
+                      ImGuiWindowFlags_HorizontalScrollbar);
     if (!waiting) drawTasks(state, step, values);  // what to do with the tools, before the answer is revealed
     if (step.predict) drawPrediction(state, *step.predict, values);
     if (!waiting) {
@@ -281,10 +295,7 @@ void drawStep(LessonState& state, std::span<Lesson const> lessons, LessonValues 
         state.buttonCentres[4] = itemCentre();
     }
     drawTerms(state, step, glossary);
-
-    float const height = std::max(ImGui::GetContentRegionAvail().y - footerHeight(state, loadErrors),
-                                  ImGui::GetTextLineHeightWithSpacing() * 3.0f);
-    ImGui::BeginChild("step text", ImVec2(0.0f, height));
+    ImGui::Spacing();
     if (!waiting) {
         wrappedText("%s", substituteLessonText(step.text.look, values).c_str());
         ImGui::Spacing();
@@ -316,6 +327,14 @@ void drawStep(LessonState& state, std::span<Lesson const> lessons, LessonValues 
     }
     if (step.claim) ImGui::TextDisabled("checked claim: %s", std::string(claimKindInfo(step.claim->kind).name).c_str());
     ImGui::EndChild();
+    // The region's lines in view: its height inside the window's clip rectangle, over a line.
+    float const top = std::max(ImGui::GetItemRectMin().y, ImGui::GetWindowDrawList()->GetClipRectMin().y);
+    float const bottom = std::min(ImGui::GetItemRectMax().y, ImGui::GetWindowDrawList()->GetClipRectMax().y);
+    state.regionLines = std::max(0.0f, bottom - top) / line;
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    for (std::string const& h : hints) wrappedText("%s", h.c_str());
+    state.hintsShown = int(hints.size());
+    ImGui::PopStyleColor();
 }
 
 void drawAuthoring(LessonState& state, FileBrowserState& browser) {
@@ -349,12 +368,27 @@ void drawAuthoring(LessonState& state, FileBrowserState& browser) {
 
 void drawLessonsPanel(LessonState& state, std::span<Lesson const> lessons, std::span<LessonCounts const> counts,
                       std::span<std::string const> loadErrors, LessonValues const& values, FileBrowserState& browser,
-                      Glossary const& glossary) {
+                      Glossary const& glossary, glm::vec4 placement) {
     state.buttonCentres = {};
     state.courseRows.clear();
     state.courseRestart.clear();
     state.nextLessonButton = glm::vec4(0.0f);
-    if (ImGui::Begin(windowName(EditorWindow::Lessons), nullptr)) {
+    state.regionLines = 0.0f;
+    state.regionShortPx = 0.0f;
+    state.hintsShown = 0;
+    state.windowRect = glm::vec4(0.0f);
+    bool const placed = placement.z > 0.0f && placement.w > 0.0f;
+    if (placed) {
+        ImGui::SetNextWindowPos(ImVec2(placement.x, placement.y));
+        ImGui::SetNextWindowSize(ImVec2(placement.z, placement.w));
+    }
+    ImGuiWindowFlags const flags = placed ? ImGuiWindowFlags_NoDocking | ImGuiWindowFlags_NoMove |
+                                                ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                                ImGuiWindowFlags_NoSavedSettings
+                                          : ImGuiWindowFlags_None;
+    if (ImGui::Begin(placed ? "Lesson##presentation" : windowName(EditorWindow::Lessons), nullptr, flags)) {
+        state.windowRect = {ImGui::GetWindowPos().x, ImGui::GetWindowPos().y, ImGui::GetWindowWidth(),
+                            ImGui::GetWindowHeight()};
         if (state.lesson >= 0 && state.lesson < int(lessons.size()))
             drawStep(state, lessons, values, glossary, loadErrors);
         else

@@ -220,6 +220,20 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights, std:
         ImGui::PopStyleColor();
         return;
     }
+    // The plot's place, under the list: reserved here and drawn once the fields below have made this
+    // frame's edit, so it is in view without scrolling whenever the window is as tall as the list and
+    // the plot's least height (the layout gives it that height, panels/layout.h).
+    bool const plotShown = lights[std::size_t(state.selected)].kind != LightKind::Directional &&
+                           ImGui::CollapsingHeader("Attenuation plot", ImGuiTreeNodeFlags_DefaultOpen);
+    ImVec2 plotPos(0.0f, 0.0f), plotSize(0.0f, 0.0f);
+    if (plotShown) {
+        float const least = ImGui::GetFontSize() * 9.0f;
+        float const avail = ImGui::GetContentRegionAvail().y - ImGui::GetStyle().ItemSpacing.y;
+        plotSize = ImVec2(ImGui::GetContentRegionAvail().x, std::clamp(avail, least, ImGui::GetFontSize() * 12.0f));
+        state.plotShortPx = ImGui::GetScrollY() <= 0.0f ? std::max(0.0f, least - avail) : 0.0f;
+        plotPos = ImGui::GetCursorScreenPos();
+        ImGui::Dummy(plotSize);
+    }
     // Short labels on the right, values fill the rest of the narrow side column.
     ImGui::PushItemWidth(-(ImGui::CalcTextSize("Position").x + ImGui::GetStyle().ItemInnerSpacing.x));
     // Widgets edit a copy; the copy replaces the light only when validateLight accepts it.
@@ -278,9 +292,8 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights, std:
         bool active;
         ~PlotPopup() { drawPlotPopup(state, light, pixelDistance, active); }
     } const popup{state, light, pixelDistance, seen.attenuationActive};
-    // The plot is a section of its own, open by default and never squeezed below 160 px: the
-    // curve is what the attenuation terms above are for.
-    if (!ImGui::CollapsingHeader("Attenuation plot", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!plotShown) return;
+    ImGui::SeparatorText("Attenuation");
     ImGui::Text("Radius %.3f  (%s)", r.radius, radiusKindText(r.kind));
     ImGui::Text("Imax %.3f  Imax/cut %.1f", lightImax(light),
                 light.threshold > 0.0f ? lightImax(light) / light.threshold : 0.0f);
@@ -296,17 +309,20 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights, std:
         ImGui::DragFloat("##axis", &state.plotAxisMax, 0.05f, 0.1f, 1e4f, "0..%.2f", ImGuiSliderFlags_AlwaysClamp);
     }
     // A spot gets a second, smaller plot: its cone factor against the angle from its axis.
-    float const coneH = light.kind == LightKind::Spot ? ImGui::GetFontSize() * 5.0f : 0.0f;
-    float const plotH = std::clamp(ImGui::GetContentRegionAvail().y - 4.0f - coneH, 160.0f,
-                                   std::max(160.0f, ImGui::GetFontSize() * 18.0f));
-    AttenuationPlotMarks const marks = drawAttenuationPlot(
-        light, state.plotLogScale, ImVec2(ImGui::GetContentRegionAvail().x, plotH),
-        state.plotFixedAxis ? state.plotAxisMax : 0.0f, pixelDistance, shownPlotGhost(state, light));
+    if (light.kind == LightKind::Spot)
+        drawConePlot(light, ImVec2(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 5.0f));
+    // The attenuation plot in its place under the list.
+    ImVec2 const resume = ImGui::GetCursorScreenPos();
+    ImGui::SetCursorScreenPos(plotPos);
+    AttenuationPlotMarks const marks =
+        drawAttenuationPlot(light, state.plotLogScale, plotSize, state.plotFixedAxis ? state.plotAxisMax : 0.0f,
+                            pixelDistance, shownPlotGhost(state, light));
     state.plotRect = visibleItemRect();
     state.plotRadius = marks.radius;
     state.plotGhostRadius = marks.ghostRadius;
     state.plotLight = {light.kc, light.kl, light.kq, lightImax(light), light.threshold};
-    if (light.kind == LightKind::Spot) drawConePlot(light, ImVec2(ImGui::GetContentRegionAvail().x, coneH));
+    ImGui::SetCursorScreenPos(resume);
+    ImGui::Dummy(ImVec2(0.0f, 0.0f));
 }
 
 }  // namespace
@@ -315,6 +331,7 @@ void drawLightsPanel(LightsPanelState& state, std::vector<PointLight>& lights, L
                      Bounds const& sceneBounds, std::optional<float> pixelDistance) {
     state.window = state.plotRect = state.kqFieldRect = state.plotPopupRect = glm::vec4(0.0f);
     state.plotRadius = state.plotGhostRadius = state.plotPopupRadius = -1.0f;
+    state.plotShortPx = -1.0f;
     state.plotLight.clear();
     if (ImGui::Begin(windowName(EditorWindow::Lights), nullptr)) {
         if (state.selected >= int(lights.size())) state.selected = int(lights.size()) - 1;
