@@ -5,6 +5,7 @@
 #include "model/editor_state.h"
 #include "model/file_browser.h"
 #include "model/gbuffer_opening.h"
+#include "model/program_capture.h"
 #include "scene/scene_data.h"
 
 #include <array>
@@ -87,6 +88,8 @@ struct SceneLoadingState {
 
     // File > Open G-buffer, and dropped manifests and folders (model/gbuffer_opening.h).
     GBufferOpenState gbuffer;
+    // File > Capture a program… (model/program_capture.h): its manifest opens as the G-buffer.
+    ProgramCaptureState capture;
 
     // The last finished load, for the error dialog and for tests.
     SceneLoadOutcome lastOutcome = SceneLoadOutcome::None;
