@@ -98,7 +98,9 @@ void drawSceneMenuItems(SceneLoadingState& state) {
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
                 "A glTF with its buffers and textures in subfolders: choose the folder that holds them all\n"
-                "(or drop the folder on the page). The first .gltf or .glb in it by path opens.");
+                "(or drop the folder on the page). The first .gltf or .glb in it by path opens.\n"
+                "A G-buffer's folder (manifest.json and its EXR/PNG files, or a render --out folder) opens as\n"
+                "File > Open G-buffer does.");
     }
     if (ImGui::BeginMenu("Open recent scene", !state.recent.empty())) {
         for (auto const& r : state.recent)
