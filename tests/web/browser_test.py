@@ -819,10 +819,10 @@ def case_folder(browser, base, out):
                              capture_output=True, text=True, timeout=300)
         assert run.returncode == 0, f"render --out failed: {run.stdout[-300:]} {run.stderr[-300:]}"
         drop(export)
-        page.wait_for("the G-buffer folder's line", lambda: lines("opening the G-buffer in it from the folder Export"), 60)
+        page.wait_for("the G-buffer folder's line", lambda: lines("opening the G-buffer Export from the folder Export"), 60)
         page.wait_for("the G-buffer to open", lambda: page.frames[-1].get("gbuffer", "").endswith("/Export"), 120)
         page.wait_frames(3)
-        print("  " + lines("opening the G-buffer in it from the folder Export")[0])
+        print("  " + lines("opening the G-buffer Export from the folder Export")[0])
         shown = page.frames[-1]
         assert shown["frameSize"] == [160, 90], f"the G-buffer is shown at {shown['frameSize']}, not 160x90"
         opened = lines("G-buffer " + shown["gbuffer"] + ": 160x90")
