@@ -38,8 +38,8 @@ struct ProgramCaptureState {
     bool dialogOpen = false;
     bool focusCommand = false;  // the command field takes the keyboard when the dialog opens
     std::string commandLine;    // PROGRAM [ARGS...], split as a shell would (quotes, backslashes)
-    int frame = 5;
-    std::string outDir;  // prefilled with ./capture (the command's default) made absolute
+    int frame = 1;              // `capture`'s default: frame 0 often only uploads
+    std::string outDir;         // prefilled with ./capture (the command's default) made absolute
     CaptureApi api = CaptureApi::Auto;
     std::shared_ptr<CaptureJob> job;
     std::string lastError;  // one sentence ("" after a good capture or a new start)
