@@ -1,6 +1,7 @@
 // `gbuffer-lab capture` on tests/capture_target/deferred_demo.cpp under apitrace: the manifest's roles,
 // camera and lights are the program's, the re-light is the program's own image, and every refusal is
 // one sentence. GL runs in the child processes (the demo, the retracer, render --gbuffer).
+#include "capture/camera_solve.h"
 #include "capture/capture_mapping.h"
 #include "capture/run_process.h"
 #include "capture/trace_scan.h"
@@ -77,6 +78,37 @@ void expectVec3(nlohmann::json const& j, float const* want, char const* what) {
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(j[std::size_t(k)].get<float>(), want[k], 1e-5f) << what;
 }
 
+// The largest difference, over every pixel and channel, between gbuffer-lab's re-light of `manifest`
+// and the demo's own lit image `lit` (its 8-bit pbuffer: clamped to [0, 1], rows bottom-up); *where says
+// at which pixel. 2 when the re-light fails.
+float relitDifference(std::string const& manifest, std::string const& lit, std::string const& out, std::string* where) {
+    auto const relit = test::runGbufferLab({"render", "--gbuffer", manifest, "--out", out});
+    EXPECT_EQ(relit.exitCode, 0) << relit.output;
+    std::string error;
+    auto const ours = readImage(out + "/lighting.exr", &error);
+    EXPECT_TRUE(ours) << error;
+    int w = 0, h = 0;
+    std::vector<float> const own = readPfm(lit, &w, &h);
+    if (!ours || w != ours->width || h != ours->height) {
+        *where = "the re-light is not the program's size";
+        return 2.0f;
+    }
+    float worst = 0.0f;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c) {
+                float const theirs =
+                    own[(std::size_t(h - 1 - y) * std::size_t(w) + std::size_t(x)) * 3 + std::size_t(c)];
+                float const mine = std::clamp(ours->at(x, y, c), 0.0f, 1.0f);
+                if (std::abs(mine - theirs) > worst)
+                    *where = "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") channel " +
+                             std::to_string(c) + ": re-lit " + std::to_string(mine) + ", the program's " +
+                             std::to_string(theirs);
+                worst = std::max(worst, std::abs(mine - theirs));
+            }
+    return worst;
+}
+
 }  // namespace
 
 TEST(CaptureGlTest, LearnOpenGlNamesGiveRolesCameraLightsAndTheProgramsOwnImage) {
@@ -112,32 +144,57 @@ TEST(CaptureGlTest, LearnOpenGlNamesGiveRolesCameraLightsAndTheProgramsOwnImage)
     EXPECT_EQ(check.exitCode, 0) << check.output;  // a correct capture has no findings
 
     // Re-lit by gbuffer-lab from the captured G-buffer: the demo's own lit image.
-    auto const relit =
-        test::runGbufferLab({"render", "--gbuffer", dir + "/cap/manifest.json", "--out", dir + "/relit"});
-    ASSERT_EQ(relit.exitCode, 0) << relit.output;
-    std::string error;
-    auto const ours = readImage(dir + "/relit/lighting.exr", &error);
-    ASSERT_TRUE(ours) << error;
-    int w = 0, h = 0;
-    std::vector<float> const own = readPfm(lit, &w, &h);
-    ASSERT_EQ(w, ours->width);
-    ASSERT_EQ(h, ours->height);
-    float worst = 0.0f;
     std::string where;
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            for (int c = 0; c < 3; ++c) {
-                // The demo's image went through its 8-bit pbuffer: clamped to [0, 1], rows bottom-up.
-                float const theirs =
-                    own[(std::size_t(h - 1 - y) * std::size_t(w) + std::size_t(x)) * 3 + std::size_t(c)];
-                float const mine = std::clamp(ours->at(x, y, c), 0.0f, 1.0f);
-                if (std::abs(mine - theirs) > worst)
-                    where = "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") channel " +
-                            std::to_string(c) + ": re-lit " + std::to_string(mine) + ", the program's " +
-                            std::to_string(theirs);
-                worst = std::max(worst, std::abs(mine - theirs));
-            }
+    float const worst = relitDifference(dir + "/cap/manifest.json", lit, dir + "/relit", &where);
     // 1/255: the demo's 8-bit rounding (half a step) and float evaluation order, no more.
+    EXPECT_LE(worst, 1.0f / 255.0f) << where;
+}
+
+// Variant 5 hides its camera in one matrix whose name says nothing (uTransform): capture solves the
+// view-projection from the position attachment by least squares and says so; the solved matrices put
+// every stored position within half a pixel of its own pixel, are the program's own, and re-light to
+// the program's image.
+TEST(CaptureGlTest, ACameraWithoutNamedUniformsIsSolvedFromThePositions) {
+    REQUIRE_APITRACE();
+    std::string const dir = test::freshTempDir("capture_v5");
+    std::string const lit = dir + "/own_lit.pfm";
+    auto const r = captureDemo(dir + "/cap", 5, 1, 3, lit);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    nlohmann::json const m = test::readJsonFile(dir + "/cap/manifest.json");
+    ASSERT_TRUE(m.contains("camera")) << m["capture"]["unmapped"];
+    std::string const why = m["camera"]["guessed_from"];
+    EXPECT_NE(why.find("solved from the position attachment gPosition"), std::string::npos) << why;
+    EXPECT_NE(why.find("least squares"), std::string::npos) << why;
+    EXPECT_NE(why.find("fitted to the depth attachment"), std::string::npos) << why;
+    EXPECT_EQ(m["capture"]["unmapped"], "");
+    auto const matrix = [](nlohmann::json const& j) {
+        glm::mat4 out;
+        for (int c = 0; c < 4; ++c)
+            for (int row = 0; row < 4; ++row) out[c][row] = j[std::size_t(c)][std::size_t(row)].get<float>();
+        return out;
+    };
+    glm::mat4 const solved = matrix(m["camera"]["projection"]) * matrix(m["camera"]["view"]);
+    std::string error;
+    auto const positions = readImage(dir + "/cap/" + m["position"]["file"].get<std::string>(), &error);
+    ASSERT_TRUE(positions) << error;
+    capture::Reprojection const e = capture::reprojectionError(*positions, solved);
+    EXPECT_GT(e.samples, std::size_t(kW * kH / 4));
+    EXPECT_LT(e.rms, 0.5) << "max " << e.max;
+    EXPECT_LT(e.max, 1.0) << "rms " << e.rms;
+    // The program's own view-projection (its depth range included, from the depth attachment).
+    glm::mat4 const own = glm::perspective(glm::radians(45.0f), float(kW) / float(kH), 0.1f, 50.0f) *
+                          glm::lookAt(kEye, glm::vec3(0.0f, 0.3f, 0.0f), glm::vec3(0, 1, 0));
+    for (int c = 0; c < 4; ++c)
+        for (int row = 0; row < 4; ++row)
+            EXPECT_NEAR(solved[c][row], own[c][row], 0.01f * (1.0f + std::abs(own[c][row]))) << c << "," << row;
+    ManifestLoad const load = loadManifest(dir + "/cap/manifest.json");
+    ASSERT_TRUE(load.manifest) << load.error;
+    ASSERT_TRUE(load.manifest->camera);
+    EXPECT_LT(glm::length(load.manifest->camera->position - kEye), 0.01f);
+    auto const check = test::runGbufferLab({"check", dir + "/cap"});
+    EXPECT_EQ(check.exitCode, 0) << check.output;
+    std::string where;
+    float const worst = relitDifference(dir + "/cap/manifest.json", lit, dir + "/relit", &where);
     EXPECT_LE(worst, 1.0f / 255.0f) << where;
 }
 

@@ -53,6 +53,15 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     l.exportAllItem = {9, 150, 260, 17};
     l.windowShotItem = {9, 168, 260, 17};
     l.gbufferBrowser = true;
+    l.captureItem = {9, 106, 260, 17};
+    l.captureDialog = true;
+    l.captureCommand = {427, 180, 411, 19};
+    l.captureFrame = {427, 203, 193, 19};
+    l.captureOut = {427, 266, 411, 19};
+    l.captureEgl = {579, 226, 45, 19};
+    l.captureButton = {427, 294, 109, 19};
+    l.capturing = true;
+    l.captureError = "./x is not a program that can be run.";
     l.timing = "gpu_elapsed";
     l.passMs = {{"geometry", 1.25}, {"lighting", 3.5}};
     nlohmann::json const j = nlohmann::json::parse(frameLogJson(l));
@@ -108,6 +117,15 @@ TEST(FrameLog, LinesAreJsonWithEveryField) {
     EXPECT_EQ(j["exportAllItem"], nlohmann::json::parse("[9,150,260,17]"));
     EXPECT_EQ(j["windowShotItem"], nlohmann::json::parse("[9,168,260,17]"));
     EXPECT_EQ(j["gbufferBrowser"], true);
+    EXPECT_EQ(j["captureItem"], nlohmann::json::parse("[9,106,260,17]"));
+    EXPECT_EQ(j["captureDialog"], true);
+    EXPECT_EQ(j["captureCommand"], nlohmann::json::parse("[427,180,411,19]"));
+    EXPECT_EQ(j["captureFrame"], nlohmann::json::parse("[427,203,193,19]"));
+    EXPECT_EQ(j["captureOut"], nlohmann::json::parse("[427,266,411,19]"));
+    EXPECT_EQ(j["captureEgl"], nlohmann::json::parse("[579,226,45,19]"));
+    EXPECT_EQ(j["captureButton"], nlohmann::json::parse("[427,294,109,19]"));
+    EXPECT_EQ(j["capturing"], true);
+    EXPECT_EQ(j["captureError"], "./x is not a program that can be run.");
     EXPECT_EQ(j["timing"], "gpu_elapsed");
     EXPECT_EQ(j["passMs"], nlohmann::json::parse(R"([["geometry",1.25],["lighting",3.5]])"));
 }

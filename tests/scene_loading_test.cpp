@@ -221,9 +221,47 @@ TEST(SceneLoading, FolderWithoutAScenePathSaysWhy) {
     std::ofstream(dir / "empty" / "sub" / "albedo.png") << "png";
     FolderScene const pictures = findFolderScene((dir / "empty").string(), "the folder empty");
     EXPECT_FALSE(pictures.scene);
-    EXPECT_EQ(pictures.message, "the folder empty holds 1 file(s) but no .gltf or .glb scene: nothing to open");
+    EXPECT_FALSE(pictures.gbuffer);
+    EXPECT_EQ(pictures.message,
+              "the folder empty holds 1 file(s) but no .gltf or .glb scene and no G-buffer (manifest.json): nothing to "
+              "open");
     FolderScene const missing = findFolderScene((dir / "missing").string(), "the folder missing");
     EXPECT_FALSE(missing.scene);
     EXPECT_TRUE(missing.message.starts_with("cannot read the folder missing: ")) << missing.message;
+    fs::remove_all(dir);
+}
+
+// A G-buffer folder given whole (the browser writes a dropped or picked folder into its file system): a
+// manifest's folder, or a `render --out` folder (camera.json with lights.json), opens as a G-buffer; the
+// first by path when there are several; a scene in the same folder wins.
+TEST(SceneLoading, FolderWithAGBufferOpensIt) {
+    fs::path const dir = fs::temp_directory_path() / "gbl_folder_gbuffer";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "export");
+    for (char const* name : {"export/camera.json", "export/lights.json", "export/position.exr"})
+        std::ofstream(dir / name) << "{}";
+    FolderScene const rendered = findFolderScene((dir / "export").string(), "the folder export");
+    EXPECT_FALSE(rendered.scene);
+    ASSERT_TRUE(rendered.gbuffer) << rendered.message;
+    EXPECT_EQ(*rendered.gbuffer, (dir / "export").string());
+    EXPECT_EQ(rendered.message, "opening the G-buffer in it from the folder export (3 files)");
+    // camera.json alone is not a `render --out` folder.
+    fs::remove(dir / "export" / "lights.json");
+    EXPECT_FALSE(findFolderScene((dir / "export").string(), "the folder export").gbuffer);
+
+    fs::create_directories(dir / "top" / "b");
+    fs::create_directories(dir / "top" / "a");
+    for (char const* name : {"top/b/manifest.json", "top/a/manifest.json", "top/a/normal.exr"})
+        std::ofstream(dir / name) << "{}";
+    FolderScene const two = findFolderScene((dir / "top").string(), "the folder top");
+    ASSERT_TRUE(two.gbuffer) << two.message;
+    EXPECT_EQ(*two.gbuffer, (dir / "top" / "a").generic_string());
+    EXPECT_EQ(two.message,
+              "opening the G-buffer a from the folder top (3 files); one G-buffer at a time, the first by path: the "
+              "folder also holds b");
+    std::ofstream(dir / "top" / "scene.gltf") << "{}";
+    FolderScene const scene = findFolderScene((dir / "top").string(), "the folder top");
+    EXPECT_TRUE(scene.scene);
+    EXPECT_FALSE(scene.gbuffer);
     fs::remove_all(dir);
 }

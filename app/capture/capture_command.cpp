@@ -8,7 +8,9 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -38,6 +40,13 @@ void addCaptureOptions(CLI::App& sub, CaptureOptions& o) {
 }
 
 namespace {
+
+// SIGTERM or SIGINT while the program runs (the editor's Cancel, Ctrl+C): the traced program is stopped
+// with apitrace, and nothing more is done.
+std::atomic<bool> stopRequested{false};
+extern "C" void onStopSignal(int) {
+    stopRequested.store(true);
+}
 
 int refuse(std::string const& message) {
     std::fprintf(stderr, "gbuffer-lab capture: %s\n", message.c_str());
@@ -97,7 +106,10 @@ int runCapture(CaptureOptions const& o, char const* self) {
         // Frame N is drawn once the trace holds N + 1 swaps; the writer flushes in chunks, so this is
         // seen a little late, never early.
         auto lastPoll = std::chrono::steady_clock::now();
+        std::signal(SIGTERM, onStopSignal);
+        std::signal(SIGINT, onStopSignal);
         po.shouldStop = [&] {
+            if (stopRequested.load()) return true;
             auto const now = std::chrono::steady_clock::now();
             if (now - lastPoll < std::chrono::milliseconds(500)) return false;
             lastPoll = now;
@@ -105,6 +117,7 @@ int runCapture(CaptureOptions const& o, char const* self) {
         };
         ProcessResult const r = runProcess(argv, po);
         if (!r.started) return refuse("apitrace could not be started (" + r.error + ")");
+        if (stopRequested.load()) return refuse("stopped before frame " + std::to_string(o.frame) + " was captured");
         if (!fs::exists(trace) || fs::file_size(trace, ec) < 64)
             return refuse(o.program[0] + " exited (code " + std::to_string(r.exitCode) +
                           ") before drawing anything through " + api + ": see " + po.stderrPath);

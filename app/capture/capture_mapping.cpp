@@ -2,12 +2,14 @@
 // program's matrices, lights from the lighting program's uniform arrays.
 #include "capture/capture_mapping.h"
 
+#include "capture/camera_solve.h"
 #include "image/image_io.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -88,7 +90,8 @@ ojson columns(glm::mat4 const& m) {
 }
 
 // Camera from the geometry program's mat4 uniforms named as view / projection / view-projection.
-std::optional<ojson> cameraFrom(StateDump const& geometry, std::string* missing) {
+// *noUniforms: there are none of them at all (the camera can then be solved from the positions).
+std::optional<ojson> cameraFrom(StateDump const& geometry, std::string* missing, bool* noUniforms) {
     std::string viewName, projName, vpName;
     for (auto const& [name, value] : geometry.uniforms.items()) {
         if (!matrixOf(value)) continue;
@@ -115,10 +118,43 @@ std::optional<ojson> cameraFrom(StateDump const& geometry, std::string* missing)
         *missing = "the camera (" + vpName + " is not a perspective view-projection)";
         return std::nullopt;
     }
-    *missing =
-        "the camera (the geometry program has no view/projection mat4 uniforms, and solving it from the "
-        "positions is not done yet)";
+    *missing = "the camera (the geometry program has no view/projection mat4 uniforms";
+    *noUniforms = true;
     return std::nullopt;
+}
+
+// The camera solved from the position attachment (and the depth attachment's depth rows, if any).
+std::optional<ojson> solvedCamera(DumpedImage const& position, std::string const& positionName,
+                                  DumpedImage const* depth, std::string* missing) {
+    FloatImage const img = position.decode();
+    FloatImage const depthImg = depth ? depth->decode() : FloatImage{};
+    std::string why;
+    auto const solved = solveCameraFromPositions(img, depthImg.pixels.empty() ? nullptr : &depthImg, &why);
+    if (!solved) {
+        *missing += ", and solving it from the positions failed: " + why + ")";
+        return std::nullopt;
+    }
+    // Half a pixel: the positions are the surface at each pixel's centre, so a true camera fits far closer.
+    if (solved->rmsPixels > 0.5) {
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      ", and the positions fit no perspective camera: %.2f px rms off their pixels after solving "
+                      "(view-space positions, or not a pinhole camera?))",
+                      solved->rmsPixels);
+        *missing += text;
+        return std::nullopt;
+    }
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "solved from the position attachment %s: %zu world positions and their pixel centres give the "
+                  "view-projection by least squares (normalised direct linear transform), reprojection error "
+                  "%.3f px rms, %.3f px at most; near and far %s",
+                  positionName.c_str(), solved->samples, solved->rmsPixels, solved->maxPixels,
+                  solved->depthFitted ? "fitted to the depth attachment" : "bracket the positions (no usable depth)");
+    return ojson{{"view", columns(solved->view)},
+                 {"projection", columns(solved->projection)},
+                 {"matrix_layout", "column-major"},
+                 {"guessed_from", text}};
 }
 
 // Lights: uniform arrays of the lighting program, "lights[2].Position" or "uLightPos" = [[...], ...].
@@ -236,6 +272,8 @@ std::optional<CaptureResult> writeCapture(TraceScan const& scan, StateDump const
     ojson m{{"format", "gbuffer-lab-gbuffer"}, {"version", 1}, {"flip_y", false}};
     std::vector<std::string> unmapped;
     std::set<Role> taken;
+    DumpedImage const* positionImage = nullptr;  // for a camera solved from it
+    std::string positionName;
     // The sampled attachments first, by the lighting program's sampler names, then the data.
     for (auto const& [attachment, unit] : scan.sampledAttachments) {
         auto const img = geometry.framebuffer.find(attachment);
@@ -261,6 +299,8 @@ std::optional<CaptureResult> writeCapture(TraceScan const& scan, StateDump const
         }
         switch (role) {
             case Role::Position:
+                positionImage = &img->second;
+                positionName = sampler.empty() ? attachment : sampler;
                 m["position"] = {{"file", *file}, {"channels", "rgb"}, {"space", "world"}, {"guessed_from", why}};
                 break;
             case Role::Normal:
@@ -294,18 +334,31 @@ std::optional<CaptureResult> writeCapture(TraceScan const& scan, StateDump const
                  " of the G-buffer's targets)";
         return std::nullopt;
     }
+    DumpedImage const* depthImage = nullptr;
+    char const* depthKey = nullptr;
+    for (char const* key : {"GL_DEPTH_ATTACHMENT", "GL_DEPTH_STENCIL_ATTACHMENT"})
+        if (auto d = geometry.framebuffer.find(key); d != geometry.framebuffer.end() && d->second.isFloat) {
+            depthImage = &d->second;
+            depthKey = key;
+            break;
+        }
     std::string cameraMissing;
-    if (auto camera = cameraFrom(geometry, &cameraMissing)) {
+    bool noCameraUniforms = false;
+    auto camera = cameraFrom(geometry, &cameraMissing, &noCameraUniforms);
+    if (!camera && noCameraUniforms) {
+        if (positionImage && positionImage->isFloat)
+            camera = solvedCamera(*positionImage, positionName, depthImage, &cameraMissing);
+        else
+            cameraMissing += ", and no float position attachment to solve it from)";
+    }
+    if (camera) {
         m["camera"] = *camera;
-        for (char const* depthKey : {"GL_DEPTH_ATTACHMENT", "GL_DEPTH_STENCIL_ATTACHMENT"})
-            if (auto d = geometry.framebuffer.find(depthKey); d != geometry.framebuffer.end() && d->second.isFloat) {
-                if (auto file = writeImage(d->second, "depth", dir))
-                    m["depth"] = {{"file", *file},
-                                  {"channel", "r"},
-                                  {"convention", "window"},
-                                  {"guessed_from", std::string("the G-buffer's ") + depthKey}};
-                break;
-            }
+        if (depthImage)
+            if (auto file = writeImage(*depthImage, "depth", dir))
+                m["depth"] = {{"file", *file},
+                              {"channel", "r"},
+                              {"convention", "window"},
+                              {"guessed_from", std::string("the G-buffer's ") + depthKey}};
     } else {
         unmapped.push_back(cameraMissing);
     }

@@ -2,17 +2,14 @@
 #include "capture/state_dump.h"
 
 #include "capture/run_process.h"
+#include "image/image_io.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <string_view>
 
 namespace gbl::capture {
-
-namespace OIIO = OIIO_NAMESPACE;
 
 namespace {
 
@@ -110,19 +107,18 @@ FloatImage DumpedImage::decode() const {
         std::memcpy(img.pixels.data(), encoded.data() + pos, count * sizeof(float));
         return img;
     }
-    OIIO::Filesystem::IOMemReader reader(encoded.data(), encoded.size());
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);  // alpha is the specular channel, not coverage
-    void* proxy = &reader;
-    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-    auto in = OIIO::ImageInput::open("dump.png", &config, &reader);
-    if (!in) return img;
-    OIIO::ImageSpec const& spec = in->spec();
-    img.width = spec.width;
-    img.height = spec.height;
-    img.channels = spec.nchannels;
-    img.pixels.resize(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(spec.nchannels));
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data())) img = {};
+    // The retracer writes PNG for 8-bit targets only (the rest as float PNM above), so the image seam's
+    // 8-bit reader from memory loses nothing; it keeps alpha straight (the specular channel, not coverage).
+    auto const* bytes = reinterpret_cast<std::uint8_t const*>(encoded.data());
+    // No more pixels than the dump's own size says: a PNG of another size is refused undecoded.
+    std::size_t const pixels = std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0));
+    DecodedPixels const decoded = decodeImage8({bytes, encoded.size()}, "image/png", pixels);
+    if (!decoded.ok() || decoded.bytes.empty()) return img;
+    img.width = decoded.width;
+    img.height = decoded.height;
+    img.channels = decoded.channels;
+    img.pixels.resize(decoded.bytes.size());
+    for (std::size_t i = 0; i < decoded.bytes.size(); ++i) img.pixels[i] = float(decoded.bytes[i]) / 255.0f;
     return img;
 }
 

@@ -50,7 +50,8 @@ addEventListener('resize', function () {
 // Files dropped or picked one by one arrive side by side (GLFW's drop writes each under its bare
 // name), which breaks a glTF's "textures/albedo.png". A folder is written into the in-memory file
 // system under a fresh folder of its own, keeping every relative path, and handed to the editor
-// (gbl_open_folder, ui/editor/editor_window.cpp), which opens the first .gltf or .glb in it.
+// (gbl_open_folder, ui/editor/editor_window.cpp), which opens the first .gltf or .glb in it, or else
+// the G-buffer in it (a folder with manifest.json and its images, or a `render --out` folder).
 var gblFolders = 0;
 
 // list: [{path: 'Duck/textures/a.png', file: File}]; label names the folder in the editor's log;

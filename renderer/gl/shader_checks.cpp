@@ -5,10 +5,10 @@
 #include "gl/shader_bindings.h"
 
 #include <atomic>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <mutex>
-#include <regex>
 #include <sstream>
 
 namespace gbl {
@@ -37,15 +37,31 @@ std::string lastShaderCheckReport() {
     return gLastReport;
 }
 
+// "#define CHECK_SITE_NAME N" lines, read by hand: GCC 12's <regex> at -O1 under the sanitizers warns
+// (-Wmaybe-uninitialized inside its own std::function), which fails the -Werror sanitizer build.
 std::vector<std::string> shaderCheckSiteNames(std::string_view checksSource) {
     std::vector<std::string> names;
-    static std::regex const line(R"(#define\s+CHECK_SITE_([A-Z0-9_]+)\s+([0-9]+))");
-    std::string const text(checksSource);
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), line); it != std::sregex_iterator(); ++it) {
-        std::size_t const n = std::stoul((*it)[2].str());
+    auto const space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+    auto const nameChar = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; };
+    std::string_view const define = "#define", prefix = "CHECK_SITE_";
+    std::string_view const t = checksSource;
+    for (std::size_t at = t.find(define); at != std::string_view::npos; at = t.find(define, at + 1)) {
+        std::size_t p = at + define.size();
+        std::size_t const gap = p;
+        while (p < t.size() && space(t[p])) ++p;
+        if (p == gap || t.substr(p, prefix.size()) != prefix) continue;
+        p += prefix.size();
+        std::size_t const nameBegin = p;
+        while (p < t.size() && nameChar(t[p])) ++p;
+        std::size_t const nameEnd = p;
+        while (p < t.size() && space(t[p])) ++p;
+        std::size_t const digits = p;
+        while (p < t.size() && std::isdigit(static_cast<unsigned char>(t[p]))) ++p;
+        if (nameEnd == nameBegin || digits == nameEnd || p == digits || p - digits > 9) continue;
+        std::size_t const n = std::stoul(std::string(t.substr(digits, p - digits)));
         if (n > 1000) continue;  // not a site number
         if (names.size() <= n) names.resize(n + 1);
-        std::string name = (*it)[1].str();
+        std::string name(t.substr(nameBegin, nameEnd - nameBegin));
         for (char& c : name) c = c == '_' ? ' ' : char(std::tolower(static_cast<unsigned char>(c)));
         names[n] = name;
     }

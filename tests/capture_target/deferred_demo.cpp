@@ -1,7 +1,7 @@
 // A small deferred renderer written as a reader of LearnOpenGL's deferred chapter would: the program
 // `gbuffer-lab capture` is tested on. It shares no code with gbuffer-lab (EGL, epoxy and GLM only).
 //
-//   deferred_demo [--size WxH] [--frames N] [--out LIT.pfm] [--variant 1|2]
+//   deferred_demo [--size WxH] [--frames N] [--out LIT.pfm] [--variant 1..5]
 //
 // Each frame: a geometry pass into a G-buffer (position and normal RGBA16F, albedo + specular RGBA8,
 // depth), a full-screen lighting pass over four point lights into the default framebuffer (a pbuffer),
@@ -9,7 +9,8 @@
 // as PFM and glReadPixels both have them). Variant 2 names its samplers and uniforms otherwise
 // (uPositionTex, uNormalTex, uAlbedoTex, uLightPos[], uLightColor[], uEye, one viewProj). Two more
 // are broken on purpose, for capture's refusals: 3 draws into one target only (no G-buffer, as a forward
-// renderer), 4 binds none of the G-buffer's textures for its lighting pass.
+// renderer), 4 binds none of the G-buffer's textures for its lighting pass. Variant 5 is variant 1 with its
+// camera hidden in one matrix whose name says nothing (uTransform), which capture must solve from the positions.
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
@@ -51,6 +52,19 @@ void main() {
     FragPos = worldPos.xyz;
     Normal = transpose(inverse(mat3(uModel))) * aNormal;
     gl_Position = viewProj * worldPos;
+})";
+char const* const kGeometryVs5 = R"(#version 330 core
+layout(location = 0) in vec3 aPos;
+layout(location = 1) in vec3 aNormal;
+out vec3 FragPos;
+out vec3 Normal;
+uniform mat4 model;
+uniform mat4 uTransform;
+void main() {
+    vec4 worldPos = model * vec4(aPos, 1.0);
+    FragPos = worldPos.xyz;
+    Normal = transpose(inverse(mat3(model))) * aNormal;
+    gl_Position = uTransform * worldPos;
 })";
 char const* const kGeometryFs = R"(#version 330 core
 layout(location = 0) out vec4 gPosition;
@@ -234,7 +248,10 @@ int main(int argc, char** argv) {
         return 1;
     }
 
-    GLuint const geometry = program(variant == 2 ? kGeometryVs2 : kGeometryVs1, kGeometryFs);
+    GLuint const geometry = program(variant == 2   ? kGeometryVs2
+                                    : variant == 5 ? kGeometryVs5
+                                                   : kGeometryVs1,
+                                    kGeometryFs);
     GLuint const lighting = program(kQuadVs, variant == 2 ? kLightingFs2 : kLightingFs1);
     std::vector<float> const cube = cubeVertices();
     GLuint vao = 0, vbo = 0, quadVao = 0;
@@ -282,9 +299,10 @@ int main(int argc, char** argv) {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         glEnable(GL_DEPTH_TEST);
         glUseProgram(geometry);
-        if (v2) {
+        if (v2 || variant == 5) {
             glm::mat4 const vp = projection * view;
-            glUniformMatrix4fv(glGetUniformLocation(geometry, "viewProj"), 1, GL_FALSE, glm::value_ptr(vp));
+            glUniformMatrix4fv(glGetUniformLocation(geometry, v2 ? "viewProj" : "uTransform"), 1, GL_FALSE,
+                               glm::value_ptr(vp));
         } else {
             glUniformMatrix4fv(glGetUniformLocation(geometry, "view"), 1, GL_FALSE, glm::value_ptr(view));
             glUniformMatrix4fv(glGetUniformLocation(geometry, "projection"), 1, GL_FALSE, glm::value_ptr(projection));

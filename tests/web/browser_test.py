@@ -33,7 +33,8 @@ Cases:
              in subfolders (made from ../shared/gltf/Duck at run time; skipped when absent) opens it
              textured and lit; the same folder dropped on the page (Input.dispatchDragEvent) opens
              again; an empty folder, one without a scene and one with two scenes each get their one
-             line in the log, and the editor keeps drawing;
+             line in the log, and the editor keeps drawing; a `render --out` folder (written by
+             --native) dropped on the page opens as the G-buffer, at its own size;
   export     File > Export all... and Enter: one download, gbuffer-lab-export.zip, whose CRCs hold
              and which has every file of the export, its EXR files read back here (ZIP-compressed
              float scanlines) at the frame's size, depth within [0, 1];
@@ -805,6 +806,28 @@ def case_folder(browser, base, out):
         before = len(page.frames)
         page.wait_frames(3)
         assert len(page.frames) > before, "the editor stopped drawing"
+
+        # An imported G-buffer's folder (a `render --out` folder: EXR attachments, camera.json,
+        # lights.json, which tinyexr reads in the page) dropped on the page opens as File > Open
+        # G-buffer does, at its own size. Made by the native editor (--native).
+        native = page_cases.SETTINGS.get("native")
+        if not native:
+            print("  G-buffer folder: not tried (no --native to write one with render --out)")
+            return page
+        export = os.path.join(work, "Export")
+        run = subprocess.run([native, "render", "--out", export, "--size", "160x90", "--lights", "4"],
+                             capture_output=True, text=True, timeout=300)
+        assert run.returncode == 0, f"render --out failed: {run.stdout[-300:]} {run.stderr[-300:]}"
+        drop(export)
+        page.wait_for("the G-buffer folder's line", lambda: lines("opening the G-buffer Export from the folder Export"), 60)
+        page.wait_for("the G-buffer to open", lambda: page.frames[-1].get("gbuffer", "").endswith("/Export"), 120)
+        page.wait_frames(3)
+        print("  " + lines("opening the G-buffer Export from the folder Export")[0])
+        shown = page.frames[-1]
+        assert shown["frameSize"] == [160, 90], f"the G-buffer is shown at {shown['frameSize']}, not 160x90"
+        opened = lines("G-buffer " + shown["gbuffer"] + ": 160x90")
+        assert opened, "the editor did not log opening the G-buffer at 160x90"
+        print("  " + opened[0][:160])
         return page
     finally:
         shutil.rmtree(work, ignore_errors=True)

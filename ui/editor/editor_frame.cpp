@@ -263,6 +263,16 @@ void dropStaleStop(Editor& editor) {
 // the scene's geometry pass until closed. Every change is a new frame to render.
 void openOrCloseGBuffer(Editor& editor) {
     Renderer& renderer = *editor.renderer;
+    // File > Capture a program…: a finished capture's manifest is opened like any other.
+    ui::ProgramCaptureState& capture = editor.loading.capture;
+    if (capture.job && capture.job->done.load()) {
+        if (auto const manifest = ui::finishProgramCapture(capture)) {
+            ui::logMessage(editor.state.log, "Captured " + *manifest + "; opening it.");
+            editor.loading.gbuffer.requests.push_back(*manifest);
+        } else {
+            ui::logMessage(editor.state.log, capture.lastError, true);
+        }
+    }
     ui::GBufferChange const change = ui::updateGBufferOpening(
         editor.loading.gbuffer, editor.state,
         [&](ImportedFrame const& frame) { return renderer.setImportedGBuffer(frame); },

@@ -137,6 +137,16 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.exportAllItem = editor.sessions->panel.exportAllItemRect;
     line.windowShotItem = editor.windowShot.itemRect;
     line.gbufferBrowser = editor.loading.gbuffer.browser.open;
+    ui::ProgramCaptureState const& capture = editor.loading.capture;
+    line.captureItem = capture.menuItemRect;
+    line.captureDialog = capture.dialogOpen;
+    line.captureCommand = capture.commandRect;
+    line.captureFrame = capture.frameRect;
+    line.captureOut = capture.outRect;
+    line.captureEgl = capture.eglRect;
+    line.captureButton = capture.captureButtonRect;
+    line.capturing = ui::captureRunning(capture);
+    line.captureError = capture.lastError;
     line.timing = state.stats.last.timingSource;
     line.status = editor.menuStatus;
     if (ui::kInBrowser) line.browserLimits = ui::browserLimits(editor.browserAbout, state.stats.last.timingSource);

@@ -56,6 +56,7 @@ EditRequest drawMainMenu(Editor& editor) {
     ui::SessionController& sessions = *editor.sessions;
     EditRequest edit;
     editor.loading.gbuffer.menuItemRect = glm::vec4(0.0f);
+    editor.loading.capture.menuItemRect = glm::vec4(0.0f);
     editor.loading.openItemRect = glm::vec4(0.0f);
     editor.loading.openFolderItemRect = glm::vec4(0.0f);
     sessions.panel.exportAllItemRect = glm::vec4(0.0f);

@@ -481,7 +481,9 @@ extern "C" EMSCRIPTEN_KEEPALIVE void gbl_open_folder(char const* dir, char const
     gbl::ui::LogState& log = editor->state.log;
     if (*unread) gbl::ui::logMessage(log, std::string(label) + ": these files could not be read: " + unread, true);
     gbl::ui::FolderScene const found = gbl::ui::findFolderScene(dir, label);
-    gbl::ui::logMessage(log, found.message, !found.scene);
+    gbl::ui::logMessage(log, found.message, !found.scene && !found.gbuffer);
     if (found.scene) editor->loading.dropped.push_back(*found.scene);
+    // An imported G-buffer's folder (manifest and EXR files, or a `render --out` folder): as File > Open G-buffer.
+    if (found.gbuffer) editor->loading.gbuffer.requests.push_back(*found.gbuffer);
 }
 #endif

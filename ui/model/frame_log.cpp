@@ -166,6 +166,11 @@ std::string frameLogJson(FrameLogLine const& l) {
            ",\"openSceneItem\":" + rect(l.openSceneItem) + ",\"openFolderItem\":" + rect(l.openFolderItem) +
            ",\"exportAllItem\":" + rect(l.exportAllItem) + ",\"windowShotItem\":" + rect(l.windowShotItem) +
            ",\"gbufferBrowser\":" + (l.gbufferBrowser ? "true" : "false");
+    out += ",\"captureItem\":" + rect(l.captureItem) + ",\"captureDialog\":" + (l.captureDialog ? "true" : "false") +
+           ",\"captureCommand\":" + rect(l.captureCommand) + ",\"captureFrame\":" + rect(l.captureFrame) +
+           ",\"captureOut\":" + rect(l.captureOut) + ",\"captureEgl\":" + rect(l.captureEgl) +
+           ",\"captureButton\":" + rect(l.captureButton) + ",\"capturing\":" + (l.capturing ? "true" : "false");
+    out += ",\"captureError\":" + quoted(l.captureError);
     // Pairs, not an object: a pass's name as a key would read as a field of the line itself to
     // the shell tests' field lookups ("wireframes" is both).
     out += ",\"timing\":" + quoted(l.timing) + ",\"passMs\":[";

@@ -163,6 +163,18 @@ struct FrameLogLine {
     glm::vec4 exportAllItem{0.0f};
     glm::vec4 windowShotItem{0.0f};
     bool gbufferBrowser = false;
+    // File > "Capture a program..." (0 while the menu is closed), whether its dialog is open, the
+    // dialog's command, frame and folder fields, its EGL choice and its Capture button (0 unless
+    // drawn), whether a capture runs and the last refusal's sentence.
+    glm::vec4 captureItem{0.0f};
+    bool captureDialog = false;
+    glm::vec4 captureCommand{0.0f};
+    glm::vec4 captureFrame{0.0f};
+    glm::vec4 captureOut{0.0f};
+    glm::vec4 captureEgl{0.0f};
+    glm::vec4 captureButton{0.0f};
+    bool capturing = false;
+    std::string captureError;
     // How the renderer's passes were timed (FrameStats::timingSource) and the last timings shown,
     // [pass name, milliseconds] pairs (a frame or more old where the GPU is read without waiting).
     std::string timing;

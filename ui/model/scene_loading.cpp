@@ -165,20 +165,44 @@ FolderScene findFolderScene(std::string const& dir, std::string const& label) {
     namespace fs = std::filesystem;
     std::error_code ec;
     std::vector<std::string> files, scenes;  // paths relative to dir
+    std::vector<std::string> gbuffers;       // folders relative to dir ("." for dir itself)
     for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator();
          it.increment(ec)) {
         if (!it->is_regular_file(ec)) continue;
         std::string const rel = it->path().lexically_relative(dir).generic_string();
         files.push_back(rel);
         if (rel.ends_with(".gltf") || rel.ends_with(".glb")) scenes.push_back(rel);
+        // A manifest, or the camera.json of a `render --out` folder that also has its lights.json.
+        std::string const name = it->path().filename().string();
+        std::error_code ignored;
+        if (name == "manifest.json" ||
+            (name == "camera.json" && fs::exists(it->path().parent_path() / "lights.json", ignored)))
+            gbuffers.push_back(fs::path(rel).parent_path().empty() ? "."
+                                                                   : fs::path(rel).parent_path().generic_string());
     }
-    if (ec) return {std::nullopt, "cannot read " + label + ": " + ec.message()};
-    if (files.empty()) return {std::nullopt, label + " holds no files: choose the folder the .gltf or .glb is in"};
+    if (ec) return {std::nullopt, std::nullopt, "cannot read " + label + ": " + ec.message()};
+    if (files.empty())
+        return {std::nullopt, std::nullopt, label + " holds no files: choose the folder the .gltf or .glb is in"};
+    if (scenes.empty() && !gbuffers.empty()) {
+        std::sort(gbuffers.begin(), gbuffers.end());
+        gbuffers.erase(std::unique(gbuffers.begin(), gbuffers.end()), gbuffers.end());
+        std::string const folder = gbuffers.front() == "." ? dir : (fs::path(dir) / gbuffers.front()).generic_string();
+        FolderScene found{std::nullopt, folder,
+                          "opening the G-buffer " +
+                              (gbuffers.front() == "." ? std::string("in it") : gbuffers.front()) + " from " + label +
+                              " (" + std::to_string(files.size()) + " files)"};
+        if (gbuffers.size() > 1) {
+            found.message += "; one G-buffer at a time, the first by path: the folder also holds";
+            for (std::size_t i = 1; i < gbuffers.size(); ++i) found.message += (i > 1 ? ", " : " ") + gbuffers[i];
+        }
+        return found;
+    }
     if (scenes.empty())
-        return {std::nullopt, label + " holds " + std::to_string(files.size()) +
-                                  " file(s) but no .gltf or .glb scene: nothing to open"};
+        return {std::nullopt, std::nullopt,
+                label + " holds " + std::to_string(files.size()) +
+                    " file(s) but no .gltf or .glb scene and no G-buffer (manifest.json): nothing to open"};
     std::sort(scenes.begin(), scenes.end());
-    FolderScene found{(fs::path(dir) / scenes.front()).generic_string(),
+    FolderScene found{(fs::path(dir) / scenes.front()).generic_string(), std::nullopt,
                       "opening " + scenes.front() + " from " + label + " (" + std::to_string(files.size()) + " files)"};
     if (scenes.size() > 1) {
         found.message += "; one scene at a time, the first by path: the folder also holds";

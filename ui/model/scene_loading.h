@@ -5,6 +5,7 @@
 #include "model/editor_state.h"
 #include "model/file_browser.h"
 #include "model/gbuffer_opening.h"
+#include "model/program_capture.h"
 #include "scene/scene_data.h"
 
 #include <array>
@@ -65,10 +66,13 @@ DroppedDocument droppedDocumentKind(std::string const& path);
 // A folder given to the editor whole (in the browser: dropped on the page, or chosen with File >
 // Open folder..., and written into its in-memory file system keeping the relative paths), so a glTF
 // finds its buffers and textures in their subfolders: the scene file to open in it, the first
-// .gltf or .glb by path when there are several. `label` names the folder in the messages.
+// .gltf or .glb by path when there are several. Without a scene, an imported G-buffer in it (a folder
+// holding manifest.json, or a `render --out` folder with camera.json and lights.json: docs/import.md),
+// the first such folder by path, opens as File > Open G-buffer would. `label` names the folder in the messages.
 struct FolderScene {
-    std::optional<std::string> scene;  // the path to open; nullopt: none (message says why)
-    std::string message;               // one line for the log: what opens, what else was there, or why nothing
+    std::optional<std::string> scene;    // the path to open; nullopt: none (message says why)
+    std::optional<std::string> gbuffer;  // else the G-buffer folder to open
+    std::string message;                 // one line for the log: what opens, what else was there, or why nothing
 };
 FolderScene findFolderScene(std::string const& dir, std::string const& label);
 
@@ -87,6 +91,8 @@ struct SceneLoadingState {
 
     // File > Open G-buffer, and dropped manifests and folders (model/gbuffer_opening.h).
     GBufferOpenState gbuffer;
+    // File > Capture a program… (model/program_capture.h): its manifest opens as the G-buffer.
+    ProgramCaptureState capture;
 
     // The last finished load, for the error dialog and for tests.
     SceneLoadOutcome lastOutcome = SceneLoadOutcome::None;

@@ -3,6 +3,7 @@
 #include "panels/item_rect.h"
 
 #include "model/browser_files.h"
+#include "panels/panel_capture.h"
 #include "panels/panel_file_browser.h"
 
 #include <imgui.h>
@@ -97,7 +98,9 @@ void drawSceneMenuItems(SceneLoadingState& state) {
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
                 "A glTF with its buffers and textures in subfolders: choose the folder that holds them all\n"
-                "(or drop the folder on the page). The first .gltf or .glb in it by path opens.");
+                "(or drop the folder on the page). The first .gltf or .glb in it by path opens.\n"
+                "A G-buffer's folder (manifest.json and its EXR/PNG files, or a render --out folder) opens as\n"
+                "File > Open G-buffer does.");
     }
     if (ImGui::BeginMenu("Open recent scene", !state.recent.empty())) {
         for (auto const& r : state.recent)
@@ -113,6 +116,7 @@ void drawSceneMenuItems(SceneLoadingState& state) {
         ImGui::SetTooltip(
             "Another program's G-buffer: a manifest (docs/import.md) or a folder holding one,\n"
             "or a `gbuffer-lab render --out` folder. It is re-lit live with its own lights.");
+    drawCaptureMenuItem(state.capture);
     if (ImGui::MenuItem("Close G-buffer", nullptr, false, gbufferOpen(gbuffer))) gbuffer.closeRequested = true;
 }
 
@@ -124,6 +128,8 @@ void drawSceneLoadingUi(SceneLoadingState& state) {
     drawOpenDialog(state);
     drawProgressWindow(state);
     drawErrorDialog(state);
+    // The executable that runs the editor runs `capture` too, wherever it was started from.
+    drawCaptureDialog(state.capture, "/proc/self/exe");
 }
 
 }  // namespace gbl::ui
