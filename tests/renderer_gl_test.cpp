@@ -399,7 +399,7 @@ TEST_F(RendererGlTest, TheTimedPassesAreTheDeclaredOnes) {
                     EXPECT_EQ(st.glErrors, 0u);
                     ++frames;
                 }
-    EXPECT_EQ(frames, 4 * 5 * 2 * 2);
+    EXPECT_EQ(frames, 4 * 6 * 2 * 2);  // layouts, modes (forward+ the sixth), cull modes, extras
 }
 
 namespace {
