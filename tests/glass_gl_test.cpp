@@ -24,26 +24,10 @@ constexpr glm::vec4 kPaneColor{0.2f, 0.45f, 0.9f, 0.4f};
 constexpr float kPaneSpecular = 0.8f;
 constexpr float kPaneZ = 1.5f;
 
-Camera lookingAt(glm::vec3 from, glm::vec3 target) {
-    Camera c;
-    c.position = from;
-    c.nearPlane = 0.1f;
-    c.farPlane = 100.0f;
-    c.lookAt(target);
-    return c;
-}
-
-struct Ray {
-    glm::vec3 origin, dir;
-};
-// World-space ray through the centre of pixel (x, y), y from the top.
+using test::lookingAt;
+using test::Ray;
 Ray pixelRay(Camera const& c, int x, int y) {
-    glm::mat4 const inv = glm::inverse(c.projection(float(kW) / float(kH)) * c.view());
-    float const nx = (float(x) + 0.5f) / float(kW) * 2.0f - 1.0f;
-    float const ny = 1.0f - (float(y) + 0.5f) / float(kH) * 2.0f;
-    glm::vec4 a = inv * glm::vec4(nx, ny, -1.0f, 1.0f), b = inv * glm::vec4(nx, ny, 1.0f, 1.0f);
-    glm::vec3 const pa = glm::vec3(a) / a.w, pb = glm::vec3(b) / b.w;
-    return {pa, glm::normalize(pb - pa)};
+    return test::pixelRay(c, kW, kH, x, y);
 }
 
 // A blended, double-sided material of `color`.

@@ -21,27 +21,9 @@ using gbl::test::GlTest;
 
 namespace {
 
-Camera lookingAt(glm::vec3 from, glm::vec3 target) {
-    Camera c;
-    c.position = from;
-    c.nearPlane = 0.1f;
-    c.farPlane = 100.0f;
-    c.lookAt(target);
-    return c;
-}
-
-// World-space ray through the centre of pixel (x, y), y from the top.
-struct Ray {
-    glm::vec3 origin, dir;
-};
-Ray pixelRay(Camera const& c, int w, int h, int x, int y) {
-    glm::mat4 const inv = glm::inverse(c.projection(float(w) / float(h)) * c.view());
-    float const nx = (float(x) + 0.5f) / float(w) * 2.0f - 1.0f;
-    float const ny = 1.0f - (float(y) + 0.5f) / float(h) * 2.0f;
-    glm::vec4 a = inv * glm::vec4(nx, ny, -1.0f, 1.0f), b = inv * glm::vec4(nx, ny, 1.0f, 1.0f);
-    glm::vec3 const pa = glm::vec3(a) / a.w, pb = glm::vec3(b) / b.w;
-    return {pa, glm::normalize(pb - pa)};
-}
+using test::lookingAt;
+using test::pixelRay;
+using test::Ray;
 
 PipelineSettings plainSettings() {
     PipelineSettings s;

@@ -31,4 +31,22 @@ SceneData floorAndWallScene() {
     return s;
 }
 
+Camera lookingAt(glm::vec3 from, glm::vec3 target) {
+    Camera c;
+    c.position = from;
+    c.nearPlane = 0.1f;
+    c.farPlane = 100.0f;
+    c.lookAt(target);
+    return c;
+}
+
+Ray pixelRay(Camera const& c, int w, int h, int x, int y) {
+    glm::mat4 const inv = glm::inverse(c.projection(float(w) / float(h)) * c.view());
+    float const nx = (float(x) + 0.5f) / float(w) * 2.0f - 1.0f;
+    float const ny = 1.0f - (float(y) + 0.5f) / float(h) * 2.0f;
+    glm::vec4 const a = inv * glm::vec4(nx, ny, -1.0f, 1.0f), b = inv * glm::vec4(nx, ny, 1.0f, 1.0f);
+    glm::vec3 const pa = glm::vec3(a) / a.w, pb = glm::vec3(b) / b.w;
+    return {pa, glm::normalize(pb - pa)};
+}
+
 }  // namespace gbl::test

@@ -1,6 +1,7 @@
 // Small scenes with known geometry for analytic GL tests.
 #pragma once
 
+#include "core/camera.h"
 #include "scene/scene_data.h"
 
 namespace gbl::test {
@@ -12,5 +13,14 @@ inline constexpr float kPlaneSpecular = 0.25f;
 SceneData floorScene();
 // floorScene() plus a 6 x 4 wall in the plane z = 0, facing +Z (towards a camera at z > 0).
 SceneData floorAndWallScene();
+
+// A camera at `from` looking at `target`, near 0.1 and far 100.
+Camera lookingAt(glm::vec3 from, glm::vec3 target);
+
+// The world-space ray through the centre of pixel (x, y) of a w x h frame, y from the top.
+struct Ray {
+    glm::vec3 origin, dir;
+};
+Ray pixelRay(Camera const& c, int w, int h, int x, int y);
 
 }  // namespace gbl::test
