@@ -30,6 +30,9 @@
 #define GL_TEXTURE_2D_MULTISAMPLE 0x9100
 #define GL_MAX_COLOR_TEXTURE_SAMPLES 0x910E
 #define GL_MAX_DEPTH_TEXTURE_SAMPLES 0x910F
+// Occlusion queries that count samples (the msaa detection pass's complex-pixel count); WebGL2 has
+// only the any-samples-passed kind, and refuses msaa before the query is made.
+#define GL_SAMPLES_PASSED 0x8914
 // Pipeline statistics.
 #define GL_FRAGMENT_SHADER_INVOCATIONS 0x82F4
 #define GL_FRAGMENT_SHADER_INVOCATIONS_ARB 0x82F4
