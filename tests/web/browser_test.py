@@ -281,6 +281,19 @@ class Page:
         self.pump(0.1)
         self.cmd("Input.dispatchMouseEvent", {"type": "mouseWheel", "x": x, "y": y, "deltaX": 0, "deltaY": delta_y})
 
+    def scroll_lights_until(self, what, predicate, delta_y, notches=30):
+        # Wheel notches over the Lights window's lower left, as a user scrolls it, until `predicate`
+        # holds of the last frame: the plot sits under the light list (issue 46), the fields below it.
+        last = self.wait_frames(3)
+        for _ in range(notches):
+            if predicate(last):
+                return last
+            lights = last["lightsWindow"]
+            self.wheel(lights[0] + lights[2] * 0.04, lights[1] + lights[3] * 0.92, delta_y)
+            last = self.wait_frames(3)
+        assert predicate(last), f"{notches} wheel notches over the Lights window did not bring {what} into view"
+        return last
+
     def screenshot(self, path):
         data = base64.b64decode(self.cmd("Page.captureScreenshot", {"format": "png"})["data"])
         with open(path, "wb") as f:
@@ -406,15 +419,18 @@ def case_lessons(browser, base, out):
 
 
 def case_input(browser, base, out):
-    # 1600x900: the Lights window then shows its Kq field without scrolling.
+    # 1600x900. The plot is in view at the start; the Kq field below it is scrolled to with the wheel,
+    # and the plot scrolled back to after the drag.
     page = Page(browser, base + "?log-frames=/dev/stdout&lesson=attenuation:1", (1600, 900))
     page.wait_for("the lesson's first step", lambda: page.frames and page.frames[-1].get("lesson") == "attenuation:1")
     last = page.wait_frames(3)
     page.screenshot(os.path.join(out, "input-before.png"))
-    kq, before = last["kqField"], last["plotRadius"]
-    assert kq[2] > 0 and before > 0, f"the Kq field or the plot is not drawn: kqField {kq}, radius {before}"
+    before = last["plotRadius"]
+    assert before > 0, f"the plot is not drawn: radius {before}"
+    kq = page.scroll_lights_until("the Kq field", lambda f: f["kqField"][2] > 0, 100.0)["kqField"]
     y = kq[1] + kq[3] / 2
     page.drag(kq[0] + kq[2] / 2, y, kq[0] + kq[2] / 2 + 120, y)
+    page.scroll_lights_until("the plot", lambda f: f["plotRadius"] > 0, -100.0)
     page.wait_for("the radius to change", lambda: page.frames[-1]["plotRadius"] not in (before, -1), 30)
     after = page.wait_frames(3)["plotRadius"]
     page.screenshot(os.path.join(out, "input-after-drag.png"))

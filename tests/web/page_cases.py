@@ -141,8 +141,7 @@ def case_recovery(browser, base, out):
     page.screenshot(os.path.join(out, "recovery-no-offer.png"))
     print("  two reloads with no input: no offer")
 
-    kq = page.wait_frames(3)["kqField"]
-    assert kq[2] > 0, f"the Kq field is not drawn: {kq}"
+    kq = page.scroll_lights_until("the Kq field", lambda f: f["kqField"][2] > 0, 100.0)["kqField"]
     y = kq[1] + kq[3] / 2
     page.drag(kq[0] + kq[2] / 2, y, kq[0] + kq[2] / 2 + 80, y)
     page.pump(8.0)
