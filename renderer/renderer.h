@@ -113,6 +113,16 @@ public:
     // `slot` (a colour slot) exactly as stored, RGBA floats, rows top to bottom; empty when there is
     // none (no msaa frame since the targets were made, a depth slot, a sample past the count).
     FloatImage readMsaaSample(GBufferSlot slot, int sample);
+    // ... of the pixels in `rect` only (x, y, width, height, top-left origin, clipped to the
+    // frame): the pixel inspector's one pixel, the heat map's bands of rows.
+    FloatImage readMsaaSample(GBufferSlot slot, int sample, glm::ivec4 rect);
+    // Samples per pixel of the multisampled G-buffer the last msaa frame drew (0: none since the
+    // targets were made). A later frame with msaa off keeps it: FrameStats::msaaUsed says what ran.
+    int msaaSampleCount() const;
+    // Distinct surfaces among each pixel's samples (core/msaa_samples.h, msaaDistinctSamples with
+    // the eye at `eye`, the frame's camera), rows top to bottom, 1 channel; empty without an msaa
+    // G-buffer. Reads the samples in bands of rows, so a large frame never holds them all at once.
+    FloatImage msaaDistinctSampleCounts(glm::vec3 eye);
     // The share of pixels the last msaa frame found complex (Attachment::ComplexPixels), 0..1.
     double complexPixelShare() const;
     // x, y in pixels with the origin at the top-left, as a mouse reports them.

@@ -309,18 +309,27 @@ FloatImage Renderer::readAttachment(Attachment a) const {
 }
 
 FloatImage Renderer::readMsaaSample(GBufferSlot slot, int sample) {
+    return readMsaaSample(slot, sample, {0, 0, width(), height()});
+}
+
+// The copy pass draws only the rectangle (its viewport), so a pixel or a band of rows costs that
+// much; the copy texture keeps the targets' size and is dropped with them.
+FloatImage Renderer::readMsaaSample(GBufferSlot slot, int sample, glm::ivec4 rect) {
     RendererImpl& r = *impl_;
     RenderTargets const& t = r.targets;
     if (!t.msaa.gbuffer.fbo || slot == GBufferSlot::Depth || sample < 0 || sample >= t.msaa.samples) return {};
+    int const x0 = std::clamp(rect.x, 0, t.width), y0 = std::clamp(rect.y, 0, t.height);
+    int const w = std::clamp(rect.z, 0, t.width - x0), h = std::clamp(rect.w, 0, t.height - y0);
     gl::Texture const& source = t.msaa.gbuffer.texture(slot);
-    if (!source) return {};
+    if (!source || w <= 0 || h <= 0) return {};
     auto& rb = r.readback;
     if (!rb.sampleFbo) {
         rb.sampleCopy = gl::Texture::create2D(GL_RGBA32F, t.width, t.height, "readback.msaa_sample");
         rb.sampleFbo = gl::Framebuffer::create({&rb.sampleCopy}, nullptr, "readback.msaa_sample");
     }
+    int const glY = t.height - y0 - h;  // GL rows run bottom to top
     glBindFramebuffer(GL_FRAMEBUFFER, rb.sampleFbo.id());
-    glViewport(0, 0, t.width, t.height);
+    glViewport(x0, glY, w, h);
     apply(kDecodeState);
     gl::Program const& p = r.shaders.variant(ProgramId::TexelCopy, "GBL_MSAA_SAMPLE_COPY");
     p.use();
@@ -329,7 +338,24 @@ FloatImage Renderer::readMsaaSample(GBufferSlot slot, int sample) {
     bindTextureUnit(slot::BIND_READBACK_SOURCE, GL_TEXTURE_2D_MULTISAMPLE, source.id());
     r.triangle.draw();
     bindTextureUnit(slot::BIND_READBACK_SOURCE, GL_TEXTURE_2D_MULTISAMPLE, 0);
-    return readFramebuffer(rb.sampleFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
+    glViewport(0, 0, t.width, t.height);
+    FloatImage img{w, h, 4, std::vector<float>(std::size_t(w) * std::size_t(h) * 4)};
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, rb.sampleFbo.id());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(x0, glY, w, h, GL_RGBA, GL_FLOAT, img.pixels.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    std::size_t const row = std::size_t(w) * 4;
+    for (int y = 0; y < h / 2; ++y)
+        std::swap_ranges(img.pixels.begin() + std::ptrdiff_t(std::size_t(y) * row),
+                         img.pixels.begin() + std::ptrdiff_t(std::size_t(y + 1) * row),
+                         img.pixels.begin() + std::ptrdiff_t(std::size_t(h - 1 - y) * row));
+    return img;
+}
+
+int Renderer::msaaSampleCount() const {
+    return impl_->targets.msaa.gbuffer.fbo ? impl_->targets.msaa.samples : 0;
 }
 
 double Renderer::complexPixelShare() const {

@@ -119,6 +119,7 @@ void samplePixel(Editor& editor, bool rendered) {
     editor.frameMemory.sampledPixel = inspector.pixel;
     if (inspector.pixel && inspector.pixel->x < renderer.width() && inspector.pixel->y < renderer.height()) {
         inspector.sample = renderer.samplePixel(inspector.pixel->x, inspector.pixel->y, editor.state.camera);
+        ui::sampleMsaaPixel(inspector, renderer, editor.state.viewport.msaa.samples);
         ui::PixelInFrame where{*inspector.pixel, {renderer.width(), renderer.height()}, std::nullopt};
         // The tile list depends on every pixel of the tile: one depth read back, tiled mode only.
         if (editor.state.pipeline.mode == LightingMode::Tiled)
@@ -143,6 +144,7 @@ void samplePixel(Editor& editor, bool rendered) {
         }
     } else {
         inspector.sample.reset();
+        inspector.msaaSamples.clear();
         inspector.breakdown.reset();
         inspector.theirs.reset();
         inspector.breakdownNote = "no pixel";
@@ -374,6 +376,7 @@ void renderScene(Editor& editor, FrameTimes& times) {
 
     // Viewers, range fits and the pixel inspector's sample.
     t0 = EditorClock::now();
+    ui::serviceMsaaViews(state, renderer, times.frameStats, times.rendered, editor.gpu.msaa);
     editor.gpu.timer.begin("viewers");
     if (renderer.width() > 0 && renderer.height() > 0 && state.gbuffer.visible) drawViewers(editor, times);
     times.litDiffTexture = ui::serviceLitPin(state.litPin, renderer, editor.frame, editor.gpu.viewerTools);

@@ -72,6 +72,12 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.pipelineWindow = editor.pipelineRects.window;
     line.layoutCombo = editor.pipelineRects.layoutCombo;
     line.layoutItems = editor.pipelineRects.layoutItems;
+    line.msaaCombo = editor.pipelineRects.msaaCombo;
+    line.msaaItems = editor.pipelineRects.msaaItems;
+    line.msaaSamples = editor.state.viewport.msaa.samples;
+    line.msaaComplexBox = editor.state.viewport.msaa.complexRect;
+    line.positionSampleCombo = editor.state.gbuffer.sampleRects[0];
+    line.positionSample = editor.state.gbuffer.viewers[0].sample;
     if (ui::ViewportTools const& tools = state.viewportTools; tools.open) {
         line.toolsImage = tools.viewer.imageSize;
         line.toolsRegion = glm::ivec4(0);

@@ -16,6 +16,7 @@
 #include "model/lesson_state.h"
 #include "model/render_inputs.h"
 #include "model/scene_loading.h"
+#include "msaa_views_service.h"
 #include "panels/panel_browser_about.h"
 #include "panels/panel_glossary.h"
 #include "panels/panel_pipeline.h"
@@ -55,8 +56,9 @@ struct EditorGpu {
     // then nothing changes) still reaches all five.
     std::array<std::uint64_t, 5> drawnFrame{};
     std::uint64_t framesRendered = 0;
-    GpuTimer timer;  // the editor's own GPU work, for the Stats window
-    ui::AbGpu ab;    // side B and the A/B diff (ab_frame.h)
+    GpuTimer timer;         // the editor's own GPU work, for the Stats window
+    ui::AbGpu ab;           // side B and the A/B diff (ab_frame.h)
+    ui::MsaaViewsGpu msaa;  // the complex-pixel overlay and the samples heat map (msaa_views_service.h)
 };
 
 // The GLFW library and the editor's window; terminates GLFW when it goes.

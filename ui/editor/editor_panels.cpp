@@ -162,9 +162,11 @@ void drawDockedPanels(Editor& editor, FrameTimes const& times, unsigned viewport
     EditorState& state = editor.state;
     Renderer const& renderer = *editor.renderer;
     ui::drawLightsPanel(state.lightsPanel, state.lights, state.animation, state.sceneBounds, pixelDistance);
+    GlCaps const& caps = editor.renderer->caps();
+    ui::MsaaReasons const msaa = ui::msaaReasons([&](int n) { return caps.msaaUnavailableReason(n); });
     ui::drawPipelinePanel(state.pipeline,
                           ui::modeReasons([&](LightingMode m) { return editor.renderer->modeUnavailable(m); }),
-                          &state.ab, &editor.pipelineRects);
+                          &state.ab, &editor.pipelineRects, &msaa);
     int const k = std::clamp(state.accumulate.count, 0, int(state.lights.size()));
     ui::ViewportTeaching ab{state.ab,
                             state.accumulate,

@@ -37,7 +37,22 @@ void uploadDiff(gl::Texture& tex, DiffStats const& diff, float threshold, bool c
                [&] { return diffHeatmap(diff, scale); });
 }
 
+void uploadPicture(gl::Texture& tex, int w, int h, std::vector<std::uint8_t> const& rgba, char const* label) {
+    if (rgba.size() != std::size_t(w) * std::size_t(h) * 4) return;
+    uploadRgba(tex, w, h, true, label, [&] { return rgba; });
+}
+
 namespace {
+// The attachment a viewer shows, or its selected msaa sample while one is (msaa_views.h); the
+// resolved attachment when the sample cannot be read (msaa went off since it was picked).
+FloatImage viewerAttachmentImage(ViewerState const& v, Renderer& renderer) {
+    if (auto slot = viewerSampleSlot(v.kind); slot && v.sample >= 0) {
+        FloatImage sample = renderer.readMsaaSample(*slot, v.sample);
+        if (!sample.pixels.empty()) return sample;
+    }
+    return renderer.readAttachment(viewerAttachment(v));
+}
+
 // Reads back what one viewer's tools need and services its requests. Returns whether the diff
 // changed (re-upload its heat map).
 bool serviceViewerData(ViewerState& v, ViewerData& d, Renderer& renderer, Camera const& camera, long frame,
@@ -46,7 +61,7 @@ bool serviceViewerData(ViewerState& v, ViewerData& d, Renderer& renderer, Camera
     bool const ownPlanes = v.kind == ViewerKind::Depth && !v.cameraClipPlanes;
     float const nearPlane = ownPlanes ? v.nearPlane : camera.nearPlane;
     float const farPlane = ownPlanes ? v.farPlane : camera.farPlane;
-    setViewerValues(v, d, viewerValues(v, renderer.readAttachment(viewerAttachment(v)), nearPlane, farPlane), frame);
+    setViewerValues(v, d, viewerValues(v, viewerAttachmentImage(v, renderer), nearPlane, farPlane), frame);
     return v.showDiff && d.pinned;
 }
 }  // namespace
@@ -63,14 +78,17 @@ void serviceViewerTools(EditorState& state, Renderer& renderer, long frame, std:
         if (v.showDiff && d.diff.comparable) {
             uploadDiff(gpu.diff[i], d.diff, v.diffThreshold, diffChanged);
             textures[i] = gpu.diff[i].id();
-        } else if (v.kind == ViewerKind::Depth && v.showStencil && d.values.width > 0) {
-            // No view pass reads the stencil: its picture is coloured on the CPU from the read-back.
+        } else if (((v.kind == ViewerKind::Depth && v.showStencil) || v.sample >= 0) && d.values.width > 0) {
+            // No view pass reads the stencil or one msaa sample: their picture is coloured on the
+            // CPU from the read-back.
             ViewParams const params = viewerParams(v);
-            bool const changed = gpu.pictureParams[i] != params || gpu.pictureFrame[i] != d.frame;
+            bool const changed =
+                gpu.pictureParams[i] != params || gpu.pictureFrame[i] != d.frame || gpu.pictureKey[i] != d.key;
             uploadRgba(gpu.picture[i], d.values.width, d.values.height, changed, "viewer picture",
                        [&] { return viewerPicture(v, d.values); });
             gpu.pictureParams[i] = params;
             gpu.pictureFrame[i] = d.frame;
+            gpu.pictureKey[i] = d.key;
             textures[i] = gpu.picture[i].id();
         }
     }
@@ -173,6 +191,18 @@ unsigned serviceViewportTools(EditorState& state, Renderer& renderer, FrameInput
     if (v.showDiff && d.diff.comparable) {
         uploadDiff(gpu.viewportDiff, d.diff, v.diffThreshold, diffChanged);
         return gpu.viewportDiff.id();
+    }
+    if (v.sample >= 0 && d.values.width > 0) {
+        ViewParams const params = viewerParams(v);
+        if (gpu.viewportPictureFrame != d.frame || gpu.viewportPictureKey != d.key ||
+            gpu.viewportPictureParams != params) {
+            uploadPicture(gpu.viewportPicture, d.values.width, d.values.height, viewerPicture(v, d.values),
+                          "viewport sample picture");
+            gpu.viewportPictureFrame = d.frame;
+            gpu.viewportPictureKey = d.key;
+            gpu.viewportPictureParams = params;
+        }
+        return gpu.viewportPicture.id();
     }
     drawOwnView(renderer, viewerParams(v), &v, frameInput, rendered, gpu.viewport, gpu.viewportParams);
     return gpu.viewport.texture.id();

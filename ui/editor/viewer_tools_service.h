@@ -6,6 +6,7 @@
 #include "gpu/view_target.h"
 #include "import/gbuffer_checks.h"
 #include "model/editor_state.h"
+#include "model/msaa_views.h"
 #include "renderer.h"
 
 #include <array>
@@ -22,7 +23,12 @@ struct ViewerToolsGpu {
     std::array<gl::Texture, 5> picture;                      // views made on the CPU (the depth viewer's stencil)
     std::array<std::optional<ViewParams>, 5> pictureParams;  // what each picture was coloured with
     std::array<long, 5> pictureFrame{-1, -1, -1, -1, -1};    // ... and from which read-back
-    gl::Texture litDiff;                                     // the viewport's lit-frame diff
+    std::array<unsigned, 5> pictureKey{};                    // ... of what (viewerValuesKey: the sample)
+    gl::Texture viewportPicture;                             // the viewport tools' one msaa sample
+    long viewportPictureFrame = -1;
+    unsigned viewportPictureKey = 0;
+    std::optional<ViewParams> viewportPictureParams;
+    gl::Texture litDiff;  // the viewport's lit-frame diff
     // The marked G-buffer check finding's pixels, and which finding of which G-buffer it holds.
     gl::Texture findingMask;
     std::pair<std::string, int> findingMaskFor{"", -1};
@@ -38,6 +44,8 @@ struct ViewerToolsGpu {
 // Uploads a diff's heat map into tex, (re)making it at the diff's size; a new texture is always
 // filled, an existing one when `changed`. Scale: the threshold when one is set, else the max.
 void uploadDiff(gl::Texture& tex, DiffStats const& diff, float threshold, bool changed);
+// Uploads RGBA8 rows (top to bottom) of a w x h picture made on the CPU into tex, (re)making it.
+void uploadPicture(gl::Texture& tex, int w, int h, std::vector<std::uint8_t> const& rgba, char const* label);
 // The open G-buffer's marked check finding (viewport.markedFinding) as a translucent magenta mask
 // to lay over the image; 0 when none is marked.
 unsigned findingMaskTexture(ViewerToolsGpu& gpu, GBufferCheckReport const& report, std::string const& path, int marked);

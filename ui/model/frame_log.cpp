@@ -126,7 +126,13 @@ std::string frameLogJson(FrameLogLine const& l) {
            ",\"layoutCombo\":" + rect(l.layoutCombo) + ",\"layoutItems\":[";
     for (std::size_t i = 0; i < l.layoutItems.size(); ++i)
         out += (i ? "," : "") + number(l.layoutItems[i].x) + "," + number(l.layoutItems[i].y);
-    out += "],\"toolsImage\":[" + std::to_string(l.toolsImage.x) + "," + std::to_string(l.toolsImage.y) + "]";
+    out += "],\"msaaCombo\":" + rect(l.msaaCombo) + ",\"msaaItems\":[";
+    for (std::size_t i = 0; i < l.msaaItems.size(); ++i)
+        out += (i ? "," : "") + number(l.msaaItems[i].x) + "," + number(l.msaaItems[i].y);
+    out += "],\"msaaSamples\":" + std::to_string(l.msaaSamples) + ",\"msaaComplexBox\":" + rect(l.msaaComplexBox) +
+           ",\"positionSampleCombo\":" + rect(l.positionSampleCombo) +
+           ",\"positionSample\":" + std::to_string(l.positionSample);
+    out += ",\"toolsImage\":[" + std::to_string(l.toolsImage.x) + "," + std::to_string(l.toolsImage.y) + "]";
     out += ",\"toolsRegion\":[" + std::to_string(l.toolsRegion.x) + "," + std::to_string(l.toolsRegion.y) + "," +
            std::to_string(l.toolsRegion.z) + "," + std::to_string(l.toolsRegion.w) + "]";
     out += ",\"frameWindow\":" + rect(l.frameWindow) + ",\"frameButton\":" + rect(l.frameButton) +

@@ -84,6 +84,15 @@ struct FrameLogLine {
     glm::vec4 pipelineWindow{0.0f};
     glm::vec4 layoutCombo{0.0f};
     std::vector<glm::vec2> layoutItems;
+    // msaa (issue 47): the Pipeline window's msaa combo and its open list's entries (as the layout
+    // combo's), the samples of the frame shown, the viewport's "Complex" checkbox and the position
+    // viewer's sample selector (0 while not drawn) with its sample (-1 = all).
+    glm::vec4 msaaCombo{0.0f};
+    std::vector<glm::vec2> msaaItems;
+    int msaaSamples = 0;
+    glm::vec4 msaaComplexBox{0.0f};
+    glm::vec4 positionSampleCombo{0.0f};
+    int positionSample = -1;
     // The viewport's tools: the texel size of the image they read and their Shift+drag region as
     // x, y, width, height in texels (width 0 while none; -1 = tools closed).
     glm::ivec2 toolsImage{0};

@@ -4,6 +4,7 @@
 #include "core/frame_types.h"
 #include "core/pipeline_settings.h"
 #include "core/shading_cpu.h"
+#include "model/msaa_views.h"
 #include "model/why_value.h"
 
 #include <glm/glm.hpp>
@@ -38,6 +39,10 @@ struct PixelInspectorState {
     // An open G-buffer's own lit image at the pixel (its manifest's "lit", pinned in the viewport),
     // shown beside our stored value and per-light sum.
     std::optional<glm::vec3> theirs;
+    // msaa (issue 47): the sample listed, -1 for every one, and the pixel's samples as stored
+    // (read by the loop while the frame shown ran msaa; empty otherwise).
+    int msaaSample = -1;
+    std::vector<MsaaPixelSample> msaaSamples;
 };
 
 }  // namespace gbl::ui

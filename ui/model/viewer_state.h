@@ -61,6 +61,9 @@ struct ViewerState {
     bool showDiff = false;                // show |current - pinned| as a heat map instead of the view
     DiffMode diffMode = DiffMode::Absolute;
     float diffThreshold = 0.0f;  // pixels above it are counted ("over threshold")
+    // msaa (issue 47): the sample shown, -1 for all (the resolved attachment); a sample is read
+    // back from the multisampled G-buffer and coloured on the CPU. The depth viewer shows all.
+    int sample = -1;
 };
 
 // What the statistics of a ViewerData were computed for; a change recomputes them.
@@ -116,6 +119,12 @@ struct GBufferPanelState {
     // Set by the loop each frame: the lighting mode writes no G-buffer (forward), so every viewer
     // says so instead of showing a blank or stale image.
     bool noGBuffer = false;
+    // Set by the loop each frame: samples per pixel of the frame shown (0: no msaa), for the
+    // viewers' and the magnifier's sample selectors.
+    int msaaSamples = 0;
+    // Each viewer's sample selector on its toolbar as last drawn (x, y, w, h; 0 when not drawn), for
+    // the frame log (UI layout, not saved).
+    std::array<glm::vec4, 5> sampleRects{};
 
     static std::array<ViewerState, 5> defaultViewers();
 };

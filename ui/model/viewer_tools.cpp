@@ -22,12 +22,12 @@ bool viewerToolsNeedData(ViewerState const& v) {
     // The stencil has no view pass: its picture is made from the values.
     bool const stencil = v.kind == ViewerKind::Depth && v.showStencil;
     return v.showHistogram || v.overlays != 0 || v.region || v.showDiff || v.percentileFitRequested ||
-           v.regionFitRequested || v.pinRequested || stencil;
+           v.regionFitRequested || v.pinRequested || stencil || v.sample >= 0;
 }
 
 unsigned viewerValuesKey(ViewerState const& viewer) {
     return unsigned(viewer.kind) | (viewer.linearDepth ? 8u : 0u) | (viewer.cameraClipPlanes ? 16u : 0u) |
-           (viewer.kind == ViewerKind::Depth && viewer.showStencil ? 32u : 0u);
+           (viewer.kind == ViewerKind::Depth && viewer.showStencil ? 32u : 0u) | (unsigned(viewer.sample + 1) << 6);
 }
 
 bool viewerDataDue(ViewerState const& viewer, ViewerData const& data, long frame) {

@@ -4,6 +4,7 @@
 #include "core/pipeline_settings.h"
 #include "import/gbuffer_checks.h"
 #include "model/attachment_overview.h"
+#include "model/msaa_views.h"
 
 #include <glm/glm.hpp>
 
@@ -33,6 +34,7 @@ struct ViewportState {
     glm::vec4 wireframesRect{0.0f};
     glm::vec4 allWireframesRect{0.0f};
     OverviewState overview;  // the attachment overview (issue 26)
+    MsaaViewState msaa;      // the complex-pixel overlay and the samples-that-differ heat map (issue 47)
     // An imported G-buffer shown instead of the scene (model/gbuffer_opening.h): its path ("" =
     // none) and frame size. The frame keeps its size and camera: the image is letterboxed and the
     // camera does not move.

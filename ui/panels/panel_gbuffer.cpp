@@ -2,9 +2,11 @@
 // texels so zooming in shows exact stored pixels.
 #include "panels/panel_gbuffer.h"
 
+#include "model/msaa_views.h"
 #include "model/viewer_fields.h"
 #include "model/viewer_tools.h"
 #include "panels/gui_util.h"
+#include "panels/item_rect.h"
 #include "panels/layout.h"
 #include "panels/viewer_tools.h"
 
@@ -168,6 +170,16 @@ void viewerToolbar(GBufferPanelState& state, std::size_t i) {
     ImGui::TextUnformatted(v.kind == ViewerKind::Depth && v.showStencil ? "stencil" : kViewerNames[i].data());
     ImGui::SameLine();
     viewerChannelToggles(v);
+    // msaa: the sample shown, on the toolbar itself (the depth viewer shows the resolved depth).
+    float const sampleWidth = ImGui::CalcTextSize("sample 0").x + ImGui::GetFrameHeight() + 8.0f;
+    if (state.msaaSamples > 0 && viewerSampleSlot(v.kind) &&
+        ImGui::GetItemRectMax().x + 4.0f + sampleWidth + more <= right) {
+        ImGui::SameLine(0, 4);
+        viewerSampleSelector(v.sample, state.msaaSamples, true, "toolbar-sample");
+        state.sampleRects[i] = lastItemRect();
+    } else {
+        state.sampleRects[i] = glm::vec4(0.0f);
+    }
     float const fit = ImGui::CalcTextSize("Fit").x + ImGui::GetStyle().FramePadding.x * 2.0f;
     if (viewerRemaps(v.kind) && ImGui::GetItemRectMax().x + 2.0f + fit + 4.0f + more <= right) {
         ImGui::SameLine(0, 2);
@@ -187,7 +199,7 @@ void viewerToolbar(GBufferPanelState& state, std::size_t i) {
     float const width = ImGui::GetFontSize() * 21.0f;
     ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, 1e6f));
     if (ImGui::BeginPopup("viewer-details")) {
-        viewerControls(v, true);
+        viewerControls(v, true, state.msaaSamples);
         viewerToolsRow(v, d);
         viewerHistogram(v, d);
         viewerRegionAndDiff(v, d);

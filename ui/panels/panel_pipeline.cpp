@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <span>
 
 namespace gbl::ui {
 
@@ -56,29 +57,36 @@ void radioRow(PipelineField const& f, PipelineSettings& settings, ModeReasons co
     }
 }
 
-// A choice as a drop-down. The G-buffer layout's box and entries go to `rects` for the frame log
-// (tests click there); the renderer rebuilds its targets on a layout change.
-void comboRow(PipelineField const& f, PipelineSettings& settings, PipelinePanelRects* rects) {
+// A choice as a drop-down. The G-buffer layout's and msaa's boxes and entries go to `rects` for
+// the frame log (tests click there); the renderer rebuilds its targets on a layout change.
+// `reasons`: why each choice cannot be picked, greyed out with it as tooltip where not empty.
+void comboRow(PipelineField const& f, PipelineSettings& settings, PipelinePanelRects* rects,
+              std::span<std::string const> reasons) {
     std::string const label(f.label);
-    bool const layout = f.name == "layout";
+    bool const layout = f.name == "layout", msaa = f.name == "msaa";
     bool const open = ImGui::BeginCombo(label.c_str(), fieldScriptText(f, settings).c_str());
     if (layout && ImGui::IsItemVisible()) rects->layoutCombo = lastItemRect();
+    if (msaa && ImGui::IsItemVisible()) rects->msaaCombo = lastItemRect();
     helpTooltip(f.hoverText());
     if (!open) return;
     int const value = int(f.get(settings));
     for (std::size_t i = 0; i < f.choices.size(); ++i) {
+        std::string const* reason = i < reasons.size() && !reasons[i].empty() ? &reasons[i] : nullptr;
+        ImGui::BeginDisabled(reason != nullptr);
         if (ImGui::Selectable(std::string(f.choices[i]).c_str(), value == int(i))) f.set(settings, double(i));
-        if (layout) {
-            ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-            rects->layoutItems.push_back(glm::vec2((a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f));
-        }
+        ImGui::EndDisabled();
+        if (reason) helpTooltip(reason->c_str());
+        ImVec2 const a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+        glm::vec2 const centre((a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f);
+        if (layout) rects->layoutItems.push_back(centre);
+        if (msaa) rects->msaaItems.push_back(centre);
     }
     ImGui::EndCombo();
 }
 
 // One field, drawn with its widget (core/pipeline_fields.h), greyed out where it does not apply.
 void fieldRow(PipelineField const& f, PipelineSettings& settings, ModeReasons const& unavailable,
-              PipelinePanelRects* rects) {
+              PipelinePanelRects* rects, MsaaReasons const* msaaReasons) {
     std::string const label(f.label);
     ImGui::BeginDisabled(!f.appliesTo(settings));
     switch (f.widget) {
@@ -86,7 +94,9 @@ void fieldRow(PipelineField const& f, PipelineSettings& settings, ModeReasons co
             radioRow(f, settings, f.name == "mode" ? &unavailable : nullptr);
             break;
         case PipelineWidget::Combo:
-            comboRow(f, settings, rects);
+            comboRow(f, settings, rects,
+                     f.name == "msaa" && msaaReasons ? std::span<std::string const>(*msaaReasons)
+                                                     : std::span<std::string const>());
             break;
         case PipelineWidget::ChoiceCheckbox: {
             bool on = int(f.get(settings)) == f.checkedChoice;
@@ -201,7 +211,7 @@ void abSection(AbState& ab, PipelineSettings const& a) {
 }  // namespace
 
 void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailable, AbState* ab,
-                       PipelinePanelRects* rects) {
+                       PipelinePanelRects* rects, MsaaReasons const* msaa) {
     PipelinePanelRects unused;
     if (!rects) rects = &unused;
     *rects = {};
@@ -225,7 +235,7 @@ void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailabl
                 if (f.section != PipelineSection(si)) continue;
                 bool const box = f.widget == PipelineWidget::Checkbox || f.widget == PipelineWidget::ChoiceCheckbox;
                 if (box) sameLineIfFits(checkItemWidth(std::string(f.label).c_str()), rowStart, right);
-                fieldRow(f, settings, unavailable, rects);
+                fieldRow(f, settings, unavailable, rects, msaa);
                 rowStart = !box;
             }
             ImGui::PopItemWidth();

@@ -3,6 +3,7 @@
 
 #include "core/pipeline_settings.h"
 #include "model/ab_compare.h"
+#include "model/msaa_views.h"
 
 #include <glm/glm.hpp>
 
@@ -30,12 +31,15 @@ struct PipelinePanelRects {
     glm::vec4 window{0.0f};  // the Pipeline window (x, y, w, h): where a test scrolls it
     glm::vec4 layoutCombo{0.0f};
     std::vector<glm::vec2> layoutItems;
+    // The same for the msaa combo (kMsaaNames order), which a test opens to pick a sample count.
+    glm::vec4 msaaCombo{0.0f};
+    std::vector<glm::vec2> msaaItems;
 };
 
-// Edits `settings` in place; the renderer reads them on the next frame. Unavailable modes are
-// greyed out with their reason.
+// Edits `settings` in place; the renderer reads them on the next frame. Unavailable modes and msaa
+// sample counts (`msaa`, msaaReasons; none greyed when null) are greyed out with their reason.
 // `ab` (optional) adds the A/B comparison's table: which settings side B changes, and to what.
 void drawPipelinePanel(PipelineSettings& settings, ModeReasons const& unavailable, AbState* ab = nullptr,
-                       PipelinePanelRects* rects = nullptr);
+                       PipelinePanelRects* rects = nullptr, MsaaReasons const* msaa = nullptr);
 
 }  // namespace gbl::ui

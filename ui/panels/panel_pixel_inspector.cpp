@@ -7,6 +7,7 @@
 #include "model/viewer_tools.h"
 #include "panels/gui_util.h"
 #include "panels/layout.h"
+#include "panels/viewer_tools.h"
 #include "panels/wrapped_text.h"
 
 #include <imgui.h>
@@ -38,6 +39,33 @@ void row(char const* label, glm::vec4 v, int n = 4) {
         ImGui::TableNextColumn();
         if (i < n) ImGui::Text("%.4g", v[i]);
     }
+}
+// msaa (issue 47): the pixel's samples as stored, every one or the one selected.
+void msaaSamplesSection(PixelInspectorState& state) {
+    int const n = int(state.msaaSamples.size());
+    if (n == 0) return;
+    separatorText("MSAA samples");
+    viewerSampleSelector(state.msaaSample, n, true, "inspector-sample");
+    ImGui::SameLine();
+    ImGui::TextDisabled("%d samples, as the geometry pass stored them", n);
+    ImGuiTableFlags const flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                                  ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX;
+    if (!ImGui::BeginTable("samples", 5, flags)) return;
+    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("s7 albedo,spec").x);
+    float const w = valueColumnWidth();
+    for (char const* c : {"x / r", "y / g", "z / b", "w / a"})
+        ImGui::TableSetupColumn(c, ImGuiTableColumnFlags_WidthFixed, w);
+    ImGui::TableHeadersRow();
+    for (int k = 0; k < n; ++k) {
+        if (state.msaaSample >= 0 && k != state.msaaSample) continue;
+        MsaaPixelSample const& s = state.msaaSamples[std::size_t(k)];
+        std::string const tag = "s" + std::to_string(k) + " ";
+        row((tag + "position").c_str(), s.position);
+        row((tag + "normal").c_str(), s.normal);
+        row((tag + "albedo,spec").c_str(), s.albedoSpec);
+        row((tag + "emissive,ao").c_str(), s.emissiveAo);
+    }
+    ImGui::EndTable();
 }
 }  // namespace
 
@@ -96,6 +124,7 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
             }
         }
 
+        msaaSamplesSection(state);
         separatorText("Lights at this pixel");
         if (!state.breakdown) {
             ImGui::TextDisabled("%s", state.breakdownNote.empty() ? "no pixel" : state.breakdownNote.c_str());

@@ -10,6 +10,7 @@
 #include "panels/layout.h"
 #include "panels/viewer_tools.h"
 #include "panels/viewport_checks.h"
+#include "panels/viewport_msaa.h"
 #include "panels/viewport_overlays.h"
 
 #include <imgui.h>
@@ -53,9 +54,10 @@ void fittedText(char const* full, char const* compact, char const* tiny = nullpt
 void litPinRow(LitPin& pin, ViewportTools& tools, DebugView view, ViewportState& state) {
     ImGui::SetCursorPosX(ImGui::GetCursorPosX() + 6);
     // The viewport's tools share this row: opening them never adds one.
-    viewportToolsRow(tools, view);
+    viewportToolsRow(tools, view, state.msaa.samples);
     if (viewerKindOfView(view)) ImGui::SameLine();
     drawChecksButton(state);
+    msaaViewsRow(state.msaa);
     if (ImGui::Button("Pin lit")) pin.pinRequested = true;
     pin.pinRect = lastItemRect();
     pin.diffRect = glm::vec4(0.0f);
@@ -358,6 +360,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
     } else if (texture != 0) {
         // GL images start at the bottom row; flip v so the picture is upright.
         ImGui::GetWindowDrawList()->AddImage(toImTexture(texture), origin, imageEnd, ImVec2(0, 1), ImVec2(1, 0));
+        drawMsaaViews(state.msaa, origin, imageEnd);
         // The heat views' legend sits at the bottom of the image: the split's pass lines go above it.
         bool const heat = settings.view == DebugView::Heatmap || settings.view == DebugView::TileLights;
         if (abOn && ab->ab.view == AbView::Split)

@@ -2,6 +2,7 @@
 // and the viewport's tools, and the viewport's tools rows and image input.
 #include "panels/viewer_tools.h"
 
+#include "model/msaa_views.h"
 #include "model/viewer_tools.h"
 #include "panels/gui_util.h"
 
@@ -36,13 +37,36 @@ void viewerChannelToggles(ViewerState& v) {
     }
 }
 
-void viewerControls(ViewerState& v, bool stencilChoice) {
+void viewerSampleSelector(int& sample, int samples, bool offered, char const* id) {
+    if (samples <= 0) return;
+    ImGui::PushID(id);
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize("sample 0").x + ImGui::GetFrameHeight() + 8.0f);
+    ImGui::BeginDisabled(!offered);
+    if (ImGui::BeginCombo("##sample", sampleChoiceLabel(offered ? sample : -1).c_str())) {
+        for (int k = -1; k < samples; ++k)
+            if (ImGui::Selectable(sampleChoiceLabel(k).c_str(), sample == k)) sample = k;
+        ImGui::EndCombo();
+    }
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip(offered
+                              ? "msaa: all = the resolved (averaged) attachment; sample k = that sample of the\n"
+                                "multisampled G-buffer as stored (read back and coloured on the CPU)"
+                              : "msaa: depth and the lit frame are shown resolved; their samples are not read back");
+    ImGui::PopID();
+}
+
+void viewerControls(ViewerState& v, bool stencilChoice, int msaaSamples) {
     // Cells are narrow at 1280x720: what does not fit beside the channel toggles or the range
     // goes on a row of its own instead of being cut off at the cell's edge.
     float const font = ImGui::GetFontSize();
     float const cellWidth = ImGui::GetContentRegionAvail().x;
     float const cellRight = ImGui::GetCursorScreenPos().x + cellWidth;
     viewerChannelToggles(v);
+    if (msaaSamples > 0) {
+        ImGui::SameLine();
+        viewerSampleSelector(v.sample, msaaSamples, viewerSampleSlot(v.kind).has_value(), "viewer-sample");
+    }
     if (v.kind == ViewerKind::Normal) {
         if (cellWidth >= font * 12.0f) ImGui::SameLine();
         int mode = int(v.normalDisplay);
@@ -118,7 +142,7 @@ void markLockedPixel(ImDrawList* dl, ImVec2 p0, ImVec2 full, glm::ivec2 imageSiz
 
 // --- the viewport's tools -----------------------------------------------------------------
 
-void viewportToolsRow(ViewportTools& tools, DebugView view) {
+void viewportToolsRow(ViewportTools& tools, DebugView view, int msaaSamples) {
     if (!viewerKindOfView(view)) {
         tools.hoverTexel.reset();
         return;  // the final image and the heat views: no attachment values to read
@@ -144,7 +168,7 @@ void viewportToolsRow(ViewportTools& tools, DebugView view) {
     if (ImGui::BeginPopup("viewport-tools")) {
         ImGui::TextUnformatted(viewerKindName(v.kind).data());
         viewerHeaderCounts(v, d);
-        viewerControls(v, false);
+        viewerControls(v, false, msaaSamples);
         viewerToolsRow(v, d);
         viewerHistogram(v, d);
         viewerRegionAndDiff(v, d);

@@ -3,6 +3,7 @@
 #include "panels/viewer_tools.h"
 
 #include "model/colormap.h"
+#include "model/msaa_views.h"
 #include "model/viewer_tools.h"
 
 #include <algorithm>
@@ -80,6 +81,10 @@ void drawViewerMagnifier(GBufferPanelState& panel, ViewportTools& viewport) {
                 onViewport      ? "in the viewport"
                 : v.showStencil ? "viewer (stencil)"
                                 : "viewer");
+    if (panel.msaaSamples > 0) {
+        ImGui::SameLine();
+        viewerSampleSelector(v.sample, panel.msaaSamples, viewerSampleSlot(v.kind).has_value(), "magnifier-sample");
+    }
     if (!v.picked) {
         ImGui::TextWrapped(onViewport
                                ? "Shift+right-click a texel in the viewport to pick it; Ctrl+G goes to one."

@@ -24,7 +24,11 @@ void sameLineIfRoom(float w, float right);
 void viewerChannelToggles(ViewerState& v);
 // Channel toggles, range with Fit and auto, and the kind's own options (normals, depth; the
 // depth viewer's stencil switch when stencilChoice).
-void viewerControls(ViewerState& v, bool stencilChoice);
+// msaaSamples > 0 (the frame ran msaa) adds the sample selector (viewerSampleSelector).
+void viewerControls(ViewerState& v, bool stencilChoice, int msaaSamples = 0);
+// msaa (issue 47): a small combo of "all" and each of `samples` samples, editing `sample` (-1 all);
+// greyed out with the reason where not `offered`; nothing while samples is 0. `id`: its ImGui id.
+void viewerSampleSelector(int& sample, int samples, bool offered, char const* id);
 // Outline of the texels a (inclusive) .. b (exclusive) on an image drawn at p0 with size full.
 void outlineTexels(ImDrawList* dl, ImVec2 p0, ImVec2 full, glm::ivec2 imageSize, glm::ivec2 a, glm::ivec2 b,
                    ImU32 colour);
@@ -44,7 +48,7 @@ void viewerRegionAndDiff(ViewerState& v, ViewerData const& d);
 // attachment"): a Tools toggle while the view is a G-buffer attachment or the lit frame, and
 // while on a "..." popover with the same controls as a G-buffer viewer's. Call on a toolbar
 // row of the viewport; it never adds a row.
-void viewportToolsRow(ViewportTools& tools, DebugView view);
+void viewportToolsRow(ViewportTools& tools, DebugView view, int msaaSamples = 0);
 // Call right after the viewport's image item: Shift+drag sets the region, Shift+right-click the
 // magnifier's texel; draws their outlines. True when the mouse is the tools' (the camera must
 // not move with it).

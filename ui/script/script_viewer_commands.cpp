@@ -165,11 +165,68 @@ void litDiffModeCommand(CommandCall const& c) {
     c.host.state.litPin.diffMode = c.w[1] == "rel" ? DiffMode::Relative : DiffMode::Absolute;
 }
 
+// The sample selector of a viewer (msaa, issue 47): "all" or a sample below the frame's count.
+void viewerSampleCommand(CommandCall const& c) {
+    ViewerRef const r = viewerRef(c);
+    if (!r.viewer) return;
+    if (c.w[2] == "all") {
+        r.viewer->sample = -1;
+        return;
+    }
+    int const samples = c.host.state.gbuffer.msaaSamples, k = std::atoi(c.w[2].c_str());
+    if (samples <= 0) return c.check(false, "the frame shown ran without msaa: only all is offered");
+    if (!viewerSampleSlot(r.viewer->kind)) return c.check(false, "the " + c.w[1] + " viewer shows all samples only");
+    if (c.w[2].find_first_not_of("0123456789") != std::string::npos || k >= samples)
+        return c.check(false, "no sample " + c.w[2] + " (all, or 0 to " + std::to_string(samples - 1) + ")");
+    r.viewer->sample = k;
+}
+
+void msaaViewCommand(CommandCall const& c) {
+    std::optional<bool> const on = onOff(c, 2);
+    if (!on) return;
+    MsaaViewState& m = c.host.state.viewport.msaa;
+    if (c.w[1] == "complex")
+        m.complexOverlay = *on;
+    else if (c.w[1] == "samples")
+        m.samplesHeat = *on;
+    else
+        c.check(false, "unknown msaa view " + c.w[1] + " (complex samples)");
+}
+
 constexpr ScriptCommandSpec kViewerCommands[] = {
     {"viewer-tool", "VIEWER TOOL on|off",
      "a viewer's tool (VIEWER: position normal albedo specular depth, or viewport for the\n"
      "viewport's tools): histogram nan inf negative clip stencil (depth) diff magnifier",
      viewerToolCommand},
+    {"viewer-sample", "VIEWER all|K",
+     "the viewer's sample selector while the frame ran msaa: all (resolved) or sample K (position\n"
+     "normal albedo specular, or viewport)",
+     viewerSampleCommand},
+    {"msaa-view", "complex|samples on|off",
+     "the viewport's msaa views: the complex-pixel overlay, the samples-that-differ heat map", msaaViewCommand},
+    {"expect-msaa-samples", "N",
+     "the frame shown ran msaa with N samples per pixel (0: without), and with N > 0 its complex share is known",
+     [](CommandCall const& c) {
+         MsaaViewState const& m = c.host.state.viewport.msaa;
+         std::string const share = m.complexShare ? std::to_string(*m.complexShare) : std::string("none");
+         c.check(m.samples == int(number(c.w[1])) && (m.samples == 0 || m.complexShare.has_value()),
+                 "samples " + std::to_string(m.samples) + ", complex share " + share);
+     }},
+    {"wait-msaa-view", "complex|samples SECONDS",
+     "run frames until the viewport's msaa view is on and drawn (a real click may turn it on; fails after SECONDS)",
+     [](CommandCall const& c) {
+         MsaaViewState const& m = c.host.state.viewport.msaa;
+         bool const complex = c.w[1] == "complex";
+         if (!complex && c.w[1] != "samples")
+             return c.check(false, "unknown msaa view " + c.w[1] + " (complex samples)");
+         c.waitUntil([&m, complex] { return complex ? m.overlayTexture != 0 : m.heatTexture != 0; }, number(c.w[2]));
+     }},
+    {"expect-inspector-samples", "N",
+     "the pixel inspector lists N msaa samples of its pixel (0: the frame ran without msaa)",
+     [](CommandCall const& c) {
+         std::size_t const n = c.host.state.inspector.msaaSamples.size();
+         c.check(double(n) == number(c.w[1]), std::to_string(n) + " samples listed");
+     }},
     {"viewer-colormap", "VIEWER MAP", "the viewer's colormap: grey turbo viridis", viewerColormapCommand},
     {"viewer-range", "VIEWER MIN MAX", "the viewer's black and white points (auto-fit off)", viewerRangeCommand},
     {"viewer-pin", "VIEWER", "the viewer's Pin button: keep its current values (read at the next frame)",

@@ -1,0 +1,99 @@
+#!/bin/sh
+# MSAA in the editor with real X clicks (xdotool, issue 47): the Pipeline window's msaa combo is
+# opened where the frame log says it is drawn and "4" is clicked (msaa_lighting is edges by
+# default); the viewport's "Complex" checkbox is clicked; a UI script in the same editor checks
+# that 4 samples ran, the overlay is drawn, selects sample 1 in the position viewer and checks its
+# values, and that the pixel inspector lists 4 samples. Screenshots are left in WORK_DIR to look at.
+# usage: ui_msaa.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
+set -eu
+bin="$1"
+work="$2"
+
+ui_name=ui_msaa
+log="$work/frames.jsonl"
+. "$(dirname "$0")/support/ui_common.sh"
+ui_require_xdotool
+ui_fresh_work
+
+cat > "$work/msaa.txt" <<SCRIPT
+frames 3
+expect-setting msaa off
+expect-setting msaa_lighting edges
+wait-setting msaa 4 120
+frames 3
+expect-msaa-samples 4
+expect-no-gl-errors
+wait-msaa-view complex 120
+# The shell moves the mouse off the checkbox after its click: no tooltip over the screenshots.
+frames 6
+viewer-sample position 1
+viewer-tool position histogram on
+inspect 320 200
+frames 4
+expect-viewer-stat position nan 0
+expect-viewer-stat position max-above 0.5
+expect-inspector-samples 4
+screenshot $work/msaa_complex.png
+msaa-view complex off
+msaa-view samples on
+frames 3
+screenshot $work/msaa_samples.png
+expect-no-gl-errors
+SCRIPT
+"$bin" --size 1280x720 --no-vsync --frame-sleep-ms 60 --log-frames "$log" --ui-test "$work/msaa.txt" \
+    > "$work/editor.log" 2>&1 &
+pid=$!
+wait_frames 4
+ui_window
+[ "$(field msaaSamples)" = 0 ] || fail "the editor starts with msaa samples $(field msaaSamples), not 0"
+
+# --- the wheel over the Pipeline window scrolls the msaa combo into view -----------------------
+set -- $(centre pipelineWindow)
+[ "$1" -gt 0 ] || fail "the Pipeline window was not drawn ($(field pipelineWindow))"
+xdotool mousemove --window "$wid" "$1" "$2"
+wait_frames 2
+n=0
+in_view() {
+    printf '%s %s\n' "$(field msaaCombo | tr -d '[]')" "$(field pipelineWindow | tr -d '[]')" | tr ',' ' ' |
+        awk '{ exit !($3 > 0 && $2 + $4 < $6 + $8 - 4) }'
+}
+until in_view; do
+    n=$((n + 1))
+    [ "$n" -le 40 ] || fail "40 wheel steps did not bring the msaa combo into view"
+    xdotool click 5
+    wait_frames 2
+done
+echo "the msaa combo is in view after $n wheel step(s): $(field msaaCombo)"
+
+# --- a click opens the combo; a click on its third entry ("4") picks it --------------------------
+set -- $(centre msaaCombo)
+click_at "$1" "$2"
+wait_frames 4
+items=$(field msaaItems)
+[ "$items" != "[]" ] || fail "clicking the msaa combo at $1,$2 did not open its list"
+set -- $(echo "$items" | tr -d '[]' | awk -F, '{ printf "%d %d", $5, $6 }')
+click_at "$1" "$2"
+tries=0
+until [ "$(field msaaSamples)" = 4 ]; do
+    tries=$((tries + 1))
+    [ "$tries" -le 200 ] || fail "200 frames after the click on 4, msaa samples are $(field msaaSamples)"
+    wait_frames 1
+done
+echo "clicked 4 at $1,$2: the frame ran $(field msaaSamples) samples"
+
+# --- the viewport's Complex checkbox -------------------------------------------------------------
+set -- $(centre msaaComplexBox)
+[ "$1" -gt 0 ] || fail "the Complex checkbox was not drawn ($(field msaaComplexBox))"
+click_from=$(lines)
+xdotool mousemove --window "$wid" "$1" "$2" sleep 0.1 mousedown 1 sleep 0.05 mouseup 1
+xdotool mousemove --window "$wid" 1100 490
+echo "clicked Complex at $1,$2"
+
+status=0
+wait "$pid" || status=$?
+pid=""
+grep "ui-test" "$work/editor.log" || true
+[ "$status" -eq 0 ] || fail "the msaa script failed (exit $status, see $work/editor.log)"
+grep -q "ui-test PASS .*expect-inspector-samples" "$work/editor.log" || fail "the inspector's samples were not checked"
+tail -n +"$(( click_from + 1 ))" "$log" | grep -q '"positionSample":1' || fail "the position viewer never showed sample 1"
+echo "ui_msaa: PASS"
