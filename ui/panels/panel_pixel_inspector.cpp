@@ -50,7 +50,11 @@ void msaaSamplesSection(PixelInspectorState& state) {
     ImGui::TextDisabled("%d samples, as the geometry pass stored them", n);
     ImGuiTableFlags const flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                                   ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX;
-    if (!ImGui::BeginTable("samples", 5, flags)) return;
+    // A scrolling table needs its height: a header and four rows per listed sample, as the values table.
+    int const rows = 1 + 4 * (state.msaaSample >= 0 ? 1 : n);
+    float const rowHeight = ImGui::GetTextLineHeight() + ImGui::GetStyle().CellPadding.y * 2.0f;
+    ImVec2 const size(0.0f, float(rows) * rowHeight + ImGui::GetStyle().ScrollbarSize + 2.0f);
+    if (!ImGui::BeginTable("samples", 5, flags, size)) return;
     ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("s7 albedo,spec").x);
     float const w = valueColumnWidth();
     for (char const* c : {"x / r", "y / g", "z / b", "w / a"})
