@@ -73,7 +73,8 @@ TEST(ViewerFields, EverySettingMemberHasOneEntryEditingItsOwn) {
                                   normalDisplay, linearDepth, cameraClipPlanes, nearPlane, farPlane, zoom, center,
                                   imageSize, showHistogram, showStencil, otherRange, colormap, overlays, picked, region,
                                   regionDragStart, regionRowsHeight, histogramDrag, percentileFitRequested,
-                                  regionFitRequested, pinRequested, showDiff, diffMode, diffThreshold] = ViewerState{};
+                                  regionFitRequested, pinRequested, showDiff, diffMode, diffThreshold, sample] =
+        ViewerState{};
 
     std::span<ViewerField const> const fields = viewerFields();
     ASSERT_EQ(fields.size(), settingMembers().size());
