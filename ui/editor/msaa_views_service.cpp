@@ -12,9 +12,12 @@ void serviceMsaaViews(EditorState& state, Renderer& renderer, FrameStats const& 
     int const samples = stats.msaaUsed != Msaa::Off ? renderer.msaaSampleCount() : 0;
     m.samples = samples;
     state.gbuffer.msaaSamples = samples;
-    for (ViewerState& v : state.gbuffer.viewers) v.sample = clampSample(v.sample, samples);
-    ViewerState& tools = state.viewportTools.viewer;
-    tools.sample = clampSample(tools.sample, samples);
+    // The viewport tools' kind follows the view: a kind without samples (depth, lit) shows all.
+    auto const keep = [samples](ViewerState& v) {
+        v.sample = viewerSampleSlot(v.kind) ? clampSample(v.sample, samples) : -1;
+    };
+    for (ViewerState& v : state.gbuffer.viewers) keep(v);
+    keep(state.viewportTools.viewer);
     state.inspector.msaaSample = clampSample(state.inspector.msaaSample, samples);
     if (rendered) {
         gpu.overlayStale = gpu.heatStale = true;
