@@ -1,13 +1,19 @@
 // The editor's msaa views read back (docs/msaa.md, issue 47): one sample of an attachment, whole or
 // a rectangle of it, and the samples-that-differ counts, on the default scene at 4 samples and
 // 160x90. The counts are checked against the edges pass's own complex mask and against counts of
-// the whole samples read in the test; the rectangle reads against the whole ones.
+// the whole samples read in the test; the rectangle reads against the whole ones and the export.
 #include "core/msaa_samples.h"
+#include "frame_export.h"
 #include "gl_fixture.h"
+#include "image/image_io.h"
+#include "run_command.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
+#include <string>
+#include <utility>
 
 using namespace gbl;
 
@@ -53,6 +59,30 @@ TEST_F(MsaaViewsGlTest, ARectangleOfASampleEqualsThoseTexelsOfTheWholeSample) {
     EXPECT_EQ(renderer_->readMsaaSample(GBufferSlot::Position, 0, {150, 80, 40, 40}).width, 10);
     EXPECT_TRUE(renderer_->readMsaaSample(GBufferSlot::Position, 0, {kW, 0, 4, 4}).pixels.empty());
     EXPECT_TRUE(renderer_->readMsaaSample(GBufferSlot::Depth, 0, {0, 0, 4, 4}).pixels.empty());
+}
+
+// What the viewers and the inspector read of sample k is what `render --msaa` exports as
+// raw_<name>_s<k>.exr (exportFrame writes that set), texel for texel.
+TEST_F(MsaaViewsGlTest, ASampleReadForTheViewersEqualsItsExport) {
+    FrameStats const stats = renderMsaa();
+    PipelineSettings s;
+    s.lightCubes = false;
+    s.msaa = Msaa::X4;
+    s.msaaLighting = MsaaLighting::Edges;
+    std::string const dir = test::freshTempDir("msaa_views_export");
+    ASSERT_FALSE(exportFrame(*renderer_, {camera_, lights_, s, stats, scene_.triangleCount(), {}}, dir));
+    for (auto const& [name, slot] :
+         {std::pair{"position", GBufferSlot::Position}, std::pair{"albedo_spec", GBufferSlot::AlbedoSpec}}) {
+        std::string const file = dir + "/raw_" + name + "_s1.exr";
+        std::optional<FloatImage> const exported = readImage(file);
+        ASSERT_TRUE(exported) << file;
+        FloatImage const one = renderer_->readMsaaSample(slot, 1, {31, 62, 1, 1});
+        ASSERT_EQ(exported->width, kW);
+        ASSERT_EQ(exported->channels, 4);
+        ASSERT_EQ(one.pixels.size(), 4u);
+        for (int c = 0; c < 4; ++c) EXPECT_EQ(one.at(0, 0, c), exported->at(31, 62, c)) << name << " channel " << c;
+        EXPECT_EQ(renderer_->readMsaaSample(slot, 1).pixels, exported->pixels) << name;
+    }
 }
 
 TEST_F(MsaaViewsGlTest, SamplesDifferAtSilhouettesAndAgreeInside) {
