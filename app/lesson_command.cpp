@@ -114,7 +114,7 @@ int runRenderLesson(RenderOptions const& o) {
     // The lesson's glTF scene (its lights and camera are the step's), or the default scene.
     SceneData scene;
     if (lesson.scenePath.empty()) {
-        scene = makeDefaultScene({step.defaultSceneLights});
+        scene = makeDefaultScene({step.defaultSceneLights, step.defaultSceneGlass});
     } else {
         SceneRequest request;
         request.scenePath = lesson.scenePath;

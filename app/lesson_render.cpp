@@ -26,6 +26,7 @@ LessonStepFrame renderLessonStep(Renderer& renderer, ui::LessonStep const& step)
     images.depth = renderer.readAttachment(Attachment::Depth);
     if (s.pipeline.view == DebugView::Heatmap || s.pipeline.view == DebugView::TileLights)
         images.coverage = renderer.readAttachment(Attachment::Coverage);
+    images.complexShare = out.stats.complexPixelShare;
     out.claim = ui::checkClaim(*step.claim, {s.camera, s.lights, s.pipeline, out.pixel}, images);
     return out;
 }

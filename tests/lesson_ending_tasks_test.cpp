@@ -90,6 +90,25 @@ TEST(LessonEndingTasks, TheNewTasksAreMetByTheIntendedSettingOnly) {
     EXPECT_EQ(met(l, step, with(volumes, "cull", "flip")), (std::vector<bool>{true, false}));
 }
 
+// msaa:5 (issue 47), from 2 samples lit resolve-first: 4 samples, then the strategy with no halo that
+// lights only the complex pixels per sample; per-sample (no halo, every pixel per sample) is not it.
+// transparency:2: the depth copy off, not the shader copy (which hides the glass as the blit does).
+TEST(LessonEndingTasks, TheMsaaAndGlassTasksAreMetByTheIntendedSettingsOnly) {
+    Lesson const& l = lesson("msaa");
+    LessonStep const& step = l.steps.back();
+    ASSERT_EQ(step.tasks.size(), 2u);
+    PipelineSettings const four = with(step.state.pipeline, "msaa", "4");
+    EXPECT_EQ(met(l, step, four), (std::vector<bool>{true, false}));
+    EXPECT_EQ(met(l, step, with(four, "msaa_lighting", "edges")), (std::vector<bool>{true, true}));
+    EXPECT_EQ(met(l, step, with(four, "msaa_lighting", "per-sample")), (std::vector<bool>{true, false}));
+    EXPECT_EQ(met(l, step, with(step.state.pipeline, "msaa", "8")), (std::vector<bool>{false, false}));
+    Lesson const& t = lesson("transparency");
+    LessonStep const& glass = t.steps.at(1);
+    ASSERT_EQ(glass.tasks.size(), 1u);
+    EXPECT_TRUE(met(t, glass, with(glass.state.pipeline, "depth_copy", "off"))[0]);
+    EXPECT_FALSE(met(t, glass, with(glass.state.pipeline, "depth_copy", "shader"))[0]);
+}
+
 // light_volumes:2: the setting multiplies the mesh's enclosing scale, so the smallest scale that
 // loses nothing is 1 (its diff against B is black); 1.03, the enclosing scale itself, is not it.
 TEST(LessonEndingTasks, TheVolumeScaleTaskWantsOne) {

@@ -564,7 +564,7 @@ TEST(LessonClaims, EveryKindHasOneRow) {
         EXPECT_TRUE(k.check) << k.name;
         EXPECT_FALSE(k.doc.empty()) << k.name;
     }
-    EXPECT_EQ(kinds.size(), std::size_t(ClaimKind::FewerEvaluations) + 1);
+    EXPECT_EQ(kinds.size(), std::size_t(ClaimKind::ComplexShare) + 1);
 }
 
 }  // namespace

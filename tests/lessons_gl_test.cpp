@@ -42,9 +42,10 @@ protected:
         if (size.x <= 0) size = {l.width, l.height};
         auto& r = renderers_[{size.x, size.y}];
         if (!r) r = makeRenderer(size.x, size.y);
-        if (sceneLights_[r.get()] != step.defaultSceneLights + 1) {
-            EXPECT_FALSE(r->setScene(makeDefaultScene({step.defaultSceneLights})));
-            sceneLights_[r.get()] = step.defaultSceneLights + 1;
+        int const scene = (step.defaultSceneLights + 1) * 2 + int(step.defaultSceneGlass);
+        if (sceneLights_[r.get()] != scene) {
+            EXPECT_FALSE(r->setScene(makeDefaultScene({step.defaultSceneLights, step.defaultSceneGlass})));
+            sceneLights_[r.get()] = scene;
         }
         EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
         LessonStepFrame f = renderLessonStep(*r, step);
@@ -57,7 +58,7 @@ protected:
         GlTest::TearDown();
     }
     std::map<std::pair<int, int>, std::unique_ptr<Renderer>> renderers_;
-    std::map<Renderer*, int> sceneLights_;
+    std::map<Renderer*, int> sceneLights_;  // (lights + 1) * 2 + glass of the scene it holds
 };
 
 TEST_F(LessonsGlTest, TheShippedLessonsLoadAndFollowTheIssue) {

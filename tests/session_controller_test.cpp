@@ -177,6 +177,38 @@ TEST(SessionController, ASceneThatFailsToLoadLeavesTheStateAsItWas) {
     EXPECT_EQ(f.state.lights.size(), 1u);
 }
 
+// A session of the default scene with its glass panes (default_scene_glass, issue 47) asks the loader
+// for "default+glass"; one without them for "default"; the editor's session keeps the panes.
+TEST(SessionController, TheGlassOfASessionReachesTheSceneLoader) {
+    Fixture f("controller_glass");
+    SessionController c(f.clock(), std::nullopt, 5013);
+    c.start(f.state, 32);
+    SceneLoader const load = [&f](std::string const& scene, int) -> std::optional<std::string> {
+        f.loads.push_back(scene);
+        f.state.sceneSource = scene == kDefaultSceneGlass ? "default" : scene;
+        f.state.sceneGlass = scene == kDefaultSceneGlass;
+        return std::nullopt;
+    };
+    Session s = captureSession(f.state, 32);
+    EXPECT_FALSE(s.defaultSceneGlass);
+    s.defaultSceneGlass = true;
+    std::string const glass = f.dir + "/glass.json";
+    ASSERT_EQ(saveSession(glass, s), std::nullopt);
+    ASSERT_EQ(c.openSession(glass, f.state, load), std::nullopt);
+    ASSERT_EQ(f.loads.size(), 1u);
+    EXPECT_EQ(f.loads.back(), "default+glass");
+    EXPECT_EQ(f.state.sceneName(), "default+glass");
+    EXPECT_TRUE(captureSession(f.state, 32).defaultSceneGlass);
+    ASSERT_EQ(c.openSession(glass, f.state, load), std::nullopt);
+    EXPECT_EQ(f.loads.size(), 1u);  // the same scene: not loaded again
+    s.defaultSceneGlass = false;
+    std::string const plain = f.dir + "/plain.json";
+    ASSERT_EQ(saveSession(plain, s), std::nullopt);
+    ASSERT_EQ(c.openSession(plain, f.state, load), std::nullopt);
+    EXPECT_EQ(f.loads.back(), "default");
+    EXPECT_FALSE(f.state.sceneGlass);
+}
+
 TEST(SessionController, UndoAndRedoThroughTheController) {
     Fixture f("controller_undo");
     SessionController c(f.clock(), std::nullopt, 5006);

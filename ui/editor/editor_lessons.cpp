@@ -140,11 +140,20 @@ void checkTasks(Editor& editor) {
     if (changed) saveProgress(editor);
 }
 
+// Makes `scene` (as EditorState::sceneName) the editor's scene unless it is; the error sentence when it
+// cannot be loaded (the editor keeps its scene).
+std::optional<std::string> useScene(Editor& editor, std::string const& scene) {
+    if (scene == editor.state.sceneName()) return std::nullopt;
+    return editor.sceneLoader(scene, editor.defaultLightCount);
+}
+
 void showStep(Editor& editor, int step) {
     LessonState& l = editor.course.lessons;
     ui::Lesson const& lesson = editor.course.library.lessons[std::size_t(l.lesson)];
     l.step = std::clamp(step, 0, int(lesson.steps.size()) - 1);
     ui::LessonStep const& s = lesson.steps[std::size_t(l.step)];
+    if (auto error = useScene(editor, ui::lessonStepScene(lesson, l.step)))
+        report(editor, "step " + std::to_string(l.step + 1) + "'s scene could not be loaded: " + *error, true);
     l.predictChoice = -1;
     l.predictNumber = 0.0f;
     l.predicted = false;
@@ -188,27 +197,18 @@ void keepStepPin(Editor& editor) {
         pin.pinRequested = true;
 }
 
-std::string currentScene(Editor const& editor) {
-    return editor.state.sceneSource.empty() ? "default" : editor.state.sceneSource;
-}
-
-// Makes `scene` ("default" or a glTF path) the editor's scene unless it already is; the error
-// sentence when it cannot be loaded (the editor keeps the scene it had).
-std::optional<std::string> useScene(Editor& editor, std::string const& scene) {
-    if (scene == currentScene(editor)) return std::nullopt;
-    return editor.sceneLoader(scene, editor.defaultLightCount);
-}
-
 // Opens lesson `index` at `step`, or where the student left it. The lesson's scene (its glTF file
 // or the default scene) replaces the editor's; Leave loads the editor's again.
 void start(Editor& editor, int index, std::optional<int> step = std::nullopt) {
     LessonState& l = editor.course.lessons;
     if (index < 0 || index >= int(editor.course.library.lessons.size())) return;
     ui::Lesson const& next = editor.course.library.lessons[std::size_t(index)];
-    std::string const scene = next.scenePath.empty() ? "default" : next.scenePath;
+    int const at = std::clamp(step.value_or(ui::resumeStep(editor.course.progress, next.id, int(next.steps.size()))), 0,
+                              int(next.steps.size()) - 1);
+    std::string const scene = ui::lessonStepScene(next, at);
     if (l.lesson < 0) {
         closeImportedGBuffer(editor);  // the lesson returns to the scene, not to a G-buffer
-        std::string const sceneBefore = currentScene(editor);
+        std::string const sceneBefore = editor.state.sceneName();
         ui::LessonReturn before = ui::captureLessonReturn(editor.state);
         editor.sessions->lessonStarting(editor.state);  // before the scene changes: were there edits?
         if (auto error = useScene(editor, scene)) {
@@ -227,8 +227,7 @@ void start(Editor& editor, int index, std::optional<int> step = std::nullopt) {
         ui::applyLessonReturn(*l.before, editor.state, frameSize(editor));
     }
     l.lesson = index;
-    ui::Lesson const& lesson = editor.course.library.lessons[std::size_t(index)];
-    showStep(editor, step.value_or(ui::resumeStep(editor.course.progress, lesson.id, int(lesson.steps.size()))));
+    showStep(editor, at);
 }
 
 // "Restart" in the course view: that lesson's progress, and only that lesson's, is forgotten; the
@@ -324,7 +323,9 @@ void saveStep(Editor& editor) {
         step.state = *l.taskStart;
     }
     step.defaultSceneLights = editor.defaultLightCount;
-    std::string const scene = currentScene(editor) == "default" ? std::string() : currentScene(editor);
+    std::string scene = editor.state.sceneName();
+    step.defaultSceneGlass = scene == ui::kDefaultSceneGlass;
+    if (scene == "default" || step.defaultSceneGlass) scene.clear();
     if (auto err = ui::appendLessonStep(l.savePath, step, scene)) {
         report(editor, *err, true);
         return;

@@ -67,14 +67,18 @@ bool parseGlLimit(std::string const& text, int& major, int& minor) {
     return std::sscanf(text.c_str(), "%d.%d", &major, &minor) == 2 && major >= 3;
 }
 
-// Loads a glTF file (or builds the default scene when path is empty) on this thread and installs
-// it (ui/model/scene_loading.h, installScene). Start-up and sessions use it; File > Open, drops and
-// scripts load on a worker instead (updateSceneLoading). On failure the current scene and
-// state stay as they were and an error sentence is returned.
-std::optional<std::string> loadScene(std::optional<std::string> const& path, int defaultLightCount,
+// Loads a glTF file (or builds the default scene when path is empty, with its glass panes when
+// `glass`) on this thread and installs it (ui/model/scene_loading.h, installScene). Start-up and sessions use it; File
+// > Open, drops and scripts load on a worker instead (updateSceneLoading). On failure the current scene and state stay
+// as they were and an error sentence is returned.
+std::optional<std::string> loadScene(std::optional<std::string> const& path, int defaultLightCount, bool glass,
                                      EditorOptions const& options, ui::EditorState& state, Renderer& renderer) {
     auto const upload = [&renderer](SceneData const& scene) { return renderer.setScene(scene); };
-    if (!path) return ui::installScene(makeDefaultScene({32, options.glass}), false, defaultLightCount, state, upload);
+    if (!path) {
+        auto error = ui::installScene(makeDefaultScene({32, glass}), false, defaultLightCount, state, upload);
+        if (!error) state.sceneGlass = glass;
+        return error;
+    }
     bool const allowOutsideUris = options.allowOutsideUris;
     GltfLoadOptions gltfOptions;
     gltfOptions.allowOutsideUris = allowOutsideUris;
@@ -261,15 +265,19 @@ std::optional<int> startEditor(Editor& editor) {
         return 1;
     }
     editor.defaultLightCount = options.lightCount.value_or(32);
-    if (auto error = loadScene(options.scenePath, editor.defaultLightCount, options, state, *editor.renderer)) {
+    if (auto error =
+            loadScene(options.scenePath, editor.defaultLightCount, options.glass, options, state, *editor.renderer)) {
         std::fprintf(stderr, "gbuffer-lab: %s\n", error->c_str());
         return 2;
     }
     rememberHomeView(editor);
+    // "default" is the default scene; "default+glass" (ui::kDefaultSceneGlass) stands its glass panes,
+    // as --glass, a session with default_scene_glass and a lesson step with "scene": {"glass": true} ask.
     editor.sceneLoader = [&editor](std::string const& scene, int lightCount) {
         std::optional<std::string> path;
-        if (scene != "default") path = scene;
-        auto error = loadScene(path, lightCount, editor.options, editor.state, *editor.renderer);
+        bool const glass = scene == ui::kDefaultSceneGlass;
+        if (scene != "default" && scene != ui::kDefaultSceneGlass) path = scene;
+        auto error = loadScene(path, lightCount, glass, editor.options, editor.state, *editor.renderer);
         if (!error) rememberHomeView(editor);
         return error;
     };

@@ -155,10 +155,12 @@ std::optional<std::string> SessionController::applyLoaded(Session const& session
                                                           SceneLoader const& load) {
     // The state is copied first so a scene that fails to load leaves everything as it was.
     EditorState const before = state;
-    bool const sameScene = session.scene == (state.sceneSource.empty() ? "default" : state.sceneSource) &&
-                           (session.scene != "default" || session.defaultSceneLights == defaultSceneLights_);
+    std::string const scene =
+        session.scene == "default" && session.defaultSceneGlass ? std::string(kDefaultSceneGlass) : session.scene;
+    bool const sameScene =
+        scene == state.sceneName() && (session.scene != "default" || session.defaultSceneLights == defaultSceneLights_);
     if (!sameScene) {
-        if (auto err = load(session.scene, session.defaultSceneLights)) {
+        if (auto err = load(scene, session.defaultSceneLights)) {
             state = before;
             return err;
         }

@@ -20,9 +20,14 @@
 #include "scene/scene_data.h"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace gbl::ui {
+
+// The scene name the editor's scene loader (and a lesson step with "scene": {"glass": true}) uses for
+// the default scene with its glass panes; "default" is the scene without them.
+inline constexpr std::string_view kDefaultSceneGlass = "default+glass";
 
 // Wall-clock cost of each part of the frame, with glFinish between parts so the GPU work of
 // one part is not billed to the next. Only while a measurement runs (it slows the frame).
@@ -39,6 +44,13 @@ struct CostMeasurement {
 struct EditorState {
     // --- the scene being looked at ------------------------------------------------------
     std::string sceneSource;  // "default" or the glTF path
+    bool sceneGlass = false;  // the default scene stands its glass panes (DefaultSceneOptions::glass)
+    // "default", "default+glass" (kDefaultSceneGlass) or the glTF path: what the scene loader takes.
+    std::string sceneName() const {
+        if (sceneSource.empty() || sceneSource == "default")
+            return std::string(sceneGlass ? kDefaultSceneGlass : "default");
+        return sceneSource;
+    }
     Bounds sceneBounds;
     std::vector<SceneCamera> sceneCameras;  // the file's own cameras, offered as views
     std::size_t sceneTriangles = 0;

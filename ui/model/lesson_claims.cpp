@@ -134,6 +134,15 @@ ClaimResult differsFrom(LessonClaim const& c, ClaimFrame const&, ClaimImages con
                 ")"};
 }
 
+ClaimResult complexShare(LessonClaim const& c, ClaimFrame const&, ClaimImages const& im) {
+    if (!im.complexShare) return {false, "the frame counted no complex pixels (msaa off, or it fell back to off)"};
+    double const share = *im.complexShare;
+    return {share >= c.minFraction && share < c.maxFraction,
+            "complex pixels (lit per sample by edges): " + lessonNumber(float(100.0 * share)) +
+                " % of the frame (range " + lessonNumber(100.0f * c.minFraction) + " .. " +
+                lessonNumber(100.0f * c.maxFraction) + " %)"};
+}
+
 ClaimResult fewerEvaluations(LessonClaim const& c, ClaimFrame const&, ClaimImages const& im) {
     if (!im.referenceCoverage || im.coverage.channels < 1) return {false, "no coverage images (show heatmap)"};
     double const step = evaluationCount(im.coverage), ref = evaluationCount(*im.referenceCoverage);
@@ -329,9 +338,10 @@ constexpr std::array<std::string_view, 2> kAtLeastOptional{"at_least", "mark"};
 constexpr std::array<std::string_view, 1> kMostOptional{"most"};
 constexpr std::array<std::string_view, 2> kWastedShareOptional{"min_fraction", "max_fraction"};
 constexpr std::array<std::string_view, 2> kAttachmentFields{"attachment", "value"};
+constexpr std::array<std::string_view, 2> kComplexShareFields{"min_fraction", "max_fraction"};
 
 // kind, name, fields, optional fields, about the step's pixel, needs a reference frame, check, doc.
-std::array<ClaimKindInfo, 10> const kClaimKinds{{
+std::array<ClaimKindInfo, 11> const kClaimKinds{{
     {ClaimKind::MatchesCpu,
      "matches_cpu",
      {},
@@ -384,6 +394,15 @@ std::array<ClaimKindInfo, 10> const kClaimKinds{{
      fewerEvaluations,
      "the heat map's light evaluations summed over the frame are at least `min_fraction` fewer than the "
      "reference's (and, with `max_fraction`, less than that); needs the heatmap view"},
+    {ClaimKind::ComplexShare,
+     "complex_share",
+     kComplexShareFields,
+     {},
+     false,
+     false,
+     complexShare,
+     "the share of the frame's pixels the msaa detection pass marks complex (lit per sample by `edges`) is at "
+     "least `min_fraction` and below `max_fraction`; needs msaa 2, 4 or 8"},
 }};
 
 // The claims' numbers; `at_least` must also not exceed `bound`, `max_fraction` must exceed

@@ -32,6 +32,7 @@ struct ClaimImages {
     std::optional<FloatImage> referenceLighting;
     std::optional<FloatImage> referenceDisplay;
     std::optional<FloatImage> referenceCoverage;  // when the step shows the heat map
+    std::optional<double> complexShare;           // msaa frames: the share of complex pixels (FrameStats)
 };
 
 struct ClaimFrame {

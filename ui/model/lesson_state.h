@@ -108,6 +108,7 @@ enum class ClaimKind {
     DiffersFrom,          // at least min_fraction of the covered pixels differ from the reference by > bound
     FewerEvaluations,     // the heat map's evaluations, summed, are min_fraction .. max_fraction fewer than the
                           // reference's
+    ComplexShare,         // msaa: the share of complex pixels is min_fraction .. max_fraction
 };
 struct LessonClaim {
     ClaimKind kind = ClaimKind::MatchesCpu;

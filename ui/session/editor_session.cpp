@@ -11,6 +11,7 @@ Session captureSession(EditorState const& state, int defaultSceneLights) {
     Session s;
     s.scene = state.sceneSource.empty() ? "default" : state.sceneSource;
     s.defaultSceneLights = defaultSceneLights;
+    s.defaultSceneGlass = s.scene == "default" && state.sceneGlass;
     s.camera = state.camera;
     s.lights = state.lights;
     s.pipeline = state.pipeline;

@@ -51,8 +51,12 @@ Session lesson_fields::readState(json const& state, std::string const& path, glm
     base.camera = defaultCamera();
     int lights = 32;
     if (auto it = state.find("scene"); it != state.end()) {
-        knownFields(*it, path + ".scene", {"lights"});
+        knownFields(*it, path + ".scene", {"lights", "glass"});
         if (auto n = it->find("lights"); n != it->end()) lights = integer(*n, path + ".scene.lights", 0, kMaxLights);
+        if (auto g = it->find("glass"); g != it->end()) {
+            if (!g->is_boolean()) fail(path + ".scene.glass", "must be true or false");
+            base.defaultSceneGlass = g->get<bool>();
+        }
     }
     base.defaultSceneLights = lights;
     base.lights = makeDefaultLights(lights);
@@ -106,7 +110,8 @@ json mergedState(json const& setup, json const& step) {
     return out;
 }
 
-LessonSnapshot snapshotOf(json const& state, std::string const& path, int* defaultLights = nullptr);
+LessonSnapshot snapshotOf(json const& state, std::string const& path, int* defaultLights = nullptr,
+                          bool* glass = nullptr);
 
 // "predict": {"prompt", "choices" + "correct" | "number" + "tolerance", "explain", "before"}.
 LessonPrediction readPrediction(json const& j, std::string const& path, json const& state) {
@@ -140,7 +145,14 @@ LessonPrediction readPrediction(json const& j, std::string const& path, json con
         knownFields(*b, path + ".before",
                     {"scene", "lights", "camera", "pipeline", "viewers", "selected_light", "viewer"});
         // The step's state with these fields changed, merged like a step over the setup.
-        p.before = snapshotOf(mergedState(state, *b), path + ".before");
+        bool glassBefore = false, glassStep = false;
+        p.before = snapshotOf(mergedState(state, *b), path + ".before", nullptr, &glassBefore);
+        snapshotOf(state, path, nullptr, &glassStep);
+        // The editor shows a prediction's `before` on the step's scene: the glass stays as the step has it.
+        if (glassBefore != glassStep)
+            fail(path + ".before.scene.glass",
+                 "cannot differ from the step's: a prediction changes the state, "
+                 "not the scene");
         p.beforeJson = b->dump();
     }
     return p;
@@ -282,7 +294,11 @@ LessonStep readStep(json const& j, std::string const& path, json const& setup, s
                  "is missing: a lesson on a glTF scene (\"scene\") places its camera, in "
                  "setup or in each step");
     }
-    step.state = snapshotOf(state, path, &step.defaultSceneLights);
+    step.state = snapshotOf(state, path, &step.defaultSceneLights, &step.defaultSceneGlass);
+    if (gltfScene && step.defaultSceneGlass)
+        fail(path + ".scene.glass",
+             "stands its panes in the default scene and cannot be used in a lesson on a glTF "
+             "scene (\"scene\")");
     if (auto it = j.find("ab"); it != j.end()) step.state.ab = readAb(*it, path + ".ab", step.state.pipeline);
     if (auto it = j.find("light_by_light"); it != j.end())
         step.state.lightByLight = readLightByLight(*it, path + ".light_by_light", int(step.state.lights.size()));
@@ -300,12 +316,13 @@ LessonStep readStep(json const& j, std::string const& path, json const& setup, s
 }
 
 // The whole state of a step (or of a prediction's `before`) from its merged JSON.
-LessonSnapshot snapshotOf(json const& state, std::string const& path, int* defaultLights) {
+LessonSnapshot snapshotOf(json const& state, std::string const& path, int* defaultLights, bool* glass) {
     LessonSnapshot out;
     glm::vec3 lookAt{0.0f};
     bool hasLookAt = false;
     Session const s = readState(state, path, &lookAt, &hasLookAt);
     if (defaultLights) *defaultLights = s.defaultSceneLights;
+    if (glass) *glass = s.defaultSceneGlass;
     out.camera = s.camera;
     if (hasLookAt) {
         if (glm::length(lookAt - s.camera.position) < 1e-4f)
@@ -416,6 +433,11 @@ Lesson readLesson(json const& j, fs::path const& folder) {
 }
 
 }  // namespace
+
+std::string lessonStepScene(Lesson const& lesson, int step) {
+    if (!lesson.scenePath.empty()) return lesson.scenePath;
+    return lesson.steps.at(std::size_t(step)).defaultSceneGlass ? std::string(kDefaultSceneGlass) : "default";
+}
 
 LessonLoad parseLesson(std::string_view source, std::string const& fileLabel) {
     LessonLoad out;

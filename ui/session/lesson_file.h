@@ -23,6 +23,7 @@ struct LessonStep {
     LessonText text;
     LessonSnapshot state;  // camera, lights, pipeline, viewers, selection, pixel
     int defaultSceneLights = 32;
+    bool defaultSceneGlass = false;  // "scene": {"glass": true}: the default scene with its glass panes
     std::optional<LessonClaim> claim;
     std::optional<LessonPrediction> predict;
     std::vector<LessonTask> tasks;  // the checklist the editor ticks live
@@ -64,6 +65,10 @@ std::string defaultLessonDir();
 // Where a lesson's "scene" is looked for after the lesson's own folder: ../shared/gltf beside the
 // source tree, or $GBL_SHARED_GLTF_DIR when set. The folder may be absent.
 std::string sharedModelsDir();
+
+// The scene a step is shown on, as EditorState::sceneName names it: the lesson's glTF file, or the
+// default scene, "default+glass" (kDefaultSceneGlass) when the step asks for its glass panes.
+std::string lessonStepScene(Lesson const& lesson, int step);
 
 // "ID" or "ID:STEP" (STEP counted from 1) to the lesson's index and the step's index; an
 // error sentence listing the lessons otherwise.

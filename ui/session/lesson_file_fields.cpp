@@ -185,6 +185,11 @@ LessonClaim readClaim(json const& c, std::string const& path, json const& state,
             if (claim.maxFraction <= claim.minFraction)
                 fail(path + ".max_fraction", "must be greater than min_fraction");
             break;
+        case ClaimKind::ComplexShare:
+            if (step.state.pipeline.msaa == Msaa::Off) fail(path + ".kind", "needs pipeline.msaa 2, 4 or 8");
+            if (claim.maxFraction <= claim.minFraction)
+                fail(path + ".max_fraction", "must be greater than min_fraction");
+            break;
         case ClaimKind::MatchesCpu:
             if (auto it = c.find("reached"); it != c.end())
                 claim.reached = integer(*it, path + ".reached", 0, int(step.state.lights.size()));

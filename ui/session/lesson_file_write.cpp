@@ -48,6 +48,7 @@ nlohmann::ordered_json stepJson(LessonStep const& step) {
                                 {"viewers", session["viewers"]},
                                 {"selected_light", step.state.selectedLight},
                                 {"viewer", kViewerNames[std::size_t(std::clamp(step.state.activeViewer, 0, 4))]}};
+    if (step.defaultSceneGlass) j["scene"]["glass"] = true;
     if (step.state.pixel) j["pixel"] = {step.state.pixel->x, step.state.pixel->y};
     if (step.state.ab) {
         nlohmann::ordered_json b = nlohmann::ordered_json::object();
