@@ -75,9 +75,17 @@ void RendererImpl::runDepthPrepass(FrameRecord& frame, PassRun const& r) {
 }
 
 void RendererImpl::runForward(FrameRecord& frame, PassRun const& r) {
-    forwardPass(
-        {scene, lights, shaders.get(ProgramId::Forward), {*r.fbo, r.io.texture(r.decl.color.front())}},
-        {MaterialFilter::Blended, frame.f.viewProj, frame.shading, frame.f.settings.normalMaps, r.decl.states, true});
+    // forward+ (its declaration samples the tile lists): the blended surfaces' lists, binned from the
+    // near plane (passes/tile_bins.h).
+    bool const listed =
+        std::find(r.decl.samples.begin(), r.decl.samples.end(), Resource::TileBins) != r.decl.samples.end();
+    forwardPass({scene,
+                 lights,
+                 shaders.get(listed ? ProgramId::ForwardPlus : ProgramId::Forward),
+                 {*r.fbo, r.io.texture(r.decl.color.front())},
+                 listed ? &tileBins : nullptr},
+                {MaterialFilter::Blended, frame.f.viewProj, frame.shading, frame.f.settings.normalMaps, r.decl.states,
+                 true, tileGrid(targets.width, targets.height).tilesX});
 }
 
 // The blended surfaces hatched in one colour over the view (shaders/glass_outline.frag).

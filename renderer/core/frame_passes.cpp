@@ -373,9 +373,12 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
         }
         out.push_back(depthCopyPass(s.depthCopy));
     }
-    if (!imported)
-        out.push_back(scenePass(PassId::Forward, {R::Materials, R::Lights},
+    if (!imported) {  // forward+: the blended surfaces read the tiles' lists too (docs/transparency.md)
+        std::vector<Resource> samples{R::Materials, R::Lights};
+        if (s.mode == LightingMode::ForwardPlus) samples.push_back(R::TileBins);
+        out.push_back(scenePass(PassId::Forward, std::move(samples),
                                 sceneStates("blended surfaces", "double-sided blended surfaces", false, Blend::Alpha)));
+    }
     // The light targets of an earlier split frame would otherwise show in this one's views.
     if (!split) out.front().clears = plus(out.front().clears, {R::DiffuseLight, R::SpecularLight});
     if (viewNeedsCoverage(s.view)) out.push_back(coveragePass(s));
