@@ -2,6 +2,7 @@
 #include "frame_export.h"
 
 #include "core/depth.h"
+#include "core/frame_memory.h"
 #include "core/gbuffer_layout.h"
 #include "core/json_fields.h"
 #include "core/light_math.h"
@@ -184,6 +185,10 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
     }
     GlCaps const& caps = renderer.caps();
     PipelineSettings const& s = frame.settings;
+    // The screen-sized memory of the mode that ran (core/frame_memory.h), part by part.
+    FrameMemory const memory = frameMemory(frame.stats.modeUsed, layout, width, height, caps.maxStorageBlockBytes);
+    json memoryParts = json::object();
+    for (MemoryPart const& part : memory.parts) memoryParts[part.name] = part.bytesPerPixel;
     json statsJson = {{"gl_vendor", caps.vendor},
                       {"gl_renderer", caps.renderer},
                       {"gl_version", caps.version},
@@ -195,7 +200,10 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
                       {"cull", enumName(kCullModeNames, s.cull)},
                       {"depth_copy", enumName(kDepthCopyNames, s.depthCopy)},
                       {"layout", layout.name},
-                      {"gbuffer_bytes_per_pixel", layoutBytesPerPixel(layout)},
+                      // forward and forward+ write no G-buffer: 0 (bytes_per_pixel counts what they do write)
+                      {"gbuffer_bytes_per_pixel", memory.gbuffer ? layoutBytesPerPixel(layout) : 0},
+                      {"bytes_per_pixel", memory.bytesPerPixel()},
+                      {"memory", memoryParts},
                       {"accumulation", enumName(kLightAccumulationNames, frame.stats.accumulationUsed)},
                       {"gpu_ms", passes},
                       {"gpu_frame_ms", frame.stats.gpuFrameMs},

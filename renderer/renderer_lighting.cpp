@@ -43,9 +43,11 @@ void RendererImpl::runLightLists(FrameRecord& frame, PassRun const& r) {
         clusterListsPass(clusteredInput(f, r.io, r.io.texture(Resource::Lighting)), clusteredConfig(f, true));
         return;
     }
-    // The depth it declares: the G-buffer's (tiled), or the depth pre-pass's (forward+).
+    // The depth it declares: the G-buffer's (tiled), or the depth pre-pass's (forward+, which also
+    // bins the blended surfaces' lists when the scene has any: docs/transparency.md).
+    bool const blended = f.settings.mode == LightingMode::ForwardPlus && hasBlended(scene);
     tileBinPass({binPrograms(ProgramId::TileBin), lights, r.io.texture(r.decl.samples.front()), tileBins, caps},
-                {f.view, f.projection, targets.width, targets.height, f.camera.nearPlane, f.camera.farPlane});
+                {f.view, f.projection, targets.width, targets.height, f.camera.nearPlane, f.camera.farPlane, blended});
 }
 
 void RendererImpl::runLighting(FrameRecord& frame, PassRun const& r) {

@@ -75,9 +75,17 @@ void RendererImpl::runDepthPrepass(FrameRecord& frame, PassRun const& r) {
 }
 
 void RendererImpl::runForward(FrameRecord& frame, PassRun const& r) {
-    forwardPass(
-        {scene, lights, shaders.get(ProgramId::Forward), {*r.fbo, r.io.texture(r.decl.color.front())}},
-        {MaterialFilter::Blended, frame.f.viewProj, frame.shading, frame.f.settings.normalMaps, r.decl.states, true});
+    // forward+ (its declaration samples the tile lists): the blended surfaces' lists, binned from the
+    // near plane (passes/tile_bins.h).
+    bool const listed =
+        std::find(r.decl.samples.begin(), r.decl.samples.end(), Resource::TileBins) != r.decl.samples.end();
+    forwardPass({scene,
+                 lights,
+                 shaders.get(listed ? ProgramId::ForwardPlus : ProgramId::Forward),
+                 {*r.fbo, r.io.texture(r.decl.color.front())},
+                 listed ? &tileBins : nullptr},
+                {MaterialFilter::Blended, frame.f.viewProj, frame.shading, frame.f.settings.normalMaps, r.decl.states,
+                 true, tileGrid(targets.width, targets.height).tilesX});
 }
 
 // The blended surfaces hatched in one colour over the view (shaders/glass_outline.frag).
@@ -139,9 +147,18 @@ void RendererImpl::runDisplay(FrameRecord& frame, PassRun const& r) {
 void RendererImpl::runLightCubes(FrameRecord& frame, PassRun const& r) {
     // Against the lit target's depth: the scene's only when the depth-copy step filled it (the
     // depth_blit lesson: without it, the cubes show through walls).
-    lightCubesPass(
-        {lights, shaders.get(ProgramId::LightCube), cubeVao, *r.fbo},
-        {frame.f.viewProj, lightCubeHalfSize(), {frame.f.settings.tonemap, frame.f.settings.exposure}, r.decl.states});
+    DisplayTonemap const tonemap{frame.f.settings.tonemap, frame.f.settings.exposure};
+    lightCubesPass({lights, shaders.get(ProgramId::LightCube), cubeVao, *r.fbo},
+                   {frame.f.viewProj, lightCubeHalfSize(), tonemap, std::span(r.decl.states).first(1)});
+    // The blended surfaces over the cubes' pixels (the stencil the cubes marked), farthest first,
+    // lit by every light and tonemapped: a cube behind a pane is seen through it.
+    if (r.decl.states.size() < 3 || !hasBlended(scene) || lights.count == 0) return;
+    gl::Program const& glass = shaders.get(ProgramId::GlassOverCubes);
+    glass.use();
+    setTonemapUniforms(glass, tonemap);
+    forwardPass({scene, lights, glass, {*r.fbo, r.io.texture(Resource::Display)}},
+                {MaterialFilter::Blended, frame.f.viewProj, frame.shading, frame.f.settings.normalMaps,
+                 std::span(r.decl.states).subspan(1), true});
 }
 
 void RendererImpl::runWireframes(FrameRecord& frame, PassRun const& r) {

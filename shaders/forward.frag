@@ -2,6 +2,8 @@
 // Used by the `forward` lighting mode and for alpha-blended materials after deferred lighting.
 // Built with FORWARD_TILE_LISTS (the forward+ mode): each fragment shades with its 16x16 tile's
 // candidate lights from the binning pass (tile_bin.comp) instead, after a depth pre-pass.
+// Built with FORWARD_TONEMAP: the blended surfaces again, over the light cubes on the display image
+// (tonemapped as the cubes are; passes/light_cubes.h).
 #version 330 core
 #ifdef FORWARD_TILE_LISTS
 // Storage buffers, binding points and early depth tests: OpenGL 4.3's, where the mode can run.
@@ -14,6 +16,10 @@
 #include "lighting.glsl"
 #include "light_fetch.glsl"
 #include "surface_terms.glsl"
+#ifdef FORWARD_TONEMAP
+#include "view_constants.glsl"
+#include "tonemap.glsl"
+#endif
 
 in vec3 vWorldPos;
 in vec3 vNormal;
@@ -73,5 +79,9 @@ void main() {
     FOR_EVERY_LIGHT(uLightCount, ADD)
 #endif
 #undef ADD
+#ifdef FORWARD_TONEMAP
+    fragColor = vec4(tonemap(color), base.a);
+#else
     fragColor = vec4(color, base.a);
+#endif
 }

@@ -23,6 +23,9 @@ uniform ivec2 uTiles;
 uniform int uBinCap;  // entries per tile (TileBins::cap)
 uniform float uNear;
 uniform float uFar;
+// forward+'s lists for the blended surfaces: a pane may lie anywhere in front of the tile's farthest
+// opaque pixel (it is depth-tested against that depth), and over a tile with none at all.
+uniform bool uFromNear;
 
 void main() {
     int i = int(gl_GlobalInvocationID.x);
@@ -57,6 +60,7 @@ void main() {
             // them (a pixel farther than r in depth is farther than r away): not a candidate. The
             // list passes test the same range again; the hair of slack keeps this side looser.
             vec2 range = tileDepth[CHECKED(CHECK_SITE_TILE_DEPTH, tile, tileDepth.length())];
+            if (uFromNear) range = vec2(uNear, range.y > 0.0 ? range.y : uFar);  // y = 0: nothing drawn
             float slack = 1e-5 * range.y + 1e-6;
             if (depth + r < range.x - slack || depth - r > range.y + slack) continue;
             uint slot = atomicAdd(tileBinCount[CHECKED(CHECK_SITE_TILE_BIN_COUNT, tile, tileBinCount.length())], 1u);

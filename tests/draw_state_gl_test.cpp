@@ -152,6 +152,7 @@ protected:
             }
             GlState const now = readGlState();
             std::string whyNot = "declares no draw state";
+            std::ptrdiff_t fewest = -1;  // the declared group closest to the state found, named in the failure
             for (DrawState const& d : p.states) {
                 std::string const why = mismatch(now, d);
                 if (why.empty()) {
@@ -159,6 +160,9 @@ protected:
                     ++checkedGroups_[running + ": " + std::string(d.what)];
                     return;
                 }
+                std::ptrdiff_t const differences = std::count(why.begin(), why.end(), ';');
+                if (fewest >= 0 && differences >= fewest) continue;
+                fewest = differences;
                 whyNot = std::string(d.what) + ": " + why;
             }
             failures.push_back(label + ": pass " + running + " drew under a state it does not declare (" + whyNot +

@@ -3,6 +3,9 @@
 // volume included; its declared passes run, its lists are counted on the shared heat scale.
 #include "core/light_math.h"
 #include "gl_fixture.h"
+#include "scene/default_scene.h"
+#include "scene/mesh_builder.h"
+#include "test_scenes.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -76,12 +79,13 @@ protected:
         return renderer_->readAttachment(Attachment::Lighting);
     }
 
-    void expectMatchesForward(Camera const& cam, std::string const& where) {
+    FloatImage expectMatchesForward(Camera const& cam, std::string const& where) {
         FloatImage const forward = lighting(settingsFor(LightingMode::Forward), cam);
         FloatImage const plus = lighting(settingsFor(LightingMode::ForwardPlus), cam);
         Diff const d = compare(plus, forward);
         EXPECT_GT(d.meanValue, 0.01) << where << ": the frame should be visibly lit";
         EXPECT_EQ(d.pixelsOver, 0) << where << ": " << describe(d);
+        return plus;
     }
 
     // Camera inside light 0's sphere, looking at the floor under it (as light_modes_gl_test's).
@@ -160,4 +164,59 @@ TEST_F(ForwardPlusGlTest, CountsTheSameLightsPerTileAsTiled) {
     s.view = DebugView::Heatmap;
     lighting(s, camera_);
     EXPECT_EQ(tileCounts(), plus);
+}
+
+// The default scene's glass, seen from its camera through the three panes: the blended pass reads
+// the tiles' lists too (its own, binned from the near plane) and gives forward's image.
+TEST_F(ForwardPlusGlTest, MatchesForwardWithTheDefaultSceneGlass) {
+    Camera const cam = scene_.camera.value_or(Camera{});
+    FloatImage const plain = lighting(settingsFor(LightingMode::Forward), cam);
+    SceneData glass = makeDefaultScene({int(lights_.size()), true});
+    ASSERT_FALSE(renderer_->setScene(glass));
+    FloatImage const withGlass = expectMatchesForward(cam, "scene camera, glass");
+    Diff const panes = compare(withGlass, plain);
+    EXPECT_GT(panes.pixelsOver, kW * kH / 20) << "the panes should cover a good part of the frame";
+}
+
+// A pane in front of a wall, lit by one light whose sphere reaches the pane but not the wall: the
+// opaque lists (binned over the wall's depth) leave it out; the blended surfaces' lists, binned
+// from the near plane, keep it, so forward+ lights the pane as forward does.
+TEST_F(ForwardPlusGlTest, LightsAPaneALightReachesInFrontOfTheOpaqueDepth) {
+    SceneData s = test::floorAndWallScene();
+    Material glass;
+    glass.name = "test glass";
+    glass.baseColorFactor = {0.2f, 0.45f, 0.9f, 0.4f};
+    glass.alphaMode = AlphaMode::Blend;
+    glass.doubleSided = true;
+    s.materials.push_back(glass);
+    MeshData pane = makePlane({3.0f, 2.0f});
+    pane.material = int(s.materials.size()) - 1;
+    s.meshes.push_back(pane);
+    s.instances.push_back(
+        {int(s.meshes.size()) - 1, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 2.0f, 1.5f)) *
+                                       glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(1, 0, 0))});
+    ASSERT_FALSE(renderer_->setScene(s));
+    PointLight l;
+    l.position = {0.0f, 2.0f, 1.8f};
+    l.color = {1.0f, 1.0f, 1.0f};
+    l.intensity = 2.0f;
+    l.kc = 1.0f;
+    l.kl = 0.0f;
+    l.kq = 100.0f;
+    float const radius = lightRadius(l).radius;
+    ASSERT_GT(radius, 0.5f) << "the sphere should reach the pane, 0.3 units away";
+    ASSERT_LT(radius, 1.6f) << "and not the wall, 1.8 units away";
+    lights_ = {l};
+    Camera const cam = test::lookingAt({0.0f, 2.0f, 6.0f}, {0.0f, 2.0f, 0.0f});
+    PipelineSettings s0 = settingsFor(LightingMode::Forward);
+    s0.ambient = glm::vec3(0.2f);
+    FloatImage const forward = lighting(s0, cam);
+    s0.mode = LightingMode::ForwardPlus;
+    FloatImage const plus = lighting(s0, cam);
+    Diff const d = compare(plus, forward);
+    EXPECT_EQ(d.pixelsOver, 0) << describe(d);
+    // The light shows on the pane: the centre pixel brighter than without it.
+    lights_.clear();
+    FloatImage const unlit = lighting(s0, cam);
+    EXPECT_GT(plus.at(kW / 2, kH / 2, 2), unlit.at(kW / 2, kH / 2, 2) + 0.03f) << "blue, the pane's colour";
 }

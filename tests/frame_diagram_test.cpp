@@ -57,8 +57,10 @@ TEST(FrameDiagram, QuadEdges) {
         "geometry -> display via gbuffer.emissive",
         "geometry -> display via gbuffer.depth",
         "forward -> display via lighting",
-        // The cubes draw over the display image after the display pass, against the copied depth.
+        // The cubes draw over the display image after the display pass, against the copied depth,
+        // and blend the glass over themselves there (reading the display image).
         "depth_copy -> light_cubes via lighting.depth",
+        "display -> light_cubes via display",
     };
     EXPECT_EQ(edgeList(settings(LightingMode::Quad)), expected);
 }
@@ -73,7 +75,7 @@ TEST(FrameDiagram, VolumesEdges) {
         "geometry -> display via gbuffer.position",     "geometry -> display via gbuffer.normal",
         "geometry -> display via gbuffer.albedo_spec",  "geometry -> display via gbuffer.emissive",
         "geometry -> display via gbuffer.depth",        "forward -> display via lighting",
-        "depth_copy -> light_cubes via lighting.depth",
+        "depth_copy -> light_cubes via lighting.depth", "display -> light_cubes via display",
     };
     EXPECT_EQ(edgeList(settings(LightingMode::Volumes)), expected);
 
@@ -95,6 +97,7 @@ TEST(FrameDiagram, TiledEdges) {
         "geometry -> display via gbuffer.normal",    "geometry -> display via gbuffer.albedo_spec",
         "geometry -> display via gbuffer.emissive",  "geometry -> display via gbuffer.depth",
         "forward -> display via lighting",           "depth_copy -> light_cubes via lighting.depth",
+        "display -> light_cubes via display",
     };
     EXPECT_EQ(edgeList(settings(LightingMode::Tiled)), expected);
 }
@@ -107,6 +110,7 @@ TEST(FrameDiagram, ForwardEdges) {
         "forward_shading -> forward via lighting",
         "forward -> display via lighting",
         "forward_shading -> light_cubes via lighting.depth",
+        "display -> light_cubes via display",
     };
     EXPECT_EQ(edgeList(settings(LightingMode::Forward)), expected);
 }

@@ -288,6 +288,15 @@ TEST(FramePasses, ForwardPlusIsADepthPrepassTheTiledListsAndAForwardPassAtThatDe
     }
     EXPECT_TRUE(countsAsLighting(PassId::DepthPrepass));
     EXPECT_TRUE(feedbackLoops(passes).empty());
+    // The blended surfaces read the lists too (their own, binned from the near plane); forward's do not.
+    PassDecl const& blended = find(passes, PassId::Forward);
+    EXPECT_NE(std::find(blended.samples.begin(), blended.samples.end(), Resource::TileBins), blended.samples.end());
+    PipelineSettings f = s;
+    f.mode = LightingMode::Forward;
+    std::vector<PassDecl> const forwardPasses = framePasses(f, false);
+    PassDecl const& forwardBlended = find(forwardPasses, PassId::Forward);
+    EXPECT_EQ(std::find(forwardBlended.samples.begin(), forwardBlended.samples.end(), Resource::TileBins),
+              forwardBlended.samples.end());
     // Its heat views count the frame's own lists over the pre-pass depth.
     s.view = DebugView::Heatmap;
     std::vector<PassDecl> const heat = framePasses(s, false);
@@ -425,4 +434,28 @@ TEST(FramePasses, TheReadbacksAreDeclaredWithOneGroupPerStencilBit) {
     }
     std::vector<PassDecl> const both{depth, stencil};
     EXPECT_TRUE(feedbackLoops(both).empty());
+}
+
+// The light cubes mark their pixels in the lit depth's stencil, then the blended surfaces are drawn
+// over them there (docs/transparency.md): three groups, the cubes' first.
+TEST(FramePasses, TheLightCubesDrawTheGlassOverThemselves) {
+    PipelineSettings s;
+    s.lightCubes = true;
+    std::vector<PassDecl> const passes = framePasses(s, false);
+    PassDecl const& cubes = find(passes, PassId::LightCubes);
+    ASSERT_EQ(cubes.states.size(), 3u);
+    EXPECT_EQ(cubes.states[0].stencil, StencilUse::MarkCovered);
+    EXPECT_TRUE(cubes.states[0].depthWrite);
+    EXPECT_EQ(cubes.states[0].blend, Blend::Off);
+    for (std::size_t i : {1u, 2u}) {
+        EXPECT_EQ(cubes.states[i].stencil, StencilUse::Covered);
+        EXPECT_EQ(cubes.states[i].blend, Blend::Alpha);
+        EXPECT_EQ(cubes.states[i].depthTest, DepthTest::Less);
+        EXPECT_FALSE(cubes.states[i].depthWrite);
+    }
+    EXPECT_EQ(cubes.states[2].cull, FaceCull::Off);  // double-sided glass
+    EXPECT_TRUE(cubes.stencilRead && cubes.stencilWrite);
+    EXPECT_EQ(cubes.depthStencil, Resource::LitDepth);
+    EXPECT_NE(std::find(cubes.samples.begin(), cubes.samples.end(), Resource::Materials), cubes.samples.end());
+    EXPECT_TRUE(feedbackLoops(passes).empty());
 }

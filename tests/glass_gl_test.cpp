@@ -290,3 +290,63 @@ TEST_F(GlassGlTest, TheOutlineHatchesThePaneOnTheAlbedoView) {
     ASSERT_GE(passes.size(), 2u);
     EXPECT_EQ(passes.back().id, PassId::GlassOutline) << "after the display pass, on the albedo view too";
 }
+
+// Light cubes and glass (the cubes are drawn on the display image after the lit image's panes): a
+// cube behind the pane is seen through it, the pane blended over the cube; a cube in front of the
+// pane is drawn over it. At every pixel a cube covers, against the same frame without the pane.
+TEST_F(GlassGlTest, ACubeBehindThePaneIsSeenThroughItAndOneInFrontCoversIt) {
+    constexpr int w = 160, h = 90;
+    PointLight behind = frontLight(), front = frontLight();
+    behind.position = {-0.7f, 2.0f, 0.7f};  // between the wall (z = 0) and the pane (z = 1.5)
+    behind.color = {1.0f, 0.25f, 0.2f};
+    front.position = {0.7f, 2.0f, 2.5f};  // between the pane and the camera
+    std::vector<PointLight> const lights{behind, front};
+    PipelineSettings s = plainSettings();
+    s.lightCubes = true;
+    auto withPane = makeRenderer(w, h);
+    auto bare = makeRenderer(w, h);
+    ASSERT_FALSE(withPane->setScene(wallWithPane()));
+    ASSERT_FALSE(bare->setScene(test::floorAndWallScene()));
+    FrameStats const st = withPane->render({camera_, lights, s});
+    EXPECT_EQ(st.glErrors, 0u);
+    FloatImage const shown = withPane->readAttachment(Attachment::Final);
+    FloatImage const lit = withPane->readAttachment(Attachment::Lighting);
+    bare->render({camera_, lights, s});
+    FloatImage const cubes = bare->readAttachment(Attachment::Final);
+    FloatImage const wallLit = bare->readAttachment(Attachment::Lighting);
+    PipelineSettings noCubes = s;
+    noCubes.lightCubes = false;
+    bare->render({camera_, lights, noCubes});
+    FloatImage const noCubesShown = bare->readAttachment(Attachment::Final);
+    // The display's tonemap (shaders/tonemap.glsl, exposure curve, the default).
+    ASSERT_EQ(s.tonemap, Tonemap::Exposure);
+    auto const tonemap = [&](float v) { return std::pow(1.0f - std::exp(-v * s.exposure), 1.0f / 2.2f); };
+    float const a = kPaneColor.a;
+    int behindPixels = 0, frontPixels = 0;
+    double worst = 0.0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            glm::vec3 const cube = rgb(cubes, x, y);
+            if (glm::length(cube - rgb(noCubesShown, x, y)) < 0.05f) continue;  // no cube here
+            glm::vec3 const got = rgb(shown, x, y);
+            if (x < w / 2) {  // the cube behind the pane: the pane over it
+                ++behindPixels;
+                EXPECT_GT(glm::length(got - cube), 0.05f) << "pixel " << x << "," << y << " shows the bare cube";
+                for (int c = 0; c < 3; ++c) {
+                    // The pane's own lit value, from the lit image: lit = a pane + (1 - a) wall.
+                    float const pane = (lit.at(x, y, c) - (1.0f - a) * wallLit.at(x, y, c)) / a;
+                    float const expected = a * tonemap(pane) + (1.0f - a) * cube[c];
+                    // RGBA8 display: the cube and the result each rounded (1/255), the lit values fp16.
+                    double const err = std::abs(double(got[c]) - double(expected));
+                    worst = std::max(worst, err);
+                    EXPECT_LE(err, 3.0 / 255.0) << "pixel " << x << "," << y << " channel " << c;
+                }
+            } else {  // the cube in front: drawn over the pane, exactly its colour
+                ++frontPixels;
+                EXPECT_EQ(got, cube) << "pixel " << x << "," << y;
+            }
+        }
+    EXPECT_GT(behindPixels, 10) << "the cube behind the pane should cover some pixels";
+    EXPECT_GT(frontPixels, 10) << "the cube in front of the pane should cover some pixels";
+    RecordProperty("worst_error_behind", std::to_string(worst));
+}

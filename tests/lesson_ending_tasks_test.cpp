@@ -120,4 +120,16 @@ TEST(LessonEndingTasks, TheVolumeScaleTaskWantsOne) {
     EXPECT_FALSE(met(l, step, with(step.state.pipeline, "volume_scale", "0.95"))[0]);
 }
 
+// four_ways ends on tiled against Forward+ in the tile view: the task is switching A to forward+
+// (no G-buffer, the same lists); plain forward, which lists nothing, is not it, nor is clustered.
+TEST(LessonEndingTasks, TheFourWaysTaskWantsForwardPlus) {
+    Lesson const& l = lesson("four_ways");
+    LessonStep const& step = l.steps.back();
+    ASSERT_EQ(step.tasks.size(), 1u);
+    EXPECT_EQ(step.state.pipeline.mode, LightingMode::Tiled);
+    EXPECT_TRUE(met(l, step, with(step.state.pipeline, "mode", "forward+"))[0]);
+    EXPECT_FALSE(met(l, step, with(step.state.pipeline, "mode", "forward"))[0]);
+    EXPECT_FALSE(met(l, step, with(step.state.pipeline, "mode", "clustered"))[0]);
+}
+
 }  // namespace

@@ -436,3 +436,31 @@ TEST(RenderCommand, GlassStandsThreePanesDrawnForward) {
     EXPECT_EQ(withSession.exitCode, 2);
     EXPECT_NE(withSession.output.find("cannot be combined with --session"), std::string::npos) << withSession.output;
 }
+
+// stats.json's memory follows the mode that ran (core/frame_memory.h): forward and forward+ write
+// no G-buffer, so its bytes are 0 there and bytes_per_pixel counts their own targets; a deferred
+// frame keeps its layout's G-buffer bytes.
+TEST(RenderCommand, ForwardModesReportTheirOwnBytesPerPixel) {
+    auto const statsOf = [](std::string const& mode) {
+        std::string const out = test::freshTempDir("render_memory_" + mode);
+        auto const r = runGbufferLab(
+            {"render", "--out", out, "--size", "64x36", "--lights", "4", "--layout", "packed", "--mode", mode});
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return test::readJsonFile(fs::path(out) / "stats.json");
+    };
+    auto const quad = statsOf("quad");
+    EXPECT_EQ(quad["gbuffer_bytes_per_pixel"], 12);
+    EXPECT_EQ(quad["bytes_per_pixel"], 12.0 + 8.0 + 4.0);  // + lit image RGBA16F + its DEPTH24_STENCIL8
+    auto const forward = statsOf("forward");
+    EXPECT_EQ(forward["gbuffer_bytes_per_pixel"], 0);
+    EXPECT_EQ(forward["bytes_per_pixel"], 8.0 + 4.0);
+    auto const plus = statsOf("forward+");
+    ASSERT_FALSE(plus.contains("fallback_reason")) << plus["fallback_reason"];
+    EXPECT_EQ(plus["gbuffer_bytes_per_pixel"], 0);
+    auto const& parts = plus["memory"];
+    EXPECT_EQ(parts["depth pre-pass DEPTH24_STENCIL8"], 4.0);
+    EXPECT_EQ(parts["lit image RGBA16F"], 8.0);
+    // 4 x 3 tiles of a count, a depth range and at least one index each, over 64 x 36 pixels.
+    EXPECT_GE(parts["tile light lists"].get<double>(), 12 * (4.0 + 8.0 + 4.0) / (64.0 * 36.0));
+    EXPECT_DOUBLE_EQ(plus["bytes_per_pixel"].get<double>(), 12.0 + parts["tile light lists"].get<double>());
+}

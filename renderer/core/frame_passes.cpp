@@ -373,9 +373,12 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
         }
         out.push_back(depthCopyPass(s.depthCopy));
     }
-    if (!imported)
-        out.push_back(scenePass(PassId::Forward, {R::Materials, R::Lights},
+    if (!imported) {  // forward+: the blended surfaces read the tiles' lists too (docs/transparency.md)
+        std::vector<Resource> samples{R::Materials, R::Lights};
+        if (s.mode == LightingMode::ForwardPlus) samples.push_back(R::TileBins);
+        out.push_back(scenePass(PassId::Forward, std::move(samples),
                                 sceneStates("blended surfaces", "double-sided blended surfaces", false, Blend::Alpha)));
+    }
     // The light targets of an earlier split frame would otherwise show in this one's views.
     if (!split) out.front().clears = plus(out.front().clears, {R::DiffuseLight, R::SpecularLight});
     if (viewNeedsCoverage(s.view)) out.push_back(coveragePass(s));
@@ -383,9 +386,20 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
     if (s.glassOutline && !imported) out.push_back(glassOutlinePass(R::Display));
     // The overlays, onto the display image: the lit image stays the light sum.
     if (!viewShowsOverlays(s.view)) return out;
-    if (s.lightCubes)  // overlayFbo: the lit target's depth, the scene's only after the depth-copy step
-        out.push_back(overlayPass(PassId::LightCubes, {R::Lights}, R::LitDepth,
-                                  state("cubes", DepthTest::Less, true, Blend::Off, FaceCull::Back)));
+    if (s.lightCubes) {  // overlayFbo: the lit target's depth, the scene's only after the depth-copy step
+        // The cubes mark the pixels they cover; the blended surfaces are drawn again there, over a
+        // cube behind them (one in front has written its depth and hides them): docs/transparency.md.
+        PassDecl cubes =
+            overlayPass(PassId::LightCubes, {R::Lights, R::Materials}, R::LitDepth,
+                        state("cubes", DepthTest::Less, true, Blend::Off, FaceCull::Back, StencilUse::MarkCovered));
+        cubes.stencilRead = cubes.stencilWrite = true;
+        for (DrawState glass : sceneStates("blended surfaces over the cubes",
+                                           "double-sided blended surfaces over the cubes", false, Blend::Alpha)) {
+            glass.stencil = StencilUse::Covered;
+            cubes.states.push_back(glass);
+        }
+        out.push_back(std::move(cubes));
+    }
     if (wireframes)  // the scene's depth without the depth-copy step: the G-buffer's (forward: its own)
         out.push_back(overlayPass(PassId::Wireframes, {R::Lights, R::VolumeInstances},
                                   forward ? R::LitDepth : R::GBufferDepth,

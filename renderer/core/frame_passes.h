@@ -149,6 +149,8 @@ enum class StencilUse {
     MarkComplex,  // msaa edges: every drawn fragment sets the mark to 1 (simple pixels discard)
     Simple,       // passes where the mark is 0, keeps it
     Complex,      // passes where the mark is 1, keeps it
+    MarkCovered,  // light cubes: every drawn fragment sets the mark to 1 (the lit depth's stencil, cleared)
+    Covered,      // the blended surfaces over the cubes: passes where the mark is 1, keeps it
 };
 
 // The fixed-function state of one group of draws of a pass (most passes have one).

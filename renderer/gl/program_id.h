@@ -22,10 +22,11 @@ enum class ProgramId {
     View,
     CoverageAllLights,
     GBufferDecode,
-    LightCombine,  // accumulation split: the two light targets into the lit image
-    Import,        // re-lighting: an imported G-buffer into the layout's targets
-    TexelCopy,     // a texture into a float target, for read-backs WebGL2 cannot do directly
-    GlassOutline,  // the blended surfaces hatched over a view
+    LightCombine,    // accumulation split: the two light targets into the lit image
+    Import,          // re-lighting: an imported G-buffer into the layout's targets
+    TexelCopy,       // a texture into a float target, for read-backs WebGL2 cannot do directly
+    GlassOutline,    // the blended surfaces hatched over a view
+    GlassOverCubes,  // forward.frag tonemapped (FORWARD_TONEMAP): the blended surfaces over the light cubes
     // volumes mode
     LightVolume,
     LightVolumeCoverage,

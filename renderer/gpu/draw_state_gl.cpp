@@ -64,12 +64,14 @@ void apply(DrawState const& s) {
             glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
             break;
         case StencilUse::MarkComplex:  // every fragment drawn (a complex pixel) marks 1
+        case StencilUse::MarkCovered:  // every fragment drawn (a light cube) marks 1
             glStencilFunc(GL_ALWAYS, 1, 0xFF);
             glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
             break;
         case StencilUse::Simple:
         case StencilUse::Complex:
-            glStencilFunc(GL_EQUAL, s.stencil == StencilUse::Complex ? 1 : 0, 0xFF);
+        case StencilUse::Covered:
+            glStencilFunc(GL_EQUAL, s.stencil == StencilUse::Simple ? 0 : 1, 0xFF);
             glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
             break;
         case StencilUse::Off:

@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <numeric>
 
@@ -144,6 +145,13 @@ std::optional<std::string> uploadScene(SceneData const& scene, GpuScene& out) {
     g.white = uploadImage(white);
     out = std::move(g);
     return std::nullopt;
+}
+
+bool hasBlended(GpuScene const& scene) {
+    return std::any_of(scene.instances.begin(), scene.instances.end(), [&](MeshInstance const& inst) {
+        int const m = scene.meshes[std::size_t(inst.mesh)].material;
+        return m >= 0 && scene.materials[std::size_t(m)].alphaMode == AlphaMode::Blend;
+    });
 }
 
 void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter filter, bool useNormalMaps,

@@ -40,6 +40,9 @@ std::optional<std::string> uploadScene(SceneData const& scene, GpuScene& out);
 // Which materials a draw includes.
 enum class MaterialFilter { Opaque, Blended, All };
 
+// Whether any instance has a blended material (the forward pass has something to draw).
+bool hasBlended(GpuScene const& scene);
+
 // Draws every instance whose material passes the filter with `program`, setting the per-object
 // uniforms (uModel, uNormalMatrix) and material uniforms of shaders/material.glsl. The material
 // textures go to the BIND_MATERIAL_* units of shaders/bindings.glsl. `states` are the pass's two

@@ -15,8 +15,12 @@ LightingOutput forwardPass(ForwardInput const& in, ForwardConfig const& config) 
     if (in.tiles) {
         in.program.set("uBinCap", in.tiles->cap);
         in.program.set("uTilesX", config.tilesX);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS, in.tiles->counts.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS, in.tiles->lights.id());
+        // The blended surfaces read the lists binned from the near plane (TileBins::blended*).
+        bool const blended = config.filter == MaterialFilter::Blended;
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS,
+                         (blended ? in.tiles->blendedCounts : in.tiles->counts).id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS,
+                         (blended ? in.tiles->blendedLights : in.tiles->lights).id());
     }
     // Opaque: written depth; blended: alpha over, depth read only (config.states), farthest first.
     drawScene(in.scene, in.program, config.filter, config.normalMaps, config.states,

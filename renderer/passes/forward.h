@@ -17,7 +17,8 @@ struct ForwardInput {
     LightBuffer const& lights;
     gl::Program const& program;  // ProgramId::Forward
     LitTarget target;            // Opaque clears it first; Blended blends over it
-    // forward+ (program ProgramId::ForwardPlus): the tiles' candidate lists, binned this frame.
+    // forward+ (program ProgramId::ForwardPlus): the tiles' candidate lists, binned this frame
+    // (Blended: TileBins::blendedCounts and blendedLights, binned from the near plane).
     TileBins const* tiles = nullptr;
 };
 struct ForwardConfig {

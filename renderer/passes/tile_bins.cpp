@@ -9,6 +9,17 @@
 
 namespace gbl {
 
+namespace {
+
+void clearCounts(gl::Buffer const& counts) {
+    GLuint const zero = 0;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, counts.id());
+    glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+}  // namespace
+
 void tileBinPass(TileBinInput const& in, TileBinConfig const& c) {
     TileGrid const g = tileGrid(c.width, c.height);
     TileBins& b = in.bins;
@@ -19,14 +30,20 @@ void tileBinPass(TileBinInput const& in, TileBinConfig const& c) {
         b.lights = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER,
                                       std::size_t(g.count()) * std::size_t(std::max(b.cap, 1)) * sizeof(GLuint),
                                       nullptr, GL_DYNAMIC_COPY, "tile bin lights");
+        b.blendedCounts = gl::Buffer{};
+        b.blendedLights = gl::Buffer{};
         b.depth = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER, std::size_t(g.count()) * 2 * sizeof(GLfloat), nullptr,
                                      GL_DYNAMIC_COPY, "tile depth ranges");
         b.tiles = g.count();
     }
-    GLuint const zero = 0;
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, b.counts.id());
-    glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    if (c.blendedLists && !b.blendedCounts) {
+        b.blendedCounts = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER, std::size_t(g.count()) * sizeof(GLuint), nullptr,
+                                             GL_DYNAMIC_COPY, "tile bin counts, blended surfaces");
+        b.blendedLights = gl::Buffer::create(GL_SHADER_STORAGE_BUFFER,
+                                             std::size_t(g.count()) * std::size_t(std::max(b.cap, 1)) * sizeof(GLuint),
+                                             nullptr, GL_DYNAMIC_COPY, "tile bin lights, blended surfaces");
+    }
+    clearCounts(b.counts);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS, b.counts.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS, b.lights.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_DEPTH, b.depth.id());
@@ -51,9 +68,23 @@ void tileBinPass(TileBinInput const& in, TileBinConfig const& c) {
     p.set("uBinCap", b.cap);
     p.set("uNear", c.nearPlane);
     p.set("uFar", c.farPlane);
-    if (in.lights.count > 0) {
-        glDispatchCompute(GLuint((in.lights.count + 63) / 64), 1, 1);
-        gl::countDispatch();
+    p.set("uFromNear", 0);
+    auto const dispatch = [&] {
+        if (in.lights.count > 0) {
+            glDispatchCompute(GLuint((in.lights.count + 63) / 64), 1, 1);
+            gl::countDispatch();
+        }
+    };
+    dispatch();
+    if (c.blendedLists) {  // the same lights again into the blended surfaces' lists
+        clearCounts(b.blendedCounts);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS, b.blendedCounts.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS, b.blendedLights.id());
+        p.set("uFromNear", 1);
+        dispatch();
+        // Left bound for the list pass that follows, as documented: the opaque lists.
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_COUNTS, b.counts.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_BIN_LIGHTS, b.lights.id());
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, slot::BIND_SSBO_TILE_DEPTH, 0);

@@ -17,6 +17,10 @@ struct TileBins {
     gl::Buffer counts;  // uint per tile: candidates (also past the cap)
     gl::Buffer lights;  // `cap` uint light indices per tile, in no particular order
     gl::Buffer depth;   // vec2 per tile: nearest and farthest view depth of its drawn pixels
+    // forward+ with blended surfaces: each tile's lists again, binned from the near plane to its
+    // farthest drawn pixel (TileBinConfig::blendedLists); the same cap.
+    gl::Buffer blendedCounts;
+    gl::Buffer blendedLights;
     int tiles = 0;
     int cap = 0;  // tileBinCap() for this grid and context
 };
@@ -41,6 +45,7 @@ struct TileBinConfig {
     int height = 0;
     float nearPlane = 0.1f;
     float farPlane = 100.0f;
+    bool blendedLists = false;  // also fill TileBins::blended* (forward+ frames with blended surfaces)
 };
 
 // Fills the bins and leaves them bound on BIND_SSBO_TILE_BIN_* for the list pass that follows.

@@ -191,7 +191,7 @@ void drawDockedPanels(Editor& editor, FrameTimes const& times, unsigned viewport
     ui::drawViewerMagnifier(state.gbuffer, state.viewportTools);
     ui::drawPixelInspectorPanel(state.inspector);
     ui::drawStatsPanel(state.stats, editor.caps.pipelineStatisticsUnavailableReason(), int(state.lights.size()),
-                       &editor.render, editor.renderReason, &state.frame);
+                       editor.caps.maxStorageBlockBytes, &editor.render, editor.renderReason, &state.frame);
     ui::drawLogPanel(state.log);
 }
 

@@ -80,6 +80,10 @@ char const* stencilWords(StencilUse s) {
             return "stencil passes where the mark is 0 (simple pixels)";
         case StencilUse::Complex:
             return "stencil passes where the mark is 1 (complex pixels)";
+        case StencilUse::MarkCovered:
+            return "stencil marks 1 at every pixel drawn (the light cubes)";
+        case StencilUse::Covered:
+            return "stencil passes where the mark is 1 (the light cubes' pixels)";
     }
     return "?";
 }

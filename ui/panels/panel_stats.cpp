@@ -1,6 +1,7 @@
 // Stats window: frame and pass times (ImPlot history and a table), lights, memory, editor cost.
 #include "panels/panel_stats.h"
 
+#include "core/frame_memory.h"
 #include "core/gbuffer_layout.h"
 #include "core/timing_source.h"
 #include "panels/gui_util.h"
@@ -50,7 +51,8 @@ void drawTimingPlots(StatsState const& stats, bool timed) {
 }  // namespace
 
 void drawStatsPanel(StatsState const& stats, std::string const& noFragmentCounts, int lightCount,
-                    RenderOnChange* render, std::string const& renderReason, FramePanelState* frame) {
+                    long long maxStorageBlockBytes, RenderOnChange* render, std::string const& renderReason,
+                    FramePanelState* frame) {
     if (ImGui::Begin(windowName(EditorWindow::Stats), nullptr)) {
         FrameStats const& f = stats.last;
         double const frameMs = stats.costAverage.frameCpuMs;
@@ -139,19 +141,30 @@ void drawStatsPanel(StatsState const& stats, std::string const& noFragmentCounts
         }
         ImGui::Text("GL errors this frame: %llu", (unsigned long long)f.glErrors);
 
-        // The G-buffer's cost from its description (core/gbuffer_layout.h): what packing saves.
+        // The G-buffer's cost from its description (core/gbuffer_layout.h): what packing saves; the
+        // forward modes write none (core/frame_memory.h), and their own targets are counted instead.
         GBufferLayoutDesc const& layout = layoutDesc(f.layout);
-        separatorText("G-buffer memory");
-        ImGui::Text("Layout %s: %d bytes a pixel", layout.name.data(), layoutBytesPerPixel(layout));
-        for (GBufferAttachmentDesc const& a : layout.attachments())
-            ImGui::TextDisabled("  %s %s: %d B", a.name.data(), texelFormatName(a.format).data(), texelBytes(a.format));
-        if (std::string const note = layoutOmissionNote(layout); !note.empty()) {
-            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
-            wrappedText("%s", note.c_str());
-            ImGui::PopStyleColor();
+        FrameMemory const memory = frameMemory(f.modeUsed, layout, f.width, f.height, maxStorageBlockBytes);
+        separatorText(memory.gbuffer ? "G-buffer memory" : "Frame memory");
+        if (memory.gbuffer) {
+            ImGui::Text("Layout %s: %d bytes a pixel", layout.name.data(), layoutBytesPerPixel(layout));
+            for (GBufferAttachmentDesc const& a : layout.attachments())
+                ImGui::TextDisabled("  %s %s: %d B", a.name.data(), texelFormatName(a.format).data(),
+                                    texelBytes(a.format));
+            if (std::string const note = layoutOmissionNote(layout); !note.empty()) {
+                ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
+                wrappedText("%s", note.c_str());
+                ImGui::PopStyleColor();
+            }
+            wrappedText("%.1f MB at %dx%d, %.1f MB at 1080p, %.1f MB at 4K", layoutMegabytes(layout, f.width, f.height),
+                        f.width, f.height, layoutMegabytes(layout, 1920, 1080), layoutMegabytes(layout, 3840, 2160));
+        } else {
+            wrappedText("No G-buffer in %s mode", std::string(enumName(kLightingModeNames, f.modeUsed)).c_str());
         }
-        wrappedText("%.1f MB at %dx%d, %.1f MB at 1080p, %.1f MB at 4K", layoutMegabytes(layout, f.width, f.height),
-                    f.width, f.height, layoutMegabytes(layout, 1920, 1080), layoutMegabytes(layout, 3840, 2160));
+        wrappedText("Frame: %.1f bytes a pixel (%.1f MB at %dx%d)", memory.bytesPerPixel(),
+                    memory.bytesPerPixel() * f.width * f.height / 1.0e6, f.width, f.height);
+        for (MemoryPart const& part : memory.parts)
+            ImGui::TextDisabled("  %s: %.1f B", part.name.c_str(), part.bytesPerPixel);
         if (f.msaaUsed != Msaa::Off) {  // docs/msaa.md: every attachment holds that many samples
             int const n = msaaSamples(f.msaaUsed);
             wrappedText("MSAA %dx: %.1f MB at %dx%d; complex pixels %.1f%%", n,
