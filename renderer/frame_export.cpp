@@ -212,6 +212,10 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
         statsJson["msaa_lighting"] = enumName(kMsaaLightingNames, s.msaaLighting);
         statsJson["complex_pixel_share"] = frame.stats.complexPixelShare.value_or(renderer.complexPixelShare());
     }
+    if (frame.stats.modeUsed == LightingMode::Prepass) {  // its own thin G-buffer and light targets
+        statsJson["gbuffer_bytes_per_pixel"] = prepassThinBytesPerPixel(layout);
+        statsJson["light_buffer_bytes_per_pixel"] = kPrepassLightBytesPerPixel;
+    }
     if (!frame.stats.fallbackReason.empty()) statsJson["fallback_reason"] = frame.stats.fallbackReason;
     if (frame.stats.fragmentInvocations) statsJson["fragment_invocations"] = *frame.stats.fragmentInvocations;
     // A layout that does not store emission and occlusion says so (emissive.exr is then 0 rgb, 1 a).

@@ -152,6 +152,15 @@ void drawStatsPanel(StatsState const& stats, std::string const& noFragmentCounts
         }
         wrappedText("%.1f MB at %dx%d, %.1f MB at 1080p, %.1f MB at 4K", layoutMegabytes(layout, f.width, f.height),
                     f.width, f.height, layoutMegabytes(layout, 1920, 1080), layoutMegabytes(layout, 3840, 2160));
+        if (f.modeUsed == LightingMode::Prepass) {  // docs/deferred_lighting.md: it draws none of the above
+            int const thin = prepassThinBytesPerPixel(layout);
+            wrappedText(
+                "prepass draws none of these: thin G-buffer %d B a pixel (RGBA16F normal and exponent, "
+                "depth) + light targets %d B = %d B; classic %d B, packed %d B",
+                thin, kPrepassLightBytesPerPixel, thin + kPrepassLightBytesPerPixel,
+                layoutBytesPerPixel(layoutDesc(GBufferLayout::Classic)),
+                layoutBytesPerPixel(layoutDesc(GBufferLayout::Packed)));
+        }
         if (f.msaaUsed != Msaa::Off) {  // docs/msaa.md: every attachment holds that many samples
             int const n = msaaSamples(f.msaaUsed);
             wrappedText("MSAA %dx: %.1f MB at %dx%d; complex pixels %.1f%%", n,
