@@ -56,6 +56,14 @@ void fillPairCosts(std::vector<Result>& results) {
                 r.lightPixelPairs = d.lightPixelPairs;
                 break;
             }
+        // prepass's light pass evaluates every light at every covered pixel, as quad's does: quad's count.
+        if (r.combo.mode == LightingMode::Prepass)
+            for (auto const& q : results)
+                if (q.combo.mode == LightingMode::Quad && q.combo.lights == r.combo.lights &&
+                    q.combo.radiusScale == r.combo.radiusScale && q.evaluatedPairs && q.framesMeasured > 0) {
+                    r.evaluatedPairs = q.evaluatedPairs;
+                    break;
+                }
     }
     for (auto& r : results) {
         if (r.framesMeasured == 0 || !r.evaluatedPairs || !r.lightPixelPairs) continue;
