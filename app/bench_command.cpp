@@ -80,7 +80,9 @@ Result runCombination(Renderer& renderer, Camera const& camera, std::span<PointL
         r.note = *why;
         return r;
     }
-    if ((c.mode == LightingMode::Quad || c.mode == LightingMode::Forward) && c.lights > kEveryLightModesMaxLights) {
+    bool const everyLight =
+        c.mode == LightingMode::Quad || c.mode == LightingMode::Forward || c.mode == LightingMode::Prepass;
+    if (everyLight && c.lights > kEveryLightModesMaxLights) {
         r.status = "unavailable";
         r.note = std::string(enumName(kLightingModeNames, c.mode)) +
                  " shades every light at every pixel; bench runs it up to " +

@@ -22,7 +22,7 @@ inline int benchBadArgument(std::string const& message) {
 struct BenchOptions {
     std::string size = "1280x720";
     std::vector<int> lights{32, 256, 1024, 4096};
-    std::vector<std::string> modes{"quad", "volumes", "tiled", "clustered", "forward", "forward+"};
+    std::vector<std::string> modes{"quad", "volumes", "tiled", "clustered", "forward", "forward+", "prepass"};
     // Cull modes measured for `volumes` (each one is its own combination); other modes ignore it.
     // addBenchOptions starts it at PipelineSettings{}'s cull.
     std::vector<std::string> culls;
@@ -54,7 +54,7 @@ void addBenchOptions(CLI::App& sub, BenchOptions& options);
 // an unwritable JSON file, 1 when no GL context can be had.
 int runBench(BenchOptions const& options);
 
-// quad and forward shade every light at every pixel, so their frame grows with lights x pixels:
+// quad, forward and prepass shade every light at every pixel, so their frame grows with lights x pixels:
 // above this many lights (the old light limit) bench refuses them rather than spend minutes on
 // one frame. volumes, tiled and clustered cull, and run up to kMaxLights.
 inline constexpr int kEveryLightModesMaxLights = 16384;

@@ -43,17 +43,27 @@ double lightingMs(Result const& r) {
 // measured there (it refuses or runs over budget at large counts), the nearest count that has
 // one: quad's cost per pair hardly depends on the count.
 void fillPairCosts(std::vector<Result>& results) {
-    // forward+ keeps no G-buffer for its heat map to find the lit surfaces in: its lit pixels and
-    // pairs are the scene's at that light count, taken from a mode that measured them.
+    // forward+ keeps no G-buffer for its heat map to find the lit surfaces in, and prepass's thin one
+    // is not counted over: their lit pixels and pairs are the scene's at that light count, taken
+    // from a mode that measured them.
+    auto const borrows = [](LightingMode m) { return m == LightingMode::ForwardPlus || m == LightingMode::Prepass; };
     for (auto& r : results) {
-        if (r.combo.mode != LightingMode::ForwardPlus || r.framesMeasured == 0) continue;
+        if (!borrows(r.combo.mode) || r.framesMeasured == 0) continue;
         for (auto const& d : results)
-            if (!shadesForward(d.combo.mode) && d.combo.lights == r.combo.lights &&
+            if (!shadesForward(d.combo.mode) && !borrows(d.combo.mode) && d.combo.lights == r.combo.lights &&
                 d.combo.radiusScale == r.combo.radiusScale && d.lightPixelPairs && d.framesMeasured > 0) {
                 r.litPixels = d.litPixels;
                 r.lightPixelPairs = d.lightPixelPairs;
                 break;
             }
+        // prepass's light pass evaluates every light at every covered pixel, as quad's does: quad's count.
+        if (r.combo.mode == LightingMode::Prepass)
+            for (auto const& q : results)
+                if (q.combo.mode == LightingMode::Quad && q.combo.lights == r.combo.lights &&
+                    q.combo.radiusScale == r.combo.radiusScale && q.evaluatedPairs && q.framesMeasured > 0) {
+                    r.evaluatedPairs = q.evaluatedPairs;
+                    break;
+                }
     }
     for (auto& r : results) {
         if (r.framesMeasured == 0 || !r.evaluatedPairs || !r.lightPixelPairs) continue;

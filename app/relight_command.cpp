@@ -33,9 +33,9 @@ int runRenderImported(RenderOptions const& o) {
     auto const parsed = renderSettings(o, &error);
     if (!parsed) return refuse(error);
     PipelineSettings settings = *parsed;
-    if (shadesForward(settings.mode))
+    if (lightsByDrawingMeshes(settings.mode))
         return refuse("--mode " + std::string(enumName(kLightingModeNames, settings.mode)) +
-                      " draws the scene's meshes, and a G-buffer has none: use a deferred mode");
+                      " draws the scene's meshes, and a G-buffer has none: use quad, volumes, tiled or clustered");
     std::vector<DebugView> views;
     for (auto const& name : o.views) {
         auto v = enumFromName<DebugView>(kDebugViewNames, name);

@@ -200,7 +200,7 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
                       {"cull", enumName(kCullModeNames, s.cull)},
                       {"depth_copy", enumName(kDepthCopyNames, s.depthCopy)},
                       {"layout", layout.name},
-                      // forward and forward+ write no G-buffer: 0 (bytes_per_pixel counts what they do write)
+                      // forward and forward+ write no G-buffer: 0 (bytes_per_pixel counts what they do write); prepass its thin one (below)
                       {"gbuffer_bytes_per_pixel", memory.gbuffer ? layoutBytesPerPixel(layout) : 0},
                       {"bytes_per_pixel", memory.bytesPerPixel()},
                       {"memory", memoryParts},
@@ -219,6 +219,10 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
     if (frame.stats.msaaUsed != Msaa::Off) {
         statsJson["msaa_lighting"] = enumName(kMsaaLightingNames, s.msaaLighting);
         statsJson["complex_pixel_share"] = frame.stats.complexPixelShare.value_or(renderer.complexPixelShare());
+    }
+    if (frame.stats.modeUsed == LightingMode::Prepass) {  // its own thin G-buffer and light targets
+        statsJson["gbuffer_bytes_per_pixel"] = prepassThinBytesPerPixel(layout);
+        statsJson["light_buffer_bytes_per_pixel"] = kPrepassLightBytesPerPixel;
     }
     if (!frame.stats.fallbackReason.empty()) statsJson["fallback_reason"] = frame.stats.fallbackReason;
     if (frame.stats.fragmentInvocations) statsJson["fragment_invocations"] = *frame.stats.fragmentInvocations;

@@ -163,7 +163,8 @@ ShadingUniforms shadingUniforms(FrameContext const& f) {
 }
 
 bool RendererImpl::splitAccumulation(FrameContext const& f) const {
-    return f.settings.accumulation == LightAccumulation::Split && !shadesForward(f.settings.mode);
+    return f.settings.accumulation == LightAccumulation::Split && !shadesForward(f.settings.mode) &&
+           f.settings.mode != LightingMode::Prepass;
 }
 
 DeferredInputs RendererImpl::deferredInputs(FrameContext const& f, FrameResources const& io) const {
@@ -219,7 +220,8 @@ FrameRecord RendererImpl::beginFrame(FrameInput const& input, FrameStats& stats)
     stats.msaaUsed = f.settings.msaa;
     stats.modeUsed = f.settings.mode;
     stats.accumulationUsed = splitAccumulation(f) ? LightAccumulation::Split : LightAccumulation::Single;
-    if (f.settings.accumulation != stats.accumulationUsed) because(kForwardRefusesSplit);
+    if (f.settings.accumulation != stats.accumulationUsed)
+        because(f.settings.mode == LightingMode::Prepass ? kPrepassRefusesSplit : kForwardRefusesSplit);
     frame.shading = shadingUniforms(f);
     frameInverseViewProj = frame.shading.inverseViewProj;
     if (auto why = lights.upload(f.lights, caps)) because(*why);

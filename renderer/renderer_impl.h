@@ -43,6 +43,10 @@ struct FrameContext {
 inline constexpr char const* kForwardRefusesSplit =
     "accumulation split needs the G-buffer's albedo and emission for its combine pass, and forward shading "
     "keeps none, so the forward frame wrote its one lit target";
+// Why a prepass frame ignores `accumulation: split` (FrameStats::fallbackReason).
+inline constexpr char const* kPrepassRefusesSplit =
+    "accumulation split combines from the G-buffer's albedo, which prepass's thin G-buffer lacks, and prepass "
+    "always sums its lights into the diffuse and specular targets, so the setting changed nothing";
 
 // The uniforms of shaders/lighting.glsl and surface_terms.glsl for frame `f`.
 ShadingUniforms shadingUniforms(FrameContext const& f);
@@ -154,6 +158,7 @@ private:
     OptionalFeature tiledFeature;
     OptionalFeature clusteredFeature;
     OptionalFeature forwardPlusFeature;
+    OptionalFeature prepassFeature;
     ClusterLists clusters;
     TileBins tileBins;                    // the tiled and clustered list passes' candidates, rebuilt by each
     std::function<void()> frameTestHook;  // renderer_test_access.h
@@ -196,6 +201,10 @@ private:
     void runLightCubes(FrameRecord& frame, PassRun const& r);
     void runWireframes(FrameRecord& frame, PassRun const& r);
     void runDepthPrepass(FrameRecord& frame, PassRun const& r);
+    // prepass (renderer_prepass.cpp, docs/deferred_lighting.md); its light pass is runLighting's
+    void runThinGBuffer(FrameRecord& frame, PassRun const& r);
+    void runPrepassShading(FrameRecord& frame, PassRun const& r);
+    void runPrepassLight(FrameRecord& frame, PassRun const& r);
     // msaa (renderer_msaa.cpp, docs/msaa.md)
     void runMsaaEdges(FrameRecord& frame, PassRun const& r);
     void runLightingComplex(FrameRecord& frame, PassRun const& r);
@@ -217,6 +226,7 @@ private:
     bool tiledReady();                              // builds the tiled program on first use
     bool clusteredReady();                          // builds the two clustered programs on first use
     bool forwardPlusReady();                        // builds the binning and forward+ programs on first use
+    bool prepassReady();                            // builds prepass's three programs on first use
     // The clustered passes' input: `image` the lit image or diffuse light target they write.
     LightingClusteredInput clusteredInput(FrameContext const& f, FrameResources const& io, gl::Texture const& image);
     LightingClusteredConfig clusteredConfig(FrameContext const& f, bool shade) const;

@@ -77,6 +77,9 @@ void RendererImpl::runLighting(FrameRecord& frame, PassRun const& r) {
         case LightingMode::Clustered:  // the lists were built in the frame's light_lists pass
             clusterShadePass(clusteredInput(f, r.io, image), clusteredConfig(f, true));
             break;
+        case LightingMode::Prepass:  // the thin G-buffer into the diffuse and specular light targets
+            runPrepassLight(frame, r);
+            break;
         default:
             if (std::find(r.decl.samples.begin(), r.decl.samples.end(), Resource::MsaaPosition) !=
                 r.decl.samples.end()) {  // msaa: every sample, or sample 0 of the simple pixels (edges)

@@ -98,6 +98,18 @@ bool RendererImpl::forwardPlusReady() {
     return true;
 }
 
+bool RendererImpl::prepassReady() {
+    OptionalFeature& f = prepassFeature;
+    if (f.tried) return !f.unavailable;
+    f.tried = true;
+    for (ProgramInfo const& p : programTable()) {
+        if (p.group != ProgramGroup::Prepass || shaders.add(p.id, nullptr)) continue;
+        f.unavailable = programFailure("prepass", shaders, p.id);
+        return false;
+    }
+    return true;
+}
+
 std::optional<std::string> RendererImpl::modeUnavailable(LightingMode mode) {
     switch (mode) {
         case LightingMode::Volumes:
@@ -108,6 +120,8 @@ std::optional<std::string> RendererImpl::modeUnavailable(LightingMode mode) {
             return clusteredReady() ? std::nullopt : clusteredFeature.unavailable;
         case LightingMode::ForwardPlus:
             return forwardPlusReady() ? std::nullopt : forwardPlusFeature.unavailable;
+        case LightingMode::Prepass:
+            return prepassReady() ? std::nullopt : prepassFeature.unavailable;
         case LightingMode::Quad:
         case LightingMode::Forward:
             break;  // core programs only

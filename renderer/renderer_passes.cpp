@@ -28,7 +28,8 @@ RendererImpl::RunFunction RendererImpl::runFunction(PassId id) {
         &RendererImpl::runDepthCopy,      &RendererImpl::runForward,         &RendererImpl::runLightCubes,
         &RendererImpl::runWireframes,     &RendererImpl::runCoverage,        &RendererImpl::runDisplay,
         &RendererImpl::runImport,         &RendererImpl::runGlassOutline,    &RendererImpl::runDepthPrepass,
-        &RendererImpl::runMsaaEdges,      &RendererImpl::runLightingComplex, &RendererImpl::runMsaaResolve};
+        &RendererImpl::runMsaaEdges,      &RendererImpl::runLightingComplex, &RendererImpl::runMsaaResolve,
+        &RendererImpl::runThinGBuffer,    &RendererImpl::runPrepassShading};
     return kRun[std::size_t(id)];
 }
 

@@ -21,6 +21,7 @@
 #define BIND_DIFFUSE_LIGHT 11       // sampler uDiffuseLight
 #define BIND_SPECULAR_LIGHT 12      // sampler uSpecularLight
 #define BIND_CLUSTER_LIST 13        // sampler uClusterList
+#define BIND_PREPASS_NORMAL 14      // sampler uPrepassNormal
 #define BIND_READBACK_SOURCE 0      // sampler uReadbackSource
 #define BIND_IMPORT_POSITION_DEPTH 0  // sampler uImportPositionDepth
 #define BIND_IMPORT_NORMAL 1          // sampler uImportNormal

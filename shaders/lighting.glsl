@@ -12,6 +12,14 @@ struct Light {
 
 uniform vec3 uViewPos;
 uniform float uShininess;
+// The specular exponent: the setting, or (GBL_SHININESS_PER_PIXEL: prepass's light pass) the one its
+// thin G-buffer stored at the pixel, which that shader reads into gShininess before its lights.
+#ifdef GBL_SHININESS_PER_PIXEL
+float gShininess = 32.0;
+#define GBL_SHININESS gShininess
+#else
+#define GBL_SHININESS uShininess
+#endif
 // gbl::ShadingModel (core/pipeline_settings.h): docs/lighting.md's model, or LearnOpenGL's deferred
 // lighting shader (docs/lighting.md, "The learnopengl shading"): attenuation 1/(Kc + Kl d + Kq d^2)
 // with no window, specular not gated by N.L. uCutAtRadius: the mode lights only inside the
@@ -55,7 +63,7 @@ float spotConeFactor(Light l, vec3 L) {
 void blinnPhongSplit(vec3 L, vec3 radiance, SurfacePoint s, out vec3 diffuseLight, out vec3 specularLight) {
     vec3 H = normalize(L + s.V);
     float diff = max(dot(s.n, L), 0.0);
-    float spec = diff > 0.0 || uShadingModel == SHADING_LEARNOPENGL ? pow(max(dot(s.n, H), 0.0), uShininess) : 0.0;
+    float spec = diff > 0.0 || uShadingModel == SHADING_LEARNOPENGL ? pow(max(dot(s.n, H), 0.0), GBL_SHININESS) : 0.0;
     diffuseLight = diff * radiance;
     specularLight = spec * radiance;
 }

@@ -39,7 +39,7 @@ TEST(BenchCommand, AnUnknownNameInAListNamesTheValidOnes) {
     };
     for (Case const& c : std::vector<Case>{
              {{"bench", "--modes", "quad,raytraced"},
-              "--modes: 'raytraced' is not one of quad, volumes, tiled, forward, clustered or forward+"},
+              "--modes: 'raytraced' is not one of quad, volumes, tiled, forward, clustered, forward+ or prepass"},
              {{"bench", "--cull", "front,up"}, "--cull: 'up' is not one of back, front, none, flip or stencil"},
              {{"bench", "--layouts", "classic,zip"},
               "--layouts: 'zip' is not one of classic, packed, naive8 or rgb10a2"},

@@ -52,3 +52,16 @@ TEST(FrameMemory, ASmallStorageBlockShortensTheLists) {
     EXPECT_DOUBLE_EQ(small, (4.0 + 8.0 + 4.0 * 72.0) / 256.0);
     EXPECT_EQ(tileListBytesPerPixel(0, 0, kLargeBlock), 0.0);
 }
+
+TEST(FrameMemory, PrepassCountsItsThinGBufferAndLightTargets) {
+    // docs/deferred_lighting.md: RGBA16F normal and exponent, the lit depth, two RGBA16F light
+    // targets and the lit image; none of the layout's attachments and no depth copy.
+    GBufferLayoutDesc const& classic = layoutDesc(GBufferLayout::Classic);
+    FrameMemory const prepass = frameMemory(LightingMode::Prepass, classic, 1280, 720, kLargeBlock);
+    EXPECT_FALSE(prepass.gbuffer);
+    EXPECT_EQ(prepass.parts, (std::vector<MemoryPart>{{"thin G-buffer RGBA16F (normal, exponent)", 8.0},
+                                                      {"thin depth DEPTH32F_STENCIL8", 8.0},
+                                                      {"light targets 2 x RGBA16F", 16.0},
+                                                      {"lit image RGBA16F", 8.0}}));
+    EXPECT_DOUBLE_EQ(prepass.bytesPerPixel(), double(prepassThinBytesPerPixel(classic) + kPrepassLightBytesPerPixel) + 8.0);
+}

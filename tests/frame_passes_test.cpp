@@ -236,8 +236,9 @@ TEST(FramePasses, OverlaysDrawOnTheDisplayAgainstTheSceneDepthAndLeaveTheLitImag
             EXPECT_EQ(cubes.depthStencil, Resource::LitDepth) << name;
             EXPECT_TRUE(cubes.depthWrite) << name;
             // The wireframes test against the scene's depth with or without the copy step.
-            bool const forward = shadesForward(s.mode);
-            EXPECT_EQ(wires.depthStencil, forward ? Resource::LitDepth : Resource::GBufferDepth) << name;
+            // The forward modes and prepass draw the scene's depth into the lit target themselves.
+            bool const ownDepth = shadesForward(s.mode) || s.mode == LightingMode::Prepass;
+            EXPECT_EQ(wires.depthStencil, ownDepth ? Resource::LitDepth : Resource::GBufferDepth) << name;
             EXPECT_FALSE(wires.depthWrite) << name;
             for (PassDecl const& p : passes) {
                 bool const lit = std::find(p.color.begin(), p.color.end(), Resource::Lighting) != p.color.end();
@@ -303,6 +304,54 @@ TEST(FramePasses, ForwardPlusIsADepthPrepassTheTiledListsAndAForwardPassAtThatDe
     PassDecl const& counts = find(heat, PassId::Coverage);
     EXPECT_EQ(counts.kind, PassKind::Compute);
     EXPECT_EQ(counts.samples.front(), Resource::LitDepth);
+}
+
+TEST(FramePasses, PrepassIsAThinGBufferALightPassAndASecondGeometryPass) {
+    PipelineSettings s;
+    s.mode = LightingMode::Prepass;
+    s.lightCubes = false;
+    s.accumulation = LightAccumulation::Split;  // ignored: prepass always sums into the two light targets
+    std::vector<PassDecl> const passes = framePasses(s, false);
+    EXPECT_EQ(names(passes),
+              (std::vector<std::string>{"prepass_geometry", "lighting", "prepass_shading", "forward", "display"}));
+    // The thin G-buffer: normal and exponent, with the lit target's depth, written and tested.
+    PassDecl const& thin = find(passes, PassId::ThinGBuffer);
+    EXPECT_EQ(thin.color, std::vector<Resource>{Resource::PrepassNormal});
+    EXPECT_EQ(thin.depthStencil, Resource::LitDepth);
+    ASSERT_EQ(thin.states.size(), 2u);  // single-sided, double-sided materials
+    EXPECT_EQ(thin.states[0].cull, FaceCull::Back);
+    EXPECT_EQ(thin.states[1].cull, FaceCull::Off);
+    for (DrawState const& state : thin.states) {
+        EXPECT_TRUE(state.depthWrite);
+        EXPECT_EQ(state.depthTest, DepthTest::Less);
+    }
+    // The layout's G-buffer is not drawn: cleared, so its viewers show it unused.
+    for (Resource r : {Resource::GBufferPosition, Resource::GBufferNormal, Resource::GBufferAlbedoSpec,
+                       Resource::GBufferDepth, Resource::PrepassNormal, Resource::LitDepth, Resource::Lighting})
+        EXPECT_NE(std::find(thin.clears.begin(), thin.clears.end(), r), thin.clears.end()) << resourceName(r);
+    // The light pass reads the thin G-buffer and its depth, and writes the two light targets.
+    PassDecl const& light = find(passes, PassId::Lighting);
+    EXPECT_EQ(light.samples, (std::vector<Resource>{Resource::PrepassNormal, Resource::LitDepth, Resource::Lights}));
+    EXPECT_EQ(light.color, (std::vector<Resource>{Resource::DiffuseLight, Resource::SpecularLight}));
+    EXPECT_EQ(light.clears, light.color);
+    EXPECT_FALSE(light.depthStencil.has_value());  // the depth is sampled, so it cannot be attached
+    // The second geometry pass reads the light at its pixel, tested against the thin depth.
+    PassDecl const& shading = find(passes, PassId::PrepassShading);
+    EXPECT_EQ(shading.color, std::vector<Resource>{Resource::Lighting});
+    EXPECT_EQ(shading.depthStencil, Resource::LitDepth);
+    EXPECT_NE(std::find(shading.samples.begin(), shading.samples.end(), Resource::DiffuseLight), shading.samples.end());
+    ASSERT_EQ(shading.states.size(), thin.states.size());
+    for (std::size_t i = 0; i < shading.states.size(); ++i) {
+        EXPECT_EQ(shading.states[i].cull, thin.states[i].cull);
+        EXPECT_EQ(shading.states[i].depthTest, DepthTest::LessEqual);
+        EXPECT_FALSE(shading.states[i].depthWrite);
+    }
+    EXPECT_TRUE(countsAsLighting(PassId::PrepassShading));
+    EXPECT_TRUE(feedbackLoops(passes).empty());
+    // An imported G-buffer has no meshes to draw twice: the quad pass lights it.
+    std::string why;
+    EXPECT_EQ(importedSettings(s, &why).mode, LightingMode::Quad);
+    EXPECT_EQ(why, "prepass draws the scene's meshes twice and an imported G-buffer has none, so the quad pass ran");
 }
 
 TEST(FramePasses, AStopOutsideTheFrameIsOneSentenceNamingItsPasses) {

@@ -169,7 +169,7 @@ TEST(PipelineFields, TheDepthCopyIsFoundUnderItsOldNameToo) {
 TEST(PipelineFields, ValuesTextListsWhatAFieldTakes) {
     EXPECT_EQ(fieldValuesText(*findPipelineField("depth_copy")), "one of blit, shader or off");
     EXPECT_EQ(fieldValuesText(*findPipelineField("mode")),
-              "one of quad, volumes, tiled, forward, clustered or forward+");
+              "one of quad, volumes, tiled, forward, clustered, forward+ or prepass");
     EXPECT_EQ(fieldValuesText(*findPipelineField("exposure")), "a number from 0.05 to 16");
     EXPECT_EQ(fieldValuesText(*findPipelineField("normal_maps")), "0 or 1 (or off or on)");
 }

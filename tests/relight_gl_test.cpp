@@ -428,6 +428,10 @@ TEST(RelightCommand, BadInputIsRefusedInOneSentence) {
                         "normal.encoding must be one of");
     test::expectRefused({"render", "--gbuffer", dir + "/m.json", "--out", dir + "/o", "--mode", "forward"},
                         "--mode forward draws the scene's meshes");
+    // prepass's second geometry pass draws the meshes too.
+    test::expectRefused({"render", "--gbuffer", dir + "/m.json", "--out", dir + "/o", "--mode", "prepass"},
+                        "--mode prepass draws the scene's meshes, and a G-buffer has none: use quad, volumes, tiled or "
+                        "clustered");
     test::expectRefused({"render", "--gbuffer", dir + "/m.json", "--out", dir + "/o", "--scene", "x.gltf"},
                         "--scene cannot be combined with --gbuffer");
 }

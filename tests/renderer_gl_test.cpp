@@ -381,7 +381,7 @@ TEST_F(RendererGlTest, TheTimedPassesAreTheDeclaredOnes) {
                     EXPECT_EQ(st.glErrors, 0u);
                     ++frames;
                 }
-    EXPECT_EQ(frames, 4 * 6 * 2 * 2);  // layouts, modes (forward+ the sixth), cull modes, extras
+    EXPECT_EQ(frames, 4 * 7 * 2 * 2);  // layouts, modes (forward+ the sixth, prepass the seventh), cull modes, extras
 }
 
 namespace {

@@ -492,7 +492,7 @@ TEST(Session, EveryKindOfBadFieldGetsOneMessageNamingIt) {
          "s.json: scene.default_scene_lights must be a whole number from 0 to 262144 (got 262145)"},
         // enums
         {"unknown mode", [](json& j) { j["pipeline"]["mode"] = "raytraced"; },
-         "s.json: pipeline.mode must be one of quad, volumes, tiled, forward, clustered or forward+ (got "
+         "s.json: pipeline.mode must be one of quad, volumes, tiled, forward, clustered, forward+ or prepass (got "
          "\"raytraced\")"},
         {"unknown depth copy", [](json& j) { j["pipeline"]["depth_copy"] = "copy"; },
          "s.json: pipeline.depth_copy must be one of blit, shader or off (got \"copy\")"},

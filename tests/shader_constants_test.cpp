@@ -169,6 +169,7 @@ TEST(ShaderConstants, GeneratedBindingsHeaderMatchesBindingsGlsl) {
                                          {"BIND_SSBO_TILE_DEPTH", slot::BIND_SSBO_TILE_DEPTH},
                                          {"BIND_SSBO_SHADER_CHECKS", slot::BIND_SSBO_SHADER_CHECKS},
                                          {"BIND_CLUSTER_LIST", slot::BIND_CLUSTER_LIST},
+                                         {"BIND_PREPASS_NORMAL", slot::BIND_PREPASS_NORMAL},
                                          {"BIND_READBACK_SOURCE", slot::BIND_READBACK_SOURCE},
                                          {"BIND_IMPORT_POSITION_DEPTH", slot::BIND_IMPORT_POSITION_DEPTH},
                                          {"BIND_IMPORT_NORMAL", slot::BIND_IMPORT_NORMAL},

@@ -238,6 +238,11 @@ TEST(StoredValueCheck, NamesTooSmallVolumesOverlaysAndForward) {
     std::string const note = noBreakdownNote(none, s);
     EXPECT_NE(note.find("forward mode has no G-buffer"), std::string::npos) << note;
     EXPECT_NE(note.find("0.2500 0.5000 0.1250"), std::string::npos) << note;
+    // prepass: the layout's G-buffer is cleared too (its thin one is its own).
+    s.mode = LightingMode::Prepass;
+    std::string const thin = noBreakdownNote(none, s);
+    EXPECT_NE(thin.find("prepass keeps a thin G-buffer of its own"), std::string::npos) << thin;
+    EXPECT_NE(thin.find("0.2500 0.5000 0.1250"), std::string::npos) << thin;
     s.mode = LightingMode::Quad;
     EXPECT_EQ(noBreakdownNote(none, s), "background: no surface, no lights");
 }

@@ -25,7 +25,8 @@ double evaluatedPairs(LightingMode mode, std::span<PointLight const> lights, Cam
                       int height) {
     if (width <= 0 || height <= 0) return 0.0;
     double const pixels = double(width) * double(height);
-    if (mode == LightingMode::Quad || mode == LightingMode::Forward) return pixels * double(lights.size());
+    if (mode == LightingMode::Quad || mode == LightingMode::Forward || mode == LightingMode::Prepass)
+        return pixels * double(lights.size());
     TileGrid const grid = tileGrid(width, height);
     glm::mat4 const view = camera.view();
     glm::mat4 const projection = camera.projection(float(width) / float(height));

@@ -19,6 +19,15 @@ FrameMemory frameMemory(LightingMode mode, GBufferLayoutDesc const& d, int width
     m.gbuffer = !shadesForward(mode);
     double const depth = texelBytes(d.depthFormat());
     std::string const depthFormat(texelFormatName(d.depthFormat()));
+    // prepass (docs/deferred_lighting.md) writes none of the layout's attachments: a thin G-buffer with
+    // the lit target's depth, which its second geometry pass tests against (no depth copy).
+    bool const prepass = mode == LightingMode::Prepass;
+    if (prepass) {
+        m.gbuffer = false;
+        m.parts.push_back({"thin G-buffer RGBA16F (normal, exponent)", double(texelBytes(TexelFormat::RGBA16F))});
+        m.parts.push_back({"thin depth " + depthFormat, depth});
+        m.parts.push_back({"light targets 2 x RGBA16F", double(kPrepassLightBytesPerPixel)});
+    }
     if (m.gbuffer) m.parts.push_back({"G-buffer (" + std::string(d.name) + ")", double(layoutBytesPerPixel(d))});
     if (mode == LightingMode::ForwardPlus) m.parts.push_back({"depth pre-pass " + depthFormat, depth});
     m.parts.push_back({"lit image RGBA16F", 8.0});

@@ -191,6 +191,7 @@ PassDecl lightingPass(PipelineSettings const& s, bool split) {
         case LightingMode::Quad:
         case LightingMode::Forward:
         case LightingMode::ForwardPlus:
+        case LightingMode::Prepass:  // prepassPasses
             break;
     }
     PassDecl p = declare(PassId::Lighting);  // full screen into litFbo, or splitFbo (no depth-stencil)
@@ -298,6 +299,10 @@ PipelineSettings importedSettings(PipelineSettings s, std::string* why) {
         s.mode = LightingMode::Quad;
         reasons = "forward shading draws the scene's meshes and an imported G-buffer has none, so the quad pass ran";
     }
+    if (s.mode == LightingMode::Prepass) {
+        s.mode = LightingMode::Quad;
+        reasons = "prepass draws the scene's meshes twice and an imported G-buffer has none, so the quad pass ran";
+    }
     if (s.lightCubes) {
         s.lightCubes = false;
         if (!reasons.empty()) reasons += "; ";
@@ -310,7 +315,8 @@ PipelineSettings importedSettings(PipelineSettings s, std::string* why) {
 std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bool imported) {
     GBufferLayoutDesc const& d = layoutDesc(s.layout);
     bool const forward = shadesForward(s.mode);
-    bool const split = s.accumulation == LightAccumulation::Split && !forward;
+    bool const prepass = s.mode == LightingMode::Prepass;
+    bool const split = s.accumulation == LightAccumulation::Split && !forward && !prepass;
     std::vector<DrawState> const opaque =
         sceneStates("opaque surfaces", "double-sided opaque surfaces", true, Blend::Off);
     std::vector<PassDecl> out;
@@ -329,10 +335,13 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
              state("double-sided opaque surfaces, pre-pass depth", lessEqual, false, Blend::Off, FaceCull::Off)}));
     } else if (forward) {
         out.push_back(scenePass(PassId::ForwardShading, {R::Materials, R::Lights}, opaque));
+    } else if (prepass) {
+        out = prepassPasses();
     }
-    if (forward) {
+    if (forward || prepass) {
         out.front().stencilWrite = true;  // cleared with the rest
-        // No G-buffer in the forward modes: cleared, so the viewers show that it is unused.
+        // No G-buffer of the layout in the forward modes and prepass: cleared, so the viewers show
+        // that it is unused.
         for (GBufferAttachmentDesc const& a : d.attachments()) out.front().clears.push_back(slotResource(a.slot));
         out.front().clears = plus(out.front().clears, {R::Lighting, R::LitDepth});
     } else {
@@ -380,7 +389,7 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
                                 sceneStates("blended surfaces", "double-sided blended surfaces", false, Blend::Alpha)));
     }
     // The light targets of an earlier split frame would otherwise show in this one's views.
-    if (!split) out.front().clears = plus(out.front().clears, {R::DiffuseLight, R::SpecularLight});
+    if (!split && !prepass) out.front().clears = plus(out.front().clears, {R::DiffuseLight, R::SpecularLight});
     if (viewNeedsCoverage(s.view)) out.push_back(coveragePass(s));
     out.push_back(displayPass(d, R::Display));
     if (s.glassOutline && !imported) out.push_back(glassOutlinePass(R::Display));
@@ -402,7 +411,7 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
     }
     if (wireframes)  // the scene's depth without the depth-copy step: the G-buffer's (forward: its own)
         out.push_back(overlayPass(PassId::Wireframes, {R::Lights, R::VolumeInstances},
-                                  forward ? R::LitDepth : R::GBufferDepth,
+                                  forward || prepass ? R::LitDepth : R::GBufferDepth,
                                   state("lines", DepthTest::LessEqual, false, Blend::Off, FaceCull::Off)));
     return out;
 }

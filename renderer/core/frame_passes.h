@@ -36,12 +36,16 @@ enum class PassId {
     MsaaEdges,       // msaa: complex pixels (samples that differ) marked in the stencil and the complex mask
     MsaaComplex,     // msaa edges: the complex pixels lit per sample (the lighting pass lit the others once)
     MsaaResolve,     // msaa: the multisampled G-buffer resolved into the layout's targets, for what follows
+    ThinGBuffer,     // prepass: the thin G-buffer (normal and specular exponent, depth), "prepass_geometry"
+    PrepassShading,  // prepass: the scene drawn again, its materials applied to the summed light
 };
-inline constexpr std::array<std::string_view, 18> kPassNames{
+inline constexpr std::array<std::string_view, 20> kPassNames{
     "forward_shading", "geometry", "light_lists", "volume_depth", "lighting", "light_combine", "depth_copy", "forward",
     "light_cubes", "wireframes", "coverage", "display", "import", "glass_outline", "depth_prepass",
     // msaa (docs/msaa.md)
-    "msaa_edges", "lighting_complex", "msaa_resolve"};
+    "msaa_edges", "lighting_complex", "msaa_resolve",
+    // prepass (docs/deferred_lighting.md)
+    "prepass_geometry", "prepass_shading"};
 
 inline std::string_view passName(PassId id) {
     return enumName(kPassNames, id);
@@ -52,11 +56,12 @@ inline std::optional<PassId> passFromName(std::string_view name) {
 
 // The lighting work of a frame (bench's lighting figure): shading the lights, and the passes that
 // exist only to shade them (light lists, the volumes' depth copy, the split combine, forward+'s
-// depth pre-pass: forward's figure includes its rasterising too).
+// depth pre-pass: forward's figure includes its rasterising too; prepass's second geometry pass,
+// which finishes the shading as the split combine does).
 constexpr bool countsAsLighting(PassId id) {
     return id == PassId::ForwardShading || id == PassId::LightLists || id == PassId::VolumeDepth ||
            id == PassId::Lighting || id == PassId::LightCombine || id == PassId::DepthPrepass ||
-           id == PassId::MsaaEdges || id == PassId::MsaaComplex;
+           id == PassId::MsaaEdges || id == PassId::MsaaComplex || id == PassId::PrepassShading;
 }
 
 // The passes whose fragments FrameStats::fragmentInvocations counts: the shading of the lights.
@@ -93,8 +98,9 @@ enum class Resource {
     MsaaEmissive,
     MsaaDepth,
     ComplexMask,
+    PrepassNormal,  // prepass's thin G-buffer: world normal xyz, specular exponent w (RGBA16F)
 };
-inline constexpr std::array<std::string_view, 26> kResourceNames{"gbuffer.position",
+inline constexpr std::array<std::string_view, 27> kResourceNames{"gbuffer.position",
                                                                  "gbuffer.normal",
                                                                  "gbuffer.albedo_spec",
                                                                  "gbuffer.emissive",
@@ -119,7 +125,8 @@ inline constexpr std::array<std::string_view, 26> kResourceNames{"gbuffer.positi
                                                                  "msaa.albedo_spec",
                                                                  "msaa.emissive",
                                                                  "msaa.depth",
-                                                                 "complex_mask"};
+                                                                 "complex_mask",
+                                                                 "prepass.normal_exp"};
 
 inline std::string_view resourceName(Resource r) {
     return enumName(kResourceNames, r);
@@ -223,6 +230,12 @@ std::vector<PassDecl> framePasses(PipelineSettings const& settings, bool wirefra
 inline std::vector<PassDecl> framePasses(PipelineSettings const& settings) {
     return framePasses(settings, settings.volumeWireframes);
 }
+
+// Deferred lighting (prepass mode, docs/deferred_lighting.md), the passes framePasses puts first: the
+// thin G-buffer (normal and specular exponent, the lit target's depth), every light summed into the
+// diffuse and specular light targets, then the scene drawn again where it equals that depth, its
+// materials applied to the light at its pixel (core/frame_passes_prepass.cpp).
+std::vector<PassDecl> prepassPasses();
 
 // What Renderer::drawView runs for a view of the frame `settings` ran (settings.view the view shown):
 // the coverage counts again for a count view (after the volumes' depth copy, which only a volumes

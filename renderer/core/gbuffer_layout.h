@@ -167,6 +167,14 @@ constexpr double layoutMegabytes(GBufferLayoutDesc const& d, int width, int heig
     return double(layoutBytesPerPixel(d)) * double(width) * double(height) / 1.0e6;
 }
 
+// prepass mode (docs/deferred_lighting.md) draws none of the layout's attachments: its thin G-buffer
+// is an RGBA16F normal and specular exponent with the lit target's depth (the layout's depth format),
+// and its light pass adds two RGBA16F targets, diffuse and specular light.
+inline int prepassThinBytesPerPixel(GBufferLayoutDesc const& d) {
+    return texelBytes(TexelFormat::RGBA16F) + texelBytes(d.depthFormat());
+}
+inline constexpr int kPrepassLightBytesPerPixel = 2 * texelBytes(TexelFormat::RGBA16F);
+
 // What the user is told when the layout does not store emission and occlusion (stats panel, pixel
 // inspector, export's stats.json); empty when it does.
 inline std::string layoutOmissionNote(GBufferLayoutDesc const& d) {

@@ -86,6 +86,8 @@ inline std::string_view heatQuantity(DebugView view, LightingMode mode) {
             return "lights per cluster";
         case LightingMode::Forward:
             return "nothing counted (forward has no G-buffer)";
+        case LightingMode::Prepass:
+            return "nothing counted (prepass's thin G-buffer is not counted over)";
         default:
             return "lights per pixel (every light)";
     }

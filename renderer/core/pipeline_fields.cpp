@@ -55,7 +55,7 @@ bool withMsaa(PipelineSettings const& s) {
 }
 
 // One line per choice, shown on hover over its radio button: the editor is a teaching tool.
-constexpr std::array<std::string_view, 6> kModeHelp{
+constexpr std::array<std::string_view, 7> kModeHelp{
     "quad: one full-screen pass evaluates every light at every pixel (cost = pixels x lights)",
     "volumes: one sphere per light, scaled to its radius; only covered pixels are shaded",
     "tiled: a compute pass builds a light list per 16x16 tile, then shades each pixel with its tile's lights",
@@ -64,6 +64,8 @@ constexpr std::array<std::string_view, 6> kModeHelp{
     "slice's list",
     "forward+: a depth pre-pass, tiled's light list per 16x16 tile, then a forward pass whose fragments shade with "
     "their tile's lights only (no G-buffer)",
+    "prepass: deferred lighting; a thin G-buffer (normal, exponent, depth), every light summed into diffuse and "
+    "specular light, then the scene drawn again applying its materials",
 };
 constexpr std::array<std::string_view, 5> kCullHelp{
     "back: cull back faces; the volume vanishes when the camera is inside it",

@@ -10,7 +10,10 @@
 namespace gbl {
 
 // ForwardPlus: a depth pre-pass, tiled's light lists, then forward shading reading its tile's list.
-enum class LightingMode { Quad, Volumes, Tiled, Forward, Clustered, ForwardPlus };
+// Prepass (deferred lighting, docs/deferred_lighting.md): a thin G-buffer (normal and specular
+// exponent, depth), the lights summed into diffuse and specular light, then the scene drawn again
+// applying its materials to them.
+enum class LightingMode { Quad, Volumes, Tiled, Forward, Clustered, ForwardPlus, Prepass };
 enum class CullMode { Back, Front, None, Flip, Stencil };
 // How the G-buffer depth reaches the lit target before the forward pass: the depth copy
 // (setting `depth_copy`, pass `depth_copy`, option --depth-copy).
@@ -99,8 +102,8 @@ struct PipelineSettings {
 };
 
 // Names used on the command line and in session files, in enum order.
-inline constexpr std::array<std::string_view, 6> kLightingModeNames{"quad",    "volumes",   "tiled",
-                                                                    "forward", "clustered", "forward+"};
+inline constexpr std::array<std::string_view, 7> kLightingModeNames{"quad",      "volumes",  "tiled",  "forward",
+                                                                    "clustered", "forward+", "prepass"};
 inline constexpr std::array<std::string_view, 5> kCullModeNames{"back", "front", "none", "flip", "stencil"};
 inline constexpr std::array<std::string_view, 3> kDepthCopyNames{"blit", "shader", "off"};
 inline constexpr std::array<std::string_view, 3> kTonemapNames{"exposure", "reinhard", "clamp"};
@@ -130,6 +133,12 @@ constexpr bool cutsAtRadius(LightingMode m) {
 // Whether a mode shades while drawing the meshes, keeping no G-buffer (forward and forward+).
 constexpr bool shadesForward(LightingMode m) {
     return m == LightingMode::Forward || m == LightingMode::ForwardPlus;
+}
+
+// Whether a mode's lighting draws the scene's meshes, which an imported G-buffer lacks (the forward
+// modes, and prepass's second geometry pass).
+constexpr bool lightsByDrawingMeshes(LightingMode m) {
+    return shadesForward(m) || m == LightingMode::Prepass;
 }
 
 template <class Enum, std::size_t N>

@@ -78,6 +78,17 @@ std::span<ProgramInfo const> programTable() {
          {"forward_plus",
           {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "forward.frag"}},
           {"FORWARD_TILE_LISTS"}}},
+        {ProgramId::PrepassGeometry,
+         G::Prepass,
+         {"prepass_geometry", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "prepass_geometry.frag"}}, {}}},
+        {ProgramId::PrepassLight,
+         G::Prepass,
+         {"prepass_light",
+          {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "prepass_light.frag"}},
+          {"GBL_SHININESS_PER_PIXEL"}}},
+        {ProgramId::PrepassShade,
+         G::Prepass,
+         {"prepass_shade", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "prepass_shade.frag"}}, {}}},
     };
     static_assert(std::size(table) == kProgramCount, "programTable(): one row per ProgramId, in enum order");
     return table;

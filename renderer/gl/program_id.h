@@ -42,11 +42,15 @@ enum class ProgramId {
     ClusterShade,
     // forward+ mode (with the tiled group's TileDepth and TileBin)
     ForwardPlus,  // forward.frag reading its tile's list (FORWARD_TILE_LISTS)
+    // prepass mode (deferred lighting)
+    PrepassGeometry,  // the thin G-buffer: normal and specular exponent
+    PrepassLight,     // every light into the diffuse and specular light targets
+    PrepassShade,     // the second geometry pass: materials applied to the light
 };
-inline constexpr std::size_t kProgramCount = std::size_t(ProgramId::ForwardPlus) + 1;
+inline constexpr std::size_t kProgramCount = std::size_t(ProgramId::PrepassShade) + 1;
 
 // What needs the program: every frame (core), or one optional group that is built on first use.
-enum class ProgramGroup { Core, Volumes, Tiled, Clustered, ForwardPlus };
+enum class ProgramGroup { Core, Volumes, Tiled, Clustered, ForwardPlus, Prepass };
 
 struct ProgramDesc {
     std::string name;                                    // e.g. "geometry", for logs and labels

@@ -83,6 +83,8 @@ gl::Texture const& FrameResources::texture(Resource r) const {
             return t.msaa.gbuffer.depth;
         case Resource::ComplexMask:
             return t.msaa.complexMask;
+        case Resource::PrepassNormal:
+            return t.prepassNormal;
         default:
             break;
     }
@@ -101,6 +103,7 @@ gl::Framebuffer const& FrameResources::framebuffer(std::span<Resource const> col
         if (first == Resource::Lighting) return volumeDepth ? t.volumeFbo : t.litFbo;
         if (first == Resource::DiffuseLight) return volumeDepth ? t.splitVolumeFbo : t.splitFbo;
         if (first == Resource::Coverage) return t.coverageFbo;
+        if (first == Resource::PrepassNormal) return t.prepassFbo;
         if (first == Resource::Display) {
             if (!depth) return t.displayFbo;
             return depth == Resource::LitDepth ? t.overlayFbo : t.overlayGBufferDepthFbo;
@@ -141,6 +144,8 @@ void FrameResources::clear(std::span<Resource const> resources) const {
             add(targets.splitFbo, GL_COLOR_BUFFER_BIT);
         else if (r == Resource::Coverage)
             add(targets.coverageFbo, GL_COLOR_BUFFER_BIT);
+        else if (r == Resource::PrepassNormal)
+            add(targets.prepassFbo, GL_COLOR_BUFFER_BIT);
         else if (r == Resource::Display)
             add(targets.displayFbo, GL_COLOR_BUFFER_BIT);
         else

@@ -55,6 +55,8 @@ std::optional<std::string> createRenderTargets(int width, int height, GBufferLay
     out.splitFbo = Framebuffer::create({&out.diffuseLight, &out.specularLight}, nullptr, "lighting.split");
     out.splitVolumeFbo =
         Framebuffer::create({&out.diffuseLight, &out.specularLight}, volumeDepth, "lighting.split.volumes");
+    out.prepassNormal = Texture::create2D(GL_RGBA16F, width, height, "prepass.normal_exp");
+    out.prepassFbo = Framebuffer::create({&out.prepassNormal}, &out.litDepth, "prepass.thin_gbuffer");
     out.coverage = Texture::create2D(GL_RG32F, width, height, "coverage");
     out.coverageFbo = Framebuffer::create({&out.coverage}, volumeDepth, "coverage");
     out.display = Texture::create2D(GL_RGBA8, width, height, "display");
@@ -62,8 +64,9 @@ std::optional<std::string> createRenderTargets(int width, int height, GBufferLay
     out.overlayFbo = Framebuffer::create({&out.display}, &out.litDepth, "display.overlays");
     out.overlayGBufferDepthFbo = Framebuffer::create({&out.display}, &g.depth, "display.overlays.gbuffer_depth");
 
-    for (Framebuffer const* fb : {&g.fbo, &out.litFbo, &out.volumeFbo, &out.splitFbo, &out.splitVolumeFbo,
-                                  &out.coverageFbo, &out.displayFbo, &out.overlayFbo, &out.overlayGBufferDepthFbo})
+    for (Framebuffer const* fb :
+         {&g.fbo, &out.litFbo, &out.volumeFbo, &out.splitFbo, &out.splitVolumeFbo, &out.prepassFbo, &out.coverageFbo,
+          &out.displayFbo, &out.overlayFbo, &out.overlayGBufferDepthFbo})
         if (fb->error()) return fb->error();
     return std::nullopt;
 }

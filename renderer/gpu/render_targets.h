@@ -75,6 +75,11 @@ struct RenderTargets {
     gl::Framebuffer coverageFbo;     // coverage + volumeDepthStencil(): the volume counts
     gl::Texture display;             // RGBA8 final image
     gl::Framebuffer displayFbo;      // display alone: the view pass
+    // prepass (deferred lighting): the thin G-buffer's normal target (RGBA16F: world normal xyz,
+    // specular exponent w), drawn with litDepth as its depth; the light pass sums into
+    // diffuseLight and specularLight (splitFbo), the second geometry pass into litFbo.
+    gl::Texture prepassNormal;
+    gl::Framebuffer prepassFbo;  // prepassNormal + litDepth
     // The overlays (light cubes, volume wireframes) are drawn onto the display image after the view
     // pass, so the lit image stays the light sum. Each framebuffer pairs the display with a scene
     // depth to test against; neither depth is sampled by the overlays, and the display image is

@@ -184,7 +184,7 @@ void drawDockedPanels(Editor& editor, FrameTimes const& times, unsigned viewport
     ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, state.viewportTools, viewportTexture,
                           {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer),
                           &ab, state.inspector.locked ? state.inspector.pixel : std::nullopt, times.overviewTextures);
-    state.gbuffer.noGBuffer = shadesForward(state.pipeline.mode);
+    state.gbuffer.noGBuffer = ui::noGBufferNote(state.pipeline.mode);
     ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()},
                          state.inspector.locked ? state.inspector.pixel : std::nullopt);
     ui::drawFramePanel(state.frame, state.pipeline, state.stats.last);

@@ -173,6 +173,7 @@ std::optional<DebugView> resourceView(Resource r) {
             return DebugView::Emissive;
         case Resource::MsaaDepth:
             return DebugView::Depth;
+        case Resource::PrepassNormal:  // prepass's thin G-buffer: no debug view of its own yet
         case Resource::ComplexMask:
         case Resource::VolumeDepth:
         case Resource::LitDepth:

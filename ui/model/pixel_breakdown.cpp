@@ -99,6 +99,12 @@ ValueCheck checkStoredValue(glm::vec3 stored, PixelBreakdown const& b, PipelineS
         check.cause = "forward mode has no G-buffer: the surface the CPU shades is not the one forward shaded";
         return check;
     }
+    if (settings.mode == LightingMode::Prepass) {
+        check.cause =
+            "prepass draws none of this layout's G-buffer: the surface the CPU shades is not the one "
+            "prepass shaded";
+        return check;
+    }
     if (b.verdicts.empty()) {
         check.cause = "stored and summed values differ; hover the viewport for the per-light verdicts";
         return check;
@@ -130,6 +136,14 @@ std::string noBreakdownNote(PixelSample const& sample, PipelineSettings const& s
         std::snprintf(buf, sizeof buf,
                       "forward mode has no G-buffer, so there is no surface to break down (lit value stored: %.4f "
                       "%.4f %.4f)",
+                      sample.lighting.r, sample.lighting.g, sample.lighting.b);
+        return buf;
+    }
+    if (settings.mode == LightingMode::Prepass && !sample.covered) {
+        char buf[220];
+        std::snprintf(buf, sizeof buf,
+                      "prepass keeps a thin G-buffer of its own, not this layout's, so there is no surface to break "
+                      "down (lit value stored: %.4f %.4f %.4f)",
                       sample.lighting.r, sample.lighting.g, sample.lighting.b);
         return buf;
     }

@@ -162,4 +162,12 @@ RangeSkip viewerSkip(ViewerKind kind) {
                : RangeSkip::ZeroAlpha;
 }
 
+std::string noGBufferNote(LightingMode mode) {
+    if (shadesForward(mode)) return "forward and forward+ write no G-buffer";
+    if (mode == LightingMode::Prepass)
+        return "prepass writes a thin G-buffer of its own (normal and exponent, depth), not this one; its light "
+               "targets: the diffuse_light and specular_light views";
+    return {};
+}
+
 }  // namespace gbl::ui

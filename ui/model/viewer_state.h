@@ -9,6 +9,7 @@
 
 #include <array>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <utility>
 
@@ -116,9 +117,10 @@ struct GBufferPanelState {
     // Each viewer's image at zoom 1 in window coordinates (x, y, width, height) as last drawn, for
     // the frame log (UI layout, not saved).
     std::array<glm::vec4, 5> imageRects{};
-    // Set by the loop each frame: the lighting mode writes no G-buffer (forward), so every viewer
-    // says so instead of showing a blank or stale image.
-    bool noGBuffer = false;
+    // Set by the loop each frame: why the lighting mode writes none of the layout's G-buffer (the
+    // forward modes; prepass, whose thin one is its own), which every viewer says instead of showing
+    // a blank or stale image; empty when it writes it (noGBufferNote).
+    std::string noGBuffer;
     // Set by the loop each frame: samples per pixel of the frame shown (0: no msaa), for the
     // viewers' and the magnifier's sample selectors.
     int msaaSamples = 0;
@@ -153,6 +155,9 @@ std::optional<ViewerKind> viewerKindOfView(DebugView view);
 // Makes the viewport's viewer follow the view: kind and linear depth. False when the view is
 // neither a G-buffer attachment nor the lit frame (the tools then stay hidden).
 bool followViewportView(ViewportTools& tools, DebugView view);
+// What the G-buffer viewers say in `mode` instead of an image (GBufferPanelState::noGBuffer): the
+// forward modes write no G-buffer, prepass a thin one of its own; empty where the layout's is drawn.
+std::string noGBufferNote(LightingMode mode);
 // Switches the depth viewer between depth and stencil, swapping in the other view's range.
 void setShowStencil(ViewerState& viewer, bool on);
 

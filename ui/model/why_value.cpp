@@ -204,6 +204,10 @@ std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointL
                 v.evaluations = 1;
                 v.why = "forward: every light is tested at every fragment";
                 break;
+            case LightingMode::Prepass:
+                v.evaluations = 1;
+                v.why = "prepass: every light is tested at every pixel of the thin G-buffer";
+                break;
             case LightingMode::Tiled:
             case LightingMode::ForwardPlus: {  // forward+ reads the same tiles' lists
                 glm::vec3 const centreView = glm::vec3(view * glm::vec4(light.position, 1.0f));

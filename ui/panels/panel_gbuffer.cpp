@@ -130,12 +130,12 @@ void imageLabels(ViewerState const& v, ViewerData const& d, ImVec2 origin, float
 }
 
 // Over a viewer's image (x, y, width, height) while the mode writes no G-buffer: why it is empty.
-void noGBufferNote(glm::vec4 rect) {
+void drawNoGBufferNote(glm::vec4 rect, std::string const& note) {
     if (rect.z <= 0.0f || rect.w <= 0.0f) return;
     ImDrawList* dl = ImGui::GetWindowDrawList();
     ImVec2 const min(rect.x, rect.y), max(rect.x + rect.z, rect.y + rect.w);
     dl->AddRectFilled(min, max, IM_COL32(24, 24, 28, 255));
-    char const* text = "forward and forward+ write no G-buffer";
+    char const* text = note.c_str();
     float const wrap = std::max(60.0f, rect.z - 12.0f);
     ImVec2 const size = ImGui::CalcTextSize(text, nullptr, false, wrap);
     ImVec2 const p((min.x + max.x - size.x) * 0.5f, (min.y + max.y - size.y) * 0.5f);
@@ -249,7 +249,7 @@ void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& t
                     state.hoverPixel = texel;
                     if (!state.showMagnifier || !v.picked) state.activeViewer = int(i);
                 }
-                if (state.noGBuffer) noGBufferNote(state.imageRects[i]);
+                if (!state.noGBuffer.empty()) drawNoGBufferNote(state.imageRects[i], state.noGBuffer);
                 imageLabels(v, state.data[i], imageOrigin, cellWidth);
                 if (ImGui::IsItemClicked(ImGuiMouseButton_Right) || clicked) state.activeViewer = int(i);
                 if (clicked) state.showInViewport = viewerDebugView(v);

@@ -214,10 +214,15 @@ void drawOverview(OverviewState& overview, PipelineSettings const& settings, std
         std::string_view const name = overviewLabel(views[i]);
         dl->AddText(ImVec2(r.x + 2.0f, r.y - label + 1.0f), IM_COL32(235, 235, 235, 255), name.data(),
                     name.data() + name.size());
-        if (shadesForward(settings.mode) && views[i] != DebugView::Final)
-            centredMessage(
-                a, b,
-                settings.mode == LightingMode::Forward ? "forward mode: no G-buffer" : "forward+ mode: no G-buffer");
+        // prepass: its light targets and lit image are shown; the layout's attachments it never draws.
+        bool const empty = settings.mode == LightingMode::Prepass
+                               ? gbufferView(views[i])
+                               : shadesForward(settings.mode) && views[i] != DebugView::Final;
+        if (empty)
+            centredMessage(a, b,
+                           settings.mode == LightingMode::Forward   ? "forward mode: no G-buffer"
+                           : settings.mode == LightingMode::Prepass ? "prepass mode: a thin G-buffer of its own"
+                                                                    : "forward+ mode: no G-buffer");
         else if (i < textures.size() && textures[i] != 0)
             dl->AddImage(toImTexture(textures[i]), a, b, ImVec2(0, 1), ImVec2(1, 0));
         else
@@ -343,7 +348,7 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         "viewport-image", avail,
         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
     ImVec2 const imageEnd(origin.x + avail.x, origin.y + avail.y);
-    bool const noGBuffer = shadesForward(settings.mode) && gbufferView(settings.view);
+    bool const noGBuffer = lightsByDrawingMeshes(settings.mode) && gbufferView(settings.view);
     if (overview.on) {
         drawOverview(overview, settings, overviewTextures, origin, avail, textureSize);
     } else if (abOn && ab->ab.view == AbView::Diff && ab->diffTexture != 0) {
@@ -352,10 +357,14 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         drawAbDiff(*ab, settings, origin, avail);
     } else if (noGBuffer) {
         char text[160];
-        std::snprintf(text, sizeof text,
-                      "forward mode has no G-buffer: '%s' is not stored anywhere. Switch to quad, volumes or tiled "
-                      "to see it.",
-                      kDebugViewNames[std::size_t(settings.view)].data());
+        std::snprintf(
+            text, sizeof text,
+            settings.mode == LightingMode::Prepass
+                ? "prepass keeps a thin G-buffer of its own (normal and exponent, depth): '%s' of this layout "
+                  "is not drawn. Its light targets: the diffuse_light and specular_light views."
+                : "forward mode has no G-buffer: '%s' is not stored anywhere. Switch to quad, volumes or "
+                  "tiled to see it.",
+            kDebugViewNames[std::size_t(settings.view)].data());
         centredMessage(origin, imageEnd, text);
     } else if (texture != 0) {
         // GL images start at the bottom row; flip v so the picture is upright.

@@ -1,0 +1,39 @@
+// The declared passes of deferred lighting (prepass mode).
+#include "core/frame_passes.h"
+
+namespace gbl {
+
+std::vector<PassDecl> prepassPasses() {
+    using R = Resource;
+    // Both of the scene's draw groups (drawScene): back faces culled, then the double-sided materials.
+    auto const scene = [](std::string_view single, std::string_view both, DepthTest test, bool depthWrite) {
+        return std::vector<DrawState>{{single, test, depthWrite, Blend::Off, FaceCull::Back},
+                                      {both, test, depthWrite, Blend::Off, FaceCull::Off}};
+    };
+    PassDecl g;  // the thin G-buffer: its normal target with the lit target's depth
+    g.id = PassId::ThinGBuffer;
+    g.samples = {R::Materials};
+    g.color = {R::PrepassNormal};
+    g.depthStencil = R::LitDepth;
+    g.depthRead = g.depthWrite = true;
+    g.states = scene("opaque surfaces, normal and exponent", "double-sided opaque surfaces, normal and exponent",
+                     DepthTest::Less, true);
+    g.clears = {R::PrepassNormal};
+    PassDecl l;  // splitFbo: no depth-stencil attached, the depth is sampled
+    l.id = PassId::Lighting;
+    l.samples = {R::PrepassNormal, R::LitDepth, R::Lights};
+    l.color = l.clears = {R::DiffuseLight, R::SpecularLight};
+    l.states = {{"every light", DepthTest::Off, false, Blend::Off, FaceCull::Off}};
+    PassDecl c;  // the lit target, tested against the thin pass's depth (equal where it drew), not written
+    c.id = PassId::PrepassShading;
+    c.samples = {R::Materials, R::DiffuseLight, R::SpecularLight};
+    c.color = {R::Lighting};
+    c.depthStencil = R::LitDepth;
+    c.depthRead = true;
+    c.states = scene("opaque surfaces, light buffer", "double-sided opaque surfaces, light buffer",
+                     DepthTest::LessEqual, false);
+    c.clears = {R::Lighting};
+    return {std::move(g), std::move(l), std::move(c)};
+}
+
+}  // namespace gbl
