@@ -65,6 +65,14 @@ DrawState fullScreen(std::string_view what) {
     return state(what, DepthTest::Off, false, Blend::Off, FaceCull::Off);
 }
 
+// `drawn` kept to the msaa edges strategy's simple or complex pixels (core/frame_passes.h), and to
+// one sample (-1: all).
+DrawState onPixels(DrawState drawn, MsaaPixels pixels, int sample = -1) {
+    drawn.pixels = pixels;
+    drawn.sample = sample;
+    return drawn;
+}
+
 // passes/light_volumes.cpp, drawLightVolumes: the draws of one cull mode, each added (blend ONE, ONE).
 std::vector<DrawState> volumeStates(CullMode cull) {
     DrawState const front = state("volumes: front faces", DepthTest::Less, false, Blend::Add, FaceCull::Back);
@@ -136,10 +144,38 @@ PassDecl overlayPass(PassId id, std::vector<Resource> samples, Resource depth, D
     return p;
 }
 
-// --- msaa (docs/msaa.md): the multisampled G-buffer in the classic layout, lit in quad mode.
+// --- msaa (docs/msaa.md): the multisampled G-buffer in the frame's layout.
 
-constexpr std::initializer_list<Resource> kMsaaColor{R::MsaaPosition, R::MsaaNormal, R::MsaaAlbedoSpec,
-                                                     R::MsaaEmissive};
+Resource msaaResource(GBufferSlot slot) {
+    switch (slot) {
+        case GBufferSlot::Position:
+            return R::MsaaPosition;
+        case GBufferSlot::Normal:
+            return R::MsaaNormal;
+        case GBufferSlot::AlbedoSpec:
+            return R::MsaaAlbedoSpec;
+        case GBufferSlot::Emissive:
+            return R::MsaaEmissive;
+        case GBufferSlot::Depth:
+            break;
+    }
+    return R::MsaaDepth;
+}
+
+// The multisampled twins of the layout's colour attachments, in draw-buffer order.
+std::vector<Resource> msaaColor(GBufferLayoutDesc const& d) {
+    std::vector<Resource> out;
+    for (GBufferAttachmentDesc const& a : d.colorAttachments()) out.push_back(msaaResource(a.slot));
+    return out;
+}
+
+// What the lighting reads of the multisampled G-buffer: gbufferSamples' twins.
+std::vector<Resource> msaaGBufferSamples(GBufferLayoutDesc const& d) {
+    std::vector<Resource> out{lightingSamplesDepth(d) ? R::MsaaDepth : R::MsaaPosition, R::MsaaNormal,
+                              R::MsaaAlbedoSpec};
+    if (storesEmissiveAo(d)) out.push_back(R::MsaaEmissive);
+    return out;
+}
 
 // Whether the frame lights a multisampled G-buffer (the renderer turns msaa off where it cannot, and
 // says why: core/msaa.h).
@@ -152,9 +188,10 @@ bool lightsSamples(PipelineSettings const& s) {
 }
 
 // The complex pixels found: the mask written and the lit target's stencil marked where samples differ.
-PassDecl msaaEdgesPass() {
+PassDecl msaaEdgesPass(GBufferLayoutDesc const& d) {
     PassDecl p = declare(PassId::MsaaEdges);
-    p.samples = {R::MsaaPosition, R::MsaaNormal, R::MsaaAlbedoSpec};
+    p.samples = msaaGBufferSamples(d);
+    if (storesEmissiveAo(d)) p.samples.pop_back();  // compares position, normal and albedo only
     p.color = {R::ComplexMask};
     p.depthStencil = R::LitDepth;
     p.stencilWrite = true;
@@ -166,10 +203,11 @@ PassDecl msaaEdgesPass() {
 
 // The multisampled G-buffer resolved (averaged; depth and stencil: one sample) into the layout's
 // targets, which the views, the depth copy and the counts read as in any frame.
-PassDecl msaaResolvePass() {
+PassDecl msaaResolvePass(GBufferLayoutDesc const& d) {
     PassDecl p = declare(PassId::MsaaResolve, PassKind::Blit);
-    p.samples = plus(std::vector<Resource>(kMsaaColor), {R::MsaaDepth});
-    p.color = {R::GBufferPosition, R::GBufferNormal, R::GBufferAlbedoSpec, R::GBufferEmissive};
+    p.samples = msaaColor(d);
+    p.samples.push_back(R::MsaaDepth);
+    for (GBufferAttachmentDesc const& a : d.colorAttachments()) p.color.push_back(slotResource(a.slot));
     p.depthStencil = R::GBufferDepth;
     p.depthWrite = p.stencilWrite = true;
     return p;
@@ -195,26 +233,76 @@ PassDecl lightingPass(PipelineSettings const& s, bool split) {
     }
     PassDecl p = declare(PassId::Lighting);  // full screen into litFbo, or splitFbo (no depth-stencil)
     p.samples = plus(gbufferSamples(d), {R::Lights});
-    if (msaaFrame(s, false) && lightsSamples(s)) p.samples = plus(std::vector<Resource>(kMsaaColor), {R::Lights});
+    if (msaaFrame(s, false) && lightsSamples(s)) p.samples = plus(msaaGBufferSamples(d), {R::Lights});
     p.color = lit;
     p.clears = lit;
     if (!split) p.depthStencil = R::LitDepth;
     p.states = {fullScreen("every light")};
     if (msaaFrame(s, false) && s.msaaLighting == MsaaLighting::Edges) {  // sample 0 of the simple pixels
         p.stencilRead = true;
-        p.states = {state("simple pixels", DepthTest::Off, false, Blend::Off, FaceCull::Off, StencilUse::Simple)};
+        p.states = {onPixels(fullScreen("simple pixels"), MsaaPixels::Simple)};
     }
     return p;
 }
 
+// msaa volumes (per-sample and edges; docs/msaa.md): the volumes added into the multisampled lit
+// image, tested against the multisampled depth-stencil, one sample at a time (the sample mask; the
+// shader lights that sample). edges first sets the stencil's complex bit (the detection again, with
+// no colour), lights the simple pixels once from sample 0 (every sample written) and then the
+// complex ones sample by sample; per-sample lights every pixel sample by sample. The ambient term is
+// each pixel's samples averaged (sample 0 at simple pixels), written to every sample.
+PassDecl msaaVolumesPass(PipelineSettings const& s, GBufferLayoutDesc const& d) {
+    bool const edges = s.msaaLighting == MsaaLighting::Edges;
+    PassDecl p = declare(PassId::Lighting);
+    p.samples = plus(msaaGBufferSamples(d), {R::Lights, R::VolumeInstances});
+    p.color = {R::MsaaLighting};
+    p.depthStencil = lightingSamplesDepth(d) ? R::MsaaVolumeDepth : R::MsaaDepth;
+    p.clears = {R::MsaaLighting};
+    p.depthRead = s.cull != CullMode::None;
+    p.stencilRead = p.stencilWrite = s.cull == CullMode::Stencil || edges;
+    std::vector<DrawState> const volumes = volumeStates(s.cull);
+    auto const addVolumes = [&](MsaaPixels pixels, int sample) {
+        for (DrawState const& v : volumes) p.states.push_back(onPixels(v, pixels, sample));
+    };
+    if (edges) {
+        p.states = {state("mark complex pixels", DepthTest::Off, false, Blend::Off, FaceCull::Off,
+                          StencilUse::MarkComplex, false),
+                    onPixels(fullScreen("ambient, simple pixels"), MsaaPixels::Simple),
+                    onPixels(fullScreen("ambient, complex pixels"), MsaaPixels::Complex)};
+        addVolumes(MsaaPixels::Simple, -1);
+    } else {
+        p.states = {fullScreen("ambient, every sample")};
+    }
+    for (int k = 0; k < msaaSamples(s.msaa); ++k) addVolumes(edges ? MsaaPixels::Complex : MsaaPixels::All, k);
+    return p;
+}
+
+// The volumes' copy of the multisampled depth-stencil (layouts whose lighting samples the depth).
+PassDecl msaaVolumeDepthPass() {
+    PassDecl v = declare(PassId::VolumeDepth, PassKind::Blit);
+    v.samples = {R::MsaaDepth};
+    v.color = {R::MsaaLighting};  // the blit writes depth and stencil only
+    v.depthStencil = R::MsaaVolumeDepth;
+    v.depthWrite = v.stencilWrite = true;
+    return v;
+}
+
+// The multisampled lit image averaged into the lit image (the G-buffer is resolved after it).
+PassDecl msaaResolveLightingPass() {
+    PassDecl p = declare(PassId::MsaaResolveLighting, PassKind::Blit);
+    p.samples = {R::MsaaLighting};
+    p.color = {R::Lighting};
+    return p;
+}
+
 // msaa edges: the complex pixels, each sample lit, into the lit image beside the simple ones.
-PassDecl lightingComplexPass() {
+PassDecl lightingComplexPass(GBufferLayoutDesc const& d) {
     PassDecl p = declare(PassId::MsaaComplex);
-    p.samples = plus(std::vector<Resource>(kMsaaColor), {R::Lights});
+    p.samples = plus(msaaGBufferSamples(d), {R::Lights});
     p.color = {R::Lighting};
     p.depthStencil = R::LitDepth;
     p.stencilRead = true;
-    p.states = {state("complex pixels", DepthTest::Off, false, Blend::Off, FaceCull::Off, StencilUse::Complex)};
+    p.states = {onPixels(fullScreen("complex pixels"), MsaaPixels::Complex)};
     return p;
 }
 
@@ -342,7 +430,7 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
         for (GBufferAttachmentDesc const& a : d.colorAttachments()) g.color.push_back(slotResource(a.slot));
         g.depthStencil = R::GBufferDepth;
         if (msaa) {
-            g.color = kMsaaColor;
+            g.color = msaaColor(d);
             g.depthStencil = R::MsaaDepth;
         }
         g.depthRead = g.depthWrite = g.stencilWrite = true;  // stencil cleared
@@ -354,18 +442,26 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
         g.clears = plus(g.color, {*g.depthStencil});
         out.push_back(std::move(g));
         if (msaa) {
-            out.push_back(msaaEdgesPass());
-            if (!lightsSamples(s)) out.push_back(msaaResolvePass());
+            out.push_back(msaaEdgesPass(d));
+            if (!lightsSamples(s)) out.push_back(msaaResolvePass(d));
         }
         if (s.mode == LightingMode::Tiled)
             out.push_back(computePass(PassId::LightLists, {R::GBufferDepth, R::Lights}, {R::TileBins}));
         if (s.mode == LightingMode::Clustered)
             out.push_back(
                 computePass(PassId::LightLists, {R::GBufferDepth, R::Lights}, {R::TileBins, R::ClusterLists}));
-        if (s.mode == LightingMode::Volumes && lightingSamplesDepth(d)) out.push_back(volumeDepthPass());
-        out.push_back(lightingPass(s, split));
-        if (msaa && s.msaaLighting == MsaaLighting::Edges) out.push_back(lightingComplexPass());
-        if (msaa && lightsSamples(s)) out.push_back(msaaResolvePass());
+        // msaa volumes lit from the samples: the multisampled lit image, then resolved (docs/msaa.md).
+        bool const msaaVolumes = msaa && lightsSamples(s) && s.mode == LightingMode::Volumes;
+        if (s.mode == LightingMode::Volumes && lightingSamplesDepth(d))
+            out.push_back(msaaVolumes ? msaaVolumeDepthPass() : volumeDepthPass());
+        if (msaaVolumes) {
+            out.push_back(msaaVolumesPass(s, d));
+            out.push_back(msaaResolveLightingPass());
+        } else {
+            out.push_back(lightingPass(s, split));
+        }
+        if (msaa && !msaaVolumes && s.msaaLighting == MsaaLighting::Edges) out.push_back(lightingComplexPass(d));
+        if (msaa && lightsSamples(s)) out.push_back(msaaResolvePass(d));
         if (split) {
             PassDecl c = litPass(PassId::LightCombine, plus(gbufferSamples(d), {R::DiffuseLight, R::SpecularLight}),
                                  fullScreen("combine"));
@@ -378,7 +474,13 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
                                 sceneStates("blended surfaces", "double-sided blended surfaces", false, Blend::Alpha)));
     // The light targets of an earlier split frame would otherwise show in this one's views.
     if (!split) out.front().clears = plus(out.front().clears, {R::DiffuseLight, R::SpecularLight});
-    if (viewNeedsCoverage(s.view)) out.push_back(coveragePass(s));
+    if (viewNeedsCoverage(s.view)) {
+        // msaa volumes made only the multisampled copy: the counts test the resolved depth's.
+        bool const resolvedCopy =
+            msaaFrame(s, imported) && lightsSamples(s) && s.mode == LightingMode::Volumes && lightingSamplesDepth(d);
+        if (resolvedCopy) out.push_back(volumeDepthPass());
+        out.push_back(coveragePass(s));
+    }
     out.push_back(displayPass(d, R::Display));
     if (s.glassOutline && !imported) out.push_back(glassOutlinePass(R::Display));
     // The overlays, onto the display image: the lit image stays the light sum.
