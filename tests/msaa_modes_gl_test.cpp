@@ -229,6 +229,10 @@ TEST_F(MsaaModesGlTest, ModesThatCannotAndTooLargeAGBufferRefuseInOneSentence) {
     // packed rebuilds position from depth: its volumes test a multisampled copy of the depth too.
     EXPECT_DOUBLE_EQ(msaaTargetBytes(layoutDesc(GBufferLayout::Packed), 8, kW, kH, true),
                      (12.0 + 8.0 + 4.0) * 8 * kW * kH);
+    // The Stats window's and bench's line: bytes x samples x pixels, in tenths of a megabyte.
+    EXPECT_EQ(msaaMemoryLine(layoutDesc(GBufferLayout::Classic), kW, kH),
+              "msaa targets at 160x90: 2x 1.0 MB (volumes 1.3 MB), 4x 2.1 MB (volumes 2.5 MB), 8x 4.1 MB (volumes "
+              "5.1 MB)");
     // Without a report: the fixed budget of 1 GiB, which 8 samples of classic pass at 1920x1080
     // (597 MB) and fail at 7680x4320 (9.6 GB).
     EXPECT_FALSE(msaaBudgetRefusal(Msaa::X8, msaaTargetBytes(layoutDesc(GBufferLayout::Classic), 8, 1920, 1080, false),

@@ -1,5 +1,6 @@
 // The declared passes of a frame and the feedback-loop check over them.
 #include "core/frame_passes.h"
+#include "core/frame_passes_parts.h"
 
 #include "core/gbuffer_layout.h"
 #include "core/msaa.h"
@@ -8,11 +9,11 @@
 
 namespace gbl {
 
-namespace {
+namespace detail {
 
 using R = Resource;
 
-PassDecl declare(PassId id, PassKind kind = PassKind::Raster) {
+PassDecl declare(PassId id, PassKind kind) {
     PassDecl p;
     p.id = id;
     p.kind = kind;
@@ -20,7 +21,7 @@ PassDecl declare(PassId id, PassKind kind = PassKind::Raster) {
 }
 
 DrawState state(std::string_view what, DepthTest depthTest, bool depthWrite, Blend blend, FaceCull cull,
-                StencilUse stencil = StencilUse::Off, bool colorWrite = true) {
+                StencilUse stencil, bool colorWrite) {
     return {what, depthTest, depthWrite, blend, cull, stencil, colorWrite};
 }
 
@@ -67,7 +68,7 @@ DrawState fullScreen(std::string_view what) {
 
 // `drawn` kept to the msaa edges strategy's simple or complex pixels (core/frame_passes.h), and to
 // one sample (-1: all).
-DrawState onPixels(DrawState drawn, MsaaPixels pixels, int sample = -1) {
+DrawState onPixels(DrawState drawn, MsaaPixels pixels, int sample) {
     drawn.pixels = pixels;
     drawn.sample = sample;
     return drawn;
@@ -144,74 +145,12 @@ PassDecl overlayPass(PassId id, std::vector<Resource> samples, Resource depth, D
     return p;
 }
 
-// --- msaa (docs/msaa.md): the multisampled G-buffer in the frame's layout.
+}  // namespace detail
 
-Resource msaaResource(GBufferSlot slot) {
-    switch (slot) {
-        case GBufferSlot::Position:
-            return R::MsaaPosition;
-        case GBufferSlot::Normal:
-            return R::MsaaNormal;
-        case GBufferSlot::AlbedoSpec:
-            return R::MsaaAlbedoSpec;
-        case GBufferSlot::Emissive:
-            return R::MsaaEmissive;
-        case GBufferSlot::Depth:
-            break;
-    }
-    return R::MsaaDepth;
-}
+namespace {
 
-// The multisampled twins of the layout's colour attachments, in draw-buffer order.
-std::vector<Resource> msaaColor(GBufferLayoutDesc const& d) {
-    std::vector<Resource> out;
-    for (GBufferAttachmentDesc const& a : d.colorAttachments()) out.push_back(msaaResource(a.slot));
-    return out;
-}
-
-// What the lighting reads of the multisampled G-buffer: gbufferSamples' twins.
-std::vector<Resource> msaaGBufferSamples(GBufferLayoutDesc const& d) {
-    std::vector<Resource> out{lightingSamplesDepth(d) ? R::MsaaDepth : R::MsaaPosition, R::MsaaNormal,
-                              R::MsaaAlbedoSpec};
-    if (storesEmissiveAo(d)) out.push_back(R::MsaaEmissive);
-    return out;
-}
-
-// Whether the frame lights a multisampled G-buffer (the renderer turns msaa off where it cannot, and
-// says why: core/msaa.h).
-bool msaaFrame(PipelineSettings const& s, bool imported) {
-    return s.msaa != Msaa::Off && !msaaFrameRefusal(s, imported);
-}
-// Whether its lighting reads the samples themselves (not the resolved G-buffer).
-bool lightsSamples(PipelineSettings const& s) {
-    return s.msaaLighting != MsaaLighting::ResolveFirst;
-}
-
-// The complex pixels found: the mask written and the lit target's stencil marked where samples differ.
-PassDecl msaaEdgesPass(GBufferLayoutDesc const& d) {
-    PassDecl p = declare(PassId::MsaaEdges);
-    p.samples = msaaGBufferSamples(d);
-    if (storesEmissiveAo(d)) p.samples.pop_back();  // compares position, normal and albedo only
-    p.color = {R::ComplexMask};
-    p.depthStencil = R::LitDepth;
-    p.stencilWrite = true;
-    p.clears = {R::ComplexMask, R::LitDepth};
-    p.states = {
-        state("mark complex pixels", DepthTest::Off, false, Blend::Off, FaceCull::Off, StencilUse::MarkComplex)};
-    return p;
-}
-
-// The multisampled G-buffer resolved (averaged; depth and stencil: one sample) into the layout's
-// targets, which the views, the depth copy and the counts read as in any frame.
-PassDecl msaaResolvePass(GBufferLayoutDesc const& d) {
-    PassDecl p = declare(PassId::MsaaResolve, PassKind::Blit);
-    p.samples = msaaColor(d);
-    p.samples.push_back(R::MsaaDepth);
-    for (GBufferAttachmentDesc const& a : d.colorAttachments()) p.color.push_back(slotResource(a.slot));
-    p.depthStencil = R::GBufferDepth;
-    p.depthWrite = p.stencilWrite = true;
-    return p;
-}
+using namespace detail;
+using R = Resource;
 
 PassDecl lightingPass(PipelineSettings const& s, bool split) {
     GBufferLayoutDesc const& d = layoutDesc(s.layout);
@@ -242,67 +181,6 @@ PassDecl lightingPass(PipelineSettings const& s, bool split) {
         p.stencilRead = true;
         p.states = {onPixels(fullScreen("simple pixels"), MsaaPixels::Simple)};
     }
-    return p;
-}
-
-// msaa volumes (per-sample and edges; docs/msaa.md): the volumes added into the multisampled lit
-// image, tested against the multisampled depth-stencil, one sample at a time (the sample mask; the
-// shader lights that sample). edges first sets the stencil's complex bit (the detection again, with
-// no colour), lights the simple pixels once from sample 0 (every sample written) and then the
-// complex ones sample by sample; per-sample lights every pixel sample by sample. The ambient term is
-// each pixel's samples averaged (sample 0 at simple pixels), written to every sample.
-PassDecl msaaVolumesPass(PipelineSettings const& s, GBufferLayoutDesc const& d) {
-    bool const edges = s.msaaLighting == MsaaLighting::Edges;
-    PassDecl p = declare(PassId::Lighting);
-    p.samples = plus(msaaGBufferSamples(d), {R::Lights, R::VolumeInstances});
-    p.color = {R::MsaaLighting};
-    p.depthStencil = lightingSamplesDepth(d) ? R::MsaaVolumeDepth : R::MsaaDepth;
-    p.clears = {R::MsaaLighting};
-    p.depthRead = s.cull != CullMode::None;
-    p.stencilRead = p.stencilWrite = s.cull == CullMode::Stencil || edges;
-    std::vector<DrawState> const volumes = volumeStates(s.cull);
-    auto const addVolumes = [&](MsaaPixels pixels, int sample) {
-        for (DrawState const& v : volumes) p.states.push_back(onPixels(v, pixels, sample));
-    };
-    if (edges) {
-        p.states = {state("mark complex pixels", DepthTest::Off, false, Blend::Off, FaceCull::Off,
-                          StencilUse::MarkComplex, false),
-                    onPixels(fullScreen("ambient, simple pixels"), MsaaPixels::Simple),
-                    onPixels(fullScreen("ambient, complex pixels"), MsaaPixels::Complex)};
-        addVolumes(MsaaPixels::Simple, -1);
-    } else {
-        p.states = {fullScreen("ambient, every sample")};
-    }
-    for (int k = 0; k < msaaSamples(s.msaa); ++k) addVolumes(edges ? MsaaPixels::Complex : MsaaPixels::All, k);
-    return p;
-}
-
-// The volumes' copy of the multisampled depth-stencil (layouts whose lighting samples the depth).
-PassDecl msaaVolumeDepthPass() {
-    PassDecl v = declare(PassId::VolumeDepth, PassKind::Blit);
-    v.samples = {R::MsaaDepth};
-    v.color = {R::MsaaLighting};  // the blit writes depth and stencil only
-    v.depthStencil = R::MsaaVolumeDepth;
-    v.depthWrite = v.stencilWrite = true;
-    return v;
-}
-
-// The multisampled lit image averaged into the lit image (the G-buffer is resolved after it).
-PassDecl msaaResolveLightingPass() {
-    PassDecl p = declare(PassId::MsaaResolveLighting, PassKind::Blit);
-    p.samples = {R::MsaaLighting};
-    p.color = {R::Lighting};
-    return p;
-}
-
-// msaa edges: the complex pixels, each sample lit, into the lit image beside the simple ones.
-PassDecl lightingComplexPass(GBufferLayoutDesc const& d) {
-    PassDecl p = declare(PassId::MsaaComplex);
-    p.samples = plus(msaaGBufferSamples(d), {R::Lights});
-    p.color = {R::Lighting};
-    p.depthStencil = R::LitDepth;
-    p.stencilRead = true;
-    p.states = {onPixels(fullScreen("complex pixels"), MsaaPixels::Complex)};
     return p;
 }
 
