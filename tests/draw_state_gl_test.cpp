@@ -122,7 +122,7 @@ std::string mismatch(GlState const& gl, DrawState const& d) {
               "stencil mark complex");
     if (d.stencil == StencilUse::Off && pixels)
         check(gl.stencilFunc == GL_EQUAL && gl.stencilRef == pixelRef && gl.stencilValueMask == bit &&
-                  gl.frontPass == GL_KEEP && gl.frontZFail == GL_KEEP,
+                  gl.frontPass == GL_KEEP && gl.frontZFail == GL_KEEP && gl.stencilWriteMask == 0,
               "stencil simple or complex pixels");
     check(gl.sampleMask == (d.sample >= 0), "sample mask enable");
     if (d.sample >= 0) check(gl.sampleMaskValue == (1 << d.sample), "sample mask");

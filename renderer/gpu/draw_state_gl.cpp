@@ -56,7 +56,7 @@ void apply(DrawState const& s) {
     glStencilMask(marks);
     switch (s.stencil) {
         case StencilUse::Mark:  // only depth failures count: back faces +1, front faces -1
-            glStencilFunc(pixelMask ? GL_EQUAL : GL_ALWAYS, pixelRef, pixelMask);
+            glStencilFunc(pixelMask ? GL_EQUAL : GL_ALWAYS, pixelRef, pixelMask ? pixelMask : 0xFFu);
             glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
             glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
             break;
@@ -73,7 +73,8 @@ void apply(DrawState const& s) {
             glStencilFunc(GL_ALWAYS, kComplexStencilBit, 0xFF);
             glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
             break;
-        case StencilUse::Off:  // the complex bit alone, or nothing
+        case StencilUse::Off:  // the complex bit alone (and no writes, so the test may run early), or nothing
+            if (pixelMask) glStencilMask(0);
             glStencilFunc(pixelMask ? GL_EQUAL : GL_ALWAYS, pixelRef, pixelMask ? pixelMask : 0xFFu);
             glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
             break;
