@@ -114,6 +114,19 @@ TEST_F(MsaaModesGlTest, VolumesPerSampleEqualsQuadPerSampleWithEveryInsideSafeCu
     }
 }
 
+// msaa off in volumes mode (every cull mode's stencil masks as before: 0xFF, no sample mask) gives
+// the same frame bit for bit before and after msaa volumes frames, whose stencil and sample masks
+// it must not inherit.
+TEST_F(MsaaModesGlTest, VolumesMsaaOffFramesAreBitIdenticalWhateverRanBefore) {
+    for (CullMode cull : {CullMode::Stencil, CullMode::Flip}) {
+        PipelineSettings const off = settings(LightingMode::Volumes, Msaa::Off, MsaaLighting::Edges, cull);
+        FloatImage const before = lighting(off);
+        lighting(settings(LightingMode::Volumes, Msaa::X4, MsaaLighting::Edges, cull));
+        lighting(settings(LightingMode::Volumes, Msaa::X2, MsaaLighting::PerSample, cull));
+        EXPECT_EQ(lighting(off).pixels, before.pixels) << enumName(kCullModeNames, cull);
+    }
+}
+
 // edges in volumes mode: the complex pixels lit sample by sample as per-sample lights them (the same
 // blends in the same order), the simple ones from sample 0: the bound of the quad pass's edges test.
 TEST_F(MsaaModesGlTest, VolumesEdgesEqualsVolumesPerSampleWithinABound) {
