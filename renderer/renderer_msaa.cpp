@@ -109,7 +109,7 @@ void RendererImpl::runMsaaResolve(FrameRecord&, PassRun const& r) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-// msaa volumes (core/frame_passes.cpp, msaaVolumesPass, declares the groups in this order): edges
+// msaa volumes (core/frame_passes_msaa.cpp, msaaVolumesPass, declares the groups in this order): edges
 // sets the complex bit and lights the ambient term of the simple and complex pixels; per-sample lights
 // every pixel's averaged ambient term. Then the volumes, drawn once per group of volume states: the
 // simple pixels lit once (edges), then each sample k under its sample mask, lit from sample k.
@@ -131,7 +131,7 @@ void RendererImpl::runMsaaVolumes(FrameRecord& frame, PassRun const& r) {
         detect.use();
         setMsaaThresholds(detect);
         fullScreen(detect);
-        fullScreen(msaaProgram("SAMPLE0"));  // ambient of the simple pixels: sample 0
+        fullScreen(msaaProgram("SAMPLE0"));  // ambient of the simple pixels: lit once, at the centre
     }
     fullScreen(msaaProgram(""));  // ambient: the samples averaged
     int const draws = msaaSamples(f.settings.msaa) + (edges ? 1 : 0);

@@ -83,7 +83,7 @@ PassDecl msaaResolvePass(GBufferLayoutDesc const& d) {
 // shader lights that sample). edges first sets the stencil's complex bit (the detection again, with
 // no colour), lights the simple pixels once at their centre (every sample written) and then the
 // complex ones sample by sample; per-sample lights every pixel sample by sample. The ambient term is
-// each pixel's samples averaged (sample 0 at simple pixels), written to every sample.
+// each pixel's samples averaged (lit once at simple pixels), written to every sample.
 PassDecl msaaVolumesPass(PipelineSettings const& s, GBufferLayoutDesc const& d) {
     bool const edges = s.msaaLighting == MsaaLighting::Edges;
     PassDecl p = declare(PassId::Lighting);
