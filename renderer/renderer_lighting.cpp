@@ -58,6 +58,10 @@ void RendererImpl::runLighting(FrameRecord& frame, PassRun const& r) {
     gl::Texture const& image = r.io.texture(out);
     switch (f.settings.mode) {
         case LightingMode::Volumes:
+            if (r.decl.color.front() == Resource::MsaaLighting) {  // msaa: the samples lit one by one
+                runMsaaVolumes(frame, r);
+                break;
+            }
             lightingVolumesPass({deferred,
                                  volumes,
                                  shaders.get(ProgramId::LightingQuad),
@@ -81,7 +85,7 @@ void RendererImpl::runLighting(FrameRecord& frame, PassRun const& r) {
             runPrepassLight(frame, r);
             break;
         default:
-            if (std::find(r.decl.samples.begin(), r.decl.samples.end(), Resource::MsaaPosition) !=
+            if (std::find(r.decl.samples.begin(), r.decl.samples.end(), Resource::MsaaNormal) !=
                 r.decl.samples.end()) {  // msaa: every sample, or sample 0 of the simple pixels (edges)
                 bool const simple = f.settings.msaaLighting == MsaaLighting::Edges;
                 lightingQuadPass({{gbufferTextures(r.io.targets.msaa.gbuffer), deferred.lights, deferred.shading},

@@ -4,8 +4,11 @@
 
 #include "core/msaa.h"
 #include "gl/shader_bindings.h"
+#include "passes/light_volumes.h"
 #include "passes/lighting_quad.h"
 
+#include <algorithm>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -16,16 +19,45 @@ std::optional<std::string> RendererImpl::msaaRefusal(PipelineSettings const& s, 
     if (auto why = msaaFrameRefusal(s, bool(imported))) return why;
     int const n = msaaSamples(s.msaa);
     if (std::string const why = caps.msaaUnavailableReason(n); !why.empty()) return why + ", so msaa was off";
-    if (!makeTargets || targets.msaa.samples == n) return std::nullopt;
-    if (auto err = createMsaaTargets(n, targets))
+    // The volumes light a multisampled image of their own (docs/msaa.md).
+    bool const volumes = s.mode == LightingMode::Volumes && s.msaaLighting != MsaaLighting::ResolveFirst;
+    double const bytes = msaaTargetBytes(layoutDesc(s.layout), n, targets.width, targets.height, volumes);
+    bool const reported = caps.freeVideoMemoryKiB > 0;
+    double const budget = reported ? double(caps.freeVideoMemoryKiB) * 1024.0 / 2.0 : kMsaaFixedBudgetBytes;
+    std::string const source = reported ? "half the free video memory " + caps.freeVideoMemorySource + " reported"
+                                        : "fixed, as this driver does not report its free memory";
+    if (auto why = msaaBudgetRefusal(s.msaa, bytes, budget, source, targets.width, targets.height)) return why;
+    bool const made = targets.msaa.samples == n && (!volumes || targets.msaa.litFbo);
+    if (!makeTargets || made) return std::nullopt;
+    if (auto err = createMsaaTargets(n, volumes, targets))
         return "the " + std::to_string(n) + "-sample G-buffer could not be made (" + *err + "), so msaa was off";
     return std::nullopt;
 }
 
+namespace {
+
+// Each sample's place in its pixel, for the layouts that rebuild position from depth (gbuffer_read.glsl).
+void setSamplePositions(gl::Program const& p, MsaaTargets const& m) {
+    p.use();
+    glUniform2fv(p.uniform("uSamplePositions[0]"), GLsizei(m.samplePositions.size()),
+                 reinterpret_cast<GLfloat const*>(m.samplePositions.data()));
+}
+
+// The detection variant's thresholds (core/msaa.h).
+void setMsaaThresholds(gl::Program const& p) {
+    p.set("uMsaaRelativeDistance", kMsaaThresholds.relativeDistance);
+    p.set("uMsaaNormalCos", kMsaaThresholds.normalCos);
+    p.set("uMsaaAlbedo", kMsaaThresholds.albedo);
+}
+
+}  // namespace
+
 gl::Program const& RendererImpl::msaaProgram(std::string const& what) {
     std::string define = "GBL_MSAA_SAMPLES " + std::to_string(targets.msaa.samples);
     if (!what.empty()) define += "\n#define GBL_MSAA_" + what;
-    return shaders.variant(ProgramId::LightingQuad, define);
+    gl::Program const& p = shaders.variant(ProgramId::LightingQuad, define);
+    setSamplePositions(p, targets.msaa);
+    return p;
 }
 
 // The complex pixels: the quad program's detection variant draws where the samples differ, which
@@ -36,9 +68,7 @@ void RendererImpl::runMsaaEdges(FrameRecord& frame, PassRun const& r) {
     gl::Program const& p = msaaProgram("EDGES");
     p.use();
     bindDeferredInputs(p, {gbufferTextures(targets.msaa.gbuffer), lights, frame.shading});
-    p.set("uMsaaRelativeDistance", kMsaaThresholds.relativeDistance);
-    p.set("uMsaaNormalCos", kMsaaThresholds.normalCos);
-    p.set("uMsaaAlbedo", kMsaaThresholds.albedo);
+    setMsaaThresholds(p);
     if (!complexQuery) complexQuery = gl::Query::create(GL_SAMPLES_PASSED, "msaa complex pixels");
     complexQuery.begin();  // the drawn fragments are the complex pixels (the mask is single-sampled)
     triangle.draw();
@@ -76,6 +106,59 @@ void RendererImpl::runMsaaResolve(FrameRecord&, PassRun const& r) {
     glDrawBuffers(GLsizei(all.size()), all.data());  // the G-buffer's framebuffer as it was made
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+// msaa volumes (core/frame_passes_msaa.cpp, msaaVolumesPass, declares the groups in this order): edges
+// sets the complex bit and lights the ambient term of the simple and complex pixels; per-sample lights
+// every pixel's averaged ambient term. Then the volumes, drawn once per group of volume states: the
+// simple pixels lit once (edges), then each sample k under its sample mask, lit from sample k.
+void RendererImpl::runMsaaVolumes(FrameRecord& frame, PassRun const& r) {
+    FrameContext const& f = frame.f;
+    bool const edges = f.settings.msaaLighting == MsaaLighting::Edges;
+    DeferredInputs const deferred{gbufferTextures(targets.msaa.gbuffer), lights, frame.shading};
+    glBindFramebuffer(GL_FRAMEBUFFER, r.fbo->id());
+    std::size_t group = 0;
+    auto const fullScreen = [&](gl::Program const& p) {
+        applyGroup(r.decl.states, group++);
+        p.use();
+        bindDeferredInputs(p, deferred);
+        p.set("uLightCount", 0);  // the ambient term (and directional lights) alone, as lightingVolumesPass
+        triangle.draw();
+    };
+    if (edges) {
+        gl::Program const& detect = msaaProgram("EDGES");  // the complex bit, colour writes off
+        detect.use();
+        setMsaaThresholds(detect);
+        fullScreen(detect);
+        fullScreen(msaaProgram("SAMPLE0"));  // ambient of the simple pixels: lit once, at the centre
+    }
+    fullScreen(msaaProgram(""));  // ambient: the samples averaged
+    int const draws = msaaSamples(f.settings.msaa) + (edges ? 1 : 0);
+    std::size_t const perDraw = (r.decl.states.size() - group) / std::size_t(draws);
+    gl::Program const& shade =
+        shaders.variant(ProgramId::LightVolume, "GBL_MSAA_SAMPLES " + std::to_string(targets.msaa.samples));
+    setSamplePositions(shade, targets.msaa);
+    for (int d = 0; d < draws; ++d) {
+        int const sample = edges ? d - 1 : d;  // edges' first: the simple pixels, lit once (-1)
+        shade.use();
+        shade.set("uSample", sample);
+        std::span<DrawState const> const groups =
+            std::span<DrawState const>(r.decl.states).subspan(group + std::size_t(d) * perDraw, perDraw);
+        drawLightVolumes({deferred, volumes, shade, shaders.get(ProgramId::LightVolumeStencil)}, f.viewProj,
+                         f.settings.cull, groups);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+// The multisampled lit image averaged into the lit image (colour only; the lit target's depth is the
+// depth-copy step's).
+void RendererImpl::runMsaaResolveLighting(FrameRecord&, PassRun const& r) {
+    int const w = targets.width, h = targets.height;
+    apply(kWriteAll);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, r.io.blitSource(Resource::MsaaLighting).id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.fbo->id());
+    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

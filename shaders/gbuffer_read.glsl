@@ -8,11 +8,18 @@
 // sample gSample of the pixel. Desktop GL only: WebGL2 has no multisample textures and never builds it.
 #ifdef GBL_MSAA_SAMPLES
 #define GBUFFER_SAMPLER sampler2DMS
+// Below 0: the pixel lit once (the edges strategy's simple pixels): sample 0's attributes, at the
+// pixel's centre (gbufferPosition).
 int gSample = 0;
-#define GBUFFER_FETCH(t, p) texelFetch(t, p, gSample)
+// Where each sample lies in its pixel (0..1; glGetMultisamplefv, read when the targets were made):
+// a layout that rebuilds position unprojects sample k's depth at sample k's own place.
+uniform vec2 uSamplePositions[GBL_MSAA_SAMPLES];
+#define GBUFFER_SAMPLE_OFFSET uSamplePositions[max(gSample, 0)]
+#define GBUFFER_FETCH(t, p) texelFetch(t, p, max(gSample, 0))
 #define GBUFFER_SIZE(t) textureSize(t)
 #else
 #define GBUFFER_SAMPLER sampler2D
+#define GBUFFER_SAMPLE_OFFSET vec2(0.5)
 #define GBUFFER_FETCH(t, p) texelFetch(t, p, 0)
 #define GBUFFER_SIZE(t) textureSize(t, 0)
 #endif
@@ -27,7 +34,22 @@ uniform mat4 uInverseViewProj;  // for layouts that rebuild position from depth
 bool gbufferPosition(ivec2 px, out vec3 position) {
 #ifdef GBUFFER_POSITION_FROM_DEPTH
     float d = GBUFFER_FETCH(uDepth, px).r;
-    vec2 ndc = (vec2(px) + 0.5) / vec2(GBUFFER_SIZE(uDepth)) * 2.0 - 1.0;
+    vec2 at = GBUFFER_SAMPLE_OFFSET;
+#ifdef GBL_MSAA_SAMPLES
+    if (gSample < 0) {
+        // A simple pixel: one plane under every sample, whose window depth is linear on the screen,
+        // so the samples' mean depth lies at their mean place (the centre, as a stored position is).
+        d = 0.0;
+        at = vec2(0.0);
+        for (int i = 0; i < GBL_MSAA_SAMPLES; ++i) {
+            d += texelFetch(uDepth, px, i).r;
+            at += uSamplePositions[i];
+        }
+        d /= float(GBL_MSAA_SAMPLES);
+        at /= float(GBL_MSAA_SAMPLES);
+    }
+#endif
+    vec2 ndc = (vec2(px) + at) / vec2(GBUFFER_SIZE(uDepth)) * 2.0 - 1.0;
     vec4 world = uInverseViewProj * vec4(ndc, d * 2.0 - 1.0, 1.0);
     position = world.xyz / world.w;
     return d < 1.0;  // the geometry pass clears depth to 1 and draws with GL_LESS

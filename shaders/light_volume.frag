@@ -9,6 +9,11 @@
 #include "light_accumulation.glsl"
 
 flat in int vLight;
+#ifdef GBL_MSAA_SAMPLES
+// msaa volumes (docs/msaa.md): the sample lit, the one the draw's sample mask writes, or -1 for the
+// simple pixels of the edges strategy, lit once at the centre and written to every sample.
+uniform int uSample;
+#endif
 layout(location = 0) out vec4 fragColor;
 #ifndef COVERAGE
 layout(location = 1) out vec4 fragSpecular;  // split: specular light (no attachment in single frames)
@@ -16,6 +21,9 @@ layout(location = 1) out vec4 fragSpecular;  // split: specular light (no attach
 
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
+#ifdef GBL_MSAA_SAMPLES
+    gSample = uSample;
+#endif
     vec3 pos;
     bool drawn = gbufferPosition(px, pos);
     // The mesh is a little larger than the light's sphere: surfaces between the two, and the

@@ -57,6 +57,9 @@ void main() {
     fragColor = lit / float(GBL_MSAA_SAMPLES);
     fragSpecular = spec / float(GBL_MSAA_SAMPLES);
 #else
+#ifdef GBL_MSAA_SAMPLE0
+    gSample = -1;  // lit once, at the pixel's centre (gbuffer_read.glsl)
+#endif
     fragColor = shadePixel(px, fragSpecular);
 #endif
 }

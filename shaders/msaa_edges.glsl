@@ -3,7 +3,7 @@
 // core/msaa.h (MsaaThresholds, set as uniforms).
 #ifndef GBL_MSAA_EDGES_GLSL
 #define GBL_MSAA_EDGES_GLSL
-uniform float uMsaaRelativeDistance;  // positions apart by more than this share of the eye distance
+uniform float uMsaaRelativeDistance;  // off sample 0's plane by more than this share of the eye distance
 uniform float uMsaaNormalCos;         // normals whose cosine is below this
 uniform float uMsaaAlbedo;            // albedo or specular apart by more than this in a channel
 
@@ -20,7 +20,9 @@ bool msaaComplexPixel(ivec2 px) {
         bool drawn = gbufferPosition(px, p);
         if (drawn != drawn0) return true;
         if (!drawn) continue;
-        if (length(p - p0) > reach) return true;
+        // Off sample 0's tangent plane: another surface. Along the plane is the pixel's own extent,
+        // which the layouts that rebuild each sample's position at its own place spread over.
+        if (abs(dot(p - p0, n0)) > reach) return true;
         if (dot(gbufferNormal(px), n0) < uMsaaNormalCos) return true;
         vec4 d = abs(gbufferAlbedoSpec(px) - a0);
         if (max(max(d.r, d.g), max(d.b, d.a)) > uMsaaAlbedo) return true;

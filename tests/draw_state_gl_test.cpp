@@ -37,6 +37,9 @@ struct GlState {
     bool stencil = false;
     GLint stencilFunc = 0, stencilRef = 0, stencilValueMask = 0;
     GLint frontZFail = 0, backZFail = 0, frontPass = 0, frontFail = 0;
+    GLint stencilWriteMask = 0;
+    bool sampleMask = false;
+    GLint sampleMaskValue = 0;
     GLboolean colorMask[4]{};
     bool operator==(GlState const&) const = default;
 };
@@ -60,6 +63,9 @@ GlState readGlState() {
     glGetIntegerv(GL_STENCIL_PASS_DEPTH_FAIL, &s.frontZFail);
     glGetIntegerv(GL_STENCIL_PASS_DEPTH_PASS, &s.frontPass);
     glGetIntegerv(GL_STENCIL_BACK_PASS_DEPTH_FAIL, &s.backZFail);
+    glGetIntegerv(GL_STENCIL_WRITEMASK, &s.stencilWriteMask);
+    s.sampleMask = glIsEnabled(GL_SAMPLE_MASK);
+    glGetIntegeri_v(GL_SAMPLE_MASK_VALUE, 0, &s.sampleMaskValue);
     glGetBooleanv(GL_COLOR_WRITEMASK, s.colorMask);
     return s;
 }
@@ -90,24 +96,36 @@ std::string mismatch(GlState const& gl, DrawState const& d) {
     check(gl.cull == (d.cull != FaceCull::Off), "cull enable");
     if (d.cull == FaceCull::Back) check(gl.cullFace == GL_BACK, "cull back");
     if (d.cull == FaceCull::Front) check(gl.cullFace == GL_FRONT, "cull front");
-    check(gl.stencil == (d.stencil != StencilUse::Off), "stencil enable");
+    // msaa edges: the complex bit (core/frame_passes.h, kComplexStencilBit) tested beside the use,
+    // whose marks then keep to the bits below it.
+    GLint const bit = kComplexStencilBit;
+    bool const pixels = d.pixels != MsaaPixels::All;
+    GLint const pixelRef = d.pixels == MsaaPixels::Complex ? bit : 0;
+    GLint const marks = pixels ? 0xFF & ~bit : 0xFF;
+    check(gl.stencil == (d.stencil != StencilUse::Off || pixels), "stencil enable");
     if (d.stencil == StencilUse::Mark)
-        check(gl.stencilFunc == GL_ALWAYS && gl.backZFail == GL_INCR_WRAP && gl.frontZFail == GL_DECR_WRAP,
+        check(gl.stencilFunc == (pixels ? GL_EQUAL : GL_ALWAYS) && gl.backZFail == GL_INCR_WRAP &&
+                  gl.frontZFail == GL_DECR_WRAP && gl.stencilWriteMask == marks,
               "stencil mark");
     if (d.stencil == StencilUse::ShadeMarked)
-        check(gl.stencilFunc == GL_EQUAL && gl.stencilRef == 1 && gl.frontFail == GL_ZERO && gl.frontZFail == GL_ZERO &&
-                  gl.frontPass == GL_ZERO,
+        check(gl.stencilFunc == GL_EQUAL && gl.stencilRef == (1 | pixelRef) && gl.stencilValueMask == 0xFF &&
+                  gl.frontFail == GL_ZERO && gl.frontZFail == GL_ZERO && gl.frontPass == GL_ZERO &&
+                  gl.stencilWriteMask == marks,
               "stencil shade marked");
     if (d.stencil == StencilUse::EqualBits)
         check(gl.stencilFunc == GL_EQUAL && gl.stencilRef == d.stencilRef && gl.stencilValueMask == d.stencilRef &&
                   gl.frontFail == GL_KEEP && gl.frontZFail == GL_KEEP && gl.frontPass == GL_KEEP,
               "stencil equal bits");
     if (d.stencil == StencilUse::MarkComplex)
-        check(gl.stencilFunc == GL_ALWAYS && gl.stencilRef == 1 && gl.frontPass == GL_REPLACE, "stencil mark complex");
-    if (d.stencil == StencilUse::Simple || d.stencil == StencilUse::Complex)
-        check(gl.stencilFunc == GL_EQUAL && gl.stencilRef == (d.stencil == StencilUse::Complex ? 1 : 0) &&
-                  gl.frontPass == GL_KEEP && gl.frontZFail == GL_KEEP,
-              "stencil simple or complex");
+        check(gl.stencilFunc == GL_ALWAYS && gl.stencilRef == bit && gl.frontPass == GL_REPLACE &&
+                  gl.stencilWriteMask == bit,
+              "stencil mark complex");
+    if (d.stencil == StencilUse::Off && pixels)
+        check(gl.stencilFunc == GL_EQUAL && gl.stencilRef == pixelRef && gl.stencilValueMask == bit &&
+                  gl.frontPass == GL_KEEP && gl.frontZFail == GL_KEEP && gl.stencilWriteMask == 0,
+              "stencil simple or complex pixels");
+    check(gl.sampleMask == (d.sample >= 0), "sample mask enable");
+    if (d.sample >= 0) check(gl.sampleMaskValue == (1 << d.sample), "sample mask");
     bool const colour = gl.colorMask[0] && gl.colorMask[1] && gl.colorMask[2] && gl.colorMask[3];
     bool const none = !gl.colorMask[0] && !gl.colorMask[1] && !gl.colorMask[2] && !gl.colorMask[3];
     check(d.colorWrite ? colour : none, "colour write");
@@ -286,6 +304,52 @@ TEST_F(DrawStateGlTest, EveryMsaaCombinationDrawsUnderItsDeclaredState) {
     EXPECT_TRUE(failures.empty()) << failures.size() << " draws under an undeclared state, first ones:\n" << all;
     for (char const* pass : {"geometry", "msaa_edges", "lighting", "lighting_complex", "depth_copy", "display"})
         EXPECT_GT(checked_[pass], 0) << pass << " drew nothing that was checked";
+}
+
+// msaa in volumes mode (each sample under its sample mask, the complex bit beside the volumes'
+// stencil marks) with every cull mode, and in a layout that rebuilds position.
+TEST_F(DrawStateGlTest, EveryMsaaVolumesCullModeAndLayoutDrawsUnderItsDeclaredState) {
+    // per-sample with every cull mode, edges with the two that use the stencil differently (stencil
+    // shares it with the complex bit; flip has two groups per draw): 2 samples keep it short. Then a
+    // layout that rebuilds position, whose volumes test a multisampled copy of the depth-stencil.
+    std::vector<PipelineSettings> frames;
+    for (std::size_t cull = 0; cull < kCullModeNames.size() + 2; ++cull) {
+        PipelineSettings s;
+        s.mode = LightingMode::Volumes;
+        s.cull = cull < kCullModeNames.size()    ? CullMode(cull)
+                 : cull == kCullModeNames.size() ? CullMode::Flip
+                                                 : CullMode::Stencil;
+        s.msaa = Msaa::X2;
+        s.msaaLighting = cull < kCullModeNames.size() ? MsaaLighting::PerSample : MsaaLighting::Edges;
+        frames.push_back(s);
+    }
+    for (LightingMode mode : {LightingMode::Quad, LightingMode::Volumes}) {
+        PipelineSettings s;
+        s.layout = GBufferLayout::Packed;
+        s.mode = mode;
+        s.cull = CullMode::Stencil;
+        s.msaa = Msaa::X2;
+        s.msaaLighting = MsaaLighting::Edges;
+        frames.push_back(s);
+    }
+    std::vector<std::string> failures;
+    for (PipelineSettings const& s : frames) {
+        std::string const label = "msaa 2 " + std::string(enumName(kGBufferLayoutNames, s.layout)) + " " +
+                                  std::string(enumName(kLightingModeNames, s.mode)) + " " +
+                                  std::string(enumName(kMsaaLightingNames, s.msaaLighting)) + " cull " +
+                                  std::string(enumName(kCullModeNames, s.cull));
+        std::vector<PassDecl> const passes = renderer_->framePasses({camera_, lights_, s});
+        bool const resolved = std::any_of(passes.begin(), passes.end(),
+                                          [](PassDecl const& p) { return p.id == PassId::MsaaResolveLighting; });
+        EXPECT_EQ(resolved, s.mode == LightingMode::Volumes) << label << ": the volumes lit the multisampled image";
+        for (std::string const& f : checkFrame({camera_, lights_, s}, label)) failures.push_back(f);
+    }
+    std::string all;
+    for (std::size_t i = 0; i < failures.size() && i < 20; ++i) all += failures[i] + "\n";
+    EXPECT_TRUE(failures.empty()) << failures.size() << " draws under an undeclared state, first ones:\n" << all;
+    for (char const* pass : {"msaa_edges", "lighting", "lighting_complex"})
+        EXPECT_GT(checked_[pass], 0) << pass << " drew nothing that was checked";
+    EXPECT_GT(checkedGroups_["lighting: volumes: front faces"], 0) << "the volumes' draws, sample by sample";
 }
 
 // The check is not vacuous: the light cubes' declaration changed by hand in the passes the

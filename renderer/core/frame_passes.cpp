@@ -1,5 +1,6 @@
 // The declared passes of a frame and the feedback-loop check over them.
 #include "core/frame_passes.h"
+#include "core/frame_passes_parts.h"
 
 #include "core/gbuffer_layout.h"
 #include "core/msaa.h"
@@ -8,11 +9,11 @@
 
 namespace gbl {
 
-namespace {
+namespace detail {
 
 using R = Resource;
 
-PassDecl declare(PassId id, PassKind kind = PassKind::Raster) {
+PassDecl declare(PassId id, PassKind kind) {
     PassDecl p;
     p.id = id;
     p.kind = kind;
@@ -20,7 +21,7 @@ PassDecl declare(PassId id, PassKind kind = PassKind::Raster) {
 }
 
 DrawState state(std::string_view what, DepthTest depthTest, bool depthWrite, Blend blend, FaceCull cull,
-                StencilUse stencil = StencilUse::Off, bool colorWrite = true) {
+                StencilUse stencil, bool colorWrite) {
     return {what, depthTest, depthWrite, blend, cull, stencil, colorWrite};
 }
 
@@ -63,6 +64,14 @@ std::vector<DrawState> sceneStates(std::string_view single, std::string_view bot
 
 DrawState fullScreen(std::string_view what) {
     return state(what, DepthTest::Off, false, Blend::Off, FaceCull::Off);
+}
+
+// `drawn` kept to the msaa edges strategy's simple or complex pixels (core/frame_passes.h), and to
+// one sample (-1: all).
+DrawState onPixels(DrawState drawn, MsaaPixels pixels, int sample) {
+    drawn.pixels = pixels;
+    drawn.sample = sample;
+    return drawn;
 }
 
 // passes/light_volumes.cpp, drawLightVolumes: the draws of one cull mode, each added (blend ONE, ONE).
@@ -136,44 +145,12 @@ PassDecl overlayPass(PassId id, std::vector<Resource> samples, Resource depth, D
     return p;
 }
 
-// --- msaa (docs/msaa.md): the multisampled G-buffer in the classic layout, lit in quad mode.
+}  // namespace detail
 
-constexpr std::initializer_list<Resource> kMsaaColor{R::MsaaPosition, R::MsaaNormal, R::MsaaAlbedoSpec,
-                                                     R::MsaaEmissive};
+namespace {
 
-// Whether the frame lights a multisampled G-buffer (the renderer turns msaa off where it cannot, and
-// says why: core/msaa.h).
-bool msaaFrame(PipelineSettings const& s, bool imported) {
-    return s.msaa != Msaa::Off && !msaaFrameRefusal(s, imported);
-}
-// Whether its lighting reads the samples themselves (not the resolved G-buffer).
-bool lightsSamples(PipelineSettings const& s) {
-    return s.msaaLighting != MsaaLighting::ResolveFirst;
-}
-
-// The complex pixels found: the mask written and the lit target's stencil marked where samples differ.
-PassDecl msaaEdgesPass() {
-    PassDecl p = declare(PassId::MsaaEdges);
-    p.samples = {R::MsaaPosition, R::MsaaNormal, R::MsaaAlbedoSpec};
-    p.color = {R::ComplexMask};
-    p.depthStencil = R::LitDepth;
-    p.stencilWrite = true;
-    p.clears = {R::ComplexMask, R::LitDepth};
-    p.states = {
-        state("mark complex pixels", DepthTest::Off, false, Blend::Off, FaceCull::Off, StencilUse::MarkComplex)};
-    return p;
-}
-
-// The multisampled G-buffer resolved (averaged; depth and stencil: one sample) into the layout's
-// targets, which the views, the depth copy and the counts read as in any frame.
-PassDecl msaaResolvePass() {
-    PassDecl p = declare(PassId::MsaaResolve, PassKind::Blit);
-    p.samples = plus(std::vector<Resource>(kMsaaColor), {R::MsaaDepth});
-    p.color = {R::GBufferPosition, R::GBufferNormal, R::GBufferAlbedoSpec, R::GBufferEmissive};
-    p.depthStencil = R::GBufferDepth;
-    p.depthWrite = p.stencilWrite = true;
-    return p;
-}
+using namespace detail;
+using R = Resource;
 
 PassDecl lightingPass(PipelineSettings const& s, bool split) {
     GBufferLayoutDesc const& d = layoutDesc(s.layout);
@@ -196,26 +173,15 @@ PassDecl lightingPass(PipelineSettings const& s, bool split) {
     }
     PassDecl p = declare(PassId::Lighting);  // full screen into litFbo, or splitFbo (no depth-stencil)
     p.samples = plus(gbufferSamples(d), {R::Lights});
-    if (msaaFrame(s, false) && lightsSamples(s)) p.samples = plus(std::vector<Resource>(kMsaaColor), {R::Lights});
+    if (msaaFrame(s, false) && lightsSamples(s)) p.samples = plus(msaaGBufferSamples(d), {R::Lights});
     p.color = lit;
     p.clears = lit;
     if (!split) p.depthStencil = R::LitDepth;
     p.states = {fullScreen("every light")};
     if (msaaFrame(s, false) && s.msaaLighting == MsaaLighting::Edges) {  // sample 0 of the simple pixels
         p.stencilRead = true;
-        p.states = {state("simple pixels", DepthTest::Off, false, Blend::Off, FaceCull::Off, StencilUse::Simple)};
+        p.states = {onPixels(fullScreen("simple pixels"), MsaaPixels::Simple)};
     }
-    return p;
-}
-
-// msaa edges: the complex pixels, each sample lit, into the lit image beside the simple ones.
-PassDecl lightingComplexPass() {
-    PassDecl p = declare(PassId::MsaaComplex);
-    p.samples = plus(std::vector<Resource>(kMsaaColor), {R::Lights});
-    p.color = {R::Lighting};
-    p.depthStencil = R::LitDepth;
-    p.stencilRead = true;
-    p.states = {state("complex pixels", DepthTest::Off, false, Blend::Off, FaceCull::Off, StencilUse::Complex)};
     return p;
 }
 
@@ -351,7 +317,7 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
         for (GBufferAttachmentDesc const& a : d.colorAttachments()) g.color.push_back(slotResource(a.slot));
         g.depthStencil = R::GBufferDepth;
         if (msaa) {
-            g.color = kMsaaColor;
+            g.color = msaaColor(d);
             g.depthStencil = R::MsaaDepth;
         }
         g.depthRead = g.depthWrite = g.stencilWrite = true;  // stencil cleared
@@ -363,18 +329,26 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
         g.clears = plus(g.color, {*g.depthStencil});
         out.push_back(std::move(g));
         if (msaa) {
-            out.push_back(msaaEdgesPass());
-            if (!lightsSamples(s)) out.push_back(msaaResolvePass());
+            out.push_back(msaaEdgesPass(d));
+            if (!lightsSamples(s)) out.push_back(msaaResolvePass(d));
         }
         if (s.mode == LightingMode::Tiled)
             out.push_back(computePass(PassId::LightLists, {R::GBufferDepth, R::Lights}, {R::TileBins}));
         if (s.mode == LightingMode::Clustered)
             out.push_back(
                 computePass(PassId::LightLists, {R::GBufferDepth, R::Lights}, {R::TileBins, R::ClusterLists}));
-        if (s.mode == LightingMode::Volumes && lightingSamplesDepth(d)) out.push_back(volumeDepthPass());
-        out.push_back(lightingPass(s, split));
-        if (msaa && s.msaaLighting == MsaaLighting::Edges) out.push_back(lightingComplexPass());
-        if (msaa && lightsSamples(s)) out.push_back(msaaResolvePass());
+        // msaa volumes lit from the samples: the multisampled lit image, then resolved (docs/msaa.md).
+        bool const msaaVolumes = msaa && lightsSamples(s) && s.mode == LightingMode::Volumes;
+        if (s.mode == LightingMode::Volumes && lightingSamplesDepth(d))
+            out.push_back(msaaVolumes ? msaaVolumeDepthPass() : volumeDepthPass());
+        if (msaaVolumes) {
+            out.push_back(msaaVolumesPass(s, d));
+            out.push_back(msaaResolveLightingPass());
+        } else {
+            out.push_back(lightingPass(s, split));
+        }
+        if (msaa && !msaaVolumes && s.msaaLighting == MsaaLighting::Edges) out.push_back(lightingComplexPass(d));
+        if (msaa && lightsSamples(s)) out.push_back(msaaResolvePass(d));
         if (split) {
             PassDecl c = litPass(PassId::LightCombine, plus(gbufferSamples(d), {R::DiffuseLight, R::SpecularLight}),
                                  fullScreen("combine"));
@@ -390,7 +364,13 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
     }
     // The light targets of an earlier split frame would otherwise show in this one's views.
     if (!split && !prepass) out.front().clears = plus(out.front().clears, {R::DiffuseLight, R::SpecularLight});
-    if (viewNeedsCoverage(s.view)) out.push_back(coveragePass(s));
+    if (viewNeedsCoverage(s.view)) {
+        // msaa volumes made only the multisampled copy: the counts test the resolved depth's.
+        bool const resolvedCopy =
+            msaaFrame(s, imported) && lightsSamples(s) && s.mode == LightingMode::Volumes && lightingSamplesDepth(d);
+        if (resolvedCopy) out.push_back(volumeDepthPass());
+        out.push_back(coveragePass(s));
+    }
     out.push_back(displayPass(d, R::Display));
     if (s.glassOutline && !imported) out.push_back(glassOutlinePass(R::Display));
     // The overlays, onto the display image: the lit image stays the light sum.

@@ -248,14 +248,15 @@ std::array<PipelineField, 19> const kFields{
          .option = "--volume-scale"}),
     choice<&S::msaa>(kMsaaNames,
                      {.name = "msaa",
-                      .help = "Samples per pixel of the G-buffer: off, 2, 4 or 8 (quad mode, classic layout; "
-                              "docs/msaa.md)",
+                      .help = "Samples per pixel of the G-buffer: off, 2, 4 or 8 (quad and volumes modes, every "
+                              "layout; docs/msaa.md)",
                       .optionalInFiles = kOptional,
                       .sideB = true,
                       .label = "MSAA",
                       .tooltip = "a multisampled G-buffer: the geometry pass stores 2, 4 or 8 samples per pixel;\n"
-                                 "counts the driver refuses are greyed out, and modes or layouts that cannot light\n"
-                                 "it fall back to off with the reason (docs/msaa.md)",
+                                 "counts the driver refuses are greyed out; the modes that cannot light it (tiled,\n"
+                                 "clustered, forward, forward+) and a G-buffer too large for the memory fall back\n"
+                                 "to off with the reason (docs/msaa.md)",
                       .option = "--msaa"}),
     choice<&S::msaaLighting>(kMsaaLightingNames,
                              {.name = "msaa_lighting",

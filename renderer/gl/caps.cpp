@@ -55,6 +55,19 @@ GlCaps detectGlCaps(int limitMajor, int limitMinor) {
         glGetIntegerv(GL_MAX_SAMPLES, &caps.maxSamples);
         glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &caps.maxColorTextureSamples);
         glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &caps.maxDepthTextureSamples);
+        // The vendors' memory queries (their enums, as their extension specifications give them).
+        constexpr GLenum kNvxAvailableKiB = 0x9049;  // GPU_MEMORY_INFO_CURRENT_AVAILABLE_VIDMEM_NVX
+        constexpr GLenum kAtiTextureFree = 0x87FC;   // TEXTURE_FREE_MEMORY_ATI: 4 values, [0] the free KiB
+        GLint values[4] = {0, 0, 0, 0};
+        if (has("GL_NVX_gpu_memory_info")) {
+            glGetIntegerv(kNvxAvailableKiB, values);
+            caps.freeVideoMemorySource = "GL_NVX_gpu_memory_info";
+        } else if (has("GL_ATI_meminfo")) {
+            glGetIntegerv(kAtiTextureFree, values);
+            caps.freeVideoMemorySource = "GL_ATI_meminfo";
+        }
+        caps.freeVideoMemoryKiB = values[0];
+        if (caps.freeVideoMemoryKiB <= 0) caps.freeVideoMemorySource.clear();
     }
     return caps;
 }

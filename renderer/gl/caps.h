@@ -32,6 +32,11 @@ struct GlCaps {
     int maxSamples = 0;
     int maxColorTextureSamples = 0;
     int maxDepthTextureSamples = 0;
+    // Free video memory in KiB at start-up, where the driver reports it (GL_NVX_gpu_memory_info's
+    // available memory, or GL_ATI_meminfo's free texture memory), and which extension said so; 0 and
+    // empty elsewhere. The msaa targets' budget is half of it (docs/msaa.md).
+    long long freeVideoMemoryKiB = 0;
+    std::string freeVideoMemorySource;
 
     bool atLeast(int maj, int min) const { return major > maj || (major == maj && minor >= min); }
 

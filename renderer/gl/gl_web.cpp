@@ -31,6 +31,15 @@ void glTexBuffer(GLenum, GLenum, GLuint) {
 void glTexImage2DMultisample(GLenum, GLsizei, GLenum, GLsizei, GLsizei, GLboolean) {
     missing("glTexImage2DMultisample");
 }
+void glSampleMaski(GLuint, GLbitfield) {
+    missing("glSampleMaski");
+}
+void glGetTexLevelParameteriv(GLenum, GLint, GLenum, GLint*) {
+    missing("glGetTexLevelParameteriv");
+}
+void glGetMultisamplefv(GLenum, GLuint, GLfloat*) {
+    missing("glGetMultisamplefv");
+}
 void glQueryCounter(GLuint, GLenum) {
     missing("glQueryCounter");
 }

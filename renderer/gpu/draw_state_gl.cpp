@@ -47,37 +47,50 @@ void apply(DrawState const& s) {
     enable(GL_CULL_FACE, s.cull != FaceCull::Off);
     glCullFace(s.cull == FaceCull::Front ? GL_FRONT : GL_BACK);
 
-    enable(GL_STENCIL_TEST, s.stencil != StencilUse::Off);
-    glStencilMask(0xFF);
+    // msaa edges: the complex bit tested beside the group's own use, whose marks then keep to the
+    // seven bits below it (core/frame_passes.h, MsaaPixels). Without it every bit is the use's own.
+    GLuint const pixelMask = s.pixels == MsaaPixels::All ? 0u : GLuint(kComplexStencilBit);
+    GLint const pixelRef = s.pixels == MsaaPixels::Complex ? kComplexStencilBit : 0;
+    GLuint const marks = pixelMask ? GLuint(0xFF) & ~pixelMask : 0xFFu;
+    enable(GL_STENCIL_TEST, s.stencil != StencilUse::Off || pixelMask != 0);
+    glStencilMask(marks);
     switch (s.stencil) {
         case StencilUse::Mark:  // only depth failures count: back faces +1, front faces -1
-            glStencilFunc(GL_ALWAYS, 0, 0xFF);
+            glStencilFunc(pixelMask ? GL_EQUAL : GL_ALWAYS, pixelRef, pixelMask ? pixelMask : 0xFFu);
             glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
             glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
             break;
         case StencilUse::ShadeMarked:  // a mark of exactly 1 passes, and every visit resets it
-            glStencilFunc(GL_EQUAL, 1, 0xFF);
+            glStencilFunc(GL_EQUAL, 1 | pixelRef, 0xFF);
             glStencilOp(GL_ZERO, GL_ZERO, GL_ZERO);
             break;
         case StencilUse::EqualBits:  // the read-back's bit planes (renderer_readback.cpp)
             glStencilFunc(GL_EQUAL, s.stencilRef, GLuint(s.stencilRef));
             glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
             break;
-        case StencilUse::MarkComplex:  // every fragment drawn (a complex pixel) marks 1
+        case StencilUse::MarkComplex:  // every fragment drawn (a complex pixel) sets the complex bit
+            glStencilMask(GLuint(kComplexStencilBit));
+            glStencilFunc(GL_ALWAYS, kComplexStencilBit, 0xFF);
+            glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+            break;
         case StencilUse::MarkCovered:  // every fragment drawn (a light cube) marks 1
             glStencilFunc(GL_ALWAYS, 1, 0xFF);
             glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
             break;
-        case StencilUse::Simple:
-        case StencilUse::Complex:
-        case StencilUse::Covered:
-            glStencilFunc(GL_EQUAL, s.stencil == StencilUse::Simple ? 0 : 1, 0xFF);
+        case StencilUse::Covered:  // the blended surfaces again where a cube marked its pixel
+            glStencilFunc(GL_EQUAL, 1, 0xFF);
             glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
             break;
-        case StencilUse::Off:
-            glStencilFunc(GL_ALWAYS, 0, 0xFF);
+        case StencilUse::Off:  // the complex bit alone (and no writes, so the test may run early), or nothing
+            if (pixelMask) glStencilMask(0);
+            glStencilFunc(pixelMask ? GL_EQUAL : GL_ALWAYS, pixelRef, pixelMask ? pixelMask : 0xFFu);
             glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
             break;
+    }
+    // The sample mask (GL 3.2): one sample written, or all. WebGL2 has none, and no msaa frames.
+    if constexpr (!gl::kWebGL2) {
+        enable(GL_SAMPLE_MASK, s.sample >= 0);
+        glSampleMaski(0, s.sample >= 0 ? 1u << unsigned(s.sample) : ~0u);
     }
     GLboolean const c = s.colorWrite ? GL_TRUE : GL_FALSE;
     glColorMask(c, c, c, c);

@@ -5,8 +5,11 @@
 #include "gl/framebuffer.h"
 #include "gl/texture.h"
 
+#include <glm/vec2.hpp>
+
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace gbl {
 
@@ -40,14 +43,23 @@ struct GBuffer {
 // The GL internal format of a layout's texel format.
 GLenum glInternalFormat(TexelFormat f);
 
-// msaa (docs/msaa.md): the multisampled G-buffer the geometry pass draws into (classic layout),
+// msaa (docs/msaa.md): the multisampled G-buffer the geometry pass draws into (the frame's layout),
 // and the complex pixels' mask with the lit target's depth-stencil, whose stencil marks them.
 // Made by createMsaaTargets when a frame first asks for its sample count; empty otherwise.
 struct MsaaTargets {
     int samples = 0;
+    // Each sample's place in its pixel (0..1), as the driver reports it for these targets
+    // (GL_SAMPLE_POSITION): where the layouts that rebuild position unproject each sample's depth.
+    std::vector<glm::vec2> samplePositions;
     GBuffer gbuffer;             // GL_TEXTURE_2D_MULTISAMPLE attachments, one per slot of the layout
     gl::Texture complexMask;     // R8: 1 where the pixel's samples differ (msaa_edges pass)
     gl::Framebuffer complexFbo;  // complexMask + RenderTargets::litDepth
+    // Volumes frames lit from the samples (made with `volumes`): the multisampled lit image the
+    // volumes add into, one sample at a time, and the depth-stencil they test against: the G-buffer's
+    // own, or where the lighting samples the depth a copy (volumeDepth), as in RenderTargets.
+    gl::Texture lighting;     // RGBA16F, `samples` per pixel
+    gl::Texture volumeDepth;  // empty in the layouts that store position
+    gl::Framebuffer litFbo;   // lighting + (volumeDepth or gbuffer.depth)
 };
 
 struct RenderTargets {
@@ -101,8 +113,9 @@ struct RenderTargets {
 // the first incomplete framebuffer's error, if any.
 std::optional<std::string> createRenderTargets(int width, int height, GBufferLayout layout, RenderTargets& out);
 
-// Makes out.msaa for `samples` per pixel at the targets' size and layout (gpu/msaa_targets.cpp); the
-// first incomplete framebuffer's error, if any (out.msaa is then empty).
-std::optional<std::string> createMsaaTargets(int samples, RenderTargets& out);
+// Makes out.msaa for `samples` per pixel at the targets' size and layout (gpu/msaa_targets.cpp), with
+// the volumes' targets when `volumes`; the first incomplete framebuffer's error, or the texture the
+// driver could not allocate (GL_OUT_OF_MEMORY), if any (out.msaa is then empty).
+std::optional<std::string> createMsaaTargets(int samples, bool volumes, RenderTargets& out);
 
 }  // namespace gbl

@@ -75,11 +75,7 @@ char const* stencilWords(StencilUse s) {
         case StencilUse::EqualBits:
             return "stencil passes where the tested bits are set";
         case StencilUse::MarkComplex:
-            return "stencil marks 1 at every pixel drawn (the complex ones; simple pixels discard)";
-        case StencilUse::Simple:
-            return "stencil passes where the mark is 0 (simple pixels)";
-        case StencilUse::Complex:
-            return "stencil passes where the mark is 1 (complex pixels)";
+            return "stencil sets the complex bit at every pixel drawn (the complex ones; simple pixels discard)";
         case StencilUse::MarkCovered:
             return "stencil marks 1 at every pixel drawn (the light cubes)";
         case StencilUse::Covered:
@@ -173,8 +169,11 @@ std::optional<DebugView> resourceView(Resource r) {
             return DebugView::Emissive;
         case Resource::MsaaDepth:
             return DebugView::Depth;
+        case Resource::MsaaLighting:  // resolved into the lit image (msaa_resolve_lighting)
+            return DebugView::Lighting;
         case Resource::PrepassNormal:  // prepass's thin G-buffer: no debug view of its own yet
         case Resource::ComplexMask:
+        case Resource::MsaaVolumeDepth:
         case Resource::VolumeDepth:
         case Resource::LitDepth:
         case Resource::Lights:
@@ -220,6 +219,9 @@ std::vector<std::string> describePass(PassDecl const& p) {
         if (!line.empty() && line[0] >= 'a' && line[0] <= 'z') line[0] = char(line[0] - 'a' + 'A');
         line += s.depthWrite ? ", writes depth" : (s.depthTest != DepthTest::Off ? ", depth read-only" : "");
         line += std::string(", ") + blendWords(s.blend) + ", " + cullWords(s.cull) + ", " + stencilWords(s.stencil);
+        if (s.pixels == MsaaPixels::Simple) line += ", simple pixels only (stencil complex bit 0)";
+        if (s.pixels == MsaaPixels::Complex) line += ", complex pixels only (stencil complex bit 1)";
+        if (s.sample >= 0) line += ", sample " + std::to_string(s.sample) + " only";
         if (!s.colorWrite) line += ", colour writes off";
         out.push_back(line + ".");
     }
