@@ -200,7 +200,8 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
                       {"cull", enumName(kCullModeNames, s.cull)},
                       {"depth_copy", enumName(kDepthCopyNames, s.depthCopy)},
                       {"layout", layout.name},
-                      // forward and forward+ write no G-buffer: 0 (bytes_per_pixel counts what they do write); prepass its thin one (below)
+                      // forward and forward+ write no G-buffer: 0 (bytes_per_pixel counts what they do write); prepass
+                      // its thin one (below)
                       {"gbuffer_bytes_per_pixel", memory.gbuffer ? layoutBytesPerPixel(layout) : 0},
                       {"bytes_per_pixel", memory.bytesPerPixel()},
                       {"memory", memoryParts},

@@ -41,8 +41,8 @@ RendererImpl::RunFunction RendererImpl::runFunction(PassId id) {
                                                                      &RendererImpl::runLightingComplex,
                                                                      &RendererImpl::runMsaaResolve,
                                                                      &RendererImpl::runMsaaResolveLighting,
-&RendererImpl::runThinGBuffer,
-&RendererImpl::runPrepassShading};
+                                                                     &RendererImpl::runThinGBuffer,
+                                                                     &RendererImpl::runPrepassShading};
     return kRun[std::size_t(id)];
 }
 

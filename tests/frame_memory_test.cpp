@@ -63,5 +63,6 @@ TEST(FrameMemory, PrepassCountsItsThinGBufferAndLightTargets) {
                                                       {"thin depth DEPTH32F_STENCIL8", 8.0},
                                                       {"light targets 2 x RGBA16F", 16.0},
                                                       {"lit image RGBA16F", 8.0}}));
-    EXPECT_DOUBLE_EQ(prepass.bytesPerPixel(), double(prepassThinBytesPerPixel(classic) + kPrepassLightBytesPerPixel) + 8.0);
+    EXPECT_DOUBLE_EQ(prepass.bytesPerPixel(),
+                     double(prepassThinBytesPerPixel(classic) + kPrepassLightBytesPerPixel) + 8.0);
 }

@@ -160,11 +160,12 @@ void drawStatsPanel(StatsState const& stats, std::string const& noFragmentCounts
             wrappedText("%.1f MB at %dx%d, %.1f MB at 1080p, %.1f MB at 4K", layoutMegabytes(layout, f.width, f.height),
                         f.width, f.height, layoutMegabytes(layout, 1920, 1080), layoutMegabytes(layout, 3840, 2160));
         } else if (f.modeUsed == LightingMode::Prepass) {  // docs/deferred_lighting.md: a thin one of its own
-            wrappedText("prepass draws none of the layout's attachments: thin G-buffer %d B a pixel (RGBA16F normal "
-                        "and exponent, depth) + light targets %d B; classic %d B, packed %d B",
-                        prepassThinBytesPerPixel(layout), kPrepassLightBytesPerPixel,
-                        layoutBytesPerPixel(layoutDesc(GBufferLayout::Classic)),
-                        layoutBytesPerPixel(layoutDesc(GBufferLayout::Packed)));
+            wrappedText(
+                "prepass draws none of the layout's attachments: thin G-buffer %d B a pixel (RGBA16F normal "
+                "and exponent, depth) + light targets %d B; classic %d B, packed %d B",
+                prepassThinBytesPerPixel(layout), kPrepassLightBytesPerPixel,
+                layoutBytesPerPixel(layoutDesc(GBufferLayout::Classic)),
+                layoutBytesPerPixel(layoutDesc(GBufferLayout::Packed)));
         } else {
             wrappedText("No G-buffer in %s mode", std::string(enumName(kLightingModeNames, f.modeUsed)).c_str());
         }
