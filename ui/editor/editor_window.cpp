@@ -21,6 +21,7 @@
 #include <implot.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string_view>
@@ -111,9 +112,29 @@ void* readViewSettingsOpen(ImGuiContext*, ImGuiSettingsHandler*, char const* nam
     return std::string_view(name) == "View" ? reinterpret_cast<void*>(1) : nullptr;
 }
 
+// "LayoutScale=1.5": the scale the saved dock tree was built for (LayoutState::builtScale); a tree
+// built for another scale is built again at the first frame. Returns whether the line was this key.
+bool readLayoutScaleLine(Editor& editor, std::string_view text) {
+    std::string const key = std::string(ui::kLayoutScaleKey) + "=";
+    if (text.substr(0, key.size()) != key) return false;
+    std::string const value(text.substr(key.size()));
+    char* end = nullptr;
+    float const scale = std::strtof(value.c_str(), &end);
+    if (value.empty() || *end != '\0' || !std::isfinite(scale) || scale <= 0.0f) {
+        ui::logMessage(editor.state.log,
+                       editor.style.iniPath + ": LayoutScale \"" + value +
+                           "\" is not a positive number; the window layout is kept as saved.",
+                       true);
+        return true;
+    }
+    editor.state.layout.builtScale = scale;
+    return true;
+}
+
 void readViewSettingsLine(ImGuiContext*, ImGuiSettingsHandler* handler, void*, char const* line) {
     auto& editor = *static_cast<Editor*>(handler->UserData);
     std::string_view const text(line);
+    if (readLayoutScaleLine(editor, text)) return;
     std::string const key = std::string(ui::kUiScaleKey) + "=";
     if (text.substr(0, key.size()) != key) return;
     std::string error;
@@ -133,6 +154,8 @@ void readViewSettingsLine(ImGuiContext*, ImGuiSettingsHandler* handler, void*, c
 void writeViewSettings(ImGuiContext*, ImGuiSettingsHandler* handler, ImGuiTextBuffer* out) {
     auto const& editor = *static_cast<Editor const*>(handler->UserData);
     out->appendf("[gbuffer-lab][View]\n%s\n", ui::uiScaleLine(editor.state.layout.scale.saved).c_str());
+    if (editor.state.layout.builtScale > 0.0f)
+        out->appendf("%s=%s\n", ui::kLayoutScaleKey.data(), ui::uiScaleText(editor.state.layout.builtScale).c_str());
     out->append("\n");
 }
 

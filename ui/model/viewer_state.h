@@ -113,6 +113,9 @@ struct GBufferPanelState {
     // Each viewer's image at zoom 1 in window coordinates (x, y, width, height) as last drawn, for
     // the frame log (UI layout, not saved).
     std::array<glm::vec4, 5> imageRects{};
+    // The first viewer's image area (its cell below the toolbar) as last drawn: the dock layout
+    // fits the strip's height to it (panels/layout.h, fitStripHeight).
+    glm::vec2 imageArea{0.0f};
     // Set by the loop each frame: the lighting mode writes no G-buffer (forward), so every viewer
     // says so instead of showing a blank or stale image.
     bool noGBuffer = false;
