@@ -117,7 +117,12 @@ AttenuationPlotMarks drawAttenuationPlot(PointLight const& light, bool logScale,
         // The legend in one row above the plotting area where that row fits the plot's width: inside
         // its corner it covered the radius's label on a short plot ("r = 4.95" at 1280x720, issue 46).
         ImPlotLegendFlags const legend = ImPlotLegendFlags_NoButtons | ImPlotLegendFlags_NoMenus;
-        if (legendFitsAbove(ghost != nullptr, size.x > 0.0f ? size.x : ImGui::GetContentRegionAvail().x))
+        bool const legendAbove =
+            legendFitsAbove(ghost != nullptr, size.x > 0.0f ? size.x : ImGui::GetContentRegionAvail().x);
+        // The radius's label high in the plot, clear of the pixel's label at its foot, where the
+        // legend leaves that corner free.
+        double const radiusLevel = level(legendAbove ? 0.6 : 0.3);
+        if (legendAbove)
             ImPlot::SetupLegend(ImPlotLocation_North,
                                 legend | ImPlotLegendFlags_Outside | ImPlotLegendFlags_Horizontal);
         else
@@ -139,10 +144,10 @@ AttenuationPlotMarks drawAttenuationPlot(PointLight const& light, bool logScale,
         if (c.radius > 0.0f && (c.radius <= c.maxDistance || g)) {
             // "r = OLD -> NEW" while a ghost is shown; held inside the plot when past the axis.
             if (g)
-                ImPlot::Annotation(double(std::min(c.radius, c.maxDistance)), level(0.3), radiusColour, ImVec2(4, 0),
+                ImPlot::Annotation(double(std::min(c.radius, c.maxDistance)), radiusLevel, radiusColour, ImVec2(4, 0),
                                    true, "r = %.2f → %.2f", g->radius, c.radius);
             else
-                ImPlot::Annotation(double(std::min(c.radius, c.maxDistance)), level(0.3), radiusColour, ImVec2(4, 0),
+                ImPlot::Annotation(double(std::min(c.radius, c.maxDistance)), radiusLevel, radiusColour, ImVec2(4, 0),
                                    true, "r = %.2f", c.radius);
         }
         if (pixelDistance && *pixelDistance > c.maxDistance) {
