@@ -20,6 +20,12 @@ constexpr char const* kDockSpaceName = "gbl-dockspace";
 // its images: the viewport's image, whose aspect the viewers show, changes with each fit.
 constexpr int kStripFitFrames = 8;
 
+// At scale 1 the strip keeps its share (kViewerStrip, tuned for the images at 1280x720), so a frame's
+// size is the same from the first frame on, as scripts and captures expect; a larger scale fits it.
+int stripFitFrames(float scale) {
+    return scale > 1.0f ? kStripFitFrames : 0;
+}
+
 // Docks `windows` as tabs of `node`, in this order, the first one shown.
 void dockTabs(ImGuiID node, std::initializer_list<EditorWindow> windows) {
     short order = 0;
@@ -120,7 +126,7 @@ void beginLayout(LayoutState& state) {
         state.resetRequested = false;
         state.builtKind = kind;
         state.builtScale = scale;
-        state.stripFit = {kStripFitFrames, work};
+        state.stripFit = {stripFitFrames(scale), work};
         // The fitted windows' saved heights were of the old tree's nodes: fit again in the new one.
         state.lessonFit = {};
         state.lightsFit = {};
@@ -128,7 +134,8 @@ void beginLayout(LayoutState& state) {
         state.builtKind = kind;  // a tree from an older layout file: taken as made for this scale
         state.builtScale = scale;
     }
-    if (work != state.stripFit.workSize && work.x > 0.0f && work.y > 0.0f) state.stripFit = {kStripFitFrames, work};
+    if (work != state.stripFit.workSize && work.x > 0.0f && work.y > 0.0f)
+        state.stripFit = {stripFitFrames(scale), work};
     state.dockBuilt = true;
     // The presentation layout keeps the dock tree (every window's place) alive without drawing it or
     // its host window (which would cover the presentation window).
