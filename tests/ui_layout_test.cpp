@@ -90,6 +90,28 @@ TEST(UiLayout, ColumnsGrowWithTheUiScale) {
     EXPECT_EQ(defaultWindowRect(EditorWindow::GBuffer, pos, small, 1.0f).size.y, std::floor(461.0f * kViewerStrip));
 }
 
+// Issue 46: two side columns while both leave the viewport half the width, else one column that
+// holds its windows' rows at the scale and still leaves the viewport half the width.
+TEST(UiLayout, LargeScalesGetOneSideColumn) {
+    glm::vec2 const hd(1280, 701), wide(1600, 881);
+    EXPECT_EQ(chooseDockLayout(hd, 1.0f), DockLayoutKind::TwoColumns);
+    EXPECT_EQ(chooseDockLayout(wide, 1.0f), DockLayoutKind::TwoColumns);
+    EXPECT_EQ(chooseDockLayout({640, 461}, 1.0f), DockLayoutKind::TwoColumns);  // scale 1: as before
+    EXPECT_EQ(chooseDockLayout(hd, 1.25f), DockLayoutKind::OneColumn);          // 375 + 400 px > 640
+    EXPECT_EQ(chooseDockLayout(wide, 1.25f), DockLayoutKind::TwoColumns);       // 375 + 400 px <= 800
+    for (float scale : {1.5f, 2.0f}) {
+        for (glm::vec2 size : {hd, wide}) {
+            EXPECT_EQ(chooseDockLayout(size, scale), DockLayoutKind::OneColumn) << size.x << " at " << scale;
+            float const column = oneColumnShare(size, scale) * size.x;
+            EXPECT_GE(column, scaledPixels(kOneColumnLeastPx, scale)) << size.x << " at " << scale;
+            EXPECT_LE(column, kViewportHalf * size.x) << size.x << " at " << scale;
+        }
+    }
+    EXPECT_FLOAT_EQ(oneColumnShare(wide, 1.5f), kOneColumnShare);      // 426 px least, 480 px share
+    EXPECT_FLOAT_EQ(oneColumnShare({800, 600}, 3.0f), kViewportHalf);  // the viewport keeps half
+    EXPECT_STREQ(dockLayoutName(DockLayoutKind::OneColumn), "one column");
+}
+
 // The first window without --size: 1600x900 on a 1280x720 screen opens at the screen's size,
 // a larger screen keeps 1600x900, a 2x content scale halves what fits.
 namespace {

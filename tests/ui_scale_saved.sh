@@ -4,7 +4,9 @@
 # with Ctrl+Q; the frame log says the scale in use:
 # - a saved UiScale=1.25 comes back, and is written back on quitting;
 # - --ui-scale 2 wins over it for that run and leaves the saved value alone;
-# - a bad saved value (UiScale=abc) gets one message naming the file, and the editor runs at 1.
+# - a bad saved value (UiScale=abc) gets one message naming the file, and the editor runs at 1;
+# - the scale the dock tree was built for is saved beside it (LayoutScale=1.23: the drawn text's scale, issue 46: a tree
+#   saved at another scale is built again); a bad one (LayoutScale=abc) gets one message.
 # usage: ui_scale_saved.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
 set -eu
 bin="$1"
@@ -30,7 +32,9 @@ run saved
 [ "$(field uiScale)" = 1.2500 ] || fail "the saved scale 1.25 did not come back: uiScale $(field uiScale)"
 ui_quit
 grep -qx 'UiScale=1.25' "$ini" || fail "imgui.ini lost the scale on quitting: $(cat "$ini")"
-echo "saved: uiScale 1.25 read and written back"
+# The layout's scale is the drawn text's (ui/panels/fonts.h, uiScaleFactor): 16 px over 13 at 1.25.
+grep -qx 'LayoutScale=1.2[0-9]*' "$ini" || fail "imgui.ini does not say the layout's scale: $(cat "$ini")"
+echo "saved: uiScale 1.25 read and written back, with $(grep LayoutScale "$ini")"
 
 run override --ui-scale 2
 [ "$(field uiScale)" = 2.0000 ] || fail "--ui-scale 2 did not win over the saved 1.25: uiScale $(field uiScale)"
@@ -45,4 +49,12 @@ grep -c "UiScale must be a number between 0.75 and 3" "$work/bad.log" | grep -qx
     fail "no single message about the bad saved scale: $(cat "$work/bad.log")"
 ui_quit
 echo "bad: $(grep 'UiScale must' "$work/bad.log")"
+
+printf '[gbuffer-lab][View]\nUiScale=1\nLayoutScale=abc\n\n' > "$ini"
+run badlayout
+[ "$(field uiScale)" = 1.0000 ] || fail "a bad LayoutScale changed the scale: uiScale $(field uiScale)"
+grep -c 'LayoutScale "abc" is not a positive number' "$work/badlayout.log" | grep -qx 1 ||
+    fail "no single message about the bad LayoutScale: $(cat "$work/badlayout.log")"
+ui_quit
+echo "bad layout scale: $(grep 'LayoutScale "abc"' "$work/badlayout.log")"
 echo "ui_scale_saved: PASS"

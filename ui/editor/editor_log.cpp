@@ -108,6 +108,8 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.presentationCaption = state.layout.presentationCaption;
     line.presentationItem = state.layout.presentationItemRect;
     line.uiScale = state.layout.scale.current;
+    line.dockLayout = ui::dockLayoutName(state.layout.builtKind);
+    line.viewerArea = state.gbuffer.imageArea;
     for (std::size_t i = 0; i < state.layout.docks.size(); ++i) {
         ui::WindowDock const& d = state.layout.docks[i];
         char id[16];

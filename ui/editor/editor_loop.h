@@ -207,6 +207,9 @@ void initImGui(Editor& editor);
 // Applies a UI scale asked for during the last frame (View > UI scale): style, font atlas and the
 // backend's font texture. Called before the frame's ImGui::NewFrame.
 void applyRequestedUiScale(Editor& editor);
+// Registers the editor's section of imgui.ini ("[gbuffer-lab][View]": UiScale=, LayoutScale=) with
+// ImGui, read before the first frame and written with the layout (editor_view_settings.cpp).
+void addViewSettingsHandler(Editor& editor);
 // Answers the UI test script's questions about this editor (ui/script/ui_script.h, ScriptHost).
 void connectScriptHost(Editor& editor);
 // Reports the script's outcome, ends the session cleanly and releases ImGui and GL objects; the exit code.

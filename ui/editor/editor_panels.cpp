@@ -243,10 +243,16 @@ EditRequest drawPanels(Editor& editor, FrameTimes const& times) {
     // tree is kept as it is).
     ui::LessonState const& lesson = editor.course.lessons;
     if (!state.layout.presentation) {
+        // The viewport's image as drawn this frame: the frame the viewers show next has its size.
+        glm::vec4 const image = state.viewport.imageRect;
+        ui::fitStripHeight(state.layout.stripFit, state.gbuffer.imageArea, glm::ivec2(image.z, image.w));
         ui::fitWindowHeight(state.layout.lessonFit, ui::EditorWindow::Lessons, lesson.lesson >= 0,
                             long(lesson.lesson) * 100000 + lesson.step * 100 + lesson.hintsShown, lesson.regionShortPx);
+        // In the one-column layout the plot shares its column with the lesson or the course, which
+        // keeps its first rows.
+        int const keepLines = state.layout.builtKind == ui::DockLayoutKind::OneColumn ? 4 : 1;
         ui::fitWindowHeight(state.layout.lightsFit, ui::EditorWindow::Lights, state.lightsPanel.plotShortPx >= 0.0f,
-                            state.lightsPanel.selected, std::max(0.0f, state.lightsPanel.plotShortPx));
+                            state.lightsPanel.selected, std::max(0.0f, state.lightsPanel.plotShortPx), keepLines);
     }
     ui::recordDocks(state.layout);
     ui::drawSceneLoadingUi(editor.loading);

@@ -21,6 +21,7 @@
 #include <implot.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string_view>
@@ -107,48 +108,6 @@ std::string layoutFilePath(ui::LogState& log) {
     std::fprintf(stderr, "gbuffer-lab: %s\n", line.c_str());
     ui::logMessage(log, line, true);
     return {};
-}
-
-// The UI scale's entry in imgui.ini, "[gbuffer-lab][View]" with a line "UiScale=1.5": kept with the
-// window layout, read before the first frame, written whenever ImGui saves the layout.
-void* readViewSettingsOpen(ImGuiContext*, ImGuiSettingsHandler*, char const* name) {
-    return std::string_view(name) == "View" ? reinterpret_cast<void*>(1) : nullptr;
-}
-
-void readViewSettingsLine(ImGuiContext*, ImGuiSettingsHandler* handler, void*, char const* line) {
-    auto& editor = *static_cast<Editor*>(handler->UserData);
-    std::string_view const text(line);
-    std::string const key = std::string(ui::kUiScaleKey) + "=";
-    if (text.substr(0, key.size()) != key) return;
-    std::string error;
-    auto const scale =
-        ui::parseUiScale(text.substr(key.size()), editor.style.iniPath + ": " + key.substr(0, key.size() - 1), &error);
-    if (!scale) {
-        std::string const sentence =
-            error + "; the UI stays at scale " + ui::uiScaleText(editor.state.layout.scale.current) + ".";
-        ui::logMessage(editor.state.log, sentence, true);
-        return;
-    }
-    ui::UiScaleState& state = editor.state.layout.scale;
-    state.saved = *scale;
-    if (!state.fromCommandLine) state.current = *scale;
-}
-
-void writeViewSettings(ImGuiContext*, ImGuiSettingsHandler* handler, ImGuiTextBuffer* out) {
-    auto const& editor = *static_cast<Editor const*>(handler->UserData);
-    out->appendf("[gbuffer-lab][View]\n%s\n", ui::uiScaleLine(editor.state.layout.scale.saved).c_str());
-    out->append("\n");
-}
-
-void addViewSettingsHandler(Editor& editor) {
-    ImGuiSettingsHandler handler;
-    handler.TypeName = "gbuffer-lab";
-    handler.TypeHash = ImHashStr("gbuffer-lab");
-    handler.ReadOpenFn = readViewSettingsOpen;
-    handler.ReadLineFn = readViewSettingsLine;
-    handler.WriteAllFn = writeViewSettings;
-    handler.UserData = &editor;
-    ImGui::GetCurrentContext()->SettingsHandlers.push_back(handler);
 }
 
 // Sets the UI scale's style and text size.

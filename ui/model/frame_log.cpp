@@ -151,6 +151,8 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += std::string(",\"overview\":") + (l.overview ? "true" : "false");
     out += ",\"overviewButton\":" + rect(l.overviewButton) + ",\"overviewCells\":" + strings(l.overviewCells);
     out += ",\"uiScale\":" + number(l.uiScale);
+    out += ",\"dockLayout\":" + quoted(l.dockLayout);
+    out += ",\"viewerArea\":[" + number(l.viewerArea.x) + "," + number(l.viewerArea.y) + "]";
     out += ",\"docks\":" + strings(l.docks);
     out += ",\"windowTabs\":" + flatRects(l.windowTabs);
     out += ",\"lightsWindow\":" + rect(l.lightsWindow) + ",\"plotRect\":" + rect(l.plotRect) +

@@ -134,7 +134,9 @@ struct FrameLogLine {
     bool presentation = false;
     glm::vec4 presentationCaption{0.0f};
     glm::vec4 presentationItem{0.0f};
-    float uiScale = 1.0f;  // the UI scale in use (model/ui_scale.h: View > UI scale, --ui-scale)
+    float uiScale = 1.0f;        // the UI scale in use (model/ui_scale.h: View > UI scale, --ui-scale)
+    glm::vec2 viewerArea{0.0f};  // the first G-buffer viewer's image area (GBufferPanelState::imageArea)
+    std::string dockLayout;      // the kind of default dock layout last built (model/layout_state.h, dockLayoutName)
     // Each editor window's dock node as "NAME=ID" (ID in hex, 0 when floating or not drawn) and its
     // tab (docked) or title bar (floating) as one flat array of rectangles, in EditorWindow order
     // (model/layout_state.h): a window dragged into another's tab bar then shares its ID.

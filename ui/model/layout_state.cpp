@@ -23,6 +23,22 @@ LayoutShares layoutShares(glm::vec2 workSize, float uiScale) {
     return s;
 }
 
+char const* dockLayoutName(DockLayoutKind kind) {
+    return kind == DockLayoutKind::OneColumn ? "one column" : "two columns";
+}
+
+DockLayoutKind chooseDockLayout(glm::vec2 workSize, float uiScale) {
+    if (uiScale <= 1.0f || workSize.x <= 0.0f) return DockLayoutKind::TwoColumns;
+    float const sides = scaledPixels(kLeftColumnLeastPx, uiScale) + scaledPixels(kRightColumnLeastPx, uiScale);
+    return sides <= (1.0f - kViewportHalf) * workSize.x ? DockLayoutKind::TwoColumns : DockLayoutKind::OneColumn;
+}
+
+float oneColumnShare(glm::vec2 workSize, float uiScale) {
+    if (workSize.x <= 0.0f) return kOneColumnShare;
+    float const least = scaledPixels(kOneColumnLeastPx, std::max(uiScale, 1.0f)) / workSize.x;
+    return std::min(std::max(kOneColumnShare, least), 1.0f - kViewportHalf);
+}
+
 LayoutSplits defaultSplits(glm::vec2 workSize, float uiScale) {
     LayoutShares const shares = layoutShares(workSize, uiScale);
     LayoutSplits s;

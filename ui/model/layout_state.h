@@ -57,10 +57,33 @@ struct DockHeightFit {
     std::vector<std::pair<unsigned, float>> saved;
 };
 
+// Which default dock layout fits the work area at a UI scale (chooseDockLayout): two side columns
+// beside the viewport (Lights over Pipeline left; Pixel inspector, Lessons, Stats, Log right), or at
+// a large scale one side column of two tabbed nodes (Lights, Pipeline and Pixel inspector over
+// Lessons, Stats and Log), since two columns wide enough for their text would leave the viewport
+// less than half the width.
+enum class DockLayoutKind { TwoColumns, OneColumn };
+char const* dockLayoutName(DockLayoutKind kind);  // "two columns", "one column" (the frame log)
+
+// The G-buffer strip's height fitted to its images (panels/layout.h, fitStripHeight): the frames
+// left to try after the layout was built, each taking the strip's spare height (or what its images
+// lack) from the band above it.
+struct StripFit {
+    int triesLeft = 0;
+    glm::vec2 workSize{0.0f};  // the work area it last fitted
+};
+
 struct LayoutState {
     bool resetRequested = false;  // "Reset layout" in the View menu
     bool dockBuilt = false;       // the dock tree exists (from imgui.ini or built this session)
-    UiScaleState scale;           // the View menu's UI scale, kept in imgui.ini with the layout
+    // The kind and UI scale (uiScaleFactor) the dock tree was built for: a scale that differs from
+    // this one (View > UI scale, or a layout file written at another scale) or a window whose size
+    // asks for the other kind builds the default layout again. builtScale 0: a tree from a layout
+    // file that did not say (kept as it is until the scale changes).
+    DockLayoutKind builtKind = DockLayoutKind::TwoColumns;
+    float builtScale = 0.0f;
+    StripFit stripFit;
+    UiScaleState scale;  // the View menu's UI scale, kept in imgui.ini with the layout
     std::array<WindowDock, kEditorWindowNames.size()> docks{};  // EditorWindow order, as last drawn
     glm::vec4 fileMenuRect{0.0f};                               // the menu bar's "File", for the frame log
     glm::vec4 viewMenuRect{0.0f};                               // its "View"
@@ -126,6 +149,24 @@ TileRect defaultWindowRect(EditorWindow window, glm::vec2 workPos, glm::vec2 wor
 
 // The boundaries the fractions above (and the least sizes at this scale) give.
 LayoutSplits defaultSplits(glm::vec2 workSize, float uiScale);
+
+// The one-column layout (DockLayoutKind::OneColumn). The side column's least width at scale 1: the
+// widest of its windows' rows (a lesson's buttons, the Stats and Pixel inspector tables: about 256 px
+// at scale 1) with a scrollbar beside them; it takes at least kOneColumnShare of the width, and never more than leaves
+// the viewport kViewportHalf of it. The column's upper node (Lights, Pipeline, Pixel inspector)
+// takes kOneColumnTopShare of the band above the strip; Lessons, Stats and Log share the rest.
+inline constexpr float kOneColumnLeastPx = 284.0f;
+inline constexpr float kOneColumnShare = 0.30f;
+inline constexpr float kOneColumnTopShare = 0.50f;
+inline constexpr float kViewportHalf = 0.50f;
+
+// Two columns while both, at their least widths at this scale, leave the viewport at least
+// kViewportHalf of the width (at scale 1 or below always, as before there was a scale); otherwise
+// one column.
+DockLayoutKind chooseDockLayout(glm::vec2 workSize, float uiScale);
+
+// The one side column's share of the work area's width at this size and scale.
+float oneColumnShare(glm::vec2 workSize, float uiScale);
 
 // The smallest width or height a window keeps in the default layout, at scale 1.
 inline constexpr float kTileLeastPx = 48.0f;

@@ -48,5 +48,8 @@ std::string uiScaleText(float scale);
 // The scale's line in the layout file ("UiScale=1.5") and its reading; the key is kUiScaleKey.
 inline constexpr std::string_view kUiScaleKey = "UiScale";
 std::string uiScaleLine(float scale);
+// The layout file's line naming the scale the saved dock tree was built for (model/layout_state.h,
+// LayoutState::builtScale): "LayoutScale=1.5".
+inline constexpr std::string_view kLayoutScaleKey = "LayoutScale";
 
 }  // namespace gbl::ui

@@ -117,6 +117,9 @@ struct GBufferPanelState {
     // Each viewer's image at zoom 1 in window coordinates (x, y, width, height) as last drawn, for
     // the frame log (UI layout, not saved).
     std::array<glm::vec4, 5> imageRects{};
+    // The first viewer's image area (its cell below the toolbar) as last drawn: the dock layout
+    // fits the strip's height to it (panels/layout.h, fitStripHeight).
+    glm::vec2 imageArea{0.0f};
     // Set by the loop each frame: why the lighting mode writes none of the layout's G-buffer (the
     // forward modes; prepass, whose thin one is its own), which every viewer says instead of showing
     // a blank or stale image; empty when it writes it (noGBufferNote).

@@ -57,6 +57,23 @@ constexpr ImPlotFlags kPlotFlags = ImPlotFlags_NoMenus | ImPlotFlags_NoBoxSelect
 // A horizontal marked line with no legend entry (the flags are two enums).
 constexpr ImPlotItemFlags kHorizontalUnlisted = int(ImPlotItemFlags_NoLegend) | int(ImPlotInfLinesFlags_Horizontal);
 constexpr ImPlotAxisFlags kAxisFlags = ImPlotAxisFlags_Lock | ImPlotAxisFlags_NoMenus | ImPlotAxisFlags_NoHighlight;
+// The legend's labels (the ghost's first while one is shown), as the plot draws them below.
+constexpr char const* kGhostLabel = "before the drag";
+constexpr char const* kClassicLabel = "1/(Kc+Kl d+Kq d²)";
+constexpr char const* kAppliedLabel = "applied";
+
+// Whether the legend's entries fit in one row across a plot `width` wide (ImPlot's horizontal
+// legend: each entry an icon a line high and its label, between the legend's paddings).
+bool legendFitsAbove(bool withGhost, float width) {
+    ImPlotStyle const& style = ImPlot::GetStyle();
+    float const line = ImGui::GetTextLineHeight();
+    float w = 2.0f * (style.LegendInnerPadding.x + style.LegendPadding.x);
+    for (char const* label : {kGhostLabel, kClassicLabel, kAppliedLabel}) {
+        if (label == kGhostLabel && !withGhost) continue;
+        w += line + ImGui::CalcTextSize(label, nullptr, true).x + style.LegendSpacing.x;
+    }
+    return w <= width;
+}
 }  // namespace
 
 float attenuationPlotAxis(PointLight const& light, float fixedMaxDistance, PointLight const* ghost) {
@@ -81,7 +98,7 @@ AttenuationPlotMarks drawAttenuationPlot(PointLight const& light, bool logScale,
     float const yTop = peak * 1.05f;
     float const yBottom = logScale ? light.threshold * 0.1f : 0.0f;
     // A height at fraction f of the value axis (of its logarithm on a log axis): the marks' labels sit
-    // low in the plot, clear of the legend in its top right corner and of the curves' fall at the left.
+    // low in the plot, clear of the curves' fall at the left.
     auto level = [&](double f) {
         return logScale ? double(yBottom) * std::pow(double(yTop) / double(yBottom), f)
                         : double(yBottom) + f * double(yTop - yBottom);
@@ -97,7 +114,19 @@ AttenuationPlotMarks drawAttenuationPlot(PointLight const& light, bool logScale,
         if (logScale) ImPlot::SetupAxisScale(ImAxis_Y1, ImPlotScale_Log10);
         ImPlot::SetupAxisLimits(ImAxis_X1, 0.0, double(c.maxDistance), ImPlotCond_Always);
         ImPlot::SetupAxisLimits(ImAxis_Y1, double(yBottom), double(yTop), ImPlotCond_Always);
-        ImPlot::SetupLegend(ImPlotLocation_NorthEast, ImPlotLegendFlags_NoButtons | ImPlotLegendFlags_NoMenus);
+        // The legend in one row above the plotting area where that row fits the plot's width: inside
+        // its corner it covered the radius's label on a short plot ("r = 4.95" at 1280x720, issue 46).
+        ImPlotLegendFlags const legend = ImPlotLegendFlags_NoButtons | ImPlotLegendFlags_NoMenus;
+        bool const legendAbove =
+            legendFitsAbove(ghost != nullptr, size.x > 0.0f ? size.x : ImGui::GetContentRegionAvail().x);
+        // The radius's label high in the plot, clear of the pixel's label at its foot, where the
+        // legend leaves that corner free.
+        double const radiusLevel = level(legendAbove ? 0.6 : 0.3);
+        if (legendAbove)
+            ImPlot::SetupLegend(ImPlotLocation_North,
+                                legend | ImPlotLegendFlags_Outside | ImPlotLegendFlags_Horizontal);
+        else
+            ImPlot::SetupLegend(ImPlotLocation_NorthEast, legend);
         int const n = int(c.distance.size());
 
         // The threshold: where the classic curve crosses it is, by definition, the radius.
@@ -115,10 +144,10 @@ AttenuationPlotMarks drawAttenuationPlot(PointLight const& light, bool logScale,
         if (c.radius > 0.0f && (c.radius <= c.maxDistance || g)) {
             // "r = OLD -> NEW" while a ghost is shown; held inside the plot when past the axis.
             if (g)
-                ImPlot::Annotation(double(std::min(c.radius, c.maxDistance)), level(0.3), radiusColour, ImVec2(4, 0),
+                ImPlot::Annotation(double(std::min(c.radius, c.maxDistance)), radiusLevel, radiusColour, ImVec2(4, 0),
                                    true, "r = %.2f → %.2f", g->radius, c.radius);
             else
-                ImPlot::Annotation(double(std::min(c.radius, c.maxDistance)), level(0.3), radiusColour, ImVec2(4, 0),
+                ImPlot::Annotation(double(std::min(c.radius, c.maxDistance)), radiusLevel, radiusColour, ImVec2(4, 0),
                                    true, "r = %.2f", c.radius);
         }
         if (pixelDistance && *pixelDistance > c.maxDistance) {
@@ -134,13 +163,14 @@ AttenuationPlotMarks drawAttenuationPlot(PointLight const& light, bool logScale,
         // form faint, and bright what the renderer adds.
         if (g) {
             std::vector<float> const ghostValues = shown(g->applied, yBottom);
-            ImPlot::PlotLine("before the drag", g->distance.data(), ghostValues.data(), n,
+            ImPlot::PlotLine(kGhostLabel, g->distance.data(), ghostValues.data(), n,
                              lineSpec(colour(255, 255, 255, 80), 2.0f));
         }
         std::vector<float> const classic = shown(c.classic, yBottom), applied = shown(c.applied, yBottom);
-        ImPlot::PlotLine("1/(Kc+Kl d+Kq d²)", c.distance.data(), classic.data(), n,
+        ImPlot::PlotLine(kClassicLabel, c.distance.data(), classic.data(), n,
                          lineSpec(colour(150, 150, 150, 160), 1.0f));
-        ImPlot::PlotLine("applied", c.distance.data(), applied.data(), n, lineSpec(colour(255, 255, 255, 255), 2.0f));
+        ImPlot::PlotLine(kAppliedLabel, c.distance.data(), applied.data(), n,
+                         lineSpec(colour(255, 255, 255, 255), 2.0f));
 
         ImPlotRect const limits = ImPlot::GetPlotLimits();
         marks.axisMax = float(limits.X.Max);

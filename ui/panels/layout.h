@@ -19,10 +19,17 @@ void placeFrameWindow();
 // Called after `window` was drawn: while it `wants` the height and lacks `shortPx` pixels (the
 // Lessons window its region's least lines, LessonState::regionShortPx; the Lights window its
 // plot's least height), its dock node takes that height from the nodes above and below it in its
-// column (each keeps a tab and a line), on the frames after it first wanted it, after `key` (what
-// it shows) changed, the window resized or the UI scale changed; the user's drags in between
-// stand. When it no longer wants the height the column's heights are put back as they were.
-void fitWindowHeight(DockHeightFit& fit, EditorWindow window, bool wants, long key, float shortPx);
+// column (each keeps a tab and `keepLines` lines), on the frames after it first wanted it, after
+// `key` (what it shows) changed, the window resized or the UI scale changed; the user's drags in
+// between stand. When it no longer wants the height the column's heights are put back as they were.
+void fitWindowHeight(DockHeightFit& fit, EditorWindow window, bool wants, long key, float shortPx, int keepLines = 1);
+
+// Called after the G-buffer strip was drawn, on the frames after the default layout was built or
+// the window resized (StripFit): the strip's dock node takes the height its viewers' images need at
+// their width and the frame's aspect (`imageArea`, a viewer's cell below its toolbar; `frameSize`,
+// the frame they show: the viewport's image as drawn, which the next frame takes), or gives its spare height to the
+// band above; the user's drags in between stand.
+void fitStripHeight(StripFit& fit, glm::vec2 imageArea, glm::ivec2 frameSize);
 
 // Called after every editor window: notes where each one is docked and its tab (state.docks).
 void recordDocks(LayoutState& state);

@@ -11,6 +11,7 @@
 #include "panels/viewer_tools.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // the window's last width (FindWindowByName)
 
 #include <algorithm>
 #include <cmath>
@@ -218,18 +219,26 @@ void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& t
     state.imageRects.fill(glm::vec4(0.0f));
     // Little padding above and below: the strip's height is the images'. The images fill the
     // window exactly, so it never scrolls (a scrollbar coming and going would resize them).
+    // Five cells narrower than viewerCellMinWidth would cut their toolbars off: the window then
+    // scrolls sideways instead (a large UI scale), its scrollbar always shown, below the images
+    // (a scrolling table's own scrollbar would lie over their bottom rows). Whether it is that
+    // narrow is known from its last frame.
+    float const width = viewerCellMinWidth() * float(state.viewers.size());
+    ImGuiWindow const* last = ImGui::FindWindowByName(windowName(EditorWindow::GBuffer));
+    bool const narrow = last && last->ContentRegionRect.GetWidth() < width;
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(ImGui::GetStyle().WindowPadding.x, 3.0f));
-    state.visible = ImGui::Begin(windowName(EditorWindow::GBuffer), nullptr,
-                                 ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    state.visible =
+        ImGui::Begin(windowName(EditorWindow::GBuffer), nullptr,
+                     ImGuiWindowFlags_NoScrollWithMouse |
+                         (narrow ? ImGuiWindowFlags_HorizontalScrollbar | ImGuiWindowFlags_AlwaysHorizontalScrollbar
+                                 : ImGuiWindowFlags_NoScrollbar));
     ImGui::PopStyleVar();
     if (state.visible) {
-        ImVec2 const avail = ImGui::GetContentRegionAvail();
-        // Five cells narrower than viewerCellMinWidth would cut their toolbars off: the table then
-        // scrolls sideways instead.
-        float const width = viewerCellMinWidth() * float(state.viewers.size());
-        ImGuiTableFlags const scroll = avail.x < width ? ImGuiTableFlags_ScrollX : 0;
-        if (ImGui::BeginTable("viewers", 5, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame | scroll,
-                              avail, scroll ? width : 0.0f)) {
+        ImVec2 avail = ImGui::GetContentRegionAvail();
+        if (narrow) avail.x = width;
+        bool const table =
+            ImGui::BeginTable("viewers", 5, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame, avail);
+        if (table) {
             for (std::size_t i = 0; i < state.viewers.size(); ++i) ImGui::TableSetupColumn(kViewerNames[i].data());
             ImGui::TableNextRow(ImGuiTableRowFlags_None);
             for (std::size_t i = 0; i < state.viewers.size(); ++i) {
@@ -244,6 +253,7 @@ void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& t
                 std::optional<glm::ivec2> const marker = state.syncViews ? previousHover : std::nullopt;
                 ImVec2 const imageOrigin = ImGui::GetCursorScreenPos();
                 float const cellWidth = ImGui::GetContentRegionAvail().x;
+                if (i == 0) state.imageArea = {cellWidth, ImGui::GetContentRegionAvail().y};
                 if (auto texel =
                         viewerImage(v, textures[i], imageSize, clicked, marker, lockedPixel, state.imageRects[i])) {
                     state.hoverPixel = texel;

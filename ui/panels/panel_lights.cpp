@@ -227,7 +227,8 @@ void drawSelected(LightsPanelState& state, std::vector<PointLight>& lights, std:
                            ImGui::CollapsingHeader("Attenuation plot", ImGuiTreeNodeFlags_DefaultOpen);
     ImVec2 plotPos(0.0f, 0.0f), plotSize(0.0f, 0.0f);
     if (plotShown) {
-        float const least = ImGui::GetFontSize() * 9.0f;
+        // Nine lines for the axes and the curve, one more for the legend's row above them.
+        float const least = ImGui::GetFontSize() * 9.0f + ImGui::GetTextLineHeightWithSpacing() + 8.0f;
         float const avail = ImGui::GetContentRegionAvail().y - ImGui::GetStyle().ItemSpacing.y;
         plotSize = ImVec2(ImGui::GetContentRegionAvail().x, std::clamp(avail, least, ImGui::GetFontSize() * 12.0f));
         state.plotShortPx = ImGui::GetScrollY() <= 0.0f ? std::max(0.0f, least - avail) : 0.0f;
