@@ -171,6 +171,7 @@ void drawStatsPanel(StatsState const& stats, std::string const& noFragmentCounts
         }
         wrappedText("Frame: %.1f bytes a pixel (%.1f MB at %dx%d)", memory.bytesPerPixel(),
                     memory.bytesPerPixel() * f.width * f.height / 1.0e6, f.width, f.height);
+        ImGui::PushTextWrapPos(0.0f);  // the parts and the msaa line wrap in a narrow column
         for (MemoryPart const& part : memory.parts)
             ImGui::TextDisabled("  %s: %.1f B", part.name.c_str(), part.bytesPerPixel);
         if (f.msaaUsed != Msaa::Off) {  // docs/msaa.md: every attachment holds that many samples
@@ -181,6 +182,7 @@ void drawStatsPanel(StatsState const& stats, std::string const& noFragmentCounts
                         100.0 * f.complexPixelShare.value_or(0.0));
         }
         ImGui::TextDisabled("%s", msaaMemoryLine(layout, f.width, f.height).c_str());
+        ImGui::PopTextWrapPos();
 
         separatorText("Editor cost");
         EditorCost const& c = stats.costAverage;
