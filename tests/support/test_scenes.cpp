@@ -31,6 +31,13 @@ SceneData floorAndWallScene() {
     return s;
 }
 
+PipelineSettings plainSettings() {
+    PipelineSettings s;
+    s.lightCubes = false;
+    s.ambient = glm::vec3(0.03f);
+    return s;
+}
+
 Camera lookingAt(glm::vec3 from, glm::vec3 target) {
     Camera c;
     c.position = from;
