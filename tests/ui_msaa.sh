@@ -55,12 +55,7 @@ echo "the msaa combo is in view after $wheel_steps wheel step(s): $(field msaaCo
 open_combo msaaCombo msaaItems 3
 set -- "$item_x" "$item_y"
 click_at "$1" "$2"
-tries=0
-until [ "$(field msaaSamples)" = 4 ]; do
-    tries=$((tries + 1))
-    [ "$tries" -le 200 ] || fail "200 frames after the click on 4, msaa samples are $(field msaaSamples)"
-    wait_frames 1
-done
+wait_field msaaSamples = 4 200 "200 frames after the click on 4, msaa samples are not 4"
 echo "clicked 4 at $1,$2: the frame ran $(field msaaSamples) samples"
 
 # --- the viewport's Complex checkbox -------------------------------------------------------------

@@ -171,6 +171,17 @@ ui_stop() {
     pid=""
 }
 
+# wait_field NAME OP VALUE N WHY: frames until the log's field NAME is (OP =) or is not (OP !=)
+# VALUE, at most N; else fails with WHY and the field's last value.
+wait_field() {
+    wait_field_frames=0
+    until [ "$(field "$1")" "$2" "$3" ]; do
+        wait_frames 1
+        wait_field_frames=$((wait_field_frames + 1))
+        [ "$wait_field_frames" -le "$4" ] || fail "$5 ($1 $(field "$1"))"
+    done
+}
+
 # --- combos and menus -------------------------------------------------------------------------
 # scroll_into_view NAME WINDOW MAX: the mouse over the logged window rectangle WINDOW, the wheel
 # turned down until the logged rectangle NAME is drawn with its whole box above WINDOW's bottom
@@ -209,19 +220,9 @@ pick_ui_scale() {
     click_at $(centre viewMenu)
     [ "$(field uiScaleMenu)" != "[0.0000,0.0000,0.0000,0.0000]" ] || fail "the View menu did not open"
     xdotool mousemove --window "$wid" $(centre uiScaleMenu)
-    i=0
-    until [ "$(field uiScaleItems)" != "[]" ]; do
-        wait_frames 1
-        i=$((i + 1))
-        [ "$i" -le 40 ] || fail "View > UI scale did not open its choices"
-    done
+    wait_field uiScaleItems != "[]" 40 "View > UI scale did not open its choices"
     # uiScaleItems: an [x, y, w, h] rectangle a choice, from choice 0.
     click_at $(field uiScaleItems | tr -d '[]' |
         awk -F, -v n="$1" '{ i = 4 * n; printf "%d %d", $(i + 1) + $(i + 3) / 2, $(i + 2) + $(i + 4) / 2 }')
-    i=0
-    until [ "$(field uiScale)" = "$2" ]; do
-        wait_frames 1
-        i=$((i + 1))
-        [ "$i" -le 40 ] || fail "choice $1 did not set the scale to $2: uiScale $(field uiScale)"
-    done
+    wait_field uiScale = "$2" 40 "choice $1 did not set the scale to $2"
 }
