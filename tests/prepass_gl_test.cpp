@@ -96,13 +96,7 @@ TEST_F(PrepassFloorGlTest, MatchesTheCpuShadingOnTheFloor) {
     auto r = makeRenderer(w, h);
     ASSERT_FALSE(r->setScene(test::floorScene()));
     Camera const cam = test::lookingAt({0.0f, 8.0f, 6.0f}, {0.0f, 0.0f, 0.0f});
-    PointLight light;
-    light.position = {2.5f, 1.0f, 0.0f};
-    light.color = {1.0f, 0.8f, 0.6f};
-    light.intensity = 1.5f;
-    light.kc = 1.0f;
-    light.kl = 0.7f;
-    light.kq = 1.8f;  // radius ~6.2: part of the visible floor is lit, part lies beyond
+    PointLight const light = test::floorTestLight();
     std::vector<PointLight> const lights{light};
     PipelineSettings s = lightingSettings(LightingMode::Prepass);
     s.ambient = glm::vec3(0.03f);

@@ -15,6 +15,10 @@ SceneData floorScene();
 // floorScene() plus a 6 x 4 wall in the plane z = 0, facing +Z (towards a camera at z > 0).
 SceneData floorAndWallScene();
 
+// One light 1 unit above floorScene()'s floor, off its centre (radius ~6.2): seen from (0, 8, 6)
+// looking at the origin, part of the visible floor is lit and part lies beyond its reach.
+PointLight floorTestLight();
+
 // The settings of the analytic tests: the lighting alone (no light cubes), ambient 0.03.
 PipelineSettings plainSettings();
 
