@@ -185,8 +185,9 @@ private:
     void runPasses(std::span<PassDecl const> passes, FrameRecord& frame, FrameResources const& io);
     void finishFrame(FrameInput const& input, FrameRecord const& frame, FrameStats& stats);
     using RunFunction = void (RendererImpl::*)(FrameRecord&, PassRun const&);
-    static RunFunction runFunction(PassId id);  // the table of the renderer's own passes
-    void runForwardShading(FrameRecord& frame, PassRun const& r);
+    static RunFunction runFunction(PassId id);                     // the table of the renderer's own passes
+    void runForwardShading(FrameRecord& frame, PassRun const& r);  // opaque surfaces
+    void runForwardFiltered(FrameRecord& frame, PassRun const& r, MaterialFilter filter, bool backToFront);
     void runGeometry(FrameRecord& frame, PassRun const& r);
     void runImport(FrameRecord& frame, PassRun const& r);
     void runLightLists(FrameRecord& frame, PassRun const& r);

@@ -69,8 +69,10 @@ void RendererImpl::runPasses(std::span<PassDecl const> passes, FrameRecord& fram
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void RendererImpl::runForwardShading(FrameRecord& frame, PassRun const& r) {
-    // forward+ (its declaration samples the tile lists): the list-reading build, over the binning grid.
+// forward, forward+: the surfaces `filter` keeps, shaded light by light. Forward+ (its declaration
+// samples the tile lists) draws with the list-reading build, over the binning grid (the blended
+// surfaces' lists binned from the near plane, passes/tile_bins.h).
+void RendererImpl::runForwardFiltered(FrameRecord& frame, PassRun const& r, MaterialFilter filter, bool backToFront) {
     bool const listed =
         std::find(r.decl.samples.begin(), r.decl.samples.end(), Resource::TileBins) != r.decl.samples.end();
     forwardPass({scene,
@@ -78,8 +80,12 @@ void RendererImpl::runForwardShading(FrameRecord& frame, PassRun const& r) {
                  shaders.get(listed ? ProgramId::ForwardPlus : ProgramId::Forward),
                  {*r.fbo, r.io.texture(r.decl.color.front())},
                  listed ? &tileBins : nullptr},
-                {MaterialFilter::Opaque, frame.f.viewProj, frame.shading, frame.f.settings.normalMaps, r.decl.states,
-                 false, tileGrid(targets.width, targets.height).tilesX});
+                {filter, frame.f.viewProj, frame.shading, frame.f.settings.normalMaps, r.decl.states, backToFront,
+                 tileGrid(targets.width, targets.height).tilesX});
+}
+
+void RendererImpl::runForwardShading(FrameRecord& frame, PassRun const& r) {
+    runForwardFiltered(frame, r, MaterialFilter::Opaque, false);
 }
 
 // forward+: the opaque surfaces' depth alone, drawn with the geometry program into the lit
@@ -89,17 +95,7 @@ void RendererImpl::runDepthPrepass(FrameRecord& frame, PassRun const& r) {
 }
 
 void RendererImpl::runForward(FrameRecord& frame, PassRun const& r) {
-    // forward+ (its declaration samples the tile lists): the blended surfaces' lists, binned from the
-    // near plane (passes/tile_bins.h).
-    bool const listed =
-        std::find(r.decl.samples.begin(), r.decl.samples.end(), Resource::TileBins) != r.decl.samples.end();
-    forwardPass({scene,
-                 lights,
-                 shaders.get(listed ? ProgramId::ForwardPlus : ProgramId::Forward),
-                 {*r.fbo, r.io.texture(r.decl.color.front())},
-                 listed ? &tileBins : nullptr},
-                {MaterialFilter::Blended, frame.f.viewProj, frame.shading, frame.f.settings.normalMaps, r.decl.states,
-                 true, tileGrid(targets.width, targets.height).tilesX});
+    runForwardFiltered(frame, r, MaterialFilter::Blended, true);  // back to front: the over operator
 }
 
 // The blended surfaces hatched in one colour over the view (shaders/glass_outline.frag).

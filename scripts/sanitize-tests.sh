@@ -47,9 +47,10 @@ cmake -S "$root" -B "$build" "${generator[@]}" -DGBL_SANITIZE=ON -DGBL_WERROR=ON
     "-DCMAKE_EXE_LINKER_FLAGS=-static-libasan -static-libubsan" -DGBL_CPU_TESTS_PER_BINARY=ON >/dev/null
 # The GL test binaries run here: those whose host code goes past render() and a read-back (files,
 # sessions, the command line, viewers and their tools, glTF scenes, the shader checks, the edge-case
-# scenes). The others compare shaded pixels with the CPU's math over the same host path, which
-# instrumentation does not change; they run in scripts/test.sh's plain build, and are not even built
-# here (CI on a fresh clone, 2 cores: this script took 2223 s of CI's 3198 with every GL test).
+# scenes). The others (renderer_shading_gl_test among them) compare shaded pixels with the CPU's math
+# over the same host path, which instrumentation does not change; they run in scripts/test.sh's plain
+# build, and are not even built here (CI on a fresh clone, 2 cores: this script took 2223 s of CI's 3198
+# with every GL test).
 asan_gl_binaries=(headless_context_gl_test renderer_gl_test gl_error_check_gl_test shader_checks_gl_test
   viewer_export_gl_test viewer_tools_gl_test lit_pin_gl_test viewport_tools_gl_test render_cli_gl_test
   compare_cli_gl_test session_cli_gl_test gltf_render_gl_test gltf_render_random_gl_test gltf_features_gl_test
@@ -85,8 +86,8 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:${UBSAN_OPTIONS:-}"
 export LSAN_OPTIONS="suppressions=$root/tests/lsan.supp:print_suppressions=1:${LSAN_OPTIONS:-}"
 # Mesa's shader cache, emptied at the start of every run so that timings do not depend on history, but
 # kept within the run: the GL test processes build the same programs, and under the sanitizers building
-# them is most of a process's time (renderer_gl_test's LightingPassMatchesCpuEquation here: 12.4 s with
-# the cache disabled, 4.2 s from a cache another process filled). .ci/run seeds it with the cache the
+# them is most of a process's time (LightingPassMatchesCpuEquation, when renderer_gl_test held it: 12.4 s
+# with the cache disabled, 4.2 s from a cache another process filled). .ci/run seeds it with the cache the
 # plain tests filled in the same CI run (GBL_SHADER_CACHE_SEED): the same driver builds the same
 # programs from the same sources there, so this run starts with them (EdgeScenes.sizes alone, on this
 # 2-core machine: 77.6 s from an empty cache, 30.8 s from the plain run's).
@@ -120,7 +121,7 @@ run_ctest() { ctest --test-dir "$build" --output-on-failure -j"$jobs" --timeout 
 # ui_lessons too: it scrolls the Lessons window with the wheel to reach each button, and at the
 # instrumented build's frame times (its run took 225 s against 31 s plain on CI) a button it had
 # scrolled into view had left it again when clicked; the lesson code it drives runs here through
-# lessons_cli_gl_test, lesson_file_test and lesson_predict_test.
+# lessons_cli_gl_test, lesson_file_test, lesson_steps_test and lesson_predict_test.
 # Also left to the plain build: the reference compiler's run over the shaders (an external program),
 # the edge-case scenes' second and third fresh processes (the first of each runs here), and the 29 s render
 # of every shared glTF model (the loader's own tests run here, and GltfRender's others render models).

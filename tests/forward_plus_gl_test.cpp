@@ -2,7 +2,7 @@
 // forward, which shades every light at every fragment: the same image, the camera inside a light's
 // volume included; its declared passes run, its lists are counted on the shared heat scale.
 #include "core/light_math.h"
-#include "gl_fixture.h"
+#include "lighting_compare.h"
 #include "scene/default_scene.h"
 #include "scene/mesh_builder.h"
 #include "test_scenes.h"
@@ -11,90 +11,28 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 using namespace gbl;
+using namespace gbl::test;
 
 namespace {
 
 constexpr int kW = 320, kH = 180;
 
-// fp16 rounding of the lit target (RGBA16F): a relative error of up to 2^-11 per stored value.
-constexpr double kHalfUlp = 1.0 / 2048.0;
-
-struct Diff {
-    double maxAbs = 0.0;
-    double meanValue = 0.0;
-    int pixelsOver = 0;
-};
-
-// forward+ adds the same lights as forward at each fragment (every light that can reach it is in its
-// tile's list; the others add zero in forward), in fp32, in another order, and stores once: one fp16
-// rounding each side plus slack for the order, the bound tiled is held to against quad.
-Diff compare(FloatImage const& a, FloatImage const& ref) {
-    Diff d;
-    EXPECT_EQ(a.width, ref.width);
-    EXPECT_EQ(a.height, ref.height);
-    double sum = 0.0;
-    for (int y = 0; y < ref.height; ++y)
-        for (int x = 0; x < ref.width; ++x) {
-            bool over = false;
-            for (int c = 0; c < 3; ++c) {
-                double const va = a.at(x, y, c), vr = ref.at(x, y, c);
-                double const e = std::abs(va - vr);
-                d.maxAbs = std::max(d.maxAbs, e);
-                sum += std::abs(vr);
-                if (e > 4 * kHalfUlp * std::abs(vr) + 1e-5) over = true;
-            }
-            d.pixelsOver += over;
-        }
-    d.meanValue = sum / (double(ref.width) * ref.height * 3);
-    return d;
-}
-
-std::string describe(Diff const& d) {
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "max abs %.3g (mean value %.3g), pixels over bound %d", d.maxAbs, d.meanValue,
-                  d.pixelsOver);
-    return buf;
-}
-
-PipelineSettings settingsFor(LightingMode mode) {
-    PipelineSettings s;
-    s.mode = mode;
-    s.lightCubes = false;  // the lighting alone
-    return s;
-}
-
-class ForwardPlusGlTest : public test::CourtyardGlTest {
+class ForwardPlusGlTest : public LightingGlTest {
 protected:
-    ForwardPlusGlTest() : CourtyardGlTest(kW, kH, true) {}
-
-    FloatImage lighting(PipelineSettings const& s, Camera const& cam, FrameStats* out = nullptr) {
-        FrameStats const st = renderer_->render({cam, lights_, s, true});
-        EXPECT_EQ(st.modeUsed, s.mode) << st.fallbackReason;
-        EXPECT_EQ(st.glErrors, 0u);
-        if (out) *out = st;
-        return renderer_->readAttachment(Attachment::Lighting);
-    }
+    ForwardPlusGlTest() : LightingGlTest(kW, kH, true) {}
 
     FloatImage expectMatchesForward(Camera const& cam, std::string const& where) {
-        FloatImage const forward = lighting(settingsFor(LightingMode::Forward), cam);
-        FloatImage const plus = lighting(settingsFor(LightingMode::ForwardPlus), cam);
-        Diff const d = compare(plus, forward);
+        FloatImage const forward = lighting(lightingSettings(LightingMode::Forward), cam);
+        FloatImage const plus = lighting(lightingSettings(LightingMode::ForwardPlus), cam);
+        // forward+ adds the same lights as forward at each fragment (every light that can reach it is in
+        // its tile's list; the others add zero in forward), in another order: sameSumBound.
+        ImageDiff const d = compareRgb(plus, forward, sameSumBound);
         EXPECT_GT(d.meanValue, 0.01) << where << ": the frame should be visibly lit";
         EXPECT_EQ(d.pixelsOver, 0) << where << ": " << describe(d);
         return plus;
-    }
-
-    // Camera inside light 0's sphere, looking at the floor under it (as light_modes_gl_test's).
-    Camera insideCamera() const {
-        PointLight const& l = lights_[0];
-        Camera c = camera_;
-        c.position = l.position + glm::vec3(0.3f, 0.4f, 0.3f);
-        c.lookAt(glm::vec3(l.position.x, 0.0f, l.position.z) + glm::vec3(0.0f, 0.0f, -2.0f));
-        return c;
     }
 
     // The coverage counts' first channel (lights in the pixel's tile), over the frame.
@@ -125,26 +63,21 @@ TEST_F(ForwardPlusGlTest, MatchesForwardWithTheCameraInsideAVolume) {
 
 TEST_F(ForwardPlusGlTest, RunsItsDeclaredPassesAndDrawsTheSceneTwice) {
     FrameStats st;
-    lighting(settingsFor(LightingMode::ForwardPlus), camera_, &st);
+    lighting(lightingSettings(LightingMode::ForwardPlus), camera_, lights_, &st);
     std::vector<std::string> ran;
     for (PassCalls const& c : st.calls) ran.push_back(c.name);
     EXPECT_EQ(ran, (std::vector<std::string>{"depth_prepass", "light_lists", "forward_shading", "forward", "display"}));
-    auto const calls = [&](std::string const& name) {
-        auto const it =
-            std::find_if(st.calls.begin(), st.calls.end(), [&](PassCalls const& c) { return c.name == name; });
-        return it == st.calls.end() ? PassCalls{} : *it;
-    };
     // The opaque scene drawn once for depth and once shaded; the lists dispatched in between.
-    EXPECT_GT(calls("depth_prepass").draws, 0u);
-    EXPECT_EQ(calls("depth_prepass").draws, calls("forward_shading").draws);
-    EXPECT_GT(calls("light_lists").dispatches, 0u);
-    EXPECT_EQ(calls("light_lists").draws, 0u);
+    EXPECT_GT(passCalls(st, "depth_prepass").draws, 0u);
+    EXPECT_EQ(passCalls(st, "depth_prepass").draws, passCalls(st, "forward_shading").draws);
+    EXPECT_GT(passCalls(st, "light_lists").dispatches, 0u);
+    EXPECT_EQ(passCalls(st, "light_lists").draws, 0u);
 }
 
 TEST_F(ForwardPlusGlTest, CountsTheSameLightsPerTileAsTiled) {
     // Both bin over the same depth (the G-buffer's, or the pre-pass's) and count with the tiled
     // pass's test: the heat views agree tile for tile.
-    PipelineSettings s = settingsFor(LightingMode::Tiled);
+    PipelineSettings s = lightingSettings(LightingMode::Tiled);
     s.view = DebugView::TileLights;
     lighting(s, camera_);
     std::vector<float> const tiled = tileCounts();
@@ -170,11 +103,11 @@ TEST_F(ForwardPlusGlTest, CountsTheSameLightsPerTileAsTiled) {
 // the tiles' lists too (its own, binned from the near plane) and gives forward's image.
 TEST_F(ForwardPlusGlTest, MatchesForwardWithTheDefaultSceneGlass) {
     Camera const cam = scene_.camera.value_or(Camera{});
-    FloatImage const plain = lighting(settingsFor(LightingMode::Forward), cam);
+    FloatImage const plain = lighting(lightingSettings(LightingMode::Forward), cam);
     SceneData glass = makeDefaultScene({int(lights_.size()), true});
     ASSERT_FALSE(renderer_->setScene(glass));
     FloatImage const withGlass = expectMatchesForward(cam, "scene camera, glass");
-    Diff const panes = compare(withGlass, plain);
+    ImageDiff const panes = compareRgb(withGlass, plain, sameSumBound);
     EXPECT_GT(panes.pixelsOver, kW * kH / 20) << "the panes should cover a good part of the frame";
 }
 
@@ -208,12 +141,12 @@ TEST_F(ForwardPlusGlTest, LightsAPaneALightReachesInFrontOfTheOpaqueDepth) {
     ASSERT_LT(radius, 1.6f) << "and not the wall, 1.8 units away";
     lights_ = {l};
     Camera const cam = test::lookingAt({0.0f, 2.0f, 6.0f}, {0.0f, 2.0f, 0.0f});
-    PipelineSettings s0 = settingsFor(LightingMode::Forward);
+    PipelineSettings s0 = lightingSettings(LightingMode::Forward);
     s0.ambient = glm::vec3(0.2f);
     FloatImage const forward = lighting(s0, cam);
     s0.mode = LightingMode::ForwardPlus;
     FloatImage const plus = lighting(s0, cam);
-    Diff const d = compare(plus, forward);
+    ImageDiff const d = compareRgb(plus, forward, sameSumBound);
     EXPECT_EQ(d.pixelsOver, 0) << describe(d);
     // The light shows on the pane: the centre pixel brighter than without it.
     lights_.clear();

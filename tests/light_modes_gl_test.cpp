@@ -3,7 +3,7 @@
 #include "core/light_math.h"
 #include "core/light_volume_mesh.h"
 #include "core/tile_math.h"
-#include "gl_fixture.h"
+#include "lighting_compare.h"
 #include "scene/default_scene.h"
 #include "test_scenes.h"
 
@@ -11,106 +11,38 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 using namespace gbl;
-using gbl::test::GlTest;
+using namespace gbl::test;
 
 namespace {
 
 constexpr int kW = 320, kH = 180;
 
-struct Diff {
-    double maxAbs = 0.0;
-    double meanAbs = 0.0;
-    double maxRel = 0.0;     // |a - b| / max(|a|, |b|) over channels with max(|a|, |b|) > relFloor
-    double meanValue = 0.0;  // mean of |reference| over every channel, for scale
-    int pixelsOver = 0;      // pixels where some channel exceeds the per-pixel bound given
-};
-
-// Compares the RGB channels of two lighting images. bound(ref) is the per-channel error
-// allowed at a reference value; pixelsOver counts pixels that exceed it anywhere.
-template <class Bound>
-Diff compare(FloatImage const& a, FloatImage const& ref, Bound bound, double relFloor = 1e-2) {
-    Diff d;
-    EXPECT_EQ(a.width, ref.width);
-    EXPECT_EQ(a.height, ref.height);
-    double sum = 0.0, sumRef = 0.0;
-    for (int y = 0; y < ref.height; ++y) {
-        for (int x = 0; x < ref.width; ++x) {
-            bool over = false;
-            for (int c = 0; c < 3; ++c) {
-                double const va = a.at(x, y, c), vr = ref.at(x, y, c);
-                double const e = std::abs(va - vr);
-                sum += e;
-                sumRef += std::abs(vr);
-                d.maxAbs = std::max(d.maxAbs, e);
-                double const m = std::max(std::abs(va), std::abs(vr));
-                if (m > relFloor) d.maxRel = std::max(d.maxRel, e / m);
-                if (e > bound(std::abs(vr))) over = true;
-            }
-            d.pixelsOver += over;
-        }
-    }
-    double const n = double(ref.width) * ref.height * 3;
-    d.meanAbs = sum / n;
-    d.meanValue = sumRef / n;
-    return d;
-}
-
-std::string describe(Diff const& d) {
-    char buf[200];
-    std::snprintf(buf, sizeof buf, "max abs %.3g, mean abs %.3g (mean value %.3g), max rel %.3g, pixels over bound %d",
-                  d.maxAbs, d.meanAbs, d.meanValue, d.maxRel, d.pixelsOver);
-    return buf;
-}
-
-PipelineSettings settingsFor(LightingMode mode, CullMode cull = CullMode::Front) {
-    PipelineSettings s;
-    s.mode = mode;
-    s.cull = cull;
-    s.lightCubes = false;  // compare the lighting alone
-    return s;
-}
-
-// fp16 rounding: the lit target is RGBA16F, so every stored value carries a relative error of up
-// to 2^-11; additive blending rounds once per light.
-constexpr double kHalfUlp = 1.0 / 2048.0;
-
-class LightModesGlTest : public test::CourtyardGlTest {
+class LightModesGlTest : public LightingGlTest {
 protected:
-    LightModesGlTest() : CourtyardGlTest(kW, kH) {}
-
-    FloatImage lighting(PipelineSettings const& s, Camera const& cam, std::span<PointLight const> lights) {
-        FrameStats const st = renderer_->render({cam, lights, s, true});
-        EXPECT_EQ(st.modeUsed, s.mode) << st.fallbackReason;
-        EXPECT_EQ(st.glErrors, 0u);
-        return renderer_->readAttachment(Attachment::Lighting);
-    }
-    FloatImage lighting(PipelineSettings const& s) { return lighting(s, camera_, lights_); }
-
-    // Additive blending rounds once per light to fp16: up to 16 overlapping volumes per pixel here.
-    static double volumeBound(double v) { return 16 * kHalfUlp * v + 1e-4; }
+    LightModesGlTest() : LightingGlTest(kW, kH) {}
 
     // Volumes (inside-safe cull modes), tiled and forward against the full-screen pass from
     // `cam`, each within its bound; returns the full-screen image.
     FloatImage expectModesMatchQuad(Camera const& cam) {
-        FloatImage const quad = lighting(settingsFor(LightingMode::Quad), cam, lights_);
+        FloatImage const quad = lighting(lightingSettings(LightingMode::Quad), cam, lights_);
         for (CullMode cull : {CullMode::Front, CullMode::Flip, CullMode::Stencil}) {
-            Diff const d = compare(lighting(settingsFor(LightingMode::Volumes, cull), cam, lights_), quad, volumeBound);
+            ImageDiff const d =
+                compareRgb(lighting(lightingSettings(LightingMode::Volumes, cull), cam, lights_), quad, volumeBound);
             EXPECT_EQ(d.pixelsOver, 0) << "volumes/" << enumName(kCullModeNames, cull) << ": " << describe(d);
         }
         if (caps().computeShaders) {
-            Diff const d = compare(lighting(settingsFor(LightingMode::Tiled), cam, lights_), quad,
-                                   [](double v) { return 4 * kHalfUlp * v + 1e-5; });
+            ImageDiff const d =
+                compareRgb(lighting(lightingSettings(LightingMode::Tiled), cam, lights_), quad, sameSumBound);
             EXPECT_EQ(d.pixelsOver, 0) << "tiled: " << describe(d);
             // Clustered adds the same lights in the same order as tiled: the same bound.
-            Diff const c = compare(lighting(settingsFor(LightingMode::Clustered), cam, lights_), quad,
-                                   [](double v) { return 4 * kHalfUlp * v + 1e-5; });
+            ImageDiff const c =
+                compareRgb(lighting(lightingSettings(LightingMode::Clustered), cam, lights_), quad, sameSumBound);
             EXPECT_EQ(c.pixelsOver, 0) << "clustered: " << describe(c);
         }
-        Diff const f = compare(lighting(settingsFor(LightingMode::Forward), cam, lights_), quad,
-                               [](double v) { return 0.03 * v + 2e-3; });
+        ImageDiff const f =
+            compareRgb(lighting(lightingSettings(LightingMode::Forward), cam, lights_), quad, forwardBound);
         EXPECT_LT(f.pixelsOver, kW * kH / 200) << "forward: " << describe(f);
         return quad;
     }
@@ -124,15 +56,6 @@ protected:
             for (int x = 0; x < img.width; ++x)
                 out[std::size_t(img.height - 1 - y) * img.width + x] = {img.at(x, y, 0), img.at(x, y, 1)};
         return out;
-    }
-
-    // Camera inside light 0's sphere, looking at the floor under it.
-    Camera insideCamera() const {
-        PointLight const& l = lights_[0];
-        Camera c = camera_;
-        c.position = l.position + glm::vec3(0.3f, 0.4f, 0.3f);
-        c.lookAt(glm::vec3(l.position.x, 0.0f, l.position.z) + glm::vec3(0.0f, 0.0f, -2.0f));
-        return c;
     }
 };
 
@@ -151,16 +74,15 @@ TEST_F(LightModesGlTest, TestCameraIsOutsideEveryVolume) {
 }
 
 TEST_F(LightModesGlTest, VolumesTiledAndForwardMatchQuad) {
-    FloatImage const quad = lighting(settingsFor(LightingMode::Quad));
-    Diff const q = compare(quad, quad, [](double) { return 0.0; });
+    FloatImage const quad = lighting(lightingSettings(LightingMode::Quad));
+    ImageDiff const q = compareRgb(quad, quad, [](double) { return 0.0; });
     ASSERT_GT(q.meanValue, 0.01) << "the default scene should be visibly lit";
 
     // Volumes: the same fp32 light terms, but summed by fp16 blending, one rounding per light
     // covering the pixel. The default scene has at most ~12 lights over one pixel, so 16 half-ulps
-    // of the value plus 1e-4 absolute (fp16 spacing of the darkest lit values) bound it.
-    auto blendBound = [](double v) { return 16 * kHalfUlp * v + 1e-4; };
+    // of the value plus 1e-4 absolute (fp16 spacing of the darkest lit values) bound it (volumeBound).
     for (CullMode cull : {CullMode::Back, CullMode::Front, CullMode::Flip, CullMode::Stencil}) {
-        Diff const d = compare(lighting(settingsFor(LightingMode::Volumes, cull)), quad, blendBound);
+        ImageDiff const d = compareRgb(lighting(lightingSettings(LightingMode::Volumes, cull)), quad, volumeBound);
         EXPECT_EQ(d.pixelsOver, 0) << "volumes/" << enumName(kCullModeNames, cull) << ": " << describe(d);
         // On average a handful of roundings: under 8 half-ulps of the mean value.
         EXPECT_LT(d.meanAbs, 8 * kHalfUlp * q.meanValue)
@@ -170,8 +92,7 @@ TEST_F(LightModesGlTest, VolumesTiledAndForwardMatchQuad) {
     if (caps().computeShaders) {
         // Tiled adds the same lights in the same order in fp32 and stores once: one fp16 rounding
         // (a half-ulp each side, so 2 half-ulps) plus slack for the compiler fusing differently.
-        Diff const d =
-            compare(lighting(settingsFor(LightingMode::Tiled)), quad, [](double v) { return 4 * kHalfUlp * v + 1e-5; });
+        ImageDiff const d = compareRgb(lighting(lightingSettings(LightingMode::Tiled)), quad, sameSumBound);
         EXPECT_EQ(d.pixelsOver, 0) << "tiled: " << describe(d);
     }
 
@@ -180,8 +101,7 @@ TEST_F(LightModesGlTest, VolumesTiledAndForwardMatchQuad) {
     // in 8 bits (1/510 absolute), normal in fp16. Those move the result by a few percent at worst
     // (dark albedo, grazing specular), so forward is held to a mean error of 1% of the mean
     // value and 99.5% of pixels within 3% + 2e-3.
-    Diff const f =
-        compare(lighting(settingsFor(LightingMode::Forward)), quad, [](double v) { return 0.03 * v + 2e-3; });
+    ImageDiff const f = compareRgb(lighting(lightingSettings(LightingMode::Forward)), quad, forwardBound);
     EXPECT_LT(f.meanAbs, 0.01 * q.meanValue) << "forward: " << describe(f);
     EXPECT_LT(f.pixelsOver, kW * kH / 200) << "forward: " << describe(f);
 }
@@ -199,30 +119,30 @@ TEST_F(LightModesGlTest, CameraInsideAVolume) {
 
     // Culling back faces loses the light the camera is in: its front faces are behind the eye.
     // Light 0 fills most of this view, so a large share of pixels must lose light.
-    Diff const back =
-        compare(lighting(settingsFor(LightingMode::Volumes, CullMode::Back), cam, lights_), quad, volumeBound);
+    ImageDiff const back =
+        compareRgb(lighting(lightingSettings(LightingMode::Volumes, CullMode::Back), cam, lights_), quad, volumeBound);
     EXPECT_GT(back.pixelsOver, kW * kH / 4) << "back-face culling should fail inside a volume: " << describe(back);
 }
 
 TEST_F(LightModesGlTest, CullNoneAppliesEachLightTwice) {
     // Without culling or depth test both faces of each volume shade the pixels under it: with the
     // camera outside every volume, none = ambient + 2 x (quad - ambient).
-    FloatImage const quad = lighting(settingsFor(LightingMode::Quad));
-    FloatImage const ambient = lighting(settingsFor(LightingMode::Quad), camera_, {});
-    FloatImage const none = lighting(settingsFor(LightingMode::Volumes, CullMode::None));
+    FloatImage const quad = lighting(lightingSettings(LightingMode::Quad));
+    FloatImage const ambient = lighting(lightingSettings(LightingMode::Quad), camera_, {});
+    FloatImage const none = lighting(lightingSettings(LightingMode::Volumes, CullMode::None));
     FloatImage doubled = quad;
     for (std::size_t i = 0; i < doubled.pixels.size(); ++i) doubled.pixels[i] = 2 * quad.pixels[i] - ambient.pixels[i];
     // 2x the value of the volumes bound above: every blend now happens twice.
-    Diff const d = compare(none, doubled, [](double v) { return 32 * kHalfUlp * v + 2e-4; });
+    ImageDiff const d = compareRgb(none, doubled, [](double v) { return 32 * kHalfUlp * v + 2e-4; });
     EXPECT_EQ(d.pixelsOver, 0) << describe(d);
-    Diff const vsQuad = compare(none, quad, [](double v) { return 16 * kHalfUlp * v + 1e-4; });
+    ImageDiff const vsQuad = compareRgb(none, quad, volumeBound);
     EXPECT_GT(vsQuad.meanAbs, 0.3 * vsQuad.meanValue) << "cull none must differ from quad: " << describe(vsQuad);
 }
 
 TEST_F(LightModesGlTest, CoverageCountsAgreeBetweenModes) {
     // y (lights that lit the pixel) is a property of the scene, not of the mode.
     auto counts = [&](LightingMode m, CullMode c = CullMode::Front) {
-        PipelineSettings s = settingsFor(m, c);
+        PipelineSettings s = lightingSettings(m, c);
         s.view = DebugView::Heatmap;
         renderer_->render({camera_, lights_, s, true});
         return coverage();
@@ -260,7 +180,7 @@ TEST_F(LightModesGlTest, CoverageCountsAgreeBetweenModes) {
 
 TEST_F(LightModesGlTest, TileListsMatchTheCpuTileMath) {
     if (!caps().computeShaders) GTEST_SKIP() << caps().tiledUnavailableReason();
-    PipelineSettings s = settingsFor(LightingMode::Tiled);
+    PipelineSettings s = lightingSettings(LightingMode::Tiled);
     s.view = DebugView::TileLights;
     renderer_->render({camera_, lights_, s, true});
     auto const gpu = coverage();
@@ -313,16 +233,15 @@ TEST_F(LightModesGlTest, LightsPastTheFirstTiledChunkAreShaded) {
     // quad and forward visit all 16,416 lights at every pixel: a small frame keeps that short.
     renderer_ = makeRenderer(80, 45);
     ASSERT_FALSE(renderer_->setScene(scene_));
-    FloatImage const quad = lighting(settingsFor(LightingMode::Quad), camera_, many);
-    FloatImage const dark = lighting(settingsFor(LightingMode::Quad), camera_, std::span(many).first(16384));
-    Diff const lit = compare(quad, dark, [](double) { return 1e-3; });
+    FloatImage const quad = lighting(lightingSettings(LightingMode::Quad), camera_, many);
+    FloatImage const dark = lighting(lightingSettings(LightingMode::Quad), camera_, std::span(many).first(16384));
+    ImageDiff const lit = compareRgb(quad, dark, [](double) { return 1e-3; });
     ASSERT_GT(lit.pixelsOver, 80 * 45 / 10) << "the second chunk's lights must light the scene: " << describe(lit);
-    Diff const v = compare(lighting(settingsFor(LightingMode::Volumes), camera_, many), quad, volumeBound);
+    ImageDiff const v = compareRgb(lighting(lightingSettings(LightingMode::Volumes), camera_, many), quad, volumeBound);
     EXPECT_EQ(v.pixelsOver, 0) << "volumes: " << describe(v);
     if (!caps().computeShaders) GTEST_SKIP() << caps().tiledUnavailableReason();
     for (LightingMode m : {LightingMode::Tiled, LightingMode::Clustered}) {
-        Diff const d =
-            compare(lighting(settingsFor(m), camera_, many), quad, [](double v) { return 4 * kHalfUlp * v + 1e-5; });
+        ImageDiff const d = compareRgb(lighting(lightingSettings(m), camera_, many), quad, sameSumBound);
         EXPECT_EQ(d.pixelsOver, 0) << enumName(kLightingModeNames, m) << ": " << describe(d);
     }
 }
@@ -331,15 +250,15 @@ TEST_F(LightModesGlTest, TiledFallsBackToQuadWithoutComputeShaders) {
     Renderer r(detectGlCaps(3, 3), kW, kH);  // pretend the context is OpenGL 3.3
     ASSERT_FALSE(r.caps().computeShaders);
     ASSERT_FALSE(r.setScene(scene_));
-    FrameStats const st = r.render({camera_, lights_, settingsFor(LightingMode::Tiled), true});
+    FrameStats const st = r.render({camera_, lights_, lightingSettings(LightingMode::Tiled), true});
     EXPECT_EQ(st.modeUsed, LightingMode::Quad);
     EXPECT_NE(st.fallbackReason.find("OpenGL 4.3"), std::string::npos) << st.fallbackReason;
     FloatImage const img = r.readAttachment(Attachment::Lighting);
-    FloatImage const quad = lighting(settingsFor(LightingMode::Quad));
-    Diff const d = compare(img, quad, [](double) { return 0.0; });
+    FloatImage const quad = lighting(lightingSettings(LightingMode::Quad));
+    ImageDiff const d = compareRgb(img, quad, [](double) { return 0.0; });
     EXPECT_EQ(d.pixelsOver, 0) << describe(d);
     // The other modes report no fallback.
-    FrameStats const ok = renderer_->render({camera_, lights_, settingsFor(LightingMode::Volumes), true});
+    FrameStats const ok = renderer_->render({camera_, lights_, lightingSettings(LightingMode::Volumes), true});
     EXPECT_EQ(ok.modeUsed, LightingMode::Volumes);
     EXPECT_TRUE(ok.fallbackReason.empty());
 }
@@ -352,7 +271,7 @@ TEST_F(LightModesGlTest, WireframesAreDrawnInTheLightColourAndHiddenByTheScene) 
     cam.lookAt({0.0f, 2.0f, 0.0f});
     PointLight red;
     red.color = {1.0f, 0.0f, 0.0f};  // Kl 0.7, Kq 1.8: radius 5.09, enclosing sphere 5.24
-    PipelineSettings s = settingsFor(LightingMode::Volumes);
+    PipelineSettings s = lightingSettings(LightingMode::Volumes);
     auto litWithoutWires = [&](glm::vec3 lightPos) {
         red.position = lightPos;
         PipelineSettings plain = s;
@@ -421,11 +340,12 @@ TEST_F(LightModesGlTest, LightLoopsWithAndWithoutBranchSkippingAgree) {
     for (Camera const& cam : {camera_, insideCamera()}) {
         for (LightingMode m : modes) {
             std::string_view const name = enumName(kLightingModeNames, m);
-            PipelineSettings s = settingsFor(m);
+            PipelineSettings s = lightingSettings(m);
             FrameStats const st = other.render({cam, lights_, s, true});
             EXPECT_EQ(st.modeUsed, m) << st.fallbackReason;
             FloatImage const forced = other.readAttachment(Attachment::Lighting);
-            Diff const d = compare(forced, lighting(s, cam, lights_), [](double v) { return kHalfUlp * v + 1e-6; });
+            ImageDiff const d =
+                compareRgb(forced, lighting(s, cam, lights_), [](double v) { return kHalfUlp * v + 1e-6; });
             EXPECT_EQ(d.pixelsOver, 0) << name << ": " << describe(d);
             EXPECT_GT(d.meanValue, 0.0) << name << ": an unlit image proves nothing";
             if (m != LightingMode::Tiled && m != LightingMode::Clustered) continue;

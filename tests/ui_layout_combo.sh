@@ -41,32 +41,12 @@ ui_window
 [ "$(field layout)" = '"classic"' ] || fail "the editor starts with layout $(field layout), not classic"
 
 # --- the wheel over the Pipeline window scrolls the combo into view (below the fold at 1280x720) --
-set -- $(centre pipelineWindow)
-[ "$1" -gt 0 ] || fail "the Pipeline window was not drawn ($(field pipelineWindow))"
-xdotool mousemove --window "$wid" "$1" "$2"
-wait_frames 2
-n=0
-# in_view: the combo drawn and its whole box above the window's bottom edge.
-in_view() {
-    printf '%s %s\n' "$(field layoutCombo | tr -d '[]')" "$(field pipelineWindow | tr -d '[]')" | tr ',' ' ' |
-        awk '{ exit !($3 > 0 && $2 + $4 < $6 + $8 - 4) }'
-}
-until in_view; do
-    n=$((n + 1))
-    [ "$n" -le 30 ] || fail "30 wheel steps did not bring the layout combo into view"
-    xdotool click 5
-    wait_frames 2
-done
-echo "the combo is in view after $n wheel step(s): $(field layoutCombo)"
+scroll_into_view layoutCombo pipelineWindow 30
+echo "the combo is in view after $wheel_steps wheel step(s): $(field layoutCombo)"
 
 # --- a click on the combo opens its list; a click on the second entry ("packed") picks it ------
-set -- $(centre layoutCombo)
-[ "$1" -gt 0 ] || fail "the layout combo was not drawn ($(field layoutCombo))"
-click_at "$1" "$2"
-wait_frames 4
-items=$(field layoutItems)
-[ "$items" != "[]" ] || fail "clicking the combo at $1,$2 did not open its list"
-set -- $(echo "$items" | tr -d '[]' | awk -F, '{ printf "%d %d", $3, $4 }')
+open_combo layoutCombo layoutItems 2
+set -- "$item_x" "$item_y"
 # The UI script (above) checks the frame and quits about ten frames after the layout changes, and a
 # loaded machine's shell can count frames well after the editor logged them: from this click on, the
 # editor's exit ends a wait instead of failing it (the checks below read the log it left).

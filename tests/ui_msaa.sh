@@ -48,37 +48,14 @@ ui_window
 [ "$(field msaaSamples)" = 0 ] || fail "the editor starts with msaa samples $(field msaaSamples), not 0"
 
 # --- the wheel over the Pipeline window scrolls the msaa combo into view -----------------------
-set -- $(centre pipelineWindow)
-[ "$1" -gt 0 ] || fail "the Pipeline window was not drawn ($(field pipelineWindow))"
-xdotool mousemove --window "$wid" "$1" "$2"
-wait_frames 2
-n=0
-in_view() {
-    printf '%s %s\n' "$(field msaaCombo | tr -d '[]')" "$(field pipelineWindow | tr -d '[]')" | tr ',' ' ' |
-        awk '{ exit !($3 > 0 && $2 + $4 < $6 + $8 - 4) }'
-}
-until in_view; do
-    n=$((n + 1))
-    [ "$n" -le 40 ] || fail "40 wheel steps did not bring the msaa combo into view"
-    xdotool click 5
-    wait_frames 2
-done
-echo "the msaa combo is in view after $n wheel step(s): $(field msaaCombo)"
+scroll_into_view msaaCombo pipelineWindow 40
+echo "the msaa combo is in view after $wheel_steps wheel step(s): $(field msaaCombo)"
 
 # --- a click opens the combo; a click on its third entry ("4") picks it --------------------------
-set -- $(centre msaaCombo)
+open_combo msaaCombo msaaItems 3
+set -- "$item_x" "$item_y"
 click_at "$1" "$2"
-wait_frames 4
-items=$(field msaaItems)
-[ "$items" != "[]" ] || fail "clicking the msaa combo at $1,$2 did not open its list"
-set -- $(echo "$items" | tr -d '[]' | awk -F, '{ printf "%d %d", $5, $6 }')
-click_at "$1" "$2"
-tries=0
-until [ "$(field msaaSamples)" = 4 ]; do
-    tries=$((tries + 1))
-    [ "$tries" -le 200 ] || fail "200 frames after the click on 4, msaa samples are $(field msaaSamples)"
-    wait_frames 1
-done
+wait_field msaaSamples = 4 200 "200 frames after the click on 4, msaa samples are not 4"
 echo "clicked 4 at $1,$2: the frame ran $(field msaaSamples) samples"
 
 # --- the viewport's Complex checkbox -------------------------------------------------------------

@@ -25,28 +25,9 @@ pid=""
 ui_require_xdotool
 ui_fresh_work
 
-# item N: "x y" of the centre of the UI scale submenu's choice N (model/ui_scale.h order).
-item() {
-    field uiScaleItems | tr -d '[]' | awk -F, -v n="$1" '{ i = 4 * n; printf "%d %d", $(i + 1) + $(i + 3) / 2, $(i + 2) + $(i + 4) / 2 }'
-}
 # pick N SCALE: View > UI scale > choice N by clicks, then frames until the layout settled.
 pick() {
-    click_at $(centre viewMenu)
-    [ "$(field uiScaleMenu)" != "[0.0000,0.0000,0.0000,0.0000]" ] || fail "the View menu did not open"
-    xdotool mousemove --window "$wid" $(centre uiScaleMenu)
-    i=0
-    until [ "$(field uiScaleItems)" != "[]" ]; do
-        wait_frames 1
-        i=$((i + 1))
-        [ "$i" -le 40 ] || fail "View > UI scale did not open its choices"
-    done
-    click_at $(item "$1")
-    i=0
-    until [ "$(field uiScale)" = "$2" ]; do
-        wait_frames 1
-        i=$((i + 1))
-        [ "$i" -le 40 ] || fail "choice $1 did not set the scale to $2: uiScale $(field uiScale)"
-    done
+    pick_ui_scale "$1" "$2"
     xdotool mousemove --window "$wid" 5 5  # no tooltip over what is measured
     wait_frames 12
 }

@@ -31,6 +31,24 @@ SceneData floorAndWallScene() {
     return s;
 }
 
+PointLight floorTestLight() {
+    PointLight light;
+    light.position = {2.5f, 1.0f, 0.0f};
+    light.color = {1.0f, 0.8f, 0.6f};
+    light.intensity = 1.5f;
+    light.kc = 1.0f;
+    light.kl = 0.7f;
+    light.kq = 1.8f;
+    return light;
+}
+
+PipelineSettings plainSettings() {
+    PipelineSettings s;
+    s.lightCubes = false;
+    s.ambient = glm::vec3(0.03f);
+    return s;
+}
+
 Camera lookingAt(glm::vec3 from, glm::vec3 target) {
     Camera c;
     c.position = from;

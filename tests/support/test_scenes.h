@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/camera.h"
+#include "core/pipeline_settings.h"
 #include "scene/scene_data.h"
 
 namespace gbl::test {
@@ -13,6 +14,13 @@ inline constexpr float kPlaneSpecular = 0.25f;
 SceneData floorScene();
 // floorScene() plus a 6 x 4 wall in the plane z = 0, facing +Z (towards a camera at z > 0).
 SceneData floorAndWallScene();
+
+// One light 1 unit above floorScene()'s floor, off its centre (radius ~6.2): seen from (0, 8, 6)
+// looking at the origin, part of the visible floor is lit and part lies beyond its reach.
+PointLight floorTestLight();
+
+// The settings of the analytic tests: the lighting alone (no light cubes), ambient 0.03.
+PipelineSettings plainSettings();
 
 // A camera at `from` looking at `target`, near 0.1 and far 100.
 Camera lookingAt(glm::vec3 from, glm::vec3 target);

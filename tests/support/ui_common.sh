@@ -1,6 +1,7 @@
 # Shared set-up of the UI test scripts (tests/ui_*.sh): the work folder, failing, reading the
 # editor's --log-frames lines (flat JSON written by ui/model/frame_log.cpp), waiting for frames,
-# finding the editor's X window and placing real clicks (xdotool) on what the log says was drawn.
+# finding the editor's X window and placing real clicks (xdotool) on what the log says was drawn:
+# scrolling a combo into view, opening it, picking a View > UI scale choice.
 # Source it after setting ui_name (the test's name, for messages), work (the test's folder) and
 # log (the frame log being read; may change later). POSIX sh.
 
@@ -168,4 +169,60 @@ ui_stop() {
     [ -n "$pid" ] && kill "$pid" 2>/dev/null || true
     [ -n "$pid" ] && wait "$pid" 2>/dev/null || true
     pid=""
+}
+
+# wait_field NAME OP VALUE N WHY: frames until the log's field NAME is (OP =) or is not (OP !=)
+# VALUE, at most N; else fails with WHY and the field's last value.
+wait_field() {
+    wait_field_frames=0
+    until [ "$(field "$1")" "$2" "$3" ]; do
+        wait_frames 1
+        wait_field_frames=$((wait_field_frames + 1))
+        [ "$wait_field_frames" -le "$4" ] || fail "$5 ($1 $(field "$1"))"
+    done
+}
+
+# --- combos and menus -------------------------------------------------------------------------
+# scroll_into_view NAME WINDOW MAX: the mouse over the logged window rectangle WINDOW, the wheel
+# turned down until the logged rectangle NAME is drawn with its whole box above WINDOW's bottom
+# edge, at most MAX steps; wheel_steps says how many it took.
+scroll_into_view() {
+    set -- "$1" "$2" "$3" $(centre "$2")
+    [ "$4" -gt 0 ] || fail "$2 was not drawn ($(field "$2"))"
+    xdotool mousemove --window "$wid" "$4" "$5"
+    wait_frames 2
+    wheel_steps=0
+    until printf '%s %s\n' "$(field "$1" | tr -d '[]')" "$(field "$2" | tr -d '[]')" | tr ',' ' ' |
+        awk '{ exit !($3 > 0 && $2 + $4 < $6 + $8 - 4) }'; do
+        wheel_steps=$((wheel_steps + 1))
+        [ "$wheel_steps" -le "$3" ] || fail "$3 wheel steps did not bring $1 into view"
+        xdotool click 5
+        wait_frames 2
+    done
+}
+# open_combo NAME ITEMS N: a click on the logged combo rectangle NAME opens its list; the frame log's
+# ITEMS field ("x y" centres, one pair an entry) must then list its entries. Sets item_x and
+# item_y to the centre of entry N (from 1); the caller clicks it (click_at, or by hand where the
+# editor may quit after that click).
+open_combo() {
+    set -- "$1" "$2" "$3" $(centre "$1")
+    [ "$4" -gt 0 ] || fail "$1 was not drawn ($(field "$1"))"
+    click_at "$4" "$5"
+    wait_frames 4
+    combo_items=$(field "$2")
+    [ "$combo_items" != "[]" ] || fail "clicking $1 at $4,$5 did not open its list"
+    item_x=$(echo "$combo_items" | tr -d '[]' | awk -F, -v n="$3" '{ printf "%d", $(2 * n - 1) }')
+    item_y=$(echo "$combo_items" | tr -d '[]' | awk -F, -v n="$3" '{ printf "%d", $(2 * n) }')
+}
+# pick_ui_scale N SCALE: View > UI scale > choice N (model/ui_scale.h order) by clicks where the
+# frame log says each is drawn, then frames until the log's uiScale is SCALE ("1.5000").
+pick_ui_scale() {
+    click_at $(centre viewMenu)
+    [ "$(field uiScaleMenu)" != "[0.0000,0.0000,0.0000,0.0000]" ] || fail "the View menu did not open"
+    xdotool mousemove --window "$wid" $(centre uiScaleMenu)
+    wait_field uiScaleItems != "[]" 40 "View > UI scale did not open its choices"
+    # uiScaleItems: an [x, y, w, h] rectangle a choice, from choice 0.
+    click_at $(field uiScaleItems | tr -d '[]' |
+        awk -F, -v n="$1" '{ i = 4 * n; printf "%d %d", $(i + 1) + $(i + 3) / 2, $(i + 2) + $(i + 4) / 2 }')
+    wait_field uiScale = "$2" 40 "choice $1 did not set the scale to $2"
 }
