@@ -56,6 +56,12 @@ char const* radiusKindName(RadiusKind k) {
 
 }  // namespace
 
+char const* const kPrepassExportNote =
+    "prepass keeps a thin G-buffer: normal.exr and specular_exponent.exr are prepass.normal_exp's "
+    "(raw_prepass_normal_exp.exr as stored), depth.exr its lit depth and position.exr rebuilt from it; it "
+    "stores no albedo, specular intensity, emission or occlusion, so albedo.png, specular.png, emissive.exr "
+    "and the layout's raw_ files are not written";
+
 FloatImage linearDepthImage(FloatImage depth, Camera const& cam) {
     for (float& z : depth.pixels) z = linearDepth(z, cam.nearPlane, cam.farPlane);
     return depth;
@@ -103,6 +109,9 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
     auto check = [&](std::optional<std::string> e) {
         if (e && !err) err = e;
     };
+    // A prepass frame's G-buffer is its thin one (docs/deferred_lighting.md): the read-backs below
+    // read it (position rebuilt from the lit depth), and what it does not store is not written.
+    bool const thin = frame.stats.modeUsed == LightingMode::Prepass;
     FloatImage const albedo = renderer.readAttachment(Attachment::AlbedoSpec);
     FloatImage const depth = renderer.readAttachment(Attachment::Depth);
     check(writePng(path("final.png"), renderer.readAttachment(Attachment::Final), 3));
@@ -110,13 +119,19 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
     FloatImage const position = renderer.readAttachment(Attachment::Position);
     check(writeExr(path("position.exr"), position));
     check(writeExr(path("normal.exr"), renderer.readAttachment(Attachment::Normal)));
-    check(writePng(path("albedo.png"), albedo, 3));
-    check(writePng(path("specular.png"), specularImage(albedo)));
-    // Emitted radiance (rgb) and ambient occlusion (a), decoded: the same in every layout that stores
-    // them; a layout that does not (packed) writes what it decodes, emission 0 and occlusion 1.
-    check(writeExr(path("emissive.exr"), renderer.readAttachment(Attachment::Emissive)));
-    // The accumulation targets, when the frame used them (docs/lighting.md, "Accumulation targets").
-    if (frame.stats.accumulationUsed == LightAccumulation::Split) {
+    if (thin) {
+        check(writeExr(path("specular_exponent.exr"), specularImage(albedo)));
+        check(writeExr(path("raw_prepass_normal_exp.exr"), renderer.readAttachment(Attachment::PrepassNormal)));
+    } else {
+        check(writePng(path("albedo.png"), albedo, 3));
+        check(writePng(path("specular.png"), specularImage(albedo)));
+        // Emitted radiance (rgb) and ambient occlusion (a), decoded: the same in every layout that stores
+        // them; a layout that does not (packed) writes what it decodes, emission 0 and occlusion 1.
+        check(writeExr(path("emissive.exr"), renderer.readAttachment(Attachment::Emissive)));
+    }
+    // The accumulation targets, when the frame used them (docs/lighting.md, "Accumulation targets"),
+    // and prepass's light targets.
+    if (frame.stats.accumulationUsed == LightAccumulation::Split || thin) {
         check(writeExr(path("diffuse_light.exr"), renderer.readAttachment(Attachment::DiffuseLight)));
         check(writeExr(path("specular_light.exr"), renderer.readAttachment(Attachment::SpecularLight)));
     }
@@ -124,7 +139,7 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
     check(writeExr(path("depth_linear.exr"), linearDepthImage(depth, frame.camera)));
     // Every attachment of the layout as stored: 8-bit ones as PNG (exact), the others as EXR.
     GBufferLayoutDesc const& layout = layoutDesc(renderer.layout());
-    for (int i = 0; i < layout.attachmentCount; ++i) {
+    for (int i = 0; i < (thin ? 0 : layout.attachmentCount); ++i) {  // prepass drew none of them
         GBufferAttachmentDesc const& a = layout.attachments()[std::size_t(i)];
         FloatImage const raw = renderer.readRawAttachment(i);
         std::string const base = "raw_" + std::string(a.name);
@@ -229,6 +244,7 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
     if (frame.stats.fragmentInvocations) statsJson["fragment_invocations"] = *frame.stats.fragmentInvocations;
     // A layout that does not store emission and occlusion says so (emissive.exr is then 0 rgb, 1 a).
     if (std::string const note = layoutOmissionNote(layout); !note.empty()) statsJson["gbuffer_note"] = note;
+    if (thin) statsJson["gbuffer_note"] = kPrepassExportNote;
     check(writeJson(out / "lights.json", lightsJson));
     check(writeJson(out / "camera.json", cameraJson));
     check(writeJson(out / "stats.json", statsJson));

@@ -31,6 +31,11 @@ struct FrameExport {
 // G-buffer layout as stored, view_<name>.png per extra view,
 // lights.json, camera.json and stats.json, from the renderer's current frame. Returns the
 // first error as one sentence naming the file; files before it stay written.
+// A prepass frame (docs/deferred_lighting.md) writes its thin G-buffer instead: normal.exr,
+// specular_exponent.exr, raw_prepass_normal_exp.exr, depth.exr (its lit depth), position.exr
+// (rebuilt from that depth), and diffuse_light.exr and specular_light.exr; no albedo.png,
+// specular.png, emissive.exr or raw_ file of the layout, which it never drew (kPrepassExportNote,
+// stats.json's gbuffer_note, says so).
 std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& frame, std::string const& dir);
 
 // Eye-space distances from a read-back depth attachment (the inverse of the perspective depth
@@ -43,6 +48,9 @@ FloatImage linearDepthImage(FloatImage depth, Camera const& camera);
 // remap, or when nothing is drawn. `position` and `depth` are read-back attachments.
 std::optional<std::pair<float, float>> readableViewRange(DebugView view, FloatImage const& position,
                                                          FloatImage const& depth, Camera const& camera);
+
+// stats.json's gbuffer_note for a prepass frame: which files hold its thin G-buffer, which are left out.
+extern char const* const kPrepassExportNote;
 
 // The alpha channel of the albedo/specular attachment as a one-channel image (specular.png).
 FloatImage specularImage(FloatImage const& albedoSpec);

@@ -224,6 +224,7 @@ FrameRecord RendererImpl::beginFrame(FrameInput const& input, FrameStats& stats)
         because(f.settings.mode == LightingMode::Prepass ? kPrepassRefusesSplit : kForwardRefusesSplit);
     frame.shading = shadingUniforms(f);
     frameInverseViewProj = frame.shading.inverseViewProj;
+    thinGBuffer = f.settings.mode == LightingMode::Prepass;
     if (auto why = lights.upload(f.lights, caps)) because(*why);
     volumes.enclosingScale = volumes.meshEnclosingScale * f.settings.volumeScale;  // < 1 only to show the cut
     volumes.volumeScale = f.settings.volumeScale;

@@ -103,6 +103,8 @@ public:
 
     // GL texture name of an attachment (for viewers); 0 when the targets are 0x0.
     unsigned texture(Attachment a) const;
+    // After a prepass frame, Position, Normal, AlbedoSpec, Emissive and Depth read its thin G-buffer
+    // (docs/deferred_lighting.md, "Seeing the thin G-buffer"), as the views of it do.
     FloatImage readAttachment(Attachment a) const;
     // The G-buffer layout of the last frame (the one its targets hold).
     GBufferLayout layout() const;

@@ -103,6 +103,8 @@ struct OptionalFeature {
 
 // What the read-backs (renderer_readback.cpp) draw with and into: not the whole renderer.
 struct ReadbackContext;
+// The attachments that a prepass frame's thin G-buffer stands in for (RendererImpl::readThinAttachment).
+bool thinGBufferReads(Attachment a);
 
 class RendererImpl {
 public:
@@ -122,6 +124,11 @@ public:
     std::vector<PassDecl> framePasses(FrameInput const& input);
     float lightCubeHalfSize() const;
     ReadbackContext readbackContext();
+    // prepass's thin G-buffer read back (renderer_readback_thin.cpp) in the layout's place, for the
+    // attachments thinGBufferReads names, after a prepass frame (thinGBuffer).
+    FloatImage readThinAttachment(Attachment a);
+    // The pixel inspector's values there (x, glY: GL's bottom-left origin).
+    void sampleThinPixel(int x, int glY, glm::mat4 const& inverseViewProj, PixelSample& s);
 
 private:
     friend class Renderer;  // its methods are this class's interface (renderer.cpp, renderer_readback.cpp, ...)
@@ -145,6 +152,9 @@ private:
     gl::Query complexQuery;     // GL_SAMPLES_PASSED of the msaa_edges pass: the complex pixels (made on first use)
     std::uint64_t glErrorsAtStart = 0;
     glm::mat4 frameInverseViewProj{1.0f};  // of the last frame rendered: decodes its G-buffer
+    // The last frame ran prepass: its G-buffer is the thin one (prepass.normal_exp and the lit
+    // depth), which the read-backs (renderer_readback.cpp) read in the layout's place.
+    bool thinGBuffer = false;
     // What the coverage target counts now (runCoverage), for the pixel inspector; none before a
     // count view ran in this frame.
     std::optional<DebugView> coverageView;

@@ -145,9 +145,13 @@ void RendererImpl::runDisplay(FrameRecord& frame, PassRun const& r) {
     ViewParams display;
     display.view = f.settings.view;
     if (frame.view) display = *frame.view;
+    // A prepass frame's display declares its thin G-buffer (core/frame_passes.cpp, displayPass).
+    bool const thin =
+        std::find(r.decl.samples.begin(), r.decl.samples.end(), Resource::PrepassNormal) != r.decl.samples.end();
     viewPass({r.io.gbuffer(), r.io.texture(Resource::Lighting), r.io.texture(Resource::Coverage),
               r.io.texture(Resource::DiffuseLight), r.io.texture(Resource::SpecularLight), viewProgram(f.settings.view),
-              triangle, *r.fbo},
+              triangle, *r.fbo, thin ? &r.io.texture(Resource::PrepassNormal) : nullptr,
+              thin ? &r.io.texture(Resource::LitDepth) : nullptr},
              {display, f.settings.tonemap, f.settings.exposure, f.camera.nearPlane, f.camera.farPlane,
               r.io.targets.width, r.io.targets.height, frame.shading.inverseViewProj, r.decl.states});
 }

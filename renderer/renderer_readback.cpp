@@ -1,5 +1,7 @@
 // Reading the frame's images back: attachments as floats, one pixel for the inspector, views.
-#include "renderer_impl.h"
+#include "readback_io.h"
+
+#include "core/depth.h"
 
 #include "gl/shader_bindings.h"
 #include "gpu/draw_state_gl.h"
@@ -39,6 +41,8 @@ unsigned Renderer::texture(Attachment a) const {
             return t.display.id();
         case Attachment::ComplexPixels:
             return t.msaa.complexMask.id();
+        case Attachment::PrepassNormal:
+            return t.prepassNormal.id();
     }
     return 0;
 }
@@ -51,6 +55,8 @@ FloatImage constantImage(int width, int height, glm::vec4 v) {
     for (int i = 0; i < width * height; ++i) img.pixels.insert(img.pixels.end(), {v.x, v.y, v.z, v.w});
     return img;
 }
+
+}  // namespace
 
 #ifdef __EMSCRIPTEN__
 // WebGL2 (OpenGL ES 3.0) reads a colour attachment back only as RGBA in the type its format
@@ -122,6 +128,7 @@ FloatImage readFramebuffer(GLuint fbo, GLenum attachment, int width, int height,
     return img;
 }
 
+namespace {
 #ifndef __EMSCRIPTEN__
 // Reads the stencil bits of a framebuffer's depth-stencil attachment as one float channel holding
 // the integer values, flipped like readFramebuffer (the browser's way is readStencilImage's).
@@ -162,7 +169,9 @@ DecodedGBuffer decodeGBuffer(ReadbackContext const& r, glm::ivec2 offset, int wi
 // (mask 1 << b), the pass adds 2^b / 255 (additive blending; sums of distinct powers of two up to
 // 255 are exact in 8 bits), so the red channel times 255 is the stencil value. Only `region` (GL
 // coordinates: x, y from the bottom, width, height) is drawn and read: one pixel for the inspector.
-std::vector<float> readDepthOrStencil(ReadbackContext const& r, bool stencil, glm::ivec4 region) {
+// `depth`: the depth texture drawn (the G-buffer's when null; prepass's thin one is the lit depth).
+std::vector<float> readDepthOrStencil(ReadbackContext const& r, bool stencil, glm::ivec4 region,
+                                      gl::Texture const* depth = nullptr) {
     RenderTargets const& t = r.targets;
     auto& rb = r.readback;  // RendererImpl::ReadbackTargets, a private type
     if (!rb.depthFbo) {
@@ -194,7 +203,7 @@ std::vector<float> readDepthOrStencil(ReadbackContext const& r, bool stencil, gl
     } else {
         glViewport(region.x, region.y, region.z, region.w);
         applyGroup(decl.states, 0);
-        bindTextureUnit(slot::BIND_READBACK_SOURCE, GL_TEXTURE_2D, t.gbuffer.depth.id());
+        bindTextureUnit(slot::BIND_READBACK_SOURCE, GL_TEXTURE_2D, depth ? depth->id() : t.gbuffer.depth.id());
         r.triangle.draw();
     }
     glViewport(0, 0, t.width, t.height);  // the frame's passes draw full size
@@ -208,9 +217,9 @@ std::vector<float> readDepthOrStencil(ReadbackContext const& r, bool stencil, gl
 }
 
 // The whole frame's depth or stencil, rows top to bottom.
-FloatImage readDepthOrStencilImage(ReadbackContext const& r, bool stencil) {
+FloatImage readDepthOrStencilImage(ReadbackContext const& r, bool stencil, gl::Texture const* depth = nullptr) {
     RenderTargets const& t = r.targets;
-    std::vector<float> const bottomUp = readDepthOrStencil(r, stencil, {0, 0, t.width, t.height});
+    std::vector<float> const bottomUp = readDepthOrStencil(r, stencil, {0, 0, t.width, t.height}, depth);
     FloatImage img{t.width, t.height, 1, std::vector<float>(bottomUp.size())};
     std::size_t const row = std::size_t(t.width);
     for (int y = 0; y < t.height; ++y)
@@ -230,6 +239,34 @@ FloatImage readDepth(ReadbackContext const& r) {
 #endif
 }
 
+}  // namespace
+
+FloatImage readDepthImage(ReadbackContext const& r, GLuint fbo, gl::Texture const& depth) {
+#ifdef __EMSCRIPTEN__
+    (void)fbo;
+    return readDepthOrStencilImage(r, false, &depth);
+#else
+    (void)depth;
+    return readFramebuffer(fbo, GL_NONE, r.targets.width, r.targets.height, 1);
+#endif
+}
+
+float readDepthTexel(ReadbackContext const& r, GLuint fbo, gl::Texture const& depth, int x, int glY) {
+#ifdef __EMSCRIPTEN__
+    (void)fbo;
+    return readDepthOrStencil(r, false, {x, glY, 1, 1}, &depth)[0];
+#else
+    (void)r;
+    (void)depth;
+    float d = 1.0f;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    glReadPixels(x, glY, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &d);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    return d;
+#endif
+}
+
+namespace {
 FloatImage readStencilImage(ReadbackContext const& r) {
 #ifdef __EMSCRIPTEN__
     return readDepthOrStencilImage(r, true);
@@ -262,6 +299,7 @@ FloatImage Renderer::readRawAttachment(int index) const {
 FloatImage Renderer::readAttachment(Attachment a) const {
     RenderTargets const& t = impl_->targets;
     if (t.empty()) return {};
+    if (impl_->thinGBuffer && thinGBufferReads(a)) return impl_->readThinAttachment(a);
     int const albedoIndex = colorAttachmentIndex(layoutDesc(t.gbuffer.layout), GBufferSlot::AlbedoSpec);
     int const emissiveIndex = colorAttachmentIndex(layoutDesc(t.gbuffer.layout), GBufferSlot::Emissive);
     switch (a) {
@@ -304,6 +342,8 @@ FloatImage Renderer::readAttachment(Attachment a) const {
                 for (std::size_t i = 0; i < mask.pixels.size(); ++i) mask.pixels[i] = rg.pixels[i * 2];
                 return mask;
             }
+        case Attachment::PrepassNormal:
+            return readFramebuffer(t.prepassFbo.id(), GL_COLOR_ATTACHMENT0, t.width, t.height, 4);
     }
     return {};
 }
@@ -371,27 +411,29 @@ FloatImage Renderer::readViewTarget(ViewTarget const& target) const {
     return readFramebuffer(target.fbo.id(), GL_COLOR_ATTACHMENT0, target.texture.width(), target.texture.height(), 4);
 }
 
-PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
-    RenderTargets const& t = impl_->targets;
-    PixelSample s;
-    if (t.empty() || x < 0 || y < 0 || x >= t.width || y >= t.height) return s;
-    int const glY = t.height - 1 - y;
-    auto readColor = [&](GLuint fbo, GLenum attachment, glm::vec4& out) {
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
-        glReadBuffer(attachment);
+void readPixelColor(GLuint fbo, GLenum attachment, int x, int glY, glm::vec4& out) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    glReadBuffer(attachment);
 #ifdef __EMSCRIPTEN__
-        std::vector<float> const rgba = readRgbaAsFloats(attachment, x, glY, 1, 1);
-        out = glm::vec4(rgba[0], rgba[1], rgba[2], rgba[3]);
+    std::vector<float> const rgba = readRgbaAsFloats(attachment, x, glY, 1, 1);
+    out = glm::vec4(rgba[0], rgba[1], rgba[2], rgba[3]);
 #else
-        glReadPixels(x, glY, 1, 1, GL_RGBA, GL_FLOAT, &out[0]);
+    glReadPixels(x, glY, 1, 1, GL_RGBA, GL_FLOAT, &out[0]);
 #endif
-        glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+}
+
+namespace {
+// The pixel inspector's values of the layout's G-buffer at x, glY (GL's bottom-left origin).
+void sampleGBufferPixel(ReadbackContext const& r, int x, int glY, glm::mat4 const& invViewProj, PixelSample& s) {
+    RenderTargets const& t = r.targets;
+    auto readColor = [&](GLuint fbo, GLenum attachment, glm::vec4& out) {
+        readPixelColor(fbo, attachment, x, glY, out);
     };
     GBufferLayoutDesc const& desc = layoutDesc(t.gbuffer.layout);
-    float const aspect = float(t.width) / float(t.height);
-    glm::mat4 const invViewProj = glm::inverse(camera.projection(aspect) * camera.view());
     // Position and normal as the lighting decoded them, through a one-pixel decode pass.
-    DecodedGBuffer const d = decodeGBuffer(impl_->readbackContext(), {x, glY}, 1, 1, invViewProj);
+    DecodedGBuffer const d = decodeGBuffer(r, {x, glY}, 1, 1, invViewProj);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, d.fbo.id());
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, &s.position[0]);
@@ -406,18 +448,10 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
         readColor(t.gbuffer.fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + e), s.emissiveAo);
     else
         s.emissiveAo = kNoEmissiveAo;
-    readColor(t.litFbo.id(), GL_COLOR_ATTACHMENT0, s.lighting);
-    if (impl_->coverageView) {
-        glm::vec4 c{0.0f};
-        readColor(t.coverageFbo.id(), GL_COLOR_ATTACHMENT0, c);
-        s.coverage = glm::vec2(c);
-        s.coverageView = impl_->coverageView;
-        s.coverageMode = impl_->coverageMode;
-    }
 #ifdef __EMSCRIPTEN__
     // WebGL2 reads neither depth nor stencil: both through their passes, over this pixel alone.
-    s.depth = readDepthOrStencil(impl_->readbackContext(), false, {x, glY, 1, 1})[0];
-    s.stencil = std::uint8_t(readDepthOrStencil(impl_->readbackContext(), true, {x, glY, 1, 1})[0]);
+    s.depth = readDepthOrStencil(r, false, {x, glY, 1, 1})[0];
+    s.stencil = std::uint8_t(readDepthOrStencil(r, true, {x, glY, 1, 1})[0]);
 #else
     glBindFramebuffer(GL_READ_FRAMEBUFFER, t.gbuffer.fbo.id());
     glReadPixels(x, glY, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &s.depth);
@@ -430,10 +464,33 @@ PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     s.covered = s.position.w > 0.0f;
     // World position rebuilt from depth: unproject the pixel centre through the inverse view-projection.
-    glm::vec4 const ndc((float(x) + 0.5f) / float(t.width) * 2.0f - 1.0f,
-                        (float(glY) + 0.5f) / float(t.height) * 2.0f - 1.0f, s.depth * 2.0f - 1.0f, 1.0f);
-    glm::vec4 const world = invViewProj * ndc;
-    s.reconstructedPosition = glm::vec3(world) / world.w;
+    s.reconstructedPosition = worldFromDepth(invViewProj, {x, glY}, {t.width, t.height}, s.depth);
+}
+}  // namespace
+
+PixelSample Renderer::samplePixel(int x, int y, Camera const& camera) const {
+    RenderTargets const& t = impl_->targets;
+    PixelSample s;
+    if (t.empty() || x < 0 || y < 0 || x >= t.width || y >= t.height) return s;
+    int const glY = t.height - 1 - y;
+    auto readColor = [&](GLuint fbo, GLenum attachment, glm::vec4& out) {
+        readPixelColor(fbo, attachment, x, glY, out);
+    };
+    float const aspect = float(t.width) / float(t.height);
+    glm::mat4 const invViewProj = glm::inverse(camera.projection(aspect) * camera.view());
+    if (impl_->thinGBuffer) {
+        impl_->sampleThinPixel(x, glY, invViewProj, s);
+    } else {
+        sampleGBufferPixel(impl_->readbackContext(), x, glY, invViewProj, s);
+    }
+    readColor(t.litFbo.id(), GL_COLOR_ATTACHMENT0, s.lighting);
+    if (impl_->coverageView) {
+        glm::vec4 c{0.0f};
+        readColor(t.coverageFbo.id(), GL_COLOR_ATTACHMENT0, c);
+        s.coverage = glm::vec2(c);
+        s.coverageView = impl_->coverageView;
+        s.coverageMode = impl_->coverageMode;
+    }
     return s;
 }
 

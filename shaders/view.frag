@@ -28,6 +28,11 @@ uniform int uNormalDisplay;
 uniform float uNear;
 uniform float uFar;
 uniform int uClusterSlices;  // kClusterSlices: the clustered grid's exponential depth slices
+// 1: a prepass frame (docs/deferred_lighting.md). Its G-buffer is the thin one: uPrepassNormal
+// (world normal xyz, specular exponent w) and uDepth, which is then the lit depth it drew. It keeps
+// no albedo, emission or occlusion (its second geometry pass reads them from the materials).
+uniform int uThinGBuffer;
+uniform sampler2D uPrepassNormal;
 
 in vec2 vUV;
 out vec4 fragColor;
@@ -92,6 +97,32 @@ vec3 sliceLegend(ivec2 px, vec3 color) {
     return sliceColor((px.x - x0) / w);
 }
 
+// The thin G-buffer's surface at px: false where nothing was drawn; the position rebuilt from the
+// depth as prepass_light.frag rebuilds it.
+bool thinPosition(ivec2 px, out vec3 position) {
+    float d = texelFetch(uDepth, px, 0).r;
+    vec2 ndc = (vec2(px) + 0.5) / vec2(textureSize(uDepth, 0)) * 2.0 - 1.0;
+    vec4 world = uInverseViewProj * vec4(ndc, d * 2.0 - 1.0, 1.0);
+    position = world.xyz / world.w;
+    return d < 1.0;
+}
+
+bool surfacePosition(ivec2 px, out vec3 position) {
+    return uThinGBuffer != 0 ? thinPosition(px, position) : gbufferPosition(px, position);
+}
+
+// What the layout's views show of the thin G-buffer: its normal, its exponent in the specular
+// view, its one colour target as raw0; zero for what it does not store.
+vec4 thinView(ivec2 px, int view) {
+    vec3 p;
+    bool drawn = thinPosition(px, p);
+    vec4 stored = texelFetch(uPrepassNormal, px, 0);
+    if (view == VIEW_NORMAL) return drawn ? vec4(stored.xyz, 1.0) : vec4(0.0);
+    if (view == VIEW_SPECULAR) return vec4(stored.www, 1.0);
+    if (view == VIEW_RAW0) return stored;
+    return vec4(0.0);
+}
+
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 v;
@@ -102,27 +133,28 @@ void main() {
     // Position and normal decoded as the lighting reads them, so every layout shows the same quantity.
     case VIEW_POSITION: {
         vec3 p;
-        bool drawn = gbufferPosition(px, p);
+        bool drawn = surfacePosition(px, p);
         v = drawn ? vec4(p, 1.0) : vec4(0.0);
         break;
     }
     case VIEW_NORMAL: {
         vec3 p;
-        vec4 n = gbufferPosition(px, p) ? vec4(gbufferNormal(px), 1.0) : vec4(0.0);
+        vec4 n = uThinGBuffer != 0 ? thinView(px, VIEW_NORMAL)
+                 : gbufferPosition(px, p) ? vec4(gbufferNormal(px), 1.0) : vec4(0.0);
         v = vec4(uNormalDisplay == NORMALS_ABSOLUTE ? abs(n.xyz) : n.xyz * 0.5 + 0.5, n.w);
         data = false;
         break;
     }
-    case VIEW_RAW0: v = gbufferRawAttachment(px, 0); break;
-    case VIEW_RAW1: v = gbufferRawAttachment(px, 1); break;
-    case VIEW_RAW2: v = gbufferRawAttachment(px, 2); break;
-    case VIEW_RAW3: v = gbufferRawAttachment(px, 3); break;
-    case VIEW_EMISSIVE: v = vec4(gbufferEmissiveAo(px).rgb, 1.0); break;
-    case VIEW_OCCLUSION: v = vec4(gbufferEmissiveAo(px).aaa, 1.0); break;
+    case VIEW_RAW0: v = uThinGBuffer != 0 ? thinView(px, VIEW_RAW0) : gbufferRawAttachment(px, 0); break;
+    case VIEW_RAW1: v = uThinGBuffer != 0 ? thinView(px, VIEW_RAW1) : gbufferRawAttachment(px, 1); break;
+    case VIEW_RAW2: v = uThinGBuffer != 0 ? thinView(px, VIEW_RAW2) : gbufferRawAttachment(px, 2); break;
+    case VIEW_RAW3: v = uThinGBuffer != 0 ? thinView(px, VIEW_RAW3) : gbufferRawAttachment(px, 3); break;
+    case VIEW_EMISSIVE: v = uThinGBuffer != 0 ? thinView(px, VIEW_EMISSIVE) : vec4(gbufferEmissiveAo(px).rgb, 1.0); break;
+    case VIEW_OCCLUSION: v = uThinGBuffer != 0 ? thinView(px, VIEW_OCCLUSION) : vec4(gbufferEmissiveAo(px).aaa, 1.0); break;
     case VIEW_DIFFUSE_LIGHT: v = texelFetch(uDiffuseLight, px, 0); break;
     case VIEW_SPECULAR_LIGHT: v = texelFetch(uSpecularLight, px, 0); break;
-    case VIEW_ALBEDO: v = texelFetch(uAlbedoSpec, px, 0); break;
-    case VIEW_SPECULAR: v = vec4(texelFetch(uAlbedoSpec, px, 0).aaa, 1.0); break;
+    case VIEW_ALBEDO: v = uThinGBuffer != 0 ? thinView(px, VIEW_ALBEDO) : texelFetch(uAlbedoSpec, px, 0); break;
+    case VIEW_SPECULAR: v = uThinGBuffer != 0 ? thinView(px, VIEW_SPECULAR) : vec4(texelFetch(uAlbedoSpec, px, 0).aaa, 1.0); break;
     case VIEW_DEPTH: v = vec4(vec3(texelFetch(uDepth, px, 0).r), 1.0); break;
     case VIEW_DEPTH_LINEAR: v = vec4(vec3(linearDepth(texelFetch(uDepth, px, 0).r, uNear, uFar)), 1.0); break;
     case VIEW_HEATMAP: {

@@ -132,6 +132,20 @@ TEST(FrameDiagram, ResourcesWithAViewShowIt) {
     EXPECT_EQ(resourceView(Resource::LitDepth), std::nullopt);
 }
 
+// prepass (issue 48): the thin G-buffer's normal target opens the normal view, and the display of a
+// prepass frame reads the thin G-buffer (its views show it), not the layout's, which it never drew.
+TEST(FrameDiagram, PrepassThinGBufferOpensTheNormalViewAndFeedsTheDisplay) {
+    EXPECT_EQ(resourceView(Resource::PrepassNormal), DebugView::Normal);
+    std::vector<std::string> const edges = edgeList(settings(LightingMode::Prepass));
+    for (char const* e :
+         {"prepass_geometry -> display via prepass.normal_exp", "prepass_geometry -> display via lighting.depth"})
+        EXPECT_NE(std::find(edges.begin(), edges.end(), e), edges.end()) << e;
+    for (std::string const& e : edges) EXPECT_EQ(e.find("gbuffer."), std::string::npos) << e;
+    std::vector<std::string> const quad = edgeList(settings(LightingMode::Quad));
+    EXPECT_NE(std::find(quad.begin(), quad.end(), "geometry -> display via gbuffer.normal"), quad.end());
+    for (std::string const& e : quad) EXPECT_EQ(e.find("prepass."), std::string::npos) << e;
+}
+
 TEST(FrameDiagram, PassStateInPlainWords) {
     std::vector<PassDecl> const passes = framePasses(settings(LightingMode::Volumes));
     std::vector<std::string> const words = describePass(passes[1]);  // lighting

@@ -3,7 +3,8 @@
 # a click opens the combo where the frame log says it is drawn, a click on "packed" picks it; the
 # frame log then names the new layout and a frame is rendered with it, and a UI script in the same
 # editor checks that the setting changed, no GL error happened and the lit HDR frame (the lighting
-# view's tools) holds light. A screenshot of the lit frame is left in WORK_DIR to look at.
+# view's tools) holds light; then in prepass mode the viewers show its thin G-buffer (normal,
+# exponent, lit depth). Screenshots of both are left in WORK_DIR to look at.
 # usage: ui_layout_combo.sh GBUFFER_LAB WORK_DIR   (run under xvfb-run by ctest)
 set -eu
 bin="$1"
@@ -32,6 +33,22 @@ frames 6
 expect-viewer-stat viewport nan 0
 expect-viewer-stat viewport max-above 0.05
 screenshot $work/layout_packed_lighting.png
+# prepass (issue 48): the G-buffer viewers read its thin G-buffer: the normal viewer its normals
+# (the ground's +Y among them), the specular viewer its exponent (shininess, 32), the depth viewer the
+# lit depth. The viewers' read-backs refresh every 30 frames: 40 frames see the prepass frame's.
+set mode prepass
+set view final
+viewer-tool normal histogram on
+viewer-tool specular histogram on
+viewer-tool depth histogram on
+frames 40
+expect-setting mode prepass
+expect-viewer-stat normal max-above 0.99
+expect-viewer-stat normal min-below -0.5
+expect-viewer-stat specular max-equals 32
+expect-viewer-stat depth max-above 1
+expect-no-gl-errors
+screenshot $work/prepass_viewers.png
 SCRIPT
 "$bin" --size 1280x720 --no-vsync --frame-sleep-ms 60 --log-frames "$log" --ui-test "$work/layout.txt" \
     > "$work/editor.log" 2>&1 &
@@ -72,4 +89,6 @@ grep "ui-test" "$work/editor.log" || true
 [ "$status" -eq 0 ] || fail "the layout script failed (exit $status, see $work/editor.log)"
 grep -q "ui-test PASS .*expect-viewer-stat viewport max-above" "$work/editor.log" ||
     fail "the lit frame was not checked"
+grep -q "ui-test PASS .*expect-viewer-stat specular max-equals 32" "$work/editor.log" ||
+    fail "prepass's thin G-buffer in the viewers was not checked"
 echo "ui_layout_combo: PASS"

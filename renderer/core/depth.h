@@ -2,6 +2,8 @@
 // shaders/depth.glsl is the same function for the shaders.
 #pragma once
 
+#include <glm/glm.hpp>
+
 namespace gbl {
 
 // Positive distance in front of the camera (-z in view space) of a window-space depth d in
@@ -13,6 +15,16 @@ namespace gbl {
 // a few float roundings of the exact value for every d (tests/depth_test.cpp bounds it).
 inline float linearDepth(float windowDepth, float nearPlane, float farPlane) {
     return nearPlane * farPlane / ((1.0f - windowDepth) * farPlane + windowDepth * nearPlane);
+}
+
+// The world position a window-space depth d at pixel `pixel` (GL's bottom-left origin, the
+// pixel's centre) of a width x height frame stands for: unprojected through the inverse
+// view-projection, as the layouts that store no position rebuild it (shaders/gbuffer_read.glsl).
+inline glm::vec3 worldFromDepth(glm::mat4 const& inverseViewProj, glm::ivec2 pixel, glm::ivec2 size, float d) {
+    glm::vec4 const ndc((float(pixel.x) + 0.5f) / float(size.x) * 2.0f - 1.0f,
+                        (float(pixel.y) + 0.5f) / float(size.y) * 2.0f - 1.0f, d * 2.0f - 1.0f, 1.0f);
+    glm::vec4 const world = inverseViewProj * ndc;
+    return glm::vec3(world) / world.w;
 }
 
 }  // namespace gbl

@@ -217,9 +217,14 @@ PassDecl volumeDepthPass() {
 }
 
 // The view pass: the frame's data, tonemapped or shown raw, into `target` (the display or a view).
-PassDecl displayPass(GBufferLayoutDesc const& d, Resource target) {
+// A prepass frame's G-buffer views read its thin G-buffer (normal and exponent, the lit depth):
+// the layout's attachments hold nothing of that frame (docs/deferred_lighting.md).
+PassDecl displayPass(GBufferLayoutDesc const& d, Resource target, bool thin) {
     PassDecl v = declare(PassId::Display);
-    for (GBufferAttachmentDesc const& a : d.attachments()) v.samples.push_back(slotResource(a.slot));  // raw views
+    if (thin)
+        v.samples = {R::PrepassNormal, R::LitDepth};
+    else
+        for (GBufferAttachmentDesc const& a : d.attachments()) v.samples.push_back(slotResource(a.slot));  // raw views
     v.samples = plus(v.samples, {R::Lighting, R::Coverage, R::DiffuseLight, R::SpecularLight});
     v.color = {target};
     v.states = {fullScreen("view")};
@@ -371,7 +376,7 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
         if (resolvedCopy) out.push_back(volumeDepthPass());
         out.push_back(coveragePass(s));
     }
-    out.push_back(displayPass(d, R::Display));
+    out.push_back(displayPass(d, R::Display, prepass));
     if (s.glassOutline && !imported) out.push_back(glassOutlinePass(R::Display));
     // The overlays, onto the display image: the lit image stays the light sum.
     if (!viewShowsOverlays(s.view)) return out;
@@ -426,7 +431,7 @@ std::vector<PassDecl> viewPasses(PipelineSettings const& s) {
         if (s.mode == LightingMode::Volumes && lightingSamplesDepth(d)) out.push_back(volumeDepthPass());
         out.push_back(coveragePass(s));
     }
-    out.push_back(displayPass(d, R::View));
+    out.push_back(displayPass(d, R::View, s.mode == LightingMode::Prepass));
     if (s.glassOutline) out.push_back(glassOutlinePass(R::View));
     return out;
 }

@@ -43,6 +43,10 @@ enum class Attachment {
     // msaa (docs/msaa.md): R8, 1 where the msaa_edges pass found the pixel's samples to differ (its
     // complex pixels); read back with 1 channel; zero without an msaa frame.
     ComplexPixels,
+    // prepass (docs/deferred_lighting.md): its thin G-buffer's one colour target as stored, RGBA16F:
+    // world normal xyz, specular exponent w (0 where nothing was drawn). After a prepass frame,
+    // Position, Normal, AlbedoSpec and Depth read that thin G-buffer too (Renderer::readAttachment).
+    PrepassNormal,
 };
 
 struct PassTiming {
@@ -91,11 +95,11 @@ struct FrameStats {
 
 // Everything stored at one pixel, read back as floats (for the pixel inspector and tests).
 struct PixelSample {
-    bool covered = false;       // geometry was drawn here
-    glm::vec4 position{0.0f};   // decoded, as the lighting read it
-    glm::vec4 normal{0.0f};     // decoded unit normal
-    glm::vec4 rawNormal{0.0f};  // the normal attachment as stored (the layout's encoding)
-    glm::vec4 albedoSpec{0.0f};
+    bool covered = false;                   // geometry was drawn here
+    glm::vec4 position{0.0f};               // decoded, as the lighting read it
+    glm::vec4 normal{0.0f};                 // decoded unit normal
+    glm::vec4 rawNormal{0.0f};              // the normal attachment as stored (the layout's encoding)
+    glm::vec4 albedoSpec{0.0f};             // thinGBuffer: (0, 0, 0, specular exponent)
     glm::vec4 emissiveAo{0.0f};             // emitted radiance rgb, ambient occlusion a
     float depth = 1.0f;                     // window-space depth 0..1
     unsigned stencil = 0;                   // the G-buffer's stencil bits 0..255
@@ -106,6 +110,9 @@ struct PixelSample {
     glm::vec2 coverage{0.0f};
     std::optional<DebugView> coverageView;
     LightingMode coverageMode = LightingMode::Quad;
+    // Read from a prepass frame's thin G-buffer: normal and exponent from prepass.normal_exp,
+    // position rebuilt from the lit depth, no albedo, emission or occlusion stored.
+    bool thinGBuffer = false;
 };
 
 // Float image read back from a target, rows top to bottom.

@@ -141,6 +141,12 @@ constexpr bool lightsByDrawingMeshes(LightingMode m) {
     return shadesForward(m) || m == LightingMode::Prepass;
 }
 
+// The G-buffer views that prepass's thin G-buffer (normal and exponent, depth) has nothing for: it
+// stores no albedo, emission or occlusion (shaders/view.frag, thinView, shows them as zero).
+constexpr bool thinGBufferLacks(DebugView v) {
+    return v == DebugView::Albedo || v == DebugView::Emissive || v == DebugView::Occlusion;
+}
+
 template <class Enum, std::size_t N>
 std::optional<Enum> enumFromName(std::array<std::string_view, N> const& names, std::string_view name) {
     for (std::size_t i = 0; i < N; ++i)

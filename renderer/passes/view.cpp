@@ -14,13 +14,16 @@ void viewPass(ViewInput const& in, ViewConfig const& c) {
     gl::Program const& p = in.program;
     p.use();
     bindGBuffer(in.gbuffer);
-    bindTextureUnit(slot::BIND_DEPTH, GL_TEXTURE_2D, in.gbuffer.depth.id());
+    bool const thin = in.thinNormal && in.thinDepth;
+    bindTextureUnit(slot::BIND_DEPTH, GL_TEXTURE_2D, thin ? in.thinDepth->id() : in.gbuffer.depth.id());
+    bindTextureUnit(slot::BIND_PREPASS_NORMAL, GL_TEXTURE_2D, thin ? in.thinNormal->id() : 0);
     bindTextureUnit(slot::BIND_LIGHTING, GL_TEXTURE_2D, in.hdr.id());
     bindTextureUnit(slot::BIND_COVERAGE, GL_TEXTURE_2D, in.coverage.id());
     bindTextureUnit(slot::BIND_DIFFUSE_LIGHT, GL_TEXTURE_2D, in.diffuseLight.id());
     bindTextureUnit(slot::BIND_SPECULAR_LIGHT, GL_TEXTURE_2D, in.specularLight.id());
     ViewParams const& v = c.params;
     p.set("uView", int(v.view));
+    p.set("uThinGBuffer", thin ? 1 : 0);
     setTonemapUniforms(p, {c.tonemap, c.exposure});
     p.set("uChannelMask", glm::vec4(v.channelMask & 1 ? 1 : 0, v.channelMask & 2 ? 1 : 0, v.channelMask & 4 ? 1 : 0,
                                     v.channelMask & 8 ? 1 : 0));

@@ -23,6 +23,10 @@ struct ViewInput {
     gl::Program const& program;  // ProgramId::View
     gl::FullscreenTriangle const& triangle;
     gl::Framebuffer const& target;  // RGBA8, frame-sized
+    // prepass's thin G-buffer (docs/deferred_lighting.md), where the pass declares it (a prepass
+    // frame): the G-buffer views show prepass.normal_exp and the lit depth in the layout's place.
+    gl::Texture const* thinNormal = nullptr;
+    gl::Texture const* thinDepth = nullptr;
 };
 struct ViewConfig {
     ViewParams params;

@@ -184,7 +184,11 @@ void drawDockedPanels(Editor& editor, FrameTimes const& times, unsigned viewport
     ui::drawViewportPanel(state.viewport, state.pipeline, state.litPin, state.viewportTools, viewportTexture,
                           {renderer.width(), renderer.height()}, selectedLightInImage(state, editor.drawn, renderer),
                           &ab, state.inspector.locked ? state.inspector.pixel : std::nullopt, times.overviewTextures);
-    state.gbuffer.noGBuffer = ui::noGBufferNote(state.pipeline.mode);
+    for (std::size_t i = 0; i < state.gbuffer.viewers.size(); ++i) {
+        ui::ViewerKind const kind = state.gbuffer.viewers[i].kind;
+        state.gbuffer.noGBuffer[i] = ui::noGBufferNote(state.pipeline.mode, kind);
+        state.gbuffer.source[i] = ui::thinGBufferSource(state.pipeline.mode, kind);
+    }
     ui::drawGBufferPanel(state.gbuffer, times.viewerTextures, {renderer.width(), renderer.height()},
                          state.inspector.locked ? state.inspector.pixel : std::nullopt);
     ui::drawFramePanel(state.frame, state.pipeline, state.stats.last);

@@ -171,7 +171,8 @@ std::optional<DebugView> resourceView(Resource r) {
             return DebugView::Depth;
         case Resource::MsaaLighting:  // resolved into the lit image (msaa_resolve_lighting)
             return DebugView::Lighting;
-        case Resource::PrepassNormal:  // prepass's thin G-buffer: no debug view of its own yet
+        case Resource::PrepassNormal:  // prepass's thin G-buffer: the normal viewer shows it in prepass frames
+            return DebugView::Normal;
         case Resource::ComplexMask:
         case Resource::MsaaVolumeDepth:
         case Resource::VolumeDepth:

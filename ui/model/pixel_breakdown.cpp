@@ -12,7 +12,7 @@ namespace gbl::ui {
 std::optional<PixelBreakdown> breakDownPixel(PixelSample const& sample, std::span<PointLight const> lights,
                                              Camera const& camera, PipelineSettings const& settings,
                                              std::optional<PixelInFrame> const& where) {
-    if (!sample.covered) return std::nullopt;
+    if (!sample.covered || sample.thinGBuffer) return std::nullopt;  // prepass's thin G-buffer: no albedo
     ShadingInputs in;
     // The stored values, exactly as the lighting pass reads them from the G-buffer.
     in.position = glm::vec3(sample.position);
@@ -139,7 +139,15 @@ std::string noBreakdownNote(PixelSample const& sample, PipelineSettings const& s
                       sample.lighting.r, sample.lighting.g, sample.lighting.b);
         return buf;
     }
-    if (settings.mode == LightingMode::Prepass && !sample.covered) {
+    if (sample.thinGBuffer && sample.covered) {
+        char buf[240];
+        std::snprintf(buf, sizeof buf,
+                      "prepass keeps a thin G-buffer of its own (normal, exponent, depth) and no albedo, so the "
+                      "lights cannot be broken down from it (lit value stored: %.4f %.4f %.4f)",
+                      sample.lighting.r, sample.lighting.g, sample.lighting.b);
+        return buf;
+    }
+    if (settings.mode == LightingMode::Prepass && !sample.covered && !sample.thinGBuffer) {
         char buf[220];
         std::snprintf(buf, sizeof buf,
                       "prepass keeps a thin G-buffer of its own, not this layout's, so there is no surface to break "

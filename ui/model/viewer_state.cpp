@@ -162,11 +162,29 @@ RangeSkip viewerSkip(ViewerKind kind) {
                : RangeSkip::ZeroAlpha;
 }
 
-std::string noGBufferNote(LightingMode mode) {
+std::string noGBufferNote(LightingMode mode, ViewerKind kind) {
     if (shadesForward(mode)) return "forward and forward+ write no G-buffer";
-    if (mode == LightingMode::Prepass)
-        return "prepass writes a thin G-buffer of its own (normal and exponent, depth), not this one; its light "
-               "targets: the diffuse_light and specular_light views";
+    if (mode == LightingMode::Prepass && kind == ViewerKind::Albedo)
+        return "prepass keeps no albedo: its thin G-buffer holds normal, exponent and depth; the second geometry "
+               "pass reads albedo from the materials";
+    return {};
+}
+
+std::string thinGBufferSource(LightingMode mode, ViewerKind kind) {
+    if (mode != LightingMode::Prepass) return {};
+    switch (kind) {
+        case ViewerKind::Position:
+            return "rebuilt from the lit depth";
+        case ViewerKind::Normal:
+            return "prepass.normal_exp xyz";
+        case ViewerKind::Specular:
+            return "exponent: prepass.normal_exp w";
+        case ViewerKind::Depth:
+            return "lit depth (thin pass)";
+        case ViewerKind::Albedo:
+        case ViewerKind::Lighting:
+            break;
+    }
     return {};
 }
 

@@ -120,10 +120,13 @@ struct GBufferPanelState {
     // The first viewer's image area (its cell below the toolbar) as last drawn: the dock layout
     // fits the strip's height to it (panels/layout.h, fitStripHeight).
     glm::vec2 imageArea{0.0f};
-    // Set by the loop each frame: why the lighting mode writes none of the layout's G-buffer (the
-    // forward modes; prepass, whose thin one is its own), which every viewer says instead of showing
-    // a blank or stale image; empty when it writes it (noGBufferNote).
-    std::string noGBuffer;
+    // Set by the loop each frame, per viewer: why the lighting mode stores nothing that viewer shows
+    // (the forward modes: no G-buffer; prepass: no albedo), which it says instead of showing a blank
+    // or stale image; empty when it stores it (noGBufferNote).
+    std::array<std::string, 5> noGBuffer{};
+    // ... and where a viewer's values come from when not from the layout's G-buffer (prepass's thin
+    // one), a caption over its image; empty otherwise (thinGBufferSource).
+    std::array<std::string, 5> source{};
     // Set by the loop each frame: samples per pixel of the frame shown (0: no msaa), for the
     // viewers' and the magnifier's sample selectors.
     int msaaSamples = 0;
@@ -158,9 +161,13 @@ std::optional<ViewerKind> viewerKindOfView(DebugView view);
 // Makes the viewport's viewer follow the view: kind and linear depth. False when the view is
 // neither a G-buffer attachment nor the lit frame (the tools then stay hidden).
 bool followViewportView(ViewportTools& tools, DebugView view);
-// What the G-buffer viewers say in `mode` instead of an image (GBufferPanelState::noGBuffer): the
-// forward modes write no G-buffer, prepass a thin one of its own; empty where the layout's is drawn.
-std::string noGBufferNote(LightingMode mode);
+// What the G-buffer viewer `kind` says in `mode` instead of an image (GBufferPanelState::noGBuffer):
+// the forward modes write no G-buffer; prepass's thin one (normal, exponent, depth) holds no albedo.
+// Empty where the viewer has values to show.
+std::string noGBufferNote(LightingMode mode, ViewerKind kind);
+// Where viewer `kind`'s values come from in `mode` when not from the layout's G-buffer: prepass's
+// thin G-buffer (docs/deferred_lighting.md). Empty otherwise.
+std::string thinGBufferSource(LightingMode mode, ViewerKind kind);
 // Switches the depth viewer between depth and stencil, swapping in the other view's range.
 void setShowStencil(ViewerState& viewer, bool on);
 

@@ -143,6 +143,19 @@ void drawNoGBufferNote(glm::vec4 rect, std::string const& note) {
     dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), p, IM_COL32(235, 235, 235, 255), text, nullptr, wrap);
 }
 
+// Along the bottom of a viewer's image (x, y, width, height): where its values come from when not
+// from the layout's G-buffer (prepass's thin one).
+void sourceCaption(glm::vec4 rect, std::string const& caption) {
+    if (rect.z <= 0.0f || rect.w <= 0.0f) return;
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    float const wrap = std::max(40.0f, rect.z - 8.0f);
+    ImVec2 const size = ImGui::CalcTextSize(caption.c_str(), nullptr, false, wrap);
+    ImVec2 const p(rect.x + 4.0f, rect.y + rect.w - size.y - 3.0f);
+    dl->AddRectFilled(ImVec2(p.x - 2, p.y - 1), ImVec2(p.x + size.x + 2, p.y + size.y + 1), IM_COL32(0, 0, 0, 170));
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), p, IM_COL32(150, 220, 255, 255), caption.c_str(), nullptr,
+                wrap);
+}
+
 // The options of the whole G-buffer window, at the foot of every viewer's popover.
 void windowOptions(GBufferPanelState& state) {
     separatorText("all viewers");
@@ -259,8 +272,9 @@ void drawGBufferPanel(GBufferPanelState& state, std::array<unsigned, 5> const& t
                     state.hoverPixel = texel;
                     if (!state.showMagnifier || !v.picked) state.activeViewer = int(i);
                 }
-                if (!state.noGBuffer.empty()) drawNoGBufferNote(state.imageRects[i], state.noGBuffer);
+                if (!state.noGBuffer[i].empty()) drawNoGBufferNote(state.imageRects[i], state.noGBuffer[i]);
                 imageLabels(v, state.data[i], imageOrigin, cellWidth);
+                if (!state.source[i].empty()) sourceCaption(state.imageRects[i], state.source[i]);
                 if (ImGui::IsItemClicked(ImGuiMouseButton_Right) || clicked) state.activeViewer = int(i);
                 if (clicked) state.showInViewport = viewerDebugView(v);
                 if (state.syncViews && (v.zoom != zoomBefore || v.center != centerBefore)) syncViewers(state, i);

@@ -103,9 +103,10 @@ void drawPixelInspectorPanel(PixelInspectorState& state) {
                 // Background depth is the far plane: a position rebuilt from it means nothing.
                 if (s.covered) row("from depth", glm::vec4(s.reconstructedPosition, 0.0f), 3);
                 row("normal", s.normal);
-                row("albedo,spec", s.albedoSpec);
-                row("emissive,ao", s.emissiveAo);
-                row("depth", glm::vec4(s.depth, 0, 0, 0), 1);
+                // prepass's thin G-buffer: no albedo or emission; w holds the specular exponent
+                row(s.thinGBuffer ? "-,exponent" : "albedo,spec", s.albedoSpec);
+                if (!s.thinGBuffer) row("emissive,ao", s.emissiveAo);
+                row(s.thinGBuffer ? "lit depth" : "depth", glm::vec4(s.depth, 0, 0, 0), 1);
                 row("lighting", s.lighting);
                 ImGui::EndTable();
             }

@@ -214,14 +214,14 @@ void drawOverview(OverviewState& overview, PipelineSettings const& settings, std
         std::string_view const name = overviewLabel(views[i]);
         dl->AddText(ImVec2(r.x + 2.0f, r.y - label + 1.0f), IM_COL32(235, 235, 235, 255), name.data(),
                     name.data() + name.size());
-        // prepass: its light targets and lit image are shown; the layout's attachments it never draws.
+        // prepass: its thin G-buffer's views, light targets and lit image are shown; what it never stores is not.
         bool const empty = settings.mode == LightingMode::Prepass
-                               ? gbufferView(views[i])
+                               ? thinGBufferLacks(views[i])
                                : shadesForward(settings.mode) && views[i] != DebugView::Final;
         if (empty)
             centredMessage(a, b,
                            settings.mode == LightingMode::Forward   ? "forward mode: no G-buffer"
-                           : settings.mode == LightingMode::Prepass ? "prepass mode: a thin G-buffer of its own"
+                           : settings.mode == LightingMode::Prepass ? "prepass mode: not in its thin G-buffer"
                                                                     : "forward+ mode: no G-buffer");
         else if (i < textures.size() && textures[i] != 0)
             dl->AddImage(toImTexture(textures[i]), a, b, ImVec2(0, 1), ImVec2(1, 0));
@@ -348,7 +348,9 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
         "viewport-image", avail,
         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
     ImVec2 const imageEnd(origin.x + avail.x, origin.y + avail.y);
-    bool const noGBuffer = lightsByDrawingMeshes(settings.mode) && gbufferView(settings.view);
+    bool const noGBuffer = settings.mode == LightingMode::Prepass
+                               ? thinGBufferLacks(settings.view)
+                               : shadesForward(settings.mode) && gbufferView(settings.view);
     if (overview.on) {
         drawOverview(overview, settings, overviewTextures, origin, avail, textureSize);
     } else if (abOn && ab->ab.view == AbView::Diff && ab->diffTexture != 0) {
@@ -356,15 +358,15 @@ void drawViewportPanel(ViewportState& state, PipelineSettings& settings, LitPin&
                                              ImVec2(1, 0));
         drawAbDiff(*ab, settings, origin, avail);
     } else if (noGBuffer) {
-        char text[160];
-        std::snprintf(
-            text, sizeof text,
-            settings.mode == LightingMode::Prepass
-                ? "prepass keeps a thin G-buffer of its own (normal and exponent, depth): '%s' of this layout "
-                  "is not drawn. Its light targets: the diffuse_light and specular_light views."
-                : "forward mode has no G-buffer: '%s' is not stored anywhere. Switch to quad, volumes or "
-                  "tiled to see it.",
-            kDebugViewNames[std::size_t(settings.view)].data());
+        char text[256];
+        std::snprintf(text, sizeof text,
+                      settings.mode == LightingMode::Prepass
+                          ? "prepass keeps a thin G-buffer of its own (normal and exponent, depth): '%s' is not in it "
+                            "(the second geometry pass reads the materials). Its light targets: the diffuse_light and "
+                            "specular_light views."
+                          : "forward mode has no G-buffer: '%s' is not stored anywhere. Switch to quad, volumes or "
+                            "tiled to see it.",
+                      kDebugViewNames[std::size_t(settings.view)].data());
         centredMessage(origin, imageEnd, text);
     } else if (texture != 0) {
         // GL images start at the bottom row; flip v so the picture is upright.
