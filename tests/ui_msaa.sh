@@ -1,6 +1,8 @@
 #!/bin/sh
 # MSAA in the editor with real X clicks (xdotool, issue 47): the Pipeline window's msaa combo is
-# opened where the frame log says it is drawn and "4" is clicked (msaa_lighting is edges by
+# opened where the frame log says it is drawn; the editor runs with GBL_MAX_SAMPLES=4 (a driver
+# that cannot do 8, gl/sample_limit.h), so "8" is greyed out: hovered (its reason as tooltip, in
+# the screenshot msaa_8_greyed.png) and clicked, it stays unpicked; then "4" is clicked (msaa_lighting is edges by
 # default); the viewport's "Complex" checkbox is clicked; a UI script in the same editor checks
 # that 4 samples ran, the overlay is drawn, selects sample 1 in the position viewer and checks its
 # values, and that the pixel inspector lists 4 samples. Screenshots are left in WORK_DIR to look at.
@@ -40,7 +42,7 @@ frames 3
 screenshot $work/msaa_samples.png
 expect-no-gl-errors
 SCRIPT
-"$bin" --size 1280x720 --no-vsync --frame-sleep-ms 60 --log-frames "$log" --ui-test "$work/msaa.txt" \
+GBL_MAX_SAMPLES=4 "$bin" --size 1280x720 --no-vsync --frame-sleep-ms 60 --log-frames "$log" --ui-test "$work/msaa.txt" \
     > "$work/editor.log" 2>&1 &
 pid=$!
 wait_frames 4
@@ -65,12 +67,29 @@ until in_view; do
 done
 echo "the msaa combo is in view after $n wheel step(s): $(field msaaCombo)"
 
-# --- a click opens the combo; a click on its third entry ("4") picks it --------------------------
-set -- $(centre msaaCombo)
+# --- a click opens the combo; "8" is greyed and a click on it picks nothing ---------------------
+open_combo() {
+    set -- $(centre msaaCombo)
+    click_at "$1" "$2"
+    wait_frames 4
+    items=$(field msaaItems)
+    [ "$items" != "[]" ] || fail "clicking the msaa combo at $1,$2 did not open its list"
+}
+open_combo
+[ "$(field msaaGreyed)" = "[0,0,0,1]" ] ||
+    fail "with GBL_MAX_SAMPLES=4 the msaa entries greyed are $(field msaaGreyed), not 8 alone ([0,0,0,1])"
+set -- $(echo "$items" | tr -d '[]' | awk -F, '{ printf "%d %d", $7, $8 }')
+xdotool mousemove --window "$wid" "$1" "$2"
+wait_frames 8
+shot msaa_8_greyed
 click_at "$1" "$2"
-wait_frames 4
+wait_frames 6
+[ "$(field msaaSamples)" = 0 ] || fail "a click on the greyed 8 ran $(field msaaSamples) samples"
+echo "8 is greyed at $1,$2 and a click there picked nothing"
+[ "$(field msaaItems)" != "[]" ] || open_combo  # a click on a greyed entry may close the list
+
+# --- a click on the third entry ("4") picks it -------------------------------------------------
 items=$(field msaaItems)
-[ "$items" != "[]" ] || fail "clicking the msaa combo at $1,$2 did not open its list"
 set -- $(echo "$items" | tr -d '[]' | awk -F, '{ printf "%d %d", $5, $6 }')
 click_at "$1" "$2"
 tries=0
