@@ -1,9 +1,10 @@
 // The editor's msaa views read back (docs/msaa.md, issue 47), on the default scene at 4 samples and
 // 160x90: one sample of an attachment as stored, whole or a rectangle of it, against the whole ones
 // and the export; and in every G-buffer layout, a sample decoded for the viewers and the inspector
-// (Renderer::readMsaaDecodedSample) against its export, raw_<name>_s<k>.exr, decoded on the CPU
-// (core/gbuffer_read_cpu.h), and the samples-that-differ counts (the decode pass's counts variant)
-// against the edges pass's mask and the CPU count (core/msaa_samples.h) of the decoded samples.
+// (Renderer::readMsaaDecodedSample) against its raw sample (what export writes as
+// raw_<name>_s<k>.exr) decoded on the CPU (core/gbuffer_read_cpu.h), and the samples-that-differ
+// counts (the decode pass's counts variant) against the edges pass's mask and the CPU count
+// (core/msaa_samples.h) of the decoded samples.
 #include "core/gbuffer_read_cpu.h"
 #include "core/msaa_samples.h"
 #include "frame_export.h"
@@ -126,26 +127,22 @@ glm::vec4 texel(FloatImage const& im, int x, int y) {
     return {im.at(x, y, 0), im.at(x, y, 1), im.at(x, y, 2), im.at(x, y, 3)};
 }
 
-class MsaaLayoutsGlTest : public test::CourtyardGlTest, public ::testing::WithParamInterface<GBufferLayout> {
-protected:
-    MsaaLayoutsGlTest() : CourtyardGlTest(kW, kH) {}
-    GBufferLayoutDesc const& desc() const { return layoutDesc(GetParam()); }
-};
-
-// One frame per layout (a fixture's renderer and shaders cost most of a case): its samples decoded
-// against their raw values decoded on the CPU, then its counts.
-TEST_P(MsaaLayoutsGlTest, DecodedSamplesAndCountsAreTheLayoutsOwn) {
+// One frame of `layout`: its samples decoded against their raw values decoded on the CPU, then its
+// counts.
+void checkLayout(Renderer& renderer, Camera const& camera, std::vector<PointLight> const& lights,
+                 GBufferLayout layout) {
+    GBufferLayoutDesc const& desc = layoutDesc(layout);
     PipelineSettings s;
     s.lightCubes = false;
-    s.layout = GetParam();
+    s.layout = layout;
     s.msaa = Msaa::X4;
     s.msaaLighting = MsaaLighting::Edges;
-    FrameStats const stats = renderer_->render({camera_, lights_, s, true});
+    FrameStats const stats = renderer.render({camera, lights, s, true});
     ASSERT_EQ(stats.msaaUsed, Msaa::X4) << stats.fallbackReason;
-    std::vector<glm::vec2> const places = renderer_->msaaSamplePositions();
+    std::vector<glm::vec2> const places = renderer.msaaSamplePositions();
     ASSERT_EQ(places.size(), std::size_t(kSamples));
-    glm::mat4 const invViewProj = glm::inverse(camera_.projection(float(kW) / float(kH)) * camera_.view());
-    bool const emissive = storesEmissiveAo(desc());
+    glm::mat4 const invViewProj = glm::inverse(camera.projection(float(kW) / float(kH)) * camera.view());
+    bool const emissive = storesEmissiveAo(desc);
     // decoded[k]: position, normal, albedo + specular, emissive + ao of sample k, as the viewers read them.
     std::array<std::array<FloatImage, 4>, kSamples> decoded;
     int drawn = 0;
@@ -154,22 +151,22 @@ TEST_P(MsaaLayoutsGlTest, DecodedSamplesAndCountsAreTheLayoutsOwn) {
         int slot = 0;
         for (GBufferSlot sl :
              {GBufferSlot::Position, GBufferSlot::Normal, GBufferSlot::AlbedoSpec, GBufferSlot::Emissive}) {
-            d[std::size_t(slot)] = renderer_->readMsaaDecodedSample(sl, k);
+            d[std::size_t(slot)] = renderer.readMsaaDecodedSample(sl, k);
             ASSERT_EQ(d[std::size_t(slot++)].pixels.size(), std::size_t(kW * kH * 4));
         }
         // What export writes as raw_<name>_s<k>.exr (ASampleReadForTheViewersEqualsItsExport).
-        FloatImage const rawNormal = renderer_->readMsaaSample(GBufferSlot::Normal, k);
-        FloatImage const rawAlbedo = renderer_->readMsaaSample(GBufferSlot::AlbedoSpec, k);
-        FloatImage const rawDepth = renderer_->readMsaaSample(GBufferSlot::Depth, k);
+        FloatImage const rawNormal = renderer.readMsaaSample(GBufferSlot::Normal, k);
+        FloatImage const rawAlbedo = renderer.readMsaaSample(GBufferSlot::AlbedoSpec, k);
+        FloatImage const rawDepth = renderer.readMsaaSample(GBufferSlot::Depth, k);
         FloatImage const rawPosition =
-            desc().storesPosition ? renderer_->readMsaaSample(GBufferSlot::Position, k) : FloatImage{};
-        FloatImage const rawEmissive = emissive ? renderer_->readMsaaSample(GBufferSlot::Emissive, k) : FloatImage{};
+            desc.storesPosition ? renderer.readMsaaSample(GBufferSlot::Position, k) : FloatImage{};
+        FloatImage const rawEmissive = emissive ? renderer.readMsaaSample(GBufferSlot::Emissive, k) : FloatImage{};
         ASSERT_EQ(rawDepth.channels, 1);
         for (int y = 0; y < kH; ++y)
             for (int x = 0; x < kW; ++x) {
                 // What the layout stores decides whether geometry was drawn: the position's w, or depth < 1.
                 bool const covered =
-                    desc().storesPosition ? rawPosition.at(x, y, 3) != 0.0f : rawDepth.at(x, y, 0) < 1.0f;
+                    desc.storesPosition ? rawPosition.at(x, y, 3) != 0.0f : rawDepth.at(x, y, 0) < 1.0f;
                 drawn += covered;
                 glm::vec4 const p = texel(d[0], x, y), n = texel(d[1], x, y);
                 ASSERT_EQ(p.w, covered ? 1.0f : 0.0f) << x << "," << y << " sample " << k;
@@ -177,17 +174,16 @@ TEST_P(MsaaLayoutsGlTest, DecodedSamplesAndCountsAreTheLayoutsOwn) {
                 ASSERT_EQ(texel(d[2], x, y), texel(rawAlbedo, x, y)) << "albedo is stored as read";
                 ASSERT_EQ(texel(d[3], x, y), emissive ? texel(rawEmissive, x, y) : kNoEmissiveAo);
                 if (!covered) continue;
-                glm::vec3 const expectedN = decodeStoredNormal(desc().normalEncoding, texel(rawNormal, x, y));
+                glm::vec3 const expectedN = decodeStoredNormal(desc.normalEncoding, texel(rawNormal, x, y));
                 // The GPU and the CPU normalise in their own float order: a few ULPs apart.
                 ASSERT_LT(glm::length(glm::vec3(n) - expectedN), 1e-5f) << x << "," << y << " sample " << k;
                 glm::vec3 const expectedP =
-                    desc().storesPosition
-                        ? glm::vec3(texel(rawPosition, x, y))
-                        : positionFromWindowDepth(invViewProj, {x, kH - 1 - y}, places[std::size_t(k)], kW, kH,
-                                                  rawDepth.at(x, y, 0));
+                    desc.storesPosition ? glm::vec3(texel(rawPosition, x, y))
+                                        : positionFromWindowDepth(invViewProj, {x, kH - 1 - y}, places[std::size_t(k)],
+                                                                  kW, kH, rawDepth.at(x, y, 0));
                 // Unprojecting in float on both sides: within 1e-5 of the eye distance (a sample's
                 // place in the pixel moves it by about 1e-2 of it at this size).
-                float const tolerance = 1e-5f * glm::length(expectedP - camera_.position);
+                float const tolerance = 1e-5f * glm::length(expectedP - camera.position);
                 ASSERT_LE(glm::length(glm::vec3(p) - expectedP), tolerance) << x << "," << y << " sample " << k;
             }
     }
@@ -199,13 +195,13 @@ TEST_P(MsaaLayoutsGlTest, DecodedSamplesAndCountsAreTheLayoutsOwn) {
     for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x) differ += texel(decoded[0][0], x, y) != texel(decoded[3][0], x, y);
     EXPECT_GT(differ, 0);
-    if (desc().storesPosition)
+    if (desc.storesPosition)
         EXPECT_LT(differ, kW * kH / 4);
     else
         EXPECT_GT(differ, kW * kH / 2);
 
-    FloatImage const counts = renderer_->msaaDistinctSampleCounts(camera_.position);
-    FloatImage const mask = renderer_->readAttachment(Attachment::ComplexPixels);
+    FloatImage const counts = renderer.msaaDistinctSampleCounts(camera.position);
+    FloatImage const mask = renderer.readAttachment(Attachment::ComplexPixels);
     ASSERT_EQ(counts.width, kW);
     ASSERT_EQ(counts.height, kH);
     ASSERT_EQ(counts.channels, 1);
@@ -223,7 +219,7 @@ TEST_P(MsaaLayoutsGlTest, DecodedSamplesAndCountsAreTheLayoutsOwn) {
             std::array<MsaaSampleValues, kSamples> v;
             for (std::size_t k = 0; k < v.size(); ++k)
                 v[k] = {texel(decoded[k][0], x, y), texel(decoded[k][1], x, y), texel(decoded[k][2], x, y)};
-            cpuMismatches += msaaDistinctSamples(v, camera_.position) != n;
+            cpuMismatches += msaaDistinctSamples(v, camera.position) != n;
         }
     // The CPU computes the eye distance and the dot products in its own float order, so a sample
     // just at a threshold may fall on either side: allow 0.2 % of the pixels (none seen on llvmpipe).
@@ -236,9 +232,13 @@ TEST_P(MsaaLayoutsGlTest, DecodedSamplesAndCountsAreTheLayoutsOwn) {
     EXPECT_DOUBLE_EQ(double(complex) / (kW * kH), *stats.complexPixelShare);
 }
 
-INSTANTIATE_TEST_SUITE_P(Layouts, MsaaLayoutsGlTest,
-                         ::testing::Values(GBufferLayout::Classic, GBufferLayout::Packed, GBufferLayout::Naive8,
-                                           GBufferLayout::Rgb10a2),
-                         [](auto const& info) { return std::string(layoutDesc(info.param).name); });
+// Every layout in one case: a case's context and shaders cost more than a layout's checks.
+TEST_F(MsaaViewsGlTest, DecodedSamplesAndCountsAreEachLayoutsOwn) {
+    for (GBufferLayout layout :
+         {GBufferLayout::Classic, GBufferLayout::Packed, GBufferLayout::Naive8, GBufferLayout::Rgb10a2}) {
+        SCOPED_TRACE(std::string(layoutDesc(layout).name));
+        checkLayout(*renderer_, camera_, lights_, layout);
+    }
+}
 
 }  // namespace
