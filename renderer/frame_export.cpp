@@ -147,7 +147,7 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
     }
     if (frame.stats.msaaUsed != Msaa::Off) {  // docs/msaa.md: the complex pixels, and every sample as stored
         check(writePng(path("complex_pixels.png"), renderer.readAttachment(Attachment::ComplexPixels)));
-        for (GBufferAttachmentDesc const& a : layout.colorAttachments())
+        for (GBufferAttachmentDesc const& a : layout.attachments())  // the depth too: position rebuilds from it
             for (int k = 0; k < msaaSamples(frame.stats.msaaUsed); ++k)
                 check(writeExr(path("raw_" + std::string(a.name) + "_s" + std::to_string(k) + ".exr"),
                                renderer.readMsaaSample(a.slot, k)));

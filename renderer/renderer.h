@@ -112,18 +112,30 @@ public:
     // channels for RG16, 1 for the depth, else 4. Empty past the last one.
     FloatImage readRawAttachment(int index) const;
     // msaa (docs/msaa.md): sample `sample` of the last msaa frame's multisampled G-buffer attachment
-    // `slot` (a colour slot) exactly as stored, RGBA floats, rows top to bottom; empty when there is
-    // none (no msaa frame since the targets were made, a depth slot, a sample past the count).
+    // `slot` exactly as stored, RGBA floats (the depth slot: its window depth, 1 channel), rows top
+    // to bottom; empty when there is none (no msaa frame since the targets were made, a slot the
+    // layout does not store, a sample past the count). What export writes as raw_<name>_s<k>.exr.
     FloatImage readMsaaSample(GBufferSlot slot, int sample);
-    // ... of the pixels in `rect` only (x, y, width, height, top-left origin, clipped to the
-    // frame): the pixel inspector's one pixel, the heat map's bands of rows.
+    // ... of the pixels in `rect` only (x, y, width, height, top-left origin, clipped to the frame).
     FloatImage readMsaaSample(GBufferSlot slot, int sample, glm::ivec4 rect);
+    // Sample `sample` of `slot` decoded as the lighting reads it, in every layout (the decode pass's
+    // msaa variant, gbuffer_read.glsl): Position and Normal as readAttachment decodes them (xyz, w = 1
+    // where drawn; position rebuilt from the sample's own depth at its own place where the layout
+    // does), AlbedoSpec as stored, Emissive as stored or the layout's constant (kNoEmissiveAo). RGBA
+    // floats of `rect` (as above); empty as readMsaaSample, and for the depth slot. The sample views
+    // of the viewers, the magnifier and the pixel inspector read this.
+    FloatImage readMsaaDecodedSample(GBufferSlot slot, int sample, glm::ivec4 rect);
+    FloatImage readMsaaDecodedSample(GBufferSlot slot, int sample);
+    // Where each sample lies in its pixel (0..1, GL_SAMPLE_POSITION of the multisampled G-buffer):
+    // where the layouts that rebuild position unproject sample k's depth. Empty without one.
+    std::vector<glm::vec2> msaaSamplePositions() const;
     // Samples per pixel of the multisampled G-buffer the last msaa frame drew (0: none since the
     // targets were made). A later frame with msaa off keeps it: FrameStats::msaaUsed says what ran.
     int msaaSampleCount() const;
-    // Distinct surfaces among each pixel's samples (core/msaa_samples.h, msaaDistinctSamples with
-    // the eye at `eye`, the frame's camera), rows top to bottom, 1 channel; empty without an msaa
-    // G-buffer. Reads the samples in bands of rows, so a large frame never holds them all at once.
+    // Distinct surfaces among each pixel's samples, 1..samples, rows top to bottom, 1 channel; empty
+    // without an msaa G-buffer. Counted on the GPU by the decode pass's counts variant with the
+    // detection's own test (msaa_edges.glsl, the eye at `eye`, the frame's camera), so every layout is
+    // decoded as the lighting decodes it; core/msaa_samples.h (msaaDistinctSamples) is its CPU twin.
     FloatImage msaaDistinctSampleCounts(glm::vec3 eye);
     // The share of pixels the last msaa frame found complex (Attachment::ComplexPixels), 0..1.
     double complexPixelShare() const;

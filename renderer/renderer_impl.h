@@ -225,8 +225,9 @@ private:
     // Why the frame of `s` (mode after fallback) cannot have its msaa, one sentence; nullopt when it
     // can. `makeTargets`: also makes the multisampled targets, and a failure there is a reason too.
     std::optional<std::string> msaaRefusal(PipelineSettings const& s, bool makeTargets);
-    // The quad program's msaa variant (shaders/lighting_quad.frag): "" per sample, "SAMPLE0" or "EDGES".
-    gl::Program const& msaaProgram(std::string const& what);
+    // The quad program's msaa variant (shaders/lighting_quad.frag): "" per sample, "SAMPLE0" or "EDGES";
+    // or another program's (the decode pass's: "" one sample, "COUNTS"), with the sample places set.
+    gl::Program const& msaaProgram(std::string const& what, ProgramId id = ProgramId::LightingQuad);
     // shaders/view.frag built for `view` alone (its VIEW_ONLY): the switch over every view would
     // otherwise run whole at each pixel where branches run under a mask (4 ms against 42 ms for
     // the final image at 641x407 in SwiftShader).
@@ -258,5 +259,10 @@ struct ReadbackContext {
 inline ReadbackContext RendererImpl::readbackContext() {
     return {targets, readback, shaders, triangle};
 }
+
+// Reads a whole framebuffer attachment as floats, flipped so rows run top to bottom: one channel
+// reads depth (in the browser: the red channel of a colour attachment, see readDepth), two read
+// RG, four RGBA (renderer_readback.cpp).
+FloatImage readFramebuffer(GLuint fbo, GLenum attachment, int width, int height, int channels);
 
 }  // namespace gbl

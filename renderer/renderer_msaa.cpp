@@ -52,11 +52,12 @@ void setMsaaThresholds(gl::Program const& p) {
 
 }  // namespace
 
-gl::Program const& RendererImpl::msaaProgram(std::string const& what) {
+gl::Program const& RendererImpl::msaaProgram(std::string const& what, ProgramId id) {
     std::string define = "GBL_MSAA_SAMPLES " + std::to_string(targets.msaa.samples);
     if (!what.empty()) define += "\n#define GBL_MSAA_" + what;
-    gl::Program const& p = shaders.variant(ProgramId::LightingQuad, define);
+    gl::Program const& p = shaders.variant(id, define);
     setSamplePositions(p, targets.msaa);
+    setMsaaThresholds(p);  // the detection's and the decode pass's counts' (the others have none: ignored)
     return p;
 }
 

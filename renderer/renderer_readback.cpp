@@ -96,9 +96,8 @@ std::vector<float> readRgbaAsFloats(GLenum attachment, int x, int y, int width, 
 }
 #endif
 
-// Reads a whole framebuffer attachment as floats, flipped so rows run top to bottom: one channel
-// reads depth (in the browser: the red channel of a colour attachment, see readDepth), two read
-// RG, four RGBA.
+}  // namespace
+
 FloatImage readFramebuffer(GLuint fbo, GLenum attachment, int width, int height, int channels) {
     FloatImage img;
     img.width = width;
@@ -357,7 +356,7 @@ FloatImage Renderer::readMsaaSample(GBufferSlot slot, int sample) {
 FloatImage Renderer::readMsaaSample(GBufferSlot slot, int sample, glm::ivec4 rect) {
     RendererImpl& r = *impl_;
     RenderTargets const& t = r.targets;
-    if (!t.msaa.gbuffer.fbo || slot == GBufferSlot::Depth || sample < 0 || sample >= t.msaa.samples) return {};
+    if (!t.msaa.gbuffer.fbo || sample < 0 || sample >= t.msaa.samples) return {};
     int const x0 = std::clamp(rect.x, 0, t.width), y0 = std::clamp(rect.y, 0, t.height);
     int const w = std::clamp(rect.z, 0, t.width - x0), h = std::clamp(rect.w, 0, t.height - y0);
     gl::Texture const& source = t.msaa.gbuffer.texture(slot);
@@ -391,7 +390,10 @@ FloatImage Renderer::readMsaaSample(GBufferSlot slot, int sample, glm::ivec4 rec
         std::swap_ranges(img.pixels.begin() + std::ptrdiff_t(std::size_t(y) * row),
                          img.pixels.begin() + std::ptrdiff_t(std::size_t(y + 1) * row),
                          img.pixels.begin() + std::ptrdiff_t(std::size_t(h - 1 - y) * row));
-    return img;
+    if (slot != GBufferSlot::Depth) return img;
+    FloatImage depth{w, h, 1, std::vector<float>(img.pixels.size() / 4)};  // the depth in red
+    for (std::size_t i = 0; i < depth.pixels.size(); ++i) depth.pixels[i] = img.pixels[i * 4];
+    return depth;
 }
 
 int Renderer::msaaSampleCount() const {

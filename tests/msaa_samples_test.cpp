@@ -12,8 +12,8 @@ namespace {
 
 glm::vec3 const kEye{0.0f};
 
-MsaaSampleValues floorAt(float x, glm::vec4 albedo = {0.5f, 0.5f, 0.5f, 0.2f}) {
-    return {{x, -1.0f, -10.0f, 1.0f}, {0.0f, 1.0f, 0.0f, 0.0f}, albedo};
+MsaaSampleValues floorAt(float x, glm::vec4 albedo = {0.5f, 0.5f, 0.5f, 0.2f}, float y = -1.0f) {
+    return {{x, y, -10.0f, 1.0f}, {0.0f, 1.0f, 0.0f, 0.0f}, albedo};
 }
 MsaaSampleValues wallAt(float z) {
     return {{0.0f, 0.0f, z, 1.0f}, {0.0f, 0.0f, 1.0f, 0.0f}, {0.8f, 0.2f, 0.2f, 0.5f}};
@@ -33,9 +33,15 @@ TEST(MsaaSamples, OneSurfaceIsOneWhateverTheSampleCount) {
 }
 
 TEST(MsaaSamples, EachThresholdSeparatesSurfaces) {
-    // Position: 0.2 units at 10 away is 2 %, beyond 1 %.
-    std::array<MsaaSampleValues, 2> far{floorAt(0.0f), floorAt(0.2f)};
+    // Position: 0.2 units off the floor's plane at 10 away is 2 %, beyond 1 %; along the plane it
+    // is the same floor (a layout that rebuilds each sample's position spreads them over the pixel).
+    glm::vec4 const grey{0.5f, 0.5f, 0.5f, 0.2f};
+    std::array<MsaaSampleValues, 2> far{floorAt(0.0f), floorAt(0.0f, grey, -1.2f)};
     EXPECT_EQ(msaaDistinctSamples(far, kEye), 2);
+    std::array<MsaaSampleValues, 2> along{floorAt(0.0f), floorAt(0.5f)};
+    EXPECT_EQ(msaaDistinctSamples(along, kEye), 1);
+    std::array<MsaaSampleValues, 2> near{floorAt(0.0f), floorAt(0.0f, grey, -1.05f)};  // 0.5 %: the same
+    EXPECT_EQ(msaaDistinctSamples(near, kEye), 1);
     // Normal: a floor and a wall at the same point.
     MsaaSampleValues tilted = floorAt(0.0f);
     tilted.normal = {0.0f, 0.9f, 0.436f, 0.0f};  // about 26 degrees from +Y, cosine 0.9 < 0.99

@@ -3,6 +3,7 @@
 #include "model/msaa_views.h"
 #include "core/heat_scale.h"
 #include "gl/caps.h"
+#include "gl/sample_limit.h"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,32 @@ namespace {
 
 MsaaReasons reasonsFor(GlCaps const& caps) {
     return msaaReasons([&](int n) { return caps.msaaUnavailableReason(n); });
+}
+
+// GBL_MAX_SAMPLES=n fakes a smaller driver (ui_msaa.sh greys 8 so); a bad value is one sentence
+// and leaves the limits as read.
+TEST(MsaaViews, TheSampleLimitOverrideLowersTheLimitsOrSaysWhyNot) {
+    GlCaps caps;
+    caps.maxSamples = 32;
+    caps.maxColorTextureSamples = 16;
+    caps.maxDepthTextureSamples = 2;
+    EXPECT_EQ(applySampleLimit(caps, nullptr), "");
+    EXPECT_EQ(caps.maxMsaaSamples(), 2);
+    caps.maxDepthTextureSamples = 16;
+    EXPECT_EQ(applySampleLimit(caps, "4"), "");
+    EXPECT_EQ(caps.maxSamples, 4);
+    EXPECT_EQ(caps.maxColorTextureSamples, 4);
+    EXPECT_EQ(caps.maxDepthTextureSamples, 4);
+    EXPECT_EQ(reasonsFor(caps)[2], "");
+    EXPECT_NE(reasonsFor(caps)[3].find("8 samples exceed"), std::string::npos);
+    EXPECT_EQ(applySampleLimit(caps, "8"), "") << "never raises a limit";
+    EXPECT_EQ(caps.maxSamples, 4);
+    for (char const* bad : {"four", "0", "65", "4x", ""}) {
+        EXPECT_EQ(applySampleLimit(caps, bad), std::string("GBL_MAX_SAMPLES=") + bad +
+                                                   " is not a sample count from 1 to 64, so the driver's sample "
+                                                   "limits are used");
+        EXPECT_EQ(caps.maxMsaaSamples(), 4);
+    }
 }
 
 TEST(MsaaViews, SampleCountsAboveTheDriversLimitAreGreyedWithTheReason) {

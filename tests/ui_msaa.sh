@@ -1,6 +1,8 @@
 #!/bin/sh
 # MSAA in the editor with real X clicks (xdotool, issue 47): the Pipeline window's msaa combo is
-# opened where the frame log says it is drawn and "4" is clicked (msaa_lighting is edges by
+# opened where the frame log says it is drawn; the editor runs with GBL_MAX_SAMPLES=4 (a driver
+# that cannot do 8, gl/sample_limit.h), so "8" is greyed out: hovered (its reason as tooltip, in
+# the screenshot msaa_8_greyed.png) and clicked, it stays unpicked; then "4" is clicked (msaa_lighting is edges by
 # default); the viewport's "Complex" checkbox is clicked; a UI script in the same editor checks
 # that 4 samples ran, the overlay is drawn, selects sample 1 in the position viewer and checks its
 # values, and that the pixel inspector lists 4 samples. Screenshots are left in WORK_DIR to look at.
@@ -40,7 +42,7 @@ frames 3
 screenshot $work/msaa_samples.png
 expect-no-gl-errors
 SCRIPT
-"$bin" --size 1280x720 --no-vsync --frame-sleep-ms 60 --log-frames "$log" --ui-test "$work/msaa.txt" \
+GBL_MAX_SAMPLES=4 "$bin" --size 1280x720 --no-vsync --frame-sleep-ms 60 --log-frames "$log" --ui-test "$work/msaa.txt" \
     > "$work/editor.log" 2>&1 &
 pid=$!
 wait_frames 4
@@ -51,8 +53,27 @@ ui_window
 scroll_into_view msaaCombo pipelineWindow 40
 echo "the msaa combo is in view after $wheel_steps wheel step(s): $(field msaaCombo)"
 
-# --- a click opens the combo; a click on its third entry ("4") picks it --------------------------
-open_combo msaaCombo msaaItems 3
+# --- a click opens the combo; "8" is greyed and a click on it picks nothing ---------------------
+open_combo msaaCombo msaaItems 4
+[ "$(field msaaGreyed)" = "[0,0,0,1]" ] ||
+    fail "with GBL_MAX_SAMPLES=4 the msaa entries greyed are $(field msaaGreyed), not 8 alone ([0,0,0,1])"
+set -- "$item_x" "$item_y"
+xdotool mousemove --window "$wid" "$1" "$2"
+wait_frames 8
+shot msaa_8_greyed
+click_at "$1" "$2"
+wait_frames 6
+[ "$(field msaaSamples)" = 0 ] || fail "a click on the greyed 8 ran $(field msaaSamples) samples"
+echo "8 is greyed at $1,$2 and a click there picked nothing"
+
+# --- a click on the third entry ("4") picks it -------------------------------------------------
+if [ "$(field msaaItems)" = "[]" ]; then  # a click on a greyed entry may close the list
+    open_combo msaaCombo msaaItems 3
+else
+    combo_items=$(field msaaItems)
+    item_x=$(echo "$combo_items" | tr -d '[]' | awk -F, '{ printf "%d", $5 }')
+    item_y=$(echo "$combo_items" | tr -d '[]' | awk -F, '{ printf "%d", $6 }')
+fi
 set -- "$item_x" "$item_y"
 click_at "$1" "$2"
 wait_field msaaSamples = 4 200 "200 frames after the click on 4, msaa samples are not 4"

@@ -2,8 +2,13 @@
 #include "gl/caps.h"
 
 #include "gl/gl_api.h"
+#include "gl/sample_limit.h"
 
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 namespace gbl {
 
@@ -19,6 +24,19 @@ bool rendererMasksBranches(std::string_view renderer, char const* override) {
     if (choice == "masked") return true;
     if (choice == "skipping") return false;
     return renderer.find("llvmpipe") != std::string_view::npos || renderer.find("softpipe") != std::string_view::npos;
+}
+
+std::string applySampleLimit(GlCaps& caps, char const* value) {
+    if (!value) return {};
+    int n = 0;
+    char const* const end = value + std::strlen(value);
+    auto const [stop, ec] = std::from_chars(value, end, n);
+    if (ec != std::errc() || stop != end || n < 1 || n > 64)
+        return std::string("GBL_MAX_SAMPLES=") + value +
+               " is not a sample count from 1 to 64, so the driver's sample limits are used";
+    for (int* limit : {&caps.maxSamples, &caps.maxColorTextureSamples, &caps.maxDepthTextureSamples})
+        *limit = std::min(*limit, n);
+    return {};
 }
 
 GlCaps detectGlCaps(int limitMajor, int limitMinor) {
@@ -55,6 +73,8 @@ GlCaps detectGlCaps(int limitMajor, int limitMinor) {
         glGetIntegerv(GL_MAX_SAMPLES, &caps.maxSamples);
         glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &caps.maxColorTextureSamples);
         glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &caps.maxDepthTextureSamples);
+        if (std::string const why = applySampleLimit(caps, std::getenv("GBL_MAX_SAMPLES")); !why.empty())
+            std::fprintf(stderr, "%s\n", why.c_str());
         // The vendors' memory queries (their enums, as their extension specifications give them).
         constexpr GLenum kNvxAvailableKiB = 0x9049;  // GPU_MEMORY_INFO_CURRENT_AVAILABLE_VIDMEM_NVX
         constexpr GLenum kAtiTextureFree = 0x87FC;   // TEXTURE_FREE_MEMORY_ATI: 4 values, [0] the free KiB

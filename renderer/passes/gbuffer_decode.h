@@ -1,5 +1,6 @@
 // G-buffer decode pass: the position and normal the lighting reads, as RGBA32F images, for
-// read-back, the pixel inspector and export (shaders/gbuffer_decode.frag).
+// read-back, the pixel inspector and export (shaders/gbuffer_decode.frag). Its msaa variants decode
+// one sample (with its material too) or count the distinct surfaces among the samples (docs/msaa.md).
 #pragma once
 
 #include "gl/framebuffer.h"
@@ -15,19 +16,23 @@
 
 namespace gbl {
 
-// Two RGBA32F textures (position, normal) and their framebuffer, of any size.
+// RGBA32F textures (position, normal; with `material`, albedo + specular and emissive + occlusion
+// as well, which the msaa sample variant writes) and their framebuffer, of any size. The counts
+// variant writes its count to position's red channel.
 struct DecodedGBuffer {
     gl::Texture position;
     gl::Texture normal;
+    gl::Texture albedoSpec;  // empty without `material`
+    gl::Texture emissiveAo;  // empty without `material`
     gl::Framebuffer fbo;
     int width = 0;
     int height = 0;
 };
-DecodedGBuffer createDecodedGBuffer(int width, int height);
+DecodedGBuffer createDecodedGBuffer(int width, int height, bool material = false);
 
 struct GBufferDecodeInput {
     GBufferTextures gbuffer;
-    gl::Program const& program;  // ProgramId::GBufferDecode
+    gl::Program const& program;  // ProgramId::GBufferDecode, or its msaa variant (msaa G-buffer textures)
     gl::FullscreenTriangle const& triangle;
     DecodedGBuffer const& target;
 };
@@ -35,6 +40,8 @@ struct GBufferDecodeConfig {
     glm::mat4 inverseViewProj{1.0f};    // of the frame the G-buffer holds
     glm::ivec2 pixelOffset{0};          // G-buffer pixel written to the target's (0, 0)
     std::span<DrawState const> states;  // its declared draw groups (PassDecl::states), applied in order
+    int sample = 0;                     // msaa variant: the sample decoded (uSample)
+    glm::vec3 eye{0.0f};                // msaa counts variant: the eye its position threshold is relative to
 };
 
 void gbufferDecodePass(GBufferDecodeInput const& in, GBufferDecodeConfig const& config);

@@ -74,6 +74,7 @@ void logFrame(Editor& editor, FrameTimes const& times, double frameMs) {
     line.layoutItems = editor.pipelineRects.layoutItems;
     line.msaaCombo = editor.pipelineRects.msaaCombo;
     line.msaaItems = editor.pipelineRects.msaaItems;
+    line.msaaGreyed = editor.pipelineRects.msaaGreyed;
     line.msaaSamples = editor.state.viewport.msaa.samples;
     line.msaaComplexBox = editor.state.viewport.msaa.complexRect;
     line.positionSampleCombo = editor.state.gbuffer.sampleRects[0];

@@ -27,7 +27,7 @@ void serviceMsaaViews(EditorState& state, Renderer& renderer, FrameStats const& 
     m.complexShare = stats.complexPixelShare;
     if (samples <= 0) return;
     // The edges pass marks the complex pixels itself; the other strategies have no such pass, so
-    // the overlay takes them from the counts (2 or more surfaces: the same test, core/msaa_samples.h).
+    // the overlay takes them from the counts (2 or more surfaces: the same test, msaa_edges.glsl).
     bool const edgesMask = stats.complexPixelShare.has_value();
     bool const needCounts = (m.samplesHeat && gpu.heatStale) || (m.complexOverlay && gpu.overlayStale && !edgesMask) ||
                             (!edgesMask && !gpu.countedShare && (m.complexOverlay || m.samplesHeat));
@@ -56,7 +56,7 @@ void sampleMsaaPixel(PixelInspectorState& inspector, Renderer& renderer, int sam
     if (samples <= 0 || !inspector.pixel) return;
     glm::ivec4 const rect(inspector.pixel->x, inspector.pixel->y, 1, 1);
     auto const at = [&](GBufferSlot slot, int k) {
-        FloatImage const one = renderer.readMsaaSample(slot, k, rect);
+        FloatImage const one = renderer.readMsaaDecodedSample(slot, k, rect);
         return one.pixels.size() == 4 ? glm::vec4(one.at(0, 0, 0), one.at(0, 0, 1), one.at(0, 0, 2), one.at(0, 0, 3))
                                       : glm::vec4(0.0f);
     };

@@ -43,11 +43,12 @@ void uploadPicture(gl::Texture& tex, int w, int h, std::vector<std::uint8_t> con
 }
 
 namespace {
-// The attachment a viewer shows, or its selected msaa sample while one is (msaa_views.h); the
-// resolved attachment when the sample cannot be read (msaa went off since it was picked).
+// The attachment a viewer shows, or its selected msaa sample while one is (msaa_views.h), decoded
+// as the lighting reads it in every layout; the resolved attachment when the sample cannot be read
+// (msaa went off since it was picked).
 FloatImage viewerAttachmentImage(ViewerState const& v, Renderer& renderer) {
     if (auto slot = viewerSampleSlot(v.kind); slot && v.sample >= 0) {
-        FloatImage sample = renderer.readMsaaSample(*slot, v.sample);
+        FloatImage sample = renderer.readMsaaDecodedSample(*slot, v.sample);
         if (!sample.pixels.empty()) return sample;
     }
     return renderer.readAttachment(viewerAttachment(v));

@@ -129,6 +129,8 @@ std::string frameLogJson(FrameLogLine const& l) {
     out += "],\"msaaCombo\":" + rect(l.msaaCombo) + ",\"msaaItems\":[";
     for (std::size_t i = 0; i < l.msaaItems.size(); ++i)
         out += (i ? "," : "") + number(l.msaaItems[i].x) + "," + number(l.msaaItems[i].y);
+    out += "],\"msaaGreyed\":[";
+    for (std::size_t i = 0; i < l.msaaGreyed.size(); ++i) out += (i ? "," : "") + std::to_string(l.msaaGreyed[i]);
     out += "],\"msaaSamples\":" + std::to_string(l.msaaSamples) + ",\"msaaComplexBox\":" + rect(l.msaaComplexBox) +
            ",\"positionSampleCombo\":" + rect(l.positionSampleCombo) +
            ",\"positionSample\":" + std::to_string(l.positionSample);

@@ -89,6 +89,7 @@ struct FrameLogLine {
     // viewer's sample selector (0 while not drawn) with its sample (-1 = all).
     glm::vec4 msaaCombo{0.0f};
     std::vector<glm::vec2> msaaItems;
+    std::vector<int> msaaGreyed;  // per open entry: 1 where greyed out with a reason
     int msaaSamples = 0;
     glm::vec4 msaaComplexBox{0.0f};
     glm::vec4 positionSampleCombo{0.0f};

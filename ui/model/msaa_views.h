@@ -32,10 +32,11 @@ struct MsaaViewState {
     glm::vec4 heatRect{0.0f};
 };
 
-// One sample of one pixel of the multisampled G-buffer, as stored (classic layout).
+// One sample of one pixel of the multisampled G-buffer, decoded as the lighting reads it
+// (Renderer::readMsaaDecodedSample), whatever the layout.
 struct MsaaPixelSample {
     glm::vec4 position{0.0f};  // w = 1 where drawn
-    glm::vec4 normal{0.0f};
+    glm::vec4 normal{0.0f};    // unit, w = 1 where drawn
     glm::vec4 albedoSpec{0.0f};
     glm::vec4 emissiveAo{0.0f};
 };

@@ -39,8 +39,8 @@ struct PixelInspectorState {
     // An open G-buffer's own lit image at the pixel (its manifest's "lit", pinned in the viewport),
     // shown beside our stored value and per-light sum.
     std::optional<glm::vec3> theirs;
-    // msaa (issue 47): the sample listed, -1 for every one, and the pixel's samples as stored
-    // (read by the loop while the frame shown ran msaa; empty otherwise).
+    // msaa (issue 47): the sample listed, -1 for every one, and the pixel's samples decoded as the
+    // lighting reads them (read by the loop while the frame shown ran msaa; empty otherwise).
     int msaaSample = -1;
     std::vector<MsaaPixelSample> msaaSamples;
 };

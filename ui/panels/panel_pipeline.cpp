@@ -80,6 +80,7 @@ void comboRow(PipelineField const& f, PipelineSettings& settings, PipelinePanelR
         glm::vec2 const centre((a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f);
         if (layout) rects->layoutItems.push_back(centre);
         if (msaa) rects->msaaItems.push_back(centre);
+        if (msaa) rects->msaaGreyed.push_back(reason ? 1 : 0);
     }
     ImGui::EndCombo();
 }

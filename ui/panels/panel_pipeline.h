@@ -34,6 +34,7 @@ struct PipelinePanelRects {
     // The same for the msaa combo (kMsaaNames order), which a test opens to pick a sample count.
     glm::vec4 msaaCombo{0.0f};
     std::vector<glm::vec2> msaaItems;
+    std::vector<int> msaaGreyed;  // per entry of the open list: 1 where greyed out (msaaReasons)
 };
 
 // Edits `settings` in place; the renderer reads them on the next frame. Unavailable modes and msaa

@@ -40,14 +40,14 @@ void row(char const* label, glm::vec4 v, int n = 4) {
         if (i < n) ImGui::Text("%.4g", v[i]);
     }
 }
-// msaa (issue 47): the pixel's samples as stored, every one or the one selected.
+// msaa (issue 47): the pixel's samples as the lighting decodes them, every one or the one selected.
 void msaaSamplesSection(PixelInspectorState& state) {
     int const n = int(state.msaaSamples.size());
     if (n == 0) return;
     separatorText("MSAA samples");
     viewerSampleSelector(state.msaaSample, n, true, "inspector-sample");
     ImGui::SameLine();
-    ImGui::TextDisabled("%d samples, as the geometry pass stored them", n);
+    ImGui::TextDisabled("%d samples, decoded as the lighting reads them", n);
     ImGuiTableFlags const flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                                   ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX;
     // A scrolling table needs its height: a header and four rows per listed sample, as the values table.

@@ -49,10 +49,10 @@ void viewerSampleSelector(int& sample, int samples, bool offered, char const* id
     }
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip(offered
-                              ? "msaa: all = the resolved (averaged) attachment; sample k = that sample of the\n"
-                                "multisampled G-buffer as stored (read back and coloured on the CPU)"
-                              : "msaa: depth and the lit frame are shown resolved; their samples are not read back");
+        ImGui::SetTooltip(
+            offered ? "msaa: all = the resolved (averaged) attachment; sample k = that sample of the\n"
+                      "multisampled G-buffer decoded as the lighting reads it (read back, coloured on the CPU)"
+                    : "msaa: depth and the lit frame are shown resolved; their samples are not read back");
     ImGui::PopID();
 }
 
