@@ -96,8 +96,9 @@ std::vector<float> readRgbaAsFloats(GLenum attachment, int x, int y, int width, 
 }
 #endif
 
-}  // namespace
-
+// Reads a whole framebuffer attachment as floats, flipped so rows run top to bottom: one channel
+// reads depth (in the browser: the red channel of a colour attachment, see readDepth), two read
+// RG, four RGBA.
 FloatImage readFramebuffer(GLuint fbo, GLenum attachment, int width, int height, int channels) {
     FloatImage img;
     img.width = width;
