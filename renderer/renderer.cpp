@@ -158,7 +158,7 @@ ShadingUniforms shadingUniforms(FrameContext const& f) {
     ShadingUniforms s{f.camera.position, f.settings.shininess, f.settings.ambient, glm::inverse(f.viewProj),
                       f.lightAlone ? 0.0f : 1.0f};
     s.model = f.settings.shading;
-    s.cutAtRadius = cutsAtRadius(f.settings.mode) || drawsLightVolumes(f.settings);  // prepass's volumes too
+    s.cutAtRadius = cutsAtRadius(f.settings);
     return s;
 }
 

@@ -142,6 +142,12 @@ constexpr bool drawsLightVolumes(PipelineSettings const& s) {
            (s.mode == LightingMode::Prepass && s.prepassLights == PrepassLights::Volumes);
 }
 
+// Whether the frame of `s` cuts the learnopengl shading at each light's radius: its mode does, or it
+// draws light volumes (prepass with volumes), which end there.
+constexpr bool cutsAtRadius(PipelineSettings const& s) {
+    return cutsAtRadius(s.mode) || drawsLightVolumes(s);
+}
+
 // Whether a mode shades while drawing the meshes, keeping no G-buffer (forward and forward+).
 constexpr bool shadesForward(LightingMode m) {
     return m == LightingMode::Forward || m == LightingMode::ForwardPlus;
