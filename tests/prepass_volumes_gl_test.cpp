@@ -90,6 +90,7 @@ protected:
         std::string const what = std::string(kCullModeNames[std::size_t(cull)]) + ", " + where;
         Lit const quadPass = prepass(PrepassLights::Quad, cull, cam);
         Lit const volumes = prepass(PrepassLights::Volumes, cull, cam);
+        EXPECT_GT(callsOf(volumes.stats, "lighting").draws, 1u) << what << ": the volumes were drawn";
         expectWithinBound(compareLit(volumes.diffuse, quadPass.diffuse), "diffuse light, " + what);
         // Specular light is small beside diffuse from above (highlights cover few pixels): 0.0086 on average.
         expectWithinBound(compareLit(volumes.specular, quadPass.specular), "specular light, " + what, 0.004);
