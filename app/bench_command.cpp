@@ -54,6 +54,8 @@ Summary summarize(std::vector<double> const& v) {
 
 std::string comboName(Combination const& c) {
     std::string s(enumName(kLightingModeNames, c.mode));
+    if (c.mode == LightingMode::Prepass && c.prepassLights != PrepassLights::Quad)
+        s += "/" + std::string(enumName(kPrepassLightsNames, c.prepassLights));
     if (c.usesCull) s += "/" + std::string(enumName(kCullModeNames, c.cull));
     return s;
 }
@@ -64,7 +66,9 @@ std::string comboName(Combination const& c) {
 std::optional<double> predictedFrameSeconds(std::vector<Result> const& done, Combination const& c) {
     for (auto it = done.rbegin(); it != done.rend(); ++it) {
         Combination const& p = it->combo;
-        if (p.mode != c.mode || p.cull != c.cull || it->framesMeasured == 0 || p.lights <= 0) continue;
+        if (p.mode != c.mode || p.cull != c.cull || p.prepassLights != c.prepassLights || it->framesMeasured == 0 ||
+            p.lights <= 0)
+            continue;
         return it->frameMs.median * 1e-3 * double(std::max(c.lights, 1)) / double(p.lights);
     }
     return std::nullopt;
@@ -80,8 +84,8 @@ Result runCombination(Renderer& renderer, Camera const& camera, std::span<PointL
         r.note = *why;
         return r;
     }
-    bool const everyLight =
-        c.mode == LightingMode::Quad || c.mode == LightingMode::Forward || c.mode == LightingMode::Prepass;
+    bool const everyLight = c.mode == LightingMode::Quad || c.mode == LightingMode::Forward ||
+                            (c.mode == LightingMode::Prepass && c.prepassLights == PrepassLights::Quad);
     if (everyLight && c.lights > kEveryLightModesMaxLights) {
         r.status = "unavailable";
         r.note = std::string(enumName(kLightingModeNames, c.mode)) +
@@ -102,6 +106,7 @@ Result runCombination(Renderer& renderer, Camera const& camera, std::span<PointL
     PipelineSettings settings = base;
     settings.mode = c.mode;
     settings.cull = c.cull;
+    settings.prepassLights = c.prepassLights;
     FrameInput const input{camera, lights, settings, true};
 
     using Clock = std::chrono::steady_clock;
@@ -172,6 +177,13 @@ void addBenchOptions(CLI::App& sub, BenchOptions& o) {
         ->delimiter(',')
         ->check(fieldValidator(*findPipelineField("cull")))
         ->capture_default_str();
+    if (o.prepassLights.empty())
+        o.prepassLights = {std::string(enumName(kPrepassLightsNames, PipelineSettings{}.prepassLights))};
+    sub.add_option("--prepass-lights", o.prepassLights,
+                   "prepass's light passes measured, comma-separated (volumes: with each --cull)")
+        ->delimiter(',')
+        ->check(fieldValidator(*findPipelineField("prepass_lights")))
+        ->capture_default_str();
     sub.add_option("--frames", o.frames, "Measured frames per combination")->capture_default_str();
     sub.add_option("--warmup", o.warmup, "Warm-up frames per combination, not measured")->capture_default_str();
     sub.add_option("--budget", o.budgetSeconds, "Wall-clock seconds allowed per combination")->capture_default_str();
@@ -199,6 +211,10 @@ int runBench(BenchOptions const& o) {
     if (!modeList) return benchBadArgument(error);
     auto const cullList = choiceList<CullMode>(*findPipelineField("cull"), o.culls, "--cull", &error);
     if (!cullList) return benchBadArgument(error);
+    auto const prepassList =
+        choiceList<PrepassLights>(*findPipelineField("prepass_lights"), o.prepassLights, "--prepass-lights", &error);
+    if (!prepassList) return benchBadArgument(error);
+    if (prepassList->empty()) return benchBadArgument("--prepass-lights needs at least one value");
     std::vector<LightingMode> const& modes = *modeList;
     std::vector<CullMode> const& culls = *cullList;
     if (modes.empty() || culls.empty()) return benchBadArgument("--modes and --cull need at least one value each");
@@ -268,11 +284,18 @@ int runBench(BenchOptions const& o) {
             for (auto& l : scaled) l = scaleLightFalloff(l, scale);
         std::span<PointLight const> const lights(scaled);
         for (LightingMode m : modes) {
-            bool const usesCull = m == LightingMode::Volumes;
-            for (std::size_t ci = 0; ci < (usesCull ? culls.size() : 1); ++ci) {
-                Combination const c{m, usesCull ? culls[ci] : CullMode::Front, usesCull, n, scale};
-                std::fprintf(stderr, "bench: %s with %d lights...\n", comboName(c).c_str(), n);
-                results.push_back(runCombination(renderer, prepared->camera, lights, base, c, o, results));
+            std::vector<PrepassLights> const lightPasses =
+                m == LightingMode::Prepass ? *prepassList : std::vector<PrepassLights>{PrepassLights::Quad};
+            for (PrepassLights const lightPass : lightPasses) {
+                PipelineSettings s;
+                s.mode = m;
+                s.prepassLights = lightPass;
+                bool const usesCull = drawsLightVolumes(s);
+                for (std::size_t ci = 0; ci < (usesCull ? culls.size() : 1); ++ci) {
+                    Combination const c{m, usesCull ? culls[ci] : CullMode::Front, usesCull, n, scale, lightPass};
+                    std::fprintf(stderr, "bench: %s with %d lights...\n", comboName(c).c_str(), n);
+                    results.push_back(runCombination(renderer, prepared->camera, lights, base, c, o, results));
+                }
             }
         }
     }

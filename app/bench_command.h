@@ -26,6 +26,9 @@ struct BenchOptions {
     // Cull modes measured for `volumes` (each one is its own combination); other modes ignore it.
     // addBenchOptions starts it at PipelineSettings{}'s cull.
     std::vector<std::string> culls;
+    // prepass's light passes measured (`prepass_lights`: quad, volumes); volumes runs each cull mode.
+    // addBenchOptions starts it at PipelineSettings{}'s.
+    std::vector<std::string> prepassLights;
     int frames = 20;            // measured frames per combination
     int warmup = 3;             // frames rendered and thrown away first (shader and cache warm-up)
     double budgetSeconds = 60;  // wall-clock budget per combination's warm-up and measured frames

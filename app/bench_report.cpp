@@ -56,10 +56,13 @@ void fillPairCosts(std::vector<Result>& results) {
                 r.lightPixelPairs = d.lightPixelPairs;
                 break;
             }
-        // prepass's light pass evaluates every light at every covered pixel, as quad's does: quad's count.
+        // prepass's light pass evaluates every light at every covered pixel, as quad's does: quad's count;
+        // with volumes, the volume fragments, as volumes mode's with the same cull mode.
+        bool const volumes = r.combo.prepassLights == PrepassLights::Volumes;
         if (r.combo.mode == LightingMode::Prepass)
             for (auto const& q : results)
-                if (q.combo.mode == LightingMode::Quad && q.combo.lights == r.combo.lights &&
+                if (q.combo.mode == (volumes ? LightingMode::Volumes : LightingMode::Quad) &&
+                    (!volumes || q.combo.cull == r.combo.cull) && q.combo.lights == r.combo.lights &&
                     q.combo.radiusScale == r.combo.radiusScale && q.evaluatedPairs && q.framesMeasured > 0) {
                     r.evaluatedPairs = q.evaluatedPairs;
                     break;
@@ -100,7 +103,7 @@ void printTable(std::vector<Result> const& results, GlCaps const& caps, Size2 si
     std::printf(
         "%d warm-up + %d measured frames per combination, budget %.0f s each\npass times: %s\nlight loops: %s\n\n",
         o.warmup, o.frames, o.budgetSeconds, timing.c_str(), caps.lightLoopsNote().c_str());
-    std::printf("%-16s %6s %6s %7s %11s %11s %9s %10s %10s %8s %9s %9s  %s\n", "mode", "lights", "radius", "frames",
+    std::printf("%-22s %6s %6s %7s %11s %11s %9s %10s %10s %8s %9s %9s  %s\n", "mode", "lights", "radius", "frames",
                 "frame med", "frame p95", "vs quad", "frag.inv", "lit px", "shaded", "lit pairs", "evaluated",
                 "status");
     for (auto const& r : results) {
@@ -118,14 +121,14 @@ void printTable(std::vector<Result> const& results, GlCaps const& caps, Size2 si
         };
         char radius[16];
         std::snprintf(radius, sizeof radius, "x%.3g", r.combo.radiusScale);
-        std::printf("%-16s %6d %6s %7d %11s %11s %9s %10s %10s %8d %9s %9s  %s%s%s\n", comboName(r.combo).c_str(),
+        std::printf("%-22s %6d %6s %7d %11s %11s %9s %10s %10s %8d %9s %9s  %s%s%s\n", comboName(r.combo).c_str(),
                     r.combo.lights, radius, r.framesMeasured, ms(r.frameMs.median).c_str(), ms(r.frameMs.p95).c_str(),
                     speed.c_str(), formatCount(r.fragmentInvocations).c_str(),
                     formatCount(asDouble(r.litPixels)).c_str(), r.lightsShaded,
                     formatCount(asDouble(r.lightPixelPairs)).c_str(), formatCount(asDouble(r.evaluatedPairs)).c_str(),
                     r.status.c_str(), r.note.empty() ? "" : ": ", r.note.c_str());
         if (!r.passMs.empty()) {
-            std::printf("%-16s", "");
+            std::printf("%-22s", "");
             for (auto const& [name, s] : r.passMs) std::printf("  %s %.2f/%.2f", name.c_str(), s.median, s.p95);
             std::printf("  (ms median/p95)\n");
         }
@@ -141,11 +144,11 @@ void printTable(std::vector<Result> const& results, GlCaps const& caps, Size2 si
     std::printf(
         "\nper-pair cost: lighting ms per evaluated light\u00b7pixel pair; work floor = lit pairs \u00d7 quad's ns "
         "per pair.\n");
-    std::printf("%-16s %6s %9s %10s %10s %11s %9s\n", "mode", "lights", "ns/pair", "eval/lit", "vs quad", "floor ms",
+    std::printf("%-22s %6s %9s %10s %10s %11s %9s\n", "mode", "lights", "ns/pair", "eval/lit", "vs quad", "floor ms",
                 "vs floor");
     for (auto const& r : results) {
         if (!std::isfinite(r.pairs.nsPerEvaluated)) continue;
-        std::printf("%-16s %6d %9.2f %10.2f %10.2f %11.1f %9.2f\n", comboName(r.combo).c_str(), r.combo.lights,
+        std::printf("%-22s %6d %9.2f %10.2f %10.2f %11.1f %9.2f\n", comboName(r.combo).c_str(), r.combo.lights,
                     r.pairs.nsPerEvaluated, r.pairs.evaluatedPerLit, r.pairs.perPairVsQuad, r.pairs.floorMs,
                     r.pairs.vsFloor);
     }
@@ -182,6 +185,8 @@ json toJson(std::vector<Result> const& results, GlCaps const& caps, Size2 size, 
                   {"gl_errors", r.glErrors},
                   {"passes", passes}};
         if (r.combo.usesCull) j["cull"] = enumName(kCullModeNames, r.combo.cull);
+        if (r.combo.mode == LightingMode::Prepass)
+            j["prepass_lights"] = enumName(kPrepassLightsNames, r.combo.prepassLights);
         if (!r.note.empty()) j["note"] = r.note;
         if (r.framesMeasured > 0) j["frame"] = {{"median_ms", r.frameMs.median}, {"p95_ms", r.frameMs.p95}};
         if (r.fragmentInvocations) j["fragment_invocations"] = *r.fragmentInvocations;

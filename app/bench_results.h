@@ -20,9 +20,10 @@ namespace gbl::bench {
 struct Combination {
     LightingMode mode = LightingMode::Quad;
     CullMode cull = CullMode::Front;
-    bool usesCull = false;  // only `volumes` has a cull mode
+    bool usesCull = false;  // the frames that draw light volumes (core/pipeline_settings.h, drawsLightVolumes)
     int lights = 0;
     float radiusScale = 1.0f;
+    PrepassLights prepassLights = PrepassLights::Quad;  // prepass only: its light pass (--prepass-lights)
 };
 
 struct Summary {

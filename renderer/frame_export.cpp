@@ -190,14 +190,8 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
                              {"matrix_layout", "row-major: view[r][c]"}};
     json passes = json::object();
     for (auto const& p : frame.stats.passes) passes[p.name] = p.gpuMs;
-    // Per pass, what it issued: {"draws": N, "dispatches": M} (gl/draw_count.h).
-    json calls = json::object();
-    for (PassCalls const& c : frame.stats.calls) {
-        json& entry = calls[c.name];
-        if (entry.is_null()) entry = {{"draws", std::uint64_t(0)}, {"dispatches", std::uint64_t(0)}};
-        entry["draws"] = entry["draws"].get<std::uint64_t>() + c.draws;
-        entry["dispatches"] = entry["dispatches"].get<std::uint64_t>() + c.dispatches;
-    }
+    // Per pass, what it issued (draws, dispatches, triangles); triangles_drawn below is their sum.
+    json const calls = json_fields::passCallsJson(frame.stats.calls);
     GlCaps const& caps = renderer.caps();
     PipelineSettings const& s = frame.settings;
     // The screen-sized memory of the mode that ran (core/frame_memory.h), part by part.
@@ -226,7 +220,8 @@ std::optional<std::string> exportFrame(Renderer& renderer, FrameExport const& fr
                       {"calls", calls},
                       {"timing", frame.stats.timingSource},
                       {"timing_reason", frame.stats.timingReason},
-                      {"triangles", frame.triangles},
+                      {"triangles", frame.triangles},                // the scene's
+                      {"triangles_drawn", frame.stats.triangles()},  // every pass's (calls), summed
                       {"gl_errors", renderer.glErrorCount()}};
     // The pass a stopped frame (`render --until`) ended at, before its display pass; null: every pass ran.
     statsJson["stopped_after"] = frame.stats.stoppedAfter ? json(passName(*frame.stats.stoppedAfter)) : json(nullptr);

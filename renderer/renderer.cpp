@@ -158,7 +158,7 @@ ShadingUniforms shadingUniforms(FrameContext const& f) {
     ShadingUniforms s{f.camera.position, f.settings.shininess, f.settings.ambient, glm::inverse(f.viewProj),
                       f.lightAlone ? 0.0f : 1.0f};
     s.model = f.settings.shading;
-    s.cutAtRadius = cutsAtRadius(f.settings.mode);
+    s.cutAtRadius = cutsAtRadius(f.settings);
     return s;
 }
 
@@ -212,6 +212,10 @@ FrameRecord RendererImpl::beginFrame(FrameInput const& input, FrameStats& stats)
     if (auto why = modeUnavailable(f.settings.mode)) {
         f.settings.mode = LightingMode::Quad;
         because(*why + "; the full-screen (quad) pass ran instead");
+    }
+    if (f.settings.mode == LightingMode::Prepass && drawsLightVolumes(f.settings) && !volumesReady()) {
+        f.settings.prepassLights = PrepassLights::Quad;
+        because(*volumesFeature.unavailable + "; prepass's light pass ran full screen");
     }
     if (auto why = msaaRefusal(f.settings, true)) {
         f.settings.msaa = Msaa::Off;
@@ -293,6 +297,8 @@ bool RendererImpl::wireframesDrawn(FrameInput const& input) {
 std::vector<PassDecl> RendererImpl::framePasses(FrameInput const& input) {
     PipelineSettings s = imported ? importedSettings(input.settings) : input.settings;
     if (modeUnavailable(s.mode)) s.mode = LightingMode::Quad;  // as render() runs it
+    if (s.mode == LightingMode::Prepass && drawsLightVolumes(s) && !volumesReady())
+        s.prepassLights = PrepassLights::Quad;
     if (msaaRefusal(s, false)) s.msaa = Msaa::Off;
     return gbl::framePasses(s, wireframesDrawn(input), bool(imported));
 }

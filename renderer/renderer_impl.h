@@ -82,7 +82,8 @@ public:
     ~PassScope() {
         if (timed_) timer_.end();
         gl::DrawCount const& now = gl::drawCount();
-        calls_.push_back({std::string(name_), now.draws - before_.draws, now.dispatches - before_.dispatches});
+        calls_.push_back({std::string(name_), now.draws - before_.draws, now.dispatches - before_.dispatches,
+                          now.triangles - before_.triangles});
     }
     PassScope(PassScope const&) = delete;
     PassScope& operator=(PassScope const&) = delete;

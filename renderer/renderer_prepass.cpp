@@ -11,11 +11,31 @@ void RendererImpl::runThinGBuffer(FrameRecord& frame, PassRun const& r) {
                         {frame.f.viewProj, frame.shading, frame.f.settings.normalMaps, r.decl.states});
 }
 
-// The lighting pass of a prepass frame (runLighting hands it over).
+// The lighting pass of a prepass frame (runLighting hands it over): full screen, or with a declared
+// depth-stencil (the copy of the thin depth) the light volumes after the directional lights.
 void RendererImpl::runPrepassLight(FrameRecord& frame, PassRun const& r) {
-    prepassLightPass({r.io.texture(Resource::PrepassNormal), r.io.texture(Resource::LitDepth), lights,
-                      shaders.get(ProgramId::PrepassLight), triangle, *r.fbo, r.decl.states},
-                     frame.shading);
+    gl::Texture const& depth = r.io.texture(Resource::LitDepth);
+    PrepassLightInput const in{r.io.texture(Resource::PrepassNormal),
+                               depth,
+                               lights,
+                               shaders.get(ProgramId::PrepassLight),
+                               triangle,
+                               *r.fbo,
+                               r.decl.states};
+    if (!r.decl.depthStencil) {
+        prepassLightPass(in, frame.shading);
+        return;
+    }
+    // The volumes' programs sample the thin pass's depth on the G-buffer depth's unit; the rest of the
+    // G-buffer bound beside it is never read.
+    GBufferTextures const g = r.io.gbuffer();
+    PrepassLightVolumes const v{{{g.position, g.normal, g.albedoSpec, g.emissive, depth}, lights, frame.shading},
+                                volumes,
+                                shaders.get(ProgramId::PrepassLightVolume),
+                                shaders.get(ProgramId::LightVolumeStencil),
+                                frame.f.viewProj,
+                                frame.f.settings.cull};
+    prepassLightPass(in, frame.shading, &v);
 }
 
 void RendererImpl::runPrepassShading(FrameRecord& frame, PassRun const& r) {

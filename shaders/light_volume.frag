@@ -1,11 +1,18 @@
 // Light volumes: shades the G-buffer pixel under each volume fragment with that one light,
 // added to the HDR target by blending. With COVERAGE defined it instead counts, per pixel, the
 // volume fragments that ran (x) and the ones whose light actually reached the surface (y).
+// With PREPASS_LIGHTS (prepass's light pass with `prepass_lights: volumes`, docs/deferred_lighting.md)
+// it reads the thin G-buffer instead and adds the light's diffuse and specular light, specular
+// intensity 1, into the two light targets, as prepass_light.frag sums them.
 #version 330 core
 #include "bindings.glsl"
 #include "lighting.glsl"
 #include "light_fetch.glsl"
+#ifdef PREPASS_LIGHTS
+#include "prepass_surface.glsl"
+#else
 #include "gbuffer_read.glsl"
+#endif
 #include "light_accumulation.glsl"
 
 flat in int vLight;
@@ -25,7 +32,13 @@ void main() {
     gSample = uSample;
 #endif
     vec3 pos;
+#ifdef PREPASS_LIGHTS
+    SurfacePoint surface;
+    bool drawn = prepassSurface(px, surface);
+    pos = surface.p;
+#else
     bool drawn = gbufferPosition(px, pos);
+#endif
     // The mesh is a little larger than the light's sphere: surfaces between the two, and the
     // background, get nothing (the same zero the other modes compute past the radius). The
     // test needs only the first texel of the light, so most rejected fragments stop here.
@@ -44,6 +57,11 @@ void main() {
 #ifdef COVERAGE
     vec3 lit = inside ? shadeLight(l, pos, gbufferNormal(px), vec3(1.0), 1.0) : vec3(0.0);
     fragColor = vec4(1.0, any(greaterThan(lit, vec3(0.0))) ? 1.0 : 0.0, 0.0, 0.0);
+#elif defined(PREPASS_LIGHTS)
+    LightSum sum = noLight();
+    accumulateLight(sum, l, surface, 1.0);
+    fragColor = vec4(sum.diffuse, 0.0);
+    fragSpecular = vec4(sum.specular, 0.0);
 #else
     vec4 as = gbufferAlbedoSpec(px);
     LightSum sum = noLight();

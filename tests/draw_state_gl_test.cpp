@@ -1,8 +1,7 @@
-// The GL state each pass draws under is the state its declaration gives (core/frame_passes.h): every
-// declared pass of every mode x layout x cull x accumulation x depth copy, on small frames, with the
-// state read back after each draw and dispatch and compared with the pass's declared draw groups.
-// Shown to fail when a declaration the executor runs is changed by hand, and that a pass of a
-// test's own runs from one declaration and one run function.
+// The GL state each pass draws under is the state its declaration gives (core/frame_passes.h): every declared
+// pass of every mode x layout x cull x accumulation (prepass: its light pass) x depth copy, on small frames, with
+// the state read back after each draw and dispatch and compared with the pass's declared draw groups. Shown to
+// fail when a declaration the executor runs is changed by hand, and that a test's own pass runs from one of each.
 #include "gpu/draw_state_gl.h"
 #include "core/gbuffer_layout.h"
 #include "gl/draw_count.h"
@@ -215,6 +214,7 @@ TEST_F(DrawStateGlTest, EveryPassOfEveryCombinationDrawsUnderItsDeclaredState) {
                             s.mode = LightingMode(mode);
                             s.cull = CullMode(cull);
                             s.accumulation = LightAccumulation(acc);
+                            s.prepassLights = PrepassLights(acc && view == DebugView::Final);  // prepass ignores split
                             s.depthCopy = DepthCopy(copy);
                             s.view = view;
                             s.lightCubes = s.volumeWireframes = true;  // drawn on the final view only
@@ -231,7 +231,7 @@ TEST_F(DrawStateGlTest, EveryPassOfEveryCombinationDrawsUnderItsDeclaredState) {
                             ++rendered;
                             for (std::string const& f : checkFrame(input, label)) failures.push_back(f);
                             // The camera inside a light's volume: flip's second group (back faces).
-                            if (s.mode != LightingMode::Volumes || view != DebugView::Final) continue;
+                            if (!drawsLightVolumes(s) || view != DebugView::Final) continue;
                             Camera inside = camera_;
                             inside.position = lights_.front().position;
                             for (std::string const& f : checkFrame({inside, lights_, s}, label + " inside"))

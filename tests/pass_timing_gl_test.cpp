@@ -224,7 +224,7 @@ TEST_F(PassTimingGlTest, EachPassCountsTheDrawsAndDispatchesItIssued) {
 }
 
 // Every draw and dispatch in renderer/ counts itself: the line after each glDraw* (not
-// glDrawBuffer[s]) or glDispatchCompute call is its gl::countDraw() / gl::countDispatch().
+// glDrawBuffer[s]) or glDispatchCompute call is its gl::countDraw(triangles) / gl::countDispatch().
 // Declarations and definitions (a return type before the name) are not call sites.
 TEST(DrawCount, EveryCallSiteInTheRendererCountsItself) {
     std::regex const call(R"(\bgl(Draw(Arrays|Elements|RangeElements)\w*|DispatchCompute\w*)\s*\()");
@@ -243,7 +243,7 @@ TEST(DrawCount, EveryCallSiteInTheRendererCountsItself) {
             ++sites;
             bool const dispatch = m.str(1).rfind("Dispatch", 0) == 0;
             std::string const next = i + 1 < lines.size() ? lines[i + 1] : "";
-            EXPECT_NE(next.find(dispatch ? "countDispatch()" : "countDraw()"), std::string::npos)
+            EXPECT_NE(next.find(dispatch ? "countDispatch()" : "countDraw("), std::string::npos)
                 << entry.path().string() << ":" << i + 1 << " is not counted: " << lines[i];
         }
     }

@@ -30,8 +30,8 @@ TEST(PipelineFields, OneEntryPerMemberEachEditingItsOwn) {
     // core/pipeline_fields.cpp, then update the count here.
     [[maybe_unused]] auto const& [mode, cull, depthCopy, tonemap, view, layout, accumulation, shading, lightCubes,
                                   volumeWireframes, glassOutline, wireframesSelectedOnly, normalMaps, ambient, exposure,
-                                  shininess, volumeScale, msaa, msaaLighting] = PipelineSettings{};
-    constexpr std::size_t kMembers = 19;
+                                  shininess, volumeScale, msaa, msaaLighting, prepassLights] = PipelineSettings{};
+    constexpr std::size_t kMembers = 20;
     std::span<PipelineField const> const fields = pipelineFields();
     ASSERT_EQ(fields.size(), kMembers);
 

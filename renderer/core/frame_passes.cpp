@@ -145,6 +145,17 @@ PassDecl overlayPass(PassId id, std::vector<Resource> samples, Resource depth, D
     return p;
 }
 
+// The volumes' copy of the G-buffer depth-stencil, where the lighting samples the G-buffer's depth
+// (prepass's volumes: of the thin pass's depth, which its light pass samples).
+PassDecl volumeDepthPass(Resource source) {
+    PassDecl v = declare(PassId::VolumeDepth, PassKind::Blit);
+    v.samples = {source};
+    v.color = {R::Lighting};  // volumeFbo's; the blit writes depth and stencil only
+    v.depthStencil = R::VolumeDepth;
+    v.depthWrite = v.stencilWrite = true;
+    return v;
+}
+
 }  // namespace detail
 
 namespace {
@@ -204,16 +215,6 @@ PassDecl coveragePass(PipelineSettings const& s) {
     PassDecl p = coverageCounts(s);
     p.clears = {R::Coverage};
     return p;
-}
-
-// The volumes' copy of the G-buffer depth-stencil, where the lighting samples the G-buffer's depth.
-PassDecl volumeDepthPass() {
-    PassDecl v = declare(PassId::VolumeDepth, PassKind::Blit);
-    v.samples = {R::GBufferDepth};
-    v.color = {R::Lighting};  // volumeFbo's; the blit writes depth and stencil only
-    v.depthStencil = R::VolumeDepth;
-    v.depthWrite = v.stencilWrite = true;
-    return v;
 }
 
 // The view pass: the frame's data, tonemapped or shown raw, into `target` (the display or a view).
@@ -307,7 +308,7 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
     } else if (forward) {
         out.push_back(scenePass(PassId::ForwardShading, {R::Materials, R::Lights}, opaque));
     } else if (prepass) {
-        out = prepassPasses();
+        out = prepassPasses(s);
     }
     if (forward || prepass) {
         out.front().stencilWrite = true;  // cleared with the rest

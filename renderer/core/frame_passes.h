@@ -254,8 +254,10 @@ inline std::vector<PassDecl> framePasses(PipelineSettings const& settings) {
 // Deferred lighting (prepass mode, docs/deferred_lighting.md), the passes framePasses puts first: the
 // thin G-buffer (normal and specular exponent, the lit target's depth), every light summed into the
 // diffuse and specular light targets, then the scene drawn again where it equals that depth, its
-// materials applied to the light at its pixel (core/frame_passes_prepass.cpp).
-std::vector<PassDecl> prepassPasses();
+// materials applied to the light at its pixel (core/frame_passes_prepass.cpp). With `prepass_lights:
+// volumes` the light pass draws the light volumes with `cull`, after a copy of the thin depth-stencil
+// for them to test against (the volume_depth pass).
+std::vector<PassDecl> prepassPasses(PipelineSettings const& s);
 
 // What Renderer::drawView runs for a view of the frame `settings` ran (settings.view the view shown):
 // the coverage counts again for a count view (after the volumes' depth copy, which only a volumes

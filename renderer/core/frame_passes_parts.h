@@ -26,6 +26,10 @@ DrawState fullScreen(std::string_view what);
 DrawState onPixels(DrawState drawn, MsaaPixels pixels, int sample = -1);
 // passes/light_volumes.cpp, drawLightVolumes: the draws of one cull mode, each added (blend ONE, ONE).
 std::vector<DrawState> volumeStates(CullMode cull);
+// The volumes drawn into `color` against the volume depth-stencil (lighting and coverage).
+PassDecl volumePass(PassId id, GBufferLayoutDesc const& d, CullMode cull, std::vector<Resource> color);
+// The copy of the depth-stencil `source` the volume passes test against, where they sample it.
+PassDecl volumeDepthPass(Resource source = Resource::GBufferDepth);
 
 // --- msaa (docs/msaa.md; frame_passes_msaa.cpp) ----------------------------------------------------
 

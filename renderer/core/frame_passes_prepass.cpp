@@ -1,10 +1,30 @@
 // The declared passes of deferred lighting (prepass mode).
 #include "core/frame_passes.h"
+#include "core/frame_passes_parts.h"
 
 namespace gbl {
 
-std::vector<PassDecl> prepassPasses() {
-    using R = Resource;
+namespace {
+
+using R = Resource;
+
+// The light pass with `prepass_lights: volumes`: the directional lights full screen (they have no
+// volume), then every light's volume with the cull mode, each adding its diffuse and specular light.
+// The volumes test against a copy of the thin pass's depth-stencil (the pass samples the depth itself,
+// and attaching what a pass samples is a feedback loop): volumeDepthPass(LitDepth) makes it first.
+PassDecl volumeLightPass(PipelineSettings const& s) {
+    PassDecl l =
+        detail::volumePass(PassId::Lighting, layoutDesc(s.layout), s.cull, {R::DiffuseLight, R::SpecularLight});
+    l.samples = {R::PrepassNormal, R::LitDepth, R::Lights, R::VolumeInstances};
+    l.depthStencil = R::VolumeDepth;  // splitVolumeFbo
+    l.clears = l.color;
+    l.states.insert(l.states.begin(), detail::fullScreen("directional lights"));
+    return l;
+}
+
+}  // namespace
+
+std::vector<PassDecl> prepassPasses(PipelineSettings const& s) {
     // Both of the scene's draw groups (drawScene): back faces culled, then the double-sided materials.
     auto const scene = [](std::string_view single, std::string_view both, DepthTest test, bool depthWrite) {
         return std::vector<DrawState>{{single, test, depthWrite, Blend::Off, FaceCull::Back},
@@ -33,7 +53,8 @@ std::vector<PassDecl> prepassPasses() {
     c.states = scene("opaque surfaces, light buffer", "double-sided opaque surfaces, light buffer",
                      DepthTest::LessEqual, false);
     c.clears = {R::Lighting};
-    return {std::move(g), std::move(l), std::move(c)};
+    if (!drawsLightVolumes(s)) return {std::move(g), std::move(l), std::move(c)};
+    return {std::move(g), detail::volumeDepthPass(R::LitDepth), volumeLightPass(s), std::move(c)};
 }
 
 }  // namespace gbl

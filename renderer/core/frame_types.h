@@ -55,11 +55,12 @@ struct PassTiming {
 };
 
 // What a pass issued this frame (gl/draw_count.h): glDraw* calls, an instanced draw counting one,
-// and compute dispatches.
+// the triangles they drew (every instance's), and compute dispatches.
 struct PassCalls {
     std::string name;
     std::uint64_t draws = 0;
     std::uint64_t dispatches = 0;
+    std::uint64_t triangles = 0;
 };
 
 struct FrameStats {
@@ -91,6 +92,18 @@ struct FrameStats {
     std::string shaderCheckReport;
     // The pass the frame stopped after (FrameInput::stopAfter); nullopt: it ran every pass.
     std::optional<PassId> stoppedAfter = std::nullopt;
+
+    // The frame's draw calls and triangles, its passes' (calls) summed.
+    std::uint64_t draws() const {
+        std::uint64_t n = 0;
+        for (PassCalls const& c : calls) n += c.draws;
+        return n;
+    }
+    std::uint64_t triangles() const {
+        std::uint64_t n = 0;
+        for (PassCalls const& c : calls) n += c.triangles;
+        return n;
+    }
 };
 
 // Everything stored at one pixel, read back as floats (for the pixel inspector and tests).

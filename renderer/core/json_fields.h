@@ -5,6 +5,7 @@
 // themselves; gbl_core itself reads no JSON.
 #pragma once
 
+#include "core/frame_types.h"
 #include "core/light_math.h"
 #include "core/point_light.h"
 
@@ -205,6 +206,21 @@ Json lightJson(PointLight const& l) {
             out[key][std::size_t(f.component)] = f.of(l);
         else
             out[key] = f.of(l);
+    }
+    return out;
+}
+
+// stats.json's "calls" (render --out, the editor's Export all): per pass what it issued,
+// {"draws": N, "dispatches": M, "triangles": T} (gl/draw_count.h), a pass that ran twice summed.
+inline json passCallsJson(std::span<PassCalls const> calls) {
+    json out = json::object();
+    for (PassCalls const& c : calls) {
+        json& entry = out[c.name];
+        if (entry.is_null())
+            entry = {{"draws", std::uint64_t(0)}, {"dispatches", std::uint64_t(0)}, {"triangles", std::uint64_t(0)}};
+        entry["draws"] = entry["draws"].get<std::uint64_t>() + c.draws;
+        entry["dispatches"] = entry["dispatches"].get<std::uint64_t>() + c.dispatches;
+        entry["triangles"] = entry["triangles"].get<std::uint64_t>() + c.triangles;
     }
     return out;
 }

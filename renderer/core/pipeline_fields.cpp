@@ -45,7 +45,10 @@ constexpr PipelineField number(PipelineField f) {
 }
 
 bool volumesOnly(PipelineSettings const& s) {
-    return s.mode == LightingMode::Volumes;
+    return drawsLightVolumes(s);
+}
+bool prepassOnly(PipelineSettings const& s) {
+    return s.mode == LightingMode::Prepass;
 }
 bool withWireframes(PipelineSettings const& s) {
     return s.volumeWireframes;
@@ -90,7 +93,7 @@ using P = PipelineSection;
 
 // The A/B table shows the sideB rows in this order; its first row is the mode (startAb ticks it).
 // The Pipeline panel draws each section's fields in this order too.
-std::array<PipelineField, 19> const kFields{
+std::array<PipelineField, 20> const kFields{
     choice<&S::mode>(kLightingModeNames, {.name = "mode",
                                           .help = "How the lights are added: the lighting mode",
                                           .sideB = true,
@@ -100,7 +103,8 @@ std::array<PipelineField, 19> const kFields{
                                           .choiceHelp = kModeHelp,
                                           .option = "--mode"}),
     choice<&S::cull>(kCullModeNames, {.name = "cull",
-                                      .help = "Which faces of a light volume are drawn (volumes mode)",
+                                      .help = "Which faces of a light volume are drawn (volumes mode, and prepass "
+                                              "with --prepass-lights volumes)",
                                       .sideB = true,
                                       .label = "Volume cull mode",
                                       .section = P::VolumeCull,
@@ -271,6 +275,20 @@ std::array<PipelineField, 19> const kFields{
                                          "others once",
                               .applies = withMsaa,
                               .option = "--msaa-lighting"}),
+    choice<&S::prepassLights>(kPrepassLightsNames,
+                              {.name = "prepass_lights",
+                               .help = "prepass's light pass: one full-screen draw (quad) or the light volumes with "
+                                       "the cull mode (volumes)",
+                               .optionalInFiles = kOptional,
+                               .sideB = true,
+                               .label = "Prepass lights",
+                               .section = P::LightingMode,
+                               .tooltip = "quad: one full-screen draw sums every light at every pixel of the thin "
+                                          "G-buffer\nvolumes: each light's volume drawn with the volume cull mode, "
+                                          "its diffuse and\nspecular light added into the two light targets "
+                                          "(docs/deferred_lighting.md)",
+                               .applies = prepassOnly,
+                               .option = "--prepass-lights"}),
 };
 
 }  // namespace

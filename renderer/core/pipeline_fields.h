@@ -25,7 +25,7 @@ enum class SettingKind {
 // The Pipeline panel's sections, top to bottom; each field is drawn in one.
 enum class PipelineSection { LightingMode, VolumeCull, DepthCopy, Overlays, Shading };
 inline constexpr std::array<std::string_view, 5> kPipelineSectionTitles{
-    "Lighting mode", "Volume cull mode (volumes only)", "Depth copy", "Overlays and views", "Shading"};
+    "Lighting mode", "Volume cull (volumes, prepass)", "Depth copy", "Overlays and views", "Shading"};
 
 // How the Pipeline panel edits a field.
 enum class PipelineWidget {

@@ -41,6 +41,9 @@ enum class Msaa { Off, X2, X4, X8 };
 // is wrong on purpose (silhouettes halo); every sample lit and the results averaged; or the complex
 // pixels (samples that differ) found in a pass of their own and lit per sample, the others once.
 enum class MsaaLighting { ResolveFirst, PerSample, Edges };
+// How prepass's light pass reaches the pixels (docs/deferred_lighting.md): one full-screen draw that
+// sums every light at every pixel, or the light volumes with the cull mode (`cull`), each added.
+enum class PrepassLights { Quad, Volumes };
 
 // What the final image shows. Values match the VIEW_* constants in shaders/view_constants.glsl
 // (shader_constants_test checks them).
@@ -96,6 +99,7 @@ struct PipelineSettings {
     float volumeScale = 1.0f;
     Msaa msaa = Msaa::Off;
     MsaaLighting msaaLighting = MsaaLighting::Edges;
+    PrepassLights prepassLights = PrepassLights::Quad;
 
     // Every member, floats compared with ==: what undo's change detection wants.
     bool operator==(PipelineSettings const&) const = default;
@@ -111,6 +115,7 @@ inline constexpr std::array<std::string_view, 4> kGBufferLayoutNames{"classic", 
 inline constexpr std::array<std::string_view, 2> kLightAccumulationNames{"single", "split"};
 inline constexpr std::array<std::string_view, 4> kMsaaNames{"off", "2", "4", "8"};
 inline constexpr std::array<std::string_view, 3> kMsaaLightingNames{"resolve-first", "per-sample", "edges"};
+inline constexpr std::array<std::string_view, 2> kPrepassLightsNames{"quad", "volumes"};
 inline constexpr std::array<std::string_view, 2> kShadingModelNames{"gbuffer-lab", "learnopengl"};
 inline constexpr std::array<std::string_view, 19> kDebugViewNames{
     "final",        "lighting",  "position",      "normal",         "albedo",        "specular", "depth",
@@ -128,6 +133,19 @@ constexpr int msaaSamples(Msaa m) {
 constexpr bool cutsAtRadius(LightingMode m) {
     return m == LightingMode::Volumes || m == LightingMode::Tiled || m == LightingMode::Clustered ||
            m == LightingMode::ForwardPlus;
+}
+
+// Whether the frame's lights are drawn as light volumes with the cull mode: volumes mode, and prepass
+// with `prepass_lights: volumes` (its light pass then adds each volume into the light targets).
+constexpr bool drawsLightVolumes(PipelineSettings const& s) {
+    return s.mode == LightingMode::Volumes ||
+           (s.mode == LightingMode::Prepass && s.prepassLights == PrepassLights::Volumes);
+}
+
+// Whether the frame of `s` cuts the learnopengl shading at each light's radius: its mode does, or it
+// draws light volumes (prepass with volumes), which end there.
+constexpr bool cutsAtRadius(PipelineSettings const& s) {
+    return cutsAtRadius(s.mode) || drawsLightVolumes(s);
 }
 
 // Whether a mode shades while drawing the meshes, keeping no G-buffer (forward and forward+).

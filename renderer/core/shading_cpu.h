@@ -32,7 +32,7 @@ struct ShadingInputs {
 inline void shadingOf(PipelineSettings const& settings, ShadingInputs& s) {
     s.shininess = settings.shininess;
     s.model = settings.shading;
-    s.cutAtRadius = cutsAtRadius(settings.mode);
+    s.cutAtRadius = cutsAtRadius(settings);
 }
 
 struct LightContribution {

@@ -19,7 +19,7 @@ public:
     void draw() const {
         glBindVertexArray(vao_.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
-        countDraw();
+        countDraw(1);
         glBindVertexArray(0);
     }
 

@@ -89,6 +89,11 @@ std::span<ProgramInfo const> programTable() {
         {ProgramId::PrepassShade,
          G::Prepass,
          {"prepass_shade", {{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "prepass_shade.frag"}}, {}}},
+        {ProgramId::PrepassLightVolume,
+         G::Prepass,
+         {"prepass_light_volume",
+          {{GL_VERTEX_SHADER, "light_volume.vert"}, {GL_FRAGMENT_SHADER, "light_volume.frag"}},
+          {"PREPASS_LIGHTS", "GBL_SHININESS_PER_PIXEL"}}},
     };
     static_assert(std::size(table) == kProgramCount, "programTable(): one row per ProgramId, in enum order");
     return table;

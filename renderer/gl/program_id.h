@@ -46,8 +46,11 @@ enum class ProgramId {
     PrepassGeometry,  // the thin G-buffer: normal and specular exponent
     PrepassLight,     // every light into the diffuse and specular light targets
     PrepassShade,     // the second geometry pass: materials applied to the light
+    // light_volume.frag reading the thin G-buffer (PREPASS_LIGHTS): prepass's light pass with volumes
+    // (its mesh and stencil program are the volumes group's)
+    PrepassLightVolume,
 };
-inline constexpr std::size_t kProgramCount = std::size_t(ProgramId::PrepassShade) + 1;
+inline constexpr std::size_t kProgramCount = std::size_t(ProgramId::PrepassLightVolume) + 1;
 
 // What needs the program: every frame (core), or one optional group that is built on first use.
 enum class ProgramGroup { Core, Volumes, Tiled, Clustered, ForwardPlus, Prepass };

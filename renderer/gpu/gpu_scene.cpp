@@ -215,7 +215,7 @@ void drawScene(GpuScene const& scene, gl::Program const& program, MaterialFilter
         glFrontFace(glm::determinant(glm::mat3(inst.model)) < 0.0f ? GL_CW : GL_CCW);
         glBindVertexArray(mesh.vao.id());
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
-        gl::countDraw();
+        gl::countDraw(std::uint64_t(mesh.indexCount / 3));
     }
     glBindVertexArray(0);
     glFrontFace(GL_CCW);

@@ -110,7 +110,7 @@ void drawLightVolumes(LightVolumeDraw const& in, glm::mat4 const& viewProj, Cull
         prog.set("uFirstInstance", mesh->base + first);
         prog.set("uCone", mesh->cone ? 1 : 0);
         glDrawElementsInstanced(GL_TRIANGLES, mesh->indexCount, GL_UNSIGNED_INT, nullptr, count);
-        gl::countDraw();
+        gl::countDraw(std::uint64_t(mesh->indexCount / 3) * std::uint64_t(count));
     };
     // The draw groups of each cull mode, in the order core/frame_passes.cpp (volumeStates) declares
     // them: back, front and none one group; flip the front faces of the lights outside, then the

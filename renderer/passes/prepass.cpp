@@ -2,6 +2,7 @@
 #include "passes/prepass.h"
 
 #include "gl/shader_bindings.h"
+#include "passes/light_volumes.h"
 
 namespace gbl {
 
@@ -13,7 +14,7 @@ void prepassGeometryPass(PrepassGeometryInput const& in, PrepassSceneConfig cons
     drawScene(in.scene, in.program, MaterialFilter::Opaque, config.normalMaps, config.states);
 }
 
-void prepassLightPass(PrepassLightInput const& in, ShadingUniforms const& shading) {
+void prepassLightPass(PrepassLightInput const& in, ShadingUniforms const& shading, PrepassLightVolumes const* volumes) {
     glBindFramebuffer(GL_FRAMEBUFFER, in.target.id());
     applyGroup(in.states, 0);  // cleared by the executor (PassDecl::clears)
     in.program.use();
@@ -21,7 +22,12 @@ void prepassLightPass(PrepassLightInput const& in, ShadingUniforms const& shadin
     bindTextureUnit(slot::BIND_DEPTH, GL_TEXTURE_2D, in.depth.id());
     bindLights(in.program, in.lights);
     setShadingUniforms(in.program, shading);
+    // With volumes the full-screen draw adds only the directional lights, which have none.
+    if (volumes) in.program.set("uLightCount", 0);
     in.triangle.draw();
+    if (!volumes) return;
+    drawLightVolumes({volumes->deferred, volumes->volumes, volumes->program, volumes->stencilMark}, volumes->viewProj,
+                     volumes->cull, in.states.subspan(1));
 }
 
 LightingOutput prepassShadingPass(PrepassShadingInput const& in, PrepassSceneConfig const& config) {

@@ -6,6 +6,7 @@
 #include "gl/fullscreen_triangle.h"
 #include "gpu/draw_state_gl.h"
 #include "gpu/gpu_scene.h"
+#include "gpu/light_volume_gpu.h"
 #include "passes/shading_inputs.h"
 
 #include <glm/glm.hpp>
@@ -33,10 +34,23 @@ struct PrepassLightInput {
     LightBuffer const& lights;
     gl::Program const& program;  // ProgramId::PrepassLight
     gl::FullscreenTriangle const& triangle;
-    gl::Framebuffer const& target;      // splitFbo: the diffuse and specular light targets, cleared
-    std::span<DrawState const> states;  // its one declared draw group
+    gl::Framebuffer const& target;      // splitFbo (splitVolumeFbo with volumes): the light targets, cleared
+    std::span<DrawState const> states;  // its declared draw groups: full screen, then any volumes'
 };
-void prepassLightPass(PrepassLightInput const& in, ShadingUniforms const& shading);
+// `prepass_lights: volumes`: after the full-screen draw (the directional lights alone, the declared
+// group 0), each light's volume drawn with the cull mode (passes/light_volumes.h, drawLightVolumes,
+// the declared groups after it), adding its diffuse and specular light.
+struct PrepassLightVolumes {
+    DeferredInputs deferred;  // the lights and shading uniforms; its depth is the thin pass's (sampled)
+    LightVolumeGpu const& volumes;
+    gl::Program const& program;      // ProgramId::PrepassLightVolume
+    gl::Program const& stencilMark;  // ProgramId::LightVolumeStencil
+    glm::mat4 viewProj{1.0f};
+    CullMode cull = CullMode::Front;
+};
+// `volumes` null: the one full-screen draw sums every light.
+void prepassLightPass(PrepassLightInput const& in, ShadingUniforms const& shading,
+                      PrepassLightVolumes const* volumes = nullptr);
 
 struct PrepassShadingInput {
     GpuScene const& scene;

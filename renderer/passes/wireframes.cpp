@@ -62,7 +62,7 @@ void wireframesPass(WireframesInput const& in, WireframesConfig const& config) {
         p.set("uCone", cone ? 1 : 0);
         glBindVertexArray(vao);
         glDrawElementsInstanced(GL_LINES, indexCount, GL_UNSIGNED_INT, nullptr, to - from);
-        gl::countDraw();
+        gl::countDraw(0);  // lines
     };
     drawRange(v.lineVao.id(), v.lineIndexCount, first, std::min(end, sphereEnd), false);
     drawRange(v.coneLineVao.id(), v.coneLineIndexCount, std::max(first, sphereEnd), end, true);
@@ -72,7 +72,7 @@ void wireframesPass(WireframesInput const& in, WireframesConfig const& config) {
         p.set("uArrowLength", config.arrowLength);
         glBindVertexArray(v.arrowVao.id());
         glDrawElementsInstanced(GL_LINES, v.arrowLineIndexCount, GL_UNSIGNED_INT, nullptr, arrows);
-        gl::countDraw();
+        gl::countDraw(0);  // lines
         p.set("uArrow", 0);
     }
     glBindVertexArray(0);

@@ -195,7 +195,8 @@ std::vector<LightVerdict> explainPixel(WhyValueInput const& in, std::span<PointL
         }
         float const radius = lightRadius(light).radius;
         v.withinRadius = glm::distance(light.position, s.position) < radius;
-        switch (in.settings.mode) {
+        // prepass with volumes evaluates a light where the volumes mode would.
+        switch (drawsLightVolumes(in.settings) ? LightingMode::Volumes : in.settings.mode) {
             case LightingMode::Quad:
                 v.evaluations = 1;
                 v.why = "quad: every light is tested at every pixel";

@@ -123,6 +123,12 @@ void drawStatsPanel(StatsState const& stats, std::string const& noFragmentCounts
                 ImGui::TableNextRow();
                 ImGui::TableNextColumn();
                 ImGui::TextUnformatted(p.name.c_str());
+                auto const c = std::find_if(f.calls.begin(), f.calls.end(),
+                                            [&](PassCalls const& calls) { return calls.name == p.name; });
+                if (c != f.calls.end() && ImGui::IsItemHovered())
+                    ImGui::SetTooltip("%s: %llu draws, %llu triangles, %llu dispatches this frame", p.name.c_str(),
+                                      (unsigned long long)c->draws, (unsigned long long)c->triangles,
+                                      (unsigned long long)c->dispatches);
                 ImGui::TableNextColumn();
                 if (!timed)
                     ImGui::TextDisabled("not timed");
@@ -132,6 +138,9 @@ void drawStatsPanel(StatsState const& stats, std::string const& noFragmentCounts
             ImGui::EndTable();
         }
 
+        // Every pass's draws and triangles summed: prepass draws the scene twice, and says so here.
+        wrappedText("Draw calls %llu, triangles %llu (per pass: hover a row, or the Frame window)",
+                    (unsigned long long)f.draws(), (unsigned long long)f.triangles());
         wrappedText("Lights: %d in the list, %d submitted, %d shaded", lightCount, f.lightsSubmitted, f.lightsShaded);
         if (f.fragmentInvocations)
             wrappedText("Fragment invocations (lighting): %llu", (unsigned long long)*f.fragmentInvocations);
