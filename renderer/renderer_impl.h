@@ -222,7 +222,6 @@ private:
     void runLightingComplex(FrameRecord& frame, PassRun const& r);
     void runMsaaResolve(FrameRecord& frame, PassRun const& r);
     void runMsaaVolumes(FrameRecord& frame, PassRun const& r);  // runLighting's, for msaa volumes frames
-    void runMsaaResolveLighting(FrameRecord& frame, PassRun const& r);
     // Why the frame of `s` (mode after fallback) cannot have its msaa, one sentence; nullopt when it
     // can. `makeTargets`: also makes the multisampled targets, and a failure there is a reason too.
     std::optional<std::string> msaaRefusal(PipelineSettings const& s, bool makeTargets);

@@ -56,9 +56,12 @@ void RendererImpl::runLighting(FrameRecord& frame, PassRun const& r) {
     // The lit image, or the diffuse light target of a split frame (the specular one beside it).
     Resource const out = r.decl.kind == PassKind::Compute ? r.decl.writes.front() : r.decl.color.front();
     gl::Texture const& image = r.io.texture(out);
+    // msaa: the pass reads the multisampled G-buffer (as declared).
+    bool const msaa =
+        std::find(r.decl.samples.begin(), r.decl.samples.end(), Resource::MsaaNormal) != r.decl.samples.end();
     switch (f.settings.mode) {
         case LightingMode::Volumes:
-            if (r.decl.color.front() == Resource::MsaaLighting) {  // msaa: the samples lit one by one
+            if (msaa) {  // the samples lit and averaged in the shader (docs/msaa.md)
                 runMsaaVolumes(frame, r);
                 break;
             }
@@ -85,8 +88,7 @@ void RendererImpl::runLighting(FrameRecord& frame, PassRun const& r) {
             runPrepassLight(frame, r);
             break;
         default:
-            if (std::find(r.decl.samples.begin(), r.decl.samples.end(), Resource::MsaaNormal) !=
-                r.decl.samples.end()) {  // msaa: every sample, or sample 0 of the simple pixels (edges)
+            if (msaa) {  // every sample, or sample 0 of the simple pixels (edges)
                 bool const simple = f.settings.msaaLighting == MsaaLighting::Edges;
                 lightingQuadPass({{gbufferTextures(r.io.targets.msaa.gbuffer), deferred.lights, deferred.shading},
                                   msaaProgram(simple ? "SAMPLE0" : ""),

@@ -19,17 +19,14 @@ std::optional<std::string> RendererImpl::msaaRefusal(PipelineSettings const& s, 
     if (auto why = msaaFrameRefusal(s, bool(imported))) return why;
     int const n = msaaSamples(s.msaa);
     if (std::string const why = caps.msaaUnavailableReason(n); !why.empty()) return why + ", so msaa was off";
-    // The volumes light a multisampled image of their own (docs/msaa.md).
-    bool const volumes = s.mode == LightingMode::Volumes && s.msaaLighting != MsaaLighting::ResolveFirst;
-    double const bytes = msaaTargetBytes(layoutDesc(s.layout), n, targets.width, targets.height, volumes);
+    double const bytes = msaaTargetBytes(layoutDesc(s.layout), n, targets.width, targets.height);
     bool const reported = caps.freeVideoMemoryKiB > 0;
     double const budget = reported ? double(caps.freeVideoMemoryKiB) * 1024.0 / 2.0 : kMsaaFixedBudgetBytes;
     std::string const source = reported ? "half the free video memory " + caps.freeVideoMemorySource + " reported"
                                         : "fixed, as this driver does not report its free memory";
     if (auto why = msaaBudgetRefusal(s.msaa, bytes, budget, source, targets.width, targets.height)) return why;
-    bool const made = targets.msaa.samples == n && (!volumes || targets.msaa.litFbo);
-    if (!makeTargets || made) return std::nullopt;
-    if (auto err = createMsaaTargets(n, volumes, targets))
+    if (!makeTargets || targets.msaa.samples == n) return std::nullopt;
+    if (auto err = createMsaaTargets(n, targets))
         return "the " + std::to_string(n) + "-sample G-buffer could not be made (" + *err + "), so msaa was off";
     return std::nullopt;
 }
@@ -110,56 +107,43 @@ void RendererImpl::runMsaaResolve(FrameRecord&, PassRun const& r) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-// msaa volumes (core/frame_passes_msaa.cpp, msaaVolumesPass, declares the groups in this order): edges
-// sets the complex bit and lights the ambient term of the simple and complex pixels; per-sample lights
-// every pixel's averaged ambient term. Then the volumes, drawn once per group of volume states: the
-// simple pixels lit once (edges), then each sample k under its sample mask, lit from sample k.
+// msaa volumes (core/frame_passes_msaa.cpp, msaaVolumesPass, declares the groups in this order), into
+// the single-sample lit image: the ambient term (edges: the simple pixels lit once, the complex ones
+// averaged; per-sample: every pixel averaged), then the volumes over the simple pixels with the cull
+// mode's states (edges: lit once at the centre; per-sample: every sample lit and averaged), then over
+// the complex pixels, every sample lit and averaged, with msaaComplexCull's faces and no depth test.
 void RendererImpl::runMsaaVolumes(FrameRecord& frame, PassRun const& r) {
     FrameContext const& f = frame.f;
     bool const edges = f.settings.msaaLighting == MsaaLighting::Edges;
     DeferredInputs const deferred{gbufferTextures(targets.msaa.gbuffer), lights, frame.shading};
     glBindFramebuffer(GL_FRAMEBUFFER, r.fbo->id());
     std::size_t group = 0;
-    auto const fullScreen = [&](gl::Program const& p) {
+    auto const ambient = [&](gl::Program const& p) {
         applyGroup(r.decl.states, group++);
         p.use();
         bindDeferredInputs(p, deferred);
         p.set("uLightCount", 0);  // the ambient term (and directional lights) alone, as lightingVolumesPass
         triangle.draw();
     };
-    if (edges) {
-        gl::Program const& detect = msaaProgram("EDGES");  // the complex bit, colour writes off
-        detect.use();
-        setMsaaThresholds(detect);
-        fullScreen(detect);
-        fullScreen(msaaProgram("SAMPLE0"));  // ambient of the simple pixels: lit once, at the centre
-    }
-    fullScreen(msaaProgram(""));  // ambient: the samples averaged
-    int const draws = msaaSamples(f.settings.msaa) + (edges ? 1 : 0);
-    std::size_t const perDraw = (r.decl.states.size() - group) / std::size_t(draws);
-    gl::Program const& shade =
-        shaders.variant(ProgramId::LightVolume, "GBL_MSAA_SAMPLES " + std::to_string(targets.msaa.samples));
-    setSamplePositions(shade, targets.msaa);
-    for (int d = 0; d < draws; ++d) {
-        int const sample = edges ? d - 1 : d;  // edges' first: the simple pixels, lit once (-1)
-        shade.use();
-        shade.set("uSample", sample);
-        std::span<DrawState const> const groups =
-            std::span<DrawState const>(r.decl.states).subspan(group + std::size_t(d) * perDraw, perDraw);
-        drawLightVolumes({deferred, volumes, shade, shaders.get(ProgramId::LightVolumeStencil)}, f.viewProj,
-                         f.settings.cull, groups);
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-}
-
-// The multisampled lit image averaged into the lit image (colour only; the lit target's depth is the
-// depth-copy step's).
-void RendererImpl::runMsaaResolveLighting(FrameRecord&, PassRun const& r) {
-    int const w = targets.width, h = targets.height;
-    apply(kWriteAll);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, r.io.blitSource(Resource::MsaaLighting).id());
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, r.fbo->id());
-    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    if (edges) ambient(msaaProgram("SAMPLE0"));  // the simple pixels: lit once, at the centre
+    ambient(msaaProgram(""));                    // the samples averaged
+    std::string const samples = "GBL_MSAA_SAMPLES " + std::to_string(targets.msaa.samples);
+    auto const volumeProgram = [&](bool once) -> gl::Program const& {
+        gl::Program const& p =
+            shaders.variant(ProgramId::LightVolume, once ? samples + "\n#define GBL_MSAA_SAMPLE0" : samples);
+        setSamplePositions(p, targets.msaa);
+        return p;
+    };
+    // The volume groups: the simple pixels' first, up to the first group kept to complex pixels.
+    std::span<DrawState const> const all(r.decl.states);
+    auto const complex = std::find_if(all.begin() + std::ptrdiff_t(group), all.end(),
+                                      [](DrawState const& d) { return d.pixels == MsaaPixels::Complex; });
+    std::size_t const simpleGroups = std::size_t(complex - all.begin()) - group;
+    gl::Program const& stencilMark = shaders.get(ProgramId::LightVolumeStencil);
+    drawLightVolumes({deferred, volumes, volumeProgram(edges), stencilMark}, f.viewProj, f.settings.cull,
+                     all.subspan(group, simpleGroups));
+    drawLightVolumes({deferred, volumes, volumeProgram(false), stencilMark}, f.viewProj,
+                     msaaComplexCull(f.settings.cull), all.subspan(group + simpleGroups));
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

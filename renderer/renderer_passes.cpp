@@ -22,27 +22,14 @@ namespace gbl {
 
 RendererImpl::RunFunction RendererImpl::runFunction(PassId id) {
     // PassId -> run function, in PassId's order.
-    static constexpr std::array<RunFunction, kPassNames.size()> kRun{&RendererImpl::runForwardShading,
-                                                                     &RendererImpl::runGeometry,
-                                                                     &RendererImpl::runLightLists,
-                                                                     &RendererImpl::runVolumeDepth,
-                                                                     &RendererImpl::runLighting,
-                                                                     &RendererImpl::runLightCombine,
-                                                                     &RendererImpl::runDepthCopy,
-                                                                     &RendererImpl::runForward,
-                                                                     &RendererImpl::runLightCubes,
-                                                                     &RendererImpl::runWireframes,
-                                                                     &RendererImpl::runCoverage,
-                                                                     &RendererImpl::runDisplay,
-                                                                     &RendererImpl::runImport,
-                                                                     &RendererImpl::runGlassOutline,
-                                                                     &RendererImpl::runDepthPrepass,
-                                                                     &RendererImpl::runMsaaEdges,
-                                                                     &RendererImpl::runLightingComplex,
-                                                                     &RendererImpl::runMsaaResolve,
-                                                                     &RendererImpl::runMsaaResolveLighting,
-                                                                     &RendererImpl::runThinGBuffer,
-                                                                     &RendererImpl::runPrepassShading};
+    static constexpr std::array<RunFunction, kPassNames.size()> kRun{
+        &RendererImpl::runForwardShading, &RendererImpl::runGeometry,        &RendererImpl::runLightLists,
+        &RendererImpl::runVolumeDepth,    &RendererImpl::runLighting,        &RendererImpl::runLightCombine,
+        &RendererImpl::runDepthCopy,      &RendererImpl::runForward,         &RendererImpl::runLightCubes,
+        &RendererImpl::runWireframes,     &RendererImpl::runCoverage,        &RendererImpl::runDisplay,
+        &RendererImpl::runImport,         &RendererImpl::runGlassOutline,    &RendererImpl::runDepthPrepass,
+        &RendererImpl::runMsaaEdges,      &RendererImpl::runLightingComplex, &RendererImpl::runMsaaResolve,
+        &RendererImpl::runThinGBuffer,    &RendererImpl::runPrepassShading};
     return kRun[std::size_t(id)];
 }
 
@@ -119,8 +106,9 @@ void RendererImpl::runImport(FrameRecord&, PassRun const& r) {
 }
 
 void RendererImpl::runVolumeDepth(FrameRecord&, PassRun const& r) {
-    // The G-buffer's depth-stencil, or in msaa volumes frames its multisampled one (as declared).
-    volumeDepthPass({r.io.blitSource(r.decl.samples.front()), *r.fbo}, {r.io.targets.width, r.io.targets.height});
+    // The G-buffer's depth-stencil, or in msaa volumes frames the multisampled depth alone (as declared).
+    volumeDepthPass({r.io.blitSource(r.decl.samples.front()), *r.fbo},
+                    {r.io.targets.width, r.io.targets.height, r.decl.stencilWrite});
 }
 
 void RendererImpl::runLightCombine(FrameRecord& frame, PassRun const& r) {

@@ -114,9 +114,8 @@ TEST_F(MsaaModesGlTest, VolumesPerSampleEqualsQuadPerSampleWithEveryInsideSafeCu
     }
 }
 
-// msaa off in volumes mode (every cull mode's stencil masks as before: 0xFF, no sample mask) gives
-// the same frame bit for bit before and after msaa volumes frames, whose stencil and sample masks
-// it must not inherit.
+// msaa off in volumes mode (every cull mode's stencil masks as before: 0xFF) gives the same frame bit
+// for bit before and after msaa volumes frames, whose stencil masks it must not inherit.
 TEST_F(MsaaModesGlTest, VolumesMsaaOffFramesAreBitIdenticalWhateverRanBefore) {
     for (CullMode cull : {CullMode::Stencil, CullMode::Flip}) {
         PipelineSettings const off = settings(LightingMode::Volumes, Msaa::Off, MsaaLighting::Edges, cull);
@@ -128,7 +127,7 @@ TEST_F(MsaaModesGlTest, VolumesMsaaOffFramesAreBitIdenticalWhateverRanBefore) {
 }
 
 // edges in volumes mode: the complex pixels lit sample by sample as per-sample lights them (the same
-// blends in the same order), the simple ones from sample 0: the bound of the quad pass's edges test.
+// draws, blends and order), the simple ones once at the centre: the bound of the quad pass's edges test.
 TEST_F(MsaaModesGlTest, VolumesEdgesEqualsVolumesPerSampleWithinABound) {
     for (CullMode cull : {CullMode::Flip, CullMode::Stencil}) {
         FloatImage const perSample = lighting(settings(LightingMode::Volumes, Msaa::X4, MsaaLighting::PerSample, cull));
@@ -231,26 +230,24 @@ TEST_F(MsaaModesGlTest, ModesThatCannotAndTooLargeAGBufferRefuseInOneSentence) {
         FloatImage const want = lighting(settings(mode, Msaa::Off));
         FrameStats const st = limited.render({camera_, lights_, settings(mode, Msaa::X4), true});
         EXPECT_EQ(st.msaaUsed, Msaa::Off);
-        EXPECT_EQ(st.fallbackReason, "msaa 4 needs " + std::string(mode == LightingMode::Quad ? "2" : "3") +
-                                         " MB for its multisampled targets at 160x90 and the budget is 1 MB (half "
-                                         "the free video memory GL_NVX_gpu_memory_info reported), so msaa was off");
+        // The volumes light into the single-sample lit image: the same targets as the quad pass.
+        EXPECT_EQ(st.fallbackReason,
+                  "msaa 4 needs 2 MB for its multisampled targets at 160x90 and the budget is 1 MB (half "
+                  "the free video memory GL_NVX_gpu_memory_info reported), so msaa was off");
         EXPECT_EQ(limited.readAttachment(Attachment::Lighting).pixels, want.pixels) << "the msaa off frame";
         EXPECT_EQ(st.glErrors, 0u);
     }
-    EXPECT_DOUBLE_EQ(msaaTargetBytes(layoutDesc(GBufferLayout::Classic), 4, kW, kH, false), 2073600.0);
-    EXPECT_DOUBLE_EQ(msaaTargetBytes(layoutDesc(GBufferLayout::Classic), 4, kW, kH, true), 2534400.0);
-    // packed rebuilds position from depth: its volumes test a multisampled copy of the depth too.
-    EXPECT_DOUBLE_EQ(msaaTargetBytes(layoutDesc(GBufferLayout::Packed), 8, kW, kH, true),
-                     (12.0 + 8.0 + 4.0) * 8 * kW * kH);
+    EXPECT_DOUBLE_EQ(msaaTargetBytes(layoutDesc(GBufferLayout::Classic), 4, kW, kH), 2073600.0);
+    // packed: its 12 bytes a pixel (gbuffer_layout.h), 8 samples of each.
+    EXPECT_DOUBLE_EQ(msaaTargetBytes(layoutDesc(GBufferLayout::Packed), 8, kW, kH), 12.0 * 8 * kW * kH);
     // The Stats window's and bench's line: bytes x samples x pixels, in tenths of a megabyte.
     EXPECT_EQ(msaaMemoryLine(layoutDesc(GBufferLayout::Classic), kW, kH),
-              "msaa targets at 160x90: 2x 1.0 MB (volumes 1.3 MB), 4x 2.1 MB (volumes 2.5 MB), 8x 4.1 MB (volumes "
-              "5.1 MB)");
+              "msaa targets at 160x90: 2x 1.0 MB, 4x 2.1 MB, 8x 4.1 MB");
     // Without a report: the fixed budget of 1 GiB, which 8 samples of classic pass at 1920x1080
     // (597 MB) and fail at 7680x4320 (9.6 GB).
-    EXPECT_FALSE(msaaBudgetRefusal(Msaa::X8, msaaTargetBytes(layoutDesc(GBufferLayout::Classic), 8, 1920, 1080, false),
+    EXPECT_FALSE(msaaBudgetRefusal(Msaa::X8, msaaTargetBytes(layoutDesc(GBufferLayout::Classic), 8, 1920, 1080),
                                    kMsaaFixedBudgetBytes, "fixed", 1920, 1080));
-    EXPECT_EQ(msaaBudgetRefusal(Msaa::X8, msaaTargetBytes(layoutDesc(GBufferLayout::Classic), 8, 7680, 4320, false),
+    EXPECT_EQ(msaaBudgetRefusal(Msaa::X8, msaaTargetBytes(layoutDesc(GBufferLayout::Classic), 8, 7680, 4320),
                                 kMsaaFixedBudgetBytes, "fixed", 7680, 4320),
               "msaa 8 needs 9555 MB for its multisampled targets at 7680x4320 and the budget is 1074 MB (fixed), so "
               "msaa was off");

@@ -66,11 +66,9 @@ DrawState fullScreen(std::string_view what) {
     return state(what, DepthTest::Off, false, Blend::Off, FaceCull::Off);
 }
 
-// `drawn` kept to the msaa edges strategy's simple or complex pixels (core/frame_passes.h), and to
-// one sample (-1: all).
-DrawState onPixels(DrawState drawn, MsaaPixels pixels, int sample) {
+// `drawn` kept to the msaa simple or complex pixels (core/frame_passes.h).
+DrawState onPixels(DrawState drawn, MsaaPixels pixels) {
     drawn.pixels = pixels;
-    drawn.sample = sample;
     return drawn;
 }
 
@@ -343,16 +341,14 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
         if (s.mode == LightingMode::Clustered)
             out.push_back(
                 computePass(PassId::LightLists, {R::GBufferDepth, R::Lights}, {R::TileBins, R::ClusterLists}));
-        // msaa volumes lit from the samples: the multisampled lit image, then resolved (docs/msaa.md).
+        // msaa volumes lit from the samples: over the lit target's depth-stencil, the complex bit and
+        // a resolved depth (docs/msaa.md).
         bool const msaaVolumes = msaa && lightsSamples(s) && s.mode == LightingMode::Volumes;
-        if (s.mode == LightingMode::Volumes && lightingSamplesDepth(d))
-            out.push_back(msaaVolumes ? msaaVolumeDepthPass() : volumeDepthPass());
-        if (msaaVolumes) {
-            out.push_back(msaaVolumesPass(s, d));
-            out.push_back(msaaResolveLightingPass());
-        } else {
-            out.push_back(lightingPass(s, split));
-        }
+        if (msaaVolumes)
+            out.push_back(msaaVolumeDepthPass());
+        else if (s.mode == LightingMode::Volumes && lightingSamplesDepth(d))
+            out.push_back(volumeDepthPass());
+        out.push_back(msaaVolumes ? msaaVolumesPass(s, d) : lightingPass(s, split));
         if (msaa && !msaaVolumes && s.msaaLighting == MsaaLighting::Edges) out.push_back(lightingComplexPass(d));
         if (msaa && lightsSamples(s)) out.push_back(msaaResolvePass(d));
         if (split) {
@@ -371,7 +367,7 @@ std::vector<PassDecl> framePasses(PipelineSettings const& s, bool wireframes, bo
     // The light targets of an earlier split frame would otherwise show in this one's views.
     if (!split && !prepass) out.front().clears = plus(out.front().clears, {R::DiffuseLight, R::SpecularLight});
     if (viewNeedsCoverage(s.view)) {
-        // msaa volumes made only the multisampled copy: the counts test the resolved depth's.
+        // msaa volumes test the lit target's depth, made no copy: the counts test the resolved depth's.
         bool const resolvedCopy =
             msaaFrame(s, imported) && lightsSamples(s) && s.mode == LightingMode::Volumes && lightingSamplesDepth(d);
         if (resolvedCopy) out.push_back(volumeDepthPass());

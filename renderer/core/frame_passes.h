@@ -18,33 +18,32 @@ namespace gbl {
 // Every pass a frame can run. kPassNames holds the one name of each, used by the pass timer,
 // FrameStats::passes, stats.json and bench.
 enum class PassId {
-    ForwardShading,       // forward mode: every opaque surface lit by every light
-    Geometry,             // the G-buffer
-    LightLists,           // tiled and clustered: each tile's or cluster's candidate lights
-    VolumeDepth,          // the G-buffer's depth-stencil copied for the volume passes
-    Lighting,             // the lighting mode's pass
-    LightCombine,         // accumulation split: the two light targets into the lit image
-    DepthCopy,            // the blit step: the G-buffer depth into the lit target
-    Forward,              // blended surfaces, forward-lit over the lit image
-    LightCubes,           // overlay: a small unlit cube at each light, on the display image
-    Wireframes,           // overlay: light-volume outlines, on the display image
-    Coverage,             // the counts behind the heat map and lights-per-tile views
-    Display,              // tonemap or debug view into the display image (the overlays follow it)
-    Import,               // re-lighting: an imported G-buffer written into the layout's targets, instead of geometry
-    GlassOutline,         // overlay: hatches where blended surfaces are, on the display or a view (any view)
-    DepthPrepass,         // forward+: the opaque surfaces' depth alone, before the light lists and the shading
-    MsaaEdges,            // msaa: complex pixels (samples that differ) marked in the stencil and the complex mask
-    MsaaComplex,          // msaa edges: the complex pixels lit per sample (the lighting pass lit the others once)
-    MsaaResolve,          // msaa: the multisampled G-buffer resolved into the layout's targets, for what follows
-    MsaaResolveLighting,  // msaa volumes: the multisampled lit image (each sample lit) averaged into the lit image
-    ThinGBuffer,          // prepass: the thin G-buffer (normal and specular exponent, depth), "prepass_geometry"
-    PrepassShading,       // prepass: the scene drawn again, its materials applied to the summed light
+    ForwardShading,  // forward mode: every opaque surface lit by every light
+    Geometry,        // the G-buffer
+    LightLists,      // tiled and clustered: each tile's or cluster's candidate lights
+    VolumeDepth,     // the G-buffer's depth-stencil copied for the volume passes
+    Lighting,        // the lighting mode's pass
+    LightCombine,    // accumulation split: the two light targets into the lit image
+    DepthCopy,       // the blit step: the G-buffer depth into the lit target
+    Forward,         // blended surfaces, forward-lit over the lit image
+    LightCubes,      // overlay: a small unlit cube at each light, on the display image
+    Wireframes,      // overlay: light-volume outlines, on the display image
+    Coverage,        // the counts behind the heat map and lights-per-tile views
+    Display,         // tonemap or debug view into the display image (the overlays follow it)
+    Import,          // re-lighting: an imported G-buffer written into the layout's targets, instead of geometry
+    GlassOutline,    // overlay: hatches where blended surfaces are, on the display or a view (any view)
+    DepthPrepass,    // forward+: the opaque surfaces' depth alone, before the light lists and the shading
+    MsaaEdges,       // msaa: complex pixels (samples that differ) marked in the stencil and the complex mask
+    MsaaComplex,     // msaa edges: the complex pixels lit per sample (the lighting pass lit the others once)
+    MsaaResolve,     // msaa: the multisampled G-buffer resolved into the layout's targets, for what follows
+    ThinGBuffer,     // prepass: the thin G-buffer (normal and specular exponent, depth), "prepass_geometry"
+    PrepassShading,  // prepass: the scene drawn again, its materials applied to the summed light
 };
-inline constexpr std::array<std::string_view, 21> kPassNames{
+inline constexpr std::array<std::string_view, 20> kPassNames{
     "forward_shading", "geometry", "light_lists", "volume_depth", "lighting", "light_combine", "depth_copy", "forward",
     "light_cubes", "wireframes", "coverage", "display", "import", "glass_outline", "depth_prepass",
     // msaa (docs/msaa.md)
-    "msaa_edges", "lighting_complex", "msaa_resolve", "msaa_resolve_lighting",
+    "msaa_edges", "lighting_complex", "msaa_resolve",
     // prepass (docs/deferred_lighting.md)
     "prepass_geometry", "prepass_shading"};
 
@@ -62,8 +61,7 @@ inline std::optional<PassId> passFromName(std::string_view name) {
 constexpr bool countsAsLighting(PassId id) {
     return id == PassId::ForwardShading || id == PassId::LightLists || id == PassId::VolumeDepth ||
            id == PassId::Lighting || id == PassId::LightCombine || id == PassId::DepthPrepass ||
-           id == PassId::MsaaEdges || id == PassId::MsaaComplex || id == PassId::MsaaResolveLighting ||
-           id == PassId::PrepassShading;
+           id == PassId::MsaaEdges || id == PassId::MsaaComplex || id == PassId::PrepassShading;
 }
 
 // The passes whose fragments FrameStats::fragmentInvocations counts: the shading of the lights.
@@ -100,13 +98,9 @@ enum class Resource {
     MsaaEmissive,
     MsaaDepth,
     ComplexMask,
-    // msaa volumes: the multisampled lit image the volumes add into, and the copy of the multisampled
-    // depth-stencil they test against where the lighting samples the depth (as VolumeDepth).
-    MsaaLighting,
-    MsaaVolumeDepth,
     PrepassNormal,  // prepass's thin G-buffer: world normal xyz, specular exponent w (RGBA16F)
 };
-inline constexpr std::array<std::string_view, 29> kResourceNames{"gbuffer.position",
+inline constexpr std::array<std::string_view, 27> kResourceNames{"gbuffer.position",
                                                                  "gbuffer.normal",
                                                                  "gbuffer.albedo_spec",
                                                                  "gbuffer.emissive",
@@ -132,8 +126,6 @@ inline constexpr std::array<std::string_view, 29> kResourceNames{"gbuffer.positi
                                                                  "msaa.emissive",
                                                                  "msaa.depth",
                                                                  "complex_mask",
-                                                                 "msaa.lighting",
-                                                                 "msaa.volumes.depth",
                                                                  "prepass.normal_exp"};
 
 inline std::string_view resourceName(Resource r) {
@@ -187,9 +179,6 @@ struct DrawState {
     bool colorWrite = true;
     int stencilRef = 0;  // StencilUse::EqualBits: the bits tested
     MsaaPixels pixels = MsaaPixels::All;
-    // msaa: the one sample the group writes (the sample mask; its shader lights that sample), or -1
-    // for every sample. The volumes light a multisampled target one sample at a time this way.
-    int sample = -1;
 
     bool operator==(DrawState const&) const = default;
 };

@@ -1,5 +1,5 @@
-// The msaa passes' declarations (docs/msaa.md): the detection, the resolves, and the volumes lit
-// sample by sample into a multisampled image.
+// The msaa passes' declarations (docs/msaa.md): the detection, the resolve, the complex pixels' quad
+// pass, and the volumes lit from the samples.
 #include "core/frame_passes_parts.h"
 #include "core/msaa.h"
 
@@ -78,54 +78,61 @@ PassDecl msaaResolvePass(GBufferLayoutDesc const& d) {
     return p;
 }
 
-// msaa volumes (per-sample and edges; docs/msaa.md): the volumes added into the multisampled lit
-// image, tested against the multisampled depth-stencil, one sample at a time (the sample mask; the
-// shader lights that sample). edges first sets the stencil's complex bit (the detection again, with
-// no colour), lights the simple pixels once at their centre (every sample written) and then the
-// complex ones sample by sample; per-sample lights every pixel sample by sample. The ambient term is
-// each pixel's samples averaged (lit once at simple pixels), written to every sample.
+namespace {
+
+// The complex pixels' volume draws (msaa volumes): their samples lie on different surfaces, so no one
+// depth can test them. The cull mode's faces with no depth test, the shader's radius cut-off keeping
+// each sample to the light's sphere, which the mesh encloses; stencil's mark needs a depth test, so it
+// draws the back faces alone, as front does (what the mark would let through: a surface inside).
+std::vector<DrawState> complexVolumeStates(CullMode cull) {
+    std::vector<DrawState> out = volumeStates(msaaComplexCull(cull));
+    for (DrawState& v : out) {
+        v = onPixels(v, MsaaPixels::Complex);
+        v.depthTest = DepthTest::Off;
+    }
+    return out;
+}
+
+}  // namespace
+
+// msaa volumes (per-sample and edges; docs/msaa.md): the volumes added into the single-sample lit image
+// over its depth-stencil, which holds the complex bit (msaa_edges) and a resolved depth (volume_depth).
+// The ambient term first: each pixel's samples averaged, or under edges the simple pixels lit once.
+// Then the simple pixels, one surface under every sample, depth-tested with the cull mode's states:
+// per-sample lights every sample in the shader and averages, edges lights the centre once. Then the
+// complex pixels, every sample lit and averaged, with no depth test (complexVolumeStates): the same
+// draws in both strategies, so they agree there bit for bit.
 PassDecl msaaVolumesPass(PipelineSettings const& s, GBufferLayoutDesc const& d) {
     bool const edges = s.msaaLighting == MsaaLighting::Edges;
     PassDecl p = declare(PassId::Lighting);
     p.samples = plus(msaaGBufferSamples(d), {R::Lights, R::VolumeInstances});
-    p.color = {R::MsaaLighting};
-    p.depthStencil = lightingSamplesDepth(d) ? R::MsaaVolumeDepth : R::MsaaDepth;
-    p.clears = {R::MsaaLighting};
+    p.color = {R::Lighting};
+    p.depthStencil = R::LitDepth;
+    p.clears = {R::Lighting};
     p.depthRead = s.cull != CullMode::None;
-    p.stencilRead = p.stencilWrite = s.cull == CullMode::Stencil || edges;
-    std::vector<DrawState> const volumes = volumeStates(s.cull);
-    auto const addVolumes = [&](MsaaPixels pixels, int sample) {
-        for (DrawState const& v : volumes) p.states.push_back(onPixels(v, pixels, sample));
-    };
-    if (edges) {
-        p.states = {state("mark complex pixels", DepthTest::Off, false, Blend::Off, FaceCull::Off,
-                          StencilUse::MarkComplex, false),
-                    onPixels(fullScreen("ambient, simple pixels"), MsaaPixels::Simple),
+    p.stencilRead = true;
+    p.stencilWrite = s.cull == CullMode::Stencil;
+    if (edges)
+        p.states = {onPixels(fullScreen("ambient, simple pixels"), MsaaPixels::Simple),
                     onPixels(fullScreen("ambient, complex pixels"), MsaaPixels::Complex)};
-        addVolumes(MsaaPixels::Simple, -1);
-    } else {
+    else
         p.states = {fullScreen("ambient, every sample")};
-    }
-    for (int k = 0; k < msaaSamples(s.msaa); ++k) addVolumes(edges ? MsaaPixels::Complex : MsaaPixels::All, k);
+    for (DrawState const& v : volumeStates(s.cull)) p.states.push_back(onPixels(v, MsaaPixels::Simple));
+    for (DrawState const& v : complexVolumeStates(s.cull)) p.states.push_back(v);
     return p;
 }
 
-// The volumes' copy of the multisampled depth-stencil (layouts whose lighting samples the depth).
+// The volumes' depth: the multisampled depth resolved (one sample) into the lit target's depth, whose
+// stencil keeps the complex bit msaa_edges set. A simple pixel's samples lie on one surface, and the
+// volumes' faces meet a surface only outside the light's sphere, so one sample's depth tests it as
+// every sample's would.
 PassDecl msaaVolumeDepthPass() {
     PassDecl v = declare(PassId::VolumeDepth, PassKind::Blit);
     v.samples = {R::MsaaDepth};
-    v.color = {R::MsaaLighting};  // the blit writes depth and stencil only
-    v.depthStencil = R::MsaaVolumeDepth;
-    v.depthWrite = v.stencilWrite = true;
+    v.color = {R::Lighting};  // litFbo's; the blit writes depth only
+    v.depthStencil = R::LitDepth;
+    v.depthWrite = true;
     return v;
-}
-
-// The multisampled lit image averaged into the lit image (the G-buffer is resolved after it).
-PassDecl msaaResolveLightingPass() {
-    PassDecl p = declare(PassId::MsaaResolveLighting, PassKind::Blit);
-    p.samples = {R::MsaaLighting};
-    p.color = {R::Lighting};
-    return p;
 }
 
 // msaa edges: the complex pixels, each sample lit, into the lit image beside the simple ones.

@@ -21,9 +21,8 @@ std::vector<Resource> gbufferSamples(GBufferLayoutDesc const& d);
 // `a` with those of `b` it lacks.
 std::vector<Resource> plus(std::vector<Resource> a, std::initializer_list<Resource> b);
 DrawState fullScreen(std::string_view what);
-// `drawn` kept to the msaa edges strategy's simple or complex pixels (core/frame_passes.h), and to
-// one sample (-1: all).
-DrawState onPixels(DrawState drawn, MsaaPixels pixels, int sample = -1);
+// `drawn` kept to the msaa simple or complex pixels (core/frame_passes.h).
+DrawState onPixels(DrawState drawn, MsaaPixels pixels);
 // passes/light_volumes.cpp, drawLightVolumes: the draws of one cull mode, each added (blend ONE, ONE).
 std::vector<DrawState> volumeStates(CullMode cull);
 // The volumes drawn into `color` against the volume depth-stencil (lighting and coverage).
@@ -46,7 +45,6 @@ PassDecl msaaEdgesPass(GBufferLayoutDesc const& d);
 PassDecl msaaResolvePass(GBufferLayoutDesc const& d);
 PassDecl msaaVolumesPass(PipelineSettings const& s, GBufferLayoutDesc const& d);
 PassDecl msaaVolumeDepthPass();
-PassDecl msaaResolveLightingPass();
 PassDecl lightingComplexPass(GBufferLayoutDesc const& d);
 
 }  // namespace gbl::detail

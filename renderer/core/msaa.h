@@ -41,20 +41,23 @@ inline std::optional<std::string> msaaFrameRefusal(PipelineSettings const& s, bo
     return std::nullopt;
 }
 
+// The cull mode whose faces the volumes draw over complex pixels (msaa volumes, no depth test there:
+// core/frame_passes_msaa.cpp). The stencil mode's mark counts depth failures, so it cannot run
+// without the depth test: its volumes draw their back faces alone, as front's do.
+constexpr CullMode msaaComplexCull(CullMode cull) {
+    return cull == CullMode::Stencil ? CullMode::Front : cull;
+}
+
 // --- memory (docs/msaa.md) -----------------------------------------------------------------------
 
 // Bytes the multisampled targets of an msaa frame take at width x height: the layout's attachments
-// `samples` times, and in volumes mode (lit from the samples) the multisampled lit image (RGBA16F)
-// and, where the lighting samples the depth, the volumes' copy of the depth-stencil.
-inline double msaaTargetBytes(GBufferLayoutDesc const& d, int samples, int width, int height, bool volumes) {
-    double perSample = layoutBytesPerPixel(d);
-    if (volumes)
-        perSample += texelBytes(TexelFormat::RGBA16F) + (lightingSamplesDepth(d) ? texelBytes(d.depthFormat()) : 0);
-    return perSample * double(samples) * double(width) * double(height);
+// `samples` times. Every lighting mode lights into the single-sample lit image.
+inline double msaaTargetBytes(GBufferLayoutDesc const& d, int samples, int width, int height) {
+    return double(layoutBytesPerPixel(d)) * double(samples) * double(width) * double(height);
 }
 
 // The multisampled targets' memory at each sample count, one line for the Stats window and bench:
-// "msaa targets at 1280x720: 2x 66.4 MB (volumes 81.1 MB), 4x ...".
+// "msaa targets at 1280x720: 2x 66.4 MB, 4x ...".
 inline std::string msaaMemoryLine(GBufferLayoutDesc const& d, int width, int height) {
     std::string out = "msaa targets at " + std::to_string(width) + "x" + std::to_string(height) + ":";
     auto const mb = [](double bytes) {
@@ -63,9 +66,7 @@ inline std::string msaaMemoryLine(GBufferLayoutDesc const& d, int width, int hei
         return s.substr(0, s.size() - 1) + "." + s.substr(s.size() - 1) + " MB";
     };
     for (int n : {2, 4, 8})
-        out += std::string(n == 2 ? " " : ", ") + std::to_string(n) + "x " +
-               mb(msaaTargetBytes(d, n, width, height, false)) + " (volumes " +
-               mb(msaaTargetBytes(d, n, width, height, true)) + ")";
+        out += std::string(n == 2 ? " " : ", ") + std::to_string(n) + "x " + mb(msaaTargetBytes(d, n, width, height));
     return out;
 }
 

@@ -31,9 +31,6 @@ void glTexBuffer(GLenum, GLenum, GLuint) {
 void glTexImage2DMultisample(GLenum, GLsizei, GLenum, GLsizei, GLsizei, GLboolean) {
     missing("glTexImage2DMultisample");
 }
-void glSampleMaski(GLuint, GLbitfield) {
-    missing("glSampleMaski");
-}
 void glGetTexLevelParameteriv(GLenum, GLint, GLenum, GLint*) {
     missing("glGetTexLevelParameteriv");
 }

@@ -30,8 +30,6 @@
 #define GL_TEXTURE_2D_MULTISAMPLE 0x9100
 #define GL_MAX_COLOR_TEXTURE_SAMPLES 0x910E
 #define GL_MAX_DEPTH_TEXTURE_SAMPLES 0x910F
-// The sample mask (msaa volumes light one sample at a time; gpu/draw_state_gl.cpp).
-#define GL_SAMPLE_MASK 0x8E51
 // Level queries (ES 3.1): whether a multisample texture got its storage (gpu/msaa_targets.cpp).
 #define GL_TEXTURE_WIDTH 0x1000
 #define GL_SAMPLE_POSITION 0x8E50
@@ -106,7 +104,6 @@ void glBindImageTexture(GLuint unit, GLuint texture, GLint level, GLboolean laye
 void glTexBuffer(GLenum target, GLenum internalformat, GLuint buffer);
 void glTexImage2DMultisample(GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, GLsizei height,
                              GLboolean fixedsamplelocations);
-void glSampleMaski(GLuint maskNumber, GLbitfield mask);
 void glGetTexLevelParameteriv(GLenum target, GLint level, GLenum pname, GLint* params);
 void glGetMultisamplefv(GLenum pname, GLuint index, GLfloat* val);
 void glQueryCounter(GLuint id, GLenum target);

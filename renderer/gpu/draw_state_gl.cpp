@@ -87,11 +87,6 @@ void apply(DrawState const& s) {
             glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
             break;
     }
-    // The sample mask (GL 3.2): one sample written, or all. WebGL2 has none, and no msaa frames.
-    if constexpr (!gl::kWebGL2) {
-        enable(GL_SAMPLE_MASK, s.sample >= 0);
-        glSampleMaski(0, s.sample >= 0 ? 1u << unsigned(s.sample) : ~0u);
-    }
     GLboolean const c = s.colorWrite ? GL_TRUE : GL_FALSE;
     glColorMask(c, c, c, c);
 }

@@ -40,8 +40,6 @@ gl::Framebuffer const& FrameResources::blitSource(Resource depth) const {
             return targets.litFbo;
         case Resource::MsaaDepth:
             return targets.msaa.gbuffer.fbo;
-        case Resource::MsaaLighting:
-            return targets.msaa.litFbo;
         default:
             break;
     }
@@ -89,10 +87,6 @@ gl::Texture const& FrameResources::texture(Resource r) const {
             return t.msaa.complexMask;
         case Resource::PrepassNormal:
             return t.prepassNormal;
-        case Resource::MsaaLighting:
-            return t.msaa.lighting;
-        case Resource::MsaaVolumeDepth:
-            return t.msaa.volumeDepth;
         default:
             break;
     }
@@ -108,7 +102,6 @@ gl::Framebuffer const& FrameResources::framebuffer(std::span<Resource const> col
         if (isGBufferColor(first)) return t.gbuffer.fbo;
         if (isMsaaColor(first)) return t.msaa.gbuffer.fbo;
         if (first == Resource::ComplexMask) return t.msaa.complexFbo;
-        if (first == Resource::MsaaLighting) return t.msaa.litFbo;
         if (first == Resource::Lighting) return volumeDepth ? t.volumeFbo : t.litFbo;
         if (first == Resource::DiffuseLight) return volumeDepth ? t.splitVolumeFbo : t.splitFbo;
         if (first == Resource::Coverage) return t.coverageFbo;
@@ -145,8 +138,6 @@ void FrameResources::clear(std::span<Resource const> resources) const {
             add(targets.msaa.gbuffer.fbo, depthStencil);
         else if (r == Resource::ComplexMask)
             add(targets.msaa.complexFbo, GL_COLOR_BUFFER_BIT);
-        else if (r == Resource::MsaaLighting)
-            add(targets.msaa.litFbo, GL_COLOR_BUFFER_BIT);
         else if (r == Resource::Lighting)
             add(targets.litFbo, GL_COLOR_BUFFER_BIT);
         else if (r == Resource::LitDepth)

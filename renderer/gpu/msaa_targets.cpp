@@ -1,5 +1,4 @@
-// The multisampled G-buffer, the complex pixels' mask and the volumes' multisampled lit image
-// (docs/msaa.md).
+// The multisampled G-buffer and the complex pixels' mask (docs/msaa.md).
 #include "gpu/render_targets.h"
 
 #include <string>
@@ -23,7 +22,7 @@ bool allocated(gl::Texture const& t) {
 
 }  // namespace
 
-std::optional<std::string> createMsaaTargets(int samples, bool volumes, RenderTargets& out) {
+std::optional<std::string> createMsaaTargets(int samples, RenderTargets& out) {
     out.msaa = MsaaTargets{};
     if (out.empty()) return std::nullopt;
     using gl::Framebuffer;
@@ -55,16 +54,8 @@ std::optional<std::string> createMsaaTargets(int samples, bool volumes, RenderTa
     }
     m.complexMask = Texture::create2D(GL_R8, out.width, out.height, "msaa.complex_mask");
     m.complexFbo = Framebuffer::create({&m.complexMask}, &out.litDepth, "msaa.complex");
-    if (volumes) {
-        if (auto err = multisampled(m.lighting, GL_RGBA16F, "msaa.lighting")) return err;
-        if (lightingSamplesDepth(desc))
-            if (auto err = multisampled(m.volumeDepth, glInternalFormat(desc.depthFormat()), "msaa.volumes.depth"))
-                return err;
-        m.litFbo =
-            Framebuffer::create({&m.lighting}, m.volumeDepth ? &m.volumeDepth : &m.gbuffer.depth, "msaa.lighting");
-    }
-    for (Framebuffer const* fb : {&m.gbuffer.fbo, &m.complexFbo, &m.litFbo})
-        if (*fb && fb->error()) return fb->error();
+    for (Framebuffer const* fb : {&m.gbuffer.fbo, &m.complexFbo})
+        if (fb->error()) return fb->error();
     out.msaa = std::move(m);
     return std::nullopt;
 }

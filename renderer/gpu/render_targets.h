@@ -54,12 +54,6 @@ struct MsaaTargets {
     GBuffer gbuffer;             // GL_TEXTURE_2D_MULTISAMPLE attachments, one per slot of the layout
     gl::Texture complexMask;     // R8: 1 where the pixel's samples differ (msaa_edges pass)
     gl::Framebuffer complexFbo;  // complexMask + RenderTargets::litDepth
-    // Volumes frames lit from the samples (made with `volumes`): the multisampled lit image the
-    // volumes add into, one sample at a time, and the depth-stencil they test against: the G-buffer's
-    // own, or where the lighting samples the depth a copy (volumeDepth), as in RenderTargets.
-    gl::Texture lighting;     // RGBA16F, `samples` per pixel
-    gl::Texture volumeDepth;  // empty in the layouts that store position
-    gl::Framebuffer litFbo;   // lighting + (volumeDepth or gbuffer.depth)
 };
 
 struct RenderTargets {
@@ -116,6 +110,6 @@ std::optional<std::string> createRenderTargets(int width, int height, GBufferLay
 // Makes out.msaa for `samples` per pixel at the targets' size and layout (gpu/msaa_targets.cpp), with
 // the volumes' targets when `volumes`; the first incomplete framebuffer's error, or the texture the
 // driver could not allocate (GL_OUT_OF_MEMORY), if any (out.msaa is then empty).
-std::optional<std::string> createMsaaTargets(int samples, bool volumes, RenderTargets& out);
+std::optional<std::string> createMsaaTargets(int samples, RenderTargets& out);
 
 }  // namespace gbl

@@ -7,7 +7,7 @@ VolumeDepthOutput volumeDepthPass(VolumeDepthInput const& in, VolumeDepthConfig 
     glBindFramebuffer(GL_READ_FRAMEBUFFER, in.source.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, in.target.id());
     glBlitFramebuffer(0, 0, config.width, config.height, 0, 0, config.width, config.height,
-                      GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT, GL_NEAREST);
+                      GL_DEPTH_BUFFER_BIT | (config.stencil ? GL_STENCIL_BUFFER_BIT : 0), GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return {in.target};
 }

@@ -13,13 +13,15 @@ struct VolumeDepthInput {
 struct VolumeDepthConfig {
     int width = 0;
     int height = 0;
+    bool stencil = true;  // false: the depth alone (msaa volumes keep the complex bit in the target's stencil)
 };
 struct VolumeDepthOutput {
     gl::Framebuffer const& target;
 };
 
-// Depth and stencil in one blit (the two textures share the layout's depth format, as a depth
-// blit requires). Blits bypass the fragment pipeline, so no depth, stencil or blend state matters.
+// Depth and stencil in one blit, or the depth alone (the two textures share the layout's depth
+// format, as a depth blit requires; from a multisampled source the blit takes one sample). Blits bypass the fragment
+// pipeline, so no depth, stencil or blend state matters.
 VolumeDepthOutput volumeDepthPass(VolumeDepthInput const& in, VolumeDepthConfig const& config);
 
 }  // namespace gbl

@@ -169,12 +169,9 @@ std::optional<DebugView> resourceView(Resource r) {
             return DebugView::Emissive;
         case Resource::MsaaDepth:
             return DebugView::Depth;
-        case Resource::MsaaLighting:  // resolved into the lit image (msaa_resolve_lighting)
-            return DebugView::Lighting;
         case Resource::PrepassNormal:  // prepass's thin G-buffer: the normal viewer shows it in prepass frames
             return DebugView::Normal;
         case Resource::ComplexMask:
-        case Resource::MsaaVolumeDepth:
         case Resource::VolumeDepth:
         case Resource::LitDepth:
         case Resource::Lights:
@@ -222,7 +219,6 @@ std::vector<std::string> describePass(PassDecl const& p) {
         line += std::string(", ") + blendWords(s.blend) + ", " + cullWords(s.cull) + ", " + stencilWords(s.stencil);
         if (s.pixels == MsaaPixels::Simple) line += ", simple pixels only (stencil complex bit 0)";
         if (s.pixels == MsaaPixels::Complex) line += ", complex pixels only (stencil complex bit 1)";
-        if (s.sample >= 0) line += ", sample " + std::to_string(s.sample) + " only";
         if (!s.colorWrite) line += ", colour writes off";
         out.push_back(line + ".");
     }

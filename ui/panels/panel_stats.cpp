@@ -185,9 +185,8 @@ void drawStatsPanel(StatsState const& stats, std::string const& noFragmentCounts
             ImGui::TextDisabled("  %s: %.1f B", part.name.c_str(), part.bytesPerPixel);
         if (f.msaaUsed != Msaa::Off) {  // docs/msaa.md: every attachment holds that many samples
             int const n = msaaSamples(f.msaaUsed);
-            bool const volumes = f.modeUsed == LightingMode::Volumes;  // and their multisampled lit image
             wrappedText("MSAA %dx: %.1f MB at %dx%d; complex pixels %.1f%%", n,
-                        msaaTargetBytes(layout, n, f.width, f.height, volumes) / 1.0e6, f.width, f.height,
+                        msaaTargetBytes(layout, n, f.width, f.height) / 1.0e6, f.width, f.height,
                         100.0 * f.complexPixelShare.value_or(0.0));
         }
         ImGui::TextDisabled("%s", msaaMemoryLine(layout, f.width, f.height).c_str());
